@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// test_main.c -- runs test_cases[] and prints TAP (one `ok`/`not ok` per case).
+
+#include "test.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#define MAX_REPORTS 64
+
+static char reports[MAX_REPORTS][512];
+static int report_count;
+
+void test_fail(const char *file, int line, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    printf("# %s:%d: ", file, line);
+    vprintf(fmt, ap);
+    printf("\n");
+    va_end(ap);
+}
+
+static void capture(int num, const char *msg, va_list ap)
+{
+    (void)num;
+    if (report_count < MAX_REPORTS) vsnprintf(reports[report_count], sizeof reports[0], msg, ap);
+    report_count++;
+}
+
+void test_capture_reports(void)
+{
+    report_count = 0;
+    dSetDebugHandler(capture);
+    dSetMessageHandler(capture);
+}
+
+void test_release_reports(void)
+{
+    dSetDebugHandler(0);
+    dSetMessageHandler(0);
+}
+
+int test_captured_count(void) { return report_count; }
+
+int test_captured_contains(const char *text)
+{
+    for (int i = 0; i < report_count && i < MAX_REPORTS; i++)
+        if (strstr(reports[i], text)) return 1;
+    return 0;
+}
+
+const char *test_captured_last(void)
+{
+    if (report_count == 0) return "";
+    return reports[(report_count <= MAX_REPORTS ? report_count : MAX_REPORTS) - 1];
+}
+
+int main(void)
+{
+    int n = 0, failed = 0;
+    while (test_cases[n].fn) n++;
+    printf("TAP version 13\n1..%d\n", n);
+    for (int i = 0; i < n; i++) {
+        int bad = test_cases[i].fn();
+        test_release_reports();
+        failed += bad != 0;
+        printf("%s %d - %s\n", bad ? "not ok" : "ok", i + 1, test_cases[i].name);
+        fflush(stdout);
+    }
+    return failed ? 1 : 0;
+}
