@@ -3,8 +3,6 @@
 // error.c -- the error, debug and message handlers (guide 9.4) and the
 // library's own reporting of bad arguments.
 
-#include "dx_check.h"
-
 #include <ode/error.h>
 
 static dMessageFunction *error_handler;
@@ -54,40 +52,4 @@ void dMessage(int num, const char *msg, ...)
     if (message_handler) message_handler(num, msg, ap);
     else print_message("ODE Message", num, msg, ap);
     va_end(ap);
-}
-
-// Hand an already formatted text to a handler, which takes a format and a va_list.
-static void call_with_text(dMessageFunction *fn, int num, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    fn(num, fmt, ap);
-    va_end(ap);
-}
-
-void dxReportBadArgument(const char *function, const char *fmt, ...)
-{
-    char text[512];
-    int used = snprintf(text, sizeof text, "%s: ", function);
-    va_list ap;
-    va_start(ap, fmt);
-    if (used >= 0 && (size_t)used < sizeof text) vsnprintf(text + used, sizeof text - used, fmt, ap);
-    va_end(ap);
-
-    if (debug_handler) {
-        call_with_text(debug_handler, d_ERR_UASSERT, "%s", text);
-        return;   // the handler chose to continue: the caller makes its call a no-op
-    }
-    dDebug(d_ERR_UASSERT, "%s", text);
-}
-
-void dxReportMessage(const char *function, const char *fmt, ...)
-{
-    char text[512];
-    int used = snprintf(text, sizeof text, "%s: ", function);
-    va_list ap;
-    va_start(ap, fmt);
-    if (used >= 0 && (size_t)used < sizeof text) vsnprintf(text + used, sizeof text - used, fmt, ap);
-    va_end(ap);
-    dMessage(d_ERR_UASSERT, "%s", text);
 }

@@ -5,6 +5,7 @@
 // report misuse (closing more often than initialising, unknown flags).
 
 #include "dx_check.h"
+#include "pool.h"
 
 #include <ode/odeinit.h>
 
@@ -32,7 +33,11 @@ void dCleanupODEAllDataForThread(void) {}
 void dCloseODE(void)
 {
     DX_CHECK_ARG(init_count > 0, return, "called more often than dInitODE2");
-    init_count--;
+    if (--init_count == 0) {   // give pooled memory of destroyed objects back
+        dxPoolDrain(&dx_world_pool);
+        dxPoolDrain(&dx_body_pool);
+        dxJointPoolsDrain();
+    }
 }
 
 #ifdef dSINGLE

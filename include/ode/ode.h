@@ -14,6 +14,8 @@
 #include <ode/rotation.h>
 #include <ode/mass.h>
 #include <ode/misc.h>
+#include <ode/contact.h>
+#include <ode/objects.h>
 #include <ode/version.h>
 
 #endif

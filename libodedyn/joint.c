@@ -1,0 +1,335 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// joint.c -- what every joint shares (guide 7.1-7.2): creation and
+// destruction, joint groups, attaching to bodies, enabling, user data,
+// feedback, and the connectivity queries. Each joint type's geometry and
+// constraint rows are in joint_<type>.c.
+
+#include "objects_internal.h"
+#include "pool.h"
+
+#include <ode/memory.h>
+
+#define CHECK_JOINT(j, on_fail) \
+    DX_CHECK_ARG(dxJointIsLive(j), on_fail, "joint is NULL or was destroyed")
+#define CHECK_GROUP(g, on_fail) \
+    DX_CHECK_ARG((g) != NULL && (g)->hdr.magic == DX_MAGIC_GROUP, on_fail, \
+                 "joint group is NULL or was destroyed")
+
+#define GROUP_CHUNK_BYTES (64 * 1024)
+#define JOINT_ALIGN 16
+
+// Non-grouped joints come from a pool per joint type (sizes differ).
+static dxPool joint_pools[dJointTypeTransmission + 1];
+static dxPool group_pool;
+
+struct dxJointGroupChunk {
+    dxJointGroupChunk *next;
+    size_t size, used;
+    size_t alloc_size;
+};
+
+static char *chunk_data(dxJointGroupChunk *c) { return (char *)(c + 1); }
+
+// Carve `size` bytes for a joint out of the group's chunks, reusing chunks
+// kept from before the last dJointGroupEmpty.
+static void *group_carve(struct dxJointGroup *g, size_t size)
+{
+    size = (size + JOINT_ALIGN - 1) / JOINT_ALIGN * JOINT_ALIGN;
+    dxJointGroupChunk *c = g->current;
+    while (c && c->size - c->used < size) {
+        c = c->next;
+        if (c) c->used = 0;
+    }
+    if (!c) {
+        size_t bytes = size > GROUP_CHUNK_BYTES ? size : GROUP_CHUNK_BYTES;
+        size_t alloc_size = sizeof(dxJointGroupChunk) + bytes;
+        c = dAlloc(alloc_size);
+        c->size = bytes;
+        c->used = 0;
+        c->alloc_size = alloc_size;
+        c->next = NULL;
+        if (g->current) {
+            // append after the last chunk so emptied chunks are reused in order
+            dxJointGroupChunk *last = g->current;
+            while (last->next) last = last->next;
+            last->next = c;
+        } else {
+            g->chunks = c;
+        }
+    }
+    g->current = c;
+    void *p = chunk_data(c) + c->used;
+    c->used += size;
+    return p;
+}
+
+static void group_append(struct dxJointGroup *g, dxJoint *j)
+{
+    if (g->num_joints == g->cap_joints) {
+        int cap = g->cap_joints ? 2 * g->cap_joints : 64;
+        g->joints = dRealloc(g->joints, g->cap_joints * sizeof *g->joints, cap * sizeof *g->joints);
+        g->cap_joints = cap;
+    }
+    g->joints[g->num_joints++] = j;
+}
+
+dxJoint *dxJointCreate(struct dxWorld *w, struct dxJointGroup *g, const dxJointClass *cls)
+{
+    dxJoint *j;
+    uint32_t generation = 0;
+    if (g) {
+        j = group_carve(g, cls->size);
+    } else {
+        j = dxPoolTake(&joint_pools[cls->type], cls->size);
+        generation = j->hdr.generation;
+    }
+    memset(j, 0, cls->size);
+    j->hdr.magic = DX_MAGIC_JOINT;
+    j->hdr.generation = generation + 1;
+    j->cls = cls;
+    j->world = w;
+    j->group = g;
+    j->flags = g ? DX_JOINT_IN_GROUP : 0;
+    j->node[0].joint = j->node[1].joint = j;
+
+    j->next = w->joints;
+    if (w->joints) w->joints->prev = j;
+    w->joints = j;
+    w->num_joints++;
+    if (g) group_append(g, j);
+    if (cls->init) cls->init(j);
+    return j;
+}
+
+// Remove node n from the joint list of body b.
+static void unlink_node(struct dxBody *b, dxJointNode *n)
+{
+    for (dxJointNode **p = &b->joints; *p; p = &(*p)->next) {
+        if (*p == n) {
+            *p = n->next;
+            b->num_joints--;
+            return;
+        }
+    }
+}
+
+void dxJointDetach(dxJoint *j)
+{
+    struct dxBody *b0 = dxJointBody(j, 0), *b1 = dxJointBody(j, 1);
+    if (b0) unlink_node(b0, &j->node[0]);
+    if (b1) unlink_node(b1, &j->node[1]);
+    j->node[0].other = j->node[1].other = NULL;
+    j->node[0].next = j->node[1].next = NULL;
+    j->flags &= ~(unsigned)DX_JOINT_REVERSE;
+}
+
+void dxJointRemove(dxJoint *j)
+{
+    dxJointDetach(j);
+    struct dxWorld *w = j->world;
+    if (w) {
+        if (j->prev) j->prev->next = j->next;
+        else w->joints = j->next;
+        if (j->next) j->next->prev = j->prev;
+        w->num_joints--;
+    }
+    j->hdr.magic = DX_MAGIC_DEAD;
+    if (!(j->flags & DX_JOINT_IN_GROUP)) dxPoolGive(&joint_pools[j->cls->type], j);
+}
+
+void dJointDestroy(dJointID j)
+{
+    CHECK_JOINT(j, return);
+    if (j->flags & DX_JOINT_IN_GROUP) return;   // the group owns it (guide 7.1)
+    dxJointRemove(j);
+}
+
+// ---- groups ---------------------------------------------------------------
+
+dJointGroupID dJointGroupCreate(int max_size)
+{
+    (void)max_size;   // ODE 0.5 sized groups up front; ours grow
+    struct dxJointGroup *g = dxPoolTake(&group_pool, sizeof *g);
+    uint32_t generation = g->hdr.generation;
+    memset(g, 0, sizeof *g);
+    g->hdr.magic = DX_MAGIC_GROUP;
+    g->hdr.generation = generation + 1;
+    return g;
+}
+
+void dJointGroupEmpty(dJointGroupID g)
+{
+    CHECK_GROUP(g, return);
+    // Newest first, so a body's joint list (newest at its head) unlinks in O(1).
+    for (int i = g->num_joints - 1; i >= 0; i--) dxJointRemove(g->joints[i]);
+    g->num_joints = 0;
+    g->current = g->chunks;
+    if (g->current) g->current->used = 0;
+}
+
+void dJointGroupDestroy(dJointGroupID g)
+{
+    CHECK_GROUP(g, return);
+    dJointGroupEmpty(g);
+    for (dxJointGroupChunk *c = g->chunks, *next; c; c = next) {
+        next = c->next;
+        dFree(c, c->alloc_size);
+    }
+    dFree(g->joints, g->cap_joints * sizeof *g->joints);
+    g->hdr.magic = DX_MAGIC_DEAD;
+    dxPoolGive(&group_pool, g);
+}
+
+// ---- attaching --------------------------------------------------------------
+
+void dJointAttach(dJointID j, dBodyID body1, dBodyID body2)
+{
+    CHECK_JOINT(j, return);
+    DX_CHECK_ARG(j->world != NULL, return, "the joint's world was destroyed");
+    DX_CHECK_ARG(body1 == NULL || dxBodyIsLive(body1), return, "body1 was destroyed");
+    DX_CHECK_ARG(body2 == NULL || dxBodyIsLive(body2), return, "body2 was destroyed");
+    DX_CHECK_ARG(body1 == NULL || body1 != body2, return, "body1 and body2 are the same body");
+    DX_CHECK_ARG((!body1 || body1->world == j->world) && (!body2 || body2->world == j->world),
+                 return, "a body belongs to another world than the joint");
+
+    dxJointDetach(j);
+    if (!body1 && body2) {   // keep body 0 non-NULL: store (body2, 0), reversed
+        body1 = body2;
+        body2 = NULL;
+        j->flags |= DX_JOINT_REVERSE;
+    }
+    j->node[0].other = body2;
+    j->node[1].other = body1;
+    if (body1) {
+        j->node[0].next = body1->joints;
+        body1->joints = &j->node[0];
+        body1->num_joints++;
+    }
+    if (body2) {
+        j->node[1].next = body2->joints;
+        body2->joints = &j->node[1];
+        body2->num_joints++;
+    }
+}
+
+int dJointGetNumBodies(dJointID j)
+{
+    CHECK_JOINT(j, return 0);
+    return (dxJointBody(j, 0) != NULL) + (dxJointBody(j, 1) != NULL);
+}
+
+void dJointEnable(dJointID j)
+{
+    CHECK_JOINT(j, return);
+    j->flags &= ~(unsigned)DX_JOINT_DISABLED;
+}
+
+void dJointDisable(dJointID j)
+{
+    CHECK_JOINT(j, return);
+    j->flags |= DX_JOINT_DISABLED;
+}
+
+int dJointIsEnabled(dJointID j)
+{
+    CHECK_JOINT(j, return 0);
+    return (j->flags & DX_JOINT_DISABLED) == 0;
+}
+
+void dJointSetData(dJointID j, void *data)
+{
+    CHECK_JOINT(j, return);
+    j->userdata = data;
+}
+
+void *dJointGetData(dJointID j)
+{
+    CHECK_JOINT(j, return NULL);
+    return j->userdata;
+}
+
+dJointType dJointGetType(dJointID j)
+{
+    CHECK_JOINT(j, return dJointTypeNone);
+    return j->cls->type;
+}
+
+dBodyID dJointGetBody(dJointID j, int index)
+{
+    CHECK_JOINT(j, return NULL);
+    DX_CHECK_ARG(index == 0 || index == 1, return NULL, "index must be 0 or 1, got %d", index);
+    if (j->flags & DX_JOINT_REVERSE) index = 1 - index;
+    return dxJointBody(j, index);
+}
+
+void dJointSetFeedback(dJointID j, dJointFeedback *f)
+{
+    CHECK_JOINT(j, return);
+    j->feedback = f;
+}
+
+dJointFeedback *dJointGetFeedback(dJointID j)
+{
+    CHECK_JOINT(j, return NULL);
+    return j->feedback;
+}
+
+// ---- connectivity ------------------------------------------------------------
+
+// Order the pair so the first is a live body; 0 if neither is.
+static int connection_pair(dBodyID *b1, dBodyID *b2)
+{
+    if (!*b1) {
+        *b1 = *b2;
+        *b2 = NULL;
+    }
+    return *b1 != NULL;
+}
+
+dJointID dConnectingJoint(dBodyID b1, dBodyID b2)
+{
+    DX_CHECK_ARG(!b1 || dxBodyIsLive(b1), return NULL, "body1 was destroyed");
+    DX_CHECK_ARG(!b2 || dxBodyIsLive(b2), return NULL, "body2 was destroyed");
+    DX_CHECK_ARG(connection_pair(&b1, &b2), return NULL, "both bodies are NULL");
+    for (dxJointNode *n = b1->joints; n; n = n->next)
+        if (n->other == b2) return n->joint;
+    return NULL;
+}
+
+int dConnectingJointList(dBodyID b1, dBodyID b2, dJointID *out)
+{
+    DX_CHECK_ARG(!b1 || dxBodyIsLive(b1), return 0, "body1 was destroyed");
+    DX_CHECK_ARG(!b2 || dxBodyIsLive(b2), return 0, "body2 was destroyed");
+    DX_CHECK_ARG(out != NULL, return 0, "the joint list is NULL");
+    DX_CHECK_ARG(connection_pair(&b1, &b2), return 0, "both bodies are NULL");
+    int n = 0;
+    for (dxJointNode *node = b1->joints; node; node = node->next)
+        if (node->other == b2) out[n++] = node->joint;
+    return n;
+}
+
+int dAreConnected(dBodyID b1, dBodyID b2)
+{
+    DX_CHECK_ARG(dxBodyIsLive(b1), return 0, "body1 is NULL or was destroyed");
+    DX_CHECK_ARG(dxBodyIsLive(b2), return 0, "body2 is NULL or was destroyed");
+    for (dxJointNode *n = b1->joints; n; n = n->next)
+        if (n->other == b2) return 1;
+    return 0;
+}
+
+int dAreConnectedExcluding(dBodyID b1, dBodyID b2, int joint_type)
+{
+    DX_CHECK_ARG(dxBodyIsLive(b1), return 0, "body1 is NULL or was destroyed");
+    DX_CHECK_ARG(dxBodyIsLive(b2), return 0, "body2 is NULL or was destroyed");
+    for (dxJointNode *n = b1->joints; n; n = n->next)
+        if (n->other == b2 && (int)n->joint->cls->type != joint_type) return 1;
+    return 0;
+}
+
+void dxJointPoolsDrain(void)
+{
+    for (size_t i = 0; i < sizeof joint_pools / sizeof joint_pools[0]; i++)
+        dxPoolDrain(&joint_pools[i]);
+    dxPoolDrain(&group_pool);
+}

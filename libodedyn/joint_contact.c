@@ -1,0 +1,417 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// joint_contact.c -- the contact joint (guide 7.3.7, 3.11): a one-sided
+// constraint along the contact normal, friction in the two tangent
+// directions, and (ODE 0.16) rolling and spinning friction, with every
+// surface mode: Mu2, FDir1, Bounce, SoftERP, SoftCFM, Motion1/2/N, Slip1/2,
+// Rolling, and the friction pyramid (Approx1_1, _2, _N).
+//
+// Rows, in this order (row 0 is the findex of the pyramid rows):
+//   0      normal: relative normal velocity >= target, force in 0..inf;
+//   t1     if mu > 0            (force limit mu, or mu * normal force);
+//   t2     if mu2 > 0           (mu2 with dContactMu2, else mu);
+//   r1, r2, rn  with dContactRolling: rolling friction about t1, t2 and
+//          spinning friction about n, limits rho, rho2, rhoN with
+//          dContactAxisDep (= dContactMu2), else rho for all three; each if > 0.
+// Rows whose coefficient is 0 are omitted, as in ODE: a frictionless
+// contact cannot drag anything, so Motion1/2 and Slip1/2 have no effect on
+// it. Directions are kept in the user's body order (the normal points into
+// user body 1, friction motion is that of user body 1 relative to body 2)
+// and negated when the joint is stored reversed.
+//
+// The depth follows the bodies: their poses are recorded at the contact's
+// first step, and later rows (the sub-steps of dWorldStepFast1, or a contact
+// kept over several steps) use the depth less the separation gained since,
+// to first order, and the lever arms of that first step. For the usual
+// contact, made from the current poses and used for one dWorldStep or
+// dWorldQuickStep, this is the given depth and point, as in ODE; without it
+// each StepFast1 sub-step would correct the whole initial depth again, and a
+// rolling ball's lever arm would swing away from its contact point.
+//
+// Bad input at creation: a NULL world or contact or a destroyed group is
+// reported and no joint is made (returns 0). A non-finite position, normal
+// or depth, or a zero normal, is reported and the joint is made inert (no
+// rows), so the caller's dJointAttach still works. Out-of-range surface
+// numbers are reported and replaced by the nearest safe value (see
+// sanitise_surface). A negative depth (the shapes do not touch yet) is
+// accepted and gives no correction, like depth 0.
+
+#include "joint_geometry.h"
+
+// The rows a contact contributes, by kind (bit set = row present).
+enum {
+    ROW_T1 = 1 << 0,
+    ROW_T2 = 1 << 1,
+    ROW_R1 = 1 << 2,
+    ROW_R2 = 1 << 3,
+    ROW_RN = 1 << 4
+};
+
+typedef struct dxJointContact {
+    dxJoint base;
+    dContact contact;      // as given, with the surface sanitised
+    dVector3 n, t1, t2;    // unit normal and friction directions, user's body order
+    dReal mu2, rho2, rhoN; // effective coefficients of direction 2 and spin
+    unsigned rows_present; // ROW_... ; computed once at creation
+    int inert;             // bad geometry: no rows at all
+    // The bodies' poses at the contact's first step, and the arms from
+    // their origins to the contact point then (world frame).
+    const struct dxBody *anchor_body[2];
+    uint32_t anchor_generation[2];
+    dVector3 pos0[2], arm[2];
+    dQuaternion q0[2];
+} dxJointContact;
+
+static void contact_count_rows(dxJoint *j, dxJointRowCount *count)
+{
+    const dxJointContact *c = (const dxJointContact *)j;
+    int m = 0;
+    if (!c->inert) {
+        m = 1;
+        for (unsigned bits = c->rows_present; bits; bits &= bits - 1) m++;
+    }
+    count->m = m;
+    count->nub = 0;   // row 0 is bounded, so no row may be declared unbounded up front
+}
+
+// An angular row about axis a (stored sense): J1a = a, J2a = -a.
+static void angular_row(const dxJoint *j, dxJointRows *rows, int row, const dVector3 a)
+{
+    const int o = row * rows->rowskip;
+    dCopyVector3(rows->J1a + o, a);
+    if (dxJointBody(j, 1)) dCopyNegatedVector3(rows->J2a + o, a);
+}
+
+// A linear row along d (stored sense) through the contact point:
+// J1l = d, J1a = arm0 x d, J2l = -d, J2a = -(arm1 x d). The arms are those
+// of the first step, so the row stays the same over StepFast1's sub-steps
+// (a rolling ball's contact point does not travel with its material).
+static void linear_row(const dxJointContact *c, dxJointRows *rows, int row, const dVector3 d)
+{
+    const int o = row * rows->rowskip;
+    dCopyVector3(rows->J1l + o, d);
+    dCalcVectorCross3(rows->J1a + o, c->arm[0], d);
+    if (dxJointBody(&c->base, 1)) {
+        dCopyNegatedVector3(rows->J2l + o, d);
+        dCalcVectorCross3(rows->J2a + o, d, c->arm[1]);
+    }
+}
+
+// The current value of J v for row `row` (both bodies, kinematic included).
+static dReal row_velocity(const dxJoint *j, const dxJointRows *rows, int row)
+{
+    const struct dxBody *b0 = dxJointBody(j, 0), *b1 = dxJointBody(j, 1);
+    const int o = row * rows->rowskip;
+    dReal v = dCalcVectorDot3(rows->J1l + o, b0->lvel) + dCalcVectorDot3(rows->J1a + o, b0->avel);
+    if (b1)
+        v += dCalcVectorDot3(rows->J2l + o, b1->lvel) + dCalcVectorDot3(rows->J2a + o, b1->avel);
+    return v;
+}
+
+// Bounds of a friction row with coefficient k: constant-force-limit model
+// (lo = -k, hi = k), or with `pyramid` the limit k * normal force (findex =
+// the normal row). An infinite coefficient never slips: an unbounded row
+// (and no findex, whose bound would be inf * force).
+static void friction_bounds(dxJointRows *rows, int row, dReal k, int pyramid)
+{
+    rows->lo[row] = -k;
+    rows->hi[row] = k;
+    if (pyramid && k < dInfinity) rows->findex[row] = 0;
+}
+
+// Does the anchor record belong to the bodies attached now?
+static int anchored_to_current_bodies(const dxJointContact *c)
+{
+    for (int k = 0; k < 2; k++) {
+        const struct dxBody *b = dxJointBody(&c->base, k);
+        if (c->anchor_body[k] != b || (b && c->anchor_generation[k] != b->hdr.generation))
+            return 0;
+    }
+    return 1;
+}
+
+// Record the bodies' poses and the arms to the contact point.
+static void anchor(dxJointContact *c)
+{
+    for (int k = 0; k < 2; k++) {
+        const struct dxBody *b = dxJointBody(&c->base, k);
+        c->anchor_body[k] = b;
+        if (!b) continue;
+        c->anchor_generation[k] = b->hdr.generation;
+        dCopyVector3(c->pos0[k], b->pos);
+        dCopyVector4(c->q0[k], b->q);
+        dSubtractVectors3(c->arm[k], c->contact.geom.pos, b->pos);
+    }
+}
+
+// How far the contact point moved with body k since it was anchored, to
+// first order: translation plus (rotation vector) x arm. The second-order
+// part is left out on purpose: a ball rolling over its contact point would
+// otherwise seem to lift off it.
+static void contact_point_motion(const dxJointContact *c, int k, dVector3 d)
+{
+    const struct dxBody *b = dxJointBody(&c->base, k);
+    dQuaternion q;
+    dQMultiply2(q, b->q, c->q0[k]);   // the rotation since: q0 -> q
+    dVector3 v = { q[1], q[2], q[3], 0 }, rot;
+    const dReal sin_half = dCalcVectorLength3(v), cos_half = dFabs(q[0]);
+    dReal scale = 2;   // rotation vector = axis * angle = v * angle / sin(angle / 2)
+    if (sin_half > 0) scale = 2 * dAtan2(sin_half, cos_half) / sin_half;
+    if (q[0] < 0) scale = -scale;
+    dScaleVector3(v, scale);
+    dCalcVectorCross3(rot, v, c->arm[k]);
+    dSubtractVectors3(d, b->pos, c->pos0[k]);
+    dAddVectors3(d, d, rot);
+}
+
+// The penetration depth now. Collision found c->contact.geom.depth with the
+// bodies where they were at this contact's first step (when the pose is
+// recorded); afterwards (the sub-steps of dWorldStepFast1, or a contact kept
+// over several steps) the depth shrinks by how far the point carried by body
+// 0 moved along n (stored sense, into body 0) relative to body 1's.
+static dReal current_depth(dxJointContact *c, const dVector3 n)
+{
+    if (!anchored_to_current_bodies(c)) {
+        anchor(c);
+        return c->contact.geom.depth;
+    }
+    dVector3 d0, d1 = { 0, 0, 0, 0 };
+    contact_point_motion(c, 0, d0);
+    if (dxJointBody(&c->base, 1)) contact_point_motion(c, 1, d1);
+    dSubtractVectors3(d0, d0, d1);
+    return c->contact.geom.depth - dCalcVectorDot3(n, d0);
+}
+
+// Row 0: the bodies may separate but not approach. Target relative normal
+// velocity: the penetration correction fps * erp * (depth - surface layer),
+// capped at the world's max correcting velocity; with Bounce, at least
+// -bounce times the incoming velocity (relative to the surface motion);
+// with MotionN, plus the surface's own normal velocity.
+static void normal_row(dxJointContact *c, dxJointRows *rows, const dVector3 n)
+{
+    const dxJoint *j = &c->base;
+    const dSurfaceParameters *s = &c->contact.surface;
+    const struct dxWorld *w = j->world;
+    const dReal depth = current_depth(c, n);   // first: it may record the arms
+    linear_row(c, rows, 0, n);
+
+    const dReal erp = (s->mode & dContactSoftERP) ? s->soft_erp : rows->erp;
+    const dReal excess = depth - w->contact_surface_layer;
+    dReal target = 0;
+    if (excess > 0) {
+        target = rows->fps * erp * excess;
+        if (target > w->max_correcting_vel) target = w->max_correcting_vel;
+    }
+    const dReal motion = (s->mode & dContactMotionN) ? s->motionN : 0;
+    if (s->mode & dContactBounce) {
+        const dReal incoming = row_velocity(j, rows, 0) - motion;   // < 0: approaching
+        if (-incoming > s->bounce_vel) {
+            const dReal outgoing = -s->bounce * incoming;
+            if (outgoing > target) target = outgoing;
+        }
+    }
+    rows->c[0] = target + motion;
+    if (s->mode & dContactSoftCFM) rows->cfm[0] = s->soft_cfm;
+    rows->lo[0] = 0;
+    rows->hi[0] = dInfinity;
+}
+
+// Friction row along t (stored sense): target tangential velocity `motion`,
+// cfm `slip` (force-dependent slip: velocity = slip * force) if set.
+static void friction_row(dxJointContact *c, dxJointRows *rows, int row, const dVector3 t,
+                         dReal k, int pyramid, dReal motion, int has_slip, dReal slip)
+{
+    linear_row(c, rows, row, t);
+    rows->c[row] = motion;
+    if (has_slip) rows->cfm[row] = slip;
+    friction_bounds(rows, row, k, pyramid);
+}
+
+static void contact_fill_rows(dxJoint *j, dxJointRows *rows)
+{
+    dxJointContact *c = (dxJointContact *)j;
+    if (c->inert) return;
+    const dSurfaceParameters *s = &c->contact.surface;
+    const int mode = s->mode;
+    // Stored sense: the user's directions, negated when the joint is stored
+    // reversed (user body 2 as body 0).
+    const dReal sign = (j->flags & DX_JOINT_REVERSE) ? -1 : 1;
+    dVector3 n, t1, t2;
+    dCopyScaledVector3(n, c->n, sign);
+    dCopyScaledVector3(t1, c->t1, sign);
+    dCopyScaledVector3(t2, c->t2, sign);
+
+    normal_row(c, rows, n);
+    int row = 1;
+    const unsigned present = c->rows_present;
+    if (present & ROW_T1)
+        friction_row(c, rows, row++, t1, s->mu, mode & dContactApprox1_1,
+                     (mode & dContactMotion1) ? s->motion1 : 0, mode & dContactSlip1, s->slip1);
+    if (present & ROW_T2)
+        friction_row(c, rows, row++, t2, c->mu2, mode & dContactApprox1_2,
+                     (mode & dContactMotion2) ? s->motion2 : 0, mode & dContactSlip2, s->slip2);
+    if (present & ROW_R1) {
+        angular_row(j, rows, row, t1);
+        friction_bounds(rows, row++, s->rho, mode & dContactApprox1_1);
+    }
+    if (present & ROW_R2) {
+        angular_row(j, rows, row, t2);
+        friction_bounds(rows, row++, c->rho2, mode & dContactApprox1_2);
+    }
+    if (present & ROW_RN) {
+        angular_row(j, rows, row, n);
+        friction_bounds(rows, row, c->rhoN, mode & dContactApprox1_N);
+    }
+}
+
+static const dxJointClass contact_class = {
+    dJointTypeContact, "contact", sizeof(dxJointContact), NULL, contact_count_rows,
+    contact_fill_rows
+};
+
+// ---- creation and input checks --------------------------------------------
+
+// A friction-like coefficient must be 0..dInfinity; anything else becomes 0.
+static dReal check_coefficient(const char *what, dReal k)
+{
+    if (k >= 0) return k;   // false for NaN
+    dxReportBadArgument("dJointCreateContact", "%s = %g must be in 0..dInfinity; using 0", what,
+                        (double)k);
+    return 0;
+}
+
+// A finite number, else 0.
+static dReal check_finite(const char *what, dReal x)
+{
+    if (dxIsFinite(x)) return x;
+    dxReportBadArgument("dJointCreateContact", "%s = %g is not finite; using 0", what,
+                        (double)x);
+    return 0;
+}
+
+// A slip coefficient (a cfm) must be finite and >= 0; anything else becomes 0.
+static dReal check_slip(const char *what, dReal x)
+{
+    if (x >= 0 && dxIsFinite(x)) return x;
+    dxReportBadArgument("dJointCreateContact", "%s = %g must be finite and >= 0; using 0", what,
+                        (double)x);
+    return 0;
+}
+
+// Clamp x to lo..hi (NaN to lo), reporting a value outside.
+static dReal check_range(const char *what, dReal x, dReal lo, dReal hi)
+{
+    if (x >= lo && x <= hi) return x;
+    dxReportBadArgument("dJointCreateContact", "%s = %g must be in %g..%g", what, (double)x,
+                        (double)lo, (double)hi);
+    return x > hi ? hi : lo;
+}
+
+// Replace out-of-range surface numbers (read only when their mode flag is
+// set, as the guide specifies) by safe values, reporting each.
+static void sanitise_surface(dSurfaceParameters *s)
+{
+    const int mode = s->mode;
+    s->mu = check_coefficient("surface.mu", s->mu);
+    if (mode & dContactMu2) s->mu2 = check_coefficient("surface.mu2", s->mu2);
+    if (mode & dContactRolling) {
+        s->rho = check_coefficient("surface.rho", s->rho);
+        if (mode & dContactAxisDep) {
+            s->rho2 = check_coefficient("surface.rho2", s->rho2);
+            s->rhoN = check_coefficient("surface.rhoN", s->rhoN);
+        }
+    }
+    if (mode & dContactBounce) {
+        s->bounce = check_range("surface.bounce", s->bounce, 0, 1);
+        s->bounce_vel = check_coefficient("surface.bounce_vel", s->bounce_vel);
+    }
+    if (mode & dContactSoftERP) s->soft_erp = check_range("surface.soft_erp", s->soft_erp, 0, 1);
+    if ((mode & dContactSoftCFM) && !(s->soft_cfm >= 0 && dxIsFinite(s->soft_cfm))) {
+        dxReportBadArgument("dJointCreateContact",
+                            "surface.soft_cfm = %g must be finite and >= 0; using the world's",
+                            (double)s->soft_cfm);
+        s->mode &= ~dContactSoftCFM;
+    }
+    if (mode & dContactMotion1) s->motion1 = check_finite("surface.motion1", s->motion1);
+    if (mode & dContactMotion2) s->motion2 = check_finite("surface.motion2", s->motion2);
+    if (mode & dContactMotionN) s->motionN = check_finite("surface.motionN", s->motionN);
+    if (mode & dContactSlip1) s->slip1 = check_slip("surface.slip1", s->slip1);
+    if (mode & dContactSlip2) s->slip2 = check_slip("surface.slip2", s->slip2);
+}
+
+// Store the unit normal; 0 (after a report) if the geometry is unusable.
+static int check_geometry(dxJointContact *c)
+{
+    const dContactGeom *g = &c->contact.geom;
+    if (!dxIsFinite3(g->pos[0], g->pos[1], g->pos[2]) || !dxIsFinite(g->depth)) {
+        dxReportBadArgument("dJointCreateContact",
+                            "contact position or depth is not finite; the contact is ignored");
+        return 0;
+    }
+    dCopyVector3(c->n, g->normal);
+    if (!dxIsFinite3(c->n[0], c->n[1], c->n[2]) || !dSafeNormalize3(c->n)) {
+        dxReportBadArgument("dJointCreateContact", "contact normal (%g, %g, %g) has no direction;"
+                            " the contact is ignored", (double)g->normal[0],
+                            (double)g->normal[1], (double)g->normal[2]);
+        return 0;
+    }
+    return 1;
+}
+
+// Friction directions: t1 = fdir1 (its part perpendicular to n, unit) with
+// dContactFDir1, else any unit vector perpendicular to n; t2 = n x t1.
+static void friction_directions(dxJointContact *c)
+{
+    if (c->contact.surface.mode & dContactFDir1) {
+        const dReal *f = c->contact.fdir1;
+        dAddScaledVectors3(c->t1, f, c->n, 1, -dCalcVectorDot3(f, c->n));
+        if (dxIsFinite3(c->t1[0], c->t1[1], c->t1[2]) &&
+            dCalcVectorLength3(c->t1) > (dReal)1e-3 * dCalcVectorLength3(f) &&
+            dSafeNormalize3(c->t1)) {
+            dCalcVectorCross3(c->t2, c->n, c->t1);
+            return;
+        }
+        dxReportBadArgument("dJointCreateContact", "fdir1 (%g, %g, %g) is not a direction "
+                            "across the normal; using an arbitrary one", (double)f[0],
+                            (double)f[1], (double)f[2]);
+    }
+    dPlaneSpace(c->n, c->t1, c->t2);   // t2 = n x t1
+}
+
+// Which rows exist, and the effective coefficients of direction 2 and spin.
+static void choose_rows(dxJointContact *c)
+{
+    const dSurfaceParameters *s = &c->contact.surface;
+    const int axis_dep = s->mode & dContactMu2;
+    c->mu2 = axis_dep ? s->mu2 : s->mu;
+    c->rho2 = axis_dep ? s->rho2 : s->rho;
+    c->rhoN = axis_dep ? s->rhoN : s->rho;
+    unsigned p = 0;
+    if (s->mu > 0) p |= ROW_T1;
+    if (c->mu2 > 0) p |= ROW_T2;
+    if (s->mode & dContactRolling) {
+        if (s->rho > 0) p |= ROW_R1;
+        if (c->rho2 > 0) p |= ROW_R2;
+        if (c->rhoN > 0) p |= ROW_RN;
+    }
+    c->rows_present = p;
+}
+
+dJointID dJointCreateContact(dWorldID w, dJointGroupID g, const dContact *contact)
+{
+    DX_CHECK_ARG(dxWorldIsLive(w), return NULL, "world is NULL or was destroyed");
+    DX_CHECK_ARG(g == NULL || g->hdr.magic == DX_MAGIC_GROUP, return NULL,
+                 "joint group was destroyed");
+    DX_CHECK_ARG(contact != NULL, return NULL, "contact is NULL");
+    dxJoint *j = dxJointCreate(w, g, &contact_class);
+    dxJointContact *c = (dxJointContact *)j;
+    c->contact = *contact;
+    if (!check_geometry(c)) {
+        c->inert = 1;
+        return j;
+    }
+    sanitise_surface(&c->contact.surface);
+    friction_directions(c);
+    choose_rows(c);
+    return j;
+}

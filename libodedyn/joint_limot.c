@@ -1,0 +1,176 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// joint_limot.c -- limits and motors of joint axes (see joint_limot.h).
+
+#include "joint_limot.h"
+
+void dxLimotInit(dxLimot *lm, const struct dxWorld *w)
+{
+    lm->vel = 0;
+    lm->fmax = 0;
+    lm->lostop = -dInfinity;
+    lm->histop = dInfinity;
+    lm->fudge_factor = 1;
+    lm->normal_cfm = w->cfm;
+    lm->stop_erp = w->erp;
+    lm->stop_cfm = w->cfm;
+    lm->bounce = 0;
+    lm->limit = 0;
+    lm->limit_err = 0;
+}
+
+int dxParamSplit(const char *function, int parameter, int max_groups, int *group, int *param)
+{
+    *group = parameter >> 8;
+    *param = parameter & 0xff;
+    if (parameter < 0 || *group >= max_groups || *param >= dParamsInGroup) {
+        dxReportBadArgument(function, "parameter 0x%x is not a parameter of this joint",
+                            (unsigned)parameter);
+        return 0;
+    }
+    return 1;
+}
+
+int dxLimotSetParam(dxLimot *lm, int param, dReal value)
+{
+    switch (param) {
+    case dParamLoStop: lm->lostop = value; return 1;
+    case dParamHiStop: lm->histop = value; return 1;
+    case dParamVel: lm->vel = value; return 1;
+    case dParamFMax:
+        DX_CHECK_ARG(value >= 0, return 1, "dParamFMax must be >= 0, got %g", (double)value);
+        lm->fmax = value;
+        return 1;
+    case dParamFudgeFactor:
+        DX_CHECK_ARG(value >= 0 && value <= 1, return 1,
+                     "dParamFudgeFactor must be in 0..1, got %g", (double)value);
+        lm->fudge_factor = value;
+        return 1;
+    case dParamBounce: lm->bounce = value; return 1;
+    case dParamCFM: lm->normal_cfm = value; return 1;
+    case dParamStopERP: lm->stop_erp = value; return 1;
+    case dParamStopCFM: lm->stop_cfm = value; return 1;
+    default: return 0;
+    }
+}
+
+int dxLimotGetParam(const dxLimot *lm, int param, dReal *value)
+{
+    switch (param) {
+    case dParamLoStop: *value = lm->lostop; return 1;
+    case dParamHiStop: *value = lm->histop; return 1;
+    case dParamVel: *value = lm->vel; return 1;
+    case dParamFMax: *value = lm->fmax; return 1;
+    case dParamFudgeFactor: *value = lm->fudge_factor; return 1;
+    case dParamBounce: *value = lm->bounce; return 1;
+    case dParamCFM: *value = lm->normal_cfm; return 1;
+    case dParamStopERP: *value = lm->stop_erp; return 1;
+    case dParamStopCFM: *value = lm->stop_cfm; return 1;
+    default: return 0;
+    }
+}
+
+int dxLimotTestLimit(dxLimot *lm, dReal position)
+{
+    if (lm->lostop > lm->histop) {   // inconsistent stops: none of them acts
+        lm->limit = 0;
+    } else if (position <= lm->lostop) {
+        lm->limit = 1;
+        lm->limit_err = position - lm->lostop;
+    } else if (position >= lm->histop) {
+        lm->limit = 2;
+        lm->limit_err = position - lm->histop;
+    } else {
+        lm->limit = 0;
+    }
+    return lm->limit != 0;
+}
+
+int dxLimotActive(const dxLimot *lm) { return lm->fmax > 0 || lm->limit != 0; }
+
+// The relative velocity of body 0 against body 1 along axis.
+static dReal axis_velocity(const dxJoint *j, const dReal axis[3], int rotational)
+{
+    const struct dxBody *b0 = dxJointBody(j, 0), *b1 = dxJointBody(j, 1);
+    dReal v = dCalcVectorDot3(rotational ? b0->avel : b0->lvel, axis);
+    if (b1) v -= dCalcVectorDot3(rotational ? b1->avel : b1->lvel, axis);
+    return v;
+}
+
+// A motor powering against its stop: the stop row holds the joint, and the
+// motor's force is applied directly (a fraction of it, the fudge factor, when
+// it powers away from the stop, where it would otherwise need a second row).
+static void push_against_stop(const dxLimot *lm, dxJoint *j, const dReal axis[3],
+                              const dReal ltd[3], int rotational)
+{
+    struct dxBody *b0 = dxJointBody(j, 0), *b1 = dxJointBody(j, 1);
+    dReal fm = lm->fmax;
+    if (lm->vel > 0 || (lm->vel == 0 && lm->limit == 2)) fm = -fm;
+    if ((lm->limit == 1 && lm->vel > 0) || (lm->limit == 2 && lm->vel < 0)) fm *= lm->fudge_factor;
+    dReal *acc0 = rotational ? b0->torque : b0->force;
+    dAddVectorScaledVector3(acc0, acc0, axis, -fm);
+    if (b1) {
+        dReal *acc1 = rotational ? b1->torque : b1->force;
+        dAddVectorScaledVector3(acc1, acc1, axis, fm);
+        if (!rotational) {
+            dAddVectorScaledVector3(b0->torque, b0->torque, ltd, -fm);
+            dAddVectorScaledVector3(b1->torque, b1->torque, ltd, -fm);
+        }
+    }
+}
+
+int dxLimotAddRow(dxLimot *lm, dxJoint *j, dxJointRows *rows, int row, const dReal axis[3],
+                  int rotational)
+{
+    if (!dxLimotActive(lm)) return 0;
+    const struct dxBody *b0 = dxJointBody(j, 0), *b1 = dxJointBody(j, 1);
+    const int s = row * rows->rowskip;
+    dReal *J1 = (rotational ? rows->J1a : rows->J1l) + s;
+    dReal *J2 = (rotational ? rows->J2a : rows->J2l) + s;
+    dCopyVector3(J1, axis);
+    if (b1) dCopyNegatedVector3(J2, axis);
+
+    // A linear row between two bodies acts at the midpoint of their centres,
+    // so the pair of forces creates no couple (no spurious angular momentum).
+    dVector3 ltd = { 0, 0, 0, 0 };
+    if (!rotational && b1) {
+        dVector3 half;
+        dSubtractVectors3(half, b1->pos, b0->pos);
+        dScaleVector3(half, REAL(0.5));
+        dCalcVectorCross3(ltd, half, axis);
+        dCopyVector3(rows->J1a + s, ltd);
+        dCopyVector3(rows->J2a + s, ltd);
+    }
+
+    int powered = lm->fmax > 0 && !(lm->limit && lm->lostop == lm->histop);
+    if (powered) {
+        rows->cfm[row] = lm->normal_cfm;
+        if (!lm->limit) {
+            rows->c[row] = lm->vel;
+            rows->lo[row] = -lm->fmax;
+            rows->hi[row] = lm->fmax;
+        } else {
+            push_against_stop(lm, j, axis, ltd, rotational);
+        }
+    }
+    if (!lm->limit) return 1;
+
+    rows->c[row] = -rows->fps * lm->stop_erp * lm->limit_err;
+    rows->cfm[row] = lm->stop_cfm;
+    if (lm->lostop == lm->histop) {   // locked: a two-sided row
+        rows->lo[row] = -dInfinity;
+        rows->hi[row] = dInfinity;
+        return 1;
+    }
+    rows->lo[row] = lm->limit == 1 ? 0 : -dInfinity;
+    rows->hi[row] = lm->limit == 1 ? dInfinity : 0;
+    if (lm->bounce > 0) {
+        // Restitution: an incoming velocity v leaves as -bounce * v, if that
+        // asks more than the position correction does.
+        dReal v = axis_velocity(j, axis, rotational);
+        dReal bounced = -lm->bounce * v;
+        if (lm->limit == 1 && v < 0 && bounced > rows->c[row]) rows->c[row] = bounced;
+        if (lm->limit == 2 && v > 0 && bounced < rows->c[row]) rows->c[row] = bounced;
+    }
+    return 1;
+}

@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// step_internal.h -- what the three steppers share: islands, the per-island
+// body data, the constraint rows, and integration.
+//
+// A step: dxStepBegin finds the islands of enabled bodies; for each island
+// the stepper calls dxIslandPrepare (world-frame inverse inertia, gravity and
+// gyroscopic torque into the accumulators) and dxRowsBuild (every joint's
+// rows), solves for the constraint forces, updates velocities, and calls
+// dxIslandIntegrate; dxStepEnd handles auto-disable and releases scratch.
+
+#ifndef DX_STEP_INTERNAL_H
+#define DX_STEP_INTERNAL_H
+
+#include "objects_internal.h"
+
+typedef struct dxIsland {
+    struct dxBody **bodies;   // b->tag is the body's index here while stepping
+    int nb;
+    dxJoint **joints;         // joints with rows this step
+    int nj;
+} dxIsland;
+
+// World-frame mass data of the bodies of an island (index = b->tag).
+typedef struct dxIslandBodies {
+    dReal *inv_mass;          // nb
+    dReal *inv_inertia;       // nb x 12 (dMatrix3, world frame)
+} dxIslandBodies;
+
+// The constraint rows of an island. Row i: J + i*DX_ROW_SKIP holds
+// [J1l J1a J2l J2a] (3 each) for the bodies body0[i] and body1[i] (island
+// indices; -1 = static world, or a kinematic body whose motion is already
+// folded into c). findex is a global row index or -1.
+#define DX_ROW_SKIP 12
+typedef struct dxIslandRows {
+    int m;
+    dReal *J;
+    dReal *c, *cfm, *lo, *hi;
+    int *findex;
+    int *body0, *body1;
+    int *joint_row;           // nj + 1 offsets: the rows of joint k are joint_row[k]..[k+1]-1
+} dxIslandRows;
+
+// Check the step size and find the islands (arena scratch). Returns 0 (after
+// reporting) if the step must not run.
+int dxStepBegin(struct dxWorld *w, dReal h, const char *function, dxIsland **islands,
+                int *count);
+void dxStepEnd(const dxIsland *islands, int count, dReal h);
+
+void dxIslandPrepare(struct dxWorld *w, const dxIsland *is, dReal h, dxIslandBodies *out);
+void dxRowsBuild(struct dxWorld *w, const dxIsland *is, dReal h, dxIslandRows *rows);
+// out[6*nb] += J^T lambda per body (force, torque); fills joint feedback.
+void dxRowsApplyForces(const dxIsland *is, const dxIslandRows *rows, const dReal *lambda,
+                       dReal *body_forces);
+// v += h * M^-1 * (accumulated + constraint forces) for every island body.
+void dxIslandUpdateVelocities(const dxIsland *is, const dxIslandBodies *bd,
+                              const dReal *constraint_forces, dReal h);
+// Positions and orientations from the velocities, damping, geom notification,
+// and zeroed accumulators.
+void dxIslandIntegrate(const dxIsland *is, dReal h);
+// Move the enabled kinematic bodies by their velocities.
+void dxStepKinematicBodies(struct dxWorld *w, dReal h);
+
+// One body's position and orientation update (infinitesimal or finite rotation).
+void dxBodyIntegrate(struct dxBody *b, dReal h);
+
+#endif

@@ -1,0 +1,761 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// test_quickstep.c -- dWorldQuickStep (guide 5.1): the iterative stepper
+// against analytic pendulum motion, against dWorldStep, limits, motors,
+// contacts and friction, its parameters, bad input, large systems and
+// allocation behaviour.
+
+#include "test.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#define G 9.81
+#define PI 3.14159265358979323846
+
+// A body of mass m at (x, y, z): a sphere of radius r (small r: a point mass).
+static dBodyID sphere_body(dWorldID w, double x, double y, double z, double m, double r)
+{
+    dBodyID b = dBodyCreate(w);
+    dMass mass;
+    dMassSetSphereTotal(&mass, m, r);
+    dBodySetMass(b, &mass);
+    dBodySetPosition(b, x, y, z);
+    return b;
+}
+
+static double distance(const dReal *a, const dReal *b)
+{
+    return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+static double ball_separation(dJointID j)
+{
+    dVector3 a1, a2;
+    dJointGetBallAnchor(j, a1);
+    dJointGetBallAnchor2(j, a2);
+    return distance(a1, a2);
+}
+
+// ---- no constraints ---------------------------------------------------------
+
+// Without rows QuickStep is the same integration as dWorldStep: bit for bit.
+static int test_free_fall_matches_world_step(void)
+{
+    dWorldID w[2];
+    dBodyID b[2];
+    for (int k = 0; k < 2; k++) {
+        w[k] = dWorldCreate();
+        dWorldSetGravity(w[k], 0.5, 0, -G);
+        b[k] = dBodyCreate(w[k]);
+        dMass m;
+        dMassSetBoxTotal(&m, 2, 0.3, 0.5, 0.9);   // unequal inertia: gyroscopic torque
+        dBodySetMass(b[k], &m);
+        dBodySetLinearVel(b[k], 1, 2, 3);
+        dBodySetAngularVel(b[k], 0.7, -2, 5);
+    }
+    for (int s = 0; s < 200; s++) {
+        dBodyAddForce(b[0], 0.1 * s, 0, 0);
+        dBodyAddForce(b[1], 0.1 * s, 0, 0);
+        CHECK(dWorldStep(w[0], 0.01) == 1);
+        CHECK(dWorldQuickStep(w[1], 0.01) == 1);
+    }
+    const dReal *p0 = dBodyGetPosition(b[0]), *p1 = dBodyGetPosition(b[1]);
+    const dReal *q0 = dBodyGetQuaternion(b[0]), *q1 = dBodyGetQuaternion(b[1]);
+    const dReal *v0 = dBodyGetLinearVel(b[0]), *v1 = dBodyGetLinearVel(b[1]);
+    const dReal *a0 = dBodyGetAngularVel(b[0]), *a1 = dBodyGetAngularVel(b[1]);
+    for (int i = 0; i < 3; i++) {
+        CHECK(p0[i] == p1[i]);
+        CHECK(v0[i] == v1[i]);
+        CHECK(a0[i] == a1[i]);
+    }
+    for (int i = 0; i < 4; i++) CHECK(q0[i] == q1[i]);
+    // And it is free fall: z(t) = z0 + v0 t - g t^2 / 2 up to the O(h) of
+    // semi-implicit Euler (g h t / 2 = 0.098 m at t = 2 s, h = 0.01).
+    CHECK_NEAR(p1[2], 3 * 2.0 - 0.5 * G * 4 - 0.5 * G * 0.01 * 2, TOL(1e-9, 1e-3));
+    dWorldDestroy(w[0]);
+    dWorldDestroy(w[1]);
+    return 0;
+}
+
+// ---- pendulums ----------------------------------------------------------------
+
+// Simulate a pendulum of length L released at angle theta0 from the vertical,
+// swinging in the x-z plane about the origin, for `seconds` with step h.
+// Returns the largest deviation of its length from L and the mean period,
+// measured between upward zero crossings of x.
+static int run_pendulum(dWorldID w, dBodyID b, double L, double seconds, double h,
+                        double *max_length_error, double *period)
+{
+    const dVector3 origin = { 0, 0, 0, 0 };
+    double prev_x = dBodyGetPosition(b)[0], first = -1, last = -1;
+    int crossings = 0;
+    *max_length_error = 0;
+    int steps = (int)(seconds / h + 0.5);
+    for (int s = 1; s <= steps; s++) {
+        if (!dWorldQuickStep(w, h)) return 1;
+        const dReal *p = dBodyGetPosition(b);
+        double e = fabs(distance(p, origin) - L);
+        if (e > *max_length_error) *max_length_error = e;
+        double x = p[0];
+        if (prev_x < 0 && x >= 0) {
+            double t = h * (s - 1 + prev_x / (prev_x - x));
+            if (crossings == 0) first = t;
+            last = t;
+            crossings++;
+        }
+        prev_x = x;
+    }
+    *period = crossings > 1 ? (last - first) / (crossings - 1) : 0;
+    return 0;
+}
+
+// A small ball on a ball joint to the static world: length kept within 1 mm
+// over 10 s with the default ERP/CFM and 20 iterations; small-angle period
+// 2 pi sqrt(L/g) within 1 %. (Amplitude 0.1 rad: the finite-amplitude
+// correction theta0^2/16 = 0.06 %; the sphere's own inertia adds 2e-5.)
+// The ball's small inertia (radius 1 cm) makes the joint's 3x3 block badly
+// conditioned: iterated row by row the length drifts by 3 mm (7 mm in ODE
+// 0.16); QuickStep solves the block exactly.
+static int test_ball_pendulum_length_and_period(void)
+{
+    const double L = 1, theta0 = 0.1;
+    dWorldID w = dWorldCreate();
+    dWorldSetGravity(w, 0, 0, -G);
+    CHECK(dWorldGetQuickStepNumIterations(w) == 20);
+    dBodyID b = sphere_body(w, L * sin(theta0), 0, -L * cos(theta0), 1, 0.01);
+    dJointID j = dJointCreateBall(w, 0);
+    dJointAttach(j, b, 0);
+    dJointSetBallAnchor(j, 0, 0, 0);
+    double err, period;
+    CHECK(run_pendulum(w, b, L, 10, 0.01, &err, &period) == 0);
+    double expected = 2 * PI * sqrt(L / G);
+    printf("# ball pendulum: length error %.3g m, period %.5g s (2 pi sqrt(L/g) = %.5g s)\n",
+           err, period, expected);
+    CHECK(err < 1e-3);
+    CHECK_NEAR(period, expected, 0.01 * expected);
+    dWorldDestroy(w);
+    return 0;
+}
+
+// The same with a hinge about the horizontal y axis.
+static int test_hinge_pendulum_length_and_period(void)
+{
+    const double L = 0.5, theta0 = 0.1;
+    dWorldID w = dWorldCreate();
+    dWorldSetGravity(w, 0, 0, -G);
+    dBodyID b = sphere_body(w, L * sin(theta0), 0, -L * cos(theta0), 2, 0.01);
+    dJointID j = dJointCreateHinge(w, 0);
+    dJointAttach(j, b, 0);
+    dJointSetHingeAnchor(j, 0, 0, 0);
+    dJointSetHingeAxis(j, 0, 1, 0);
+    double err, period;
+    CHECK(run_pendulum(w, b, L, 10, 0.005, &err, &period) == 0);
+    double expected = 2 * PI * sqrt(L / G);
+    printf("# hinge pendulum: length error %.3g m, period %.5g s (2 pi sqrt(L/g) = %.5g s)\n",
+           err, period, expected);
+    CHECK(err < 1e-3);
+    CHECK_NEAR(period, expected, 0.01 * expected);
+    // The hinge keeps the motion in the x-z plane.
+    CHECK_NEAR(dBodyGetPosition(b)[1], 0, 1e-6);
+    dWorldDestroy(w);
+    return 0;
+}
+
+// ---- chains ---------------------------------------------------------------------
+
+// n rods of length l (boxes, mass 0.1 kg) joined end to end by ball joints,
+// the first to the static world at the origin, lying straight at `angle`
+// below the +x axis in the x-z plane (so they fall and swing). joints[k]
+// joins rod k-1 (or the world) and rod k.
+static void make_chain(dWorldID w, int n, double l, double angle, dBodyID *rods,
+                       dJointID *joints)
+{
+    const double ux = cos(angle), uz = -sin(angle);
+    dMatrix3 R;
+    dRFromAxisAndAngle(R, 0, 1, 0, angle);
+    for (int k = 0; k < n; k++) {
+        rods[k] = dBodyCreate(w);
+        dMass m;
+        dMassSetBoxTotal(&m, 0.1, l, 0.02, 0.02);
+        dBodySetMass(rods[k], &m);
+        dBodySetPosition(rods[k], (k + 0.5) * l * ux, 0, (k + 0.5) * l * uz);
+        dBodySetRotation(rods[k], R);
+        joints[k] = dJointCreateBall(w, 0);
+        dJointAttach(joints[k], rods[k], k > 0 ? rods[k - 1] : 0);
+        dJointSetBallAnchor(joints[k], k * l * ux, 0, k * l * uz);
+    }
+}
+
+// Largest separation of any joint of a 20-link chain (2 m) released at
+// `angle` over 10 s, stepped with h = 0.01 by QuickStep with `iterations`
+// (or by dWorldStep if iterations is 0).
+static double chain_max_separation(double angle, int iterations)
+{
+    enum { N = 20 };
+    dBodyID rods[N];
+    dJointID joints[N];
+    dWorldID w = dWorldCreate();
+    dWorldSetGravity(w, 0, 0, -G);
+    if (iterations > 0) dWorldSetQuickStepNumIterations(w, iterations);
+    make_chain(w, N, 0.1, angle, rods, joints);
+    double worst = 0;
+    for (int s = 0; s < 1000; s++) {
+        if (iterations > 0) dWorldQuickStep(w, 0.01);
+        else dWorldStep(w, 0.01);
+        for (int k = 0; k < N; k++) {
+            double e = ball_separation(joints[k]);
+            if (!(e <= worst)) worst = e;   // NaN propagates
+        }
+    }
+    dWorldDestroy(w);
+    return worst;
+}
+
+// A 20-link chain released at 45 degrees: the joints stay together within
+// 1 cm over 10 s with the default 20 iterations. What remains is mostly the
+// step's own drift (ERP corrects position errors 20 % per step): dWorldStep,
+// exact each step, does about as well.
+static int test_chain_joint_separation(void)
+{
+    double sep20 = chain_max_separation(PI / 4, 20);
+    double sep100 = chain_max_separation(PI / 4, 100);
+    double exact = chain_max_separation(PI / 4, 0);
+    printf("# 20-link chain at 45 deg, max joint separation over 10 s: %.3g m (20 iterations), "
+           "%.3g m (100 iterations), %.3g m (dWorldStep)\n", sep20, sep100, exact);
+    CHECK(sep20 < 1e-2);
+    CHECK(sep100 < 1e-2);
+    CHECK(sep20 < 1.5 * exact);
+    return 0;
+}
+
+// Released 10 degrees from hanging, the chain's tension must cross 20 links
+// and iterations matter: 100 iterations come close to dWorldStep.
+static int test_hanging_chain_converges_with_iterations(void)
+{
+    const double angle = PI / 2 - PI / 18;
+    double sep20 = chain_max_separation(angle, 20);
+    double sep100 = chain_max_separation(angle, 100);
+    double exact = chain_max_separation(angle, 0);
+    printf("# 20-link chain at 80 deg: %.3g m (20 iterations), %.3g m (100 iterations), "
+           "%.3g m (dWorldStep)\n", sep20, sep100, exact);
+    CHECK(sep20 < 1e-2);
+    CHECK(sep100 < sep20);
+    CHECK(sep100 < 2 * exact);
+    return 0;
+}
+
+// 1000 bodies in one island: no recursion or stack arrays, so no overflow;
+// the hanging chain stays finite and attached at the top.
+static int test_thousand_body_chain(void)
+{
+    enum { N = 1000 };
+    static dBodyID rods[N];
+    static dJointID joints[N];
+    dWorldID w = dWorldCreate();
+    dWorldSetGravity(w, 0, 0, -G);
+    make_chain(w, N, 0.05, PI / 2, rods, joints);
+    for (int s = 0; s < 20; s++) CHECK(dWorldQuickStep(w, 0.01) == 1);
+    for (int k = 0; k < N; k++) {
+        const dReal *p = dBodyGetPosition(rods[k]);
+        CHECK(isfinite(p[0]) && isfinite(p[1]) && isfinite(p[2]));
+    }
+    // In 0.2 s the top of the chain falls 0.2 m freely at most; the joint to
+    // the world holds it far better than that.
+    CHECK(ball_separation(joints[0]) < 0.01);
+    dWorldDestroy(w);
+    return 0;
+}
+
+// A kinematic body is not part of the island: the rows on it act on the bob
+// alone (the solver puts the island body first; the support is attached as
+// the joint's first body here) and its velocity enters the rows. A bob
+// hanging from a kinematic support moving at constant velocity ends up moving
+// with it.
+static int test_pendulum_on_moving_kinematic_support(void)
+{
+    dWorldID w = dWorldCreate();
+    dWorldSetGravity(w, 0, 0, -G);
+    dBodyID support = dBodyCreate(w);
+    dBodySetKinematic(support);
+    dBodySetLinearVel(support, 1, 0, 0);
+    dBodyID bob = sphere_body(w, 0, 0, -1, 1, 0.1);
+    dJointID j = dJointCreateBall(w, 0);
+    dJointAttach(j, support, bob);
+    dJointSetBallAnchor(j, 0, 0, 0);
+    // The bob starts at rest and swings behind; a viscous drag relative to
+    // the support (time constant 0.5 s) settles it within 10 s.
+    double worst = 0;
+    for (int s = 0; s < 1000; s++) {
+        const dReal *v = dBodyGetLinearVel(bob);
+        dBodyAddForce(bob, -2 * (v[0] - 1), -2 * v[1], -2 * v[2]);
+        CHECK(dWorldQuickStep(w, 0.01) == 1);
+        worst = fmax(worst, ball_separation(j));
+    }
+    CHECK(worst < 1e-3);
+    CHECK_NEAR(dBodyGetPosition(support)[0], 10, TOL(1e-9, 1e-3));   // 1000 sums of 0.01
+    CHECK_NEAR(dBodyGetLinearVel(bob)[0], 1, 0.01);
+    CHECK_NEAR(dBodyGetPosition(bob)[0], 10, 0.01);
+    dWorldDestroy(w);
+    return 0;
+}
+
+// ---- motors, limits, feedback ----------------------------------------------------
+
+// A velocity motor with ample force reaches its target speed in a few steps.
+static int test_hinge_motor_reaches_speed(void)
+{
+    dWorldID w = dWorldCreate();
+    dWorldSetGravity(w, 0, 0, -G);
+    dBodyID b = dBodyCreate(w);
+    dMass m;
+    dMassSetCylinderTotal(&m, 5, 3, 0.3, 0.05);   // a wheel about z
+    dBodySetMass(b, &m);
+    dJointID j = dJointCreateHinge(w, 0);
+    dJointAttach(j, b, 0);
+    dJointSetHingeAnchor(j, 0, 0, 0);
+    dJointSetHingeAxis(j, 0, 0, 1);
+    dJointSetHingeParam(j, dParamVel, 10);
+    dJointSetHingeParam(j, dParamFMax, 1e4);
+    for (int s = 0; s < 3; s++) CHECK(dWorldQuickStep(w, 0.01) == 1);
+    CHECK_NEAR(dJointGetHingeAngleRate(j), 10, 0.1);
+    // Negative target, weak motor: the speed changes by at most FMax h / I per step.
+    dJointSetHingeParam(j, dParamVel, -10);
+    dJointSetHingeParam(j, dParamFMax, 0.1);
+    double before = dJointGetHingeAngleRate(j);
+    CHECK(dWorldQuickStep(w, 0.01) == 1);
+    double limit = 0.1 * 0.01 / m.I[2 * 4 + 2];
+    CHECK_NEAR(dJointGetHingeAngleRate(j), before - limit, 1e-3 * limit);
+    dWorldDestroy(w);
+    return 0;
+}
+
+// Stops are one-sided bounded rows: a pendulum released from the horizontal
+// with a stop at 1 rad below it comes to rest on the stop.
+static int test_hinge_stop_holds(void)
+{
+    const double L = 0.5;
+    dWorldID w = dWorldCreate();
+    dWorldSetGravity(w, 0, 0, -G);
+    dBodyID b = sphere_body(w, L, 0, 0, 1, 0.01);
+    dJointID j = dJointCreateHinge(w, 0);
+    dJointAttach(j, b, 0);
+    dJointSetHingeAnchor(j, 0, 0, 0);
+    dJointSetHingeAxis(j, 0, 1, 0);   // falling turns about +y: the angle grows
+    dJointSetHingeParam(j, dParamHiStop, 1.0);
+    double most = 0;
+    for (int s = 0; s < 400; s++) {
+        CHECK(dWorldQuickStep(w, 0.005) == 1);
+        if (dJointGetHingeAngle(j) > most) most = dJointGetHingeAngle(j);
+    }
+    // Free it would swing to pi; the stop (ERP 0.2, bounce 0) lets it
+    // overshoot by at most a few hundredths of a radian and then holds it.
+    CHECK(most < 1.05);
+    CHECK_NEAR(dJointGetHingeAngle(j), 1.0, 0.01);
+    CHECK(fabs(dJointGetHingeAngleRate(j)) < 0.01);
+    dWorldDestroy(w);
+    return 0;
+}
+
+// A pendulum at rest: the joint's force on the bob balances its weight.
+static int test_feedback_of_static_pendulum(void)
+{
+    const double mass = 3;
+    dWorldID w = dWorldCreate();
+    dWorldSetGravity(w, 0, 0, -G);
+    dBodyID b = sphere_body(w, 0, 0, -0.8, mass, 0.05);
+    dJointID j = dJointCreateBall(w, 0);
+    dJointAttach(j, b, 0);
+    dJointSetBallAnchor(j, 0, 0, 0);
+    dJointFeedback fb;
+    dJointSetFeedback(j, &fb);
+    for (int s = 0; s < 5; s++) CHECK(dWorldQuickStep(w, 0.01) == 1);
+    // The vertical row is decoupled from the others (the anchor is straight
+    // above the centre), so SOR converges to it by a factor 0.3 per iteration.
+    CHECK_NEAR(fb.f1[0], 0, TOL(1e-9, 1e-4));
+    CHECK_NEAR(fb.f1[1], 0, TOL(1e-9, 1e-4));
+    CHECK_NEAR(fb.f1[2], mass * G, TOL(1e-7, 1e-3) * mass * G);
+    for (int i = 0; i < 3; i++) {
+        CHECK_NEAR(fb.t1[i], 0, TOL(1e-9, 1e-4));
+        CHECK(fb.f2[i] == 0 && fb.t2[i] == 0);   // the static world gets nothing
+    }
+    CHECK_NEAR(dBodyGetPosition(b)[2], -0.8, TOL(1e-9, 1e-5));
+    dWorldDestroy(w);
+    return 0;
+}
+
+// ---- against dWorldStep ----------------------------------------------------------
+
+// Four rods of unequal mass, all moving: a ball joint to the world, then
+// hinge, ball, hinge; the last hinge has a motor too weak for its target
+// speed, so its row ends at its bound (a true LCP). Compared after one step:
+// QuickStep's velocities against the exact solution of dWorldStep.
+static void build_small_system(dWorldID w, dBodyID *rods)
+{
+    const double l = 0.3;
+    dWorldSetGravity(w, 0, 0, -G);
+    for (int k = 0; k < 4; k++) {
+        rods[k] = dBodyCreate(w);
+        dMass m;
+        dMassSetBoxTotal(&m, k % 2 ? 2.0 : 0.1, l, 0.05, 0.05);
+        dBodySetMass(rods[k], &m);
+        dBodySetPosition(rods[k], (k + 0.5) * l, 0, 0);
+        dBodySetLinearVel(rods[k], 0.1 * k, 0.5, -0.2 * k);
+        dBodySetAngularVel(rods[k], 1 - k, 0.3 * k, 2);
+    }
+    for (int k = 0; k < 4; k++) {
+        dBodyID prev = k > 0 ? rods[k - 1] : 0;
+        if (k % 2 == 0) {
+            dJointID j = dJointCreateBall(w, 0);
+            dJointAttach(j, rods[k], prev);
+            dJointSetBallAnchor(j, k * l, 0, 0);
+        } else {
+            dJointID j = dJointCreateHinge(w, 0);
+            dJointAttach(j, rods[k], prev);
+            dJointSetHingeAnchor(j, k * l, 0, 0);
+            dJointSetHingeAxis(j, 0, k == 1 ? 1 : 0, 1);
+            if (k == 3) {
+                dJointSetHingeParam(j, dParamVel, 50);
+                dJointSetHingeParam(j, dParamFMax, 0.5);
+            }
+        }
+    }
+}
+
+static double quickstep_error(int iterations, const dBodyID *exact)
+{
+    dBodyID rods[4];
+    dWorldID w = dWorldCreate();
+    build_small_system(w, rods);
+    dWorldSetQuickStepNumIterations(w, iterations);
+    dWorldQuickStep(w, 0.01);
+    double err = 0;
+    for (int k = 0; k < 4; k++) {
+        const dReal *v = dBodyGetLinearVel(rods[k]), *ve = dBodyGetLinearVel(exact[k]);
+        const dReal *a = dBodyGetAngularVel(rods[k]), *ae = dBodyGetAngularVel(exact[k]);
+        for (int i = 0; i < 3; i++) {
+            err = fmax(err, fabs(v[i] - ve[i]));
+            err = fmax(err, fabs(a[i] - ae[i]));
+        }
+    }
+    dWorldDestroy(w);
+    return err;
+}
+
+static int test_converges_to_world_step(void)
+{
+    dBodyID exact[4];
+    dWorldID w = dWorldCreate();
+    build_small_system(w, exact);
+    CHECK(dWorldStep(w, 0.01) == 1);
+    double e5 = quickstep_error(5, exact);
+    double e50 = quickstep_error(50, exact);
+    double e500 = quickstep_error(500, exact);
+    printf("# max velocity error vs dWorldStep: %.3g (5 it), %.3g (50 it), %.3g (500 it)\n",
+           e5, e50, e500);
+    CHECK(e50 < e5);
+    CHECK(e500 < e50);
+    // SOR converges to the LCP solution (the mass ratio 20 makes it slow).
+    CHECK(e500 < TOL(1e-6, 1e-2));
+    dWorldDestroy(w);
+    return 0;
+}
+
+// ---- contacts --------------------------------------------------------------------
+
+// A box of the given size and mass at (x, y, z), unrotated.
+static dBodyID box_body(dWorldID w, double x, double y, double z, const double *size, double m)
+{
+    dBodyID b = dBodyCreate(w);
+    dMass mass;
+    dMassSetBoxTotal(&mass, m, size[0], size[1], size[2]);
+    dBodySetMass(b, &mass);
+    dBodySetPosition(b, x, y, z);
+    return b;
+}
+
+// Contacts at the four bottom corners of `top` (a box of the given size)
+// against `bottom` (another box below it, or the ground z = 0 if NULL), with
+// normal +z and the depth of each corner below the supporting face, for the
+// corners that touch: what a box-box collider reports for a flat stack.
+static void box_contacts(dWorldID w, dJointGroupID g, dBodyID top, dBodyID bottom,
+                         const double *size, int mode, double mu)
+{
+    double face = bottom ? dBodyGetPosition(bottom)[2] + 0.5 * size[2] : 0;
+    for (int k = 0; k < 4; k++) {
+        dVector3 p;
+        dBodyGetRelPointPos(top, (k & 1 ? 0.5 : -0.5) * size[0], (k & 2 ? 0.5 : -0.5) * size[1],
+                            -0.5 * size[2], p);
+        dContact c = { 0 };
+        c.surface.mode = mode;
+        c.surface.mu = mu;
+        dCopyVector3(c.geom.pos, p);
+        c.geom.normal[2] = 1;
+        c.geom.depth = face - p[2];
+        c.geom.side1 = c.geom.side2 = -1;
+        if (c.geom.depth < 0) continue;
+        dJointID j = dJointCreateContact(w, g, &c);
+        dJointAttach(j, top, bottom);
+    }
+}
+
+// A box resting on four contacts stays put: no drift, no rotation. With mu
+// 0.5 the friction rows are bounded; with infinite mu they are equality rows
+// (solved as a block) and the normal row is coupled to them.
+static int test_box_rests_on_contacts(void)
+{
+    const double size[3] = { 1, 0.6, 0.4 }, mus[2] = { 0.5, dInfinity };
+    for (int k = 0; k < 2; k++) {
+        dWorldID w = dWorldCreate();
+        dWorldSetGravity(w, 0, 0, -G);
+        dJointGroupID g = dJointGroupCreate(0);
+        dBodyID b = box_body(w, 0, 0, 0.2, size, 3);
+        double worst = 0;
+        for (int s = 0; s < 500; s++) {
+            box_contacts(w, g, b, 0, size, 0, mus[k]);
+            CHECK(dWorldQuickStep(w, 0.01) == 1);
+            dJointGroupEmpty(g);
+            const dReal *p = dBodyGetPosition(b);
+            worst = fmax(worst, sqrt(p[0] * p[0] + p[1] * p[1] + (p[2] - 0.2) * (p[2] - 0.2)));
+        }
+        printf("# box on 4 contacts (mu %g), max displacement over 5 s: %.3g m\n", mus[k],
+               worst);
+        // The contacts hold the box at the velocity level and what sinks
+        // within a step is corrected by ERP: in double nothing moves beyond
+        // rounding. In single, rounding in the redundant system (12 rows for
+        // 6 degrees of freedom) leaves a creep of about 1e-4 m/s.
+        CHECK(worst < TOL(1e-6, 3e-3));
+        const dReal *q = dBodyGetQuaternion(b);
+        CHECK_NEAR(q[0], 1, TOL(1e-9, 1e-6));
+        CHECK(dCalcVectorLength3(dBodyGetLinearVel(b)) < TOL(1e-6, 1e-3));
+        CHECK(dCalcVectorLength3(dBodyGetAngularVel(b)) < TOL(1e-6, 1e-3));
+        dJointGroupDestroy(g);
+        dWorldDestroy(w);
+    }
+    return 0;
+}
+
+// Sliding on the friction pyramid (dContactApprox1, mu 0.5): the friction
+// force is mu times the normal force, so the box decelerates at mu g.
+static int test_sliding_box_decelerates_at_mu_g(void)
+{
+    const double size[3] = { 1, 0.6, 0.4 }, mu = 0.5, h = 0.01;
+    dWorldID w = dWorldCreate();
+    dWorldSetGravity(w, 0, 0, -G);
+    dJointGroupID g = dJointGroupCreate(0);
+    dBodyID b = box_body(w, 0, 0, 0.2, size, 3);
+    dBodySetLinearVel(b, 5, 0, 0);
+    double v_start = 0;
+    for (int s = 1; s <= 60; s++) {
+        box_contacts(w, g, b, 0, size, dContactApprox1, mu);
+        CHECK(dWorldQuickStep(w, h) == 1);
+        dJointGroupEmpty(g);
+        if (s == 10) v_start = dBodyGetLinearVel(b)[0];
+    }
+    double decel = (v_start - dBodyGetLinearVel(b)[0]) / (50 * h);
+    printf("# sliding box: deceleration %.5g m/s^2 (mu g = %.5g)\n", decel, mu * G);
+    CHECK_NEAR(decel, mu * G, 0.02 * mu * G);
+    CHECK(fabs(dBodyGetLinearVel(b)[1]) < TOL(1e-6, 1e-4));   // no sideways drift
+    dJointGroupDestroy(g);
+    dWorldDestroy(w);
+    return 0;
+}
+
+// A stack of boxes on the ground (four contacts per interface) stays
+// standing with the default 20 iterations.
+static int test_box_stack_stands(void)
+{
+    enum { N = 8 };
+    const double size[3] = { 0.5, 0.5, 0.25 };
+    dWorldID w = dWorldCreate();
+    dWorldSetGravity(w, 0, 0, -G);
+    dJointGroupID g = dJointGroupCreate(0);
+    dBodyID boxes[N];
+    for (int k = 0; k < N; k++) boxes[k] = box_body(w, 0, 0, (k + 0.5) * size[2], size, 1);
+    double worst = 0;
+    for (int s = 0; s < 500; s++) {
+        for (int k = 0; k < N; k++)
+            box_contacts(w, g, boxes[k], k ? boxes[k - 1] : 0, size, dContactApprox1, 0.5);
+        CHECK(dWorldQuickStep(w, 0.01) == 1);
+        dJointGroupEmpty(g);
+        for (int k = 0; k < N; k++) {
+            const dReal *p = dBodyGetPosition(boxes[k]);
+            double z0 = (k + 0.5) * size[2];
+            worst = fmax(worst, sqrt(p[0] * p[0] + p[1] * p[1] + (p[2] - z0) * (p[2] - z0)));
+        }
+    }
+    printf("# stack of %d boxes, max displacement over 5 s: %.3g m\n", N, worst);
+    // 20 iterations do not converge a stack of 8 (dWorldStep holds it to
+    // 1e-9 m): it settles and sways by about a centimetre, but stands (a
+    // box that slid off or toppled would move by its size, 0.25 m or more).
+    CHECK(worst < 0.05);
+    dJointGroupDestroy(g);
+    dWorldDestroy(w);
+    return 0;
+}
+
+// ---- determinism -------------------------------------------------------------------
+
+// Islands are solved independently: a pendulum moves the same whether or not
+// another island is in the world, and two identical worlds agree exactly.
+static int test_islands_are_independent_and_reproducible(void)
+{
+    dWorldID w[3];
+    dBodyID rods[3][20];
+    dJointID joints[3][20];
+    for (int k = 0; k < 3; k++) {
+        w[k] = dWorldCreate();
+        dWorldSetGravity(w[k], 0, 0, -G);
+        if (k == 2) {   // an extra island, created first so it is stepped first
+            dBodyID other = sphere_body(w[k], 5, 5, 5, 1, 0.1);
+            dJointID j = dJointCreateBall(w[k], 0);
+            dJointAttach(j, other, 0);
+            dJointSetBallAnchor(j, 5, 5, 6);
+        }
+        make_chain(w[k], 20, 0.1, PI / 4, rods[k], joints[k]);
+    }
+    for (int s = 0; s < 50; s++)
+        for (int k = 0; k < 3; k++) CHECK(dWorldQuickStep(w[k], 0.01) == 1);
+    for (int n = 0; n < 20; n++) {
+        for (int k = 1; k < 3; k++) {
+            const dReal *p0 = dBodyGetPosition(rods[0][n]), *pk = dBodyGetPosition(rods[k][n]);
+            CHECK(p0[0] == pk[0] && p0[1] == pk[1] && p0[2] == pk[2]);
+        }
+    }
+    for (int k = 0; k < 3; k++) dWorldDestroy(w[k]);
+    return 0;
+}
+
+// ---- parameters and bad input ----------------------------------------------------
+
+static int test_parameters_round_trip_and_bad_values(void)
+{
+    dWorldID w = dWorldCreate();
+    CHECK(dWorldGetQuickStepNumIterations(w) == 20);
+    CHECK_NEAR(dWorldGetQuickStepW(w), 1.3, 1e-6);
+    dWorldSetQuickStepNumIterations(w, 37);
+    dWorldSetQuickStepW(w, 0.9);
+    CHECK(dWorldGetQuickStepNumIterations(w) == 37);
+    CHECK_NEAR(dWorldGetQuickStepW(w), 0.9, 1e-6);
+
+    test_capture_reports();
+    dWorldSetQuickStepNumIterations(w, 0);
+    CHECK(test_captured_count() == 1);
+    CHECK(test_captured_contains("dWorldSetQuickStepNumIterations"));
+    dWorldSetQuickStepNumIterations(w, -3);
+    CHECK(test_captured_count() == 2);
+    dWorldSetQuickStepW(w, 2.5);
+    CHECK(test_captured_count() == 3);
+    CHECK(test_captured_contains("dWorldSetQuickStepW"));
+    dWorldSetQuickStepW(w, 0);
+    CHECK(test_captured_count() == 4);
+    dWorldSetQuickStepW(w, NAN);
+    CHECK(test_captured_count() == 5);
+    CHECK(dWorldQuickStep(0, 0.01) == 0);
+    CHECK(test_captured_count() == 6);
+    CHECK(test_captured_contains("dWorldQuickStep"));
+    test_release_reports();
+    // Rejected values change nothing.
+    CHECK(dWorldGetQuickStepNumIterations(w) == 37);
+    CHECK_NEAR(dWorldGetQuickStepW(w), 0.9, 1e-6);
+    dWorldDestroy(w);
+    return 0;
+}
+
+// A bad step size is reported and leaves every body (and its accumulated
+// force) as it was.
+static int test_bad_step_size_changes_nothing(void)
+{
+    dWorldID w = dWorldCreate();
+    dWorldSetGravity(w, 0, 0, -G);
+    dBodyID b = sphere_body(w, 0.3, 0, -1, 1, 0.05);
+    dBodySetLinearVel(b, 1, 2, 3);
+    dJointID j = dJointCreateBall(w, 0);
+    dJointAttach(j, b, 0);
+    dJointSetBallAnchor(j, 0, 0, 0);
+    dBodyAddForce(b, 4, 5, 6);
+    const dReal bad[] = { 0, -0.01, NAN, INFINITY };
+    test_capture_reports();
+    for (int i = 0; i < 4; i++) {
+        int before = test_captured_count();
+        CHECK(dWorldQuickStep(w, bad[i]) == 0);
+        CHECK(test_captured_count() == before + 1);
+        CHECK(test_captured_contains("stepsize"));
+    }
+    test_release_reports();
+    const dReal *p = dBodyGetPosition(b), *v = dBodyGetLinearVel(b), *f = dBodyGetForce(b);
+    CHECK(p[0] == (dReal)0.3 && p[1] == 0 && p[2] == -1);
+    CHECK(v[0] == 1 && v[1] == 2 && v[2] == 3);
+    CHECK(f[0] == 4 && f[1] == 5 && f[2] == 6);
+    dWorldDestroy(w);
+    return 0;
+}
+
+// ---- memory ------------------------------------------------------------------------
+
+static int allocations;
+
+static void *counting_alloc(dsizeint size)
+{
+    allocations++;
+    return malloc(size ? size : 1);
+}
+
+static void *counting_realloc(void *p, dsizeint old_size, dsizeint size)
+{
+    (void)old_size;
+    allocations++;
+    return realloc(p, size ? size : 1);
+}
+
+// After two warm-up steps a step allocates nothing: all scratch comes from
+// the world's arena, which has grown to its peak size.
+static int test_warm_step_allocates_nothing(void)
+{
+    enum { N = 30 };
+    dBodyID rods[N];
+    dJointID joints[N];
+    dSetAllocHandler(counting_alloc);
+    dSetReallocHandler(counting_realloc);
+    dWorldID w = dWorldCreate();
+    dWorldSetGravity(w, 0, 0, -G);
+    make_chain(w, N, 0.1, PI / 4, rods, joints);
+    dBodyID lone = sphere_body(w, 9, 9, 9, 1, 0.1);   // a second island
+    (void)lone;
+    dJointFeedback fb;
+    dJointSetFeedback(joints[0], &fb);
+    dWorldQuickStep(w, 0.01);
+    dWorldQuickStep(w, 0.01);
+    allocations = 0;
+    for (int s = 0; s < 10; s++) dWorldQuickStep(w, 0.01);
+    int counted = allocations;
+    dWorldDestroy(w);
+    dSetAllocHandler(0);
+    dSetReallocHandler(0);
+    CHECK(counted == 0);
+    return 0;
+}
+
+const test_case test_cases[] = {
+    TEST_CASE(test_free_fall_matches_world_step),
+    TEST_CASE(test_ball_pendulum_length_and_period),
+    TEST_CASE(test_hinge_pendulum_length_and_period),
+    TEST_CASE(test_chain_joint_separation),
+    TEST_CASE(test_hanging_chain_converges_with_iterations),
+    TEST_CASE(test_thousand_body_chain),
+    TEST_CASE(test_pendulum_on_moving_kinematic_support),
+    TEST_CASE(test_hinge_motor_reaches_speed),
+    TEST_CASE(test_hinge_stop_holds),
+    TEST_CASE(test_feedback_of_static_pendulum),
+    TEST_CASE(test_converges_to_world_step),
+    TEST_CASE(test_box_rests_on_contacts),
+    TEST_CASE(test_sliding_box_decelerates_at_mu_g),
+    TEST_CASE(test_box_stack_stands),
+    TEST_CASE(test_islands_are_independent_and_reproducible),
+    TEST_CASE(test_parameters_round_trip_and_bad_values),
+    TEST_CASE(test_bad_step_size_changes_nothing),
+    TEST_CASE(test_warm_step_allocates_nothing),
+    TEST_END
+};
