@@ -551,37 +551,17 @@ static void solve(qs_system *sys, int iterations)
     }
 }
 
-static void step_island(struct dxWorld *w, const dxIsland *is, dReal h)
+// The iterative solve; lambda comes back in the rows' original order.
+static void solve_sor(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *bd,
+                      const dxIslandRows *r, dReal h, dReal *lambda)
 {
-    dxArena *a = &w->arena;
-    dxArenaMark mark = dxArenaSave(a);
-    dxIslandBodies bd;
-    dxIslandPrepare(w, is, h, &bd);
-    dxIslandRows r;
-    dxRowsBuild(w, is, h, &r);
-
-    dReal *cforce = DX_ARENA_ARRAY(a, dReal, 6 * is->nb);
-    dSetZero(cforce, 6 * is->nb);
-    if (r.m > 0) {
-        qs_system sys;
-        build_system(a, is, &bd, &r, h, w->qs_w, &sys);
-        solve(&sys, w->qs_iterations);
-        dReal *lambda = DX_ARENA_ARRAY(a, dReal, r.m);
-        for (int k = 0; k < r.m; k++) lambda[sys.orig[k]] = sys.lambda[k];
-        dxRowsApplyForces(is, &r, lambda, cforce);
-    }
-    dxIslandUpdateVelocities(is, &bd, cforce, h);
-    dxIslandIntegrate(is, h);
-    dxArenaRestore(a, mark);
+    qs_system sys;
+    build_system(&w->arena, is, bd, r, h, w->qs_w, &sys);
+    solve(&sys, w->qs_iterations);
+    for (int k = 0; k < r->m; k++) lambda[sys.orig[k]] = sys.lambda[k];
 }
 
 int dWorldQuickStep(dWorldID w, dReal stepsize)
 {
-    dxIsland *islands;
-    int count;
-    if (!dxStepBegin(w, stepsize, __func__, &islands, &count)) return 0;
-    for (int i = 0; i < count; i++) step_island(w, &islands[i], stepsize);
-    dxStepKinematicBodies(w, stepsize);
-    dxStepEnd(islands, count, stepsize);
-    return 1;
+    return dxStepWorld(w, stepsize, __func__, solve_sor);
 }

@@ -9,8 +9,7 @@
 
 #include <ode/matrix.h>
 
-// inv_inertia_world = R * inv_inertia_body * R^T.
-static void world_inverse_inertia(const struct dxBody *b, dReal *out)
+void dxBodyWorldInverseInertia(const struct dxBody *b, dReal *out)
 {
     dMatrix3 tmp;
     dMultiply2_333(tmp, b->inv_inertia, b->R);
@@ -55,7 +54,7 @@ void dxIslandPrepare(struct dxWorld *w, const dxIsland *is, dReal h, dxIslandBod
         struct dxBody *b = is->bodies[i];
         b->tag = i;
         out->inv_mass[i] = b->inv_mass;
-        world_inverse_inertia(b, out->inv_inertia + 12 * i);
+        dxBodyWorldInverseInertia(b, out->inv_inertia + 12 * i);
         if (!(b->flags & DX_BODY_NO_GRAVITY))
             dAddVectorScaledVector3(b->force, b->force, w->gravity, b->mass.mass);
         if (!(b->flags & DX_BODY_NO_GYROSCOPIC)) add_gyroscopic_torque(b, h);

@@ -112,44 +112,24 @@ static dReal *form_rhs(dxArena *a, const dxIsland *is, const dxIslandBodies *bd,
     return rhs;
 }
 
-static void step_island(struct dxWorld *w, const dxIsland *is, dReal h)
+// The big-matrix solve: A lambda = rhs + w as a mixed LCP.
+static void solve_big_matrix(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *bd,
+                             const dxIslandRows *r, dReal h, dReal *lambda)
 {
     dxArena *a = &w->arena;
-    dxArenaMark mark = dxArenaSave(a);
     const dReal fps = dRecip(h);
-    dxIslandBodies bd;
-    dxIslandPrepare(w, is, h, &bd);
-    dxIslandRows r;
-    dxRowsBuild(w, is, h, &r);
-
-    dReal *cforce = DX_ARENA_ARRAY(a, dReal, 6 * is->nb);
-    dSetZero(cforce, 6 * is->nb);
-    if (r.m > 0) {
-        body_rows br;
-        index_rows_by_body(a, &r, is->nb, &br);
-        dReal *iMJ = inverse_mass_times_jt(a, &r, &bd);
-        dReal *A = form_A(a, &r, &br, is->nb, iMJ, fps);
-        dReal *rhs = form_rhs(a, is, &bd, &r, fps);
-        dReal *lambda = DX_ARENA_ARRAY(a, dReal, r.m);
-        dReal *wout = DX_ARENA_ARRAY(a, dReal, r.m);
-        dSetZero(lambda, r.m);
-        if (!dxSolveLCP(a, r.m, A, lambda, rhs, wout, 0, r.lo, r.hi, r.findex))
-            dMessage(d_ERR_LCP, "dWorldStep: the LCP solver did not converge (%d rows); "
-                     "using its best approximation", r.m);
-        dxRowsApplyForces(is, &r, lambda, cforce);
-    }
-    dxIslandUpdateVelocities(is, &bd, cforce, h);
-    dxIslandIntegrate(is, h);
-    dxArenaRestore(a, mark);
+    body_rows br;
+    index_rows_by_body(a, r, is->nb, &br);
+    dReal *iMJ = inverse_mass_times_jt(a, r, bd);
+    dReal *A = form_A(a, r, &br, is->nb, iMJ, fps);
+    dReal *rhs = form_rhs(a, is, bd, r, fps);
+    dReal *wout = DX_ARENA_ARRAY(a, dReal, r->m);
+    if (!dxSolveLCP(a, r->m, A, lambda, rhs, wout, 0, r->lo, r->hi, r->findex))
+        dMessage(d_ERR_LCP, "dWorldStep: the LCP solver did not converge (%d rows); "
+                 "using its best approximation", r->m);
 }
 
 int dWorldStep(dWorldID w, dReal stepsize)
 {
-    dxIsland *islands;
-    int count;
-    if (!dxStepBegin(w, stepsize, __func__, &islands, &count)) return 0;
-    for (int i = 0; i < count; i++) step_island(w, &islands[i], stepsize);
-    dxStepKinematicBodies(w, stepsize);
-    dxStepEnd(islands, count, stepsize);
-    return 1;
+    return dxStepWorld(w, stepsize, __func__, solve_big_matrix);
 }

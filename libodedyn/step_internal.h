@@ -41,6 +41,15 @@ typedef struct dxIslandRows {
     int *joint_row;           // nj + 1 offsets: the rows of joint k are joint_row[k]..[k+1]-1
 } dxIslandRows;
 
+// A stepper's solve: the constraint forces lambda[r->m] of one island, from
+// its bodies bd and rows r (lambda is zeroed scratch of the world arena).
+typedef void dxIslandSolver(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *bd,
+                            const dxIslandRows *r, dReal h, dReal *lambda);
+// A whole step with one solver (dWorldStep, dWorldQuickStep): islands; per
+// island external forces, rows, solve, velocities, positions; kinematic
+// bodies; auto-disable. Returns 1, or 0 (reported) for a bad world or step.
+int dxStepWorld(struct dxWorld *w, dReal h, const char *function, dxIslandSolver *solve);
+
 // Check the step size and find the islands (arena scratch). Returns 0 (after
 // reporting) if the step must not run.
 int dxStepBegin(struct dxWorld *w, dReal h, const char *function, dxIsland **islands,
@@ -61,6 +70,8 @@ void dxIslandIntegrate(const dxIsland *is, dReal h);
 // Move the enabled kinematic bodies by their velocities.
 void dxStepKinematicBodies(struct dxWorld *w, dReal h);
 
+// A body's inverse inertia in the world frame: R * I^-1 * R^T (a dMatrix3).
+void dxBodyWorldInverseInertia(const struct dxBody *b, dReal *out);
 // One body's position and orientation update (infinitesimal or finite rotation).
 void dxBodyIntegrate(struct dxBody *b, dReal h);
 

@@ -48,14 +48,6 @@ typedef struct sf1_step {
     int lcp_failures;
 } sf1_step;
 
-// inv_inertia_world = R * inv_inertia_body * R^T, for the body's current R.
-static void world_inverse_inertia(const struct dxBody *b, dReal *out)
-{
-    dMatrix3 tmp;
-    dMultiply2_333(tmp, b->inv_inertia, b->R);
-    dMultiply0_333(out, b->R, tmp);
-}
-
 // Guide 8.4: enabled bodies wake the disabled bodies within `depth` joint hops
 // of them (breadth first, so each body is reached by its shortest path). The
 // walk crosses enabled joints only, and not kinematic bodies, like the island
@@ -320,7 +312,7 @@ static void move_bodies(sf1_step *st)
     for (int i = 0; i < st->all.nb; i++) {
         struct dxBody *b = st->all.bodies[i];
         dxBodyIntegrate(b, st->s);
-        world_inverse_inertia(b, st->bd.inv_inertia + 12 * i);
+        dxBodyWorldInverseInertia(b, st->bd.inv_inertia + 12 * i);
     }
     for (int i = 0; i < st->nk; i++) dxBodyIntegrate(st->kinematic[i], st->s);
 }
