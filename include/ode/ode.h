@@ -16,6 +16,9 @@
 #include <ode/misc.h>
 #include <ode/contact.h>
 #include <ode/objects.h>
+#include <ode/collision_space.h>
+#include <ode/collision.h>
+#include <ode/backend.h>
 #include <ode/version.h>
 
 #endif

@@ -1,0 +1,456 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// collide_box.c -- box-box (separating axes, then the contact polygon of the
+// touching faces or the closest points of two edges) and box-plane (the
+// corners below the plane).
+
+#include "collide_math.h"
+
+// The edge axes of (nearly) parallel edges are (nearly) zero vectors: their
+// separation test allows this margin (relative to the box sizes) for rounding.
+#define BOX_AXIS_SLACK ((dReal)1e-5)
+// An edge axis wins only if its penetration is shorter than the best face
+// axis' by this factor: face contacts give a stable polygon, so they are
+// preferred when the two are about as deep.
+#define BOX_EDGE_PREFERENCE ((dReal)1.05)
+
+// A point of the clipped contact polygon in the reference face's frame.
+typedef struct clip_point {
+    dReal x, y, depth;
+    dReal t;   // pos is this far from the incident point along nf
+} clip_point;
+
+// Keep the part of poly (n points) with sg * coordinate(axis) <= h in out;
+// returns the new count (at most n + 1 for a convex polygon, capped at 16).
+// Points on the line are kept once and not duplicated by the crossing test.
+static int clip_half(const clip_point *poly, int n, int axis, dReal sg, dReal h, clip_point *out)
+{
+    int m = 0;
+    for (int i = 0; i < n && m < 16; i++) {
+        const clip_point *p = &poly[i], *q = &poly[(i + 1) % n];
+        dReal dp = sg * (axis ? p->y : p->x) - h, dq = sg * (axis ? q->y : q->x) - h;
+        if (dp <= 0) out[m++] = *p;
+        if (m < 16 && ((dp < 0 && dq > 0) || (dp > 0 && dq < 0))) {
+            dReal f = dp / (dp - dq);
+            out[m].x = p->x + f * (q->x - p->x);
+            out[m].y = p->y + f * (q->y - p->y);
+            out[m].depth = p->depth + f * (q->depth - p->depth);
+            m++;
+        }
+    }
+    return m;
+}
+
+// Choose max of the n points (n > max) to keep, in place: the deepest, then
+// each time the point farthest from those already chosen, so the kept
+// points spread over the polygon.
+static void cull_points(clip_point *pts, int n, int max)
+{
+    for (int k = 1; k < max; k++) {
+        int best = k;
+        dReal best_d = -1;
+        for (int i = k; i < n; i++) {
+            dReal nearest = dInfinity;
+            for (int j = 0; j < k; j++) {
+                dReal dx = pts[i].x - pts[j].x, dy = pts[i].y - pts[j].y;
+                dReal d2 = dx * dx + dy * dy;
+                if (d2 < nearest) nearest = d2;
+            }
+            if (nearest > best_d) {
+                best_d = nearest;
+                best = i;
+            }
+        }
+        clip_point t = pts[k];
+        pts[k] = pts[best];
+        pts[best] = t;
+    }
+}
+
+// Clip [*t0, *t1] to where p + t d lies in the box (pos, R, half sides h).
+static void clip_line_to_box(const dReal p[3], const dReal d[3], const dReal *pos,
+                             const dReal *R, const dReal h[3], dReal *t0, dReal *t1)
+{
+    dReal rel[3] = { p[0] - pos[0], p[1] - pos[1], p[2] - pos[2] }, q[3], v[3];
+    dx_to_local(R, rel, q);
+    dx_to_local(R, d, v);
+    for (int i = 0; i < 3; i++) {
+        if (v[i] == 0) {
+            if (q[i] > h[i] || q[i] < -h[i]) *t1 = *t0 - 1;   // empty
+            continue;
+        }
+        dReal a = (-h[i] - q[i]) / v[i], b = (h[i] - q[i]) / v[i];
+        if (a > b) {
+            dReal x = a;
+            a = b;
+            b = x;
+        }
+        if (a > *t0) *t0 = a;
+        if (b < *t1) *t1 = b;
+    }
+}
+
+// A point in both boxes, found the long way for deep overlaps where the
+// contact features give none: when two convex solids overlap, an edge of
+// one passes through the other, so the middle of such an edge's part inside
+// the other box will do.
+static void box_overlap_point(const dReal *p1, const dReal *R1, const dReal h1[3],
+                              const dReal *p2, const dReal *R2, const dReal h2[3], dReal pos[3])
+{
+    for (int box = 0; box < 2; box++) {
+        const dReal *p = box ? p2 : p1, *R = box ? R2 : R1, *h = box ? h2 : h1;
+        const dReal *op = box ? p1 : p2, *oR = box ? R1 : R2, *oh = box ? h1 : h2;
+        for (int e = 0; e < 12; e++) {
+            int i = e / 4, i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+            dReal s1 = (e & 1) ? h[i1] : -h[i1], s2 = (e & 2) ? h[i2] : -h[i2], c[3], d[3];
+            for (int q = 0; q < 3; q++) {
+                c[q] = p[q] + s1 * R[4 * q + i1] + s2 * R[4 * q + i2];
+                d[q] = R[4 * q + i];
+            }
+            dReal t0 = -h[i], t1 = h[i];
+            clip_line_to_box(c, d, op, oR, oh, &t0, &t1);
+            if (t0 <= t1) {
+                for (int q = 0; q < 3; q++) pos[q] = c[q] + (t0 + t1) / 2 * d[q];
+                return;
+            }
+        }
+    }
+    for (int q = 0; q < 3; q++) pos[q] = (p1[q] + p2[q]) / 2;   // only rounding gets here
+}
+
+// The face case: the reference box (pr, Rr, half sides hr) touches with its
+// face of axis k whose outward normal nf points at the incident box (pi, Ri,
+// hi). The incident box's face most against nf is clipped to the reference
+// face's rectangle (in the frame U1, U2 of that face, relative to pr); the
+// clipped polygon is written to a (at most 16 points), its count returned.
+// dots gets the incident axes' cosines with nf.
+static int box_clip_incident(const dReal hr[3], int k, const dReal nf[3], const dReal U1[3],
+                             const dReal U2[3], const dReal rel[3], const dReal *Ri,
+                             const dReal hi[3], dReal dots[3], clip_point a[16])
+{
+    dReal B[3][3];
+    int j = 0;
+    for (int m = 0; m < 3; m++) {
+        dx_axis(Ri, m, B[m]);
+        dots[m] = dx_dot(B[m], nf);
+        if (dFabs(dots[m]) > dFabs(dots[j])) j = m;
+    }
+    int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+    // The incident face's centre (rel + sgn hi_j B_j) and half edges
+    // (hi B_j1, hi B_j2) in the reference face's frame (x, y, height).
+    dReal sgn = dots[j] > 0 ? -hi[j] : hi[j];
+    dReal cx = dx_dot(rel, U1) + sgn * dx_dot(B[j], U1);
+    dReal cy = dx_dot(rel, U2) + sgn * dx_dot(B[j], U2);
+    dReal cz = dx_dot(rel, nf) + sgn * dots[j];
+    dReal ux = hi[j1] * dx_dot(B[j1], U1), uy = hi[j1] * dx_dot(B[j1], U2), uz = hi[j1] * dots[j1];
+    dReal vx = hi[j2] * dx_dot(B[j2], U1), vy = hi[j2] * dx_dot(B[j2], U2), vz = hi[j2] * dots[j2];
+    static const dReal corner[4][2] = { { 1, 1 }, { -1, 1 }, { -1, -1 }, { 1, -1 } };
+    for (int v = 0; v < 4; v++) {
+        dReal s = corner[v][0], t = corner[v][1];
+        a[v].x = cx + s * ux + t * vx;
+        a[v].y = cy + s * uy + t * vy;
+        a[v].depth = hr[k] - (cz + s * uz + t * vz);
+    }
+    clip_point b[16];
+    int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+    int n = clip_half(a, 4, 0, 1, hr[k1], b);
+    n = clip_half(b, n, 0, -1, hr[k1], a);
+    n = clip_half(a, n, 1, 1, hr[k2], b);
+    return clip_half(b, n, 1, -1, hr[k2], a);
+}
+
+// Keep (in place) the clipped points below the reference face whose line
+// P + t nf (P the incident point) runs inside both boxes: t in
+// [depth - 2 hr_k, depth] for the reference box, [0, exit] for the incident
+// one (rel = pr - pi); pos will be the middle of that stretch (t). Deep
+// overlaps can clip points past the far side of a thin reference box: they
+// are in neither box and dropped. The deepest is moved first.
+static int box_keep_overlapping(clip_point *a, int n, const dReal hr[3], int k,
+                                const dReal nf[3], const dReal U1[3], const dReal U2[3],
+                                const dReal rel[3], const dReal *Ri, const dReal hi[3],
+                                const dReal dots[3])
+{
+    int kept = 0, deepest = 0;
+    for (int i = 0; i < n; i++) {
+        dReal depth = a[i].depth;
+        if (depth < 0) continue;
+        dReal q[3], up = hr[k] - depth, exit = dInfinity;
+        for (int m = 0; m < 3; m++) q[m] = rel[m] + a[i].x * U1[m] + a[i].y * U2[m] + up * nf[m];
+        for (int m = 0; m < 3; m++) {
+            if (dots[m] == 0) continue;
+            dReal from = Ri[m] * q[0] + Ri[4 + m] * q[1] + Ri[8 + m] * q[2];
+            dReal t = ((dots[m] > 0 ? hi[m] : -hi[m]) - from) / dots[m];
+            if (t < exit) exit = t;
+        }
+        if (exit < 0) exit = 0;   // clipped points lie on the incident face: rounding
+        dReal lo = depth - 2 * hr[k] > 0 ? depth - 2 * hr[k] : 0;
+        dReal top = exit < depth ? exit : depth;
+        if (top < lo) continue;
+        a[kept] = a[i];
+        a[kept].t = (lo + top) / 2;
+        if (a[kept].depth > a[deepest].depth) deepest = kept;
+        kept++;
+    }
+    if (kept > 0) {
+        clip_point t = a[0];
+        a[0] = a[deepest];
+        a[deepest] = t;
+    }
+    return kept;
+}
+
+// The face case (see box_clip_incident): the kept points are the contacts,
+// each with its depth under the reference face, pos in the middle of the
+// stretch through it inside both boxes; at most max, spread (cull_points).
+// The deepest carries the translation along the normal that separates the
+// boxes (clear, box_clearance): the clipped points reach it unless the
+// incident box's highest part over the reference face is not on its
+// incident face (deep or crossed overlaps). normal is the contact normal
+// (into o1).
+static int box_face_contacts(const dReal *pr, const dReal *Rr, const dReal hr[3], int k,
+                             const dReal nf[3], const dReal *pi, const dReal *Ri,
+                             const dReal hi[3], const dReal normal[3], dReal clear,
+                             dxGeom *o1, dxGeom *o2, int max, dContactGeom *out, int skip)
+{
+    dReal U1[3], U2[3], dots[3], rel[3] = { pi[0] - pr[0], pi[1] - pr[1], pi[2] - pr[2] };
+    dx_axis(Rr, (k + 1) % 3, U1);
+    dx_axis(Rr, (k + 2) % 3, U2);
+    clip_point a[16];
+    int n = box_clip_incident(hr, k, nf, U1, U2, rel, Ri, hi, dots, a);
+    for (int i = 0; i < 3; i++) rel[i] = -rel[i];
+    int kept = box_keep_overlapping(a, n, hr, k, nf, U1, U2, rel, Ri, hi, dots);
+    if (kept == 0) {   // the separating axis says they overlap: find a point
+        dReal pos[3];
+        box_overlap_point(pr, Rr, hr, pi, Ri, hi, pos);
+        dx_put_contact(out, 0, skip, pos, normal, clear, o1, o2);
+        return 1;
+    }
+    if (kept > max) {
+        cull_points(a, kept, max);
+        kept = max;
+    }
+    for (int c = 0; c < kept; c++) {
+        dReal pos[3], up = hr[k] - a[c].depth + a[c].t;
+        for (int i = 0; i < 3; i++) pos[i] = pr[i] + a[c].x * U1[i] + a[c].y * U2[i] + up * nf[i];
+        dReal depth = c == 0 && a[0].depth < clear ? clear : a[c].depth;
+        dx_put_contact(out, c, skip, pos, normal, depth, o1, o2);
+    }
+    return kept;
+}
+
+// The edge case: box 1's edge along A_i and box 2's along B_j (the edges of
+// each box nearest the other along the normal) touch; one contact at the
+// middle of the part of the segment between their closest points that lies
+// in both boxes, or if there is none (deep overlaps), box_overlap_point.
+static void box_edge_point(const dReal *p1, const dReal *R1, const dReal h1[3], int i,
+                           const dReal *p2, const dReal *R2, const dReal h2[3], int j,
+                           const dReal n[3], dReal pos[3])
+{
+    dReal pa[3], pb[3], u[3], v[3];
+    for (int m = 0; m < 3; m++) {
+        pa[m] = p1[m];
+        pb[m] = p2[m];
+    }
+    for (int m = 0; m < 3; m++) {
+        dReal ax[3];
+        if (m != i) {   // box 1 towards box 2: against n
+            dx_axis(R1, m, ax);
+            dReal s = dx_dot(ax, n) > 0 ? -h1[m] : h1[m];
+            for (int q = 0; q < 3; q++) pa[q] += s * ax[q];
+        }
+        if (m != j) {   // box 2 towards box 1: along n
+            dx_axis(R2, m, ax);
+            dReal s = dx_dot(ax, n) > 0 ? h2[m] : -h2[m];
+            for (int q = 0; q < 3; q++) pb[q] += s * ax[q];
+        }
+    }
+    dx_axis(R1, i, u);
+    dx_axis(R2, j, v);
+    dReal w[3] = { pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2] };
+    dReal b = dx_dot(u, v), d = dx_dot(u, w), e = dx_dot(v, w), denom = 1 - b * b;
+    dReal s = dx_clamp((b * e - d) / denom, -h1[i], h1[i]);
+    dReal t = dx_clamp((e - b * d) / denom, -h2[j], h2[j]);
+    dReal qb[3], dir[3];
+    for (int q = 0; q < 3; q++) {
+        qb[q] = pb[q] + t * v[q];
+        dir[q] = pa[q] + s * u[q] - qb[q];
+    }
+    dReal t0 = 0, t1 = 1;
+    clip_line_to_box(qb, dir, p1, R1, h1, &t0, &t1);
+    clip_line_to_box(qb, dir, p2, R2, h2, &t0, &t1);
+    if (t0 <= t1) {
+        dReal f = (t0 + t1) / 2;
+        for (int q = 0; q < 3; q++) pos[q] = qb[q] + f * dir[q];
+        return;
+    }
+    box_overlap_point(p1, R1, h1, p2, R2, h2, pos);
+}
+
+// How far box 1 must move along the unit normal (nl, in box 1's frame) to
+// clear box 2: box 1 moved by t n meets box 2 while t n lies in the
+// Minkowski difference box 2 - box 1, whose faces are normal to the 15
+// axes m; the ray t n leaves it at the least h(m) / (m . n) over the axes
+// facing n, h(m) = m . (p2 - p1) + radius1(m) + radius2(m) its support. The
+// ratio does not depend on the length of m, so axes stay unnormalised.
+static dReal box_clearance(const dReal nl[3], const dReal Rm[3][3], const dReal over[15],
+                           const dReal proj[15])
+{
+    dReal best = dInfinity;
+    for (int x = 0; x < 15; x++) {
+        dReal s;   // m . n
+        if (x < 3) {
+            s = nl[x];
+        } else if (x < 6) {
+            s = Rm[0][x - 3] * nl[0] + Rm[1][x - 3] * nl[1] + Rm[2][x - 3] * nl[2];
+        } else {
+            int i = (x - 6) / 3, j = (x - 6) % 3, i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+            if (Rm[i1][j] * Rm[i1][j] + Rm[i2][j] * Rm[i2][j] <= DX_COLLIDE_EPS) continue;
+            s = Rm[i1][j] * nl[i2] - Rm[i2][j] * nl[i1];   // (e_i x Rm[.][j]) . n
+        }
+        if (s == 0) continue;
+        dReal radii = over[x] + dFabs(proj[x]);
+        dReal t = ((s > 0 ? proj[x] : -proj[x]) + radii) / dFabs(s);
+        if (t < best) best = t;
+    }
+    return best;
+}
+
+// Box-box. In box 1's frame (axes A_i, half sides a), with box 2's centre T
+// and Rm_ij = A_i . B_j, the 15 candidate axes are A_i, B_j and A_i x B_j;
+// along each the boxes overlap by (radius1 + radius2 - |T . axis|) / |axis|.
+// Any negative overlap separates them (return at once); otherwise the axis
+// of least overlap gives the normal: a face axis the face contacts, an edge
+// axis one contact between the two edges, as deep as that overlap.
+int dxCollideBoxBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)
+{
+    const dReal *p1 = o1->pos, *p2 = o2->pos, *R1 = o1->R, *R2 = o2->R;
+    const dReal *s1 = ((dxBox *)o1)->side, *s2 = ((dxBox *)o2)->side;
+    const dReal a[3] = { s1[0] / 2, s1[1] / 2, s1[2] / 2 };
+    const dReal b[3] = { s2[0] / 2, s2[1] / 2, s2[2] / 2 };
+    dReal d[3] = { p2[0] - p1[0], p2[1] - p1[1], p2[2] - p1[2] }, T[3];
+    dx_to_local(R1, d, T);
+    dReal Rm[3][3], Q[3][3];
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++) {
+            Rm[i][j] = R1[i] * R2[j] + R1[4 + i] * R2[4 + j] + R1[8 + i] * R2[8 + j];
+            Q[i][j] = dFabs(Rm[i][j]);
+        }
+    }
+    // Overlap along each axis (< 0: apart), unnormalised for the edges.
+    dReal over[15], proj[15];
+    for (int i = 0; i < 3; i++) {
+        proj[i] = T[i];
+        over[i] = a[i] + b[0] * Q[i][0] + b[1] * Q[i][1] + b[2] * Q[i][2] - dFabs(T[i]);
+        if (over[i] < 0) return 0;
+    }
+    for (int j = 0; j < 3; j++) {
+        proj[3 + j] = T[0] * Rm[0][j] + T[1] * Rm[1][j] + T[2] * Rm[2][j];
+        over[3 + j] = a[0] * Q[0][j] + a[1] * Q[1][j] + a[2] * Q[2][j] + b[j] - dFabs(proj[3 + j]);
+        if (over[3 + j] < 0) return 0;
+    }
+    for (int i = 0; i < 3; i++) {
+        int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+        for (int j = 0; j < 3; j++) {
+            int j1 = (j + 1) % 3, j2 = (j + 2) % 3, x = 6 + 3 * i + j;
+            // A_i x B_j in box 1's frame is e_i x Rm[.][j]; its length may
+            // vanish, so separation needs a margin beyond rounding.
+            proj[x] = T[i2] * Rm[i1][j] - T[i1] * Rm[i2][j];
+            dReal radii = a[i1] * Q[i2][j] + a[i2] * Q[i1][j] + b[j1] * Q[i][j2] + b[j2] * Q[i][j1];
+            over[x] = radii - dFabs(proj[x]);
+            if (over[x] < -BOX_AXIS_SLACK * (a[i1] + a[i2] + b[j1] + b[j2])) return 0;
+        }
+    }
+
+    int code = 0, edge = -1;
+    for (int x = 1; x < 6; x++)
+        if (over[x] < over[code]) code = x;
+    dReal best_edge = dInfinity, edge_len = 1;
+    for (int x = 6; x < 15; x++) {
+        int i = (x - 6) / 3, j = (x - 6) % 3, i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+        dReal len2 = Rm[i1][j] * Rm[i1][j] + Rm[i2][j] * Rm[i2][j];
+        if (len2 <= DX_COLLIDE_EPS) continue;   // parallel edges: the faces cover them
+        dReal len = dSqrt(len2), o = over[x] / len;
+        if (o < 0) return 0;   // apart after all, along a well-defined edge axis
+        if (o < best_edge) {
+            best_edge = o;
+            edge = x;
+            edge_len = len;
+        }
+    }
+    dReal best = over[code];
+    if (edge >= 0 && best_edge * BOX_EDGE_PREFERENCE < best) {
+        best = best_edge;
+        code = edge;
+    }
+    int max = dx_max_contacts(flags);
+    dReal normal[3], nf[3], nl[3];
+    if (code < 3) {   // face of box 1: normal -sign(T_i) A_i
+        dReal sg = proj[code] < 0 ? 1 : -1;
+        for (int q = 0; q < 3; q++) {
+            normal[q] = sg * R1[4 * q + code];
+            nf[q] = -normal[q];
+        }
+        dx_to_local(R1, normal, nl);
+        dReal clear = box_clearance(nl, Rm, over, proj);
+        return box_face_contacts(p1, R1, a, code, nf, p2, R2, b, normal, clear, o1, o2, max, out,
+                                 skip);
+    }
+    if (code < 6) {   // face of box 2
+        int j = code - 3;
+        dReal sg = proj[code] < 0 ? 1 : -1;
+        for (int q = 0; q < 3; q++) normal[q] = nf[q] = sg * R2[4 * q + j];
+        dx_to_local(R1, normal, nl);
+        dReal clear = box_clearance(nl, Rm, over, proj);
+        return box_face_contacts(p2, R2, b, j, nf, p1, R1, a, normal, clear, o1, o2, max, out,
+                                 skip);
+    }
+    int i = (code - 6) / 3, j = (code - 6) % 3;
+    dReal Ai[3], Bj[3];
+    dx_axis(R1, i, Ai);
+    dx_axis(R2, j, Bj);
+    dReal sg = proj[code] < 0 ? 1 : -1;   // against box 2's offset along A_i x B_j
+    normal[0] = sg * (Ai[1] * Bj[2] - Ai[2] * Bj[1]) / edge_len;
+    normal[1] = sg * (Ai[2] * Bj[0] - Ai[0] * Bj[2]) / edge_len;
+    normal[2] = sg * (Ai[0] * Bj[1] - Ai[1] * Bj[0]) / edge_len;
+    dReal pos[3];
+    box_edge_point(p1, R1, a, i, p2, R2, b, j, normal, pos);
+    dx_put_contact(out, 0, skip, pos, normal, best, o1, o2);
+    return 1;
+}
+
+// Box-plane: corner c is below the plane by d - n . c; with the normal in
+// the box frame (m), that is the centre's depth - sum +-h_i m_i, deepest
+// with the signs against m. Up to 4 corners below the plane, deepest first.
+int dxCollideBoxPlane(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
+{
+    const dReal *pl = ((dxPlane *)o2)->p, *side = ((dxBox *)o1)->side;
+    dReal m[3], e[3];
+    dx_to_local(o1->R, pl, m);
+    dReal centre = pl[3] - dx_dot(pl, o1->pos);
+    for (int i = 0; i < 3; i++) e[i] = side[i] / 2 * m[i];   // corner offsets along n
+    if (centre + dFabs(e[0]) + dFabs(e[1]) + dFabs(e[2]) < 0) return 0;
+    int max = dx_max_contacts(flags);
+    if (max > 4) max = 4;
+    dReal dep[8];
+    int idx[8], n = 0;
+    for (int v = 0; v < 8; v++) {
+        dReal dv = centre - ((v & 1) ? e[0] : -e[0]) - ((v & 2) ? e[1] : -e[1])
+                   - ((v & 4) ? e[2] : -e[2]);
+        if (dv < 0) continue;
+        int k = n++;   // insertion, deepest first
+        for (; k > 0 && dep[k - 1] < dv; k--) {
+            dep[k] = dep[k - 1];
+            idx[k] = idx[k - 1];
+        }
+        dep[k] = dv;
+        idx[k] = v;
+    }
+    if (n > max) n = max;
+    for (int k = 0; k < n; k++) {
+        dReal local[3], pos[3];
+        for (int i = 0; i < 3; i++) local[i] = (idx[k] >> i & 1) ? side[i] / 2 : -side[i] / 2;
+        dx_point_to_world(o1->R, o1->pos, local, pos);
+        dx_put_contact(c, k, skip, pos, pl, dep[k], o1, o2);
+    }
+    return n;
+}

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// native.c -- the native backend: a table of pair colliders by class, used
+// for either argument order (the reversed call's contacts are flipped).
+
+#include "../../libodecollide/backend_internal.h"
+#include "native_colliders.h"
+
+enum { NATIVE_CLASSES = dRayClass + 1 };   // sphere, box, capsule, cylinder, plane, ray
+
+// table[a][b] collides (class a, class b) in that order; NULL if no collider.
+static dxCollider *const table[NATIVE_CLASSES][NATIVE_CLASSES] = {
+    [dSphereClass] = { [dSphereClass] = dxCollideSphereSphere, [dBoxClass] = dxCollideSphereBox,
+                       [dCapsuleClass] = dxCollideSphereCapsule,
+                       [dCylinderClass] = dxCollideSphereCylinder,
+                       [dPlaneClass] = dxCollideSpherePlane },
+    [dBoxClass] = { [dBoxClass] = dxCollideBoxBox, [dPlaneClass] = dxCollideBoxPlane },
+    [dCapsuleClass] = { [dBoxClass] = dxCollideCapsuleBox,
+                        [dCapsuleClass] = dxCollideCapsuleCapsule,
+                        [dPlaneClass] = dxCollideCapsulePlane },
+    [dCylinderClass] = { [dPlaneClass] = dxCollideCylinderPlane },
+    // Not yet: rays, and cylinder against box, capsule and cylinder (libccd).
+};
+
+static int native_supports(int c1, int c2)
+{
+    if (c1 < 0 || c2 < 0 || c1 >= NATIVE_CLASSES || c2 >= NATIVE_CLASSES) return 0;
+    return table[c1][c2] != NULL || table[c2][c1] != NULL;
+}
+
+// Contacts produced for (b, a) made into contacts for (a, b).
+static void flip(dContactGeom *c, int n, int skip)
+{
+    for (int i = 0; i < n; i++) {
+        dContactGeom *k = dxContactAt(c, i, skip);
+        dNegateVector3(k->normal);
+        dGeomID g = k->g1;
+        k->g1 = k->g2;
+        k->g2 = g;
+        int s = k->side1;
+        k->side1 = k->side2;
+        k->side2 = s;
+    }
+}
+
+static int native_collide(dGeomID o1, dGeomID o2, int flags, dContactGeom *contact, int skip)
+{
+    int c1 = o1->ops->cls, c2 = o2->ops->cls;
+    if (!native_supports(c1, c2)) return 0;
+    if (table[c1][c2]) return table[c1][c2](o1, o2, flags, contact, skip);
+    int n = table[c2][c1](o2, o1, flags, contact, skip);
+    flip(contact, n, skip);
+    return n;
+}
+
+static const dCollisionBackend native_backend = { "native", native_supports, native_collide,
+                                                  NULL, NULL };
+
+const dCollisionBackend *dxNativeBackend(void) { return &native_backend; }

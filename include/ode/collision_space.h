@@ -1,0 +1,59 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/* collision_space.h -- spaces: containers of geoms that find the pairs whose
+ * bounding boxes overlap (guide 10.3, 10.6). A space is itself a geom, so
+ * spaces nest. */
+#ifndef ODE_COLLISION_SPACE_H
+#define ODE_COLLISION_SPACE_H
+
+#include <ode/common.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+struct dContactGeom;
+
+/** Called by dSpaceCollide / dSpaceCollide2 with each potentially touching pair. */
+typedef void dNearCallback(void *data, dGeomID o1, dGeomID o2);
+
+/** Every pair of geoms tested: O(n^2), best for few geoms. space: a parent, or 0. */
+ODE_API dSpaceID dSimpleSpaceCreate(dSpaceID space);
+/** Multi-resolution hash table: O(n) for geoms spread out in space. */
+ODE_API dSpaceID dHashSpaceCreate(dSpaceID space);
+/** A quadtree over the box Center +- Extents (the axes x and y, or as the
+ *  larger two extents say), Depth levels deep. */
+ODE_API dSpaceID dQuadTreeSpaceCreate(dSpaceID space, const dVector3 Center,
+                                      const dVector3 Extents, int Depth);
+/** With cleanup on (default), destroys the geoms it contains. */
+ODE_API void dSpaceDestroy(dSpaceID);
+
+/** Cells of the hash space are 2^level wide, minlevel <= level <= maxlevel
+ *  (defaults -3 and 10). */
+ODE_API void dHashSpaceSetLevels(dSpaceID space, int minlevel, int maxlevel);
+ODE_API void dHashSpaceGetLevels(dSpaceID space, int *minlevel, int *maxlevel);
+
+/** 1 (default): destroying the space destroys its geoms; 0: they are only removed. */
+ODE_API void dSpaceSetCleanup(dSpaceID space, int mode);
+ODE_API int dSpaceGetCleanup(dSpaceID space);
+/** Sublevel of a space (ODE 0.16): orders nested spaces for dSpaceCollide2. */
+ODE_API void dSpaceSetSublevel(dSpaceID space, int sublevel);
+ODE_API int dSpaceGetSublevel(dSpaceID space);
+
+/** A geom is in at most one space; adding it to a second is an error. */
+ODE_API void dSpaceAdd(dSpaceID, dGeomID);
+ODE_API void dSpaceRemove(dSpaceID, dGeomID);
+/** 1 if the geom is directly in the space. */
+ODE_API int dSpaceQuery(dSpaceID, dGeomID);
+/** Bring cached bounding boxes up to date. */
+ODE_API void dSpaceClean(dSpaceID);
+ODE_API int dSpaceGetNumGeoms(dSpaceID);
+/** The i-th geom (0 <= i < dSpaceGetNumGeoms); fastest in increasing order. */
+ODE_API dGeomID dSpaceGetGeom(dSpaceID, int i);
+/** dSimpleSpaceClass, dHashSpaceClass or dQuadTreeSpaceClass. */
+ODE_API int dSpaceGetClass(dSpaceID space);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// geom_internal.h -- the private structures of the collision library: the
+// geom every class extends, the per-class operations, spaces, and the
+// services the classes, spaces and backends share.
+
+#ifndef DX_GEOM_INTERNAL_H
+#define DX_GEOM_INTERNAL_H
+
+#include <ode/collision.h>
+#include <ode/objects.h>
+#include <ode/odemath.h>
+#include <stdint.h>
+
+#include "../libodedyn/dx_check.h"
+
+enum {
+    DX_MAGIC_GEOM = 0x47656f6du,   // "Geom"
+    DX_MAGIC_GEOM_DEAD = 0xdead6e0du
+};
+
+enum {
+    DX_GEOM_PLACEABLE = 1 << 0,   // has a pose (planes and spaces do not)
+    DX_GEOM_ENABLED = 1 << 1,
+    DX_GEOM_AABB_BAD = 1 << 2,    // pose or size changed since the AABB was computed
+    DX_GEOM_IS_SPACE = 1 << 3,
+    DX_GEOM_IN_TRANSFORM = 1 << 4 // held by a geometry transform
+};
+
+typedef struct dxGeom dxGeom;
+typedef struct dxSpace dxSpace;
+
+// What differs between geometry classes (built-in and user).
+typedef struct dxGeomClassOps {
+    int cls;                      // dSphereClass, ...
+    const char *name;             // "sphere", ... for messages
+    // Bounding box from the current pose and size, into g->aabb.
+    void (*compute_aabb)(dxGeom *g);
+    // Release what the class owns (NULL if nothing).
+    void (*destroy)(dxGeom *g);
+} dxGeomClassOps;
+
+struct dxGeom {
+    uint32_t magic;
+    uint32_t generation;
+    size_t alloc_size;            // bytes of the whole class structure
+    const dxGeomClassOps *ops;
+    unsigned flags;               // DX_GEOM_...
+    void *data;                   // user data
+    dBodyID body;                 // attached body, or NULL
+    dxGeom *body_next;            // next geom of the same body
+    // The pose: pos and R point at the body's when attached, else at the
+    // geom's own storage (own_pos, own_R). Only placeable geoms have one.
+    const dReal *pos;
+    const dReal *R;
+    dVector3 own_pos;
+    dMatrix3 own_R;
+    dReal aabb[6];                // minx maxx miny maxy minz maxz, valid unless AABB_BAD
+    unsigned long category_bits, collide_bits;
+    dxSpace *space;               // the space that holds it, or NULL
+    int space_index;              // its index in space->geoms
+    unsigned shape_version;       // bumped when size parameters change (backend caches)
+    void *backend_cache;          // a backend's shape object for this geom ...
+    const void *backend_cache_owner;   // ... and which backend made it (it frees it)
+};
+
+// ---- spaces ------------------------------------------------------------
+
+typedef struct dxSpaceOps {
+    // Called after a geom was appended to / is about to be removed from geoms[].
+    void (*added)(dxSpace *s, dxGeom *g);
+    void (*removed)(dxSpace *s, dxGeom *g);
+    // Every pair of geoms of the space whose AABBs overlap, each once: call
+    // dxSpaceTestPair for it (which applies bits, enabled and AABB tests).
+    void (*collide)(dxSpace *s, void *data, dNearCallback *cb);
+    // Pairs of one geom of s and the non-space geom g (AABB already current).
+    void (*collide_geom)(dxSpace *s, dxGeom *g, void *data, dNearCallback *cb);
+    // Free what the space type owns (the geoms[] array is freed by the caller).
+    void (*destroy)(dxSpace *s);
+} dxSpaceOps;
+
+struct dxSpace {
+    dxGeom geom;                  // a space is a geom (class dSimpleSpaceClass, ...)
+    const dxSpaceOps *sops;
+    dxGeom **geoms;               // the geoms, in insertion order (index = space_index)
+    int count, capacity;
+    int cleanup;                  // destroy the geoms with the space (default 1)
+    int sublevel;
+    int lock_count;               // > 0 while colliding: changes are refused
+};
+
+// ---- shared services ---------------------------------------------------
+
+static inline int dxGeomIsLive(const dxGeom *g)
+{
+    return g != NULL && g->magic == DX_MAGIC_GEOM;
+}
+
+// Allocate a geom of `size` bytes (the class struct that begins with dxGeom),
+// initialise the common part, and add it to `space` (may be NULL).
+dxGeom *dxGeomCreate(size_t size, const dxGeomClassOps *ops, unsigned flags, dSpaceID space);
+// Mark the AABB stale (pose or size changed) and tell the containing spaces.
+void dxGeomMarkMoved(dxGeom *g);
+// Size parameters changed: as dxGeomMarkMoved, plus backend caches.
+void dxGeomShapeChanged(dxGeom *g);
+// Bring g->aabb up to date.
+void dxGeomUpdateAABB(dxGeom *g);
+
+// 1 if a and b may collide: different, enabled, not on the same body, their
+// category and collide bits match, and their AABBs overlap.
+int dxGeomsMayTouch(dxGeom *a, dxGeom *b);
+// Call cb(data, a, b) if dxGeomsMayTouch (the shared inner test of spaces).
+void dxSpaceTestPair(dxGeom *a, dxGeom *b, void *data, dNearCallback *cb);
+// Number of dxSpaceTestPair calls so far: the broad phase's work, which tests
+// count (instead of timing) to check how a space scales.
+extern unsigned long dx_aabb_tests;
+// Initialise a space's common part (spaces are created by their types).
+dxSpace *dxSpaceCreate(size_t size, int cls, const dxSpaceOps *sops, dSpaceID parent);
+// Bring every AABB in the space (recursively) up to date.
+void dxSpaceUpdateAABBs(dxSpace *s);
+
+// Contact i of an array written with stride skip.
+static inline dContactGeom *dxContactAt(dContactGeom *c, int i, int skip)
+{
+    return (dContactGeom *)((char *)c + (size_t)i * (size_t)skip);
+}
+
+#define DX_CHECK_GEOM(g, on_fail) \
+    DX_CHECK_ARG(dxGeomIsLive(g), on_fail, "geom is NULL or was destroyed")
+
+#endif
