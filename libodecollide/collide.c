@@ -9,7 +9,7 @@
 #include "user_class.h"
 
 // Contacts produced for (b, a) made into contacts for (a, b).
-static void flip_contacts(dContactGeom *c, int n, int skip)
+void dxFlipContacts(dContactGeom *c, int n, int skip)
 {
     for (int i = 0; i < n; i++) {
         dContactGeom *k = dxContactAt(c, i, skip);
@@ -60,7 +60,7 @@ static int collide_user(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
     if (u1 && (fn = dxUserColliderFor(o1, o2->ops->cls))) return fn(o1, o2, flags, c, skip);
     if (u2 && (fn = dxUserColliderFor(o2, o1->ops->cls))) {
         int n = fn(o2, o1, flags, c, skip);
-        flip_contacts(c, n, skip);
+        dxFlipContacts(c, n, skip);
         return n;
     }
     return 0;

@@ -119,6 +119,10 @@ dxSpace *dxSpaceCreate(size_t size, int cls, const dxSpaceOps *sops, dSpaceID pa
 // Bring every AABB in the space (recursively) up to date.
 void dxSpaceUpdateAABBs(dxSpace *s);
 
+// Contacts produced for (b, a) made into contacts for (a, b): normals
+// negated, g1/g2 and side1/side2 swapped (collide.c).
+void dxFlipContacts(dContactGeom *c, int n, int skip);
+
 // Contact i of an array written with stride skip.
 static inline dContactGeom *dxContactAt(dContactGeom *c, int i, int skip)
 {

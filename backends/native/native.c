@@ -28,28 +28,13 @@ static int native_supports(int c1, int c2)
     return table[c1][c2] != NULL || table[c2][c1] != NULL;
 }
 
-// Contacts produced for (b, a) made into contacts for (a, b).
-static void flip(dContactGeom *c, int n, int skip)
-{
-    for (int i = 0; i < n; i++) {
-        dContactGeom *k = dxContactAt(c, i, skip);
-        dNegateVector3(k->normal);
-        dGeomID g = k->g1;
-        k->g1 = k->g2;
-        k->g2 = g;
-        int s = k->side1;
-        k->side1 = k->side2;
-        k->side2 = s;
-    }
-}
-
 static int native_collide(dGeomID o1, dGeomID o2, int flags, dContactGeom *contact, int skip)
 {
     int c1 = o1->ops->cls, c2 = o2->ops->cls;
     if (!native_supports(c1, c2)) return 0;
     if (table[c1][c2]) return table[c1][c2](o1, o2, flags, contact, skip);
     int n = table[c2][c1](o2, o1, flags, contact, skip);
-    flip(contact, n, skip);
+    dxFlipContacts(contact, n, skip);
     return n;
 }
 
