@@ -1,0 +1,163 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// bench_ode.h -- what the ODE-API scenes share: the contact callback, the stepper choice,
+// kinetic energy and joint separation. Written against the public ODE API only, so the same
+// code builds against this project and against the reference ODE.
+
+#ifndef BENCH_ODE_H
+#define BENCH_ODE_H
+
+#include <ode/ode.h>
+#include <math.h>
+#include <stdint.h>
+
+#include "bench_common.h"
+
+#ifndef BENCH_ENGINE
+#define BENCH_ENGINE "ode"
+#endif
+
+#define BENCH_MAX_CONTACTS 4
+
+// What the near callback needs, and what it measures.
+typedef struct bench_contacts {
+    dWorldID world;
+    dJointGroupID group;
+    dSurfaceParameters surface;
+    int skip_connected;  // skip pairs of bodies joined by a non-contact joint
+    int skip_same_data;  // skip pairs of geoms whose (non-null) data pointers are equal
+    double max_depth;    // deepest contact seen so far
+    long contacts;       // contact joints made so far
+} bench_contacts;
+
+// mu 0.8 with the friction pyramid approximation: the surface of every scene.
+static inline void bench_contacts_init(bench_contacts *c, dWorldID world)
+{
+    memset(c, 0, sizeof *c);
+    c->world = world;
+    c->group = dJointGroupCreate(0);
+    c->surface.mode = dContactApprox1;
+    c->surface.mu = (dReal)0.8;
+}
+
+static inline void bench_near(void *data, dGeomID o1, dGeomID o2)
+{
+    bench_contacts *c = (bench_contacts *)data;
+    dBodyID b1 = dGeomGetBody(o1);
+    dBodyID b2 = dGeomGetBody(o2);
+    if (!b1 && !b2) return;
+    if (c->skip_connected && b1 && b2 && dAreConnectedExcluding(b1, b2, dJointTypeContact)) return;
+    if (c->skip_same_data && dGeomGetData(o1) && dGeomGetData(o1) == dGeomGetData(o2)) return;
+    dContact contact[BENCH_MAX_CONTACTS];
+    int n = dCollide(o1, o2, BENCH_MAX_CONTACTS, &contact[0].geom, sizeof(dContact));
+    for (int i = 0; i < n; i++) {
+        contact[i].surface = c->surface;
+        if (contact[i].geom.depth > c->max_depth) c->max_depth = contact[i].geom.depth;
+        dJointID j = dJointCreateContact(c->world, c->group, &contact[i]);
+        dJointAttach(j, b1, b2);
+    }
+    c->contacts += n;
+}
+
+typedef enum bench_stepper { BENCH_QUICK, BENCH_WORLD, BENCH_FAST } bench_stepper;
+
+// stepper=quick|world|fast (dWorldQuickStep, dWorldStep, dWorldStepFast1). ODE 0.16 dropped
+// dWorldStepFast1: builds define BENCH_HAVE_STEPFAST where the engine has it; elsewhere
+// stepper=fast exits with status 3 (not available).
+static inline bench_stepper bench_arg_stepper(bench_args *a, const char *def)
+{
+    const char *s = bench_arg_str(a, "stepper", def);
+    if (strcmp(s, "quick") == 0) return BENCH_QUICK;
+    if (strcmp(s, "world") == 0) return BENCH_WORLD;
+    if (strcmp(s, "fast") == 0) {
+#ifdef BENCH_HAVE_STEPFAST
+        return BENCH_FAST;
+#else
+        fprintf(stderr, "%s: this engine has no dWorldStepFast1\n", a->argv[0]);
+        exit(3);
+#endif
+    }
+    fprintf(stderr, "%s: stepper is quick, world or fast, not '%s'\n", a->argv[0], s);
+    exit(2);
+}
+
+static inline const char *bench_stepper_name(bench_stepper s)
+{
+    return s == BENCH_QUICK ? "quick" : s == BENCH_WORLD ? "world" : "fast";
+}
+
+// One step of the chosen stepper; iterations for QuickStep are set on the world.
+static inline void bench_step(dWorldID w, bench_stepper s, dReal dt, int iterations)
+{
+    if (s == BENCH_QUICK)
+        dWorldQuickStep(w, dt);
+    else if (s == BENCH_WORLD)
+        dWorldStep(w, dt);
+#ifdef BENCH_HAVE_STEPFAST
+    else
+        dWorldStepFast1(w, dt, iterations);
+#else
+    (void)iterations;
+#endif
+}
+
+// Linear plus rotational kinetic energy of a body (its mass is centred at the body origin).
+static inline double bench_body_ke(dBodyID b)
+{
+    dMass m;
+    dBodyGetMass(b, &m);
+    const dReal *v = dBodyGetLinearVel(b);
+    const dReal *w = dBodyGetAngularVel(b);
+    const dReal *R = dBodyGetRotation(b);
+    double wl[3];  // angular velocity in the body frame: R^T w
+    for (int i = 0; i < 3; i++) wl[i] = R[i] * w[0] + R[4 + i] * w[1] + R[8 + i] * w[2];
+    double rot = 0;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) rot += wl[i] * m.I[4 * i + j] * wl[j];
+    double lin = (double)v[0] * v[0] + (double)v[1] * v[1] + (double)v[2] * v[2];
+    return 0.5 * m.mass * lin + 0.5 * rot;
+}
+
+// Distance between a joint's two anchors (ball, hinge, universal), 0 for other joints.
+static inline double bench_joint_separation(dJointID j)
+{
+    dVector3 a1, a2;
+    switch (dJointGetType(j)) {
+    case dJointTypeBall:
+        dJointGetBallAnchor(j, a1);
+        dJointGetBallAnchor2(j, a2);
+        break;
+    case dJointTypeHinge:
+        dJointGetHingeAnchor(j, a1);
+        dJointGetHingeAnchor2(j, a2);
+        break;
+    case dJointTypeUniversal:
+        dJointGetUniversalAnchor(j, a1);
+        dJointGetUniversalAnchor2(j, a2);
+        break;
+    default:
+        return 0;
+    }
+    double dx = a1[0] - a2[0], dy = a1[1] - a2[1], dz = a1[2] - a2[2];
+    return sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+// Body rotation R = Rf * Rl (row-major 3x4 matrices, as dMatrix3).
+static inline void bench_rmul(dMatrix3 out, const dMatrix3 a, const dMatrix3 b)
+{
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++)
+            out[4 * i + j] = a[4 * i] * b[j] + a[4 * i + 1] * b[4 + j] + a[4 * i + 2] * b[8 + j];
+        out[4 * i + 3] = 0;
+    }
+}
+
+// out = R * v + t
+static inline void bench_xform(dVector3 out, const dMatrix3 R, const dReal *t, double x,
+                               double y, double z)
+{
+    for (int i = 0; i < 3; i++)
+        out[i] = (dReal)(R[4 * i] * x + R[4 * i + 1] * y + R[4 * i + 2] * z + (t ? t[i] : 0));
+}
+
+#endif
