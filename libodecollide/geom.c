@@ -89,7 +89,11 @@ dxGeom *dxGeomCreate(size_t size, const dxGeomClassOps *ops, unsigned flags, dSp
 
 void dxGeomMarkMoved(dxGeom *g)
 {
-    // Stop at the first space that already knows: its parents know too.
+    // A geom held by a transform moves the transform (its own flag is set
+    // and cleared by every collision of the transform, so it cannot stop the
+    // walk). Otherwise stop at the first geom or space that already knows:
+    // its parents know too.
+    for (; g && g->holder; g = g->holder) g->flags |= DX_GEOM_AABB_BAD;
     for (; g && !(g->flags & DX_GEOM_AABB_BAD); g = (dxGeom *)g->space)
         g->flags |= DX_GEOM_AABB_BAD;
 }
@@ -117,7 +121,7 @@ void dGeomDestroy(dGeomID g)
                  "the geom's space is being collided (dSpaceCollide callback)");
     DX_CHECK_ARG(!(g->flags & DX_GEOM_IS_SPACE) || ((dxSpace *)g)->lock_count == 0, return,
                  "the space is being collided (dSpaceCollide callback)");
-    DX_CHECK_ARG(!(g->flags & DX_GEOM_IN_TRANSFORM), return,
+    DX_CHECK_ARG(!g->holder, return,
                  "the geom is held by a geometry transform; destroy or empty that first");
     if (g->space) dSpaceRemove(g->space, g);
     if (g->body) dGeomSetBody(g, 0);
@@ -163,7 +167,7 @@ void dGeomSetBody(dGeomID g, dBodyID b)
     DX_CHECK_GEOM(g, return);
     CHECK_PLACEABLE(g, return);
     DX_CHECK_ARG(b == NULL || dxBodyIsLive(b), return, "body was destroyed");
-    DX_CHECK_ARG(b == NULL || !(g->flags & DX_GEOM_IN_TRANSFORM), return,
+    DX_CHECK_ARG(b == NULL || !g->holder, return,
                  "the geom is held by a geometry transform (attach the transform instead)");
     if (g->body == b) return;
     if (g->body) {

@@ -23,8 +23,7 @@ enum {
     DX_GEOM_PLACEABLE = 1 << 0,   // has a pose (planes and spaces do not)
     DX_GEOM_ENABLED = 1 << 1,
     DX_GEOM_AABB_BAD = 1 << 2,    // pose or size changed since the AABB was computed
-    DX_GEOM_IS_SPACE = 1 << 3,
-    DX_GEOM_IN_TRANSFORM = 1 << 4 // held by a geometry transform
+    DX_GEOM_IS_SPACE = 1 << 3
 };
 
 typedef struct dxGeom dxGeom;
@@ -58,6 +57,7 @@ struct dxGeom {
     dReal aabb[6];                // minx maxx miny maxy minz maxz, valid unless AABB_BAD
     unsigned long category_bits, collide_bits;
     dxSpace *space;               // the space that holds it, or NULL
+    dxGeom *holder;               // the geometry transform that holds it, or NULL
     int space_index;              // its index in space->geoms
     unsigned shape_version;       // bumped when size parameters change (backend caches)
     void *backend_cache;          // a backend's shape object for this geom ...
@@ -73,7 +73,8 @@ typedef struct dxSpaceOps {
     // Every pair of geoms of the space whose AABBs overlap, each once: call
     // dxSpaceTestPair for it (which applies bits, enabled and AABB tests).
     void (*collide)(dxSpace *s, void *data, dNearCallback *cb);
-    // Pairs of one geom of s and the non-space geom g (AABB already current).
+    // Every geom of s whose AABB may overlap that of the non-space geom g
+    // (AABB already current): call dxSpaceTestPair(g, other) for each, g first.
     void (*collide_geom)(dxSpace *s, dxGeom *g, void *data, dNearCallback *cb);
     // Free what the space type owns (the geoms[] array is freed by the caller).
     void (*destroy)(dxSpace *s);

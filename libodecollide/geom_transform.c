@@ -59,7 +59,7 @@ static void release_object(dxGeomTransform *t)
     dxGeom *obj = t->obj;
     if (!obj) return;
     t->obj = NULL;
-    obj->flags &= ~(unsigned)DX_GEOM_IN_TRANSFORM;
+    obj->holder = NULL;
     if (t->cleanup) dGeomDestroy(obj);
 }
 
@@ -97,14 +97,14 @@ void dGeomTransformSetGeom(dGeomID g, dGeomID obj)
         DX_CHECK_ARG(!(obj->flags & DX_GEOM_IS_SPACE), return, "obj is a space");
         DX_CHECK_ARG(obj->space == NULL, return, "obj is in a space (it must not be)");
         DX_CHECK_ARG(obj->body == NULL, return, "obj is attached to a body (it must not be)");
-        DX_CHECK_ARG(!(obj->flags & DX_GEOM_IN_TRANSFORM), return,
+        DX_CHECK_ARG(!obj->holder, return,
                      "obj is already held by a geometry transform");
         DX_CHECK_ARG(obj->flags & DX_GEOM_PLACEABLE, return, "obj (a %s) is not placeable",
                      obj->ops->name);
     }
     release_object(t);
     t->obj = obj;
-    if (obj) obj->flags |= DX_GEOM_IN_TRANSFORM;
+    if (obj) obj->holder = g;
     dxGeomShapeChanged(g);
 }
 

@@ -151,7 +151,7 @@ void dSpaceAdd(dSpaceID s, dGeomID g)
     DX_CHECK_ARG(g->space != s, return, "the geom is already in this space");
     DX_CHECK_ARG(g->space == NULL, return, "the geom is already in another space (a geom can "
                  "be in only one; remove it first)");
-    DX_CHECK_ARG(!(g->flags & DX_GEOM_IN_TRANSFORM), return,
+    DX_CHECK_ARG(!g->holder, return,
                  "the geom is held by a geometry transform");
     DX_CHECK_ARG(!(g->flags & DX_GEOM_IS_SPACE) || !space_contains((dxSpace *)g, &s->geom),
                  return, "adding the space to itself or to a space inside it");

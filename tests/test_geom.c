@@ -977,6 +977,36 @@ static int test_transform_info_mode_names_the_geom_or_the_transform(void)
     return 0;
 }
 
+// Moving or resizing the held geom moves the transform's box, also through
+// a space that had already cached it, and nested transforms pass it on.
+static int test_transform_box_follows_the_held_geom(void)
+{
+    dSpaceID space = dSimpleSpaceCreate(0);
+    dGeomID outer = dCreateGeomTransform(space), inner = dCreateGeomTransform(0);
+    dGeomID held = dCreateSphere(0, 0.5), probe = dCreateSphere(space, 0.5);
+    dGeomTransformSetGeom(outer, inner);
+    dGeomTransformSetGeom(inner, held);
+    dGeomSetPosition(probe, 5, 0, 0);
+    pair_log log = { 0, 0, 0 };
+    dSpaceCollide(space, &log, log_pair);   // caches both boxes: apart
+    CHECK(log.count == 0);
+    dReal a[6];
+
+    dGeomSetPosition(held, 4.5, 0, 0);      // relative to inner, itself at outer's origin
+    dSpaceCollide(space, &log, log_pair);
+
+    CHECK(log.count == 1);
+    dGeomGetAABB(outer, a);
+    CHECK(aabb_near(a, (double[6]){ 4, 5, -0.5, 0.5, -0.5, 0.5 }, EPS));
+    dGeomSphereSetRadius(held, 1);
+    dGeomGetAABB(outer, a);
+    CHECK(aabb_near(a, (double[6]){ 3.5, 5.5, -1, 1, -1, 1 }, EPS));
+    dGeomTransformSetCleanup(outer, 1);
+    dGeomTransformSetCleanup(inner, 1);
+    dSpaceDestroy(space);
+    return 0;
+}
+
 static int test_transform_cleanup_destroys_the_held_geom(void)
 {
     dGeomID t = dCreateGeomTransform(0), u = create_ball(0, 1);
@@ -1227,6 +1257,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_user_aabb_test_can_veto_a_pair),
     TEST_CASE(test_transform_collides_where_the_offset_puts_the_geom),
     TEST_CASE(test_transform_info_mode_names_the_geom_or_the_transform),
+    TEST_CASE(test_transform_box_follows_the_held_geom),
     TEST_CASE(test_transform_cleanup_destroys_the_held_geom),
     TEST_CASE(test_transform_on_a_body_in_a_space),
     TEST_CASE(test_transform_refuses_geoms_in_a_space_or_on_a_body),

@@ -20,8 +20,9 @@ typedef void dNearCallback(void *data, dGeomID o1, dGeomID o2);
 ODE_API dSpaceID dSimpleSpaceCreate(dSpaceID space);
 /** Multi-resolution hash table: O(n) for geoms spread out in space. */
 ODE_API dSpaceID dHashSpaceCreate(dSpaceID space);
-/** A quadtree over the box Center +- Extents (the axes x and y, or as the
- *  larger two extents say), Depth levels deep. */
+/** A quadtree over the box Center +- Extents (Extents are half-sizes), split
+ *  on the two axes with the larger extents (x and y on ties), Depth >= 1
+ *  levels below the root. */
 ODE_API dSpaceID dQuadTreeSpaceCreate(dSpaceID space, const dVector3 Center,
                                       const dVector3 Extents, int Depth);
 /** With cleanup on (default), destroys the geoms it contains. */
