@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
 // backend.c -- the registry of narrow-phase backends (<ode/backend.h>): the
-// native backend is always registered and selected first; others register
-// themselves. ODE_COLLISION_BACKEND is read when the registry is first used
-// (before any collision): it selects the backend of that name as soon as one
-// is registered; if none is by the first collision, that is reported once and
-// native stays. An explicit dCollisionSetBackend wins over the variable.
+// native backend is always registered and selected first, then the adapters
+// built in (FCL, Bullet); programs may register more. ODE_COLLISION_BACKEND
+// is read when the registry is first used (before any collision): it selects
+// the backend of that name as soon as one is registered; if none is by the
+// first collision, that is reported once and native stays. An explicit dCollisionSetBackend wins over the variable.
 
 #include "backend_internal.h"
+#include "backend_support.h"
 
 #include <ode/error.h>
 #include <stdio.h>
@@ -31,18 +32,32 @@ static const dCollisionBackend *find(const char *name)
     return NULL;
 }
 
-// The first use registers native and reads ODE_COLLISION_BACKEND (a name
-// too long for `requested` is cut and then matches nothing).
+static void add_backend(const dCollisionBackend *b)
+{
+    backends[backend_count] = b;
+    names[backend_count] = b->name;
+    backend_count++;
+}
+
+// The first use registers native and the built-in adapters and reads
+// ODE_COLLISION_BACKEND (a name too long for `requested` is cut and then
+// matches nothing).
 static void ensure_native(void)
 {
     if (backend_count > 0) return;
-    backends[0] = dxNativeBackend();
-    names[0] = backends[0]->name;
-    backend_count = 1;
+    add_backend(dxNativeBackend());
+#ifdef DX_HAVE_FCL
+    add_backend(dxFclBackend());
+#endif
+#ifdef DX_HAVE_BULLET
+    add_backend(dxBulletBackend());
+#endif
     selected = backends[0];
     const char *env = getenv("ODE_COLLISION_BACKEND");
-    if (env) snprintf(requested, sizeof requested, "%s", env);
-    if (strcmp(requested, selected->name) == 0) requested[0] = 0;
+    if (!env) return;
+    const dCollisionBackend *b = find(env);
+    if (b) selected = b;
+    else snprintf(requested, sizeof requested, "%s", env);
 }
 
 // A requested backend that never registered: say so once, at the first collision.
@@ -61,9 +76,7 @@ int dCollisionRegisterBackend(const dCollisionBackend *b)
     if (find(b->name)) return 0;
     DX_CHECK_ARG(backend_count < MAX_BACKENDS, return 0, "too many backends (at most %d)",
                  MAX_BACKENDS);
-    backends[backend_count] = b;
-    names[backend_count] = b->name;
-    backend_count++;
+    add_backend(b);
     if (requested[0] && strcmp(requested, b->name) == 0) {
         selected = b;
         requested[0] = 0;

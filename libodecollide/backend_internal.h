@@ -10,13 +10,15 @@
 
 #include "geom_internal.h"
 
-// The native backend (backends/native), always present.
+// The native backend (backends/native), always present (the adapters' entry
+// points are in backend_support.h).
 const dCollisionBackend *dxNativeBackend(void);
 
 // Contacts of two non-space geoms through the selected backend, or native
 // for a pair it does not support. Flags and skip are already checked.
 int dxBackendCollide(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *contact, int skip);
-// Tell the backend that owns g->backend_cache.
+// Tell every registered backend (each frees g->backend_cache only if it made
+// it: g->backend_cache_owner).
 void dxBackendGeomChanged(dxGeom *g);
 void dxBackendGeomDestroyed(dxGeom *g);
 

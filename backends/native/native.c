@@ -18,8 +18,13 @@ static dxCollider *const table[NATIVE_CLASSES][NATIVE_CLASSES] = {
     [dCapsuleClass] = { [dBoxClass] = dxCollideCapsuleBox,
                         [dCapsuleClass] = dxCollideCapsuleCapsule,
                         [dPlaneClass] = dxCollideCapsulePlane },
-    [dCylinderClass] = { [dPlaneClass] = dxCollideCylinderPlane },
-    // Not yet: rays, and cylinder against box, capsule and cylinder (libccd).
+    [dCylinderClass] = { [dBoxClass] = dxCollideCylinderBox,
+                         [dCapsuleClass] = dxCollideCylinderCapsule,
+                         [dCylinderClass] = dxCollideCylinderCylinder,
+                         [dPlaneClass] = dxCollideCylinderPlane },
+    [dRayClass] = { [dSphereClass] = dxCollideRaySphere, [dBoxClass] = dxCollideRayBox,
+                    [dCapsuleClass] = dxCollideRayCapsule,
+                    [dCylinderClass] = dxCollideRayCylinder, [dPlaneClass] = dxCollideRayPlane },
 };
 
 static int native_supports(int c1, int c2)

@@ -20,4 +20,11 @@ dxCollider dxCollideSphereSphere, dxCollideSphereBox, dxCollideSphereCapsule,
     dxCollideCapsuleCapsule, dxCollideCapsuleBox, dxCollideCapsulePlane,
     dxCollideCylinderPlane;
 
+// Rays (collide_ray.c): at most one contact, as BACKENDS.md section 1 defines.
+dxCollider dxCollideRaySphere, dxCollideRayBox, dxCollideRayCapsule, dxCollideRayCylinder,
+    dxCollideRayPlane;
+
+// Convex pairs without a closed form, through libccd (collide_ccd.c).
+dxCollider dxCollideCylinderBox, dxCollideCylinderCapsule, dxCollideCylinderCylinder;
+
 #endif

@@ -172,6 +172,13 @@ ODE_API int dGeomTransformGetInfo(dGeomID g);
 
 /** An AABB that covers everything: for geoms that are never culled. */
 ODE_API void dInfiniteAABB(dGeomID geom, dReal aabb[6]);
+/** The closest points cp1 on segment a1-a2 and cp2 on segment b1-b2; zero-length
+ *  segments work, parallel ones give a pair involving an endpoint of one. */
+ODE_API void dClosestLineSegmentPoints(const dVector3 a1, const dVector3 a2, const dVector3 b1,
+                                       const dVector3 b2, dVector3 cp1, dVector3 cp2);
+/** 1 if the boxes (centre p, rotation R, full side lengths) touch or overlap. */
+ODE_API int dBoxTouchesBox(const dVector3 _p1, const dMatrix3 R1, const dVector3 side1,
+                           const dVector3 _p2, const dMatrix3 R2, const dVector3 side2);
 
 /* ---- user classes (10.8) -------------------------------------------------- */
 

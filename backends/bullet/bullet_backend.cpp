@@ -1,0 +1,321 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// bullet_backend.cpp -- the Bullet 3.24 narrow phase behind dCollide
+// (BACKENDS.md section 5). A collision world without dynamics is made at the
+// first collision; each geom gets one btCollisionObject (its shape built once,
+// rebuilt when the geom's size changes, freed with the geom), posed from the
+// geom on every call; the pair's algorithm from Bullet's dispatcher reports
+// its points, which become contacts in ODE's convention through the sink of
+// backend_support.h. Rays are not supported (native handles them): measured
+// on unit-sized shapes, Bullet's ray casts hit spheres up to 3e-5 off with
+// normals up to 7e-3 rad off, capsules up to 2.5 off, and report nothing for
+// a ray starting inside a shape.
+
+#include "../../libodecollide/backend_support.h"
+
+#include <btBulletCollisionCommon.h>
+#include <ode/collision.h>
+#include <ode/error.h>
+
+#include <exception>
+#include <functional>
+#include <memory>
+
+namespace {
+
+// Multipoint perturbation: without it a face-on-face pair gets one point.
+// Convex-plane pairs perturb 5 times, 72 degrees apart around the normal, so
+// that every 90-degree corner cone of a rectangular face is hit: a box
+// face-down on a plane gets its 4 corners (with 3 or 4 it gets 3). The second
+// number is the manifold size below which Bullet perturbs; the points never
+// reach a manifold here, so it only needs to be positive.
+constexpr int PLANE_PERTURBATIONS = 5;
+constexpr int CONVEX_PERTURBATIONS = 3;
+
+// Bullet's default configuration with multipoint contacts.
+struct MultipointConfiguration : btDefaultCollisionConfiguration {
+    MultipointConfiguration()
+    {
+        setConvexConvexMultipointIterations(CONVEX_PERTURBATIONS, CONVEX_PERTURBATIONS);
+        setPlaneConvexMultipointIterations(PLANE_PERTURBATIONS, PLANE_PERTURBATIONS);
+    }
+};
+
+// The collision world (no dynamics), made once at the first collision.
+struct World {
+    MultipointConfiguration config;
+    btCollisionDispatcher dispatcher{&config};
+    btDbvtBroadphase broadphase;
+    btCollisionWorld world{&dispatcher, &broadphase, &config};
+};
+
+// The world, made at the first call (and freed at exit).
+World &the_world()
+{
+    static World w;
+    return w;
+}
+
+// A geom's Bullet object, its shape as of the geom's shape `version`.
+struct GeomObject {
+    unsigned version = 0;
+    std::unique_ptr<btCollisionShape> shape;
+    btCollisionObject object;
+};
+
+// The Bullet shape of an ODE shape (BACKENDS.md section 5 table). Boxes and
+// cylinders get margin 0: Bullet's default margin would round their edges.
+std::unique_ptr<btCollisionShape> make_shape(const dxShapeDesc &d)
+{
+    switch (d.cls) {
+    case dSphereClass: return std::make_unique<btSphereShape>(d.p[0]);
+    case dBoxClass: {
+        auto box = std::make_unique<btBoxShape>(btVector3(d.p[0], d.p[1], d.p[2]) / 2);
+        box->setMargin(0);
+        return box;
+    }
+    case dCapsuleClass: return std::make_unique<btCapsuleShapeZ>(d.p[0], d.p[1]);
+    case dCylinderClass: {
+        auto cyl = std::make_unique<btCylinderShapeZ>(btVector3(d.p[0], d.p[0], d.p[1] / 2));
+        cyl->setMargin(0);
+        return cyl;
+    }
+    default:   // dPlaneClass (supports() admits nothing else): solid where n.x < d, as ODE
+        return std::make_unique<btStaticPlaneShape>(btVector3(d.p[0], d.p[1], d.p[2]), d.p[3]);
+    }
+}
+
+// The world pose of a geom as a Bullet transform (R is row-major 3x4).
+btTransform pose_of(dGeomID g)
+{
+    dReal p[3], R[12];
+    dxGeomPose(g, p, R);
+    return btTransform(btMatrix3x3(R[0], R[1], R[2], R[4], R[5], R[6], R[8], R[9], R[10]),
+                       btVector3(p[0], p[1], p[2]));
+}
+
+extern const dCollisionBackend bullet_backend;
+const void *const OWNER = &bullet_backend;   // marks the cache slots this backend fills
+
+// The geom's object, made on first use, its shape rebuilt if the geom's size
+// changed, posed where the geom is now.
+GeomObject &posed_object(dGeomID g)
+{
+    dxShapeDesc d;
+    dxGeomDescribe(g, &d);
+    auto *obj = static_cast<GeomObject *>(dxGeomCache(g, OWNER));
+    if (!obj) {
+        auto fresh = std::make_unique<GeomObject>();
+        fresh->shape = make_shape(d);
+        obj = fresh.release();
+        obj->object.setCollisionShape(obj->shape.get());
+        obj->version = d.version;
+        dxGeomSetCache(g, OWNER, obj);
+    } else if (obj->version != d.version) {
+        obj->shape = make_shape(d);
+        obj->object.setCollisionShape(obj->shape.get());
+        obj->version = d.version;
+    }
+    obj->object.setWorldTransform(pose_of(g));
+    return *obj;
+}
+
+// What to keep of the points Bullet's pair algorithm reports. Its first
+// point is the pair's own answer; with multipoint perturbation the others
+// come from one shape turned slightly and mapped back: measured against the
+// shapes, they lie outside them by up to several times the depth (0.086 for
+// a box against a cylinder 0.057 deep) and can be deeper than the pair.
+enum class Points {
+    ALL,       // exact algorithms: box-box (ODE's), convex-plane (depths recomputed)
+    FIRST      // GJK/EPA pairs: the first point only (a reduced manifold)
+};
+
+// Takes the points of Bullet's pair algorithm (instead of keeping them in a
+// manifold, which would merge and cap them) and adds the touching ones to the
+// sink in ODE's sense for (o1, o2). A point comes as Bullet's manifold orders
+// the pair (A, B), which may be either way round: the normal lies on B and
+// points towards A, the point is on B, A's point is `distance` along the
+// normal from it (negative: they overlap). The contact position is the middle
+// of the two, except against a plane (always B): there B's point is on the
+// plane's surface, outside an A sunk deeper than its height, so A's point
+// (its deepest, as native puts it) is used.
+class SinkResult : public btManifoldResult {
+public:
+    SinkResult(const btCollisionObjectWrapper *w1, const btCollisionObjectWrapper *w2,
+               const btCollisionObject *o1, Points keep, bool plane_pair, dxContactSink *sink)
+        : btManifoldResult(w1, w2), o1_(o1), keep_(keep), a_fraction_(plane_pair ? 1 : 0.5),
+          sink_(sink)
+    {
+    }
+
+    void addContactPoint(const btVector3 &normal_on_b, const btVector3 &point_on_b,
+                         btScalar distance) override
+    {
+        if (points_++ > 0 && keep_ == Points::FIRST) return;
+        if (distance > 0) return;   // a near miss, not a contact
+        bool o1_is_a = !m_manifoldPtr || m_manifoldPtr->getBody0() == o1_;
+        btVector3 n = o1_is_a ? normal_on_b : -normal_on_b;
+        btVector3 p = point_on_b + normal_on_b * (distance * a_fraction_);
+        const dReal pos[3] = { p.x(), p.y(), p.z() }, nrm[3] = { n.x(), n.y(), n.z() };
+        dxSinkAdd(sink_, pos, nrm, -distance, -1, -1);
+    }
+
+private:
+    const btCollisionObject *o1_;   // the object of the dCollide call's o1
+    Points keep_;
+    btScalar a_fraction_;           // where pos lies from B's point (0) to A's (1)
+    int points_ = 0;
+    dxContactSink *sink_;
+};
+
+// A pair's algorithm from the dispatcher's pool, given back on scope exit.
+class PairAlgorithm {
+public:
+    PairAlgorithm(btCollisionDispatcher &d, const btCollisionObjectWrapper *w1,
+                  const btCollisionObjectWrapper *w2)
+        : dispatcher_(d), algorithm_(d.findAlgorithm(w1, w2, nullptr,
+                                                     BT_CONTACT_POINT_ALGORITHMS))
+    {
+    }
+    ~PairAlgorithm()
+    {
+        if (!algorithm_) return;
+        algorithm_->~btCollisionAlgorithm();
+        dispatcher_.freeCollisionAlgorithm(algorithm_);
+    }
+    PairAlgorithm(const PairAlgorithm &) = delete;
+    PairAlgorithm &operator=(const PairAlgorithm &) = delete;
+    btCollisionAlgorithm *get() const { return algorithm_; }
+
+private:
+    btCollisionDispatcher &dispatcher_;
+    btCollisionAlgorithm *algorithm_;
+};
+
+// A failure inside an entry point, through ODE's message handler.
+void report(const char *entry, const char *what)
+{
+    dMessage(d_ERR_UNKNOWN, "bullet backend: %s failed: %s", entry, what);
+}
+
+// The classes with a Bullet shape.
+bool is_solid(int cls)
+{
+    return cls == dSphereClass || cls == dBoxClass || cls == dCapsuleClass ||
+           cls == dCylinderClass || cls == dPlaneClass;
+}
+
+// A cylinder against a box, capsule or cylinder (through Bullet's EPA, which
+// fails on some such poses: in 1000 random shallow poses, a cylinder pair got
+// a quarter of the true depth along a normal that leaves it overlapped, and a
+// box-cylinder pair a point 0.086 outside both shapes for a depth of 0.057).
+bool epa_cylinder_pair(int c1, int c2)
+{
+    bool cyl1 = c1 == dCylinderClass, cyl2 = c2 == dCylinderClass;
+    auto epa_partner = [](int c) {
+        return c == dBoxClass || c == dCapsuleClass || c == dCylinderClass;
+    };
+    return (cyl1 && epa_partner(c2)) || (cyl2 && epa_partner(c1));
+}
+
+// Every pair of solids except two planes (never in contact: native's answer)
+// and the cylinder pairs Bullet's EPA gets wrong (native does them).
+int bullet_supports(int c1, int c2) noexcept
+{
+    return is_solid(c1) && is_solid(c2) && !(c1 == dPlaneClass && c2 == dPlaneClass) &&
+           !epa_cylinder_pair(c1, c2);
+}
+
+// Which points of a class pair to keep (c1 <= c2).
+Points points_to_keep(int c1, int c2)
+{
+    if (c2 == dPlaneClass || (c1 == dBoxClass && c2 == dBoxClass)) return Points::ALL;
+    return Points::FIRST;
+}
+
+// Whether (g1, g2) comes before (g2, g1): by class, then by pose, then by
+// address. Bullet always gets a pair in that order (GJK's answer depends on
+// it), so that dCollide(b, a) mirrors dCollide(a, b) exactly.
+bool in_order(dGeomID g1, dGeomID g2)
+{
+    int c1 = dGeomGetClass(g1), c2 = dGeomGetClass(g2);
+    if (c1 != c2) return c1 < c2;
+    dReal p1[15], p2[15];
+    dxGeomPose(g1, p1, p1 + 3);
+    dxGeomPose(g2, p2, p2 + 3);
+    for (int i = 0; i < 15; i++)
+        if (p1[i] != p2[i]) return p1[i] < p2[i];
+    return std::less<const void *>()(g1, g2);
+}
+
+// The contacts of two solids, Bullet seeing them as (first, second).
+int collide_pair(dGeomID o1, dGeomID o2, int flags, dContactGeom *out, int skip)
+{
+    if (!bullet_supports(dGeomGetClass(o1), dGeomGetClass(o2))) return 0;
+    bool keep_order = in_order(o1, o2);
+    dGeomID first = keep_order ? o1 : o2, second = keep_order ? o2 : o1;
+    int c1 = dGeomGetClass(first), c2 = dGeomGetClass(second);
+    World &w = the_world();
+    GeomObject &a = posed_object(first), &b = posed_object(second);
+    btCollisionObjectWrapper wa(nullptr, a.shape.get(), &a.object, a.object.getWorldTransform(),
+                                -1, -1);
+    btCollisionObjectWrapper wb(nullptr, b.shape.get(), &b.object, b.object.getWorldTransform(),
+                                -1, -1);
+    PairAlgorithm algorithm(w.dispatcher, &wa, &wb);
+    if (!algorithm.get()) return 0;
+    dxContactSink sink;
+    dxSinkInit(&sink);
+    SinkResult result(&wa, &wb, keep_order ? &a.object : &b.object, points_to_keep(c1, c2),
+                      c2 == dPlaneClass, &sink);
+    algorithm.get()->processCollision(&wa, &wb, w.world.getDispatchInfo(), &result);
+    return dxSinkFinish(&sink, o1, o2, flags, out, skip);
+}
+
+// dCollide's narrow phase (backend table entry): no exception leaves it.
+int bullet_collide(dGeomID o1, dGeomID o2, int flags, dContactGeom *out, int skip)
+{
+    try {
+        return collide_pair(o1, o2, flags, out, skip);
+    } catch (const std::exception &e) {
+        report("dCollide", e.what());
+    } catch (...) {
+        report("dCollide", "unknown exception");
+    }
+    return 0;
+}
+
+// Frees the geom's object if this backend made it.
+void drop_object(dGeomID g)
+{
+    auto *obj = static_cast<GeomObject *>(dxGeomOwnedCache(g, OWNER));
+    if (!obj) return;
+    dxGeomSetCache(g, OWNER, nullptr);
+    delete obj;
+}
+
+// The geom's size changed: its object goes (rebuilt at the next collision).
+void bullet_geom_changed(dGeomID g)
+{
+    try {
+        drop_object(g);
+    } catch (...) {
+        report("geom_changed", "unknown exception");
+    }
+}
+
+// The geom is being destroyed: its object goes with it.
+void bullet_geom_destroyed(dGeomID g)
+{
+    try {
+        drop_object(g);
+    } catch (...) {
+        report("geom_destroyed", "unknown exception");
+    }
+}
+
+const dCollisionBackend bullet_backend = { "bullet", bullet_supports, bullet_collide,
+                                           bullet_geom_changed, bullet_geom_destroyed };
+
+}   // namespace
+
+const dCollisionBackend *dxBulletBackend(void) { return &bullet_backend; }

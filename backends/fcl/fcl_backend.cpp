@@ -1,0 +1,202 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// fcl_backend.cpp -- the FCL 0.7 narrow phase behind dCollide (BACKENDS.md
+// section 4): one FCL shape per geom, kept in the geom's backend cache slot
+// and rebuilt when the geom's size changes; poses read on every call; FCL's
+// contacts turned into ODE's convention through the contact sink.
+
+#include "../../libodecollide/backend_support.h"
+
+#include <ode/collision.h>
+#include <ode/error.h>
+
+#include <exception>
+#include <functional>
+#include <memory>
+
+#include <fcl/geometry/shape/box.h>
+#include <fcl/geometry/shape/capsule.h>
+#include <fcl/geometry/shape/cylinder.h>
+#include <fcl/geometry/shape/halfspace.h>
+#include <fcl/geometry/shape/sphere.h>
+#include <fcl/narrowphase/collision.h>
+
+namespace {
+
+using Geometry = fcl::CollisionGeometryd;
+
+// FCL's shape for one geom, and the shape version it was built from.
+struct ShapeCache {
+    std::unique_ptr<Geometry> shape;
+    unsigned version;
+};
+
+// Raw contacts asked of FCL: the sink's capacity (it selects the max asked).
+constexpr std::size_t RAW_CONTACTS = DX_SINK_CAPACITY;
+
+int fcl_supports(int c1, int c2) noexcept;
+int fcl_collide(dGeomID o1, dGeomID o2, int flags, dContactGeom *out, int skip);
+void fcl_drop_cache(dGeomID g);
+
+const dCollisionBackend table = { "fcl", fcl_supports, fcl_collide, fcl_drop_cache,
+                                  fcl_drop_cache };
+
+// Classes with an FCL shape here (rays are native only: FCL has no ray).
+bool is_primitive(int cls)
+{
+    return cls == dSphereClass || cls == dBoxClass || cls == dCapsuleClass ||
+           cls == dCylinderClass || cls == dPlaneClass;
+}
+
+// Primitive pairs, except two where FCL 0.7 is wrong (they fall back to
+// native, which dCollide reports once):
+// - plane-plane: two FCL half-spaces intersect unless parallel and facing
+//   apart, while ODE never collides two planes;
+// - sphere-capsule: depth and normal are right, but the contact point is the
+//   capsule's axis point moved by the depth towards the sphere, which can lie
+//   well outside the sphere (sphereCapsuleIntersect).
+// (Nothing here can throw, hence no try/catch.)
+int fcl_supports(int c1, int c2) noexcept
+{
+    if (!is_primitive(c1) || !is_primitive(c2)) return 0;
+    const int lo = c1 < c2 ? c1 : c2, hi = c1 < c2 ? c2 : c1;
+    return !(lo == dPlaneClass && hi == dPlaneClass) &&
+           !(lo == dSphereClass && hi == dCapsuleClass);
+}
+
+// The FCL shape of a description (sizes mean the same in both libraries,
+// section 4: full box sides, capsule length without caps, z axes). An ODE
+// plane is a half-space, solid where n.x < d, which is FCL's Halfspace.
+std::unique_ptr<Geometry> make_shape(const dxShapeDesc &d)
+{
+    switch (d.cls) {
+    case dSphereClass: return std::make_unique<fcl::Sphered>(d.p[0]);
+    case dBoxClass: return std::make_unique<fcl::Boxd>(d.p[0], d.p[1], d.p[2]);
+    case dCapsuleClass: return std::make_unique<fcl::Capsuled>(d.p[0], d.p[1]);
+    case dCylinderClass: return std::make_unique<fcl::Cylinderd>(d.p[0], d.p[1]);
+    default:
+        return std::make_unique<fcl::Halfspaced>(fcl::Vector3d(d.p[0], d.p[1], d.p[2]), d.p[3]);
+    }
+}
+
+// The geom's FCL shape: the cached one, or a new one when there is none or
+// the geom's size changed since it was built.
+const Geometry *shape_of(dGeomID g)
+{
+    dxShapeDesc d;
+    dxGeomDescribe(g, &d);
+    auto *c = static_cast<ShapeCache *>(dxGeomCache(g, &table));
+    if (c && c->version == d.version) return c->shape.get();
+    std::unique_ptr<Geometry> shape = make_shape(d);
+    if (!c) {
+        c = new ShapeCache;
+        dxGeomSetCache(g, &table, c);
+    }
+    c->shape = std::move(shape);
+    c->version = d.version;
+    return c->shape.get();
+}
+
+// The geom's world pose as an FCL transform (R is row-major 3x4).
+fcl::Transform3d pose_of(dGeomID g)
+{
+    dReal pos[3], R[12];
+    dxGeomPose(g, pos, R);
+    fcl::Transform3d tf = fcl::Transform3d::Identity();
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++) tf.linear()(i, j) = R[i * 4 + j];
+        tf.translation()(i) = pos[i];
+    }
+    return tf;
+}
+
+const fcl::CollisionRequestd &request()
+{
+    static const fcl::CollisionRequestd req(RAW_CONTACTS, true);
+    return req;
+}
+
+// Each contact into the sink. FCL's normal points from its o1 to its o2;
+// ODE's points into g1, so it is negated when FCL's o1 is g1's shape.
+void add_contacts(const fcl::CollisionResultd &res, const Geometry *s1, dxContactSink *sink)
+{
+    for (std::size_t i = 0; i < res.numContacts(); i++) {
+        const fcl::Contactd &c = res.getContact(i);
+        const double sign = c.o1 == s1 ? -1 : 1;
+        dReal pos[3], n[3];
+        for (int k = 0; k < 3; k++) {
+            pos[k] = static_cast<dReal>(c.pos(k));
+            n[k] = static_cast<dReal>(sign * c.normal(k));
+        }
+        dxSinkAdd(sink, pos, n, static_cast<dReal>(c.penetration_depth), -1, -1);
+    }
+}
+
+void report(const char *what, const char *why)
+{
+    dMessage(d_ERR_UNKNOWN, "fcl backend: %s failed: %s", what, why);
+}
+
+// Whether FCL should see the pair as (g1, g2) rather than (g2, g1): by
+// class, then by pose and size, then by address. FCL's iterative answers
+// depend a little on the order: a fixed one makes dCollide(b, a) exactly
+// dCollide(a, b) mirrored, and (unlike addresses alone) the same from run
+// to run.
+bool in_fcl_order(dGeomID g1, dGeomID g2)
+{
+    const int c1 = dGeomGetClass(g1), c2 = dGeomGetClass(g2);
+    if (c1 != c2) return c1 < c2;
+    dReal k1[19], k2[19];   // position, rotation, size
+    dxShapeDesc d1, d2;
+    dxGeomPose(g1, k1, k1 + 3);
+    dxGeomPose(g2, k2, k2 + 3);
+    dxGeomDescribe(g1, &d1);
+    dxGeomDescribe(g2, &d2);
+    for (int i = 0; i < 4; i++) k1[15 + i] = d1.p[i], k2[15 + i] = d2.p[i];
+    for (int i = 0; i < 19; i++)
+        if (k1[i] != k2[i]) return k1[i] < k2[i];
+    return std::less<dGeomID>()(g1, g2);
+}
+
+// Contacts of two primitive geoms through fcl::collide on the cached shapes
+// (the geometry-and-transform form: no CollisionObject is needed), the pair
+// in FCL's order. The result's contact vector is reused from call to call.
+int fcl_collide(dGeomID o1, dGeomID o2, int flags, dContactGeom *out, int skip)
+{
+    try {
+        if (!fcl_supports(dGeomGetClass(o1), dGeomGetClass(o2))) return 0;
+        const bool keep = in_fcl_order(o1, o2);
+        const dGeomID f1 = keep ? o1 : o2, f2 = keep ? o2 : o1;
+        const Geometry *s1 = shape_of(o1), *s2 = shape_of(o2);
+        thread_local fcl::CollisionResultd res;
+        res.clear();
+        fcl::collide(keep ? s1 : s2, pose_of(f1), keep ? s2 : s1, pose_of(f2), request(), res);
+        dxContactSink sink;
+        dxSinkInit(&sink);
+        add_contacts(res, s1, &sink);
+        return dxSinkFinish(&sink, o1, o2, flags, out, skip);
+    } catch (const std::exception &e) {
+        report("collide", e.what());
+    } catch (...) {
+        report("collide", "unknown exception");
+    }
+    return 0;
+}
+
+// geom_changed and geom_destroyed: free the geom's shape if this backend
+// made it (a changed geom gets a new one at its next collision).
+void fcl_drop_cache(dGeomID g)
+{
+    try {
+        auto *c = static_cast<ShapeCache *>(dxGeomOwnedCache(g, &table));
+        if (!c) return;
+        dxGeomSetCache(g, &table, nullptr);
+        delete c;
+    } catch (...) {
+        report("dropping a cached shape", "unknown exception");
+    }
+}
+
+} // namespace
+
+const dCollisionBackend *dxFclBackend(void) { return &table; }
