@@ -50,10 +50,8 @@ static int have_backend(const char *name)
 // select it.
 #define USE_BULLET() \
     do { \
-        if (!have_backend("bullet")) { \
-            printf("# SKIP: this library was built without the bullet backend\n"); \
-            return 0; \
-        } \
+        if (!have_backend("bullet")) \
+            return test_skip("this library was built without the bullet backend"); \
         CHECK(dCollisionSetBackend("bullet") == 1); \
     } while (0)
 
@@ -203,10 +201,8 @@ static int test_environment_selects_bullet(void)
         CHECK(strcmp(dCollisionGetBackend(), "native") == 0);
         return 0;
     }
-    if (!have_backend("bullet")) {
-        printf("# SKIP: this library was built without the bullet backend\n");
-        return 0;
-    }
+    if (!have_backend("bullet"))
+        return test_skip("this library was built without the bullet backend");
     CHECK(strcmp(dCollisionGetBackend(), "bullet") == 0);
     dGeomID ray = dCreateRay(0, 10), s = dCreateSphere(0, 1);
     dContactGeom c[1];

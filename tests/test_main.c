@@ -58,16 +58,28 @@ const char *test_captured_last(void)
     return reports[(report_count <= MAX_REPORTS ? report_count : MAX_REPORTS) - 1];
 }
 
+static char skip_reason[256];
+
+int test_skip(const char *reason)
+{
+    snprintf(skip_reason, sizeof skip_reason, "%s", reason);
+    return TEST_SKIPPED;
+}
+
 int main(void)
 {
     int n = 0, failed = 0;
     while (test_cases[n].fn) n++;
     printf("TAP version 13\n1..%d\n", n);
     for (int i = 0; i < n; i++) {
-        int bad = test_cases[i].fn();
+        int result = test_cases[i].fn();
         test_release_reports();
-        failed += bad != 0;
-        printf("%s %d - %s\n", bad ? "not ok" : "ok", i + 1, test_cases[i].name);
+        if (result == TEST_SKIPPED) {
+            printf("ok %d - %s # SKIP %s\n", i + 1, test_cases[i].name, skip_reason);
+        } else {
+            failed += result != 0;
+            printf("%s %d - %s\n", result ? "not ok" : "ok", i + 1, test_cases[i].name);
+        }
         fflush(stdout);
     }
     return failed ? 1 : 0;
