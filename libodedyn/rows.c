@@ -24,6 +24,10 @@ void dxBodyWorldInverseInertia(const struct dxBody *b, dReal *out)
 static void add_gyroscopic_torque(struct dxBody *b, dReal h)
 {
     const dReal *I = b->mass.I;
+    // An isotropic inertia (a sphere, a cube) has w x I w = 0: nothing to add.
+    if (I[1] == 0 && I[2] == 0 && I[6] == 0 && I[4] == 0 && I[8] == 0 && I[9] == 0 &&
+        I[0] == I[5] && I[0] == I[10])
+        return;
     dVector3 w, L, f, dw;
     dMultiply1_331(w, b->R, b->avel);   // body frame
     dMultiply0_331(L, I, w);
@@ -61,6 +65,17 @@ void dxIslandPrepare(struct dxWorld *w, const dxIsland *is, dReal h, dxIslandBod
     }
 }
 
+void dxIslandBodyRates(const dxIsland *is, const dxIslandBodies *bd, dReal fps, dReal *rates)
+{
+    for (int b = 0; b < is->nb; b++) {
+        const struct dxBody *body = is->bodies[b];
+        dReal *t = rates + 6 * b;
+        dAddScaledVectors3(t, body->lvel, body->force, fps, bd->inv_mass[b]);
+        dMultiply0_331(t + 3, bd->inv_inertia + 12 * b, body->torque);
+        dAddVectorScaledVector3(t + 3, t + 3, body->avel, fps);
+    }
+}
+
 // Island index of a joint's body k, or -1 for the static world or a
 // kinematic body (which is not part of the island).
 static int island_index(const dxJoint *j, int k)
@@ -70,17 +85,49 @@ static int island_index(const dxJoint *j, int k)
 }
 
 // A kinematic body moves whatever the constraint does: its velocity is a
-// known term of the row, J_k v_k, moved into c.
-static void fold_kinematic(const dxJoint *j, dxIslandRows *r, int first, int count)
+// known term of the row, J_k v_k, moved into c (m rows).
+static void fold_kinematic(const dxJoint *j, const dReal *J, dReal *c, int m)
 {
     for (int k = 0; k < 2; k++) {
         const struct dxBody *b = dxJointBody(j, k);
         if (!b || !(b->flags & DX_BODY_KINEMATIC)) continue;
-        for (int i = first; i < first + count; i++) {
-            const dReal *J = r->J + i * DX_ROW_SKIP + 6 * k;
-            r->c[i] -= dCalcVectorDot3(J, b->lvel) + dCalcVectorDot3(J + 3, b->avel);
+        for (int i = 0; i < m; i++) {
+            const dReal *Jk = J + i * DX_ROW_SKIP + 6 * k;
+            c[i] -= dCalcVectorDot3(Jk, b->lvel) + dCalcVectorDot3(Jk + 3, b->avel);
         }
     }
+}
+
+void dxJointRowsFill(struct dxWorld *w, dxJoint *j, dReal h, dReal *J, dReal *c, dReal *cfm,
+                     dReal *lo, dReal *hi, int *findex, int *b)
+{
+    const int m = j->rows.m;
+    b[0] = island_index(j, 0);
+    b[1] = island_index(j, 1);
+    if (m == 0) return;
+    for (int i = 0; i < m * DX_ROW_SKIP; i++) J[i] = 0;
+    for (int i = 0; i < m; i++) {
+        c[i] = 0;
+        cfm[i] = w->cfm;
+        lo[i] = -dInfinity;
+        hi[i] = dInfinity;
+        findex[i] = -1;
+    }
+    dxJointRows info;
+    info.fps = dRecip(h);
+    info.erp = w->erp;
+    info.rowskip = DX_ROW_SKIP;
+    info.J1l = J;
+    info.J1a = J + 3;
+    info.J2l = J + 6;
+    info.J2a = J + 9;
+    info.c = c;
+    info.cfm = cfm;
+    info.lo = lo;
+    info.hi = hi;
+    info.findex = findex;
+    j->cls->fill_rows(j, &info);
+    fold_kinematic(j, J, c, m);
 }
 
 void dxRowsBuild(struct dxWorld *w, const dxIsland *is, dReal h, dxIslandRows *r)
@@ -104,39 +151,16 @@ void dxRowsBuild(struct dxWorld *w, const dxIsland *is, dReal h, dxIslandRows *r
     r->findex = DX_ARENA_ARRAY(a, int, m);
     r->body0 = DX_ARENA_ARRAY(a, int, m);
     r->body1 = DX_ARENA_ARRAY(a, int, m);
-    dSetZero(r->J, m * DX_ROW_SKIP);
-    dSetZero(r->c, m);
-    dSetValue(r->cfm, m, w->cfm);
-    dSetValue(r->lo, m, -dInfinity);
-    dSetValue(r->hi, m, dInfinity);
-
-    dxJointRows info;
-    info.fps = dRecip(h);
-    info.erp = w->erp;
-    info.rowskip = DX_ROW_SKIP;
     for (int k = 0; k < is->nj; k++) {
-        dxJoint *j = is->joints[k];
-        int first = r->joint_row[k], count = j->rows.m;
-        if (count == 0) continue;
-        for (int i = first; i < first + count; i++) r->findex[i] = -1;
-        dReal *J = r->J + first * DX_ROW_SKIP;
-        info.J1l = J;
-        info.J1a = J + 3;
-        info.J2l = J + 6;
-        info.J2a = J + 9;
-        info.c = r->c + first;
-        info.cfm = r->cfm + first;
-        info.lo = r->lo + first;
-        info.hi = r->hi + first;
-        info.findex = r->findex + first;
-        j->cls->fill_rows(j, &info);
-        int b0 = island_index(j, 0), b1 = island_index(j, 1);
+        const int first = r->joint_row[k], count = is->joints[k]->rows.m;
+        int b[2];
+        dxJointRowsFill(w, is->joints[k], h, r->J + first * DX_ROW_SKIP, r->c + first,
+                        r->cfm + first, r->lo + first, r->hi + first, r->findex + first, b);
         for (int i = first; i < first + count; i++) {
             if (r->findex[i] >= 0) r->findex[i] += first;
-            r->body0[i] = b0;
-            r->body1[i] = b1;
+            r->body0[i] = b[0];
+            r->body1[i] = b[1];
         }
-        fold_kinematic(j, r, first, count);
     }
 }
 

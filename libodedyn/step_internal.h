@@ -6,8 +6,9 @@
 // A step: dxStepBegin finds the islands of enabled bodies; for each island
 // the stepper calls dxIslandPrepare (world-frame inverse inertia, gravity and
 // gyroscopic torque into the accumulators) and dxRowsBuild (every joint's
-// rows), solves for the constraint forces, updates velocities, and calls
-// dxIslandIntegrate; dxStepEnd handles auto-disable and releases scratch.
+// rows; or dxJointRowsFill joint by joint), solves for the constraint forces,
+// updates velocities, and calls dxIslandIntegrate; dxStepEnd handles
+// auto-disable and releases scratch.
 
 #ifndef DX_STEP_INTERNAL_H
 #define DX_STEP_INTERNAL_H
@@ -45,9 +46,10 @@ typedef struct dxIslandRows {
 // its bodies bd and rows r (lambda is zeroed scratch of the world arena).
 typedef void dxIslandSolver(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *bd,
                             const dxIslandRows *r, dReal h, dReal *lambda);
-// A whole step with one solver (dWorldStep, dWorldQuickStep): islands; per
-// island external forces, rows, solve, velocities, positions; kinematic
-// bodies; auto-disable. Returns 1, or 0 (reported) for a bad world or step.
+// A whole step with one solver (dWorldStep): islands; per island external
+// forces, rows, solve, velocities, positions; kinematic bodies;
+// auto-disable. Returns 1, or 0 (reported) for a bad world or step.
+// (dWorldQuickStep does the same steps its own way, quickstep.c.)
 int dxStepWorld(struct dxWorld *w, dReal h, const char *function, dxIslandSolver *solve);
 
 // Check the step size and find the islands (arena scratch). Returns 0 (after
@@ -57,7 +59,17 @@ int dxStepBegin(struct dxWorld *w, dReal h, const char *function, dxIsland **isl
 void dxStepEnd(const dxIsland *islands, int count, dReal h);
 
 void dxIslandPrepare(struct dxWorld *w, const dxIsland *is, dReal h, dxIslandBodies *out);
+// The unconstrained rates v/h + M^-1 (f, t) of the island's bodies
+// (fps = 1/h), 6 per body, into rates.
+void dxIslandBodyRates(const dxIsland *is, const dxIslandBodies *bd, dReal fps, dReal *rates);
 void dxRowsBuild(struct dxWorld *w, const dxIsland *is, dReal h, dxIslandRows *rows);
+// The rows of one joint (j->rows.m of them, counted this step) at J, c, cfm,
+// lo, hi, findex (row i at index i, J with DX_ROW_SKIP): J zeroed and filled,
+// cfm, lo, hi defaulted and filled, findex joint-local or -1, kinematic
+// bodies' motion folded into c. Island indices of its bodies in b[2] (-1:
+// static world or kinematic). What dxRowsBuild does for every joint.
+void dxJointRowsFill(struct dxWorld *w, dxJoint *j, dReal h, dReal *J, dReal *c, dReal *cfm,
+                     dReal *lo, dReal *hi, int *findex, int *b);
 // out[6*nb] += J^T lambda per body (force, torque); fills joint feedback.
 void dxRowsApplyForces(const dxIsland *is, const dxIslandRows *rows, const dReal *lambda,
                        dReal *body_forces);

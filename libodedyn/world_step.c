@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
-// world_step.c -- the step that dWorldStep and dWorldQuickStep share: every
-// island goes through the same preparation, rows, velocity update and
-// integration; only the solve for the constraint forces differs.
+// world_step.c -- the step of a solver that works one island at a time on
+// its rows (dWorldStep): every island goes through the same preparation,
+// rows, velocity update and integration; only the solve for the constraint
+// forces is the solver's. (dWorldQuickStep builds its rows straight into its
+// own layout and solves all islands together: quickstep.c.)
 
 #include "step_internal.h"
 

@@ -1,0 +1,153 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// quickstep.h -- the data of dWorldQuickStep's iteration (quickstep*.c only).
+//
+// The rows of all islands are solved in one system, in two kinds of
+// updates, all for the same mixed LCP A lambda = b + w by projected SOR (see
+// quickstep.c):
+//  - blocks: a joint's unbounded (equality) rows, up to 6, solved together
+//    with the exact inverse of their block of A, each followed by the
+//    joint's limit and motor rows coupled to it;
+//  - rows: every other row (contacts, limits, motors) on its own, in one
+//    array of rows that all look alike: two bodies (a one-body row's second
+//    body is a dummy whose numbers stay zero), bounds scaled by a lambda
+//    (a friction row's normal force, or a constant 1), so that the update
+//    has no branch that depends on the kind of row.
+// Each island has its own range of bodies in fc, of lambda positions, of
+// blocks and of rows.
+
+#ifndef DX_QUICKSTEP_H
+#define DX_QUICKSTEP_H
+
+#include "step_internal.h"
+
+#include <stdint.h>
+
+typedef struct qs_scratch qs_scratch;
+
+#define QS_MAX_BLOCK 6
+
+#if defined(__GNUC__)
+#define QS_INLINE static inline __attribute__((always_inline))
+#else
+#define QS_INLINE static inline
+#endif
+
+// Pairs of numbers: rows and fc are stored and updated two numbers at a time
+// (SSE2 with doubles); the 12 numbers of a row's J are 6 pairs.
+#if defined(__GNUC__)
+typedef dReal qs_v2 __attribute__((vector_size(2 * sizeof(dReal))));
+#define qs_add(x, y) ((x) + (y))
+#define qs_mul(x, y) ((x) * (y))
+#define qs_lane(v, i) ((v)[i])
+QS_INLINE qs_v2 qs_splat(dReal a)
+{
+    qs_v2 v = { a, a };
+    return v;
+}
+#else
+typedef struct qs_v2 {
+    dReal e[2];
+} qs_v2;
+static inline qs_v2 qs_add(qs_v2 x, qs_v2 y)
+{
+    qs_v2 v = { { x.e[0] + y.e[0], x.e[1] + y.e[1] } };
+    return v;
+}
+static inline qs_v2 qs_mul(qs_v2 x, qs_v2 y)
+{
+    qs_v2 v = { { x.e[0] * y.e[0], x.e[1] * y.e[1] } };
+    return v;
+}
+#define qs_lane(v, i) ((v).e[i])
+static inline qs_v2 qs_splat(dReal a)
+{
+    qs_v2 v = { { a, a } };
+    return v;
+}
+#endif
+
+// n rows of one joint solved together: with the residuals res (unscaled)
+// delta = Ainv res (Ainv: the inverse of the block of A, times sor_w),
+// lambda += delta, fc += M^-1 J^T delta.
+typedef struct qs_block {
+    int n;
+    int two;          // acts on two bodies (else on o0 only)
+    int o0, o1;       // offsets of the bodies in fc
+    int first;        // lambda position of its first row; the others follow
+    qs_v2 *J, *M;     // n x 6 pairs: J and M^-1 J^T
+    dReal *Ainv;      // n x n
+    dReal *rhs, *cfm; // n: b and cfm/h
+    int coupled, ncoupled;   // the joint's rows coupled to the block: rows[coupled...]
+} qs_block;
+
+// A row updated on its own. With D = sor_w / A_ii and s = |lambda[f]|:
+//   lambda[pos] += rhs - cfm lambda[pos] - J . fc, clamped to lo s .. hi s,
+//   fc += delta M for the change delta.
+// A limit or motor row of a joint with a block is coupled to it: it moves
+// the block along, its lambdas changing by g * delta so that the block's
+// residuals stay as they were (M and D then include the block's response:
+// A_ii becomes its Schur complement). Without this the row would fight a
+// much stiffer block and converge very slowly (a stop on a pendulum with a
+// light bob). Coupled rows are updated right after their block.
+typedef struct qs_row {
+    qs_v2 J[6];       // D * J_i: [lin0 ang0 lin1 ang1]
+    qs_v2 M[6];       // M^-1 J_i^T (world frame), plus the block's response
+    dReal rhs, cfm;   // D * b_i, D * cfm_i / h
+    dReal lo, hi;     // bounds, or friction coefficients (-mu, mu)
+    int o0, o1;       // offsets of the bodies in fc (o1: the dummy for a one-body row)
+    int pos;          // lambda position
+    int f;            // lambda position of the normal row, or of the constant 1
+    const dReal *g;   // gn numbers: the block's lambda change per unit of delta
+    int gn, gfirst;   // gfirst: the lambda position of the block's first row
+} qs_row;
+
+// A joint with a dJointFeedback: its rows' J and lambda positions, kept for
+// the forces it applies.
+typedef struct qs_feedback {
+    dxJoint *joint;
+    const dReal *J;        // m x DX_ROW_SKIP
+    const int *pos;        // m
+    int m;
+} qs_feedback;
+
+// An island's part of the system: islands share no body and no row, so
+// their sweeps can be interleaved (quickstep.c).
+typedef struct qs_island {
+    int body0;             // its first body in fc; body0 + nb is its dummy
+    int block0, nblocks;   // its blocks, in its joints' order
+    int order0, norder;    // its part of order: its rows not coupled to a block
+    uint32_t seed;         // of its shuffles
+} qs_island;
+
+typedef struct qs_system {
+    int m, nblocks, nrows, norder, nfeedback, nbodies;
+    qs_block *blocks;      // in each island's joint order
+    qs_row *rows;          // the rows coupled to blocks, and the others
+    int *order;            // each island's other rows, in the order of its sweeps
+    const qs_block **bseq; // the blocks of all islands, interleaved
+    int *seq;              // order of all islands, interleaved
+    int *at;               // m + 1: scratch for a place per lambda position, all -1
+    int *row_pos, *row_f;  // per row: its pos and f (compact copies for the reordering)
+    dReal *lambda;         // m + 1: the last holds the constant 1
+    dReal *fc;             // 6 per body (and island dummy): M^-1 J^T lambda
+    qs_feedback *feedback;
+    dReal *rates;          // 6 per body: v/h + M^-1 f (build scratch)
+    int next;              // the next free lambda position (build)
+    qs_scratch *scratch;   // per-joint build scratch
+} qs_system;
+
+// Count the rows of the islands' joints (count_rows, once per step) and
+// allocate the system for all of them (world arena).
+void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_system *sys);
+
+// Fill the rows of one island's joints (prepared: bd) and append its blocks
+// and rows to the system; *part gets its ranges (seed left as it is).
+void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *bd, dReal h,
+                  qs_system *sys, qs_island *part);
+
+// One sweep over all blocks in bseq (each followed by its coupled rows) and
+// all rows in seq: the blocks first, or (rows_first) the rows.
+void dxQuickSweep(const qs_system *sys, int rows_first);
+
+#endif

@@ -1,0 +1,498 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// quickstep_build.c -- setting up dWorldQuickStep's iteration, island by
+// island and joint by joint, straight from each joint's rows: its equality
+// rows as blocks with their inverses, its other rows on their own, each
+// scaled by D = sor_w / A_ii with M^-1 J^T precomputed (quickstep.h).
+
+#include "quickstep.h"
+
+#include <float.h>
+#include <math.h>
+#include <ode/matrix.h>
+#include <string.h>
+
+// A pivot below this fraction of its diagonal entry makes a block singular.
+#ifdef dSINGLE
+#define PIVOT_EPS (64 * FLT_EPSILON)
+#else
+#define PIVOT_EPS (64 * DBL_EPSILON)
+#endif
+
+// What the build needs about the island.
+typedef struct qs_input {
+    const dxIslandBodies *bd;
+    const dReal *rates;    // v/h + M^-1 f per body, 6 each
+    dReal fps, sor_w;
+    int body0, nb;         // the island's first body in fc, its number of bodies
+} qs_input;
+
+// The rows of one joint (joint-local indices, as dxJointRowsFill makes them).
+typedef struct qs_jrows {
+    int m;
+    dReal *J, *c, *cfm, *lo, *hi;
+    int *findex;
+    int b[2];              // island indices of its bodies, -1: static or kinematic
+    // Its island bodies in the solver's order (the one body first if only
+    // one): where their parts of a J row start, inverse mass and inertia,
+    // unconstrained rates.
+    int src[2];
+    dReal im[2];
+    const dReal *I[2], *rate[2];
+    int o[2];              // their offsets in fc: a missing second body is the dummy
+} qs_jrows;
+
+// The solver-order side data of jr's bodies.
+static void joint_sides(const qs_input *in, qs_jrows *jr)
+{
+    const int swap = jr->b[0] < 0;
+    for (int side = 0; side < 2; side++) {
+        const int body = jr->b[side ^ swap];
+        jr->src[side] = 6 * (side ^ swap);
+        jr->im[side] = body >= 0 ? in->bd->inv_mass[body] : 0;
+        jr->I[side] = body >= 0 ? in->bd->inv_inertia + 12 * body : NULL;
+        jr->rate[side] = body >= 0 ? in->rates + 6 * body : NULL;
+        jr->o[side] = 6 * (in->body0 + (body >= 0 ? body : in->nb));
+    }
+}
+
+static int is_unbounded(const qs_jrows *jr, int i)
+{
+    return jr->findex[i] < 0 && jr->lo[i] == -dInfinity && jr->hi[i] == dInfinity;
+}
+
+static int is_two_body(const qs_jrows *jr)
+{
+    return jr->b[0] >= 0 && jr->b[1] >= 0;
+}
+
+// The sum of the products of the 6 pairs of a and b.
+static dReal pair_dot(const qs_v2 *a, const qs_v2 *b)
+{
+    const qs_v2 s = qs_add(qs_add(qs_mul(a[0], b[0]), qs_mul(a[1], b[1])),
+                           qs_add(qs_add(qs_mul(a[2], b[2]), qs_mul(a[3], b[3])),
+                                  qs_add(qs_mul(a[4], b[4]), qs_mul(a[5], b[5]))));
+    return qs_lane(s, 0) + qs_lane(s, 1);
+}
+
+// The set-up of blocks and of the rows coupled to them is done in double
+// precision whatever dReal is: the Schur complement of a stiff block (a light
+// body far from its joint) is a small difference of large numbers.
+static double dot12(const dReal *a, const dReal *b)
+{
+#ifdef dSINGLE
+    double s0 = 0, s1 = 0;
+    for (int e = 0; e < 12; e += 2) {
+        s0 += (double)a[e] * b[e];
+        s1 += (double)a[e + 1] * b[e + 1];
+    }
+    return s0 + s1;
+#else
+    qs_v2 x[6], y[6];
+    memcpy(x, a, sizeof x);
+    memcpy(y, b, sizeof y);
+    return pair_dot(x, y);
+#endif
+}
+
+// Row i's J, M^-1 J^T and its bodies' unconstrained rates as 6 pairs each,
+// with its one island body first if it has only one (the other side,
+// static or kinematic, is then zero).
+static void row_full(const qs_jrows *jr, int i, qs_v2 *Jo, qs_v2 *Mo, qs_v2 *Ro)
+{
+    const dReal *J = jr->J + i * DX_ROW_SKIP;
+    for (int side = 0; side < 2; side++) {
+        const dReal *Js = J + jr->src[side], *I = jr->I[side], im = jr->im[side];
+        dReal m[6];
+        if (!I) {
+            Jo[3 * side] = Jo[3 * side + 1] = Jo[3 * side + 2] = qs_splat(0);
+            Mo[3 * side] = Mo[3 * side + 1] = Mo[3 * side + 2] = qs_splat(0);
+            Ro[3 * side] = Ro[3 * side + 1] = Ro[3 * side + 2] = qs_splat(0);
+            continue;
+        }
+        for (int e = 0; e < 3; e++) {
+            m[e] = im * Js[e];
+            m[3 + e] = I[4 * e] * Js[3] + I[4 * e + 1] * Js[4] + I[4 * e + 2] * Js[5];
+        }
+        memcpy(Jo + 3 * side, Js, sizeof m);
+        memcpy(Mo + 3 * side, m, sizeof m);
+        memcpy(Ro + 3 * side, jr->rate[side], sizeof m);
+    }
+}
+
+// ---- blocks --------------------------------------------------------------------
+
+// The block's matrix B = J M^-1 J^T + cfm/h (n x n, row-major).
+QS_INLINE void block_matrix(const dReal *J, const dReal *iMJ, const dReal *cfm, int n,
+                             double *B)
+{
+    for (int a = 0; a < n; a++) {
+        for (int c = 0; c < a; c++) B[a * n + c] = B[c * n + a] = dot12(J + 12 * a, iMJ + 12 * c);
+        B[a * n + a] = dot12(J + 12 * a, iMJ + 12 * a) + cfm[a];
+    }
+}
+
+// Cholesky factor L (lower, row-major) of the n x n matrix B, its diagonal
+// stored as reciprocals (the solves then multiply). Returns 0 if B is not
+// safely positive definite.
+QS_INLINE int cholesky(const double *B, int n, double *L)
+{
+    for (int i = 0; i < n; i++) {
+        for (int j = 0; j <= i; j++) {
+            double s = B[i * n + j];
+            for (int k = 0; k < j; k++) s -= L[i * n + k] * L[j * n + k];
+            if (i == j) {
+                if (!(s > PIVOT_EPS * B[i * n + i])) return 0;
+                L[i * n + i] = 1 / sqrt(s);
+            } else {
+                L[i * n + j] = s * L[j * n + j];
+            }
+        }
+    }
+    return 1;
+}
+
+// x = B^-1 x with B = L L^T.
+static void cholesky_solve(const double *L, int n, double *x)
+{
+    for (int i = 0; i < n; i++) {
+        for (int k = 0; k < i; k++) x[i] -= L[i * n + k] * x[k];
+        x[i] *= L[i * n + i];
+    }
+    for (int i = n - 1; i >= 0; i--) {
+        for (int k = i + 1; k < n; k++) x[i] -= L[k * n + i] * x[k];
+        x[i] *= L[i * n + i];
+    }
+}
+
+// A block being built, in double-precision-friendly scratch: its rows' J
+// and M^-1 J^T, and the Cholesky factor of its matrix (kept for coupling the
+// joint's other rows to it).
+typedef struct qs_jblock {
+    int n;
+    dReal J[QS_MAX_BLOCK * 12], iMJ[QS_MAX_BLOCK * 12];
+    double L[QS_MAX_BLOCK * QS_MAX_BLOCK];
+} qs_jblock;
+
+// sor_w B^-1 into Ainv (n x n) from the Cholesky factor L of B.
+QS_INLINE void scaled_inverse(const double *L, int n, dReal sor_w, dReal *Ainv)
+{
+    // Linv = L^-1 (lower).
+    double Linv[QS_MAX_BLOCK * QS_MAX_BLOCK];
+    for (int j = 0; j < n; j++) {
+        Linv[j * n + j] = L[j * n + j];
+        for (int i = j + 1; i < n; i++) {
+            double s = 0;
+            for (int k = j; k < i; k++) s += L[i * n + k] * Linv[k * n + j];
+            Linv[i * n + j] = -s * L[i * n + i];
+        }
+    }
+    // sor_w B^-1 = sor_w Linv^T Linv.
+    for (int i = 0; i < n; i++) {
+        for (int j = 0; j <= i; j++) {
+            double s = 0;
+            for (int k = i; k < n; k++) s += Linv[k * n + i] * Linv[k * n + j];
+            Ainv[i * n + j] = Ainv[j * n + i] = (dReal)(sor_w * s);
+        }
+    }
+}
+
+// The block's matrix B = J M^-1 J^T + cfm/h, its Cholesky factor L and
+// sor_w B^-1 (Ainv); n is a constant after inlining. Returns 0 if B is
+// singular.
+QS_INLINE int factor_n(const dReal *J, const dReal *iMJ, const dReal *cfm, int n, dReal sor_w,
+                       double *L, dReal *Ainv)
+{
+    double B[QS_MAX_BLOCK * QS_MAX_BLOCK];
+    block_matrix(J, iMJ, cfm, n, B);
+    if (!cholesky(B, n, L)) return 0;
+    scaled_inverse(L, n, sor_w, Ainv);
+    return 1;
+}
+
+static int factor(const dReal *J, const dReal *iMJ, const dReal *cfm, int n, dReal sor_w,
+                  double *L, dReal *Ainv)
+{
+    switch (n) {   // constant sizes let the compiler unroll
+    case 2: return factor_n(J, iMJ, cfm, 2, sor_w, L, Ainv);
+    case 3: return factor_n(J, iMJ, cfm, 3, sor_w, L, Ainv);
+    case 4: return factor_n(J, iMJ, cfm, 4, sor_w, L, Ainv);
+    case 5: return factor_n(J, iMJ, cfm, 5, sor_w, L, Ainv);
+    default: return factor_n(J, iMJ, cfm, QS_MAX_BLOCK, sor_w, L, Ainv);
+    }
+}
+
+// Try to make rows idx[0..n) of a joint a block (its data from the arena,
+// its build data in *jb). Returns 0 if their matrix is singular (they are
+// then iterated one by one).
+static int fill_block(dxArena *a, const qs_input *in, const qs_jrows *jr, const int *idx, int n,
+                      qs_block *blk, qs_jblock *jb)
+{
+    dReal rhs[QS_MAX_BLOCK], cfm[QS_MAX_BLOCK];
+    for (int k = 0; k < n; k++) {
+        const int i = idx[k];
+        qs_v2 J[6], M[6], R[6];
+        row_full(jr, i, J, M, R);
+        memcpy(jb->J + 12 * k, J, sizeof J);
+        memcpy(jb->iMJ + 12 * k, M, sizeof M);
+        rhs[k] = jr->c[i] * in->fps - pair_dot(J, R);
+        cfm[k] = jr->cfm[i] * in->fps;
+    }
+    dReal Ainv[QS_MAX_BLOCK * QS_MAX_BLOCK];
+    if (!factor(jb->J, jb->iMJ, cfm, n, in->sor_w, jb->L, Ainv)) return 0;
+    jb->n = n;
+    blk->n = n;
+    blk->two = is_two_body(jr);
+    blk->o0 = jr->o[0];
+    blk->o1 = jr->o[1];
+    blk->J = DX_ARENA_ARRAY(a, qs_v2, 12 * n);
+    blk->M = blk->J + 6 * n;
+    blk->Ainv = DX_ARENA_ARRAY(a, dReal, n * (n + 2));
+    blk->rhs = blk->Ainv + n * n;
+    blk->cfm = blk->rhs + n;
+    memcpy(blk->J, jb->J, sizeof(dReal) * 12 * (size_t)n);
+    memcpy(blk->M, jb->iMJ, sizeof(dReal) * 12 * (size_t)n);
+    memcpy(blk->rhs, rhs, sizeof rhs[0] * (size_t)n);
+    memcpy(blk->cfm, cfm, sizeof cfm[0] * (size_t)n);
+    memcpy(blk->Ainv, Ainv, sizeof Ainv[0] * (size_t)(n * n));
+    return 1;
+}
+
+// The blocks of a joint: its unbounded rows in groups of up to QS_MAX_BLOCK.
+// Rows that end up in a block get their lambda position in pos[] (counting
+// on from *next); the others keep -1. Returns the joint's block if it has
+// exactly one (its build data then in *jb), else NULL.
+static qs_block *make_blocks(dxArena *a, const qs_input *in, const qs_jrows *jr, qs_system *sys,
+                             int *pos, int *next, qs_jblock *jb)
+{
+    const int first_block = sys->nblocks;
+    int idx[QS_MAX_BLOCK], n = 0;
+    for (int i = 0; i <= jr->m; i++) {
+        const int last = i == jr->m;
+        if (!last && is_unbounded(jr, i)) idx[n++] = i;
+        if (n < QS_MAX_BLOCK && !last) continue;
+        qs_block *blk = &sys->blocks[sys->nblocks];
+        if (n >= 2 && fill_block(a, in, jr, idx, n, blk, jb)) {
+            blk->first = *next;
+            blk->coupled = blk->ncoupled = 0;
+            for (int k = 0; k < n; k++) pos[idx[k]] = (*next)++;
+            sys->nblocks++;
+        }
+        n = 0;
+    }
+    return sys->nblocks == first_block + 1 ? &sys->blocks[first_block] : NULL;
+}
+
+// ---- rows --------------------------------------------------------------------
+
+// Couple a row (J, iMJ, diagonal *diag) to the block of its joint (build
+// data jb): with the block's matrix B and its column c = J_B M^-1 J^T,
+// g = -B^-1 c, the diagonal becomes the Schur complement diag - c^T B^-1 c
+// and iMJ gains M^-1 J_B^T g. Returns g (arena), or NULL if the row depends
+// on the block's rows.
+static const dReal *couple_to_block(dxArena *a, const qs_jblock *jb, dReal *iMJ, double *diag)
+{
+    const int n = jb->n;
+    double c[QS_MAX_BLOCK], t[QS_MAX_BLOCK];
+    for (int k = 0; k < n; k++) t[k] = c[k] = dot12(jb->J + 12 * k, iMJ);
+    cholesky_solve(jb->L, n, t);
+    double schur = *diag;
+    for (int k = 0; k < n; k++) schur -= c[k] * t[k];
+    if (!(schur > PIVOT_EPS * *diag)) return NULL;
+    dReal *g = DX_ARENA_ARRAY(a, dReal, n);
+    for (int k = 0; k < n; k++) {
+        g[k] = (dReal)-t[k];
+        for (int e = 0; e < 12; e++) iMJ[e] += g[k] * jb->iMJ[12 * k + e];
+    }
+    *diag = schur;
+    return g;
+}
+
+// The largest finite number: a friction coefficient standing in for an
+// infinite one keeps 0 * coefficient at 0.
+#ifdef dSINGLE
+#define QS_BIG FLT_MAX
+#else
+#define QS_BIG DBL_MAX
+#endif
+
+// Row i of the joint (lambda positions of the joint's rows in pos, the
+// constant 1 at position one): D J and M^-1 J^T as pairs, the scaled rhs and
+// cfm, the bounds. blk, jb: the joint's block to couple to and its build
+// data, or NULL.
+static void fill_row(dxArena *a, const qs_input *in, const qs_jrows *jr, int i, const int *pos,
+                     int one, const qs_block *blk, const qs_jblock *jb, qs_row *q)
+{
+    qs_v2 Jp[6], Mp[6], Rp[6];
+    row_full(jr, i, Jp, Mp, Rp);
+    const dReal rate = pair_dot(Jp, Rp), cfm = jr->cfm[i] * in->fps;
+    double diag = (double)pair_dot(Jp, Mp) + cfm;
+    q->g = NULL;
+    if (jb && diag > 0) {
+        dReal J[12], M[12];
+        memcpy(J, Jp, sizeof J);
+        memcpy(M, Mp, sizeof M);
+        diag = dot12(J, M) + cfm;
+        q->g = couple_to_block(a, jb, M, &diag);
+        memcpy(Mp, M, sizeof M);
+    }
+    q->gn = q->g ? blk->n : 0;
+    q->gfirst = q->g ? blk->first : 0;
+    // A zero diagonal (an empty row without cfm) leaves the row's force at 0.
+    const dReal D = diag > 0 ? (dReal)(in->sor_w / diag) : 0;
+    const qs_v2 d = qs_splat(D);
+    for (int e = 0; e < 6; e++) {
+        q->J[e] = qs_mul(d, Jp[e]);
+        q->M[e] = Mp[e];
+    }
+    q->rhs = (jr->c[i] * in->fps - rate) * D;
+    q->cfm = cfm * D;
+    q->pos = pos[i];
+    q->o0 = jr->o[0];
+    q->o1 = jr->o[1];
+    const int f = jr->findex[i];
+    if (f >= 0) {
+        // Friction: -+|hi| times the normal force (as ODE: lo is not used).
+        q->hi = dFabs(jr->hi[i]) < QS_BIG ? dFabs(jr->hi[i]) : QS_BIG;
+        q->lo = -q->hi;
+        q->f = pos[f];
+    } else {
+        q->lo = jr->lo[i];
+        q->hi = jr->hi[i];
+        q->f = one;
+    }
+}
+
+// The joint's rows outside its blocks (pos[i] < 0 after make_blocks): their
+// lambda positions from *next on, then their rows: first those coupled to
+// the joint's block (blk, if it has one), then the others, which go into
+// sys->order. done: scratch for the joint's rows.
+static void make_rows(dxArena *a, const qs_input *in, const qs_jrows *jr, qs_block *blk,
+                      const qs_jblock *jb, qs_system *sys, int *pos, int *next, char *done)
+{
+    for (int i = 0; i < jr->m; i++) {
+        done[i] = pos[i] >= 0;   // in a block
+        if (pos[i] < 0) pos[i] = (*next)++;
+    }
+    if (blk) {
+        blk->coupled = sys->nrows;
+        for (int i = 0; i < jr->m; i++) {
+            if (done[i]) continue;
+            qs_row *q = &sys->rows[sys->nrows];
+            fill_row(a, in, jr, i, pos, sys->m, blk, jb, q);
+            done[i] = q->g != NULL;
+            sys->nrows += done[i];
+        }
+        blk->ncoupled = sys->nrows - blk->coupled;
+    }
+    for (int i = 0; i < jr->m; i++) {
+        if (done[i]) continue;
+        const qs_row *q = &sys->rows[sys->nrows];
+        fill_row(a, in, jr, i, pos, sys->m, NULL, NULL, &sys->rows[sys->nrows]);
+        sys->row_pos[sys->nrows] = q->pos;
+        sys->row_f[sys->nrows] = q->f;
+        sys->order[sys->norder++] = sys->nrows++;
+    }
+}
+
+// ---- the islands ----------------------------------------------------------------
+
+// Scratch for one joint's rows and their lambda positions.
+struct qs_scratch {
+    qs_jrows jr;
+    int *pos;
+    char *done;
+};
+
+// Keep what the joint's feedback needs: its J and lambda positions.
+static void keep_feedback(dxArena *a, dxJoint *j, const qs_jrows *jr, const int *pos,
+                          qs_system *sys)
+{
+    qs_feedback *fb = &sys->feedback[sys->nfeedback++];
+    dReal *J = DX_ARENA_ARRAY(a, dReal, jr->m * DX_ROW_SKIP);
+    int *p = DX_ARENA_ARRAY(a, int, jr->m);
+    memcpy(J, jr->J, sizeof(dReal) * DX_ROW_SKIP * (size_t)jr->m);
+    memcpy(p, pos, sizeof(int) * (size_t)jr->m);
+    fb->joint = j;
+    fb->J = J;
+    fb->pos = p;
+    fb->m = jr->m;
+}
+
+void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_system *sys)
+{
+    dxArena *a = &w->arena;
+    int m = 0, max_m = 0, nfeedback = 0, nbodies = 0;
+    for (int i = 0; i < count; i++) {
+        const dxIsland *is = &islands[i];
+        nbodies += is->nb + 1;   // and the island's dummy
+        for (int k = 0; k < is->nj; k++) {
+            dxJoint *j = is->joints[k];
+            j->cls->count_rows(j, &j->rows);
+            m += j->rows.m;
+            if (j->rows.m > max_m) max_m = j->rows.m;
+            nfeedback += j->feedback != NULL;
+        }
+    }
+    sys->m = m;
+    sys->nbodies = sys->nblocks = sys->nrows = sys->norder = sys->nfeedback = sys->next = 0;
+    sys->lambda = DX_ARENA_ARRAY(a, dReal, m + 1);
+    sys->fc = DX_ARENA_ARRAY(a, dReal, 6 * (size_t)nbodies);
+    sys->rates = DX_ARENA_ARRAY(a, dReal, 6 * (size_t)nbodies);
+    sys->blocks = DX_ARENA_ARRAY(a, qs_block, m / 2 + 1);
+    sys->bseq = DX_ARENA_ARRAY(a, const qs_block *, m / 2 + 1);
+    sys->rows = DX_ARENA_ARRAY(a, qs_row, m + 1);
+    sys->order = DX_ARENA_ARRAY(a, int, m + 1);
+    sys->seq = DX_ARENA_ARRAY(a, int, m + 1);
+    sys->at = DX_ARENA_ARRAY(a, int, m + 1);
+    sys->row_pos = DX_ARENA_ARRAY(a, int, m + 1);
+    sys->row_f = DX_ARENA_ARRAY(a, int, m + 1);
+    for (int i = 0; i <= m; i++) sys->at[i] = -1;
+    sys->feedback = DX_ARENA_ARRAY(a, qs_feedback, nfeedback + 1);
+    dSetZero(sys->fc, 6 * nbodies);
+    dSetZero(sys->lambda, m);
+    sys->lambda[m] = 1;
+
+    qs_scratch *s = DX_ARENA_ARRAY(a, qs_scratch, 1);
+    s->jr.J = DX_ARENA_ARRAY(a, dReal, (size_t)max_m * DX_ROW_SKIP + 1);
+    s->jr.c = DX_ARENA_ARRAY(a, dReal, max_m + 1);
+    s->jr.cfm = DX_ARENA_ARRAY(a, dReal, max_m + 1);
+    s->jr.lo = DX_ARENA_ARRAY(a, dReal, max_m + 1);
+    s->jr.hi = DX_ARENA_ARRAY(a, dReal, max_m + 1);
+    s->jr.findex = DX_ARENA_ARRAY(a, int, max_m + 1);
+    s->pos = DX_ARENA_ARRAY(a, int, max_m + 1);
+    s->done = DX_ARENA_ARRAY(a, char, max_m + 1);
+    sys->scratch = s;
+}
+
+void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *bd, dReal h,
+                  qs_system *sys, qs_island *part)
+{
+    dxArena *a = &w->arena;
+    qs_scratch *s = sys->scratch;
+    qs_jrows *jr = &s->jr;
+    part->body0 = sys->nbodies;
+    part->block0 = sys->nblocks;
+    part->order0 = sys->norder;
+    sys->nbodies += is->nb + 1;
+    part->nblocks = part->norder = 0;
+    if (is->nj == 0) return;
+    const dReal fps = dRecip(h);
+    dReal *rates = sys->rates + 6 * part->body0;
+    dxIslandBodyRates(is, bd, fps, rates);
+    const qs_input in = { bd, rates, fps, w->qs_w, part->body0, is->nb };
+    for (int k = 0; k < is->nj; k++) {
+        dxJoint *j = is->joints[k];
+        jr->m = j->rows.m;
+        dxJointRowsFill(w, j, h, jr->J, jr->c, jr->cfm, jr->lo, jr->hi, jr->findex, jr->b);
+        if (jr->m == 0) continue;
+        joint_sides(&in, jr);
+        for (int i = 0; i < jr->m; i++) s->pos[i] = -1;
+        qs_jblock jb;
+        qs_block *blk = make_blocks(a, &in, jr, sys, s->pos, &sys->next, &jb);
+        make_rows(a, &in, jr, blk, blk ? &jb : NULL, sys, s->pos, &sys->next, s->done);
+        if (j->feedback) keep_feedback(a, j, jr, s->pos, sys);
+    }
+    part->nblocks = sys->nblocks - part->block0;
+    part->norder = sys->norder - part->order0;
+}
