@@ -2,600 +2,663 @@
 //
 // lcp.c -- the mixed (boxed) LCP solver behind dWorldStep (see lcp.h for the problem).
 //
-// Algorithm: Dantzig-style principal pivoting (Baraff 1994; Cottle, Pang & Stone ch. 4).
-// The unbounded rows are solved first as a linear system. The others are then added one at
-// a time, friction rows last. The rows solved so far are split into a clamped set C (x free
-// between its bounds, w = 0) and held rows N (x at a bound, w of the sign that bound allows).
-// Adding row i "drives" it: x[i] moves in the direction that brings w[i] toward 0, x[C] moves
-// with it so that w[C] stays 0, x[N] stays put. The step stops at the first event: w[i]
-// reaches 0 (i joins C), x[i] reaches a bound (i joins N), some x[C] reaches a bound (it moves
-// to N) or some w[N] reaches 0 (it joins C); then driving goes on in the new direction. As A
-// is positive semi-definite, w[i] only moves toward 0.
+// Algorithm: Dantzig-style principal pivoting (Baraff 1994; Cottle, Pang & Stone ch. 4;
+// lcp_pivot.c) on the bounded rows, after the unbounded ones are eliminated, all of it
+// exploiting the sparsity of A (lcp_sparse.c).
 //
-// A[C][C] is kept as L D L^T, in the order the rows joined C. A joining row borders the
-// factorisation (one forward substitution, O(|C|^2)); a leaving row is cut out and the rows
-// after it get a rank-one update (O(|C|^2)). Each row of L records where its nonzeros start
-// and each row of A its nonzero extent, so that banded or block-sparse problems cost far less
-// than dense ones. x and w are updated step by step and each event sets its variable exactly
-// to the bound or to 0, so x stays within its bounds up to rounding (clamped at the end); a
-// final re-solve of A[C][C] would be no more accurate and, when it is ill-conditioned, would
-// land past bounds.
+// Elimination: the unbounded rows U (the first nub, and any row with infinite bounds and no
+// friction index) always have w = 0, so x[U] = A[U][U]^-1 (b[U] - A[U][B] x[B]) and the other
+// rows B form the LCP of the Schur complement S = A[B][B] - A[B][U] A[U][U]^-1 A[U][B] with
+// right-hand side b[B] - A[B][U] A[U][U]^-1 b[U]. A[U][U] is factored once as L D L^T in
+// reverse breadth-first order, which keeps each connected part of it (the joint rows of one
+// articulated body) together and its factor within a narrow profile. With
+// Q = D^-1/2 L^-1 A[U][B], S = A[B][B] - Q^T Q, where two rows of Q only meet within the
+// parts both touch. The pivoting then works on S alone, far smaller than A when most rows
+// are joint rows. An unbounded row that depends on the others (a pivot that is rounding
+// noise) is left out of the elimination and treated as a bounded row with infinite bounds.
 //
-// Singular A (redundant constraints): a row whose pivot would be rounding noise depends on C.
-// It never joins C; it counts as solved if its w is zero within a loose tolerance, and is
-// held with w = 0 until a change of C lets it join. Rounding can make degenerate rows flip
-// between C and N in zero-length steps; such a row is kept out until C changes otherwise, and
-// each drive has a step limit.
+// Pivoting: the rows of B in interaction order (reverse breadth-first on the pattern of S:
+// rows that interact close together), so that the factor of S[C][C] that the pivoting grows
+// (in the order rows join C) stays sparse within its profile. First the rows without
+// friction alone, for the normal forces all friction bounds come from; then every row, from
+// an empty C and x where the first pass left it. (Small problems skip the reordering and
+// append the friction rows to the first pass instead: it cannot gain there.)
+//
+// Finally x[U] from x[B], then w = A x - b and a check of the conditions over the whole
+// problem.
 
-#include "lcp.h"
+#include "lcp_internal.h"
 
-#include <float.h>
 #include <math.h>
 #include <string.h>
 
-#ifdef dSINGLE
-#define LCP_EPS FLT_EPSILON
-#define DEP_TOL REAL(3.5e-4)   // about sqrt(FLT_EPSILON)
-#else
-#define LCP_EPS DBL_EPSILON
-#define DEP_TOL REAL(1.5e-8)   // about sqrt(DBL_EPSILON)
-#endif
-
-// A pivot of A[C+j][C+j] below PIVOT_TOL * A[j][j] means row j depends on the rows in C. The
-// computed pivot of an exactly dependent row is rounding noise, typically some LCP_EPS *
-// A[j][j] (more when A[C][C] is ill-conditioned). A CFM of 1e-10 on a unit diagonal stays
-// well above the threshold in double precision; in single precision it is below rounding.
-#define PIVOT_TOL ((dReal)(256 * LCP_EPS))
-// A row that depends on C is held as solved only if its |w| is within HOLD_FRACTION of the
-// final tolerance (see row_residual), leaving room for the rounding that later steps add.
-#define HOLD_FRACTION REAL(0.1)
-// A drive gives up after 2 * (rows solved so far) + DRIVE_SLACK changes of C: far more than a
-// drive takes, unless rounding makes it cycle.
-#define DRIVE_SLACK 32
-
-enum {
-    ST_NEW,     // not processed yet: x at its starting value
-    ST_C,       // clamped: w == 0, lo <= x <= hi
-    ST_LO,      // x == lo, w >= 0
-    ST_HI,      // x == hi, w <= 0
-    ST_ZERO,    // lo < x < hi held, w == 0: a row that depends on C
-    ST_FREE,    // held where it is, no condition on w: given up on
-    ST_FIXED    // lo == hi
-};
-
-enum { EV_NONE, EV_DRIVEN_ZERO, EV_DRIVEN_BOUND, EV_C_LO, EV_C_HI, EV_N_ZERO };
-
-typedef struct lcp_event {
-    dReal t;    // step length
-    int kind;   // EV_*
-    int j;      // the index concerned
-} lcp_event;
-
-typedef struct lcp {
-    int n, nub;
-    ptrdiff_t ld;          // row skip of A and of L
-    const dReal *A, *b;
-    dReal *x, *w, *lo, *hi;
-    const int *findex;
-    int *order;            // the processing order; order[0..np) are processed
-    signed char *state;    // ST_* of each index
-    int *first, *end;      // nonzero extent [first, end) of each row of A
-
-    // A[C][C] = L D L^T with C = cidx[0..m) in the order the rows joined. Row k of L holds
-    // columns [lstart[k], k); the entries before lstart[k] are zero, the diagonal is 1.
-    int m;
-    dReal *L, *d, *dinv;
-    int *cidx, *cpos, *lstart;   // cpos[j]: position of j in cidx, -1 if not in C
-
-    dReal *y, *z;          // from c_forward: L y = A[C][j], z = D^-1 y (the new row of L)
-    int yfirst;            // y[k] == 0 for k < yfirst
-    dReal *u;              // the direction: x[cidx[k]] moves by t * u[k]
-    dReal *dw;             // w[j] moves by t * dw[j] for the held rows
-    dReal *dxf;            // the direction scattered to full length (zero between uses)
-    dReal *p, *beta;       // rank-one update scratch
-    unsigned *stamp;       // stamp[j] == version: j was found dependent on the current C
-    unsigned version;      // changes whenever C changes
-} lcp;
-
-// Dot product with four partial sums: the four lanes let the compiler vectorise the loop
-// body (at -O2 GCC only vectorises such straight-line groups, not loops needing an epilogue).
-static dReal dot(const dReal *restrict a, const dReal *restrict b, int n)
-{
-    dReal s0 = 0, s1 = 0, s2 = 0, s3 = 0;
-    int k = 0;
-    for (; k + 4 <= n; k += 4) {
-        s0 += a[k] * b[k];
-        s1 += a[k + 1] * b[k + 1];
-        s2 += a[k + 2] * b[k + 2];
-        s3 += a[k + 3] * b[k + 3];
-    }
-    for (; k < n; k++) s0 += a[k] * b[k];
-    return (s0 + s1) + (s2 + s3);
-}
-
-// a . b, and in *size the sum of |a[k] b[k]| (the scale of the terms, for tolerances).
-static dReal dot_size(const dReal *restrict a, const dReal *restrict b, int n, dReal *size)
-{
-    dReal s0 = 0, s1 = 0, a0 = 0, a1 = 0;
-    int k = 0;
-    for (; k + 2 <= n; k += 2) {
-        dReal t0 = a[k] * b[k], t1 = a[k + 1] * b[k + 1];
-        s0 += t0;
-        s1 += t1;
-        a0 += dFabs(t0);
-        a1 += dFabs(t1);
-    }
-    for (; k < n; k++) {
-        dReal t0 = a[k] * b[k];
-        s0 += t0;
-        a0 += dFabs(t0);
-    }
-    *size = a0 + a1;
-    return s0 + s1;
-}
-
-static const dReal *row_of(const lcp *s, int j) { return s->A + j * s->ld; }
-static dReal *lrow(const lcp *s, int k) { return s->L + k * s->ld; }
-
-// Row j of A times v, over the row's nonzero extent.
-static dReal row_dot(const lcp *s, int j, const dReal *v)
-{
-    int f = s->first[j];
-    return dot(row_of(s, j) + f, v + f, s->end[j] - f);
-}
-
-// A[j] x - b[j], and in *tol the tolerance DEP_TOL * (|b[j]| + sum |A[j][k] x[k]|) within
-// which the final check counts it as zero.
-static dReal row_residual(const lcp *s, int j, dReal *tol)
-{
-    dReal size;
-    int f = s->first[j];
-    dReal r = dot_size(row_of(s, j) + f, s->x + f, s->end[j] - f, &size) - s->b[j];
-    *tol = DEP_TOL * (size + dFabs(s->b[j]));
-    return r;
-}
-
-static dReal lower(const lcp *s, int j) { return j < s->nub ? -dInfinity : s->lo[j]; }
-static dReal upper(const lcp *s, int j) { return j < s->nub ? dInfinity : s->hi[j]; }
+// Up to this many rows of B are pivoted in their given order, the friction rows appended to
+// the first pass: the interaction order would not pay for itself.
+#define ORDER_MIN_ROWS 48
 
 // The start value of an unprocessed x: the point of [lo, hi] nearest 0.
 static dReal clamp_zero(dReal lo, dReal hi) { return lo > 0 ? lo : hi < 0 ? hi : 0; }
 
-// ---- the factorisation of A[C][C] ----
+// ---- the whole problem ----
 
-// Solve L v = v in place, given v[k] == 0 for k < f.
-static void l_solve(const lcp *s, dReal *v, int f)
+// The problem as given, and its split into eliminated rows U and pivoted rows B.
+typedef struct problem {
+    int n, nub;
+    const dReal *dense;    // A in full (row skip dPAD(n)) if given so, else NULL
+    dxLCPMatrix A;         // the nonzeros of A, unless it is small and given in full
+    dxLcpPattern pa;
+    const dReal *b;
+    dReal *x, *w, *lo, *hi;
+    const int *findex;
+    dReal *diag;           // the diagonal of A
+
+    dxLcpFactor fu;        // A[U][U], fu.cidx: the rows of U in elimination order
+    int *upos;             // position of each row in fu.cidx, -1 for a row of B
+    int *fpart;            // connected part of A[U][U] of each position of fu: each part is
+    int *part_end;         // a run of positions, ending at part_end[part]
+    int nparts;
+    int nb;
+    const int *brow;       // the rows of B (original index) in pivoting order
+    const int *normals;    // the places in brow of the rows without friction, in the
+    int nnormal;           // order they are pivoted in first
+} problem;
+
+static int is_friction(const problem *p, int i)
 {
-    for (int k = f; k < s->m; k++) {
-        int st = s->lstart[k] > f ? s->lstart[k] : f;
-        v[k] -= dot(lrow(s, k) + st, v + st, k - st);
+    return i >= p->nub && p->findex && p->findex[i] >= 0;
+}
+
+static int is_unbounded(const problem *p, int i)
+{
+    return i < p->nub || (p->lo[i] == -dInfinity && p->hi[i] == dInfinity && !is_friction(p, i));
+}
+
+static dReal lower(const problem *p, int j) { return j < p->nub ? -dInfinity : p->lo[j]; }
+static dReal upper(const problem *p, int j) { return j < p->nub ? dInfinity : p->hi[j]; }
+
+// Place the entries of row i of A whose columns c have pos[c] >= 0 at y[pos[c]]. Returns the
+// smallest place written (m if none).
+static int scatter_row(const problem *p, int i, const int *pos, dReal *y, int m)
+{
+    int first = m;
+    for (int k = p->A.start[i]; k < p->A.start[i + 1]; k++) {
+        int q = pos[p->A.cols[k]];
+        if (q < 0) continue;
+        y[q] = p->A.vals[k];
+        if (q < first) first = q;
     }
+    return first;
 }
 
-// y -= a x, unrolled like dot.
-static void axpy_sub(dReal *restrict y, const dReal *restrict x, dReal a, int n)
+// ---- eliminating the unbounded rows ----
+
+// The rows of U in interaction order, and the connected part of each (upart).
+static int order_unbounded(problem *p, dxArena *arena, int *u, int *upart)
 {
-    int k = 0;
-    for (; k + 4 <= n; k += 4) {
-        y[k] -= a * x[k];
-        y[k + 1] -= a * x[k + 1];
-        y[k + 2] -= a * x[k + 2];
-        y[k + 3] -= a * x[k + 3];
+    int n = p->n, nu = 0;
+    dxArenaMark mark = dxArenaSave(arena);
+    int *where = DX_ARENA_ARRAY(arena, int, n);
+    for (int i = 0; i < n; i++) {
+        where[i] = -1;
+        if (is_unbounded(p, i)) where[i] = nu, u[nu++] = i;
     }
-    for (; k < n; k++) y[k] -= a * x[k];
-}
-
-// Solve L^T v = v in place (column-oriented, so the inner loop runs along rows of L).
-static void lt_solve(const lcp *s, dReal *v)
-{
-    for (int k = s->m - 1; k > 0; k--) {
-        int st = s->lstart[k];
-        if (v[k] != 0) axpy_sub(v + st, lrow(s, k) + st, v[k], k - st);
+    if (nu > DX_LCP_SMALL) {
+        p->nparts = dxLcpBfsOrder(arena, &p->pa, u, nu, where, upart);
+    } else {   // one part: coarser than needed, but right
+        p->nparts = nu > 0;
+        for (int k = 0; k < nu; k++) upart[k] = 0;
     }
+    dxArenaRestore(arena, mark);
+    return nu;
 }
 
-// Gather a = A[C][j], solve L y = a and set z = D^-1 y. Returns A[j][j] - y.z: the pivot j
-// would get on joining C (the Schur complement of A[C][C]; zero if j depends on C).
-static dReal c_forward(lcp *s, int j)
+// Factor A[U][U] in interaction order; a row that depends on those before it goes to B
+// instead. Fills fu, upos, fpart and part_end.
+static void factor_unbounded(problem *p, dxArena *arena)
 {
-    const dReal *aj = row_of(s, j);
-    int m = s->m, f = m;
-    for (int k = 0; k < m; k++) {
-        s->y[k] = aj[s->cidx[k]];
-        if (s->y[k] != 0 && f == m) f = k;
-    }
-    l_solve(s, s->y, f);
-    for (int k = 0; k < f; k++) s->z[k] = 0;
-    for (int k = f; k < m; k++) s->z[k] = s->y[k] * s->dinv[k];
-    s->yfirst = f;
-    return aj[j] - dot(s->y + f, s->z + f, m - f);
-}
-
-// Append j to C: the new row of L is z from the c_forward(s, j) just done, its pivot `pivot`.
-static void c_add(lcp *s, int j, dReal pivot)
-{
-    int m = s->m, f = s->yfirst;
-    memcpy(lrow(s, m) + f, s->z + f, (size_t)(m - f) * sizeof(dReal));
-    s->lstart[m] = f;
-    s->d[m] = pivot;
-    s->dinv[m] = 1 / pivot;
-    s->cidx[m] = j;
-    s->cpos[j] = m;
-    s->state[j] = ST_C;
-    s->m = m + 1;
-    s->version++;
-}
-
-// Remove position r from C. Cutting row and column r out of L D L^T leaves the rows below
-// with L' D' L'^T = L3 D3 L3^T + d[r] v v^T, v = column r of L below r: a rank-one update,
-// done row by row (Gill, Golub, Murray & Saunders 1974, method C1) while each row is moved
-// up by one and its columns after r left by one.
-static void c_remove(lcp *s, int r)
-{
-    int m = s->m;
-    dReal alpha = s->d[r];
-    s->cpos[s->cidx[r]] = -1;
-    for (int q = r + 1; q < m; q++) {
-        dReal *lq = lrow(s, q), *dst = lrow(s, q - 1);
-        int st = s->lstart[q];
-        dReal v = st <= r ? lq[r] : 0;
-        int from = st > r ? st : r + 1;
-        for (int c = from; c < q; c++) {
-            v -= s->p[c] * lq[c];
-            lq[c] += s->beta[c] * v;
+    int n = p->n;
+    int *u = DX_ARENA_ARRAY(arena, int, n), *upart = DX_ARENA_ARRAY(arena, int, n);
+    int nu = order_unbounded(p, arena, u, upart);
+    dxLcpFactorInit(&p->fu, arena, nu);
+    p->upos = DX_ARENA_ARRAY(arena, int, n);
+    p->fpart = DX_ARENA_ARRAY(arena, int, nu);
+    p->part_end = DX_ARENA_ARRAY(arena, int, p->nparts);
+    for (int i = 0; i < n; i++) p->upos[i] = -1;
+    if (nu == 0) return;
+    dxArenaMark mark = dxArenaSave(arena);
+    dReal *y = DX_ARENA_ARRAY(arena, dReal, nu), *z = DX_ARENA_ARRAY(arena, dReal, nu);
+    memset(y, 0, (size_t)nu * sizeof(dReal));
+    for (int k = 0; k < nu; k++) {
+        int i = u[k], f = scatter_row(p, i, p->upos, y, p->fu.m), e;
+        dReal pivot = dxLcpBorder(&p->fu, p->diag[i], y, z, f, &e);
+        memset(y + f, 0, (size_t)(e - f) * sizeof(dReal));
+        if (pivot > DX_LCP_PIVOT_TOL * dFabs(p->diag[i])) {
+            p->upos[i] = p->fu.m;
+            p->fpart[p->fu.m] = upart[k];
+            dxLcpAppend(&p->fu, i, pivot, z, f, e);
         }
-        dReal dq = s->d[q], dn = dq + alpha * v * v;
-        s->p[q] = v;
-        s->beta[q] = v * alpha / dn;
-        alpha = alpha * dq / dn;
-        if (st < r) memmove(dst + st, lq + st, (size_t)(r - st) * sizeof(dReal));
-        memmove(dst + from - 1, lq + from, (size_t)(q - from) * sizeof(dReal));
-        s->lstart[q - 1] = st <= r ? st : st - 1;
-        s->d[q - 1] = dn;
-        s->dinv[q - 1] = 1 / dn;
-        s->cidx[q - 1] = s->cidx[q];
-        s->cpos[s->cidx[q - 1]] = q - 1;
     }
-    s->m = m - 1;
-    s->version++;
+    dxArenaRestore(arena, mark);
+    for (int c = 0; c < p->nparts; c++) p->part_end[c] = 0;
+    for (int k = 0; k < p->fu.m; k++) p->part_end[p->fpart[k]] = k + 1;
 }
 
-// x[C] = A[C][C]^-1 (b[C] - A[C][rest] x[rest]): the clamped values for the current sets.
-static void c_resolve(lcp *s)
+// The rows of B in their original order and Q = D^-1/2 L^-1 A[U][B], so that S = A[B][B] -
+// Q^T Q. Row j of Q is nonzero in [qf[j], qe[j]), and only within the parts of A[U][U] it
+// touches: there its nonzeros lie in a segment. Two rows of S interact through Q only where
+// their segments in a part overlap.
+typedef struct reduction {
+    int *bidx;             // the rows of B, increasing
+    int *bplace;           // place of each row in bidx, -1 for a row of U
+    dReal *q;
+    ptrdiff_t ldq;
+    int *qf, *qe;
+    int *seg_row, *seg_part, *seg_f, *seg_e;   // segment: row of Q, part, nonzero range
+    int *row_seg;          // the segments of row j: row_seg[j] .. row_seg[j + 1]
+    int *part_seg;         // the segments in part c, by increasing row: part_seg[part_start[c]
+    int *part_start;       // .. part_start[c + 1])
+} reduction;
+
+static const dReal *q_row(const reduction *r, int j) { return r->q + j * r->ldq; }
+
+// Rows of Q: y = L^-1 A[U][j] scaled by D^-1/2.
+static void reduce_rows(const problem *p, dxArena *arena, reduction *r, int nb)
 {
-    int m = s->m;
-    for (int k = 0; k < m; k++) s->x[s->cidx[k]] = 0;
-    for (int k = 0; k < m; k++) {
-        int j = s->cidx[k];
-        s->u[k] = s->b[j] - row_dot(s, j, s->x);
+    const dxLcpFactor *fu = &p->fu;
+    int n = p->n, nu = fu->m;
+    r->bidx = DX_ARENA_ARRAY(arena, int, nb);
+    r->bplace = DX_ARENA_ARRAY(arena, int, n);
+    for (int i = 0, k = 0; i < n; i++) {
+        r->bplace[i] = -1;
+        if (p->upos[i] < 0) r->bplace[i] = k, r->bidx[k++] = i;
     }
-    l_solve(s, s->u, 0);
-    for (int k = 0; k < m; k++) s->u[k] *= s->dinv[k];
-    lt_solve(s, s->u);
-    for (int k = 0; k < m; k++) s->x[s->cidx[k]] = s->u[k];
+    r->ldq = dPAD(nu);
+    r->q = DX_ARENA_ARRAY(arena, dReal, (size_t)nb * (size_t)r->ldq);
+    r->qf = DX_ARENA_ARRAY(arena, int, nb);
+    r->qe = DX_ARENA_ARRAY(arena, int, nb);
+    dxArenaMark mark = dxArenaSave(arena);
+    dReal *z = DX_ARENA_ARRAY(arena, dReal, nu), *sd = DX_ARENA_ARRAY(arena, dReal, nu);
+    for (int k = 0; k < nu; k++) sd[k] = dSqrt(fu->dinv[k]);
+    for (int j = 0; j < nb; j++) {
+        dReal *qj = r->q + j * r->ldq;
+        r->qf[j] = r->qe[j] = 0;
+        if (nu == 0) continue;
+        memset(qj, 0, (size_t)nu * sizeof(dReal));
+        r->qf[j] = scatter_row(p, r->bidx[j], p->upos, qj, nu);
+        dxLcpBorder(fu, 0, qj, z, r->qf[j], &r->qe[j]);
+        for (int k = r->qf[j]; k < r->qe[j]; k++) qj[k] *= sd[k];
+    }
+    dxArenaRestore(arena, mark);
 }
 
-// ---- driving one index ----
-
-// The direction for driving i by sgn: dx[i] = sgn and dx[C] = -sgn A[C][C]^-1 A[C][i] (from
-// the z of the c_forward(s, i) just done), into u by position in C; and the rates dw[j] =
-// A[j] dx of the held rows, whose w must keep its sign (or stay 0).
-static void set_direction(lcp *s, int i, int np, dReal sgn)
+// Split each row of Q into its segments, one per part it touches, and list them by part.
+static void reduce_segments(const problem *p, dxArena *arena, reduction *r, int nb)
 {
-    int m = s->m, jmin = i, jmax = i;   // dx is zero outside [jmin, jmax]
-    dReal *u = s->u;
-    memcpy(u, s->z, (size_t)m * sizeof(dReal));
-    lt_solve(s, u);
-    for (int k = 0; k < m; k++) {
-        int j = s->cidx[k];
-        u[k] *= -sgn;
-        s->dxf[j] = u[k];
-        if (j < jmin) jmin = j;
-        if (j > jmax) jmax = j;
-    }
-    s->dxf[i] = sgn;
-    for (int q = 0; q < np - 1; q++) {
-        int j = s->order[q], st = s->state[j];
-        if (st != ST_LO && st != ST_HI && st != ST_ZERO) continue;
-        int f = s->first[j] > jmin ? s->first[j] : jmin;
-        int e = s->end[j] < jmax + 1 ? s->end[j] : jmax + 1;
-        s->dw[j] = e > f ? dot(row_of(s, j) + f, s->dxf + f, e - f) : 0;
-    }
-    for (int k = 0; k < m; k++) s->dxf[s->cidx[k]] = 0;
-    s->dxf[i] = 0;
-}
-
-static void consider(lcp_event *ev, dReal t, int kind, int j)
-{
-    if (t < ev->t) {
-        ev->t = t;
-        ev->kind = kind;
-        ev->j = j;
-    }
-}
-
-// The first event along the current direction (dwi: the rate of w[i]). The driven index is
-// considered first, so it wins ties.
-static lcp_event next_event(const lcp *s, int i, int np, dReal sgn, dReal dwi)
-{
-    const dReal *x = s->x, *w = s->w;
-    lcp_event ev = { dInfinity, EV_NONE, i };
-    if (dwi != 0) consider(&ev, -w[i] / dwi, EV_DRIVEN_ZERO, i);
-    consider(&ev, sgn > 0 ? s->hi[i] - x[i] : x[i] - s->lo[i], EV_DRIVEN_BOUND, i);
-    for (int k = 0; k < s->m; k++) {
-        int j = s->cidx[k];
-        dReal dx = s->u[k];
-        if (dx < 0) consider(&ev, (lower(s, j) - x[j]) / dx, EV_C_LO, j);
-        else if (dx > 0) consider(&ev, (upper(s, j) - x[j]) / dx, EV_C_HI, j);
-    }
-    for (int q = 0; q < np - 1; q++) {
-        int j = s->order[q], st = s->state[j];
-        if (st != ST_LO && st != ST_HI && st != ST_ZERO) continue;
-        dReal dw = s->dw[j];
-        int wrong = st == ST_LO ? dw < 0 : st == ST_HI ? dw > 0 : dw != 0;
-        if (wrong && s->stamp[j] != s->version) consider(&ev, -w[j] / dw, EV_N_ZERO, j);
-    }
-    if (ev.t < 0) ev.t = 0;   // a value a rounding error past its limit: a zero step
-    return ev;
-}
-
-static void take_step(lcp *s, int i, int np, dReal t, dReal sgn, dReal dwi)
-{
-    for (int k = 0; k < s->m; k++) s->x[s->cidx[k]] += t * s->u[k];
-    s->x[i] += t * sgn;
-    s->w[i] += t * dwi;
-    for (int q = 0; q < np - 1; q++) {
-        int j = s->order[q], st = s->state[j];
-        if (st == ST_LO || st == ST_HI || st == ST_ZERO) s->w[j] += t * s->dw[j];
-    }
-}
-
-// A held row whose w reached 0 (or, for ST_ZERO, would move) joins C, unless it depends on C:
-// then it stays (w == 0) and is not considered again until C changes.
-static void n_to_c(lcp *s, int j)
-{
-    s->w[j] = 0;
-    dReal pivot = c_forward(s, j);
-    if (pivot > PIVOT_TOL * dFabs(row_of(s, j)[j])) c_add(s, j, pivot);
-    else s->stamp[j] = s->version;
-}
-
-// Hold i, which depends on C and has |w[i]| within tolerance: w[i] counts as zero, x[i] stays
-// where it is. Should a change of C make w[i] move, the event test lets i join C then.
-static void hold_dependent(lcp *s, int i)
-{
-    s->w[i] = 0;
-    s->state[i] = s->x[i] == lower(s, i) ? ST_LO : s->x[i] == upper(s, i) ? ST_HI : ST_ZERO;
-}
-
-// Handle an event after the step of the drive of i in direction sgn. Returns 1 if the drive
-// is over.
-static int apply_event(lcp *s, int i, lcp_event ev, dReal sgn)
-{
-    int j = ev.j;
-    switch (ev.kind) {
-    case EV_DRIVEN_ZERO:
-        s->w[i] = 0;
-        c_add(s, i, c_forward(s, i));   // again: n_to_c may have used y and z since
-        return 1;
-    case EV_DRIVEN_BOUND:
-        s->x[i] = sgn > 0 ? s->hi[i] : s->lo[i];
-        s->state[i] = sgn > 0 ? ST_HI : ST_LO;
-        return 1;
-    case EV_C_LO:
-    case EV_C_HI:
-        s->x[j] = ev.kind == EV_C_LO ? s->lo[j] : s->hi[j];
-        s->w[j] = 0;
-        c_remove(s, s->cpos[j]);
-        s->state[j] = ev.kind == EV_C_LO ? ST_LO : ST_HI;
-        return 0;
-    default:
-        n_to_c(s, j);
-        return 0;
-    }
-}
-
-// Follow the direction set up for driving i through the events that leave C as it is (a
-// dependent row reaching w == 0), until the drive ends (returns 1), C changes (returns 0,
-// the event in *last, the distance moved in *moved) or nothing stops it (returns -1).
-static int follow_direction(lcp *s, int i, int np, dReal sgn, dReal dwi, lcp_event *last,
-                            dReal *moved)
-{
-    unsigned version = s->version;
-    *moved = 0;
-    do {
-        *last = next_event(s, i, np, sgn, dwi);
-        if (last->kind == EV_NONE) return -1;
-        take_step(s, i, np, last->t, sgn, dwi);
-        *moved += last->t;
-        if (apply_event(s, i, *last, sgn)) return 1;
-    } while (s->version == version);
-    return 0;
-}
-
-// Solve for index i = order[np - 1]. Returns 0 if it hit the step limit. i is then held
-// (ST_FREE) at a value within its bounds, as when it depends on C and w[i] cannot be brought
-// to 0 by moving x[i]; finish() checks how far from complementary it is.
-static int drive(lcp *s, int i, int np)
-{
-    dReal *x = s->x, *w = s->w, lo = s->lo[i], hi = s->hi[i];
-    if (lo == hi) {
-        x[i] = lo;
-        s->state[i] = ST_FIXED;
-        return 1;
-    }
-    dReal wtol, ptol = PIVOT_TOL * dFabs(row_of(s, i)[i]);
-    w[i] = row_residual(s, i, &wtol);
-    wtol *= HOLD_FRACTION;
-    int joined = -1;   // the row that joined C at the end of the last round
-    for (int round = 0; round <= 2 * np + DRIVE_SLACK; round++) {
-        if (x[i] <= lo && w[i] >= 0) {
-            s->state[i] = ST_LO;
-            return 1;
+    int most = 0;   // parts are runs numbered along fu: a row spans at most this many
+    for (int j = 0; j < nb; j++)
+        if (r->qe[j] > r->qf[j]) most += p->fpart[r->qe[j] - 1] - p->fpart[r->qf[j]] + 1;
+    r->seg_row = DX_ARENA_ARRAY(arena, int, most + 1);
+    r->seg_part = DX_ARENA_ARRAY(arena, int, most + 1);
+    r->seg_f = DX_ARENA_ARRAY(arena, int, most + 1);
+    r->seg_e = DX_ARENA_ARRAY(arena, int, most + 1);
+    r->row_seg = DX_ARENA_ARRAY(arena, int, nb + 1);
+    int ns = 0;
+    for (int j = 0; j < nb; j++) {
+        const dReal *qj = q_row(r, j);
+        r->row_seg[j] = ns;
+        for (int k = r->qf[j]; k < r->qe[j];) {
+            int c = p->fpart[k], pe = p->part_end[c] < r->qe[j] ? p->part_end[c] : r->qe[j];
+            int f = k, e = pe;
+            while (f < pe && qj[f] == 0) f++;
+            while (e > f && qj[e - 1] == 0) e--;
+            if (e > f) {
+                r->seg_row[ns] = j;
+                r->seg_part[ns] = c;
+                r->seg_f[ns] = f;
+                r->seg_e[ns++] = e;
+            }
+            k = pe;
         }
-        if (x[i] >= hi && w[i] <= 0) {
-            s->state[i] = ST_HI;
-            return 1;
-        }
-        dReal pivot = c_forward(s, i);
-        int independent = pivot > ptol;
-        if (w[i] == 0 || (!independent && dFabs(w[i]) <= wtol)) {
-            if (independent) c_add(s, i, pivot);
-            else hold_dependent(s, i);
-            return 1;
-        }
-        // While i depends on C, w[i] cannot change; moving x[i] can still free a row of C.
-        dReal sgn = w[i] < 0 ? 1 : -1;
-        dReal dwi = independent ? sgn * pivot : 0;
-        set_direction(s, i, np, sgn);
-        lcp_event ev;
-        dReal moved;
-        int r = follow_direction(s, i, np, sgn, dwi, &ev, &moved);
-        if (r > 0) return 1;
-        if (r < 0) {   // i depends on C, x[i] could move without bound: leave it to finish()
-            s->state[i] = ST_FREE;
-            return 1;
-        }
-        // A row at a bound with w == 0 that just joined C may leave it again without any
-        // movement: in exact arithmetic it would move off its bound, so its numbers are
-        // rounding noise. Keep it in N until C changes again, or it would flip forever.
-        if (moved == 0 && ev.j == joined && (ev.kind == EV_C_LO || ev.kind == EV_C_HI))
-            s->stamp[ev.j] = s->version;
-        joined = ev.kind == EV_N_ZERO ? ev.j : -1;
     }
-    s->state[i] = ST_FREE;
-    return 0;
+    r->row_seg[nb] = ns;
+    r->part_start = DX_ARENA_ARRAY(arena, int, p->nparts + 1);
+    r->part_seg = DX_ARENA_ARRAY(arena, int, ns + 1);
+    for (int c = 0; c <= p->nparts; c++) r->part_start[c] = 0;
+    for (int t = 0; t < ns; t++) r->part_start[r->seg_part[t] + 1]++;
+    for (int c = 0; c < p->nparts; c++) r->part_start[c + 1] += r->part_start[c];
+    int *fill = DX_ARENA_ARRAY(arena, int, p->nparts + 1);
+    for (int c = 0; c < p->nparts; c++) fill[c] = r->part_start[c];
+    for (int t = 0; t < ns; t++) r->part_seg[fill[r->seg_part[t]]++] = t;
 }
 
-// ---- setup and the driver ----
-
-static void setup(lcp *s, dxArena *arena, int n, int nub)
+static int seg_overlap(const reduction *r, int s, int t, int *f, int *e)
 {
-    s->n = n;
-    s->nub = nub;
-    s->ld = dPAD(n);
-    s->order = DX_ARENA_ARRAY(arena, int, n);
-    s->state = DX_ARENA_ARRAY(arena, signed char, n);
-    s->first = DX_ARENA_ARRAY(arena, int, n);
-    s->end = DX_ARENA_ARRAY(arena, int, n);
-    s->m = 0;
-    s->L = DX_ARENA_ARRAY(arena, dReal, (size_t)n * (size_t)s->ld);
-    s->d = DX_ARENA_ARRAY(arena, dReal, n);
-    s->dinv = DX_ARENA_ARRAY(arena, dReal, n);
-    s->cidx = DX_ARENA_ARRAY(arena, int, n);
-    s->cpos = DX_ARENA_ARRAY(arena, int, n);
-    s->lstart = DX_ARENA_ARRAY(arena, int, n);
-    s->y = DX_ARENA_ARRAY(arena, dReal, n);
-    s->z = DX_ARENA_ARRAY(arena, dReal, n);
-    s->u = DX_ARENA_ARRAY(arena, dReal, n);
-    s->p = DX_ARENA_ARRAY(arena, dReal, n);
-    s->beta = DX_ARENA_ARRAY(arena, dReal, n);
-    s->dxf = DX_ARENA_ARRAY(arena, dReal, n);
-    s->dw = DX_ARENA_ARRAY(arena, dReal, n);
-    s->stamp = DX_ARENA_ARRAY(arena, unsigned, n);
-    s->version = 1;
-    for (int j = 0; j < n; j++) {
-        const dReal *a = row_of(s, j);
-        int f = 0, e = n;
-        while (f < n && a[f] == 0) f++;
-        while (e > f && a[e - 1] == 0) e--;
-        s->first[j] = f;
-        s->end[j] = e;
-        int friction = j >= nub && s->findex && s->findex[j] >= 0;
-        s->x[j] = j < nub || friction ? 0 : clamp_zero(s->lo[j], s->hi[j]);
-        s->state[j] = ST_NEW;
-        s->cpos[j] = -1;
-        s->dxf[j] = 0;
-        s->stamp[j] = 0;
+    *f = r->seg_f[s] > r->seg_f[t] ? r->seg_f[s] : r->seg_f[t];
+    *e = r->seg_e[s] < r->seg_e[t] ? r->seg_e[s] : r->seg_e[t];
+    return *e > *f;
+}
+
+// Every entry (i, j), j <= i, of the pattern of S over B (places in bidx), once: where
+// A[B][B] is nonzero or segments of Q overlap. Counted (add == 0) or added to pb.
+static void s_entries(const problem *p, const reduction *r, int nb, int *mark, int add,
+                      dxLcpPatternBuilder *pb)
+{
+    for (int i = 0; i < nb; i++) mark[i] = -1;
+    for (int i = 0; i < nb; i++) {
+        int bi = r->bidx[i];
+        for (int k = p->pa.start[bi]; k < p->pa.start[bi + 1]; k++) {
+            int j = r->bplace[p->pa.cols[k]];
+            if (j < 0 || j > i || mark[j] == i) continue;
+            mark[j] = i;
+            if (add) dxLcpPatternAdd(pb, i, j);
+            else dxLcpPatternCount(pb, i, j);
+        }
+        for (int s = r->row_seg[i]; s < r->row_seg[i + 1]; s++) {
+            int c = r->seg_part[s], f, e;
+            for (int k = r->part_start[c]; k < r->part_start[c + 1]; k++) {
+                int t = r->part_seg[k], j = r->seg_row[t];
+                if (j > i) break;
+                if (mark[j] == i || !seg_overlap(r, s, t, &f, &e)) continue;
+                mark[j] = i;
+                if (add) dxLcpPatternAdd(pb, i, j);
+                else dxLcpPatternCount(pb, i, j);
+            }
+        }
     }
 }
 
-// The unbounded rows: factor A[nub][nub] by bordering, then solve. A dependent row is held at
-// 0; it is only right if that leaves its w at zero (the system is consistent).
-static void solve_unbounded(lcp *s)
+static dxLcpPattern pattern_of_s(const problem *p, const reduction *r, dxArena *arena, int nb)
 {
-    for (int j = 0; j < s->nub; j++) {
-        s->order[j] = j;
-        dReal pivot = c_forward(s, j);
-        if (pivot > PIVOT_TOL * dFabs(row_of(s, j)[j])) c_add(s, j, pivot);
-        else s->state[j] = ST_FREE;
+    if (nb == p->n) return p->pa;   // nothing eliminated
+    dxLcpPatternBuilder pb;
+    dxLcpPatternBegin(&pb, arena, nb);
+    int *mark = DX_ARENA_ARRAY(arena, int, nb);
+    s_entries(p, r, nb, mark, 0, &pb);
+    dxLcpPatternAllocate(&pb, arena, 0);
+    s_entries(p, r, nb, mark, 1, &pb);
+    dxLcpPattern pt = { pb.start, pb.cols };
+    return pt;
+}
+
+// ---- the pivoted problem ----
+
+// The pivoting orders over B (places in bidx): `all` for every row (interaction order on S),
+// `normals` for the rows without friction (the same order).
+static void pivot_orders(const problem *p, const reduction *r, dxArena *arena, int nb,
+                         const dxLcpPattern *sp, int *all, int *normals, int *nnormal)
+{
+    dxArenaMark mark = dxArenaSave(arena);
+    int *where = DX_ARENA_ARRAY(arena, int, nb);
+    int count = 0;
+    for (int k = 0; k < nb; k++) {
+        all[k] = where[k] = k;
+        if (!is_friction(p, r->bidx[k])) normals[count++] = k;
     }
-    c_resolve(s);
-    for (int j = 0; j < s->nub; j++) {
-        dReal tol;
-        if (s->state[j] != ST_FREE) continue;
-        if (dFabs(row_residual(s, j, &tol)) <= HOLD_FRACTION * tol) hold_dependent(s, j);
+    *nnormal = count;
+    if (nb > ORDER_MIN_ROWS) {   // the rows without friction: in the same order
+        dxLcpBfsOrder(arena, sp, all, nb, where, NULL);
+        count = 0;
+        for (int k = 0; k < nb; k++)
+            if (!is_friction(p, r->bidx[all[k]])) normals[count++] = all[k];
+    }
+    dxArenaRestore(arena, mark);
+}
+
+// The pattern sp of S over B in pivoting order (order: place in bidx of each place in brow;
+// inv: the reverse).
+static dxLcpPattern permuted_pattern(dxArena *arena, const dxLcpPattern *sp, int nb,
+                                     const int *order, const int *inv)
+{
+    int *start = DX_ARENA_ARRAY(arena, int, nb + 1);
+    int *cols = DX_ARENA_ARRAY(arena, int, sp->start[nb] + 1);
+    start[0] = 0;
+    for (int k = 0; k < nb; k++) {
+        int o = order[k], len = sp->start[o + 1] - sp->start[o];
+        for (int e = 0; e < len; e++) cols[start[k] + e] = inv[sp->cols[sp->start[o] + e]];
+        start[k + 1] = start[k] + len;
+    }
+    dxLcpPattern pt = { start, cols };
+    return pt;
+}
+
+// S = A[B][B] - Q^T Q in pivoting order, from the nonzeros of A and the overlapping segments
+// of each part; zero elsewhere within the extent of each row's pattern (the pivoting reads
+// rows over their extent).
+static void schur_complement(const problem *p, const reduction *r, dxArena *arena,
+                             const int *inv, dxLcpPivot *s)
+{
+    int nb = p->nb;
+    ptrdiff_t ld = s->lda = dPAD(nb);
+    dReal *S = DX_ARENA_ARRAY(arena, dReal, (size_t)nb * (size_t)ld);
+    for (int k = 0; k < nb; k++) {
+        int f = nb, e = 0;
+        for (int t = s->pa.start[k]; t < s->pa.start[k + 1]; t++) {
+            if (s->pa.cols[t] < f) f = s->pa.cols[t];
+            if (s->pa.cols[t] >= e) e = s->pa.cols[t] + 1;
+        }
+        if (e > f) memset(S + k * ld + f, 0, (size_t)(e - f) * sizeof(dReal));
+    }
+    for (int i = 0; i < nb; i++) {
+        int bi = r->bidx[i];
+        dReal *si = S + inv[i] * ld;
+        for (int k = p->A.start[bi]; k < p->A.start[bi + 1]; k++) {
+            int j = r->bplace[p->A.cols[k]];
+            if (j >= 0) si[inv[j]] = p->A.vals[k];
+        }
+    }
+    for (int c = 0; c < p->nparts; c++) {
+        for (int a = r->part_start[c]; a < r->part_start[c + 1]; a++) {
+            int sa = r->part_seg[a], ia = inv[r->seg_row[sa]];
+            const dReal *qa = q_row(r, r->seg_row[sa]);
+            for (int b = a; b < r->part_start[c + 1]; b++) {
+                int sb = r->part_seg[b], ib = inv[r->seg_row[sb]], f, e;
+                if (!seg_overlap(r, sa, sb, &f, &e)) continue;
+                dReal v = dxLcpDot(qa + f, q_row(r, r->seg_row[sb]) + f, e - f);
+                S[ia * ld + ib] -= v;
+                if (ib != ia) S[ib * ld + ia] -= v;
+            }
+        }
+    }
+    s->A = S;
+}
+
+// The right-hand side of the pivoted problem, b[B] - Q^T g with g = D^-1/2 L^-1 b[U], the
+// scale |b| + sum |q g| of what the elimination subtracted (tolerances), the diagonal of A,
+// the bounds and the start values, in pivoting order (order: place in r's bidx).
+static void right_hand_side(const problem *p, const reduction *r, dxArena *arena,
+                            const int *order, dxLcpPivot *s)
+{
+    const dxLcpFactor *fu = &p->fu;
+    int nu = fu->m, nb = p->nb;
+    dReal *b = DX_ARENA_ARRAY(arena, dReal, nb), *base = DX_ARENA_ARRAY(arena, dReal, nb);
+    dReal *diag = DX_ARENA_ARRAY(arena, dReal, nb);
+    s->x = DX_ARENA_ARRAY(arena, dReal, nb);
+    s->w = DX_ARENA_ARRAY(arena, dReal, nb);
+    s->lo = DX_ARENA_ARRAY(arena, dReal, nb);
+    s->hi = DX_ARENA_ARRAY(arena, dReal, nb);
+    dxArenaMark mark = dxArenaSave(arena);
+    dReal *g = DX_ARENA_ARRAY(arena, dReal, nu);
+    int gf = nu;
+    for (int k = 0; k < nu; k++) {
+        g[k] = p->b[fu->cidx[k]];
+        if (g[k] != 0 && gf == nu) gf = k;
+    }
+    int ge = dxLcpSolveL(fu, g, gf);
+    for (int k = gf; k < ge; k++) g[k] *= dSqrt(fu->dinv[k]);
+    for (int k = 0; k < nb; k++) {
+        int o = order[k], i = p->brow[k];
+        int f = r->qf[o] > gf ? r->qf[o] : gf, e = r->qe[o] < ge ? r->qe[o] : ge;
+        dReal size = 0, c = e > f ? dxLcpDotSize(q_row(r, o) + f, g + f, e - f, &size) : 0;
+        b[k] = p->b[i] - c;
+        base[k] = dFabs(p->b[i]) + size;
+        diag[k] = p->diag[i];
+        s->lo[k] = lower(p, i);
+        s->hi[k] = upper(p, i);
+        s->x[k] = is_friction(p, i) ? 0 : clamp_zero(s->lo[k], s->hi[k]);
+    }
+    dxArenaRestore(arena, mark);
+    s->b = b;
+    s->base = base;
+    s->diag = diag;
+}
+
+// The pivoted problem in pivoting order (row k is row brow[k] of A): S, its pattern, its
+// right-hand side and bounds.
+static void pivoted_problem(problem *p, dxArena *arena, dxLcpPivot *s)
+{
+    int n = p->n, nb = n - p->fu.m;
+    reduction r;
+    reduce_rows(p, arena, &r, nb);
+    reduce_segments(p, arena, &r, nb);
+    dxLcpPattern sp = pattern_of_s(p, &r, arena, nb);
+    int *order = DX_ARENA_ARRAY(arena, int, nb), *normals = DX_ARENA_ARRAY(arena, int, nb);
+    pivot_orders(p, &r, arena, nb, &sp, order, normals, &p->nnormal);
+    p->nb = nb;
+    int *brow = DX_ARENA_ARRAY(arena, int, nb);
+    int *inv = DX_ARENA_ARRAY(arena, int, nb);   // place in bidx -> place in brow
+    for (int k = 0; k < nb; k++) {
+        brow[k] = r.bidx[order[k]];
+        inv[order[k]] = k;
+    }
+    for (int k = 0; k < p->nnormal; k++) normals[k] = inv[normals[k]];
+    p->brow = brow;
+    p->normals = normals;
+    s->pa = nb > ORDER_MIN_ROWS ? permuted_pattern(arena, &sp, nb, order, inv) : sp;
+    schur_complement(p, &r, arena, inv, s);
+    right_hand_side(p, &r, arena, order, s);
+}
+
+// A small problem: every row pivoted, in the given order, on A in full (elimination,
+// reordering and sparsity cannot gain there; the unbounded rows are driven like the others).
+static void small_problem(problem *p, dxArena *arena, dxLcpPivot *s)
+{
+    int n = p->n;
+    size_t ld = (size_t)dPAD(n), full = p->dense ? 0 : (size_t)n * ld;
+    dReal *r = dxArenaAlloc(arena, (full + 5 * (size_t)n) * sizeof(dReal) +
+                                       2 * (size_t)n * sizeof(int));
+    int *rows = (int *)(void *)(r + full + 5 * (size_t)n), *normals = rows + n;
+    if (!p->dense) {
+        memset(r, 0, full * sizeof(dReal));
+        for (int i = 0; i < n; i++)
+            for (int k = p->A.start[i]; k < p->A.start[i + 1]; k++)
+                r[i * ld + (size_t)p->A.cols[k]] = p->A.vals[k];
+    }
+    s->A = p->dense ? p->dense : r;
+    s->lda = (ptrdiff_t)ld;
+    r += full;
+    dReal *base = r;
+    s->x = r + n;
+    s->w = r + 2 * n;
+    s->lo = r + 3 * n;
+    s->hi = r + 4 * n;
+    p->nnormal = 0;
+    for (int i = 0; i < n; i++) {
+        rows[i] = i;
+        base[i] = dFabs(p->b[i]);
+        s->lo[i] = lower(p, i);
+        s->hi[i] = upper(p, i);
+        s->x[i] = is_friction(p, i) ? 0 : clamp_zero(s->lo[i], s->hi[i]);
+        if (!is_friction(p, i)) normals[p->nnormal++] = i;
+    }
+    p->nb = n;
+    p->brow = rows;
+    p->normals = normals;
+    s->pa.start = s->pa.cols = NULL;
+    s->b = p->b;
+    s->base = base;
+    s->diag = p->diag;
+}
+
+// x[U] = A[U][U]^-1 (b[U] - A[U][B] x[B]), with x[B] already in place.
+static void recover_unbounded(problem *p, dxArena *arena)
+{
+    const dxLcpFactor *fu = &p->fu;
+    int nu = fu->m;
+    if (nu == 0) return;
+    dxArenaMark mark = dxArenaSave(arena);
+    dReal *v = DX_ARENA_ARRAY(arena, dReal, nu);
+    int first = nu;
+    for (int k = 0; k < nu; k++) {
+        int i = fu->cidx[k];
+        dReal r = p->b[i];
+        for (int e = p->A.start[i]; e < p->A.start[i + 1]; e++) {
+            int c = p->A.cols[e];
+            if (p->upos[c] < 0) r -= p->A.vals[e] * p->x[c];
+        }
+        v[k] = r;
+        if (r != 0 && first == nu) first = k;
+    }
+    int e = dxLcpSolveL(fu, v, first);
+    for (int k = first; k < e; k++) v[k] *= fu->dinv[k];
+    dxLcpSolveLT(fu, v, e);
+    for (int k = 0; k < nu; k++) p->x[fu->cidx[k]] = v[k];
+    dxArenaRestore(arena, mark);
+}
+
+// ---- the driver ----
+
+// x of the pivoted rows into the caller's x.
+static void publish(problem *p, const dxLcpPivot *s)
+{
+    for (int k = 0; k < p->nb; k++) p->x[p->brow[k]] = s->x[k];
+}
+
+// Before the friction rows: their bounds from the normal forces, with the unbounded rows
+// recovered first if a friction row takes its bound from one of them.
+static void set_friction_bounds(problem *p, dxLcpPivot *s, dxArena *arena)
+{
+    publish(p, s);
+    int need_u = 0;
+    for (int k = 0; k < p->nb; k++) {
+        int i = p->brow[k];
+        if (is_friction(p, i) && p->fu.m > 0 && p->upos[p->findex[i]] >= 0) need_u = 1;
+    }
+    if (need_u) recover_unbounded(p, arena);
+    for (int k = 0; k < p->nb; k++) {
+        int i = p->brow[k];
+        if (!is_friction(p, i)) continue;
+        dReal xn = p->x[p->findex[i]];
+        dReal h = xn == 0 ? 0 : dFabs(p->hi[i] * xn);   // no 0 * inf
+        p->lo[i] = s->lo[k] = -h;
+        p->hi[i] = s->hi[k] = h;
     }
 }
 
-static void set_friction_bounds(lcp *s, int i)
+// Drive the rows rows[0..count) (NULL: 0..count) that are not processed yet, in turn,
+// counting on from np processed rows. Returns 0 if a drive gave up.
+static int drive_rows(dxLcpPivot *s, const int *rows, int count, int np)
 {
-    dReal xn = s->x[s->findex[i]];
-    dReal h = xn == 0 ? 0 : dFabs(s->hi[i] * xn);   // no 0 * inf
-    s->lo[i] = -h;
-    s->hi[i] = h;
+    int ok = 1;
+    for (int c = 0; c < count; c++) {
+        int i = rows ? rows[c] : c;
+        if (!dxLcpPivotProcessed(s, i)) ok &= dxLcpPivotDrive(s, i, ++np);
+    }
+    return ok;
+}
+
+// Pivot on the rows of B. First the rows without friction, for the frictionless solution
+// that all friction bounds come from, before any friction row moves load between contacts
+// (the friction of a sliding body is then mu times its whole normal load). Then every row,
+// again from an empty C with x where the first pass left it: adding the friction rows to the
+// end of that pass's factor would spread its nonzeros over whole rows, while in one
+// interaction order of all rows it stays sparse within its profile. A small problem just
+// goes on with the friction rows. Returns 0 if a drive gave up.
+static int pivot_all(problem *p, dxLcpPivot *s, dxArena *arena)
+{
+    int ok = drive_rows(s, p->normals, p->nnormal, 0), np = p->nnormal;
+    if (np == p->nb) return ok;
+    set_friction_bounds(p, s, arena);
+    if (p->nb > ORDER_MIN_ROWS) {
+        dxLcpPivotRestart(s);
+        np = 0;
+    }
+    return ok & drive_rows(s, NULL, p->nb, np);
 }
 
 // Clamp x to its bounds (a clamped x may have rounded past one), replace anything not finite,
-// set w = A x - b, and check the conditions to the loose tolerance of row_residual.
-// Returns 0 if something had to be replaced or a condition does not hold.
-static int finish(lcp *s)
+// set w = A x - b, and check the conditions to a loose tolerance: DX_LCP_DEP_TOL * (|b[j]| +
+// sum |A[j][k] x[k]|), plus a floor. Returns 0 if something had to be replaced or a
+// condition does not hold.
+static int finish(problem *p, dReal *tol)
 {
-    int ok = 1;
-    for (int j = 0; j < s->n; j++) {
-        dReal lo = lower(s, j), hi = upper(s, j), v = s->x[j];
+    int ok = 1, n = p->n;
+    for (int j = 0; j < n; j++) {
+        dReal lo = lower(p, j), hi = upper(p, j), v = p->x[j];
         if (v < lo) v = lo;
         if (v > hi) v = hi;
         if (!isfinite(v)) {
             v = clamp_zero(lo, hi);
             ok = 0;
         }
-        s->x[j] = v;
+        p->x[j] = v;
     }
     // A row whose own terms are tiny (x and b near 0) still carries the rounding
     // of the whole solve: its tolerance has a floor relative to the largest row.
     dReal largest = 0;
-    for (int j = 0; j < s->n; j++) {
-        dReal tol;
-        s->w[j] = row_residual(s, j, &tol);
-        if (tol > largest) largest = tol;
+    for (int j = 0; j < n; j++) {
+        dReal r = 0, size = 0;
+        if (p->dense) {
+            for (int k = 0; k < n; k++) {
+                dReal t = p->dense[j * dPAD(n) + k] * p->x[k];
+                r += t;
+                size += dFabs(t);
+            }
+        } else {
+            for (int k = p->A.start[j]; k < p->A.start[j + 1]; k++) {
+                dReal t = p->A.vals[k] * p->x[p->A.cols[k]];
+                r += t;
+                size += dFabs(t);
+            }
+        }
+        p->w[j] = r - p->b[j];
+        tol[j] = DX_LCP_DEP_TOL * (size + dFabs(p->b[j]));
+        if (tol[j] > largest) largest = tol[j];
     }
     const dReal floor_tol = largest * REAL(1e-3);
-    for (int j = 0; j < s->n; j++) {
-        dReal tol, w = row_residual(s, j, &tol), x = s->x[j];
-        tol += floor_tol;
-        int off_lo = x > lower(s, j), off_hi = x < upper(s, j);
-        if (s->state[j] != ST_FIXED && ((w > tol && off_lo) || (w < -tol && off_hi))) ok = 0;
+    for (int j = 0; j < n; j++) {
+        dReal t = tol[j] + floor_tol, w = p->w[j], x = p->x[j];
+        int off_lo = x > lower(p, j), off_hi = x < upper(p, j);
+        if (lower(p, j) != upper(p, j) && ((w > t && off_lo) || (w < -t && off_hi))) ok = 0;
     }
     return ok;
 }
 
-int dxSolveLCP(dxArena *arena, int n, dReal *A, dReal *x, dReal *b, dReal *w, int nub,
-               dReal *lo, dReal *hi, const int *findex)
+// The problem as set up by the two entry points.
+static int solve(problem *p, dxArena *arena)
+{
+    int n = p->n;
+    p->diag = DX_ARENA_ARRAY(arena, dReal, 2 * (size_t)n);   // and the tolerances of finish
+    for (int i = 0; i < n; i++) {
+        if (p->dense) {
+            p->diag[i] = p->dense[i * dPAD(n) + i];
+            continue;
+        }
+        p->diag[i] = 0;
+        for (int k = p->A.start[i]; k < p->A.start[i + 1]; k++)
+            if (p->A.cols[k] == i) p->diag[i] = p->A.vals[k];
+    }
+    int ok = 1;
+    p->fu.m = 0;
+    if (n > DX_LCP_SMALL) factor_unbounded(p, arena);
+    if (p->fu.m < n) {
+        dxLcpPivot s;
+        if (n <= DX_LCP_SMALL) small_problem(p, arena, &s);
+        else pivoted_problem(p, arena, &s);
+        dxLcpPivotSetup(&s, arena, p->nb);
+        ok = pivot_all(p, &s, arena);
+        publish(p, &s);
+    }
+    recover_unbounded(p, arena);
+    return ok & finish(p, p->diag + n);
+}
+
+int dxSolveLCPSparse(dxArena *arena, int n, const dxLCPMatrix *A, dReal *x, const dReal *b,
+                     dReal *w, int nub, dReal *lo, dReal *hi, const int *findex)
 {
     if (n <= 0) return 1;
-    if (nub > n) nub = n;
-    if (nub < 0) nub = 0;
     dxArenaMark mark = dxArenaSave(arena);
-    lcp s = { .A = A, .b = b, .x = x, .w = w, .lo = lo, .hi = hi, .findex = findex };
-    setup(&s, arena, n, nub);
-    solve_unbounded(&s);
-    int ok = 1, np = nub;
-    for (int pass = 0; pass < 2; pass++) {   // rows without friction, then friction rows
-        // Every friction bound comes from the normal forces of the frictionless
-        // solution, before any friction row moves load between contacts: the
-        // friction of a sliding body is then mu times its whole normal load.
-        if (pass == 1 && findex)
-            for (int i = nub; i < n; i++)
-                if (findex[i] >= 0) set_friction_bounds(&s, i);
-        for (int i = nub; i < n; i++) {
-            int friction = findex && findex[i] >= 0;
-            if (friction != pass) continue;
-            s.order[np++] = i;
-            ok &= drive(&s, i, np);
-        }
+    problem p = { .n = n, .nub = nub < 0 ? 0 : nub > n ? n : nub, .A = *A,
+                  .pa = dxLcpPatternOfMatrix(A), .b = b, .x = x, .w = w, .lo = lo, .hi = hi,
+                  .findex = findex };
+    int ok = solve(&p, arena);
+    dxArenaRestore(arena, mark);
+    return ok;
+}
+
+int dxSolveLCP(dxArena *arena, int n, const dReal *A, dReal *x, const dReal *b, dReal *w,
+               int nub, dReal *lo, dReal *hi, const int *findex)
+{
+    if (n <= 0) return 1;
+    dxArenaMark mark = dxArenaSave(arena);
+    problem p = { .n = n, .nub = nub < 0 ? 0 : nub > n ? n : nub, .b = b, .x = x, .w = w,
+                  .lo = lo, .hi = hi, .findex = findex };
+    if (n <= DX_LCP_SMALL) {
+        p.dense = A;
+    } else {
+        p.A = dxLcpSparseOf(arena, A, dPAD(n), n);
+        p.pa = dxLcpPatternOfMatrix(&p.A);
     }
-    ok &= finish(&s);
+    int ok = solve(&p, arena);
     dxArenaRestore(arena, mark);
     return ok;
 }

@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
-// step.c -- dWorldStep: the "big matrix" stepper. Per island, with the
-// constraint rows J, right-hand sides c and mixing terms cfm of every joint,
-// it forms A = J M^-1 J^T + cfm/h (dense, O(m^2) memory) and solves the mixed
-// LCP  A lambda = c/h - J (v/h + M^-1 f) + w  (lambda the constraint forces,
-// bounded by lo/hi and friction indices) with the pivoting solver of lcp.c,
-// then updates velocities with the external and constraint forces and
-// integrates positions.
+// step.c -- dWorldStep: the "big matrix" stepper. Per island, with the constraint rows J,
+// right-hand sides c and mixing terms cfm of every joint, it forms A = J M^-1 J^T + cfm/h
+// (its nonzeros, from the rows that share a body; in full for a small island) and solves
+// the mixed LCP  A lambda = c/h - J (v/h + M^-1 f) + w  (lambda the constraint forces,
+// bounded by lo/hi and friction indices) with the solver of lcp.c, then updates velocities
+// with the external and constraint forces and integrates positions.
 
-#include "lcp.h"
+#include "lcp_internal.h"
 #include "step_internal.h"
 
 #include <ode/matrix.h>
@@ -60,27 +59,82 @@ static dReal *inverse_mass_times_jt(dxArena *a, const dxIslandRows *r,
     return iMJ;
 }
 
-// A = J M^-1 J^T + cfm/h on the diagonal; row skip dPAD(m).
-static dReal *form_A(dxArena *a, const dxIslandRows *r, const body_rows *br, int nb,
-                     const dReal *iMJ, dReal fps)
+// Row i of J M^-1 J^T up to the diagonal (iMJ = M^-1 J^T): the rows j <= i that share a body
+// with it go to `touched` (returned: their count; mark[j] == i), and, if acc is not NULL,
+// acc[j] receives the sum over the shared bodies of J_i M^-1 J_j^T for that body. The rows
+// of a body are listed in increasing order.
+static int a_row(const dxIslandRows *r, const body_rows *br, const dReal *iMJ, int i,
+                 int *mark, int *touched, dReal *acc)
+{
+    int count = 0;
+    for (int si = 0; si < 2; si++) {
+        int b = si ? r->body1[i] : r->body0[i];
+        if (b < 0) continue;
+        const dReal *Ji = r->J + i * DX_ROW_SKIP + 6 * si;
+        for (int p = br->start[b]; p < br->start[b + 1]; p++) {
+            int j = br->entries[p] >> 1;
+            if (j > i) break;
+            if (mark[j] != i) {
+                mark[j] = i;
+                touched[count++] = j;
+                if (acc) acc[j] = 0;
+            }
+            if (!acc) continue;
+            const dReal *Mj = iMJ + j * DX_ROW_SKIP + 6 * (br->entries[p] & 1);
+            acc[j] += Ji[0] * Mj[0] + Ji[1] * Mj[1] + Ji[2] * Mj[2] + Ji[3] * Mj[3] +
+                      Ji[4] * Mj[4] + Ji[5] * Mj[5];
+        }
+    }
+    if (mark[i] != i) {   // a row without bodies still has its diagonal
+        mark[i] = i;
+        touched[count++] = i;
+        if (acc) acc[i] = 0;
+    }
+    return count;
+}
+
+// A = J M^-1 J^T + cfm/h on the diagonal in full (row skip dPAD(m)), exactly symmetric: for
+// a small island.
+static dReal *form_A_full(dxArena *a, const dxIslandRows *r, const body_rows *br,
+                          const dReal *iMJ, dReal fps)
 {
     const int m = r->m, skip = dPAD(m);
     dReal *A = DX_ARENA_ARRAY(a, dReal, (size_t)m * skip);
+    int *mark = DX_ARENA_ARRAY(a, int, m), *touched = DX_ARENA_ARRAY(a, int, m);
     dSetZero(A, m * skip);
-    for (int b = 0; b < nb; b++) {
-        for (int p = br->start[b]; p < br->start[b + 1]; p++) {
-            int i = br->entries[p] >> 1, si = br->entries[p] & 1;
-            const dReal *Ji = r->J + i * DX_ROW_SKIP + 6 * si;
-            dReal *Arow = A + (size_t)i * skip;
-            for (int q = br->start[b]; q < br->start[b + 1]; q++) {
-                int j = br->entries[q] >> 1, sj = br->entries[q] & 1;
-                const dReal *Mj = iMJ + j * DX_ROW_SKIP + 6 * sj;
-                Arow[j] += Ji[0] * Mj[0] + Ji[1] * Mj[1] + Ji[2] * Mj[2] + Ji[3] * Mj[3] +
-                           Ji[4] * Mj[4] + Ji[5] * Mj[5];
-            }
-        }
+    for (int i = 0; i < m; i++) mark[i] = -1;
+    for (int i = 0; i < m; i++) {
+        dReal *Ai = A + (size_t)i * skip;
+        a_row(r, br, iMJ, i, mark, touched, Ai);
+        Ai[i] += r->cfm[i] * fps;
+        for (int j = 0; j < i; j++) A[(size_t)j * skip + i] = Ai[j];
     }
-    for (int i = 0; i < m; i++) A[(size_t)i * skip + i] += r->cfm[i] * fps;
+    return A;
+}
+
+// A = J M^-1 J^T + cfm/h on the diagonal, as its nonzeros (exactly symmetric): the entries
+// of rows that share a body.
+static dxLCPMatrix form_A(dxArena *a, const dxIslandRows *r, const body_rows *br,
+                          const dReal *iMJ, dReal fps)
+{
+    const int m = r->m;
+    int *mark = DX_ARENA_ARRAY(a, int, m), *touched = DX_ARENA_ARRAY(a, int, m);
+    dReal *acc = DX_ARENA_ARRAY(a, dReal, m);
+    dxLcpPatternBuilder pb;
+    dxLcpPatternBegin(&pb, a, m);
+    for (int i = 0; i < m; i++) mark[i] = -1;
+    for (int i = 0; i < m; i++) {
+        int count = a_row(r, br, iMJ, i, mark, touched, NULL);
+        for (int t = 0; t < count; t++) dxLcpPatternCount(&pb, i, touched[t]);
+    }
+    dxLcpPatternAllocate(&pb, a, 1);
+    for (int i = 0; i < m; i++) mark[i] = -1;
+    for (int i = 0; i < m; i++) {
+        int count = a_row(r, br, iMJ, i, mark, touched, acc);
+        acc[i] += r->cfm[i] * fps;
+        for (int t = 0; t < count; t++) dxLcpPatternAddValue(&pb, i, touched[t], acc[touched[t]]);
+    }
+    dxLCPMatrix A = { pb.start, pb.cols, pb.vals };
     return A;
 }
 
@@ -89,13 +143,7 @@ static dReal *form_rhs(dxArena *a, const dxIsland *is, const dxIslandBodies *bd,
                        const dxIslandRows *r, dReal fps)
 {
     dReal *tmp = DX_ARENA_ARRAY(a, dReal, 6 * is->nb);
-    for (int b = 0; b < is->nb; b++) {
-        const struct dxBody *body = is->bodies[b];
-        dReal *t = tmp + 6 * b;
-        dAddScaledVectors3(t, body->lvel, body->force, fps, bd->inv_mass[b]);
-        dMultiply0_331(t + 3, bd->inv_inertia + 12 * b, body->torque);
-        dAddVectorScaledVector3(t + 3, t + 3, body->avel, fps);
-    }
+    dxIslandBodyRates(is, bd, fps, tmp);
     dReal *rhs = DX_ARENA_ARRAY(a, dReal, r->m);
     for (int i = 0; i < r->m; i++) {
         const dReal *J = r->J + i * DX_ROW_SKIP;
@@ -121,10 +169,17 @@ static void solve_big_matrix(struct dxWorld *w, const dxIsland *is, const dxIsla
     body_rows br;
     index_rows_by_body(a, r, is->nb, &br);
     dReal *iMJ = inverse_mass_times_jt(a, r, bd);
-    dReal *A = form_A(a, r, &br, is->nb, iMJ, fps);
     dReal *rhs = form_rhs(a, is, bd, r, fps);
     dReal *wout = DX_ARENA_ARRAY(a, dReal, r->m);
-    if (!dxSolveLCP(a, r->m, A, lambda, rhs, wout, 0, r->lo, r->hi, r->findex))
+    int ok;
+    if (r->m <= DX_LCP_SMALL) {
+        dReal *A = form_A_full(a, r, &br, iMJ, fps);
+        ok = dxSolveLCP(a, r->m, A, lambda, rhs, wout, 0, r->lo, r->hi, r->findex);
+    } else {
+        dxLCPMatrix A = form_A(a, r, &br, iMJ, fps);
+        ok = dxSolveLCPSparse(a, r->m, &A, lambda, rhs, wout, 0, r->lo, r->hi, r->findex);
+    }
+    if (!ok)
         dMessage(d_ERR_LCP, "dWorldStep: the LCP solver did not converge (%d rows); "
                  "using its best approximation", r->m);
 }

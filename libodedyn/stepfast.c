@@ -31,6 +31,23 @@
 
 #include <ode/matrix.h>
 
+// The rows of one joint and the local system built from them, in scratch that every joint
+// solve of the step reuses (grown, rarely, for a joint with more rows than any before).
+typedef struct joint_system {
+    int cap;         // rows the scratch holds
+    int m;
+    int index[2];    // island index of each side, -1 if the side does not move here
+    dReal *J;        // m x 12: [J1l J1a J2l J2a]
+    dReal *c, *cfm, *lo, *hi;
+    int *findex;     // relative to the joint's first row, as fill_rows writes it
+    dReal *iMJ;      // m x 12: M^-1 J^T per row, zero for a side that does not move
+    dReal *A;        // m x m, row skip dPAD(m): J M^-1 J^T + cfm/s
+    dReal *rhs, *lambda, *w;
+} joint_system;
+
+// Most rows a joint of this library has; the scratch grows for more.
+#define JOINT_ROWS 6
+
 // Everything one step works on. `all` holds every enabled dynamic body (one
 // island after another, in walk order) and every enabled joint touching them;
 // a joint's other body may be kinematic (moves by its own velocity) or
@@ -46,6 +63,7 @@ typedef struct sf1_step {
     dReal rows_fps;               // 1 / h, for the joints' rows
     int last;                     // the sub-step is the last one of the step
     int lcp_failures;
+    joint_system js;              // scratch for one joint's solve
 } sf1_step;
 
 // Guide 8.4: enabled bodies wake the disabled bodies within `depth` joint hops
@@ -137,15 +155,24 @@ static void apply_external_forces(const sf1_step *st)
     }
 }
 
-// The rows of one joint and the local system built from them.
-typedef struct joint_system {
-    int m;
-    int index[2];    // island index of each side, -1 if the side does not move here
-    dReal *J;        // m x 12: [J1l J1a J2l J2a]
-    dReal *c, *cfm, *lo, *hi;
-    int *findex;     // relative to the joint's first row, as fill_rows writes it
-    dReal *iMJ;      // m x 12: M^-1 J^T per row, zero for a side that does not move
-} joint_system;
+static void joint_system_reserve(dxArena *a, joint_system *js, int m)
+{
+    if (m <= js->cap) return;
+    js->cap = m;
+    dReal *r = DX_ARENA_ARRAY(a, dReal, 36 * (size_t)m + (size_t)m * dPAD(m));
+    js->J = r;
+    js->iMJ = r + 12 * m;
+    js->A = r + 24 * m;
+    r += 24 * m + (size_t)m * dPAD(m);
+    js->c = r;
+    js->cfm = r + m;
+    js->lo = r + 2 * m;
+    js->hi = r + 3 * m;
+    js->rhs = r + 4 * m;
+    js->lambda = r + 5 * m;
+    js->w = r + 6 * m;
+    js->findex = DX_ARENA_ARRAY(a, int, m);
+}
 
 // Island index of a joint's body k, or -1 when it does not move in the solve:
 // the static world, a kinematic body (moves by itself) or a disabled body.
@@ -172,15 +199,9 @@ static void add_joint_impulse(const sf1_step *st, const dxJoint *j, const dReal 
 
 // Ask the joint for its rows at the current poses (fps = 1/h), and move the
 // known velocity of a kinematic body into c, as dxRowsBuild does.
-static void fill_joint_rows(dxArena *a, const sf1_step *st, dxJoint *j, joint_system *js)
+static void fill_joint_rows(const sf1_step *st, dxJoint *j, joint_system *js)
 {
     const int m = js->m;
-    js->J = DX_ARENA_ARRAY(a, dReal, 12 * m);
-    js->c = DX_ARENA_ARRAY(a, dReal, m);
-    js->cfm = DX_ARENA_ARRAY(a, dReal, m);
-    js->lo = DX_ARENA_ARRAY(a, dReal, m);
-    js->hi = DX_ARENA_ARRAY(a, dReal, m);
-    js->findex = DX_ARENA_ARRAY(a, int, m);
     dSetZero(js->J, 12 * m);
     dSetZero(js->c, m);
     dSetValue(js->cfm, m, st->world->cfm);
@@ -208,14 +229,9 @@ static void fill_joint_rows(dxArena *a, const sf1_step *st, dxJoint *j, joint_sy
 
 // A = J M^-1 J^T + cfm/s (row skip dPAD(m)) and rhs = c/s - J v/s, with only
 // the joint's moving bodies; fills js->iMJ.
-static void form_local_system(dxArena *a, const sf1_step *st, joint_system *js, dReal **A_out,
-                              dReal **rhs_out)
+static void form_local_system(const sf1_step *st, joint_system *js)
 {
     const int m = js->m, skip = dPAD(m);
-    js->iMJ = DX_ARENA_ARRAY(a, dReal, 12 * m);
-    dReal *A = DX_ARENA_ARRAY(a, dReal, m * skip);
-    dReal *rhs = DX_ARENA_ARRAY(a, dReal, m);
-    dSetZero(A, m * skip);
     for (int i = 0; i < m; i++) {
         const dReal *J = js->J + 12 * i;
         dReal *o = js->iMJ + 12 * i, v_dot = 0;
@@ -231,20 +247,18 @@ static void form_local_system(dxArena *a, const sf1_step *st, joint_system *js, 
             v_dot += dCalcVectorDot3(J + 6 * k, body->lvel) +
                      dCalcVectorDot3(J + 6 * k + 3, body->avel);
         }
-        rhs[i] = (js->c[i] - v_dot) * st->fps;
+        js->rhs[i] = (js->c[i] - v_dot) * st->fps;
     }
-    for (int i = 0; i < m; i++) {
+    for (int i = 0; i < m; i++) {   // symmetric: the lower triangle, mirrored
         const dReal *J = js->J + 12 * i;
-        for (int r = 0; r < m; r++) {
+        for (int r = 0; r <= i; r++) {
             const dReal *M = js->iMJ + 12 * r;
             dReal sum = 0;
             for (int e = 0; e < 12; e++) sum += J[e] * M[e];
-            A[i * skip + r] = sum;
+            js->A[i * skip + r] = js->A[r * skip + i] = sum;
         }
-        A[i * skip + i] += js->cfm[i] * st->fps;
+        js->A[i * skip + i] += js->cfm[i] * st->fps;
     }
-    *A_out = A;
-    *rhs_out = rhs;
 }
 
 // Solve one joint alone (the velocities must not include its own force) and
@@ -252,22 +266,17 @@ static void form_local_system(dxArena *a, const sf1_step *st, joint_system *js, 
 // receives J^T lambda.
 static void solve_joint(sf1_step *st, dxJoint *j, dReal f[12])
 {
-    dxArena *a = &st->world->arena;
-    dxArenaMark mark = dxArenaSave(a);
-    joint_system js;
-    js.m = j->rows.m;
-    fill_joint_rows(a, st, j, &js);
-    dReal *A, *rhs;
-    form_local_system(a, st, &js, &A, &rhs);
-    dReal *lambda = DX_ARENA_ARRAY(a, dReal, js.m);
-    dReal *wout = DX_ARENA_ARRAY(a, dReal, js.m);
-    if (!dxSolveLCP(a, js.m, A, lambda, rhs, wout, 0, js.lo, js.hi, js.findex))
+    joint_system *js = &st->js;
+    joint_system_reserve(&st->world->arena, js, j->rows.m);
+    js->m = j->rows.m;
+    fill_joint_rows(st, j, js);
+    form_local_system(st, js);
+    if (!dxSolveLCP(&st->world->arena, js->m, js->A, js->lambda, js->rhs, js->w, 0, js->lo,
+                    js->hi, js->findex))
         st->lcp_failures++;
-
-    for (int i = 0; i < js.m; i++)
-        for (int e = 0; e < 12; e++) f[e] += js.J[12 * i + e] * lambda[i];
+    for (int i = 0; i < js->m; i++)
+        for (int e = 0; e < 12; e++) f[e] += js->J[12 * i + e] * js->lambda[i];
     add_joint_impulse(st, j, f, 1);
-    dxArenaRestore(a, mark);
 }
 
 // Every joint's force of the previous sub-step acts again (zero at first).
@@ -354,6 +363,8 @@ void dWorldStepFast1(dWorldID w, dReal stepsize, int maxiterations)
     st.fps = dRecip(st.s);
     st.rows_fps = dRecip(stepsize);
     st.lcp_failures = 0;
+    st.js.cap = 0;
+    joint_system_reserve(&w->arena, &st.js, JOINT_ROWS);
     collect(w, &st);
     dSetZero(st.force, 12 * st.all.nj);
     dxIslandPrepare(w, &st.all, stepsize, &st.bd);

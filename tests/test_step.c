@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
 // test_step.c -- dWorldStep against physics: free fall, torques, angular
-// momentum, a pendulum's period, chain joint error, joint feedback, motors,
-// stops, soft joints as springs, auto-disable and waking, kinematic bodies.
+// momentum, a pendulum's period, chain joint error, hinged boxes resting on
+// contacts, joint feedback, motors, stops, soft joints as springs, auto-disable
+// and waking, kinematic bodies.
 
 #include "test.h"
 
@@ -222,6 +223,77 @@ static int test_chain_joint_error_stays_small(void)
     }
     printf("# worst joint error over 10 s: %.3g m\n", worst);
     CHECK(worst < 1e-3);
+    dWorldDestroy(w);
+    return 0;
+}
+
+// Contacts under a unit box at its four bottom corners, with the penetration of each corner
+// below the plane z = 0 as depth (0 if above: the contacts stay).
+static void box_corner_contacts(dWorldID w, dJointGroupID g, dBodyID box)
+{
+    for (int k = 0; k < 4; k++) {
+        dVector3 c;
+        dBodyGetRelPointPos(box, k & 1 ? 0.5 : -0.5, k & 2 ? 0.5 : -0.5, -0.5, c);
+        dContact ct = { 0 };
+        ct.surface.mode = dContactApprox1;
+        ct.surface.mu = 0.8;
+        ct.geom.pos[0] = c[0];
+        ct.geom.pos[1] = c[1];
+        ct.geom.normal[2] = 1;
+        ct.geom.depth = c[2] < 0 ? -c[2] : 0;
+        dJointID j = dJointCreateContact(w, g, &ct);
+        dJointAttach(j, box, 0);
+    }
+}
+
+static int test_hinged_boxes_rest_on_their_contacts(void)
+{
+    // Eight unit boxes in a row, hinged edge to edge (hinge stops at +-0.3 rad), thrown onto
+    // the plane with some spin: one island of 35 joint rows, stop rows and 96 contact rows
+    // with friction. They must come to rest flat, the hinges closed.
+    enum { BOXES = 8 };
+    dWorldID w = world_with_gravity();
+    dJointGroupID g = dJointGroupCreate(0);
+    dBodyID box[BOXES];
+    dJointID hinge[BOXES - 1];
+    dMass m;
+    dMassSetBoxTotal(&m, 1, 1, 1, 1);
+    for (int i = 0; i < BOXES; i++) {
+        box[i] = dBodyCreate(w);
+        dBodySetMass(box[i], &m);
+        dBodySetPosition(box[i], 1.01 * i, 0, 0.5);
+        dBodySetLinearVel(box[i], 0.1, 0, -0.2);
+        dBodySetAngularVel(box[i], 0.1 * (i % 3), 0.2, -0.1);
+        if (i == 0) continue;
+        hinge[i - 1] = dJointCreateHinge(w, 0);
+        dJointAttach(hinge[i - 1], box[i - 1], box[i]);
+        dJointSetHingeAnchor(hinge[i - 1], 1.01 * i - 0.505, 0, 0.5);
+        dJointSetHingeAxis(hinge[i - 1], 0, 1, 0);
+        dJointSetHingeParam(hinge[i - 1], dParamLoStop, -0.3);
+        dJointSetHingeParam(hinge[i - 1], dParamHiStop, 0.3);
+    }
+    for (int step = 0; step < 300; step++) {   // 3 s
+        for (int i = 0; i < BOXES; i++) box_corner_contacts(w, g, box[i]);
+        dWorldStep(w, 0.01);
+        dJointGroupEmpty(g);
+    }
+    double worst_z = 0, speed = 0, sep = 0;
+    for (int i = 0; i < BOXES; i++) {
+        worst_z = fmax(worst_z, fabs(dBodyGetPosition(box[i])[2] - 0.5));
+        speed = fmax(speed, dCalcVectorLength3(dBodyGetLinearVel(box[i])));
+        speed = fmax(speed, dCalcVectorLength3(dBodyGetAngularVel(box[i])));
+        if (i == 0) continue;
+        dVector3 a1, a2;
+        dJointGetHingeAnchor(hinge[i - 1], a1);
+        dJointGetHingeAnchor2(hinge[i - 1], a2);
+        sep = fmax(sep, dCalcPointsDistance3(a1, a2));
+    }
+    printf("# hinged boxes after 3 s: |z - 0.5| <= %.3g m, speed <= %.3g, hinge gap %.3g m\n",
+           worst_z, speed, sep);
+    CHECK(worst_z < 1e-4);
+    CHECK(speed < 1e-4);
+    CHECK(sep < 1e-4);
+    dJointGroupDestroy(g);
     dWorldDestroy(w);
     return 0;
 }
@@ -474,6 +546,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_finite_rotation_mode_integrates_spin_exactly),
     TEST_CASE(test_hinge_pendulum_has_small_angle_period),
     TEST_CASE(test_chain_joint_error_stays_small),
+    TEST_CASE(test_hinged_boxes_rest_on_their_contacts),
     TEST_CASE(test_feedback_of_static_pendulum_is_its_weight),
     TEST_CASE(test_motor_reaches_speed_in_one_step),
     TEST_CASE(test_weak_motor_is_torque_limited),
