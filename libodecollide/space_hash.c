@@ -14,7 +14,11 @@
 // the cell holding q: geoms of one level meet in a cell list, and a geom meets
 // those of coarser levels by looking up the cells of those levels that its
 // AABB touches. A pair is tested only in the cell that holds q, so it is
-// tested once without remembering the pairs seen. Spread-out geoms meet only
+// tested once without remembering the pairs seen. (On each axis q's cell is
+// the larger of the two geoms' lowest cells, and a cell both touch is at
+// least that: it holds q exactly when on every axis it is the lowest cell of
+// one of the two. Each entry keeps that as three bits, so the test needs no
+// arithmetic on the boxes.) Spread-out geoms meet only
 // their neighbours: time near-linear in their number.
 //
 // The table is rebuilt when the space's bounding boxes were recomputed
@@ -38,7 +42,17 @@ typedef struct hash_entry {
     int level;
     int next;          // next entry of the same bucket, -1 at the end
     dxGeom *g;
+    unsigned lowest;   // bit k: cell[k] is the geom's lowest cell on axis k
 } hash_entry;
+
+#define ALL_AXES 7u
+
+// Bit k set where cell c is the lowest of the range lo on axis k.
+static unsigned lowest_bits(const int64_t c[3], const int64_t lo[3])
+{
+    return (unsigned)(c[0] == lo[0]) | (unsigned)(c[1] == lo[1]) << 1 |
+           (unsigned)(c[2] == lo[2]) << 2;
+}
 
 typedef struct hash_node {
     dxGeom *g;
@@ -142,17 +156,6 @@ static int same_cell(const hash_entry *e, int level, const int64_t c[3])
     return e->level == level && e->cell[0] == c[0] && e->cell[1] == c[1] && e->cell[2] == c[2];
 }
 
-// 1 if the pair's point q (per axis the larger of the two minima) lies in cell
-// c at 1 / (cell size) = scale: the one cell where the pair is tested.
-static int is_pair_cell(const dxGeom *a, const dxGeom *b, const int64_t c[3], double scale)
-{
-    for (int k = 0; k < 3; k++) {
-        dReal q = a->aabb[2 * k] > b->aabb[2 * k] ? a->aabb[2 * k] : b->aabb[2 * k];
-        if ((int64_t)floor(q * scale) != c[k]) return 0;
-    }
-    return 1;
-}
-
 // The index of `level` in the sorted level list, inserted if new.
 static int level_index(dxHashSpace *hs, int level)
 {
@@ -179,7 +182,9 @@ static void add_entries(dxHashSpace *hs, dxGeom *g, int level, const int64_t lo[
     for (int64_t i = lo[0]; i <= hi[0]; i++)
         for (int64_t j = lo[1]; j <= hi[1]; j++)
             for (int64_t k = lo[2]; k <= hi[2]; k++)
-                hs->entries[hs->n_entries++] = (hash_entry){ { i, j, k }, level, -1, g };
+                hs->entries[hs->n_entries++] = (hash_entry){
+                    { i, j, k }, level, -1, g, lowest_bits((const int64_t[3]){ i, j, k }, lo)
+                };
 }
 
 // Chain the entries into mask + 1 buckets, at least twice as many as entries.
@@ -250,13 +255,14 @@ static int hash_ready(dxHashSpace *hs)
     return 1;
 }
 
-// g against the geoms of `level` recorded in cell c.
+// g against the geoms of `level` recorded in cell c (g's lowest-cell bits
+// there: lowest).
 static void query_cell(const dxHashSpace *hs, dxGeom *g, int level, const int64_t c[3],
-                       double scale, void *data, dNearCallback *cb)
+                       unsigned lowest, void *data, dNearCallback *cb)
 {
     for (int e = hs->buckets[cell_bucket(level, c, hs->mask)]; e >= 0; e = hs->entries[e].next) {
         const hash_entry *h = &hs->entries[e];
-        if (same_cell(h, level, c) && is_pair_cell(g, h->g, c, scale))
+        if ((h->lowest | lowest) == ALL_AXES && same_cell(h, level, c))
             dxSpaceTestPair(g, h->g, data, cb);
     }
 }
@@ -269,14 +275,15 @@ static void query_levels(const dxHashSpace *hs, dxGeom *g, int first, void *data
 {
     for (int li = first; li < hs->n_levels; li++) {
         const hash_level *lv = &hs->levels[li];
-        double scale = level_scale(lv->level);
         int64_t lo[3], hi[3];
-        if (cell_range(g->aabb, scale, lo, hi) && cell_count(lo, hi) <= lv->count) {
+        if (cell_range(g->aabb, level_scale(lv->level), lo, hi) &&
+            cell_count(lo, hi) <= lv->count) {
             for (int64_t i = lo[0]; i <= hi[0]; i++)
                 for (int64_t j = lo[1]; j <= hi[1]; j++)
-                    for (int64_t k = lo[2]; k <= hi[2]; k++)
-                        query_cell(hs, g, lv->level, (const int64_t[3]){ i, j, k }, scale, data,
-                                   cb);
+                    for (int64_t k = lo[2]; k <= hi[2]; k++) {
+                        const int64_t c[3] = { i, j, k };
+                        query_cell(hs, g, lv->level, c, lowest_bits(c, lo), data, cb);
+                    }
         } else {
             for (int n = lv->start; n < lv->start + lv->count; n++)
                 dxSpaceTestPair(g, hs->nodes[n].g, data, cb);
@@ -312,10 +319,9 @@ static void hash_collide(dxSpace *s, void *data, dNearCallback *cb)
     for (int e = 0; e < hs->n_entries; e++) {
         const hash_entry *h = &hs->entries[e];
         if (!enabled(h->g)) continue;
-        double scale = level_scale(h->level);
         for (int f = h->next; f >= 0; f = hs->entries[f].next) {
             const hash_entry *o = &hs->entries[f];
-            if (same_cell(o, h->level, h->cell) && is_pair_cell(h->g, o->g, h->cell, scale))
+            if ((o->lowest | h->lowest) == ALL_AXES && same_cell(o, h->level, h->cell))
                 dxSpaceTestPair(h->g, o->g, data, cb);
         }
     }
