@@ -1,23 +1,43 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
 // backend.c -- the registry of narrow-phase backends (<ode/backend.h>): the
-// native backend is always registered and selected first, then the adapters
-// built in (FCL, Bullet); programs may register more. ODE_COLLISION_BACKEND
-// is read when the registry is first used (before any collision): it selects
-// the backend of that name as soon as one is registered; if none is by the
-// first collision, that is reported once and native stays. An explicit dCollisionSetBackend wins over the variable.
+// native backend is always registered and selected first; the adapters meson
+// built (FCL, Bullet) are loadable modules, listed when their file is found
+// and loaded (dlopen) only when selected; programs may register more.
+// ODE_COLLISION_BACKEND is read when the registry is first used (before any
+// collision): it selects the backend of that name, loading its module, or
+// else as soon as a backend of that name is registered; if none is by the
+// first collision, that is reported once and native stays. An explicit
+// dCollisionSetBackend wins over the variable.
+//
+// Modules are looked for in the directory of the libodecollide.so that holds
+// this code (dladdr): in its subdirectory DX_BACKEND_MODULE_SUBDIR (the
+// installed layout), then beside it (the build tree). A statically linked
+// libodecollide loads none: the module would bring a second libodecollide.
+
+#define _GNU_SOURCE   // dladdr
 
 #include "backend_internal.h"
 #include "backend_support.h"
 
+#include <dlfcn.h>
 #include <ode/error.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #define MAX_BACKENDS 8
 
-static const dCollisionBackend *backends[MAX_BACKENDS];
+// A backend: registered (table set), or a module found but not loaded yet
+// (table NULL, path set).
+typedef struct entry {
+    const char *name;
+    const dCollisionBackend *table;
+    const char *path;
+} entry;
+
+static entry backends[MAX_BACKENDS];
 static const char *names[MAX_BACKENDS + 1];
 static int backend_count;
 static const dCollisionBackend *selected;
@@ -25,46 +45,136 @@ static int strict;
 static int fallback_reported;
 static char requested[64];   // ODE_COLLISION_BACKEND while no backend of that name exists
 
-static const dCollisionBackend *find(const char *name)
+// The modules meson built, and where they were found.
+static const char *const module_names[] = { DX_BACKEND_MODULES NULL };
+static char module_paths[sizeof module_names / sizeof module_names[0]][4096];
+static char module_dir[4096];   // directory of libodecollide.so, "" if linked statically
+
+static entry *find(const char *name)
 {
     for (int i = 0; i < backend_count; i++)
-        if (strcmp(backends[i]->name, name) == 0) return backends[i];
+        if (strcmp(backends[i].name, name) == 0) return &backends[i];
     return NULL;
 }
 
-static void add_backend(const dCollisionBackend *b)
+static void add_entry(const char *name, const dCollisionBackend *table, const char *path)
 {
-    backends[backend_count] = b;
-    names[backend_count] = b->name;
+    backends[backend_count].name = name;
+    backends[backend_count].table = table;
+    backends[backend_count].path = path;
+    names[backend_count] = name;
     backend_count++;
 }
 
-// The first use registers native and the built-in adapters and reads
+// Where is libodecollide.so? Sets module_dir, or leaves it empty when this
+// code is linked into something else (a static libodecollide).
+static void locate_library(void)
+{
+    Dl_info info;
+    if (!dladdr(&backend_count, &info) || !info.dli_fname) return;
+    const char *slash = strrchr(info.dli_fname, '/');
+    const char *base = slash ? slash + 1 : info.dli_fname;
+    if (strncmp(base, "libodecollide.so", strlen("libodecollide.so")) != 0) return;
+    if (!slash) {
+        snprintf(module_dir, sizeof module_dir, ".");
+        return;
+    }
+    int len = (int)(slash - info.dli_fname);
+    if (len == 0) len = 1;   // "/libodecollide.so"
+    snprintf(module_dir, sizeof module_dir, "%.*s", len, info.dli_fname);
+}
+
+// List each module whose file is found (without loading it).
+static void find_modules(void)
+{
+    if (!module_names[0]) return;
+    locate_library();
+    if (!module_dir[0]) return;
+    for (int i = 0; module_names[i] && backend_count < MAX_BACKENDS; i++) {
+        char *path = module_paths[i];
+        int n = snprintf(path, sizeof module_paths[i], "%s/%s/libodecollide-%s.so", module_dir,
+                         DX_BACKEND_MODULE_SUBDIR, module_names[i]);
+        if (n < 0 || (size_t)n >= sizeof module_paths[i] || access(path, R_OK) != 0)
+            n = snprintf(path, sizeof module_paths[i], "%s/libodecollide-%s.so", module_dir,
+                         module_names[i]);
+        if (n < 0 || (size_t)n >= sizeof module_paths[i] || access(path, R_OK) != 0) continue;
+        add_entry(module_names[i], NULL, path);
+    }
+}
+
+// The table of e, loading its module the first time. On failure returns
+// NULL with the reason in `why`.
+static const dCollisionBackend *load(entry *e, char *why, size_t size)
+{
+    if (e->table) return e->table;
+    void *lib = dlopen(e->path, RTLD_NOW | RTLD_LOCAL);
+    if (!lib) {
+        const char *err = dlerror();
+        snprintf(why, size, "%s", err ? err : e->path);
+        return NULL;
+    }
+    typedef const dCollisionBackend *module_entry(const char *abi);
+    module_entry *fn = (module_entry *)dlsym(lib, DX_BACKEND_MODULE_ENTRY);
+    const dCollisionBackend *table = fn ? fn(DX_BACKEND_ABI) : NULL;
+    if (!table || !table->name || strcmp(table->name, e->name) != 0 || !table->collide ||
+        !table->supports) {
+        snprintf(why, size, "%.300s is not a backend module of this libodecollide (%s)",
+                 e->path, DX_BACKEND_ABI);
+        dlclose(lib);
+        return NULL;
+    }
+    e->table = table;   // never unloaded: geoms may keep its cached shapes
+    return table;
+}
+
+// Why a backend named `name` is not available, when it is a module meson
+// built; NULL otherwise.
+static const char *module_missing(const char *name, char *why, size_t size)
+{
+    for (int i = 0; module_names[i]; i++) {
+        if (strcmp(module_names[i], name) != 0) continue;
+        if (!module_dir[0])
+            snprintf(why, size, "its module cannot be loaded by a statically linked "
+                     "libodecollide");
+        else
+            snprintf(why, size, "its module libodecollide-%.64s.so is neither in %.180s/%s "
+                     "nor in %.180s", name, module_dir, DX_BACKEND_MODULE_SUBDIR, module_dir);
+        return why;
+    }
+    return NULL;
+}
+
+// The first use registers native, lists the modules found and reads
 // ODE_COLLISION_BACKEND (a name too long for `requested` is cut and then
 // matches nothing).
 static void ensure_native(void)
 {
     if (backend_count > 0) return;
-    add_backend(dxNativeBackend());
-#ifdef DX_HAVE_FCL
-    add_backend(dxFclBackend());
-#endif
-#ifdef DX_HAVE_BULLET
-    add_backend(dxBulletBackend());
-#endif
-    selected = backends[0];
+    add_entry(dxNativeBackend()->name, dxNativeBackend(), NULL);
+    selected = backends[0].table;
+    find_modules();
     const char *env = getenv("ODE_COLLISION_BACKEND");
     if (!env) return;
-    const dCollisionBackend *b = find(env);
+    entry *e = find(env);
+    if (!e) {
+        snprintf(requested, sizeof requested, "%s", env);
+        return;
+    }
+    char why[512];
+    const dCollisionBackend *b = load(e, why, sizeof why);
     if (b) selected = b;
-    else snprintf(requested, sizeof requested, "%s", env);
+    else
+        dMessage(d_ERR_UNKNOWN, "ODE_COLLISION_BACKEND: cannot load the \"%s\" backend: %s; "
+                 "using native", env, why);
 }
 
 // A requested backend that never registered: say so once, at the first collision.
 static void give_up_request(void)
 {
-    dMessage(d_ERR_UNKNOWN, "ODE_COLLISION_BACKEND: no backend named \"%s\"; using native",
-             requested);
+    char why[512];
+    const char *missing = module_missing(requested, why, sizeof why);
+    dMessage(d_ERR_UNKNOWN, "ODE_COLLISION_BACKEND: no backend named \"%s\"%s%s; using native",
+             requested, missing ? ": " : "", missing ? missing : "");
     requested[0] = 0;
 }
 
@@ -76,7 +186,7 @@ int dCollisionRegisterBackend(const dCollisionBackend *b)
     if (find(b->name)) return 0;
     DX_CHECK_ARG(backend_count < MAX_BACKENDS, return 0, "too many backends (at most %d)",
                  MAX_BACKENDS);
-    add_backend(b);
+    add_entry(b->name, b, NULL);
     if (requested[0] && strcmp(requested, b->name) == 0) {
         selected = b;
         requested[0] = 0;
@@ -88,8 +198,13 @@ int dCollisionSetBackend(const char *name)
 {
     DX_CHECK_ARG(name != NULL, return 0, "name is NULL");
     ensure_native();
-    const dCollisionBackend *b = find(name);
-    DX_CHECK_ARG(b != NULL, return 0, "no collision backend named \"%s\"", name);
+    entry *e = find(name);
+    char why[512];
+    const char *missing = e ? NULL : module_missing(name, why, sizeof why);
+    DX_CHECK_ARG(e != NULL, return 0, "no collision backend named \"%s\"%s%s", name,
+                 missing ? ": " : "", missing ? missing : "");
+    const dCollisionBackend *b = load(e, why, sizeof why);
+    DX_CHECK_ARG(b != NULL, return 0, "cannot load the \"%s\" backend: %s", name, why);
     selected = b;
     requested[0] = 0;
     fallback_reported = 0;
@@ -115,7 +230,7 @@ int dxBackendCollide(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *contact, i
     ensure_native();
     if (requested[0]) give_up_request();
     const dCollisionBackend *b = selected;
-    if (b != backends[0] && !b->supports(o1->ops->cls, o2->ops->cls)) {
+    if (b != backends[0].table && !b->supports(o1->ops->cls, o2->ops->cls)) {
         if (strict) {
             dxReportBadArgument("dCollide", "backend \"%s\" cannot collide a %s with a %s "
                                 "(strict mode)", b->name, o1->ops->name, o2->ops->name);
@@ -126,7 +241,7 @@ int dxBackendCollide(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *contact, i
             dMessage(d_ERR_UNKNOWN, "dCollide: backend \"%s\" cannot collide a %s with a %s; "
                      "using native for such pairs", b->name, o1->ops->name, o2->ops->name);
         }
-        b = backends[0];
+        b = backends[0].table;
     }
     return b->collide(o1, o2, flags, contact, skip);
 }
@@ -134,11 +249,13 @@ int dxBackendCollide(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *contact, i
 void dxBackendGeomChanged(dxGeom *g)
 {
     for (int i = 0; i < backend_count; i++)
-        if (backends[i]->geom_changed) backends[i]->geom_changed(g);
+        if (backends[i].table && backends[i].table->geom_changed)
+            backends[i].table->geom_changed(g);
 }
 
 void dxBackendGeomDestroyed(dxGeom *g)
 {
     for (int i = 0; i < backend_count; i++)
-        if (backends[i]->geom_destroyed) backends[i]->geom_destroyed(g);
+        if (backends[i].table && backends[i].table->geom_destroyed)
+            backends[i].table->geom_destroyed(g);
 }

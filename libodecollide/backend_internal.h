@@ -10,8 +10,8 @@
 
 #include "geom_internal.h"
 
-// The native backend (backends/native), always present (the adapters' entry
-// points are in backend_support.h).
+// The native backend (backends/native), always present (the adapter
+// modules' entry point is declared in backend_support.h).
 const dCollisionBackend *dxNativeBackend(void);
 
 // Contacts of two non-space geoms through the selected backend, or native

@@ -4,15 +4,27 @@
 // (C, usable from the C++ adapters), so that the ODE bookkeeping exists once:
 // a geom's shape and pose as plain numbers, its cache slot, and a contact
 // sink that filters, merges, selects and writes contacts in ODE's convention
-// (BACKENDS.md section 3).
+// (BACKENDS.md section 3). The adapters are loadable modules linked against
+// libodecollide.so, so these functions are exported from it
+// (DX_INTERNAL_EXPORT) while staying out of the public headers.
 
 #ifndef DX_BACKEND_SUPPORT_H
 #define DX_BACKEND_SUPPORT_H
 
 #include <ode/backend.h>
 
+#include "backend_config.h"
+
 #ifdef __cplusplus
 extern "C" {
+#endif
+
+// Exported from libodecollide.so (whose other internals are hidden) for the
+// backend modules, and the modules' entry point exported from them.
+#if defined(__GNUC__)
+#define DX_INTERNAL_EXPORT __attribute__((visibility("default")))
+#else
+#define DX_INTERNAL_EXPORT
 #endif
 
 // A geom's shape: class and size parameters.
@@ -25,18 +37,18 @@ typedef struct dxShapeDesc {
 } dxShapeDesc;
 
 // The shape of a non-space geom (for a class without parameters, p is zero).
-void dxGeomDescribe(dGeomID g, dxShapeDesc *out);
+DX_INTERNAL_EXPORT void dxGeomDescribe(dGeomID g, dxShapeDesc *out);
 // The world pose: position and rotation (row-major 3x4, as dGeomGetRotation).
-void dxGeomPose(dGeomID g, dReal pos[3], dReal R[12]);
+DX_INTERNAL_EXPORT void dxGeomPose(dGeomID g, dReal pos[3], dReal R[12]);
 
 // One cache slot per geom for the backend's shape object. dxGeomCache
 // returns it if `owner` made it, else NULL (another backend's object is freed
 // first, through that backend's geom_changed): for collisions.
 // dxGeomOwnedCache returns it if `owner` made it, else NULL, and frees
 // nothing: for geom_changed and geom_destroyed. dxGeomSetCache stores one.
-void *dxGeomCache(dGeomID g, const void *owner);
-void *dxGeomOwnedCache(dGeomID g, const void *owner);
-void dxGeomSetCache(dGeomID g, const void *owner, void *cache);
+DX_INTERNAL_EXPORT void *dxGeomCache(dGeomID g, const void *owner);
+DX_INTERNAL_EXPORT void *dxGeomOwnedCache(dGeomID g, const void *owner);
+DX_INTERNAL_EXPORT void dxGeomSetCache(dGeomID g, const void *owner, void *cache);
 
 // Raw contacts from a backend, in ODE's sense for (o1, o2) as passed to it.
 enum { DX_SINK_CAPACITY = 64 };   // raw contacts kept; more are ignored
@@ -48,25 +60,26 @@ typedef struct dxContactSink {
     } c[DX_SINK_CAPACITY];
 } dxContactSink;
 
-void dxSinkInit(dxContactSink *s);
+DX_INTERNAL_EXPORT void dxSinkInit(dxContactSink *s);
 // Add one contact: the normal points into o1 (need not be unit length).
-void dxSinkAdd(dxContactSink *s, const dReal pos[3], const dReal normal[3], dReal depth,
-               int side1, int side2);
+DX_INTERNAL_EXPORT void dxSinkAdd(dxContactSink *s, const dReal pos[3], const dReal normal[3],
+                                  dReal depth, int side1, int side2);
 // Drop non-finite values, negative depths and zero normals; normalise normals;
 // merge contacts closer than a relative 1e-6 (keeping the deeper); keep at
 // most flags & 0xffff (the deepest first, then each farthest from those kept);
 // write them with stride skip, g1 = o1, g2 = o2. Returns the number written;
 // with 0, `out` is untouched.
-int dxSinkFinish(dxContactSink *s, dGeomID o1, dGeomID o2, int flags, dContactGeom *out,
-                 int skip);
+DX_INTERNAL_EXPORT int dxSinkFinish(dxContactSink *s, dGeomID o1, dGeomID o2, int flags,
+                                    dContactGeom *out, int skip);
 
-// The adapters' tables (backends/fcl, backends/bullet), registered at start
-// when meson built them in (DX_HAVE_FCL, DX_HAVE_BULLET). Each entry point
-// catches every C++ exception and reports it with dMessage. Their
-// geom_changed / geom_destroyed free the geom's cache only if they own it
-// (dxGeomOwnedCache).
-const dCollisionBackend *dxFclBackend(void);
-const dCollisionBackend *dxBulletBackend(void);
+// A backend module (libodecollide-NAME.so: backends/fcl, backends/bullet)
+// defines this entry point, which libodecollide calls once after dlopen: it
+// returns the module's table if `abi` is the DX_BACKEND_ABI the module was
+// built with, else NULL. Each entry point of the table catches every C++
+// exception and reports it with dMessage; geom_changed / geom_destroyed free
+// the geom's cache only if they own it (dxGeomOwnedCache).
+#define DX_BACKEND_MODULE_ENTRY "dxBackendModule"
+DX_INTERNAL_EXPORT const dCollisionBackend *dxBackendModule(const char *abi);
 
 #ifdef __cplusplus
 }

@@ -17,6 +17,7 @@
 #include <ode/collision.h>
 #include <ode/error.h>
 
+#include <cstring>
 #include <exception>
 #include <functional>
 #include <memory>
@@ -318,4 +319,8 @@ const dCollisionBackend bullet_backend = { "bullet", bullet_supports, bullet_col
 
 }   // namespace
 
-const dCollisionBackend *dxBulletBackend(void) { return &bullet_backend; }
+// The module's entry point (backend_support.h).
+const dCollisionBackend *dxBackendModule(const char *abi)
+{
+    return std::strcmp(abi, DX_BACKEND_ABI) == 0 ? &bullet_backend : nullptr;
+}

@@ -10,6 +10,7 @@
 #include <ode/collision.h>
 #include <ode/error.h>
 
+#include <cstring>
 #include <exception>
 #include <functional>
 #include <memory>
@@ -199,4 +200,8 @@ void fcl_drop_cache(dGeomID g)
 
 } // namespace
 
-const dCollisionBackend *dxFclBackend(void) { return &table; }
+// The module's entry point (backend_support.h).
+const dCollisionBackend *dxBackendModule(const char *abi)
+{
+    return std::strcmp(abi, DX_BACKEND_ABI) == 0 ? &table : nullptr;
+}

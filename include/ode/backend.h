@@ -4,9 +4,10 @@
  * A backend computes the contacts of two non-space geoms in ODE's convention
  * (contact.h: the normal points into o1, depth >= 0). "native" is always
  * available and is the default; others ("fcl", "bullet") are built when their
- * libraries are found. The environment variable ODE_COLLISION_BACKEND, read
- * when the registry is first used, selects one, so an unchanged program can
- * switch (a name that is registered later is selected when it registers).
+ * libraries are found, as modules loaded only when selected. The environment
+ * variable ODE_COLLISION_BACKEND, read when the registry is first used,
+ * selects one, so an unchanged program can switch (a name that is registered
+ * later is selected when it registers).
  * A pair the selected backend does not support is handled by "native", with
  * one message through dMessage, unless strict mode makes that an error. */
 #ifndef ODE_BACKEND_H
