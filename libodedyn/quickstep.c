@@ -145,7 +145,9 @@ static void interleave(const qs_system *sys, const qs_island *parts, const int *
 // normal row to the normal row's place and the normal row to its own: the
 // rows stay in a random order, but each friction row is bounded by the
 // normal force of the same sweep. One pass suffices: a swap only moves a
-// normal row earlier. at: -1 for every lambda position, left so.
+// normal row earlier. at: -1 for every lambda position but those of the
+// rows in order (the same rows at every reordering of a step: their places
+// are all written before they are read).
 static void normals_before_friction(qs_system *sys, const qs_island *p, int *at)
 {
     int *o = sys->order + p->order0;
@@ -160,7 +162,6 @@ static void normals_before_friction(qs_system *sys, const qs_island *p, int *at)
         at[pos[o[k]]] = k;
         at[pos[o[j]]] = j;
     }
-    for (int k = 0; k < p->norder; k++) at[pos[o[k]]] = -1;
 }
 
 // `iterations` sweeps over all islands, each island's rows reshuffled every

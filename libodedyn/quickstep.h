@@ -12,7 +12,9 @@
 //    array of rows that all look alike: two bodies (a one-body row's second
 //    body is a dummy whose numbers stay zero), bounds scaled by a lambda
 //    (a friction row's normal force, or a constant 1), so that the update
-//    has no branch that depends on the kind of row.
+//    has no branch that depends on the kind of row but one: a one-body row
+//    (a contact with the ground, most of them in a heap) skips its second
+//    body's zeros, which would add exact zeros.
 // Each island has its own range of bodies in fc, of lambda positions, of
 // blocks and of rows.
 
@@ -26,6 +28,7 @@
 typedef struct qs_scratch qs_scratch;
 
 #define QS_MAX_BLOCK 6
+#define QS_PAD(n) (((n) + 1) & ~1)   // n rounded up to pairs
 
 #if defined(__GNUC__)
 #define QS_INLINE static inline __attribute__((always_inline))
@@ -38,6 +41,7 @@ typedef struct qs_scratch qs_scratch;
 #if defined(__GNUC__)
 typedef dReal qs_v2 __attribute__((vector_size(2 * sizeof(dReal))));
 #define qs_add(x, y) ((x) + (y))
+#define qs_sub(x, y) ((x) - (y))
 #define qs_mul(x, y) ((x) * (y))
 #define qs_lane(v, i) ((v)[i])
 QS_INLINE qs_v2 qs_splat(dReal a)
@@ -54,6 +58,11 @@ static inline qs_v2 qs_add(qs_v2 x, qs_v2 y)
     qs_v2 v = { { x.e[0] + y.e[0], x.e[1] + y.e[1] } };
     return v;
 }
+static inline qs_v2 qs_sub(qs_v2 x, qs_v2 y)
+{
+    qs_v2 v = { { x.e[0] - y.e[0], x.e[1] - y.e[1] } };
+    return v;
+}
 static inline qs_v2 qs_mul(qs_v2 x, qs_v2 y)
 {
     qs_v2 v = { { x.e[0] * y.e[0], x.e[1] * y.e[1] } };
@@ -68,7 +77,8 @@ static inline qs_v2 qs_splat(dReal a)
 #endif
 
 // n rows of one joint solved together: with the residuals res (unscaled)
-// delta = Ainv res (Ainv: the inverse of the block of A, times sor_w),
+// delta = Ainv res (Ainv: the inverse of the block of A, times sor_w; its
+// rows padded to pairs, so that two numbers of delta are made at a time),
 // lambda += delta, fc += M^-1 J^T delta.
 typedef struct qs_block {
     int n;
@@ -76,7 +86,7 @@ typedef struct qs_block {
     int o0, o1;       // offsets of the bodies in fc
     int first;        // lambda position of its first row; the others follow
     qs_v2 *J, *M;     // n x 6 pairs: J and M^-1 J^T
-    dReal *Ainv;      // n x n
+    dReal *Ainv;      // n x QS_PAD(n) (symmetric, the padding zero): rows as pairs
     dReal *rhs, *cfm; // n: b and cfm/h
     int coupled, ncoupled;   // the joint's rows coupled to the block: rows[coupled...]
 } qs_block;
@@ -90,16 +100,21 @@ typedef struct qs_block {
 // A_ii becomes its Schur complement). Without this the row would fight a
 // much stiffer block and converge very slowly (a stop on a pendulum with a
 // light bob). Coupled rows are updated right after their block.
+// The numbers of each body are together, the first body's right after the
+// scalars: a one-body row (most contacts: with the ground) reads only those,
+// skipping the second body's zeros (the same result: they add exact zeros).
 typedef struct qs_row {
-    qs_v2 J[6];       // D * J_i: [lin0 ang0 lin1 ang1]
-    qs_v2 M[6];       // M^-1 J_i^T (world frame), plus the block's response
     dReal rhs, cfm;   // D * b_i, D * cfm_i / h
     dReal lo, hi;     // bounds, or friction coefficients (-mu, mu)
     int o0, o1;       // offsets of the bodies in fc (o1: the dummy for a one-body row)
     int pos;          // lambda position
     int f;            // lambda position of the normal row, or of the constant 1
     const dReal *g;   // gn numbers: the block's lambda change per unit of delta
-    int gn, gfirst;   // gfirst: the lambda position of the block's first row
+    int gfirst;       // the lambda position of the block's first row
+    short gn;
+    short two;        // 1: acts on two bodies; 0: the second body's numbers are zero
+    qs_v2 J[3], M[3];   // D * J_i and M^-1 J_i^T (world frame, plus the block's
+    qs_v2 J1[3], M1[3]; // response) of the first body [lin ang], then of the second
 } qs_row;
 
 // A joint with a dJointFeedback: its rows' J and lambda positions, kept for
@@ -127,7 +142,7 @@ typedef struct qs_system {
     int *order;            // each island's other rows, in the order of its sweeps
     const qs_block **bseq; // the blocks of all islands, interleaved
     int *seq;              // order of all islands, interleaved
-    int *at;               // m + 1: scratch for a place per lambda position, all -1
+    int *at;               // m + 1: the place in order per lambda position (-1: not there)
     int *row_pos, *row_f;  // per row: its pos and f (compact copies for the reordering)
     dReal *lambda;         // m + 1: the last holds the constant 1
     dReal *fc;             // 6 per body (and island dummy): M^-1 J^T lambda

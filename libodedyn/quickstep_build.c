@@ -174,9 +174,11 @@ typedef struct qs_jblock {
     double L[QS_MAX_BLOCK * QS_MAX_BLOCK];
 } qs_jblock;
 
-// sor_w B^-1 into Ainv (n x n) from the Cholesky factor L of B.
+// sor_w B^-1 into Ainv (n rows of QS_PAD(n), the padding zero) from the
+// Cholesky factor L of B.
 QS_INLINE void scaled_inverse(const double *L, int n, dReal sor_w, dReal *Ainv)
 {
+    const int w = QS_PAD(n);
     // Linv = L^-1 (lower).
     double Linv[QS_MAX_BLOCK * QS_MAX_BLOCK];
     for (int j = 0; j < n; j++) {
@@ -192,8 +194,9 @@ QS_INLINE void scaled_inverse(const double *L, int n, dReal sor_w, dReal *Ainv)
         for (int j = 0; j <= i; j++) {
             double s = 0;
             for (int k = i; k < n; k++) s += Linv[k * n + i] * Linv[k * n + j];
-            Ainv[i * n + j] = Ainv[j * n + i] = (dReal)(sor_w * s);
+            Ainv[i * w + j] = Ainv[j * w + i] = (dReal)(sor_w * s);
         }
+        for (int j = n; j < w; j++) Ainv[i * w + j] = 0;
     }
 }
 
@@ -247,14 +250,14 @@ static int fill_block(dxArena *a, const qs_input *in, const qs_jrows *jr, const 
     blk->o1 = jr->o[1];
     blk->J = DX_ARENA_ARRAY(a, qs_v2, 12 * n);
     blk->M = blk->J + 6 * n;
-    blk->Ainv = DX_ARENA_ARRAY(a, dReal, n * (n + 2));
-    blk->rhs = blk->Ainv + n * n;
+    blk->Ainv = DX_ARENA_ARRAY(a, dReal, n * (QS_PAD(n) + 2));
+    blk->rhs = blk->Ainv + n * QS_PAD(n);
     blk->cfm = blk->rhs + n;
     memcpy(blk->J, jb->J, sizeof(dReal) * 12 * (size_t)n);
     memcpy(blk->M, jb->iMJ, sizeof(dReal) * 12 * (size_t)n);
     memcpy(blk->rhs, rhs, sizeof rhs[0] * (size_t)n);
     memcpy(blk->cfm, cfm, sizeof cfm[0] * (size_t)n);
-    memcpy(blk->Ainv, Ainv, sizeof Ainv[0] * (size_t)(n * n));
+    memcpy(blk->Ainv, Ainv, sizeof Ainv[0] * (size_t)(n * QS_PAD(n)));
     return 1;
 }
 
@@ -336,15 +339,18 @@ static void fill_row(dxArena *a, const qs_input *in, const qs_jrows *jr, int i, 
         q->g = couple_to_block(a, jb, M, &diag);
         memcpy(Mp, M, sizeof M);
     }
-    q->gn = q->g ? blk->n : 0;
+    q->gn = (short)(q->g ? blk->n : 0);
     q->gfirst = q->g ? blk->first : 0;
     // A zero diagonal (an empty row without cfm) leaves the row's force at 0.
     const dReal D = diag > 0 ? (dReal)(in->sor_w / diag) : 0;
     const qs_v2 d = qs_splat(D);
-    for (int e = 0; e < 6; e++) {
+    for (int e = 0; e < 3; e++) {
         q->J[e] = qs_mul(d, Jp[e]);
         q->M[e] = Mp[e];
+        q->J1[e] = qs_mul(d, Jp[3 + e]);
+        q->M1[e] = Mp[3 + e];
     }
+    q->two = (short)is_two_body(jr);
     q->rhs = (jr->c[i] * in->fps - rate) * D;
     q->cfm = cfm * D;
     q->pos = pos[i];

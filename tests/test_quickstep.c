@@ -463,6 +463,93 @@ static int test_converges_to_world_step(void)
     return 0;
 }
 
+// Joints whose equality rows make blocks of every size QuickStep has (2 to
+// 6, even and odd, one body and two): a fixed joint to the world (6, one
+// body), universal (4), slider (5), ball (3), hinge (5), ball and an
+// angular motor of two axes with unlimited force (2).
+static void build_block_sizes(dWorldID w, dBodyID *b)
+{
+    const double size[3] = { 0.3, 0.1, 0.1 };
+    dWorldSetGravity(w, 0, 0, -G);
+    for (int k = 0; k < 6; k++) {
+        b[k] = dBodyCreate(w);
+        dMass m;
+        dMassSetBoxTotal(&m, 0.5 + 0.3 * k, size[0], size[1], size[2]);
+        dBodySetMass(b[k], &m);
+        dBodySetPosition(b[k], 0.3 * k, 0.05 * k, 0);
+        dBodySetLinearVel(b[k], 0.1 * k, 0.3 - 0.1 * k, -0.2 * k);
+        dBodySetAngularVel(b[k], 0.5 - 0.2 * k, 0.3 * k, 1 - 0.1 * k);
+    }
+    dJointID j = dJointCreateFixed(w, 0);
+    dJointAttach(j, b[0], 0);
+    dJointSetFixed(j);
+    j = dJointCreateUniversal(w, 0);
+    dJointAttach(j, b[1], b[0]);
+    dJointSetUniversalAnchor(j, 0.15, 0.025, 0);
+    dJointSetUniversalAxis1(j, 0, 1, 0);
+    dJointSetUniversalAxis2(j, 0, 0, 1);
+    j = dJointCreateSlider(w, 0);
+    dJointAttach(j, b[2], b[1]);
+    dJointSetSliderAxis(j, 1, 0.2, 0);
+    j = dJointCreateBall(w, 0);
+    dJointAttach(j, b[3], b[2]);
+    dJointSetBallAnchor(j, 0.75, 0.125, 0);
+    j = dJointCreateHinge(w, 0);
+    dJointAttach(j, b[4], b[3]);
+    dJointSetHingeAnchor(j, 1.05, 0.175, 0);
+    dJointSetHingeAxis(j, 0, 1, 1);
+    j = dJointCreateBall(w, 0);
+    dJointAttach(j, b[5], b[4]);
+    dJointSetBallAnchor(j, 1.35, 0.225, 0);
+    j = dJointCreateAMotor(w, 0);
+    dJointAttach(j, b[5], b[4]);
+    dJointSetAMotorNumAxes(j, 2);
+    dJointSetAMotorAxis(j, 0, 1, 1, 0, 0);
+    dJointSetAMotorAxis(j, 1, 1, 0, 0, 1);
+    dJointSetAMotorParam(j, dParamVel, 0.5);
+    dJointSetAMotorParam(j, dParamFMax, dInfinity);
+    dJointSetAMotorParam(j, dParamVel2, -0.3);
+    dJointSetAMotorParam(j, dParamFMax2, dInfinity);
+}
+
+static double block_sizes_error(int iterations, const dBodyID *exact)
+{
+    dBodyID b[6];
+    dWorldID w = dWorldCreate();
+    build_block_sizes(w, b);
+    dWorldSetQuickStepNumIterations(w, iterations);
+    dWorldQuickStep(w, 0.01);
+    double err = 0;
+    for (int k = 0; k < 6; k++) {
+        const dReal *v = dBodyGetLinearVel(b[k]), *ve = dBodyGetLinearVel(exact[k]);
+        const dReal *a = dBodyGetAngularVel(b[k]), *ae = dBodyGetAngularVel(exact[k]);
+        for (int i = 0; i < 3; i++) {
+            err = fmax(err, fabs(v[i] - ve[i]));
+            err = fmax(err, fabs(a[i] - ae[i]));
+        }
+    }
+    dWorldDestroy(w);
+    return err;
+}
+
+static int test_every_block_size_converges_to_world_step(void)
+{
+    dBodyID exact[6];
+    dWorldID w = dWorldCreate();
+    build_block_sizes(w, exact);
+    CHECK(dWorldStep(w, 0.01) == 1);
+    double e5 = block_sizes_error(5, exact);
+    double e50 = block_sizes_error(50, exact);
+    double e2000 = block_sizes_error(2000, exact);
+    printf("# blocks of 2 to 6 rows, max velocity error vs dWorldStep: %.3g (5 it), %.3g (50 it), "
+           "%.3g (2000 it)\n", e5, e50, e2000);
+    CHECK(e50 < e5);
+    CHECK(e2000 < e50);
+    CHECK(e2000 < TOL(1e-6, 1e-2));
+    dWorldDestroy(w);
+    return 0;
+}
+
 // ---- contacts --------------------------------------------------------------------
 
 // A box of the given size and mass at (x, y, z), unrotated.
@@ -872,6 +959,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_hinge_stop_holds),
     TEST_CASE(test_feedback_of_static_pendulum),
     TEST_CASE(test_converges_to_world_step),
+    TEST_CASE(test_every_block_size_converges_to_world_step),
     TEST_CASE(test_box_rests_on_contacts),
     TEST_CASE(test_sliding_box_decelerates_at_mu_g),
     TEST_CASE(test_box_stack_stands),
