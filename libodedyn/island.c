@@ -42,6 +42,7 @@ int dxStepBegin(struct dxWorld *w, dReal h, const char *function, dxIsland **isl
         return 0;
     }
     dxArenaReset(&w->arena);
+    w->step_count++;
     dxArena *a = &w->arena;
     struct dxBody **all_bodies = DX_ARENA_ARRAY(a, struct dxBody *, w->num_bodies + 1);
     dxJoint **all_joints = DX_ARENA_ARRAY(a, dxJoint *, w->num_joints + 1);

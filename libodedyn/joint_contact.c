@@ -28,6 +28,10 @@
 // each StepFast1 sub-step would correct the whole initial depth again, and a
 // rolling ball's lever arm would swing away from its contact point.
 //
+// dxJointContactWarmInfo gives dWorldQuickStep's warm start (quickstep_warm.c)
+// the contact point and which friction rows follow the normal row, so that it
+// can find the same contact in the last step's forces.
+//
 // Bad input at creation: a NULL world or contact or a destroyed group is
 // reported and no joint is made (returns 0). A non-finite position, normal
 // or depth, or a zero normal, is reported and the joint is made inert (no
@@ -262,6 +266,14 @@ static void contact_fill_rows(dxJoint *j, dxJointRows *rows)
         angular_row(j, rows, row, n);
         friction_bounds(rows, row, c->rhoN, mode & dContactApprox1_N);
     }
+}
+
+int dxJointContactWarmInfo(const dxJoint *j, dVector3 point)
+{
+    const dxJointContact *c = (const dxJointContact *)j;
+    if (j->cls->type != dJointTypeContact || c->inert) return -1;
+    dCopyVector3(point, c->contact.geom.pos);
+    return (int)(c->rows_present & (ROW_T1 | ROW_T2));
 }
 
 static const dxJointClass contact_class = {

@@ -201,7 +201,13 @@ struct dxWorld {
     dxDamping damping;
 
     dxArena arena;                // per-step scratch, reused every step
+    uint32_t step_count;          // steps taken (any stepper), for the warm start
+    struct dxWarmCache *qs_warm;  // dWorldQuickStep's contact forces of the last
+                                  // step (quickstep_warm.c), NULL until one
 };
+
+// Free a world's warm-start cache (dWorldDestroy).
+void dxWarmCacheFree(struct dxWorld *w);
 
 // ---- shared internal functions ------------------------------------------
 

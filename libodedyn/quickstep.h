@@ -16,7 +16,9 @@
 //    (a contact with the ground, most of them in a heap) skips its second
 //    body's zeros, which would add exact zeros.
 // Each island has its own range of bodies in fc, of lambda positions, of
-// blocks and of rows.
+// blocks and of rows. lambda and fc start at zero, except for contacts that
+// start warm (quickstep.c), whose lambdas and their M^-1 J^T are set while
+// the rows are built.
 
 #ifndef DX_QUICKSTEP_H
 #define DX_QUICKSTEP_H
@@ -135,6 +137,17 @@ typedef struct qs_island {
     uint32_t seed;         // of its shuffles
 } qs_island;
 
+// The warm start (quickstep.c, quickstep_warm.c): a contact is the same as
+// one of the last step if its point moved by at most WARM_TOL times its lever
+// arm in the first body's frame and its normal turned by at most
+// acos(WARM_COS); it then starts from WARM_SCALE times that one's forces.
+#define WARM_TOL ((dReal)0.03)
+#define WARM_COS ((dReal)0.95)
+#define WARM_SCALE ((dReal)0.8)
+
+typedef struct dxWarmCache dxWarmCache;
+typedef struct qs_warm_entry qs_warm_entry;
+
 typedef struct qs_system {
     int m, nblocks, nrows, norder, nfeedback, nbodies;
     qs_block *blocks;      // in each island's joint order
@@ -150,6 +163,7 @@ typedef struct qs_system {
     dReal *rates;          // 6 per body: v/h + M^-1 f (build scratch)
     int next;              // the next free lambda position (build)
     qs_scratch *scratch;   // per-joint build scratch
+    dxWarmCache *warm;     // the world's contact cache (NULL: no contacts yet)
 } qs_system;
 
 // Count the rows of the islands' joints (count_rows, once per step) and
@@ -160,6 +174,24 @@ void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_syst
 // and rows to the system; *part gets its ranges (seed left as it is).
 void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *bd, dReal h,
                   qs_system *sys, qs_island *part);
+
+// The world's contact cache, with room for this step's ncontacts (the last
+// step's entries dropped unless it was a quick step); NULL while the world
+// has had no contact.
+dxWarmCache *dxQuickWarmBegin(struct dxWorld *w, int ncontacts);
+// Enter a contact of this step in the cache (stored bodies b0, b1; world
+// point; normal and friction directions as in its rows, a missing friction
+// direction zero). *found: 1 if it matches one of the last step, whose
+// normal force goes to *ln and friction force (world frame) to f.
+qs_warm_entry *dxQuickWarmContact(dxWarmCache *c, const struct dxBody *b0,
+                                  const struct dxBody *b1, const dReal *point, const dReal *n,
+                                  const dReal *t1, const dReal *t2, int *found, dReal *ln,
+                                  dReal *f);
+// The lambda positions of the entry's normal and friction rows (-1: none).
+void dxQuickWarmPositions(qs_warm_entry *e, const int pos[3]);
+// After the solve: this step's contacts get their forces and become the last
+// step's.
+void dxQuickWarmEnd(struct dxWorld *w, dxWarmCache *c, const dReal *lambda);
 
 // One sweep over all blocks in bseq (each followed by its coupled rows) and
 // all rows in seq: the blocks first, or (rows_first) the rows.

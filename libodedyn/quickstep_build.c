@@ -3,7 +3,10 @@
 // quickstep_build.c -- setting up dWorldQuickStep's iteration, island by
 // island and joint by joint, straight from each joint's rows: its equality
 // rows as blocks with their inverses, its other rows on their own, each
-// scaled by D = sor_w / A_ii with M^-1 J^T precomputed (quickstep.h).
+// scaled by D = sor_w / A_ii with M^-1 J^T precomputed (quickstep.h); and
+// the warm start of contacts (quickstep.c): the forces of the same contact
+// in the last step (quickstep_warm.c) as the starting lambdas, fc to match,
+// and D = 1 / A_ii for a warm contact's normal row.
 
 #include "quickstep.h"
 
@@ -25,6 +28,8 @@ typedef struct qs_input {
     const dReal *rates;    // v/h + M^-1 f per body, 6 each
     dReal fps, sor_w;
     int body0, nb;         // the island's first body in fc, its number of bodies
+    int warm;              // the joint is a contact that starts warm: its normal
+                           // row is relaxed with factor 1 (quickstep.c)
 } qs_input;
 
 // The rows of one joint (joint-local indices, as dxJointRowsFill makes them).
@@ -342,7 +347,8 @@ static void fill_row(dxArena *a, const qs_input *in, const qs_jrows *jr, int i, 
     q->gn = (short)(q->g ? blk->n : 0);
     q->gfirst = q->g ? blk->first : 0;
     // A zero diagonal (an empty row without cfm) leaves the row's force at 0.
-    const dReal D = diag > 0 ? (dReal)(in->sor_w / diag) : 0;
+    const dReal sor_w = in->warm && i == 0 ? 1 : in->sor_w;
+    const dReal D = diag > 0 ? (dReal)(sor_w / diag) : 0;
     const qs_v2 d = qs_splat(D);
     for (int e = 0; e < 3; e++) {
         q->J[e] = qs_mul(d, Jp[e]);
@@ -401,6 +407,93 @@ static void make_rows(dxArena *a, const qs_input *in, const qs_jrows *jr, qs_blo
     }
 }
 
+// ---- the warm start ------------------------------------------------------------
+
+// A contact's start: its normal and friction rows (joint-local: r[0] = 0,
+// r[1], r[2] or -1) and their directions, its entry in the world's cache,
+// and (found) the forces of the same contact in the last step, normal force
+// ln and friction force f (world frame).
+typedef struct qs_warm {
+    int r[3];
+    const dReal *t[3];
+    qs_warm_entry *entry;
+    int found;
+    dReal ln, f[3];
+} qs_warm;
+
+// Enter a contact in the cache (for the next step) and look it up in the
+// last step's (quickstep_warm.c). Returns ws->found (0 for other joints).
+static int warm_lookup(dxJoint *j, const qs_jrows *jr, qs_system *sys, qs_warm *ws)
+{
+    dVector3 point;
+    const int friction = dxJointContactWarmInfo(j, point);
+    ws->entry = NULL;
+    ws->found = 0;
+    if (friction < 0) return 0;
+    static const dReal zero[3] = { 0, 0, 0 };
+    ws->r[0] = 0;
+    ws->r[1] = (friction & 1) ? 1 : -1;
+    ws->r[2] = (friction & 2) ? 1 + (friction & 1) : -1;
+    for (int k = 0; k < 3; k++) ws->t[k] = ws->r[k] >= 0 ? jr->J + ws->r[k] * DX_ROW_SKIP : zero;
+    ws->entry = dxQuickWarmContact(sys->warm, dxJointBody(j, 0), dxJointBody(j, 1), point,
+                                   ws->t[0], ws->t[1], ws->t[2], &ws->found, &ws->ln, ws->f);
+    return ws->found;
+}
+
+// lambda[pos] = l and fc += M^-1 J^T l for row i of the joint; q: its row
+// as made (its M^-1 J^T), or NULL to work it out (a row in a block).
+QS_INLINE void start_row(const qs_jrows *jr, int i, const qs_row *q, int pos, dReal l,
+                         qs_system *sys)
+{
+    if (l == 0) return;
+    sys->lambda[pos] = l;
+    qs_v2 J[6], Mf[6], R[6];
+    const qs_v2 *M0 = q ? q->M : Mf, *M1 = q ? q->M1 : Mf + 3;
+    if (!q) row_full(jr, i, J, Mf, R);
+    const qs_v2 k = qs_splat(l);
+    dReal *f0 = sys->fc + jr->o[0], *f1 = sys->fc + jr->o[1];
+    for (int e = 0; e < 3; e++) {
+        qs_v2 x, y;
+        memcpy(&x, f0 + 2 * e, sizeof x);
+        memcpy(&y, f1 + 2 * e, sizeof y);
+        x = qs_add(x, qs_mul(k, M0[e]));
+        y = qs_add(y, qs_mul(k, M1[e]));
+        memcpy(f0 + 2 * e, &x, sizeof x);
+        memcpy(f1 + 2 * e, &y, sizeof y);
+    }
+}
+
+// After the contact's rows are made (lambda positions in pos; rows: its
+// rows in order in sys->rows, or NULL if some went into a block): the cache
+// entry learns where its forces will be; a contact found in the last step
+// starts from those forces, scaled by WARM_SCALE and projected on the rows'
+// bounds (the friction pyramid's with the scaled normal force), the friction
+// force projected on this step's friction directions; fc gets their
+// M^-1 J^T.
+static void warm_apply(const qs_jrows *jr, const int *pos, const qs_row *rows, const qs_warm *ws,
+                       qs_system *sys)
+{
+    if (!ws->entry) return;
+    int p[3];
+    for (int k = 0; k < 3; k++) p[k] = ws->r[k] >= 0 ? pos[ws->r[k]] : -1;
+    dxQuickWarmPositions(ws->entry, p);
+    if (!ws->found) return;
+    const dReal ln = WARM_SCALE * (ws->ln > 0 ? ws->ln : 0);
+    start_row(jr, 0, rows, p[0], ln, sys);
+    for (int k = 1; k < 3; k++) {
+        const int i = ws->r[k];
+        if (i < 0) continue;
+        dReal lo = jr->lo[i], hi = jr->hi[i];
+        if (jr->findex[i] >= 0) {
+            hi = dFabs(hi) * ln;
+            lo = -hi;
+        }
+        dReal l = WARM_SCALE * dCalcVectorDot3(ws->f, ws->t[k]);
+        l = l > hi ? hi : l < lo ? lo : l;
+        start_row(jr, i, rows ? rows + i : NULL, p[k], l, sys);
+    }
+}
+
 // ---- the islands ----------------------------------------------------------------
 
 // Scratch for one joint's rows and their lambda positions.
@@ -428,7 +521,7 @@ static void keep_feedback(dxArena *a, dxJoint *j, const qs_jrows *jr, const int 
 void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_system *sys)
 {
     dxArena *a = &w->arena;
-    int m = 0, max_m = 0, nfeedback = 0, nbodies = 0;
+    int m = 0, max_m = 0, nfeedback = 0, nbodies = 0, ncontacts = 0;
     for (int i = 0; i < count; i++) {
         const dxIsland *is = &islands[i];
         nbodies += is->nb + 1;   // and the island's dummy
@@ -438,8 +531,10 @@ void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_syst
             m += j->rows.m;
             if (j->rows.m > max_m) max_m = j->rows.m;
             nfeedback += j->feedback != NULL;
+            ncontacts += j->cls->type == dJointTypeContact;
         }
     }
+    sys->warm = dxQuickWarmBegin(w, ncontacts);
     sys->m = m;
     sys->nbodies = sys->nblocks = sys->nrows = sys->norder = sys->nfeedback = sys->next = 0;
     sys->lambda = DX_ARENA_ARRAY(a, dReal, m + 1);
@@ -486,7 +581,8 @@ void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *b
     const dReal fps = dRecip(h);
     dReal *rates = sys->rates + 6 * part->body0;
     dxIslandBodyRates(is, bd, fps, rates);
-    const qs_input in = { bd, rates, fps, w->qs_w, part->body0, is->nb };
+    const qs_input in = { bd, rates, fps, w->qs_w, part->body0, is->nb, 0 };
+    const qs_input in_warm = { bd, rates, fps, w->qs_w, part->body0, is->nb, 1 };
     for (int k = 0; k < is->nj; k++) {
         dxJoint *j = is->joints[k];
         jr->m = j->rows.m;
@@ -494,10 +590,16 @@ void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *b
         if (jr->m == 0) continue;
         joint_sides(&in, jr);
         for (int i = 0; i < jr->m; i++) s->pos[i] = -1;
+        qs_warm ws;
+        const qs_input *jin = warm_lookup(j, jr, sys, &ws) ? &in_warm : &in;
+        const int nblocks = sys->nblocks, nrows = sys->nrows;
         qs_jblock jb;
-        qs_block *blk = make_blocks(a, &in, jr, sys, s->pos, &sys->next, &jb);
-        make_rows(a, &in, jr, blk, blk ? &jb : NULL, sys, s->pos, &sys->next, s->done);
+        qs_block *blk = make_blocks(a, jin, jr, sys, s->pos, &sys->next, &jb);
+        make_rows(a, jin, jr, blk, blk ? &jb : NULL, sys, s->pos, &sys->next, s->done);
         if (j->feedback) keep_feedback(a, j, jr, s->pos, sys);
+        // Without blocks the joint's rows are in order and alone (not coupled).
+        const int alone = sys->nblocks == nblocks && sys->nrows - nrows == jr->m;
+        warm_apply(jr, s->pos, alone ? sys->rows + nrows : NULL, &ws, sys);
     }
     part->nblocks = sys->nblocks - part->block0;
     part->norder = sys->norder - part->order0;

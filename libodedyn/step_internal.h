@@ -54,8 +54,14 @@ int dxStepWorld(struct dxWorld *w, dReal h, const char *function, dxIslandSolver
 
 // Check the step size and find the islands (arena scratch). Returns 0 (after
 // reporting) if the step must not run.
+// Counts the step in w->step_count.
 int dxStepBegin(struct dxWorld *w, dReal h, const char *function, dxIsland **islands,
                 int *count);
+// The contact point (world frame) of a contact joint, and which of its
+// friction rows exist (bit 0: direction 1, bit 1: direction 2; they follow
+// the normal row 0 in that order); -1 for any other joint or an inert
+// contact (joint_contact.c).
+int dxJointContactWarmInfo(const dxJoint *j, dVector3 point);
 void dxStepEnd(const dxIsland *islands, int count, dReal h);
 
 void dxIslandPrepare(struct dxWorld *w, const dxIsland *is, dReal h, dxIslandBodies *out);

@@ -355,6 +355,7 @@ void dWorldStepFast1(dWorldID w, dReal stepsize, int maxiterations)
     DX_CHECK_ARG(maxiterations >= 1, return, "maxiterations must be >= 1, got %d",
                  maxiterations);
     dxArenaReset(&w->arena);
+    w->step_count++;   // (no QuickStep warm start across it)
     wake_within_depth(w);
 
     sf1_step st;

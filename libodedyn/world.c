@@ -60,6 +60,7 @@ void dWorldDestroy(dWorldID w)
     }
     while (w->bodies) dBodyDestroy(w->bodies);
     dxArenaFree(&w->arena);
+    dxWarmCacheFree(w);
     w->hdr.magic = DX_MAGIC_DEAD;
     dxPoolGive(&dx_world_pool, w);
 }
