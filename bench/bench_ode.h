@@ -101,6 +101,21 @@ static inline void bench_step(dWorldID w, bench_stepper s, dReal dt, int iterati
 #endif
 }
 
+// One timed step of a scene: collide the space through bench_near, step, empty the contact
+// group; the seconds of each part are added to *coll_s and *step_s.
+static inline void bench_timed_step(dSpaceID space, bench_contacts *con, bench_stepper s,
+                                    dReal dt, int iterations, double *coll_s, double *step_s)
+{
+    double t0 = bench_now();
+    dSpaceCollide(space, con, bench_near);
+    double t1 = bench_now();
+    bench_step(con->world, s, dt, iterations);
+    dJointGroupEmpty(con->group);
+    double t2 = bench_now();
+    *coll_s += t1 - t0;
+    *step_s += t2 - t1;
+}
+
 // Linear plus rotational kinetic energy of a body (its mass is centred at the body origin).
 static inline double bench_body_ke(dBodyID b)
 {

@@ -57,14 +57,7 @@ int main(int argc, char **argv)
     bench_contacts_init(&con, world);
     double coll_s = 0, step_s = 0;
     for (int s = 0; s < steps; s++) {
-        double t0 = bench_now();
-        dSpaceCollide(space, &con, bench_near);
-        double t1 = bench_now();
-        bench_step(world, stepper, dt, iterations);
-        dJointGroupEmpty(con.group);
-        double t2 = bench_now();
-        coll_s += t1 - t0;
-        step_s += t2 - t1;
+        bench_timed_step(space, &con, stepper, dt, iterations, &coll_s, &step_s);
     }
 
     int fallen = 0;

@@ -162,14 +162,7 @@ int main(int argc, char **argv)
     con.skip_same_data = 1;
     double coll_s = 0, step_s = 0, sep_max = 0, sep_end = 0;
     for (int s = 0; s < steps; s++) {
-        double t0 = bench_now();
-        dSpaceCollide(space, &con, bench_near);
-        double t1 = bench_now();
-        bench_step(world, stepper, dt, iterations);
-        dJointGroupEmpty(con.group);
-        double t2 = bench_now();
-        coll_s += t1 - t0;
-        step_s += t2 - t1;
+        bench_timed_step(space, &con, stepper, dt, iterations, &coll_s, &step_s);
         sep_end = 0;
         for (int i = 0; i < figures * JOINTS; i++) {
             double d = bench_joint_separation(joint[i]);
