@@ -11,6 +11,7 @@
 // first case checks that the variable selects Bullet. Every case skips (with
 // a TAP comment) when the library was built without Bullet.
 
+#include "collide_check.h"
 #include "test.h"
 
 #include <math.h>
@@ -81,40 +82,6 @@ static dGeomID make_geom(const shape *s)
         dGeomSetRotation(g, R);
     }
     return g;
-}
-
-// Inside depth of a point for a cylinder (no public function): distance to
-// the surface, positive inside, minus the distance outside.
-static dReal cylinder_point_depth(dGeomID g, const dReal *p)
-{
-    dReal r, len;
-    dGeomCylinderGetParams(g, &r, &len);
-    const dReal *c = dGeomGetPosition(g), *R = dGeomGetRotation(g);
-    dReal d[3] = { p[0] - c[0], p[1] - c[1], p[2] - c[2] }, q[3];
-    for (int i = 0; i < 3; i++) q[i] = R[i] * d[0] + R[4 + i] * d[1] + R[8 + i] * d[2];
-    dReal axial = fabs(q[2]) - len / 2, radial = sqrt(q[0] * q[0] + q[1] * q[1]) - r;
-    if (axial <= 0 && radial <= 0) return -(axial > radial ? axial : radial);
-    dReal oa = axial > 0 ? axial : 0, orad = radial > 0 ? radial : 0;
-    return -sqrt(oa * oa + orad * orad);
-}
-
-static dReal point_depth(dGeomID g, const dReal *p)
-{
-    switch (dGeomGetClass(g)) {
-    case dSphereClass: return dGeomSpherePointDepth(g, p[0], p[1], p[2]);
-    case dBoxClass: return dGeomBoxPointDepth(g, p[0], p[1], p[2]);
-    case dCapsuleClass: return dGeomCapsulePointDepth(g, p[0], p[1], p[2]);
-    case dPlaneClass: return dGeomPlanePointDepth(g, p[0], p[1], p[2]);
-    default: return cylinder_point_depth(g, p);
-    }
-}
-
-static int deepest(const dContactGeom *c, int n)
-{
-    int k = 0;
-    for (int i = 1; i < n; i++)
-        if (c[i].depth > c[k].depth) k = i;
-    return k;
 }
 
 // dCollide(a, b) with the checks every contact gets: count within max, g1 =

@@ -13,6 +13,7 @@
 // which the first case checks. Without a backend besides native the cases
 // are skipped.
 
+#include "collide_check.h"
 #include "test.h"
 
 #include <math.h>
@@ -167,14 +168,6 @@ static int skip_without_backends(const char *what)
     return test_skip("no collision backend besides native is built");
 }
 
-static int deepest(const dContactGeom *c, int n)
-{
-    int k = 0;
-    for (int i = 1; i < n; i++)
-        if (c[i].depth > c[k].depth) k = i;
-    return k;
-}
-
 static double angle_between(const dReal *a, const dReal *b)
 {
     double dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
@@ -208,32 +201,6 @@ static int untouched(const void *p, size_t size)
 }
 
 // ---- shapes --------------------------------------------------------------------
-
-// Inside depth of a point for a cylinder (ODE has no public function):
-// distance to the surface, positive inside, minus the distance outside.
-static double cylinder_point_depth(dGeomID g, const dReal *p)
-{
-    dReal r, len;
-    dGeomCylinderGetParams(g, &r, &len);
-    const dReal *c = dGeomGetPosition(g), *R = dGeomGetRotation(g);
-    double d[3] = { p[0] - c[0], p[1] - c[1], p[2] - c[2] }, q[3];
-    for (int i = 0; i < 3; i++) q[i] = R[i] * d[0] + R[4 + i] * d[1] + R[8 + i] * d[2];
-    double radial = sqrt(q[0] * q[0] + q[1] * q[1]) - r, axial = fabs(q[2]) - len / 2;
-    if (radial <= 0 && axial <= 0) return -(radial > axial ? radial : axial);
-    double ro = radial > 0 ? radial : 0, ao = axial > 0 ? axial : 0;
-    return -sqrt(ro * ro + ao * ao);
-}
-
-static double point_depth(dGeomID g, const dReal *p)
-{
-    switch (dGeomGetClass(g)) {
-    case dSphereClass: return dGeomSpherePointDepth(g, p[0], p[1], p[2]);
-    case dBoxClass: return dGeomBoxPointDepth(g, p[0], p[1], p[2]);
-    case dCapsuleClass: return dGeomCapsulePointDepth(g, p[0], p[1], p[2]);
-    case dPlaneClass: return dGeomPlanePointDepth(g, p[0], p[1], p[2]);
-    default: return cylinder_point_depth(g, p);
-    }
-}
 
 // A geom of the class with random sizes (planes: a random unit normal and
 // offset; the others at the origin, randomly turned).

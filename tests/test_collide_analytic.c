@@ -8,6 +8,7 @@
 // shapes, the separation rule (moving g1 by depth along the normal parts the
 // pair) is checked, and seeded random poses repeat the general checks.
 
+#include "collide_check.h"
 #include "test.h"
 
 #include <math.h>
@@ -22,47 +23,6 @@ enum { MAXC = 16 };
 static const unsigned char SENTINEL = 0xA5;
 
 // ---- helpers ----------------------------------------------------------------
-
-static void set_rot(dGeomID g, dReal ax, dReal ay, dReal az, dReal angle)
-{
-    dMatrix3 R;
-    dRFromAxisAndAngle(R, ax, ay, az, angle);
-    dGeomSetRotation(g, R);
-}
-
-// Inside depth of a point for a cylinder (no public function): distance to
-// the surface, positive inside, minus the distance outside.
-static dReal cylinder_point_depth(dGeomID g, const dReal *p)
-{
-    dReal r, len;
-    dGeomCylinderGetParams(g, &r, &len);
-    const dReal *c = dGeomGetPosition(g), *R = dGeomGetRotation(g);
-    dReal d[3] = { p[0] - c[0], p[1] - c[1], p[2] - c[2] }, q[3];
-    for (int i = 0; i < 3; i++) q[i] = R[i] * d[0] + R[4 + i] * d[1] + R[8 + i] * d[2];
-    dReal s = sqrt(q[0] * q[0] + q[1] * q[1]), ax = fabs(q[2]) - len / 2, rad = s - r;
-    if (ax <= 0 && rad <= 0) return ax > rad ? -ax : -rad;
-    dReal oa = ax > 0 ? ax : 0, orad = rad > 0 ? rad : 0;
-    return -sqrt(oa * oa + orad * orad);
-}
-
-static dReal point_depth(dGeomID g, const dReal *p)
-{
-    switch (dGeomGetClass(g)) {
-    case dSphereClass: return dGeomSpherePointDepth(g, p[0], p[1], p[2]);
-    case dBoxClass: return dGeomBoxPointDepth(g, p[0], p[1], p[2]);
-    case dCapsuleClass: return dGeomCapsulePointDepth(g, p[0], p[1], p[2]);
-    case dPlaneClass: return dGeomPlanePointDepth(g, p[0], p[1], p[2]);
-    default: return cylinder_point_depth(g, p);
-    }
-}
-
-static int deepest(const dContactGeom *c, int n)
-{
-    int k = 0;
-    for (int i = 1; i < n; i++)
-        if (c[i].depth > c[k].depth) k = i;
-    return k;
-}
 
 static int untouched(const void *p, size_t size)
 {

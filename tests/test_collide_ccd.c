@@ -11,6 +11,7 @@
 // with a brute-force search over directions. Last, dynamics: cylinders
 // standing, stacked and lying on a fixed box stay put.
 
+#include "collide_check.h"
 #include "test.h"
 
 #include <math.h>
@@ -30,13 +31,6 @@ enum { MAXC = 48 };
 static const unsigned char SENTINEL = 0xA5;
 
 // ---- geometry helpers ---------------------------------------------------------
-
-static void set_rot(dGeomID g, dReal ax, dReal ay, dReal az, dReal angle)
-{
-    dMatrix3 R;
-    dRFromAxisAndAngle(R, ax, ay, az, angle);
-    dGeomSetRotation(g, R);
-}
 
 // p in g's frame.
 static void to_local(dGeomID g, const dReal *p, double q[3])
@@ -60,7 +54,7 @@ static double cylinder_point_depth(dGeomID g, const dReal *p)
     return -sqrt(oa * oa + orad * orad);
 }
 
-static double point_depth(dGeomID g, const dReal *p)
+static double point_depth_double(dGeomID g, const dReal *p)
 {
     switch (dGeomGetClass(g)) {
     case dBoxClass: return dGeomBoxPointDepth(g, p[0], p[1], p[2]);
@@ -136,14 +130,6 @@ static double brute_force_depth(dGeomID a, dGeomID b)
     return best;
 }
 
-static int deepest(const dContactGeom *c, int n)
-{
-    int k = 0;
-    for (int i = 1; i < n; i++)
-        if (c[i].depth > c[k].depth) k = i;
-    return k;
-}
-
 static int untouched(const void *p, size_t size)
 {
     const unsigned char *b = p;
@@ -182,7 +168,7 @@ static int collide_checked(dGeomID a, dGeomID b, int max, dContactGeom *c, doubl
         if (!(fabs(dCalcVectorLength3(k->normal) - 1) <= EPS)) FAIL("contact %d: normal", i);
         for (int j = 0; j < 3; j++)
             if (!(fabs(k->normal[j] - c[0].normal[j]) <= EPS)) FAIL("contact %d: other normal", i);
-        double da = point_depth(a, k->pos), db = point_depth(b, k->pos);
+        double da = point_depth_double(a, k->pos), db = point_depth_double(b, k->pos);
         if (!(da >= -tol && da <= most + tol && db >= -tol && db <= most + tol))
             FAIL("contact %d: pos %g, %g deep in the shapes (deepest %g)", i, da, db, most);
     }

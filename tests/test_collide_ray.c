@@ -13,6 +13,7 @@
 // march along the ray for the first crossing. Also: ray against ray, a ray
 // in a space, the ray's setters and a ray on a body.
 
+#include "collide_check.h"
 #include "test.h"
 
 #include <math.h>
@@ -41,13 +42,6 @@ static dGeomID make_ray(dReal length, dReal px, dReal py, dReal pz, dReal dx, dR
     dGeomID r = dCreateRay(0, length);
     dGeomRaySet(r, px, py, pz, dx, dy, dz);
     return r;
-}
-
-static void set_rot(dGeomID g, dReal ax, dReal ay, dReal az, dReal angle)
-{
-    dMatrix3 R;
-    dRFromAxisAndAngle(R, ax, ay, az, angle);
-    dGeomSetRotation(g, R);
 }
 
 static int untouched(const void *p, size_t size)
@@ -480,31 +474,6 @@ static void random_rotation(dGeomID g)
     dQuaternion q = { rnd(-1, 1), rnd(-1, 1), rnd(-1, 1), rnd(-1, 1) };
     dNormalize4(q);
     dGeomSetQuaternion(g, q);
-}
-
-// Depth of p in a cylinder (no public function): positive inside.
-static dReal cylinder_point_depth(dGeomID g, const dReal *p)
-{
-    dReal r, len;
-    dGeomCylinderGetParams(g, &r, &len);
-    const dReal *c = dGeomGetPosition(g), *R = dGeomGetRotation(g);
-    dReal d[3] = { p[0] - c[0], p[1] - c[1], p[2] - c[2] }, q[3];
-    for (int i = 0; i < 3; i++) q[i] = R[i] * d[0] + R[4 + i] * d[1] + R[8 + i] * d[2];
-    dReal s = sqrt(q[0] * q[0] + q[1] * q[1]), ax = fabs(q[2]) - len / 2, rad = s - r;
-    if (ax <= 0 && rad <= 0) return ax > rad ? -ax : -rad;
-    dReal oa = ax > 0 ? ax : 0, orad = rad > 0 ? rad : 0;
-    return -sqrt(oa * oa + orad * orad);
-}
-
-static dReal point_depth(dGeomID g, const dReal *p)
-{
-    switch (dGeomGetClass(g)) {
-    case dSphereClass: return dGeomSpherePointDepth(g, p[0], p[1], p[2]);
-    case dBoxClass: return dGeomBoxPointDepth(g, p[0], p[1], p[2]);
-    case dCapsuleClass: return dGeomCapsulePointDepth(g, p[0], p[1], p[2]);
-    case dPlaneClass: return dGeomPlanePointDepth(g, p[0], p[1], p[2]);
-    default: return cylinder_point_depth(g, p);
-    }
 }
 
 static dReal depth_along(dGeomID g, const dReal *s, const dReal *u, double t)

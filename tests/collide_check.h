@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// collide_check.h -- helpers the collision tests share: posing a geom, the depth
+// of a point inside any geom of the native classes, the deepest of a set of contacts.
+
+#ifndef TEST_COLLIDE_CHECK_H
+#define TEST_COLLIDE_CHECK_H
+
+#include <ode/ode.h>
+
+// Rotate g by `angle` about the axis (ax, ay, az).
+void set_rot(dGeomID g, dReal ax, dReal ay, dReal az, dReal angle);
+// Depth of point p in g: positive inside, minus the distance outside (for the
+// cylinder, which has no public function, computed here; the other classes
+// use their ...PointDepth function).
+dReal point_depth(dGeomID g, const dReal *p);
+// Index of the deepest of n contacts.
+int deepest(const dContactGeom *c, int n);
+
+#endif
