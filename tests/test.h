@@ -58,4 +58,10 @@ int test_captured_count(void);
 int test_captured_contains(const char *text);   // in any captured report
 const char *test_captured_last(void);
 
+// Count the allocations made through ODE's alloc and realloc handlers from
+// now on; test_allocations_counted puts the default handlers back and
+// returns the count.
+void test_count_allocations(void);
+int test_allocations_counted(void);
+
 #endif

@@ -10,14 +10,6 @@
 #include <stdint.h>
 #include <string.h>
 
-static int allocs;
-
-static void *counting_alloc(dsizeint size)
-{
-    allocs++;
-    return malloc(size);
-}
-
 static int test_allocations_are_aligned_and_distinct(void)
 {
     dxArena a;
@@ -72,16 +64,13 @@ static int test_steady_workload_allocates_nothing_after_first_reset(void)
 {
     dxArena a;
     dxArenaInit(&a);
-    dSetAllocHandler(counting_alloc);
-
     for (int step = 0; step < 5; step++) {
         dxArenaReset(&a);
-        if (step == 2) allocs = 0;   // steps 0 and 1 size the arena
+        if (step == 2) test_count_allocations();   // steps 0 and 1 size the arena
         for (int k = 0; k < 50; k++) dxArenaAlloc(&a, 40000);   // 2 MB in pieces
     }
 
-    CHECK(allocs == 0);
-    dSetAllocHandler(0);
+    CHECK(test_allocations_counted() == 0);
     dxArenaFree(&a);
     return 0;
 }

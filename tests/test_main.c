@@ -6,6 +6,7 @@
 
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define MAX_REPORTS 64
@@ -83,4 +84,33 @@ int main(void)
         fflush(stdout);
     }
     return failed ? 1 : 0;
+}
+
+static int allocations_counted;
+
+static void *counting_alloc(dsizeint size)
+{
+    allocations_counted++;
+    return malloc(size ? size : 1);
+}
+
+static void *counting_realloc(void *p, dsizeint old_size, dsizeint size)
+{
+    (void)old_size;
+    allocations_counted++;
+    return realloc(p, size ? size : 1);
+}
+
+void test_count_allocations(void)
+{
+    allocations_counted = 0;
+    dSetAllocHandler(counting_alloc);
+    dSetReallocHandler(counting_realloc);
+}
+
+int test_allocations_counted(void)
+{
+    dSetAllocHandler(0);
+    dSetReallocHandler(0);
+    return allocations_counted;
 }

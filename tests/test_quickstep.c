@@ -9,7 +9,6 @@
 
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 
 #define G 9.81
 #define PI 3.14159265358979323846
@@ -903,21 +902,6 @@ static int test_bad_step_size_changes_nothing(void)
 
 // ---- memory ------------------------------------------------------------------------
 
-static int allocations;
-
-static void *counting_alloc(dsizeint size)
-{
-    allocations++;
-    return malloc(size ? size : 1);
-}
-
-static void *counting_realloc(void *p, dsizeint old_size, dsizeint size)
-{
-    (void)old_size;
-    allocations++;
-    return realloc(p, size ? size : 1);
-}
-
 // After two warm-up steps a step allocates nothing: all scratch comes from
 // the world's arena, which has grown to its peak size.
 static int test_warm_step_allocates_nothing(void)
@@ -925,8 +909,6 @@ static int test_warm_step_allocates_nothing(void)
     enum { N = 30 };
     dBodyID rods[N];
     dJointID joints[N];
-    dSetAllocHandler(counting_alloc);
-    dSetReallocHandler(counting_realloc);
     dWorldID w = dWorldCreate();
     dWorldSetGravity(w, 0, 0, -G);
     make_chain(w, N, 0.1, PI / 4, rods, joints);
@@ -936,12 +918,10 @@ static int test_warm_step_allocates_nothing(void)
     dJointSetFeedback(joints[0], &fb);
     dWorldQuickStep(w, 0.01);
     dWorldQuickStep(w, 0.01);
-    allocations = 0;
+    test_count_allocations();
     for (int s = 0; s < 10; s++) dWorldQuickStep(w, 0.01);
-    int counted = allocations;
+    int counted = test_allocations_counted();
     dWorldDestroy(w);
-    dSetAllocHandler(0);
-    dSetReallocHandler(0);
     CHECK(counted == 0);
     return 0;
 }

@@ -460,26 +460,6 @@ static int test_one_geom_against_a_big_space_costs_few_tests(void)
     return 0;
 }
 
-// Allocation counter for the steady-state check.
-static int n_allocs;
-static void *counting_alloc(dsizeint size)
-{
-    n_allocs++;
-    return malloc(size);
-}
-static void *counting_realloc(void *p, dsizeint oldsize, dsizeint newsize)
-{
-    (void)oldsize;
-    n_allocs++;
-    return realloc(p, newsize);
-}
-static void default_allocator(void)
-{
-    dSetAllocHandler(0);
-    dSetReallocHandler(0);
-    dSetFreeHandler(0);
-}
-
 static int test_collide_allocates_nothing_in_steady_state(void)
 {
     for (int t = 0; t < N_TYPES; t++) {
@@ -489,9 +469,7 @@ static int test_collide_allocates_nothing_in_steady_state(void)
         pairs got = { 0 };
         dSpaceCollide(s, &got, record);   // grows the scratch
         dSpaceCollide2(g[5], (dGeomID)s, &got, record);
-        n_allocs = 0;
-        dSetAllocHandler(counting_alloc);
-        dSetReallocHandler(counting_realloc);
+        test_count_allocations();
 
         for (int step = 0; step < 3; step++) {
             for (int i = 1; i < 500; i += 7) {
@@ -503,8 +481,7 @@ static int test_collide_allocates_nothing_in_steady_state(void)
             dSpaceCollide2(g[5], (dGeomID)s, &got, record);
         }
 
-        default_allocator();
-        CHECK(n_allocs == 0);
+        CHECK(test_allocations_counted() == 0);
         pairs_free(&got);
         dSpaceDestroy(s);
     }

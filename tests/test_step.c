@@ -504,14 +504,6 @@ static int test_long_chain_steps_without_overflowing_the_stack(void)
     return 0;
 }
 
-static int allocations;
-
-static void *counting_alloc(dsizeint size)
-{
-    allocations++;
-    return malloc(size);
-}
-
 static int test_warm_step_allocates_nothing(void)
 {
     dWorldID w = world_with_gravity();
@@ -529,12 +521,9 @@ static int test_warm_step_allocates_nothing(void)
     }
     for (int i = 0; i < 3; i++) dWorldStep(w, 0.01);   // the arena finds its size
 
-    dSetAllocHandler(counting_alloc);
-    allocations = 0;
+    test_count_allocations();
     for (int i = 0; i < 5; i++) dWorldStep(w, 0.01);
-    dSetAllocHandler(0);
-
-    CHECK(allocations == 0);
+    CHECK(test_allocations_counted() == 0);
     dWorldDestroy(w);
     return 0;
 }

@@ -10,7 +10,6 @@
 
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 
 #define G 9.81
 #define PI 3.14159265358979323846
@@ -609,13 +608,6 @@ static int test_bad_input_is_reported_and_changes_nothing(void)
     return 0;
 }
 
-static int alloc_calls;
-static void *counting_alloc(dsizeint size)
-{
-    alloc_calls++;
-    return malloc(size);
-}
-
 static int test_steady_state_allocates_nothing(void)
 {
     enum { LINKS = 30 };
@@ -635,13 +627,9 @@ static int test_steady_state_allocates_nothing(void)
     }
     dWorldStepFast1(w, 0.01, 10);   // warm up: the arena grows to its peak
     dWorldStepFast1(w, 0.01, 10);
-    dSetAllocHandler(counting_alloc);
-    alloc_calls = 0;
-
+    test_count_allocations();
     for (int i = 0; i < 20; i++) dWorldStepFast1(w, 0.01, 10);
-
-    dSetAllocHandler(0);
-    CHECK(alloc_calls == 0);
+    CHECK(test_allocations_counted() == 0);
     CHECK(isfinite(dBodyGetPosition(prev)[2]));
     dWorldDestroy(w);
     return 0;

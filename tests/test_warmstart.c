@@ -16,7 +16,6 @@
 
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 #define G 9.81
@@ -286,27 +285,10 @@ static int test_independent_of_other_islands(void)
     return 0;
 }
 
-static int allocations;
-
-static void *counting_alloc(dsizeint size)
-{
-    allocations++;
-    return malloc(size ? size : 1);
-}
-
-static void *counting_realloc(void *p, dsizeint old_size, dsizeint size)
-{
-    (void)old_size;
-    allocations++;
-    return realloc(p, size ? size : 1);
-}
-
 // Contacts are made anew every step, their cache is reused: after two
 // warm-up steps a step allocates nothing.
 static int test_cache_does_not_grow(void)
 {
-    dSetAllocHandler(counting_alloc);
-    dSetReallocHandler(counting_realloc);
     stack s;
     stack_make(&s, world(), 6, 0, 0);
     stack_step(&s, 0.01, 0, 0);
@@ -314,12 +296,10 @@ static int test_cache_does_not_grow(void)
     // The joint group keeps its chunks: make the contacts once more before counting.
     stack_contacts(&s, 0);
     dJointGroupEmpty(s.g);
-    allocations = 0;
+    test_count_allocations();
     for (int t = 0; t < 50; t++) stack_step(&s, 0.01, 0, 0);
-    const int counted = allocations;
+    const int counted = test_allocations_counted();
     stack_destroy(&s);
-    dSetAllocHandler(0);
-    dSetReallocHandler(0);
     CHECK(counted == 0);
     return 0;
 }
