@@ -27,35 +27,17 @@
 //   3e-10 (more steps than the other pairs, so a wider margin).
 
 #include "diff_print.h"
+#include "diff_random.h"
 
 #include <math.h>
 
 enum { SCENES = 150, MAXC = 16 };
 
-static unsigned long long rng_state;
-
-static double rnd(double lo, double hi)
-{
-    rng_state = rng_state * 6364136223846793005ull + 1442695040888963407ull;
-    return lo + (hi - lo) * (double)(rng_state >> 11) / 9007199254740992.0;
-}
-
-// A random pose, with the rotation built here from a random unit
-// quaternion so that both libraries get the very same matrix.
+// A random pose (the rotation the same in both builds: diff_random.h).
 static void random_pose(dGeomID g)
 {
     dGeomSetPosition(g, rnd(-0.75, 0.75), rnd(-0.75, 0.75), rnd(-0.75, 0.75));
-    double q[4], l = 0;
-    for (int i = 0; i < 4; i++) {
-        q[i] = rnd(-1, 1);
-        l += q[i] * q[i];
-    }
-    l = sqrt(l) + 1e-12;
-    double w = q[0] / l, x = q[1] / l, y = q[2] / l, z = q[3] / l;
-    dMatrix3 R = { 1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y), 0,
-                   2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x), 0,
-                   2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y), 0 };
-    dGeomSetRotation(g, R);
+    random_geom_rotation(g);
 }
 
 static dGeomID random_geom(int cls)

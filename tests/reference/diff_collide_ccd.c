@@ -40,36 +40,12 @@
 // of 50 per pair).
 
 #include "diff_print.h"
+#include "diff_random.h"
 
 #include <math.h>
 #include <string.h>
 
 enum { SCENES = 150, APART = 50, MAXC = 16 };
-
-static unsigned long long rng_state;
-
-static double rnd(double lo, double hi)
-{
-    rng_state = rng_state * 6364136223846793005ull + 1442695040888963407ull;
-    return lo + (hi - lo) * (double)(rng_state >> 11) / 9007199254740992.0;
-}
-
-// A random rotation from a random unit quaternion (the same matrix in both
-// builds).
-static void random_rotation(dGeomID g)
-{
-    double q[4], l = 0;
-    for (int i = 0; i < 4; i++) {
-        q[i] = rnd(-1, 1);
-        l += q[i] * q[i];
-    }
-    l = sqrt(l) + 1e-12;
-    double w = q[0] / l, x = q[1] / l, y = q[2] / l, z = q[3] / l;
-    dMatrix3 R = { 1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y), 0,
-                   2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x), 0,
-                   2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y), 0 };
-    dGeomSetRotation(g, R);
-}
 
 // m in g's frame.
 static void local_dir(dGeomID g, const double m[3], double l[3])
@@ -187,8 +163,8 @@ static dGeomID random_other(int cls)
 static void place(dGeomID a, dGeomID b, double gap)
 {
     dGeomSetPosition(a, rnd(-0.5, 0.5), rnd(-0.5, 0.5), rnd(-0.5, 0.5));
-    random_rotation(a);
-    random_rotation(b);
+    random_geom_rotation(a);
+    random_geom_rotation(b);
     double u[3] = { rnd(-1, 1), rnd(-1, 1), rnd(-1, 1) + 1e-9 };
     double l = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
     double mu[3] = { -u[0] / l, -u[1] / l, -u[2] / l }, pa[3], pb[3];

@@ -49,6 +49,7 @@
 // corners (parallel edges: zero cross products).
 
 #include "diff_print.h"
+#include "diff_random.h"
 
 #include <math.h>
 
@@ -56,34 +57,9 @@ enum { SCENES = 300, UTIL_SCENES = 200 };
 
 static const double AMBIGUOUS = 1e-6;
 
-static unsigned long long rng_state;
-
-static double rnd(double lo, double hi)
-{
-    rng_state = rng_state * 6364136223846793005ull + 1442695040888963407ull;
-    return lo + (hi - lo) * (double)(rng_state >> 11) / 9007199254740992.0;
-}
-
 static double dot3(const double *a, const double *b)
 {
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-// A random rotation from a random unit quaternion, built here so that both
-// libraries get the very same matrix.
-static void random_rotation(dMatrix3 R)
-{
-    double q[4], l = 0;
-    for (int i = 0; i < 4; i++) {
-        q[i] = rnd(-1, 1);
-        l += q[i] * q[i];
-    }
-    l = sqrt(l) + 1e-12;
-    double w = q[0] / l, x = q[1] / l, y = q[2] / l, z = q[3] / l;
-    dMatrix3 M = { 1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y), 0,
-                   2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x), 0,
-                   2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y), 0 };
-    for (int i = 0; i < 12; i++) R[i] = M[i];
 }
 
 static void random_unit(double u[3])
