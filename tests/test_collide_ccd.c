@@ -12,6 +12,7 @@
 // standing, stacked and lying on a fixed box stay put.
 
 #include "collide_check.h"
+#include "convex_depth.h"
 #include "test.h"
 
 #include <math.h>
@@ -61,73 +62,6 @@ static double point_depth_double(dGeomID g, const dReal *p)
     case dCapsuleClass: return dGeomCapsulePointDepth(g, p[0], p[1], p[2]);
     default: return cylinder_point_depth(g, p);
     }
-}
-
-// The support value max over x in g of m . x (this test's own, from the
-// public parameters: box corners, cylinder rim, capsule ends).
-static double extent(dGeomID g, const double m[3])
-{
-    const dReal *c = dGeomGetPosition(g), *R = dGeomGetRotation(g);
-    double l[3], e = m[0] * c[0] + m[1] * c[1] + m[2] * c[2];
-    for (int k = 0; k < 3; k++) l[k] = m[0] * R[k] + m[1] * R[4 + k] + m[2] * R[8 + k];
-    dReal r, len;
-    switch (dGeomGetClass(g)) {
-    case dBoxClass: {
-        dVector3 side;
-        dGeomBoxGetLengths(g, side);
-        for (int k = 0; k < 3; k++) e += side[k] / 2 * fabs(l[k]);
-        return e;
-    }
-    case dCapsuleClass:
-        dGeomCapsuleGetParams(g, &r, &len);
-        return e + len / 2 * fabs(l[2]) + r * sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
-    default:
-        dGeomCylinderGetParams(g, &r, &len);
-        return e + len / 2 * fabs(l[2]) + r * sqrt(l[0] * l[0] + l[1] * l[1]);
-    }
-}
-
-// The translation of a along the unit n that parts it from b.
-static double depth_along(dGeomID a, dGeomID b, const double n[3])
-{
-    double m[3] = { -n[0], -n[1], -n[2] };
-    return extent(b, n) + extent(a, m);
-}
-
-// The least depth_along over 20000 directions spread on the sphere (a
-// Fibonacci lattice), each then improved by a few random local steps: an
-// independent estimate of the penetration depth (from above).
-static double brute_force_depth(dGeomID a, dGeomID b)
-{
-    enum { N = 20000 };
-    double best = INFINITY, bn[3] = { 0, 0, 1 };
-    for (int i = 0; i < N; i++) {
-        double z = 1 - 2 * (i + 0.5) / N, r = sqrt(1 - z * z), phi = i * 2.399963229728653;
-        double n[3] = { r * cos(phi), r * sin(phi), z }, f = depth_along(a, b, n);
-        if (f < best) {
-            best = f;
-            memcpy(bn, n, sizeof bn);
-        }
-    }
-    unsigned long long state = 12345;
-    double step = 0.03;
-    for (int it = 0; it < 3000 && step > 1e-8; it++) {
-        double m[3], l = 0;
-        for (int k = 0; k < 3; k++) {
-            state = state * 6364136223846793005ull + 1442695040888963407ull;
-            m[k] = bn[k] + step * ((double)(state >> 11) / 4503599627370496.0 - 1);
-            l += m[k] * m[k];
-        }
-        for (int k = 0; k < 3; k++) m[k] /= sqrt(l);
-        double f = depth_along(a, b, m);
-        if (f < best) {
-            best = f;
-            memcpy(bn, m, sizeof bn);
-        } else if (it % 30 == 29) {
-            step *= 0.6;
-        }
-    }
-    return best;
 }
 
 static int untouched(const void *p, size_t size)
@@ -209,7 +143,7 @@ static int check_pair(dGeomID a, dGeomID b, int max, dContactGeom *ab, double to
     if (n == 0) return 0;
     const dContactGeom *k = &ab[deepest(ab, n)];
     double nd[3] = { k->normal[0], k->normal[1], k->normal[2] };
-    double along = depth_along(a, b, nd);
+    double along = convex_depth_along(a, b, nd);
     if (!(k->depth <= along + EPS && k->depth >= along - dtol))
         FAIL("deepest depth %.17g, the translation along its normal %.17g", k->depth, along);
     double left = depth_after_separation(a, b, k);
@@ -352,7 +286,7 @@ static int test_box_corner_and_face_on_cylinder(void)
     dMultiply0(R, R2, R1, 3, 3, 3);
     dGeomSetRotation(box, R);
     // Its corner furthest along -x.
-    double m[3] = { -1, 0, 0 }, reach = extent(box, m);
+    double m[3] = { -1, 0, 0 }, far[3], reach = convex_support(box, m, far);
     dGeomSetPosition(box, 0.48 + reach, 0, 0);
     dContactGeom c[MAXC];
     int n = check_pair(cyl, box, MAXC, c, EPS, EPS);
@@ -451,7 +385,7 @@ static int test_cylinder_rim_against_rim(void)
     CHECK(n >= 1);
     double d = c[deepest(c, n)].depth;
     CHECK(d > 0.01);
-    CHECK(d <= brute_force_depth(a, b) + 1e-9);
+    CHECK(d <= convex_brute_force_depth(a, b) + 1e-9);
     dGeomDestroy(a);
     dGeomDestroy(b);
     return 0;
@@ -630,13 +564,13 @@ static int random_scenes(int cls, unsigned long long seed)
             double d = c[deepest(c, n)].depth;
             CHECK_NEAR(c1[0].depth, d, EPS);
             CHECK_NEAR(c4[deepest(c4, n4)].depth, d, EPS);
-            double bf = brute_force_depth(a, b);
+            double bf = convex_brute_force_depth(a, b);
             if (d - bf > worst) worst = d - bf;
             CHECK(d <= bf + 0.01 * (bf > 0.1 ? bf : 0.1));
         } else {
             // Apart: the brute-force search finds a direction of negative
             // depth (a separating direction), or at most a graze.
-            CHECK(brute_force_depth(a, b) < 1e-6);
+            CHECK(convex_brute_force_depth(a, b) < 1e-6);
         }
         dGeomDestroy(a);
         dGeomDestroy(b);

@@ -41,99 +41,12 @@
 
 #include "diff_print.h"
 #include "diff_random.h"
+#include "../convex_depth.h"
 
 #include <math.h>
 #include <string.h>
 
 enum { SCENES = 150, APART = 50, MAXC = 16 };
-
-// m in g's frame.
-static void local_dir(dGeomID g, const double m[3], double l[3])
-{
-    const dReal *R = dGeomGetRotation(g);
-    for (int k = 0; k < 3; k++) l[k] = m[0] * R[k] + m[1] * R[4 + k] + m[2] * R[8 + k];
-}
-
-// The point of g furthest along m, and its support value m . x.
-static double support(dGeomID g, const double m[3], double out[3])
-{
-    const dReal *c = dGeomGetPosition(g), *R = dGeomGetRotation(g);
-    double l[3], w[3] = { 0, 0, 0 };
-    local_dir(g, m, l);
-    dReal r, len;
-    switch (dGeomGetClass(g)) {
-    case dBoxClass: {
-        dVector3 side;
-        dGeomBoxGetLengths(g, side);
-        for (int k = 0; k < 3; k++) w[k] = (l[k] < 0 ? -1 : 1) * side[k] / 2;
-        break;
-    }
-    case dCylinderClass: {
-        dGeomCylinderGetParams(g, &r, &len);
-        double q = sqrt(l[0] * l[0] + l[1] * l[1]);
-        if (q > 0) {
-            w[0] = r * l[0] / q;
-            w[1] = r * l[1] / q;
-        }
-        w[2] = (l[2] < 0 ? -1 : 1) * len / 2;
-        break;
-    }
-    default: {
-        dGeomCapsuleGetParams(g, &r, &len);
-        double q = sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
-        for (int k = 0; k < 3; k++) w[k] = r * l[k] / q;
-        w[2] += (l[2] < 0 ? -1 : 1) * len / 2;
-        break;
-    }
-    }
-    double h = 0;
-    for (int i = 0; i < 3; i++) {
-        out[i] = c[i] + R[4 * i] * w[0] + R[4 * i + 1] * w[1] + R[4 * i + 2] * w[2];
-        h += m[i] * out[i];
-    }
-    return h;
-}
-
-// The translation of a along the unit n that parts it from b.
-static double depth_along(dGeomID a, dGeomID b, const double n[3])
-{
-    double m[3] = { -n[0], -n[1], -n[2] }, p[3];
-    return support(b, n, p) + support(a, m, p);
-}
-
-// The brute-force least depth (negative: apart by about that much).
-static double brute_force_depth(dGeomID a, dGeomID b)
-{
-    enum { N = 20000 };
-    double best = INFINITY, bn[3] = { 0, 0, 1 };
-    for (int i = 0; i < N; i++) {
-        double z = 1 - 2 * (i + 0.5) / N, r = sqrt(1 - z * z), phi = i * 2.399963229728653;
-        double n[3] = { r * cos(phi), r * sin(phi), z }, f = depth_along(a, b, n);
-        if (f < best) {
-            best = f;
-            memcpy(bn, n, sizeof bn);
-        }
-    }
-    unsigned long long state = 99;
-    double step = 0.03;
-    for (int it = 0; it < 4000 && step > 1e-9; it++) {
-        double m[3], l = 0;
-        for (int k = 0; k < 3; k++) {
-            state = state * 6364136223846793005ull + 1442695040888963407ull;
-            m[k] = bn[k] + step * ((double)(state >> 11) / 4503599627370496.0 - 1);
-            l += m[k] * m[k];
-        }
-        for (int k = 0; k < 3; k++) m[k] /= sqrt(l);
-        double f = depth_along(a, b, m);
-        if (f < best) {
-            best = f;
-            memcpy(bn, m, sizeof bn);
-        } else if (it % 30 == 29) {
-            step *= 0.6;
-        }
-    }
-    return best;
-}
 
 // The smaller of the shape's extents (box: least side; cylinder: diameter
 // or length; capsule: diameter).
@@ -169,8 +82,8 @@ static void place(dGeomID a, dGeomID b, double gap)
     double l = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
     double mu[3] = { -u[0] / l, -u[1] / l, -u[2] / l }, pa[3], pb[3];
     for (int i = 0; i < 3; i++) u[i] /= l;
-    support(a, u, pa);
-    support(b, mu, pb);
+    convex_support(a, u, pa);
+    convex_support(b, mu, pb);
     const dReal *cb = dGeomGetPosition(b);
     dGeomSetPosition(b, cb[0] + pa[0] + gap * u[0] - pb[0], cb[1] + pa[1] + gap * u[1] - pb[1],
                      cb[2] + pa[2] + gap * u[2] - pb[2]);
@@ -202,7 +115,7 @@ static void pair_scenes(const char *pair, int cls, unsigned long long seed, doub
         if (apart) {
             snprintf(name, sizeof name, "%s_apart_%d", pair, s);
             diff_value(name, 0, touching);
-        } else if (fabs(brute_force_depth(a, b)) >= 1e-3) {
+        } else if (fabs(convex_brute_force_depth(a, b)) >= 1e-3) {
             snprintf(name, sizeof name, "%s_touch_%d", pair, s);
             diff_value(name, touch_tol, touching);
             snprintf(name, sizeof name, "%s_depth_%d", pair, s);
