@@ -46,3 +46,11 @@ int deepest(const dContactGeom *c, int n)
         if (c[i].depth > c[k].depth) k = i;
     return k;
 }
+
+unsigned long long rng_state;
+
+double rnd(double lo, double hi)
+{
+    rng_state = rng_state * 6364136223846793005ull + 1442695040888963407ull;
+    return lo + (hi - lo) * (double)(rng_state >> 11) / 9007199254740992.0;
+}

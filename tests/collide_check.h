@@ -17,4 +17,9 @@ dReal point_depth(dGeomID g, const dReal *p);
 // Index of the deepest of n contacts.
 int deepest(const dContactGeom *c, int n);
 
+// The random poses of the tests: a 64-bit LCG, seeded by setting rng_state.
+extern unsigned long long rng_state;
+// Uniform in [lo, hi).
+double rnd(double lo, double hi);
+
 #endif

@@ -43,6 +43,13 @@ void test_fail(const char *file, int line, const char *fmt, ...);
             return 1; \
         } \
     } while (0)
+// CHECK_NEAR on each component of a 3-vector.
+#define CHECK_VEC(v, x, y, z, tol) \
+    do { \
+        CHECK_NEAR((v)[0], x, tol); \
+        CHECK_NEAR((v)[1], y, tol); \
+        CHECK_NEAR((v)[2], z, tol); \
+    } while (0)
 
 // A tolerance that depends on the precision the library was built with.
 #ifdef dSINGLE

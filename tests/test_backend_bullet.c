@@ -147,13 +147,6 @@ static dContactGeom deepest_with(const char *backend, dGeomID a, dGeomID b, int 
     return *n ? c[deepest(c, *n)] : none;
 }
 
-#define CHECK_VEC(v, x, y, z, tol) \
-    do { \
-        CHECK_NEAR((v)[0], x, tol); \
-        CHECK_NEAR((v)[1], y, tol); \
-        CHECK_NEAR((v)[2], z, tol); \
-    } while (0)
-
 // ---- the environment variable -------------------------------------------------
 
 // First case: nothing has selected a backend yet. Under

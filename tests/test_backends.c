@@ -125,14 +125,6 @@ static const char *class_name(int cls)
     return cls >= 0 && cls <= dRayClass ? names[cls] : "?";
 }
 
-static unsigned long long rng_state;
-
-static double rnd(double lo, double hi)
-{
-    rng_state = rng_state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return lo + (hi - lo) * (double)(rng_state >> 11) / 9007199254740992.0;
-}
-
 static void random_unit(dReal v[3])
 {
     dReal len;

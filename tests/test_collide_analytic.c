@@ -140,13 +140,6 @@ static int check_pair(dGeomID a, dGeomID b, int max, dContactGeom *ab, int same_
     return check_pair_ntol(a, b, max, ab, same_count, tol, tol);
 }
 
-#define CHECK_VEC(v, x, y, z, tol) \
-    do { \
-        CHECK_NEAR((v)[0], x, tol); \
-        CHECK_NEAR((v)[1], y, tol); \
-        CHECK_NEAR((v)[2], z, tol); \
-    } while (0)
-
 // ---- sphere -----------------------------------------------------------------
 
 static int test_sphere_sphere(void)
@@ -645,14 +638,6 @@ static int test_geoms_on_bodies_take_the_body_pose(void)
 }
 
 // ---- random poses -----------------------------------------------------------
-
-static unsigned long long rng_state;
-
-static double rnd(double lo, double hi)
-{
-    rng_state = rng_state * 6364136223846793005ull + 1442695040888963407ull;
-    return lo + (hi - lo) * (double)(rng_state >> 11) / 9007199254740992.0;
-}
 
 static void random_pose(dGeomID g)
 {

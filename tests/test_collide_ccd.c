@@ -151,13 +151,6 @@ static int check_pair(dGeomID a, dGeomID b, int max, dContactGeom *ab, double to
     return n;
 }
 
-#define CHECK_VEC(v, x, y, z, tol) \
-    do { \
-        CHECK_NEAR((v)[0], x, tol); \
-        CHECK_NEAR((v)[1], y, tol); \
-        CHECK_NEAR((v)[2], z, tol); \
-    } while (0)
-
 // Every contact has this normal and depth, and its pos z in the overlap
 // [z - depth / 2, z + depth / 2] (in the middle of it unless the line
 // along the normal there only grazes a shape, as at the end of a side
@@ -508,14 +501,6 @@ static int test_stride_and_max(void)
 }
 
 // ---- random poses -----------------------------------------------------------------------
-
-static unsigned long long rng_state;
-
-static double rnd(double lo, double hi)
-{
-    rng_state = rng_state * 6364136223846793005ull + 1442695040888963407ull;
-    return lo + (hi - lo) * (double)(rng_state >> 11) / 9007199254740992.0;
-}
 
 static void random_pose(dGeomID g)
 {
