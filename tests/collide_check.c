@@ -47,6 +47,20 @@ int deepest(const dContactGeom *c, int n)
     return k;
 }
 
+dReal depth_after_separation(dGeomID a, dGeomID b, const dContactGeom *k, dReal margin)
+{
+    int move_a = dGeomGetClass(a) != dPlaneClass;
+    dGeomID g = move_a ? a : b;
+    dReal s = (move_a ? 1 : -1) * (k->depth + margin);
+    dVector3 p;
+    dGeomCopyPosition(g, p);
+    dGeomSetPosition(g, p[0] + s * k->normal[0], p[1] + s * k->normal[1], p[2] + s * k->normal[2]);
+    dContactGeom c[64];
+    int n = dCollide(a, b, 64, c, sizeof c[0]);
+    dGeomSetPosition(g, p[0], p[1], p[2]);
+    return n ? c[deepest(c, n)].depth : 0;
+}
+
 unsigned long long rng_state;
 
 double rnd(double lo, double hi)

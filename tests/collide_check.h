@@ -16,6 +16,10 @@ void set_rot(dGeomID g, dReal ax, dReal ay, dReal az, dReal angle);
 dReal point_depth(dGeomID g, const dReal *p);
 // Index of the deepest of n contacts.
 int deepest(const dContactGeom *c, int n);
+// Move the pair apart by contact k's depth + margin along its normal (a along
+// it if placeable, else b against it), collide again, move back. Returns the
+// deepest remaining depth (0 if apart): the sign rule of the contact.
+dReal depth_after_separation(dGeomID a, dGeomID b, const dContactGeom *k, dReal margin);
 
 // The random poses of the tests: a 64-bit LCG, seeded by setting rng_state.
 extern unsigned long long rng_state;

@@ -118,23 +118,6 @@ static int collide_checked(dGeomID a, dGeomID b, int max, dContactGeom *c, doubl
     return n;
 }
 
-// Move a (or b against the normal when a is a plane) by the contact's depth
-// + SEP along its normal, collide again, move back: the deepest remaining
-// depth (0 if apart).
-static dReal depth_after_separation(dGeomID a, dGeomID b, const dContactGeom *k)
-{
-    int move_a = dGeomGetClass(a) != dPlaneClass;
-    dGeomID g = move_a ? a : b;
-    dReal s = (move_a ? 1 : -1) * (k->depth + SEP);
-    dVector3 p;
-    dGeomCopyPosition(g, p);
-    dGeomSetPosition(g, p[0] + s * k->normal[0], p[1] + s * k->normal[1], p[2] + s * k->normal[2]);
-    dContactGeom c[MAXC];
-    int n = dCollide(a, b, MAXC, c, sizeof c[0]);
-    dGeomSetPosition(g, p[0], p[1], p[2]);
-    return n ? c[deepest(c, n)].depth : 0;
-}
-
 // The deepest contact of (a, b) through the named backend (count in *n).
 static dContactGeom deepest_with(const char *backend, dGeomID a, dGeomID b, int *n)
 {
@@ -357,7 +340,7 @@ static int check_case(const pair_case *k)
     CHECK_NEAR(q->depth, k->depth, tol);
     CHECK(normals_near(ab, n, k->normal, 1, ntol, mtol));
     CHECK(normals_near(ba, m, k->normal, -1, ntol, mtol));
-    CHECK(depth_after_separation(a, b, p) <= SEP);
+    CHECK(depth_after_separation(a, b, p, SEP) <= SEP);
     CHECK_NEAR(native.depth, k->depth, EPA);
     dGeomDestroy(a);
     dGeomDestroy(b);

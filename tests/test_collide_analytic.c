@@ -72,23 +72,6 @@ static int collide_checked(dGeomID a, dGeomID b, int max, dContactGeom *c, doubl
     return n;
 }
 
-// Move the pair apart by the contact's depth + margin along its normal (g1
-// along it if placeable, else g2 against it), collide again, move back.
-// Returns the deepest remaining depth (0 if apart).
-static dReal depth_after_separation(dGeomID a, dGeomID b, const dContactGeom *k, dReal margin)
-{
-    int move_a = dGeomGetClass(a) != dPlaneClass;
-    dGeomID g = move_a ? a : b;
-    dReal s = (move_a ? 1 : -1) * (k->depth + margin);
-    dVector3 p;
-    dGeomCopyPosition(g, p);
-    dGeomSetPosition(g, p[0] + s * k->normal[0], p[1] + s * k->normal[1], p[2] + s * k->normal[2]);
-    dContactGeom c[MAXC];
-    int n = dCollide(a, b, MAXC, c, sizeof c[0]);
-    dGeomSetPosition(g, p[0], p[1], p[2]);
-    return n ? c[deepest(c, n)].depth : 0;
-}
-
 // The checks every touching or apart pair gets, both ways round: same count
 // (same_count: pairs of different classes and symmetric poses), the deepest
 // depths equal and their normals opposite (within ntol); then the separation

@@ -109,19 +109,6 @@ static int collide_checked(dGeomID a, dGeomID b, int max, dContactGeom *c, doubl
     return n;
 }
 
-// The deepest depth left after moving a by depth + SEP along the normal.
-static double depth_after_separation(dGeomID a, dGeomID b, const dContactGeom *k)
-{
-    dVector3 p;
-    dGeomCopyPosition(a, p);
-    dReal s = k->depth + SEP;
-    dGeomSetPosition(a, p[0] + s * k->normal[0], p[1] + s * k->normal[1], p[2] + s * k->normal[2]);
-    dContactGeom c[MAXC];
-    int n = dCollide(a, b, MAXC, c, sizeof c[0]);
-    dGeomSetPosition(a, p[0], p[1], p[2]);
-    return n ? c[deepest(c, n)].depth : 0;
-}
-
 // Both ways round: collide_checked each; (b, a) is the mirror image of
 // (a, b) (same count, points and depths, opposite normal); the deepest
 // depth is the translation along the normal that parts the pair (within
@@ -146,7 +133,7 @@ static int check_pair(dGeomID a, dGeomID b, int max, dContactGeom *ab, double to
     double along = convex_depth_along(a, b, nd);
     if (!(k->depth <= along + EPS && k->depth >= along - dtol))
         FAIL("deepest depth %.17g, the translation along its normal %.17g", k->depth, along);
-    double left = depth_after_separation(a, b, k);
+    double left = depth_after_separation(a, b, k, SEP);
     if (left > SEP) FAIL("still %.3g deep after moving by the depth %g", left, k->depth);
     return n;
 }
