@@ -5,7 +5,7 @@
 // library calls (10.11.2), pose, bounding box, class, category and collide
 // bits, enabling, and point conversions.
 
-#include "../libodedyn/objects_internal.h"
+#include "../libodedyn/core/objects_internal.h"
 #include "backend_internal.h"
 #include "geom_internal.h"
 

@@ -12,7 +12,7 @@
 #include <ode/odemath.h>
 #include <stdint.h>
 
-#include "../libodedyn/dx_check.h"
+#include "../libodedyn/core/dx_check.h"
 
 enum {
     DX_MAGIC_GEOM = 0x47656f6du,   // "Geom"

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
-// test_lcp.c -- the mixed LCP solver (libodedyn/lcp.c): the LCP conditions themselves
+// test_lcp.c -- the mixed LCP solver (libodedyn/solvers/lcp.c): the LCP conditions themselves
 // (w = A x - b, bounds, complementarity) on linear systems, 1-D cases, problems with a planted
 // solution, brute-force enumeration of active sets, friction, redundant (nearly singular)
 // constraints, large dense and banded problems, articulated bodies with contacts as the
