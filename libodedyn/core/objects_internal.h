@@ -146,6 +146,12 @@ typedef struct dxJointClass {
     void (*init)(dxJoint *j);     // defaults after creation
     void (*count_rows)(dxJoint *j, dxJointRowCount *count);
     void (*fill_rows)(dxJoint *j, dxJointRows *rows);
+    // Called at the end of dJointAttach: recompute the body-relative anchors,
+    // axes, offsets and rest orientation from the joint's world values (as its
+    // getters report them with the new bodies) and the bodies' current poses,
+    // as ODE 0.16 does, so a newly attached joint starts without error.
+    // NULL for joints that keep nothing body-relative.
+    void (*attached)(dxJoint *j);
 } dxJointClass;
 
 struct dxJoint {

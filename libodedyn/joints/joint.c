@@ -211,6 +211,7 @@ void dJointAttach(dJointID j, dBodyID body1, dBodyID body2)
         body2->joints = &j->node[1];
         body2->num_joints++;
     }
+    if (j->cls->attached) j->cls->attached(j);
 }
 
 int dJointGetNumBodies(dJointID j)
