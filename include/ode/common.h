@@ -217,7 +217,7 @@ enum {
 /* Angular motor modes. */
 enum { dAMotorUser = 0, dAMotorEuler = 1 };
 
-/* Transmission joint modes (ODE 0.16 names; the joint itself is not provided). */
+/* Transmission joint modes (dJointSetTransmissionMode). */
 enum {
     dTransmissionParallelAxes = 0,
     dTransmissionIntersectingAxes = 1,

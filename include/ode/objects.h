@@ -344,6 +344,135 @@ ODE_API dReal dJointGetAMotorAngleRate(dJointID, int anum);
 ODE_API dReal dJointGetAMotorParam(dJointID, int parameter);
 ODE_API int dJointGetAMotorMode(dJointID);
 
+/* ---- The joints ODE 0.16 added ------------------------------------------ */
+
+/* Prismatic-rotoide (PR): a slider along axis 1, then a hinge about axis 2 at the anchor. */
+ODE_API dJointID dJointCreatePR(dWorldID, dJointGroupID);
+ODE_API void dJointSetPRAnchor(dJointID, dReal x, dReal y, dReal z);
+ODE_API void dJointSetPRAxis1(dJointID, dReal x, dReal y, dReal z);
+ODE_API void dJointSetPRAxis2(dJointID, dReal x, dReal y, dReal z);
+ODE_API void dJointSetPRParam(dJointID, int parameter, dReal value);
+ODE_API void dJointAddPRTorque(dJointID j, dReal torque);
+ODE_API void dJointGetPRAnchor(dJointID, dVector3 result);
+ODE_API dReal dJointGetPRPosition(dJointID);
+ODE_API dReal dJointGetPRPositionRate(dJointID);
+ODE_API dReal dJointGetPRAngle(dJointID);
+ODE_API dReal dJointGetPRAngleRate(dJointID);
+ODE_API void dJointGetPRAxis1(dJointID, dVector3 result);
+ODE_API void dJointGetPRAxis2(dJointID, dVector3 result);
+ODE_API dReal dJointGetPRParam(dJointID, int parameter);
+
+/* Prismatic-universal (PU): a slider along axis P, then a universal joint (axes 1 and 2) at the anchor. */
+ODE_API dJointID dJointCreatePU(dWorldID, dJointGroupID);
+ODE_API void dJointSetPUAnchor(dJointID, dReal x, dReal y, dReal z);
+ODE_API_DEPRECATED ODE_API void dJointSetPUAnchorDelta(dJointID, dReal x, dReal y, dReal z,
+        dReal dx, dReal dy, dReal dz);
+ODE_API void dJointSetPUAnchorOffset(dJointID, dReal x, dReal y, dReal z, dReal dx, dReal dy,
+        dReal dz);
+ODE_API void dJointSetPUAxis1(dJointID, dReal x, dReal y, dReal z);
+ODE_API void dJointSetPUAxis2(dJointID, dReal x, dReal y, dReal z);
+ODE_API void dJointSetPUAxis3(dJointID, dReal x, dReal y, dReal z);
+ODE_API void dJointSetPUAxisP(dJointID id, dReal x, dReal y, dReal z);
+ODE_API void dJointSetPUParam(dJointID, int parameter, dReal value);
+ODE_API void dJointGetPUAnchor(dJointID, dVector3 result);
+ODE_API dReal dJointGetPUPosition(dJointID);
+ODE_API dReal dJointGetPUPositionRate(dJointID);
+ODE_API void dJointGetPUAxis1(dJointID, dVector3 result);
+ODE_API void dJointGetPUAxis2(dJointID, dVector3 result);
+ODE_API void dJointGetPUAxis3(dJointID, dVector3 result);
+ODE_API void dJointGetPUAxisP(dJointID id, dVector3 result);
+ODE_API void dJointGetPUAngles(dJointID, dReal *angle1, dReal *angle2);
+ODE_API dReal dJointGetPUAngle1(dJointID);
+ODE_API dReal dJointGetPUAngle1Rate(dJointID);
+ODE_API dReal dJointGetPUAngle2(dJointID);
+ODE_API dReal dJointGetPUAngle2Rate(dJointID);
+ODE_API dReal dJointGetPUParam(dJointID, int parameter);
+
+/* Piston: slides along, and turns about, one axis through the anchor. */
+ODE_API dJointID dJointCreatePiston(dWorldID, dJointGroupID);
+ODE_API void dJointSetPistonAnchor(dJointID, dReal x, dReal y, dReal z);
+ODE_API void dJointSetPistonAnchorOffset(dJointID j, dReal x, dReal y, dReal z, dReal dx,
+        dReal dy, dReal dz);
+ODE_API void dJointSetPistonAxis(dJointID, dReal x, dReal y, dReal z);
+ODE_API_DEPRECATED ODE_API void dJointSetPistonAxisDelta(dJointID j, dReal x, dReal y, dReal z,
+        dReal ax, dReal ay, dReal az);
+ODE_API void dJointSetPistonParam(dJointID, int parameter, dReal value);
+ODE_API void dJointAddPistonForce(dJointID joint, dReal force);
+ODE_API dReal dJointGetPistonPosition(dJointID);
+ODE_API dReal dJointGetPistonPositionRate(dJointID);
+ODE_API dReal dJointGetPistonAngle(dJointID);
+ODE_API dReal dJointGetPistonAngleRate(dJointID);
+ODE_API void dJointGetPistonAnchor(dJointID, dVector3 result);
+ODE_API void dJointGetPistonAnchor2(dJointID, dVector3 result);
+ODE_API void dJointGetPistonAxis(dJointID, dVector3 result);
+ODE_API dReal dJointGetPistonParam(dJointID, int parameter);
+
+/* Plane-2D: keeps a body in the z = 0 plane, turning about z only. */
+ODE_API dJointID dJointCreatePlane2D(dWorldID, dJointGroupID);
+ODE_API void dJointSetPlane2DXParam(dJointID, int parameter, dReal value);
+ODE_API void dJointSetPlane2DYParam(dJointID, int parameter, dReal value);
+ODE_API void dJointSetPlane2DAngleParam(dJointID, int parameter, dReal value);
+
+/* Linear motor: up to three axes, each fixed in the world, body 1 or body 2. */
+ODE_API dJointID dJointCreateLMotor(dWorldID, dJointGroupID);
+ODE_API void dJointSetLMotorNumAxes(dJointID, int num);
+ODE_API void dJointSetLMotorAxis(dJointID, int anum, int rel, dReal x, dReal y, dReal z);
+ODE_API void dJointSetLMotorParam(dJointID, int parameter, dReal value);
+ODE_API int dJointGetLMotorNumAxes(dJointID);
+ODE_API void dJointGetLMotorAxis(dJointID, int anum, dVector3 result);
+ODE_API dReal dJointGetLMotorParam(dJointID, int parameter);
+
+/* Double ball: keeps the distance between an anchor on each body. */
+ODE_API dJointID dJointCreateDBall(dWorldID, dJointGroupID);
+ODE_API void dJointSetDBallAnchor1(dJointID, dReal x, dReal y, dReal z);
+ODE_API void dJointSetDBallAnchor2(dJointID, dReal x, dReal y, dReal z);
+ODE_API void dJointGetDBallAnchor1(dJointID, dVector3 result);
+ODE_API void dJointGetDBallAnchor2(dJointID, dVector3 result);
+ODE_API dReal dJointGetDBallDistance(dJointID);
+ODE_API void dJointSetDBallDistance(dJointID, dReal dist);
+ODE_API void dJointSetDBallParam(dJointID, int parameter, dReal value);
+ODE_API dReal dJointGetDBallParam(dJointID, int parameter);
+
+/* Double hinge: two anchors at a fixed distance along an axis both bodies share. */
+ODE_API dJointID dJointCreateDHinge(dWorldID, dJointGroupID);
+ODE_API void dJointSetDHingeAxis(dJointID, dReal x, dReal y, dReal z);
+ODE_API void dJointGetDHingeAxis(dJointID, dVector3 result);
+ODE_API void dJointSetDHingeAnchor1(dJointID, dReal x, dReal y, dReal z);
+ODE_API void dJointSetDHingeAnchor2(dJointID, dReal x, dReal y, dReal z);
+ODE_API void dJointGetDHingeAnchor1(dJointID, dVector3 result);
+ODE_API void dJointGetDHingeAnchor2(dJointID, dVector3 result);
+ODE_API dReal dJointGetDHingeDistance(dJointID);
+ODE_API void dJointSetDHingeParam(dJointID, int parameter, dReal value);
+ODE_API dReal dJointGetDHingeParam(dJointID, int parameter);
+
+/* Transmission: gears (parallel or intersecting axes) and chain drives, with a ratio and backlash. */
+ODE_API dJointID dJointCreateTransmission(dWorldID, dJointGroupID);
+ODE_API void dJointGetTransmissionContactPoint1(dJointID, dVector3 result);
+ODE_API void dJointGetTransmissionContactPoint2(dJointID, dVector3 result);
+ODE_API void dJointSetTransmissionAxis1(dJointID, dReal x, dReal y, dReal z);
+ODE_API void dJointGetTransmissionAxis1(dJointID, dVector3 result);
+ODE_API void dJointSetTransmissionAxis2(dJointID, dReal x, dReal y, dReal z);
+ODE_API void dJointGetTransmissionAxis2(dJointID, dVector3 result);
+ODE_API void dJointSetTransmissionAnchor1(dJointID, dReal x, dReal y, dReal z);
+ODE_API void dJointGetTransmissionAnchor1(dJointID, dVector3 result);
+ODE_API void dJointSetTransmissionAnchor2(dJointID, dReal x, dReal y, dReal z);
+ODE_API void dJointGetTransmissionAnchor2(dJointID, dVector3 result);
+ODE_API void dJointSetTransmissionParam(dJointID, int parameter, dReal value);
+ODE_API dReal dJointGetTransmissionParam(dJointID, int parameter);
+ODE_API void dJointSetTransmissionMode(dJointID j, int mode);
+ODE_API int dJointGetTransmissionMode(dJointID j);
+ODE_API void dJointSetTransmissionRatio(dJointID j, dReal ratio);
+ODE_API dReal dJointGetTransmissionRatio(dJointID j);
+ODE_API void dJointSetTransmissionAxis(dJointID j, dReal x, dReal y, dReal z);
+ODE_API void dJointGetTransmissionAxis(dJointID j, dVector3 result);
+ODE_API dReal dJointGetTransmissionAngle1(dJointID j);
+ODE_API dReal dJointGetTransmissionAngle2(dJointID j);
+ODE_API dReal dJointGetTransmissionRadius1(dJointID j);
+ODE_API dReal dJointGetTransmissionRadius2(dJointID j);
+ODE_API void dJointSetTransmissionRadius1(dJointID j, dReal radius);
+ODE_API void dJointSetTransmissionRadius2(dJointID j, dReal radius);
+ODE_API dReal dJointGetTransmissionBacklash(dJointID j);
+ODE_API void dJointSetTransmissionBacklash(dJointID j, dReal backlash);
 /* ---- Connectivity ------------------------------------------------------ */
 
 /** A joint connecting the two bodies (either may be 0), or 0. */
