@@ -498,7 +498,6 @@ static void warm_apply(const qs_jrows *jr, const int *pos, const qs_row *rows, c
 
 // Scratch for one joint's rows and their lambda positions.
 struct qs_scratch {
-    qs_jrows jr;
     int *pos;
     char *done;
 };
@@ -508,14 +507,42 @@ static void keep_feedback(dxArena *a, dxJoint *j, const qs_jrows *jr, const int 
                           qs_system *sys)
 {
     qs_feedback *fb = &sys->feedback[sys->nfeedback++];
-    dReal *J = DX_ARENA_ARRAY(a, dReal, jr->m * DX_ROW_SKIP);
     int *p = DX_ARENA_ARRAY(a, int, jr->m);
-    memcpy(J, jr->J, sizeof(dReal) * DX_ROW_SKIP * (size_t)jr->m);
     memcpy(p, pos, sizeof(int) * (size_t)jr->m);
     fb->joint = j;
-    fb->J = J;
+    fb->J = jr->J;   // the island's rows live until the step ends
     fb->pos = p;
     fb->m = jr->m;
+}
+
+// The rows of every joint of the island (count_rows done), in arena memory
+// that lives until the step ends.
+static qs_jrows *fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h)
+{
+    dxArena *a = &w->arena;
+    size_t m = 0;
+    for (int k = 0; k < is->nj; k++) m += (size_t)is->joints[k]->rows.m;
+    qs_jrows *jrows = DX_ARENA_ARRAY(a, qs_jrows, is->nj + 1);
+    dReal *J = DX_ARENA_ARRAY(a, dReal, m * DX_ROW_SKIP + 1);
+    dReal *num = DX_ARENA_ARRAY(a, dReal, 4 * m + 1);
+    int *findex = DX_ARENA_ARRAY(a, int, m + 1);
+    for (int k = 0; k < is->nj; k++) {
+        dxJoint *j = is->joints[k];
+        qs_jrows *jr = &jrows[k];
+        const size_t jm = (size_t)j->rows.m;
+        jr->m = j->rows.m;
+        jr->J = J;
+        jr->c = num;
+        jr->cfm = num + jm;
+        jr->lo = num + 2 * jm;
+        jr->hi = num + 3 * jm;
+        jr->findex = findex;
+        dxJointRowsFill(w, j, h, jr->J, jr->c, jr->cfm, jr->lo, jr->hi, jr->findex, jr->b);
+        J += jm * DX_ROW_SKIP;
+        num += 4 * jm;
+        findex += jm;
+    }
+    return jrows;
 }
 
 void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_system *sys)
@@ -555,12 +582,6 @@ void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_syst
     sys->lambda[m] = 1;
 
     qs_scratch *s = DX_ARENA_ARRAY(a, qs_scratch, 1);
-    s->jr.J = DX_ARENA_ARRAY(a, dReal, (size_t)max_m * DX_ROW_SKIP + 1);
-    s->jr.c = DX_ARENA_ARRAY(a, dReal, max_m + 1);
-    s->jr.cfm = DX_ARENA_ARRAY(a, dReal, max_m + 1);
-    s->jr.lo = DX_ARENA_ARRAY(a, dReal, max_m + 1);
-    s->jr.hi = DX_ARENA_ARRAY(a, dReal, max_m + 1);
-    s->jr.findex = DX_ARENA_ARRAY(a, int, max_m + 1);
     s->pos = DX_ARENA_ARRAY(a, int, max_m + 1);
     s->done = DX_ARENA_ARRAY(a, char, max_m + 1);
     sys->scratch = s;
@@ -571,7 +592,6 @@ void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *b
 {
     dxArena *a = &w->arena;
     qs_scratch *s = sys->scratch;
-    qs_jrows *jr = &s->jr;
     part->body0 = sys->nbodies;
     part->block0 = sys->nblocks;
     part->order0 = sys->norder;
@@ -579,14 +599,17 @@ void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *b
     part->nblocks = part->norder = 0;
     if (is->nj == 0) return;
     const dReal fps = dRecip(h);
+    // Every joint's rows first, the bodies' rates after: a limit motor that
+    // powers against its stop adds its force to the bodies while its rows are
+    // filled (joint_limot.c), and the rates must include that force.
+    qs_jrows *jrows = fill_island_rows(w, is, h);
     dReal *rates = sys->rates + 6 * part->body0;
     dxIslandBodyRates(is, bd, fps, rates);
     const qs_input in = { bd, rates, fps, w->qs_w, part->body0, is->nb, 0 };
     const qs_input in_warm = { bd, rates, fps, w->qs_w, part->body0, is->nb, 1 };
     for (int k = 0; k < is->nj; k++) {
         dxJoint *j = is->joints[k];
-        jr->m = j->rows.m;
-        dxJointRowsFill(w, j, h, jr->J, jr->c, jr->cfm, jr->lo, jr->hi, jr->findex, jr->b);
+        qs_jrows *jr = &jrows[k];
         if (jr->m == 0) continue;
         joint_sides(&in, jr);
         for (int i = 0; i < jr->m; i++) s->pos[i] = -1;
