@@ -40,8 +40,17 @@ static int powered_into_stop(stepper step)
     return 0;
 }
 
+// StepFast1 with 10 sub-steps; its rows are filled once per sub-step and
+// joint, and the motor's push must still act once, not once per fill.
+static int stepfast10(dWorldID w, dReal h)
+{
+    dWorldStepFast1(w, h, 10);
+    return 1;
+}
+
 static int test_quickstep_stop_holds_powered_body(void) { return powered_into_stop(dWorldQuickStep); }
 static int test_step_stop_holds_powered_body(void) { return powered_into_stop(dWorldStep); }
+static int test_stepfast_stop_holds_powered_body(void) { return powered_into_stop(stepfast10); }
 
 // Low stop above the high stop: as the guide says (dParamHiStop), both stops
 // are ineffective, so the body moves freely both ways. (ODE 0.16 acts on
@@ -273,6 +282,7 @@ static int test_step_bridge_supports_carry_its_weight(void)
 const test_case test_cases[] = {
     TEST_CASE(test_quickstep_stop_holds_powered_body),
     TEST_CASE(test_step_stop_holds_powered_body),
+    TEST_CASE(test_stepfast_stop_holds_powered_body),
     TEST_CASE(test_quickstep_inverted_stops_are_ineffective),
     TEST_CASE(test_step_inverted_stops_are_ineffective),
     TEST_CASE(test_quickstep_bridge_feedback_is_applied_force),

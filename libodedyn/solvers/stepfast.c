@@ -57,6 +57,8 @@ typedef struct sf1_step {
     dxIsland all;
     dxIslandBodies bd;            // inverse masses; world inverse inertias, kept current
     dReal *force;                 // 12 per joint: J^T lambda of its latest solve
+    dReal *external;              // 6 per body: force and torque of the step, as
+                                  // prepared (accumulators, gravity, gyroscopic)
     struct dxBody **kinematic;    // the enabled kinematic bodies
     int nk;
     dReal s, fps;                 // sub-step and its inverse
@@ -286,10 +288,23 @@ static void apply_warm_start(const sf1_step *st)
         add_joint_impulse(st, st->all.joints[k], st->force + 12 * k, 1);
 }
 
+// The bodies' accumulators back to the step's external forces. Filling a
+// joint's rows adds the push of a limit motor powering against its stop
+// (joint_limot.c); a sweep's pushes act in the next sub-step, each once.
+static void restore_external_forces(const sf1_step *st)
+{
+    for (int i = 0; i < st->all.nb; i++) {
+        struct dxBody *b = st->all.bodies[i];
+        dCopyVector3(b->force, st->external + 6 * i);
+        dCopyVector3(b->torque, st->external + 6 * i + 3);
+    }
+}
+
 // One sweep over the joints, each replacing its previous force by a new
 // solve; the last sub-step's forces go to the feedback.
 static void solve_joints(sf1_step *st)
 {
+    restore_external_forces(st);
     for (int k = 0; k < st->all.nj; k++) {
         dxJoint *j = st->all.joints[k];
         dReal *f = st->force + 12 * k;
@@ -369,6 +384,11 @@ void dWorldStepFast1(dWorldID w, dReal stepsize, int maxiterations)
     collect(w, &st);
     dSetZero(st.force, 12 * st.all.nj);
     dxIslandPrepare(w, &st.all, stepsize, &st.bd);
+    st.external = DX_ARENA_ARRAY(&w->arena, dReal, 6 * (size_t)st.all.nb + 1);
+    for (int i = 0; i < st.all.nb; i++) {
+        dCopyVector3(st.external + 6 * i, st.all.bodies[i]->force);
+        dCopyVector3(st.external + 6 * i + 3, st.all.bodies[i]->torque);
+    }
 
     for (int it = 0; it < maxiterations; it++) {
         st.last = it == maxiterations - 1;
