@@ -89,6 +89,7 @@ dxGeom *dxGeomCreate(size_t size, const dxGeomClassOps *ops, unsigned flags, dSp
 
 void dxGeomMarkMoved(dxGeom *g)
 {
+    if (g->offset) dxGeomOffsetUpdate(g);   // its body moved: so did it
     // A geom held by a transform moves the transform (its own flag is set
     // and cleared by every collision of the transform, so it cannot stop the
     // walk). Otherwise stop at the first geom or space that already knows:
@@ -161,7 +162,8 @@ static void unlink_from_body(dxGeom *g)
 
 // Attaching shares the body's pose (pos and R point at the body's) and puts g
 // at the head of the body's list; detaching copies the last pose into the
-// geom. The pose does not change on detaching, so the AABB stays valid.
+// geom. The pose does not change on detaching, so the AABB stays valid. An
+// offset is dropped either way (as in ODE 0.16).
 void dGeomSetBody(dGeomID g, dBodyID b)
 {
     DX_CHECK_GEOM(g, return);
@@ -170,6 +172,7 @@ void dGeomSetBody(dGeomID g, dBodyID b)
     DX_CHECK_ARG(b == NULL || !g->holder, return,
                  "the geom is held by a geometry transform (attach the transform instead)");
     if (g->body == b) return;
+    dxGeomOffsetFree(g);   // detached, it stays where it is; on another body, at its pose
     if (g->body) {
         // Keep the body's last pose as the geom's own.
         dCopyVector3(g->own_pos, g->pos);
@@ -214,7 +217,11 @@ void dGeomSetPosition(dGeomID g, dReal x, dReal y, dReal z)
     DX_CHECK_GEOM(g, return);
     CHECK_PLACEABLE(g, return);
     DX_CHECK_ARG(dxIsFinite3(x, y, z), return, "position is not finite");
-    if (g->body) {
+    if (g->offset) {   // move the body so that the geom gets there
+        dVector3 d;
+        dMultiply0_331(d, dBodyGetRotation(g->body), g->offset->pos);
+        dBodySetPosition(g->body, x - d[0], y - d[1], z - d[2]);
+    } else if (g->body) {
         dBodySetPosition(g->body, x, y, z);   // tells every geom of the body
     } else {
         dAssignVector3(g->own_pos, x, y, z);
@@ -227,7 +234,12 @@ void dGeomSetRotation(dGeomID g, const dMatrix3 R)
     DX_CHECK_GEOM(g, return);
     CHECK_PLACEABLE(g, return);
     DX_CHECK_ARG(R != NULL, return, "R is NULL");
-    if (g->body) {
+    if (g->offset) {   // turn the body so that the geom turns about its position
+        dMatrix3 clean;
+        DX_CHECK_ARG(dxCleanRotation(R, clean), return, "R is not a finite rotation");
+        const dVector3 pos = { g->pos[0], g->pos[1], g->pos[2], 0 };
+        dxGeomOffsetMoveBody(g, pos, clean);
+    } else if (g->body) {
         dBodySetRotation(g->body, R);
     } else {
         dMatrix3 clean;
@@ -244,7 +256,14 @@ void dGeomSetQuaternion(dGeomID g, const dQuaternion q)
     DX_CHECK_GEOM(g, return);
     CHECK_PLACEABLE(g, return);
     DX_CHECK_ARG(q != NULL, return, "q is NULL");
-    if (g->body) {
+    if (g->offset) {   // turn the body so that the geom turns about its position
+        dQuaternion n;
+        DX_CHECK_ARG(dxCleanQuaternion(q, n), return, "q is not finite or has zero length");
+        dMatrix3 R;
+        dRfromQ(R, n);
+        const dVector3 pos = { g->pos[0], g->pos[1], g->pos[2], 0 };
+        dxGeomOffsetMoveBody(g, pos, R);
+    } else if (g->body) {
         dBodySetQuaternion(g->body, q);
     } else {
         dQuaternion n = { q[0], q[1], q[2], q[3] };

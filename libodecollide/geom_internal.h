@@ -60,6 +60,9 @@ struct dxGeom {
     dxGeom *holder;               // the geometry transform that holds it, or NULL
     int space_index;              // its index in space->geoms
     unsigned shape_version;       // bumped when size parameters change (backend caches)
+    struct dxGeomOffset *offset;  // its pose relative to its body, or NULL
+                                  // (then pos and R are own_pos, own_R: the
+                                  // body's pose composed with it, geom_offset.c)
     void *backend_cache;          // a backend's shape object for this geom ...
     const void *backend_cache_owner;   // ... and which backend made it (it frees it)
 };
@@ -119,6 +122,23 @@ extern unsigned long dx_aabb_tests;
 dxSpace *dxSpaceCreate(size_t size, int cls, const dxSpaceOps *sops, dSpaceID parent);
 // Bring every AABB in the space (recursively) up to date.
 void dxSpaceUpdateAABBs(dxSpace *s);
+
+// Geom offsets (geom_offset.c). The pose relative to the body:
+typedef struct dxGeomOffset {
+    dVector3 pos;
+    dMatrix3 R;
+} dxGeomOffset;
+// Recompute an offset geom's world pose (own_pos, own_R) from its body's.
+void dxGeomOffsetUpdate(dxGeom *g);
+// Forget the offset (the geom keeps pointing at own_pos, own_R, its pose now).
+void dxGeomOffsetFree(dxGeom *g);
+// Move the body of the offset geom g so that g is at (pos, R).
+void dxGeomOffsetMoveBody(dxGeom *g, const dReal *pos, const dReal *R);
+// R's nine used entries (padding ignored) made orthonormal into out; 0 if
+// they are not finite or not a rotation.
+int dxCleanRotation(const dReal *R, dMatrix3 out);
+// q normalised into out; 0 if it is not finite or has zero length.
+int dxCleanQuaternion(const dReal *q, dQuaternion out);
 
 // Contacts produced for (b, a) made into contacts for (a, b): normals
 // negated, g1/g2 and side1/side2 swapped (collide.c).

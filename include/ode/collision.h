@@ -60,6 +60,29 @@ ODE_API void dGeomGetPosRelPoint(dGeomID geom, dReal px, dReal py, dReal pz, dVe
 ODE_API void dGeomVectorToWorld(dGeomID geom, dReal px, dReal py, dReal pz, dVector3 result);
 ODE_API void dGeomVectorFromWorld(dGeomID geom, dReal px, dReal py, dReal pz, dVector3 result);
 
+/* ---- geom offsets (ODE 0.16) --------------------------------------------
+ * A geom on a body may sit at a fixed pose relative to the body (the modern
+ * replacement for a geometry transform). Setting an offset needs a body; the
+ * geom's position and rotation are then the body's pose composed with the
+ * offset. dGeomSetPosition/Rotation/Quaternion on an offset geom move the body
+ * so that the geom gets there. dGeomSetBody to another body clears the offset;
+ * to 0 keeps the geom where it is. Without an offset the getters give a zero
+ * position and the identity. */
+ODE_API void dGeomSetOffsetPosition(dGeomID geom, dReal x, dReal y, dReal z);
+ODE_API void dGeomSetOffsetRotation(dGeomID geom, const dMatrix3 R);
+ODE_API void dGeomSetOffsetQuaternion(dGeomID geom, const dQuaternion Q);
+/** The offset that puts the geom at this world pose, the body staying put. */
+ODE_API void dGeomSetOffsetWorldPosition(dGeomID geom, dReal x, dReal y, dReal z);
+ODE_API void dGeomSetOffsetWorldRotation(dGeomID geom, const dMatrix3 R);
+ODE_API void dGeomSetOffsetWorldQuaternion(dGeomID geom, const dQuaternion);
+ODE_API void dGeomClearOffset(dGeomID geom);
+ODE_API int dGeomIsOffset(dGeomID geom);
+ODE_API const dReal *dGeomGetOffsetPosition(dGeomID geom);
+ODE_API void dGeomCopyOffsetPosition(dGeomID geom, dVector3 pos);
+ODE_API const dReal *dGeomGetOffsetRotation(dGeomID geom);
+ODE_API void dGeomCopyOffsetRotation(dGeomID geom, dMatrix3 R);
+ODE_API void dGeomGetOffsetQuaternion(dGeomID geom, dQuaternion result);
+
 /* ---- collision detection (10.5) ---------------------------------------- */
 
 /** Ask only for some contacts, not the best ones (ODE 0.16; accepted). */
