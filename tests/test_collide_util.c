@@ -368,6 +368,106 @@ static int test_random_boxes(void)
     return 0;
 }
 
+// dBoxBox on random overlapping boxes gives the contacts dCollide gives for
+// the same boxes (positions, depths; normals the same, g1 g2 left 0), its
+// normal is the contacts' normal negated, its depth the deepest contact's,
+// and its code names an axis the normal lies along: a face normal of box 1
+// (1-3) or box 2 (4-6), or perpendicular to both edges of the pair (7-15).
+static int test_dboxbox_matches_the_collider(void)
+{
+    rng_state = 777;
+    dInitODE();
+    dGeomID a = dCreateBox(0, 1, 1, 1), b = dCreateBox(0, 1, 1, 1);
+    int seen_face1 = 0, seen_face2 = 0, seen_edge = 0;
+    for (int k = 0; k < 2000; k++) {
+        dVector3 p1, p2, s1, s2;
+        dMatrix3 R1, R2;
+        vec(p1, rnd(-0.5, 0.5), rnd(-0.5, 0.5), rnd(-0.5, 0.5));
+        vec(p2, rnd(-0.5, 0.5), rnd(-0.5, 0.5), rnd(-0.5, 0.5));
+        vec(s1, rnd(0.1, 2), rnd(0.1, 2), rnd(0.1, 2));
+        vec(s2, rnd(0.1, 2), rnd(0.1, 2), rnd(0.1, 2));
+        random_rotation(R1);
+        random_rotation(R2);
+        dGeomBoxSetLengths(a, s1[0], s1[1], s1[2]);
+        dGeomBoxSetLengths(b, s2[0], s2[1], s2[2]);
+        dGeomSetPosition(a, p1[0], p1[1], p1[2]);
+        dGeomSetPosition(b, p2[0], p2[1], p2[2]);
+        dGeomSetRotation(a, R1);
+        dGeomSetRotation(b, R2);
+        dContactGeom c[8], d[8];
+        int n = dCollide(a, b, 8, c, sizeof c[0]);
+        dVector3 normal;
+        dReal depth = -1;
+        int code = -1;
+        int m = dBoxBox(p1, R1, s1, p2, R2, s2, normal, &depth, &code, 8, d, sizeof d[0]);
+        CHECK(m == n);
+        if (n == 0) {
+            CHECK(code == 0);
+            continue;
+        }
+        CHECK(code >= 1 && code <= 15);
+        dReal deepest = 0;
+        for (int i = 0; i < n; i++) {
+            // (the geoms hold R1, R2 re-orthonormalised: rounding apart)
+            CHECK_VEC(d[i].pos, c[i].pos[0], c[i].pos[1], c[i].pos[2], EPS);
+            CHECK_VEC(d[i].normal, c[i].normal[0], c[i].normal[1], c[i].normal[2], EPS);
+            CHECK_VEC(normal, -c[i].normal[0], -c[i].normal[1], -c[i].normal[2], EPS);
+            CHECK_NEAR(d[i].depth, c[i].depth, EPS);
+            CHECK(d[i].g1 == 0 && d[i].g2 == 0);
+            if (c[i].depth > deepest) deepest = c[i].depth;
+        }
+        CHECK(depth >= deepest - EPS);
+        if (code <= 6) {   // along a face normal: |normal . axis| = 1
+            const dReal *R = code <= 3 ? R1 : R2;
+            int col = (code - 1) % 3;
+            CHECK_NEAR(fabs(normal[0] * R[col] + normal[1] * R[4 + col] + normal[2] * R[8 + col]),
+                       1, EPS);
+            if (code <= 3) seen_face1++;
+            else seen_face2++;
+        } else {   // perpendicular to both edges
+            int i = (code - 7) / 3, j = (code - 7) % 3;
+            CHECK_NEAR(normal[0] * R1[i] + normal[1] * R1[4 + i] + normal[2] * R1[8 + i], 0, EPS);
+            CHECK_NEAR(normal[0] * R2[j] + normal[1] * R2[4 + j] + normal[2] * R2[8 + j], 0, EPS);
+            seen_edge++;
+        }
+    }
+    CHECK(seen_face1 > 50 && seen_face2 > 50 && seen_edge > 10);
+    dGeomDestroy(a);
+    dGeomDestroy(b);
+    dCloseODE();
+    return 0;
+}
+
+// A box resting on a wider box: the normal from box 1 into box 2 is -z, the
+// depth its overlap, and four contacts at box 1's bottom corners.
+static int test_dboxbox_resting_box(void)
+{
+    dVector3 p1, p2, s1, s2, normal;
+    dMatrix3 R;
+    dRSetIdentity(R);
+    vec(p1, 0, 0, REAL(0.49));
+    vec(s1, 1, 1, 1);
+    vec(p2, 0, 0, -REAL(0.5));
+    vec(s2, 4, 4, 1);
+    dContactGeom c[8];
+    dReal depth;
+    int code;
+    int n = dBoxBox(p1, R, s1, p2, R, s2, normal, &depth, &code, 8, c, sizeof c[0]);
+    CHECK(n == 4);
+    CHECK(code == 6 || code == 3);   // box 2's top face or box 1's bottom face
+    CHECK_VEC(normal, 0, 0, -1, EPS);
+    CHECK_NEAR(depth, 0.01, EPS);
+    for (int i = 0; i < n; i++) {
+        CHECK_NEAR(fabs(c[i].pos[0]), 0.5, EPS);
+        CHECK_NEAR(fabs(c[i].pos[1]), 0.5, EPS);
+        CHECK_NEAR(c[i].depth, 0.01, EPS);
+    }
+    vec(p1, 0, 0, 2);   // apart
+    CHECK(dBoxBox(p1, R, s1, p2, R, s2, normal, &depth, &code, 8, c, sizeof c[0]) == 0);
+    CHECK(code == 0);
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_crossing_segments),
     TEST_CASE(test_clamped_segments),
@@ -377,5 +477,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_boxes_touching_and_apart),
     TEST_CASE(test_boxes_only_an_edge_axis_separates),
     TEST_CASE(test_random_boxes),
+    TEST_CASE(test_dboxbox_matches_the_collider),
+    TEST_CASE(test_dboxbox_resting_box),
     TEST_END,
 };

@@ -315,16 +315,31 @@ static dReal box_clearance(const dReal nl[3], const dReal Rm[3][3], const dReal 
     return best;
 }
 
+// The axis box_box chose, for its callers.
+static void report_axis(const dReal normal[3], dReal depth, int code, dReal normal_out[3],
+                        dReal *depth_out, int *code_out)
+{
+    for (int q = 0; q < 3; q++) normal_out[q] = normal[q];
+    *depth_out = depth;
+    *code_out = code;
+}
+
 // Box-box. In box 1's frame (axes A_i, half sides a), with box 2's centre T
 // and Rm_ij = A_i . B_j, the 15 candidate axes are A_i, B_j and A_i x B_j;
 // along each the boxes overlap by (radius1 + radius2 - |T . axis|) / |axis|.
 // Any negative overlap separates them (return at once); otherwise the axis
 // of least overlap gives the normal: a face axis the face contacts, an edge
 // axis one contact between the two edges, as deep as that overlap.
-int dxCollideBoxBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)
+//
+// Boxes given by centre, rotation and sides; contacts name o1 and o2 (which
+// may be NULL). The contact normal goes to normal_out, the depth along it to
+// *depth_out and the axis to *code_out, numbered as ODE 0.16's dBoxBox does:
+// 1-3 box 1's faces, 4-6 box 2's, 7 + 3 i + j the edge pair A_i x B_j.
+static int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const dReal *p2,
+                   const dReal *R2, const dReal *s2, dxGeom *o1, dxGeom *o2, int flags,
+                   dContactGeom *out, int skip, dReal normal_out[3], dReal *depth_out,
+                   int *code_out)
 {
-    const dReal *p1 = o1->pos, *p2 = o2->pos, *R1 = o1->R, *R2 = o2->R;
-    const dReal *s1 = ((dxBox *)o1)->side, *s2 = ((dxBox *)o2)->side;
     const dReal a[3] = { s1[0] / 2, s1[1] / 2, s1[2] / 2 };
     const dReal b[3] = { s2[0] / 2, s2[1] / 2, s2[2] / 2 };
     dReal d[3] = { p2[0] - p1[0], p2[1] - p1[1], p2[2] - p1[2] }, T[3];
@@ -392,6 +407,7 @@ int dxCollideBoxBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int sk
         }
         dx_to_local(R1, normal, nl);
         dReal clear = box_clearance(nl, Rm, over, proj);
+        report_axis(normal, best, code, normal_out, depth_out, code_out);
         return box_face_contacts(p1, R1, a, code, nf, p2, R2, b, normal, clear, o1, o2, max, out,
                                  skip);
     }
@@ -401,6 +417,7 @@ int dxCollideBoxBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int sk
         for (int q = 0; q < 3; q++) normal[q] = nf[q] = sg * R2[4 * q + j];
         dx_to_local(R1, normal, nl);
         dReal clear = box_clearance(nl, Rm, over, proj);
+        report_axis(normal, best, code, normal_out, depth_out, code_out);
         return box_face_contacts(p2, R2, b, j, nf, p1, R1, a, normal, clear, o1, o2, max, out,
                                  skip);
     }
@@ -415,7 +432,39 @@ int dxCollideBoxBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int sk
     dReal pos[3];
     box_edge_point(p1, R1, a, i, p2, R2, b, j, normal, pos);
     dx_put_contact(out, 0, skip, pos, normal, best, o1, o2);
+    report_axis(normal, best, code, normal_out, depth_out, code_out);
     return 1;
+}
+
+int dxCollideBoxBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)
+{
+    dReal normal[3], depth;
+    int code;
+    return box_box(o1->pos, o1->R, ((dxBox *)o1)->side, o2->pos, o2->R, ((dxBox *)o2)->side, o1,
+                   o2, flags, out, skip, normal, &depth, &code);
+}
+
+// ODE 0.16's public box-box test. As there, normal is the direction from box
+// 1 into box 2 (the contacts' normal negated) and return_code the axis
+// (1-15, 0 if apart); the contacts get positions, depths and normals, with
+// g1 and g2 left 0.
+int dBoxBox(const dVector3 p1, const dMatrix3 R1, const dVector3 side1, const dVector3 p2,
+            const dMatrix3 R2, const dVector3 side2, dVector3 normal, dReal *depth,
+            int *return_code, int flags, dContactGeom *contact, int skip)
+{
+    DX_CHECK_ARG(p1 && R1 && side1 && p2 && R2 && side2, return 0, "a box argument is NULL");
+    DX_CHECK_ARG(normal && depth && return_code, return 0, "an output is NULL");
+    DX_CHECK_ARG(contact != NULL, return 0, "contact is NULL");
+    DX_CHECK_ARG(skip >= (int)sizeof(dContactGeom), return 0,
+                 "skip %d is smaller than sizeof(dContactGeom)", skip);
+    dReal n[3] = { 0, 0, 0 }, d = 0;
+    int code = -1;
+    int count = box_box(p1, R1, side1, p2, R2, side2, NULL, NULL, flags, contact, skip, n, &d,
+                        &code);
+    *return_code = count > 0 ? code + 1 : 0;
+    *depth = count > 0 ? d : 0;
+    for (int q = 0; q < 3; q++) normal[q] = -n[q];
+    return count;
 }
 
 // Box-plane: corner c is below the plane by d - n . c; with the normal in

@@ -60,6 +60,16 @@ ODE_API void dGeomGetPosRelPoint(dGeomID geom, dReal px, dReal py, dReal pz, dVe
 ODE_API void dGeomVectorToWorld(dGeomID geom, dReal px, dReal py, dReal pz, dVector3 result);
 ODE_API void dGeomVectorFromWorld(dGeomID geom, dReal px, dReal py, dReal pz, dVector3 result);
 
+/** Box-box test on boxes given by centre, rotation and side lengths (ODE 0.16):
+ *  returns the contacts written (flags and skip as dCollide; g1, g2 left 0),
+ *  normal = the direction from box 1 into box 2, depth = the penetration along
+ *  it, return_code = the separating axis: 1-3 box 1's faces, 4-6 box 2's,
+ *  7-15 the edge pairs; 0 if the boxes are apart. */
+ODE_API int dBoxBox(const dVector3 p1, const dMatrix3 R1, const dVector3 side1,
+                    const dVector3 p2, const dMatrix3 R2, const dVector3 side2,
+                    dVector3 normal, dReal *depth, int *return_code, int flags,
+                    dContactGeom *contact, int skip);
+
 /* ---- geom offsets (ODE 0.16) --------------------------------------------
  * A geom on a body may sit at a fixed pose relative to the body (the modern
  * replacement for a geometry transform). Setting an offset needs a body; the
