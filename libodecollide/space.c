@@ -75,6 +75,7 @@ static const char *space_name(int cls)
     switch (cls) {
     case dSimpleSpaceClass: return "simple space";
     case dHashSpaceClass: return "hash space";
+    case dSweepAndPruneSpaceClass: return "sweep-and-prune space";
     case dQuadTreeSpaceClass: return "quadtree space";
     default: return "space";
     }

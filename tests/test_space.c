@@ -16,7 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { SIMPLE, HASH, QUADTREE, N_TYPES };
+enum { SIMPLE, HASH, QUADTREE, SAP, N_TYPES };
 
 // A quadtree around the random scenes below (+-25 with a few larger geoms).
 static dSpaceID make_space(int type, dSpaceID parent)
@@ -25,6 +25,7 @@ static dSpaceID make_space(int type, dSpaceID parent)
     switch (type) {
     case SIMPLE: return dSimpleSpaceCreate(parent);
     case HASH: return dHashSpaceCreate(parent);
+    case SAP: return dSweepAndPruneSpaceCreate(parent, dSAP_AXES_XZY);
     default: return dQuadTreeSpaceCreate(parent, center, extents, 5);
     }
 }
@@ -321,6 +322,56 @@ static int test_quadtree_agrees_whatever_its_axes_and_region(void)
     return 0;
 }
 
+// Every axis order of the sweep-and-prune space finds the brute-force pairs,
+// in a fresh scene and after most geoms moved a little and a few far (the
+// sort repaired in place, or redone).
+static int test_sap_agrees_whatever_its_axis_order(void)
+{
+    static const int orders[6] = { dSAP_AXES_XYZ, dSAP_AXES_XZY, dSAP_AXES_YXZ,
+                                   dSAP_AXES_YZX, dSAP_AXES_ZXY, dSAP_AXES_ZYX };
+    for (int i = 0; i < 6; i++) {
+        dSpaceID s = dSweepAndPruneSpaceCreate(0, orders[i]);
+        CHECK(dGeomGetClass((dGeomID)s) == dSweepAndPruneSpaceClass);
+        dGeomID g[SCENE_N];
+        const int n = 500;
+        random_scene(s, g, n, 7 + (uint64_t)i);
+        if (check_space_finds(s, g, n)) return 1;
+        uint64_t r = 12345 + (uint64_t)i;
+        for (int k = 0; k < n; k++) {
+            if (dGeomGetClass(g[k]) == dPlaneClass) continue;
+            r = r * 6364136223846793005u + 1442695040888963407u;
+            const dReal *p = dGeomGetPosition(g[k]);
+            dReal step = (r >> 60) == 0 ? 20 : REAL(0.3);   // 1 in 16 moves far
+            dGeomSetPosition(g[k], p[0] + step * (dReal)((r >> 33) % 3 - 1),
+                             p[1] - step * (dReal)((r >> 40) % 3 - 1), p[2]);
+        }
+        if (check_space_finds(s, g, n)) return 1;
+        dSpaceDestroy(s);
+    }
+    return 0;
+}
+
+// A bad axis order is reported and makes no space.
+static int count_errors;
+static void counting_handler(int num, const char *msg, va_list ap)
+{
+    (void)num;
+    (void)msg;
+    (void)ap;
+    count_errors++;
+}
+
+static int test_sap_rejects_a_bad_axis_order(void)
+{
+    dSetDebugHandler(counting_handler);
+    count_errors = 0;
+    CHECK(dSweepAndPruneSpaceCreate(0, 0) == NULL);   // x, x, x
+    CHECK(dSweepAndPruneSpaceCreate(0, 3 | 1 << 2 | 2 << 4) == NULL);
+    CHECK(count_errors == 2);
+    dSetDebugHandler(NULL);
+    return 0;
+}
+
 static int test_moved_geoms_are_found_at_their_new_place(void)
 {
     for (int t = 0; t < N_TYPES; t++) {
@@ -403,6 +454,25 @@ static int test_hash_space_work_grows_near_linearly(void)
     // for the boundary of the scene. n^2/2 would be 32e6.
     CHECK(tests[1] < 10 * tests[0]);
     CHECK(tests[1] < 8000ul * 8000ul / 2 / 500);
+    return 0;
+}
+
+// The sweep visits the geoms whose boxes overlap its own along the sweep
+// axis and passes on only those that overlap on the other two: every pair it
+// tests is a pair of overlapping boxes, whatever the number of geoms.
+static int test_sap_tests_only_overlapping_boxes(void)
+{
+    const int n[2] = { 1000, 8000 };
+    for (int i = 0; i < 2; i++) {
+        dSpaceID s = dSweepAndPruneSpaceCreate(0, dSAP_AXES_XYZ);
+        spread_scene(s, n[i], i, 42);
+        int found = 0;
+        unsigned long before = dx_aabb_tests;
+        dSpaceCollide(s, &found, count_pair);
+        CHECK(found > 0);
+        CHECK(dx_aabb_tests - before == (unsigned long)found);
+        dSpaceDestroy(s);
+    }
     return 0;
 }
 
@@ -994,7 +1064,8 @@ static int test_hash_levels_round_trip_and_are_checked(void)
 static int test_space_classes_and_defaults(void)
 {
     for (int t = 0; t < N_TYPES; t++) {
-        static const int cls[] = { dSimpleSpaceClass, dHashSpaceClass, dQuadTreeSpaceClass };
+        static const int cls[] = { dSimpleSpaceClass, dHashSpaceClass, dQuadTreeSpaceClass,
+                                   dSweepAndPruneSpaceClass };
         dSpaceID s = make_space(t, 0);
         CHECK(dSpaceGetClass(s) == cls[t] && dGeomGetClass((dGeomID)s) == cls[t]);
         CHECK(dGeomIsSpace((dGeomID)s) && dSpaceGetNumGeoms(s) == 0);
@@ -1127,8 +1198,11 @@ const test_case test_cases[] = {
     TEST_CASE(test_hash_space_agrees_at_other_levels),
     TEST_CASE(test_hash_space_agrees_over_many_sizes),
     TEST_CASE(test_quadtree_agrees_whatever_its_axes_and_region),
+    TEST_CASE(test_sap_agrees_whatever_its_axis_order),
+    TEST_CASE(test_sap_rejects_a_bad_axis_order),
     TEST_CASE(test_moved_geoms_are_found_at_their_new_place),
     TEST_CASE(test_hash_space_work_grows_near_linearly),
+    TEST_CASE(test_sap_tests_only_overlapping_boxes),
     TEST_CASE(test_quadtree_work_is_far_below_quadratic),
     TEST_CASE(test_one_geom_against_a_big_space_costs_few_tests),
     TEST_CASE(test_collide_allocates_nothing_in_steady_state),

@@ -20,6 +20,16 @@ typedef void dNearCallback(void *data, dGeomID o1, dGeomID o2);
 ODE_API dSpaceID dSimpleSpaceCreate(dSpaceID space);
 /** Multi-resolution hash table: O(n) for geoms spread out in space. */
 ODE_API dSpaceID dHashSpaceCreate(dSpaceID space);
+
+/* Sweep-and-prune space (ODE 0.16): the geoms sorted along the first axis of
+ * axisorder, pruned on the second; best for many geoms that mostly stay put. */
+#define dSAP_AXES_XYZ ((0) | (1 << 2) | (2 << 4))
+#define dSAP_AXES_XZY ((0) | (2 << 2) | (1 << 4))
+#define dSAP_AXES_YXZ ((1) | (0 << 2) | (2 << 4))
+#define dSAP_AXES_YZX ((1) | (2 << 2) | (0 << 4))
+#define dSAP_AXES_ZXY ((2) | (0 << 2) | (1 << 4))
+#define dSAP_AXES_ZYX ((2) | (1 << 2) | (0 << 4))
+ODE_API dSpaceID dSweepAndPruneSpaceCreate(dSpaceID space, int axisorder);
 /** A quadtree over the box Center +- Extents (Extents are half-sizes), split
  *  on the two axes with the larger extents (x and y on ties), Depth >= 1
  *  levels below the root. */

@@ -183,7 +183,7 @@ static void amotor_fill_rows(dxJoint *j, dxJointRows *rows)
 
 static const dxJointClass amotor_class = {
     dJointTypeAMotor, "angular motor", sizeof(dxJointAMotor), amotor_init, amotor_count_rows,
-    amotor_fill_rows
+    amotor_fill_rows, NULL
 };
 
 // ---- public API -------------------------------------------------------------

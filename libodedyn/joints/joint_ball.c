@@ -34,7 +34,7 @@ static void ball_fill_rows(dxJoint *j, dxJointRows *rows)
 }
 
 static const dxJointClass ball_class = {
-    dJointTypeBall, "ball", sizeof(dxJointBall), ball_init, ball_count_rows, ball_fill_rows
+    dJointTypeBall, "ball", sizeof(dxJointBall), ball_init, ball_count_rows, ball_fill_rows, NULL
 };
 
 dJointID dJointCreateBall(dWorldID w, dJointGroupID g)

@@ -47,7 +47,7 @@ static void hinge_fill_rows(dxJoint *j, dxJointRows *rows)
 
 static const dxJointClass hinge_class = {
     dJointTypeHinge, "hinge", sizeof(dxJointHinge), hinge_init, hinge_count_rows,
-    hinge_fill_rows
+    hinge_fill_rows, NULL
 };
 
 dJointID dJointCreateHinge(dWorldID w, dJointGroupID g)

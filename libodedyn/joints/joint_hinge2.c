@@ -301,7 +301,7 @@ static void hinge2_fill_rows(dxJoint *j, dxJointRows *rows)
 
 static const dxJointClass hinge2_class = {
     dJointTypeHinge2, "hinge-2", sizeof(dxJointHinge2), hinge2_init, hinge2_count_rows,
-    hinge2_fill_rows
+    hinge2_fill_rows, NULL
 };
 
 // ---- public API -------------------------------------------------------------

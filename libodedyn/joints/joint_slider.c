@@ -100,7 +100,7 @@ static void slider_fill_rows(dxJoint *j, dxJointRows *rows)
 
 static const dxJointClass slider_class = {
     dJointTypeSlider, "slider", sizeof(dxJointSlider), slider_init, slider_count_rows,
-    slider_fill_rows
+    slider_fill_rows, NULL
 };
 
 dJointID dJointCreateSlider(dWorldID w, dJointGroupID g)

@@ -152,7 +152,7 @@ static void universal_fill_rows(dxJoint *j, dxJointRows *rows)
 
 static const dxJointClass universal_class = {
     dJointTypeUniversal, "universal", sizeof(dxJointUniversal), universal_init,
-    universal_count_rows, universal_fill_rows
+    universal_count_rows, universal_fill_rows, NULL
 };
 
 dJointID dJointCreateUniversal(dWorldID w, dJointGroupID g)
