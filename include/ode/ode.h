@@ -21,4 +21,10 @@
 #include <ode/backend.h>
 #include <ode/version.h>
 
+/* The C++ wrappers (dWorld, dBody, dGeom ...), for C++ programs only. */
+#ifdef __cplusplus
+#include <ode/odecpp.h>
+#include <ode/odecpp_collision.h>
+#endif
+
 #endif
