@@ -203,7 +203,11 @@ typedef enum {
     dParamERP##x,
 
 enum {
-    ODE_PARAM_NAMES_(0, )
+    /* The first axis' names, spelled out (an empty macro argument is not
+     * C89/C++98). */
+    dParamLoStop = 0, dParamHiStop, dParamVel, dParamLoVel, dParamHiVel, dParamFMax,
+    dParamFudgeFactor, dParamBounce, dParamCFM, dParamStopERP, dParamStopCFM,
+    dParamSuspensionERP, dParamSuspensionCFM, dParamERP,
     dParamsInGroup,
     dParamGroup1 = 0x000,
     ODE_PARAM_NAMES_(0x000, 1)
