@@ -16,7 +16,8 @@
 // turned in that frame since, unwrapped from step to step (so it decreases
 // as the wheel turns positively about its axis). The drive keeps the arc
 // lengths equal: delta = r0 phase0 + r1 phase1 = 0 for gears, r0 phase0 -
-// r1 phase1 = 0 for a chain, corrected with the joint's ERP. With backlash
+// r1 phase1 = 0 for a chain (signs as the tangent sees the wheels turn, see
+// arc_coefficient), corrected with the joint's ERP. With backlash
 // b > 0 the row only acts once |delta| > b, and only pushes back towards the
 // gap: the wheels turn freely through a play of b (arc length) either way.
 // A chain pulls with one branch or the other by the sign of delta: the
@@ -31,7 +32,11 @@
 // between the anchors (ODE mirrors across a parallel plane through the
 // origin); the phase estimate that picks the turn a wheel is in subtracts the
 // turn of this step (ODE adds it, which is right only below a quarter turn
-// per step). In the configurations ODE handles, the results are the same.
+// per step); the sign of each wheel's arc in delta follows the tangent (ODE
+// adds the arcs of both gears, which for bevel gears with some orientations
+// of the axes contradicts the row: there its ERP term makes the teeth slide at
+// a constant phase error). In the configurations ODE handles, the results are
+// the same.
 
 #include "joint_geometry.h"
 
@@ -176,6 +181,21 @@ static void track_phase(dxJointTransmission *t, const mesh *g, int i, dReal fps)
     t->phase[i] = theta + turns * (dReal)(2 * M_PI);
 }
 
+// The weight e_i of wheel i's phase in delta = e0 phase0 + e1 phase1, chosen
+// so that d(delta)/dt is the row's velocity: turning by w about n_i moves
+// the contact point at w n_i x r_i (r_i from anchor to contact point), which
+// the row sees along +l0 (wheel 0) or -l1 (wheel 1), while the phase changes
+// by -w. That is +r0, +r1 for gears with parallel axes and +r0, -r1 for a
+// chain, as in ODE; for bevel gears it depends on how the axes point.
+static dReal arc_coefficient(const mesh *g, int i)
+{
+    dVector3 r, v;
+    dSubtractVectors3(r, g->c[i], g->a[i]);
+    dCalcVectorCross3(v, g->n[i], r);
+    const dReal e = dCalcVectorDot3(g->l[i], v);
+    return i == 0 ? -e : e;
+}
+
 static void transmission_init(dxJoint *j)
 {
     dxJointTransmission *t = (dxJointTransmission *)j;
@@ -211,11 +231,8 @@ static void transmission_fill_rows(dxJoint *j, dxJointRows *rows)
     if (t->update) set_reference(t, &g);
     for (int i = 0; i < 2; i++) track_phase(t, &g, i, rows->fps);
 
-    const dReal r0 = dCalcPointsDistance3(g.c[0], g.a[0]);
-    const dReal r1 = dCalcPointsDistance3(g.c[1], g.a[1]);
+    const dReal delta = arc_coefficient(&g, 0) * t->phase[0] + arc_coefficient(&g, 1) * t->phase[1];
     const int chain = t->mode == dTransmissionChainDrive;
-    const dReal delta = chain ? r0 * t->phase[0] - r1 * t->phase[1]
-                              : r0 * t->phase[0] + r1 * t->phase[1];
     if (chain && delta < 0) {
         // The other branch of the chain pulls: mirror the contact points and
         // tangents across the plane of the baseline and the axis.
