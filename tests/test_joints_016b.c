@@ -106,7 +106,7 @@ static int test_lmotor_defaults_and_axes(void)
     dJointSetLMotorAxis(j, 1, 1, 1, 1, 0);
     dJointSetLMotorAxis(j, 2, 2, 0, 0, -3);
     CHECK(dJointGetLMotorNumAxes(j) == 3);
-    const dReal s = REAL(M_SQRT1_2), tol = TOL(1e-12, 1e-6);
+    const dReal s = (dReal)M_SQRT1_2, tol = TOL(1e-12, 1e-6);
     dJointGetLMotorAxis(j, 0, v);
     CHECK_VEC(v, 0, 1, 0, tol);
     dJointGetLMotorAxis(j, 1, v);
@@ -115,8 +115,8 @@ static int test_lmotor_defaults_and_axes(void)
     CHECK_VEC(v, 0, 0, -1, tol);
 
     // Axes 1 and 2 turn with their bodies, axis 0 stays in the world.
-    turn_body(b1, 0, 0, 1, REAL(M_PI / 4));
-    turn_body(b2, 0, 1, 0, REAL(M_PI / 2));
+    turn_body(b1, 0, 0, 1, (dReal)(M_PI / 4));
+    turn_body(b2, 0, 1, 0, (dReal)(M_PI / 2));
     dJointGetLMotorAxis(j, 0, v);
     CHECK_VEC(v, 0, 1, 0, tol);
     dJointGetLMotorAxis(j, 1, v);
@@ -624,7 +624,7 @@ static int test_dhinge_getters_and_setters(void)
     CHECK(dJointGetDHingeParam(j, dParamERP) == REAL(0.3));
     CHECK(dJointGetDBallParam(j, dParamERP) == REAL(0.3));
     // The axis turns with body 1.
-    turn_body(b1, 0, 0, 1, REAL(M_PI / 2));
+    turn_body(b1, 0, 0, 1, (dReal)(M_PI / 2));
     dJointGetDHingeAxis(j, v);
     CHECK_VEC(v, -1, 0, 0, tol);
     dWorldDestroy(w);
