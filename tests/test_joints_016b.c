@@ -1012,6 +1012,50 @@ static int test_transmission_bad_input(void)
     return 0;
 }
 
+// The five joints under dWorldStepFast1 (rows filled once per sub-step):
+// a gear pair, a double pendulum of a double ball and a double hinge, a
+// body on a plane-2D joint with a linear motor; 2 s, the constraints hold
+// to the looser accuracy of that stepper.
+static int test_all_joints_under_stepfast1(void)
+{
+    const dReal a[2][3] = { { 1, 0, 1 }, { -1, 0, 1 } };
+    const dReal n[2][3] = { { 0, 0, 1 }, { 0, 0, 1 } };
+    gearbox g;
+    make_gearbox(&g, dTransmissionParallelAxes, a, n, 1);
+    dWorldSetGravity(g.w, 0, 0, REAL(-9.81));
+    dBodyID p1 = make_body(g.w, 5, 0, 2, 1, REAL(0.1), REAL(0.1), REAL(0.1));
+    dBodyID p2 = make_body(g.w, REAL(5.1), 0, 1, 1, REAL(0.1), REAL(0.1), REAL(0.1));
+    dJointID db = dJointCreateDBall(g.w, 0), dh = dJointCreateDHinge(g.w, 0);
+    dJointAttach(db, p1, 0);
+    dJointSetDBallAnchor1(db, 5, 0, 2);
+    dJointSetDBallAnchor2(db, REAL(5.2), 0, 3);
+    dJointAttach(dh, p2, p1);
+    dJointSetDHingeAxis(dh, 0, 1, 0);
+    dJointSetDHingeAnchor1(dh, REAL(5.1), 0, 1);
+    dJointSetDHingeAnchor2(dh, 5, 0, 2);
+    dBodyID slab = make_body(g.w, -5, 0, 0, 1, REAL(0.1), REAL(0.1), REAL(0.1));
+    dJointID pl = dJointCreatePlane2D(g.w, 0), lm = dJointCreateLMotor(g.w, 0);
+    dJointAttach(pl, slab, 0);
+    dJointAttach(lm, slab, 0);
+    dJointSetLMotorNumAxes(lm, 1);
+    dJointSetLMotorAxis(lm, 0, 0, 1, 1, 0);
+    dJointSetLMotorParam(lm, dParamVel, 1);
+    dJointSetLMotorParam(lm, dParamFMax, 100);
+    for (int i = 0; i < 200; i++) dWorldStepFast1(g.w, STEP, 20);
+    dVector3 p, q;
+    dJointGetDBallAnchor1(db, p);
+    dJointGetDBallAnchor2(db, q);
+    CHECK_NEAR(dist3(p, q), dJointGetDBallDistance(db), 1e-2);
+    dJointGetDHingeAnchor1(dh, p);
+    dJointGetDHingeAnchor2(dh, q);
+    CHECK_NEAR(dist3(p, q), dJointGetDHingeDistance(dh), 1e-2);
+    CHECK_NEAR(dBodyGetPosition(slab)[2], 0, 1e-2);
+    CHECK_NEAR(dot3(dBodyGetLinearVel(slab), (dReal[3]){ 1, 1, 0 }) / sqrt(2.0), 1, 1e-2);
+    CHECK_NEAR(dBodyGetAngularVel(g.wheel[1])[2], -1, 1e-2);
+    dWorldDestroy(g.w);
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_lmotor_defaults_and_axes),
     TEST_CASE(test_lmotor_param_groups_route_to_axes),
@@ -1036,5 +1080,6 @@ const test_case test_cases[] = {
     TEST_CASE(test_transmission_keeps_ratio_in_every_mode),
     TEST_CASE(test_transmission_backlash_is_free_play),
     TEST_CASE(test_transmission_bad_input),
+    TEST_CASE(test_all_joints_under_stepfast1),
     TEST_END
 };
