@@ -267,10 +267,10 @@ static void transmission_fill_rows(dxJoint *j, dxJointRows *rows)
     const dReal k = rows->fps * t->erp;
     if (delta > 0) {
         rows->c[0] = -k * (delta - t->backlash);
-        if (t->backlash > 0) rows->lo[0] = -dInfinity, rows->hi[0] = 0;
+        if (t->backlash > 0) rows->hi[0] = 0;   // lo stays -inf
     } else {
         rows->c[0] = -k * (delta + t->backlash);
-        if (t->backlash > 0) rows->lo[0] = 0, rows->hi[0] = dInfinity;
+        if (t->backlash > 0) rows->lo[0] = 0;   // hi stays +inf
     }
 }
 
