@@ -396,6 +396,51 @@ static void pu_reversed(void)
     dWorldDestroy(w);
 }
 
+// Attached as (0, b) with the anchor at b's centre: the rotation motors of PR
+// (group 2) and piston (group 2), and PU's group-1 motor (on the stored axis
+// 1: the user's axis 2), each turning the body; stop and motor senses as
+// ODE's. The PU's axis P getters are left out (ODE's turns with the body).
+static void reversed_rotation_motors(void)
+{
+    dWorldID w = dWorldCreate();
+    dBodyID b[3];
+    for (int k = 0; k < 3; k++) b[k] = sphere(w, 1, k, 0, 0);
+    dJointID pr = dJointCreatePR(w, 0), pi = dJointCreatePiston(w, 0), pu = dJointCreatePU(w, 0);
+    dJointAttach(pr, 0, b[0]);
+    dJointSetPRAnchor(pr, 0, 0, 0);
+    dJointSetPRAxis1(pr, 0, 1, 0);
+    dJointSetPRAxis2(pr, 1, 0, 0);
+    dJointSetPRParam(pr, dParamVel2, 0.5);
+    dJointSetPRParam(pr, dParamFMax2, 10);
+    dJointSetPRParam(pr, dParamHiStop2, 0.3);
+    dJointAttach(pi, 0, b[1]);
+    dJointSetPistonAnchor(pi, 1, 0, 0);
+    dJointSetPistonAxis(pi, 0, 0, 1);
+    dJointSetPistonParam(pi, dParamVel2, -0.5);
+    dJointSetPistonParam(pi, dParamFMax2, 10);
+    dJointSetPistonParam(pi, dParamLoStop2, -0.3);
+    dJointAttach(pu, 0, b[2]);
+    dJointSetPUAnchor(pu, 2, 0, 0);
+    dJointSetPUAxis1(pu, 1, 0, 0);
+    dJointSetPUAxis2(pu, 0, 1, 0);
+    dJointSetPUAxisP(pu, 0, 0, 1);
+    dJointSetPUParam(pu, dParamVel, 0.5);
+    dJointSetPUParam(pu, dParamFMax, 10);
+    dJointSetPUParam(pu, dParamHiStop, 0.3);
+    for (int i = 0; i < 100; i++) dWorldStep(w, 0.01);
+    const dReal v[4] = { dJointGetPRAngle(pr), dJointGetPRAngleRate(pr), dJointGetPistonAngle(pi),
+                         dJointGetPistonAngleRate(pi) };
+    diff_values("reversed_motors_pr_piston_angles", TRAJ, v, 4);
+    dReal a1, a2;
+    dJointGetPUAngles(pu, &a1, &a2);
+    const dReal u[4] = { a1, a2, dJointGetPUAngle1Rate(pu), dJointGetPUAngle2Rate(pu) };
+    diff_values("reversed_motors_pu_angles", TRAJ, u, 4);
+    print_body("reversed_motors_pr", b[0]);
+    print_body("reversed_motors_piston", b[1]);
+    print_body("reversed_motors_pu", b[2]);
+    dWorldDestroy(w);
+}
+
 static void params(void)
 {
     dWorldID w = dWorldCreate();
@@ -432,6 +477,7 @@ int main(void)
     pu_two_bodies();
     pu_one_body();
     pu_reversed();
+    reversed_rotation_motors();
     params();
     dCloseODE();
     return 0;
