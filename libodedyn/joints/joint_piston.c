@@ -55,7 +55,7 @@ static void piston_count_rows(dxJoint *j, dxJointRowCount *count)
     if (dxLimotActive(&p->limot_p)) count->m++;
     p->limot_r.limit = 0;
     if (has_stops(&p->limot_r))
-        dxLimotTestLimit(&p->limot_r, dxJointRelativeAngle(j, p->axis1, p->qrel));
+        dxLimotTestLimit(&p->limot_r, dxJointHingeAngle(j, p->axis1, p->qrel));
     if (dxLimotActive(&p->limot_r)) count->m++;
 }
 
@@ -239,7 +239,7 @@ dReal dJointGetPistonAngle(dJointID j)
     PISTON(j, return 0);
     dxJointPiston *p = (dxJointPiston *)j;
     if (!dxJointBody(j, 0)) return 0;
-    const dReal angle = dxJointRelativeAngle(j, p->axis1, p->qrel);
+    const dReal angle = dxJointHingeAngle(j, p->axis1, p->qrel);
     return (j->flags & DX_JOINT_REVERSE) ? -angle : angle;
 }
 

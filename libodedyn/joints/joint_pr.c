@@ -58,7 +58,7 @@ static void pr_count_rows(dxJoint *j, dxJointRowCount *count)
     if (dxLimotActive(p)) count->m++;
     r->limit = 0;
     if ((r->lostop >= -M_PI || r->histop <= M_PI) && r->lostop <= r->histop)
-        dxLimotTestLimit(r, dxJointRelativeAngle(j, pr->axis_r1, pr->qrel));
+        dxLimotTestLimit(r, dxJointHingeAngle(j, pr->axis_r1, pr->qrel));
     if (dxLimotActive(r)) count->m++;
 }
 
@@ -213,7 +213,7 @@ dReal dJointGetPRAngle(dJointID j)
     PR(j, return 0);
     dxJointPR *pr = (dxJointPR *)j;
     if (!dxJointBody(j, 0)) return 0;
-    const dReal angle = dxJointRelativeAngle(j, pr->axis_r1, pr->qrel);
+    const dReal angle = dxJointHingeAngle(j, pr->axis_r1, pr->qrel);
     return (j->flags & DX_JOINT_REVERSE) ? -angle : angle;
 }
 

@@ -16,6 +16,7 @@
 // the constraint rows, which agree while b is not turned).
 
 #include "joint_geometry.h"
+#include "joint_slide.h"
 
 typedef struct dxJointPU {
     dxJoint base;
@@ -62,16 +63,6 @@ static void cross_quaternion(const dVector3 a, const dVector3 b, dQuaternion q)
     dQfromR(q, R);
 }
 
-// ODE's hinge angle from a relative rotation q (-pi..pi): the rotation angle
-// of q, signed by the side of axis its rotation vector lies, negated.
-static dReal hinge_angle(const dQuaternion q, const dVector3 axis)
-{
-    const dReal s = dCalcVectorLength3(q + 1);
-    dReal theta = 2 * dAtan2(s, dCalcVectorDot3(q + 1, axis) >= 0 ? q[0] : -q[0]);
-    if (theta > M_PI) theta -= 2 * M_PI;
-    return -theta;
-}
-
 // Body 0 (or body 1, or the world) against the cross now, times the inverse
 // of the same at zero angles: the turn about the axis on that body.
 static void compute_rest_rotations(dxJointPU *pu)
@@ -100,12 +91,12 @@ static void stored_angles(const dxJointPU *pu, dReal *angle1, dReal *angle2)
     cross_quaternion(ax1, ax2, qc);
     dQMultiply1(qq, b0->q, qc);
     dQMultiply2(qrel, qq, pu->qrel1);
-    *angle1 = hinge_angle(qrel, pu->axis1);
+    *angle1 = dxQuaternionHingeAngle(qrel, pu->axis1);
     cross_quaternion(ax2, ax1, qc);
     if (b1) dQMultiply1(qq, b1->q, qc);
     else dCopyVector4(qq, qc);
     dQMultiply2(qrel, qq, pu->qrel2);
-    *angle2 = -hinge_angle(qrel, pu->axis2);
+    *angle2 = -dxQuaternionHingeAngle(qrel, pu->axis2);
 }
 
 // The anchors in world coordinates.

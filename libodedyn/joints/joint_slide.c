@@ -5,6 +5,10 @@
 
 #include "joint_slide.h"
 
+#include "joint_geometry.h"
+
+#include <ode/rotation.h>
+
 void dxJointSlideFrame(const dxJoint *j, const dVector3 offset1, const dVector3 anchor2,
                        dxSlideFrame *f)
 {
@@ -67,4 +71,20 @@ dReal dxJointSlidePosition(const dxJoint *j, const dVector3 offset1, const dVect
     // err = anchor - point; the position is (point - anchor) . axis.
     const dReal pos = -dCalcVectorDot3(axis, f.err);
     return (j->flags & DX_JOINT_REVERSE) ? -pos : pos;
+}
+
+dReal dxQuaternionHingeAngle(const dQuaternion q, const dVector3 axis)
+{
+    const dReal s = dCalcVectorLength3(q + 1);
+    dReal theta = 2 * dAtan2(s, dCalcVectorDot3(q + 1, axis) >= 0 ? q[0] : -q[0]);
+    if (theta > M_PI) theta -= 2 * M_PI;
+    return -theta;
+}
+
+dReal dxJointHingeAngle(const dxJoint *j, const dVector3 axis, const dQuaternion qrel0)
+{
+    dQuaternion now, change;
+    dxJointRelativeQuaternion(j, now);
+    dQMultiply2(change, now, qrel0);
+    return dxQuaternionHingeAngle(change, axis);
 }

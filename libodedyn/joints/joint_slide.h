@@ -4,7 +4,7 @@
 // (ODE 0.16): a point of body 0 (an offset in its frame) that may only slide
 // along a line through an anchor on body 1 (or fixed in the world), the rows
 // that keep it on the line, the rows that leave one relative rotation free,
-// and the slide position.
+// the slide position, and ODE's hinge angle (also used by the PU joint).
 
 #ifndef DX_JOINT_SLIDE_H
 #define DX_JOINT_SLIDE_H
@@ -34,6 +34,15 @@ void dxJointSlideLineRows(const dxJoint *j, dxJointRows *rows, int row, const dV
 // 0's free axis onto body 1's.
 void dxJointTwistRows(const dxJoint *j, dxJointRows *rows, int row, const dVector3 u0,
                       const dVector3 u1, const dVector3 misalign);
+
+// ODE's hinge angle of a relative rotation q (-pi..pi): the whole rotation
+// angle of q, signed by the side of the axis its rotation vector lies on,
+// negated. Unlike dxJointRelativeAngle it counts turns about other axes too.
+dReal dxQuaternionHingeAngle(const dQuaternion q, const dVector3 axis);
+// That angle for the change of body 0 against body 1 (or the world) since
+// their relative orientation was qrel0 (dxJointRelativeQuaternion); axis in
+// body 0's frame. The PR and piston joints measure their rotation with it.
+dReal dxJointHingeAngle(const dxJoint *j, const dVector3 axis, const dQuaternion qrel0);
 
 // The slide position as ODE 0.16 defines it: axis (world) . (body 0's point -
 // anchor2), negated when the joint was attached as (0, b).

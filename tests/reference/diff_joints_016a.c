@@ -441,6 +441,76 @@ static void reversed_rotation_motors(void)
     dWorldDestroy(w);
 }
 
+// Getters against known poses: the joints set up between turned bodies (and
+// with one body, both orders), then the bodies moved and turned by hand and
+// given velocities. Exact up to rounding. A reversed PU's axis P and position
+// are printed only before the move (ODE's axis P turns with the body there).
+static void move_bodies(dBodyID a, dBodyID b)
+{
+    dQuaternion q;
+    dQFromAxisAndAngle(q, 0.3, -0.5, 0.8, 0.4);
+    dBodySetQuaternion(a, q);
+    dBodySetPosition(a, 0.1, 0.25, -0.2);
+    dBodySetLinearVel(a, 0.3, -0.2, 0.1);
+    dBodySetAngularVel(a, -0.4, 0.6, 0.2);
+    if (b) {
+        dQFromAxisAndAngle(q, -0.6, 0.2, 0.3, 0.7);
+        dBodySetQuaternion(b, q);
+        dBodySetPosition(b, 0.9, 1.1, 0.3);
+        dBodySetLinearVel(b, -0.1, 0.5, 0.2);
+        dBodySetAngularVel(b, 0.3, -0.1, 0.5);
+    }
+}
+
+static void posed_getters(void)
+{
+    for (int order = 0; order < 3; order++) {   // (a, b), (a, 0), (0, a)
+        dWorldID w = dWorldCreate();
+        dBodyID a = sphere(w, 1, 0, 0, 0), b = order ? 0 : sphere(w, 1, 1, 1, 0);
+        turn(a, 1, 0, 0, 0.5);
+        if (b) turn(b, 0, 1, 0, -0.3);
+        dJointID pr = dJointCreatePR(w, 0), pi = dJointCreatePiston(w, 0), pu = dJointCreatePU(w, 0);
+        dJointID js[3] = { pr, pi, pu };
+        for (int k = 0; k < 3; k++) {
+            if (order == 2) dJointAttach(js[k], 0, a);
+            else dJointAttach(js[k], a, b);
+        }
+        dJointSetPRAnchor(pr, 0.5, 0.5, 0);
+        dJointSetPRAxis1(pr, 1, 1, 0);
+        dJointSetPRAxis2(pr, 0, 0, 1);
+        dJointSetPistonAnchor(pi, 0.5, 0.5, 0);
+        dJointSetPistonAxis(pi, 1, 1, 0);
+        dJointSetPUAnchor(pu, 0.5, 0.5, 0);
+        dJointSetPUAxis1(pu, 0, 0, 1);
+        dJointSetPUAxis2(pu, 0.70710678118654752, -0.70710678118654752, 0);   // unit: ODE keeps
+                                                                        // a world axis unnormalised
+        dJointSetPUAxisP(pu, 1, 1, 0);
+        char name[64];
+        snprintf(name, sizeof name, "posed%d_pr_set", order);
+        print_pr(name, pr, EXACT);
+        snprintf(name, sizeof name, "posed%d_piston_set", order);
+        print_piston(name, pi, EXACT);
+        snprintf(name, sizeof name, "posed%d_pu_set", order);
+        print_pu(name, pu, EXACT, 1);
+        move_bodies(a, b);
+        snprintf(name, sizeof name, "posed%d_pr_moved", order);
+        print_pr(name, pr, EXACT);
+        snprintf(name, sizeof name, "posed%d_piston_moved", order);
+        print_piston(name, pi, EXACT);
+        if (order < 2) {
+            snprintf(name, sizeof name, "posed%d_pu_moved", order);
+            print_pu(name, pu, EXACT, b == 0);
+        } else {
+            dReal a1, a2;
+            dJointGetPUAngles(pu, &a1, &a2);
+            const dReal v[6] = { a1, a2, dJointGetPUAngle1(pu), dJointGetPUAngle2(pu),
+                                 dJointGetPUAngle1Rate(pu), dJointGetPUAngle2Rate(pu) };
+            diff_values("posed2_pu_moved_angles", EXACT * 10, v, 6);
+        }
+        dWorldDestroy(w);
+    }
+}
+
 static void params(void)
 {
     dWorldID w = dWorldCreate();
@@ -478,6 +548,7 @@ int main(void)
     pu_one_body();
     pu_reversed();
     reversed_rotation_motors();
+    posed_getters();
     params();
     dCloseODE();
     return 0;
