@@ -55,11 +55,26 @@ static void world_axes(const dxJointPU *pu, dVector3 ax1, dVector3 ax2, dVector3
 }
 
 // The orientation of the cross as a quaternion: its first axis along a, its
-// second along b (made perpendicular).
+// second along b made perpendicular (as dRFrom2Axes builds it), any
+// perpendicular while the axes are parallel (only while they are being set).
 static void cross_quaternion(const dVector3 a, const dVector3 b, dQuaternion q)
 {
+    dVector3 u, v, w;
+    dCopyVector3(u, a);
+    if (!dSafeNormalize3(u)) {
+        dQSetIdentity(q);
+        return;
+    }
+    dAddScaledVectors3(v, b, u, 1, -dCalcVectorDot3(b, u));
+    if (!dSafeNormalize3(v)) dPlaneSpace(u, v, w);
+    dCalcVectorCross3(w, u, v);
     dMatrix3 R;
-    dRFrom2Axes(R, a[0], a[1], a[2], b[0], b[1], b[2]);
+    for (int i = 0; i < 3; i++) {
+        R[i * 4 + 0] = u[i];
+        R[i * 4 + 1] = v[i];
+        R[i * 4 + 2] = w[i];
+        R[i * 4 + 3] = 0;
+    }
     dQfromR(q, R);
 }
 

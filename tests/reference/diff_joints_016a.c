@@ -115,9 +115,13 @@ static void pr_one_body(void)
     dJointSetPRParam(j, dParamLoStop2, -0.5);
     dJointSetPRParam(j, dParamHiStop2, 0.5);
     print_pr("pr1_set", j, EXACT);
+    dJointFeedback fb;
+    dJointSetFeedback(j, &fb);
     for (int i = 0; i < 200; i++) dWorldStep(w, 0.01);
     print_pr("pr1_end", j, TRAJ);
     print_body("pr1_b", b);
+    diff_values("pr1_feedback_f1", 1e-5, fb.f1, 3);
+    diff_values("pr1_feedback_t1", 1e-5, fb.t1, 3);
     dWorldDestroy(w);
 }
 
@@ -177,12 +181,16 @@ static void piston_two_bodies(void)
     dBodySetLinearVel(b, 0.3, 0.1, 0.2);
     dBodySetAngularVel(b, 0.8, 0.2, 0);
     print_piston("pi2_set", j, EXACT);
+    dJointFeedback fb;
+    dJointSetFeedback(j, &fb);
     for (int i = 0; i < 150; i++) dWorldStep(w, 0.01);
     print_piston("pi2_end", j, TRAJ);
     print_body("pi2_a", a);
     print_body("pi2_b", b);
     dJointAttach(j, b, a);
     print_piston("pi2_swapped", j, TRAJ);
+    diff_values("pi2_feedback_f1", 1e-5, fb.f1, 3);
+    diff_values("pi2_feedback_t1", 1e-5, fb.t1, 3);
     dWorldDestroy(w);
 }
 
@@ -362,9 +370,13 @@ static void pu_one_body(void)
     dJointSetPUParam(j, dParamHiStop, 0.3);
     dBodySetLinearVel(b, 0.5, 1.0, 0);
     print_pu("pu1_set", j, EXACT, 1);
+    dJointFeedback fb;
+    dJointSetFeedback(j, &fb);
     for (int i = 0; i < 150; i++) dWorldStep(w, 0.01);
     print_pu("pu1_end", j, TRAJ, 1);
     print_body("pu1_b", b);
+    diff_values("pu1_feedback_f1", 1e-5, fb.f1, 3);
+    diff_values("pu1_feedback_t1", 1e-5, fb.t1, 3);
     dWorldDestroy(w);
 }
 
@@ -482,8 +494,8 @@ static void posed_getters(void)
         dJointSetPistonAxis(pi, 1, 1, 0);
         dJointSetPUAnchor(pu, 0.5, 0.5, 0);
         dJointSetPUAxis1(pu, 0, 0, 1);
-        dJointSetPUAxis2(pu, 0.70710678118654752, -0.70710678118654752, 0);   // unit: ODE keeps
-                                                                        // a world axis unnormalised
+        // A unit axis: ODE keeps a world-frame axis unnormalised, this library not.
+        dJointSetPUAxis2(pu, 0.70710678118654752, -0.70710678118654752, 0);
         dJointSetPUAxisP(pu, 1, 1, 0);
         char name[64];
         snprintf(name, sizeof name, "posed%d_pr_set", order);
