@@ -61,10 +61,7 @@ static void cross_quaternion(const dVector3 a, const dVector3 b, dQuaternion q)
 {
     dVector3 u, v, w;
     dCopyVector3(u, a);
-    if (!dSafeNormalize3(u)) {
-        dQSetIdentity(q);
-        return;
-    }
+    dSafeNormalize3(u);   // unit already, up to rounding
     dAddScaledVectors3(v, b, u, 1, -dCalcVectorDot3(b, u));
     if (!dSafeNormalize3(v)) dPlaneSpace(u, v, w);
     dCalcVectorCross3(w, u, v);
