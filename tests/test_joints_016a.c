@@ -602,6 +602,16 @@ static int test_pu_getters_offsets_and_params_round_trip(void)
     CHECK_NEAR(dJointGetPUAngle2(j), 0, TOL(1e-12, 1e-6));
     dJointSetPUAnchorOffset(j, REAL(0.5), 0, 0, REAL(0.2), 0, 0);
     CHECK_NEAR(dJointGetPUPosition(j), 0.2, TOL(1e-12, 1e-6));
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+#endif
+    // The deprecated form: body 1 taken as displaced by delta at zero.
+    dJointSetPUAnchorDelta(j, REAL(0.5), 0, 0, REAL(0.2), 0, 0);
+    CHECK_NEAR(dJointGetPUPosition(j), -0.2, TOL(1e-12, 1e-6));
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
 
     for (int g = 0; g < 3; g++) {
         dJointSetPUParam(j, dParamVel + g * dParamGroup, (dReal)(g + 1));
