@@ -22,8 +22,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+// A geom and its AABB in the space's axis order (lo, hi along the sweep axis
+// first), kept in the entry so the sweep reads the list in order.
 typedef struct sap_entry {
-    dReal lo, hi;      // the AABB along the first axis
+    dReal lo, hi, lo1, hi1, lo2, hi2;
     dxGeom *g;
 } sap_entry;
 
@@ -103,12 +105,16 @@ static int sap_refresh(dxSapSpace *ss)
 {
     if (!ss->stale) return 1;
     if (ss->walking > 0) return 0;
-    const int a = ss->axis[0];
+    const int a = 2 * ss->axis[0], b = 2 * ss->axis[1], c = 2 * ss->axis[2];
     for (int i = 0; i < ss->n; i++) {
-        const dReal *box = ss->list[i].g->aabb;
-        dReal lo = box[2 * a], hi = box[2 * a + 1];
-        ss->list[i].lo = lo == lo ? lo : -dInfinity;
-        ss->list[i].hi = hi == hi ? hi : dInfinity;
+        sap_entry *e = &ss->list[i];
+        const dReal *box = e->g->aabb;
+        e->lo = box[a] == box[a] ? box[a] : -dInfinity;
+        e->hi = box[a + 1] == box[a + 1] ? box[a + 1] : dInfinity;
+        e->lo1 = box[b];
+        e->hi1 = box[b + 1];
+        e->lo2 = box[c];
+        e->hi2 = box[c + 1];
     }
     if (!insertion_sort(ss->list, ss->n, 4L * ss->n + 64))
         qsort(ss->list, (size_t)ss->n, sizeof *ss->list, by_lo);
@@ -119,11 +125,9 @@ static int sap_refresh(dxSapSpace *ss)
 static int enabled(const dxGeom *g) { return (g->flags & DX_GEOM_ENABLED) != 0; }
 
 // The boxes overlap on the other two axes (prune axis first).
-static int prune_overlap(const dxSapSpace *ss, const dxGeom *a, const dxGeom *b)
+static int prune_overlap(const sap_entry *a, const sap_entry *b)
 {
-    const int k = 2 * ss->axis[1], l = 2 * ss->axis[2];
-    return a->aabb[k] <= b->aabb[k + 1] && b->aabb[k] <= a->aabb[k + 1] &&
-           a->aabb[l] <= b->aabb[l + 1] && b->aabb[l] <= a->aabb[l + 1];
+    return a->lo1 <= b->hi1 && b->lo1 <= a->hi1 && a->lo2 <= b->hi2 && b->lo2 <= a->hi2;
 }
 
 static void sap_collide(dxSpace *s, void *data, dNearCallback *cb)
@@ -140,8 +144,7 @@ static void sap_collide(dxSpace *s, void *data, dNearCallback *cb)
         const sap_entry *e = &ss->list[i];
         if (!enabled(e->g)) continue;
         for (int j = i + 1; j < ss->n && ss->list[j].lo <= e->hi; j++)
-            if (prune_overlap(ss, e->g, ss->list[j].g))
-                dxSpaceTestPair(e->g, ss->list[j].g, data, cb);
+            if (prune_overlap(e, &ss->list[j])) dxSpaceTestPair(e->g, ss->list[j].g, data, cb);
     }
     ss->walking--;
 }
@@ -156,8 +159,10 @@ static void sap_collide_geom(dxSpace *s, dxGeom *g, void *data, dNearCallback *c
         return;
     }
     ss->walking++;
-    const int a = ss->axis[0];
-    const dReal glo = g->aabb[2 * a], ghi = g->aabb[2 * a + 1];
+    const int a = 2 * ss->axis[0], b = 2 * ss->axis[1], c = 2 * ss->axis[2];
+    const sap_entry ge = { g->aabb[a], g->aabb[a + 1], g->aabb[b], g->aabb[b + 1], g->aabb[c],
+                           g->aabb[c + 1], g };
+    const dReal glo = ge.lo, ghi = ge.hi;
     int end = ss->n;
     if (ghi == ghi) {   // the first entry with lo > ghi
         int lo = 0, hi = ss->n;
@@ -169,9 +174,8 @@ static void sap_collide_geom(dxSpace *s, dxGeom *g, void *data, dNearCallback *c
         end = lo;
     }
     for (int i = 0; i < end; i++) {
-        dxGeom *o = ss->list[i].g;
-        if ((ss->list[i].hi >= glo || glo != glo) && prune_overlap(ss, g, o))
-            dxSpaceTestPair(g, o, data, cb);
+        if ((ss->list[i].hi >= glo || glo != glo) && prune_overlap(&ge, &ss->list[i]))
+            dxSpaceTestPair(g, ss->list[i].g, data, cb);
     }
     ss->walking--;
 }
