@@ -120,6 +120,9 @@ dxSpace *dxSpaceCreate(size_t size, int cls, const dxSpaceOps *sops, dSpaceID pa
 // Bring every AABB in the space (recursively) up to date.
 void dxSpaceUpdateAABBs(dxSpace *s);
 
+// Give dWorldExportDIF (libodedyn) the writer of geom lines (geom_export_dif.c).
+void dxGeomRegisterDifWriter(void);
+
 // Contacts produced for (b, a) made into contacts for (a, b): normals
 // negated, g1/g2 and side1/side2 swapped (collide.c).
 void dxFlipContacts(dContactGeom *c, int n, int skip);
