@@ -86,6 +86,7 @@ struct dxSpace {
     dxGeom **geoms;               // the geoms, in insertion order (index = space_index)
     int count, capacity;
     int cleanup;                  // destroy the geoms with the space (default 1)
+    int manual_cleanup;           // dSpaceSetManualCleanup's mark (default 0)
     int sublevel;
     int lock_count;               // > 0 while colliding: changes are refused
 };
@@ -119,6 +120,19 @@ extern unsigned long dx_aabb_tests;
 dxSpace *dxSpaceCreate(size_t size, int cls, const dxSpaceOps *sops, dSpaceID parent);
 // Bring every AABB in the space (recursively) up to date.
 void dxSpaceUpdateAABBs(dxSpace *s);
+
+// A class's handler of dGeomLowLevelControl codes (geom_control.c): returns
+// 1 on success; keeps ODE's size protocol with dxGeomControlSizeValid.
+typedef int dxGeomControlFn(dxGeom *g, int controlClass, int controlCode, void *dataValue,
+                            int *dataSize);
+void dxGeomRegisterControl(int cls, dxGeomControlFn *fn);
+// 1 if *dataSize is `required` (and dataValue is given when required > 0);
+// else sets *dataSize to `required` and returns 0.
+int dxGeomControlSizeValid(const void *dataValue, int *dataSize, int required);
+
+// The contacts of a pair whose classes have a dSetColliderOverride
+// (collider_override.c); *handled is 0 when they have none.
+int dxCollideOverride(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip, int *handled);
 
 // Give dWorldExportDIF (libodedyn) the writer of geom lines (geom_export_dif.c).
 void dxGeomRegisterDifWriter(void);
