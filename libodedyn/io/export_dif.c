@@ -14,7 +14,8 @@
 // kept values exactly while the joint holds; when it is violated (error the
 // next step would correct), the values describe the nearest pose that holds.
 // A joint attached as (0, b) keeps b as its first body, and ODE writes it in
-// that order; its anchors are taken from the getters accordingly.
+// that order: its anchors, axes, angles and axis relativities are mapped from
+// the getters' user order to that order.
 //
 // Each joint type has one printer in joint_printers; a type without one
 // (the contact joint, whose surface has no getter, and the ODE 0.16 types
@@ -156,10 +157,10 @@ static void print_hinge(const dxDifPrinter *p, const joint_view *v)
     dVector3 a1, a2, axis, ax1, ax2;
     kept_anchors(v, dJointGetHingeAnchor, dJointGetHingeAnchor2, a1, a2);
     dJointGetHingeAxis(v->j, axis);
-    // The hinge keeps a reversed joint's axis negated (user's sense kept).
-    if (v->reversed) dNegateVector3(axis);
     body_direction(v->b0, axis, ax1);
     body_direction(v->b1, axis, ax2);
+    // For a joint attached as (0, b), ODE measures the kept angle as b against
+    // the world and reports the opposite.
     dReal angle = dJointGetHingeAngle(v->j);
     if (v->reversed) angle = -angle;
     dQuaternion now, qrel;
@@ -180,7 +181,6 @@ static void print_slider(const dxDifPrinter *p, const joint_view *v)
 {
     dVector3 axis, ax1, d = { 0, 0, 0 }, offset;
     dJointGetSliderAxis(v->j, axis);
-    if (v->reversed) dNegateVector3(axis);
     body_direction(v->b0, axis, ax1);
     dReal pos = dJointGetSliderPosition(v->j);
     if (v->reversed) pos = -pos;
@@ -222,10 +222,10 @@ static void print_universal(const dxDifPrinter *p, const joint_view *v)
     body_direction(v->b1, w2, ax2);
     dReal angle1, angle2;
     dJointGetUniversalAngles(v->j, &angle1, &angle2);
-    if (v->reversed) {
+    if (v->reversed) {   // b0 is user body 2: the kept axis 1 is the user's axis 2
         dReal t = angle1;
-        angle1 = angle2;
-        angle2 = t;
+        angle1 = -angle2;
+        angle2 = -t;
     }
     static const dQuaternion identity = { 1, 0, 0, 0 };
     const dReal *q0 = v->b0 ? dBodyGetQuaternion(v->b0) : identity;
@@ -303,7 +303,8 @@ static void print_fixed(const dxDifPrinter *p, const joint_view *v)
 }
 
 // Axes are kept in the frame they are relative to: world (rel 0), b0 (1),
-// b1 (2).
+// b1 (2); rel names the bodies in the order kept, the user's order swapped
+// for a joint attached as (0, b).
 static void print_amotor(const dxDifPrinter *p, const joint_view *v)
 {
     const int num = dJointGetAMotorNumAxes(v->j);
@@ -312,6 +313,7 @@ static void print_amotor(const dxDifPrinter *p, const joint_view *v)
     for (int i = 0; i < num; i++) {
         dVector3 w;
         rel[i] = dJointGetAMotorAxisRel(v->j, i);
+        if (v->reversed && rel[i] != 0) rel[i] = 3 - rel[i];   // kept in body order
         dJointGetAMotorAxis(v->j, i, w);
         body_direction(rel[i] == 1 ? v->b0 : rel[i] == 2 ? v->b1 : NULL, w, axis[i]);
     }

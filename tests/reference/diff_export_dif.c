@@ -4,7 +4,7 @@
 // every flag, geoms of every class ODE writes, and every joint type of both
 // libraries except the contact (whose surface this library cannot read
 // back), each moved away from its rest pose along its own freedoms so that
-// angles and positions are not zero. The DIF text is turned into lines for
+// angles and positions are not zero, and joints attached as (0, b). The DIF text is turned into lines for
 // compare.py: one per text line, named by the line with its numbers taken
 // out (so the layout must match exactly), its numbers as the values.
 
@@ -69,8 +69,8 @@ static void build_scene(dWorldID w)
     dWorldSetAutoDisableTime(w, 0.5);
     dWorldSetAutoDisableAverageSamplesCount(w, 3);
 
-    dBodyID b[16];
-    for (int i = 0; i < 16; i++) b[i] = make_body(w, 0.5 * i, 0.25 * (i % 3), 1 + 0.1 * i, 0.2 * i);
+    dBodyID b[20];
+    for (int i = 0; i < 20; i++) b[i] = make_body(w, 0.5 * i, 0.25 * (i % 3), 1 + 0.1 * i, 0.2 * i);
     dBodySetFiniteRotationMode(b[1], 1);
     dBodySetFiniteRotationAxis(b[1], 0.6, 0.8, 0.5);
     dBodyDisable(b[2]);
@@ -177,6 +177,42 @@ static void build_scene(dWorldID w)
     dJointAttach(am2, b[11], 0);
     dJointSetAMotorNumAxes(am2, 1);
     dJointSetAMotorAxis(am2, 0, 1, 0, 0, 1);
+
+    // Attached as (0, b): kept as (b, 0), the getters keep the user's sense.
+    dJointID hinge_rev = dJointCreateHinge(w, 0);
+    dJointAttach(hinge_rev, 0, b[16]);
+    dJointSetHingeAnchor(hinge_rev, 8.1, 0.3, 2.5);
+    dJointSetHingeAxis(hinge_rev, 0.6, 0, 0.8);
+    dJointGetHingeAxis(hinge_rev, ax);
+    dJointGetHingeAnchor(hinge_rev, a);
+    turn_body(b[16], a, ax, -0.4);
+
+    dJointID slider_rev = dJointCreateSlider(w, 0);
+    dJointAttach(slider_rev, 0, b[17]);
+    dJointSetSliderAxis(slider_rev, 0.6, 0.8, 0);
+    const dReal *p17 = dBodyGetPosition(b[17]);
+    dBodySetPosition(b[17], p17[0] + 0.12, p17[1] + 0.16, p17[2]);
+
+    dJointID uni_rev = dJointCreateUniversal(w, 0);
+    dJointAttach(uni_rev, 0, b[18]);
+    dJointSetUniversalAnchor(uni_rev, 9, 0.5, 2.7);
+    dJointSetUniversalAxis1(uni_rev, 0, 0.6, 0.8);
+    dJointSetUniversalAxis2(uni_rev, 1, 0, 0);
+    dJointGetUniversalAnchor(uni_rev, a);
+    dJointGetUniversalAxis2(uni_rev, ax2);
+    turn_body(b[18], a, ax2, 0.3);
+    dJointGetUniversalAxis1(uni_rev, ax1);
+    turn_body(b[18], a, ax1, 0.2);
+
+    dJointID fixed_rev = dJointCreateFixed(w, 0);
+    dJointAttach(fixed_rev, 0, b[19]);
+    dJointSetFixed(fixed_rev);
+
+    dJointID am_rev = dJointCreateAMotor(w, 0);
+    dJointAttach(am_rev, 0, b[19]);
+    dJointSetAMotorNumAxes(am_rev, 2);
+    dJointSetAMotorAxis(am_rev, 0, 2, 0, 0.6, 0.8);
+    dJointSetAMotorAxis(am_rev, 1, 0, 1, 0, 0);
 
     dJointCreateBall(w, 0);   // attached to nothing
 }
