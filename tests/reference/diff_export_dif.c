@@ -4,9 +4,10 @@
 // every flag, geoms of every class ODE writes, and every joint type of both
 // libraries except the contact (whose surface this library cannot read
 // back), each moved away from its rest pose along its own freedoms so that
-// angles and positions are not zero, and joints attached as (0, b). The DIF text is turned into lines for
-// compare.py: one per text line, named by the line with its numbers taken
-// out (so the layout must match exactly), its numbers as the values.
+// angles and positions are not zero, and joints attached as (0, b). The
+// DIF text is turned into lines for compare.py: one per text line, named by
+// the line with its numbers taken out (so the layout must match exactly),
+// its numbers as the values.
 
 #include "diff_print.h"
 
