@@ -236,6 +236,41 @@ static int test_every_joint_type_is_named(void)
     return 0;
 }
 
+// Joints attached to nothing, or to one body, are written without any
+// complaint from the getters the exporter uses.
+static int test_joints_with_fewer_bodies_are_written_quietly(void)
+{
+    test_capture_reports();
+    dWorldID w = dWorldCreate();
+    dBodyID b = make_body(w, 0, 0, 0);
+    dContact c;
+    memset(&c, 0, sizeof c);
+    c.geom.normal[2] = 1;
+    for (int attach = 0; attach < 3; attach++) {
+        dJointID j[9] = { dJointCreateBall(w, 0), dJointCreateHinge(w, 0),
+                          dJointCreateSlider(w, 0), dJointCreateContact(w, 0, &c),
+                          dJointCreateUniversal(w, 0), dJointCreateHinge2(w, 0),
+                          dJointCreateFixed(w, 0), dJointCreateNull(w, 0),
+                          dJointCreateAMotor(w, 0) };
+        for (int i = 0; i < 9; i++) {
+            if (attach == 1) dJointAttach(j[i], b, 0);
+            if (attach == 2) dJointAttach(j[i], 0, b);
+        }
+    }
+    dJointSetAMotorNumAxes(dJointCreateAMotor(w, 0), 2);
+
+    export_world(w, "");
+
+    CHECK(test_captured_count() == 0);
+    CHECK(count("nan") == 0);
+    CHECK(count(" = dynamics.") == 1 + 1 + 28);
+    CHECK(count("\tbody = {}\n") == 10);
+    CHECK(count("\tbody = {body[0]}\n") == 18);
+    dWorldDestroy(w);
+    test_release_reports();
+    return 0;
+}
+
 static int test_bad_arguments_are_reported_and_nothing_is_written(void)
 {
     test_capture_reports();
@@ -263,6 +298,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_hinge_rest_orientation_survives_a_turn),
     TEST_CASE(test_geoms_on_bodies_are_written_with_their_sizes),
     TEST_CASE(test_every_joint_type_is_named),
+    TEST_CASE(test_joints_with_fewer_bodies_are_written_quietly),
     TEST_CASE(test_bad_arguments_are_reported_and_nothing_is_written),
     TEST_END
 };
