@@ -59,7 +59,7 @@ static void set_limot(dJointID j, void (*set)(dJointID, int, dReal), int group, 
     set(j, g + dParamStopCFM, 2e-5 * k);
 }
 
-static void build_scene(dWorldID w)
+static void build_scene(dWorldID w, dSpaceID space)
 {
     dWorldSetGravity(w, 0, 0, -9.81);
     dWorldSetERP(w, 0.3);
@@ -80,18 +80,18 @@ static void build_scene(dWorldID w)
     dBodyAddForce(b[5], 1, 2, 3);
     dBodyAddTorque(b[5], -1, 0.5, 4);
 
-    dGeomID s = dCreateSphere(0, 0.5);
+    dGeomID s = dCreateSphere(space, 0.5);
     dGeomSetBody(s, b[0]);
-    dGeomID bx = dCreateBox(0, 1, 2, 3);
+    dGeomID bx = dCreateBox(space, 1, 2, 3);
     dGeomSetBody(bx, b[0]);
     dGeomSetCategoryBits(bx, 6);
     dGeomSetCollideBits(bx, 5);
-    dGeomID c = dCreateCapsule(0, 0.25, 1.5);
+    dGeomID c = dCreateCapsule(space, 0.25, 1.5);
     dGeomSetBody(c, b[1]);
     dGeomDisable(c);
-    dGeomID cy = dCreateCylinder(0, 0.3, 0.9);
+    dGeomID cy = dCreateCylinder(space, 0.3, 0.9);
     dGeomSetBody(cy, b[2]);
-    dGeomID r = dCreateRay(0, 2.5);
+    dGeomID r = dCreateRay(space, 2.5);
     dGeomSetBody(r, b[3]);
 
     const dReal x[3] = { 1, 0, 0 }, y[3] = { 0, 1, 0 }, z[3] = { 0, 0, 1 };
@@ -251,7 +251,8 @@ int main(void)
 {
     dInitODE();
     dWorldID w = dWorldCreate();
-    build_scene(w);
+    dSpaceID space = dSimpleSpaceCreate(0);   // holds the geoms, destroys them
+    build_scene(w, space);
     FILE *f = tmpfile();
     dWorldExportDIF(w, f, "sim_");
     rewind(f);
@@ -263,6 +264,7 @@ int main(void)
     }
     fclose(f);
     dWorldDestroy(w);
+    dSpaceDestroy(space);
     dCloseODE();
     return 0;
 }
