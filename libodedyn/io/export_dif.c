@@ -91,10 +91,9 @@ static void relative_quaternion(const joint_view *v, dQuaternion q)
     dQMultiply1(q, q0, q1);
 }
 
-// The rest orientation of a hinge-like axis: angle is measured as the
-// rotation of body 0 relative to body 1 about axis (b0 frame) since the
-// relative orientation was qrel, so now = rot(axis, -angle) qrel... solved
-// for qrel: qrel = rot(axis, angle) now.
+// The rest orientation of a hinge-like axis. ODE measures the angle from the
+// relative orientation now and the rest one qrel as now conj(qrel) =
+// rot(axis, -angle) (axis in b0's frame), hence qrel = rot(axis, angle) now.
 static void rest_quaternion(const dQuaternion now, const dVector3 axis, dReal angle,
                             dQuaternion qrel)
 {
