@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
-// collide.c -- dCollide (guide 10.5.2): argument checks, spaces passed as
-// arguments (their contents are collided), geometry transforms, user
-// classes, and otherwise the selected backend's narrow phase.
+// collide.c -- dCollide (guide 10.5.2): argument checks, colliders the
+// program set for a pair of classes, spaces passed as arguments (their
+// contents are collided), geometry transforms, user classes, and otherwise
+// the selected backend's narrow phase.
 
 #include "backend_internal.h"
 #include "shapes.h"
@@ -84,21 +85,24 @@ static int collide_space_contents(dxSpace *s, dxGeom *other, int space_first, in
 }
 
 // dCollide after its checks, in this order: a geom never touches itself,
-// spaces are opened, geoms of one body never touch, transforms are
+// geoms of one body never touch, a program's override for the pair of
+// classes (dSetColliderOverride) answers, spaces are opened, transforms are
 // unwrapped, user classes use their colliders, the rest goes to the backend.
 static int collide_any(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
 {
     if (o1 == o2) return 0;
+    if (o1->body && o1->body == o2->body) return 0;   // parts of one rigid body
+    int handled, n = dxCollideOverride(o1, o2, flags, c, skip, &handled);
+    if (handled) return n;
     if (o1->flags & DX_GEOM_IS_SPACE)
         return collide_space_contents((dxSpace *)o1, o2, 1, flags, c, skip);
     if (o2->flags & DX_GEOM_IS_SPACE)
         return collide_space_contents((dxSpace *)o2, o1, 0, flags, c, skip);
-    if (o1->body && o1->body == o2->body) return 0;   // parts of one rigid body
     if (o1->ops->cls == dGeomTransformClass)
         return collide_transform((dxGeomTransform *)o1, o2, 1, flags, c, skip);
     if (o2->ops->cls == dGeomTransformClass)
         return collide_transform((dxGeomTransform *)o2, o1, 0, flags, c, skip);
-    int handled, n = collide_user(o1, o2, flags, c, skip, &handled);
+    n = collide_user(o1, o2, flags, c, skip, &handled);
     if (handled) return n;
     return dxBackendCollide(o1, o2, flags, c, skip);
 }

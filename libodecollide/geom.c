@@ -183,6 +183,7 @@ void dGeomSetBody(dGeomID g, dBodyID b)
         g->body = NULL;
     }
     if (b) {
+        dxGeomRegisterDifWriter();   // a world with geoms on bodies may be exported
         g->body = b;
         g->body_next = dBodyGetFirstGeom(b);
         dBodySetFirstGeom(b, g);

@@ -89,6 +89,7 @@ struct dxSpace {
     dxGeom **geoms;               // the geoms, in insertion order (index = space_index)
     int count, capacity;
     int cleanup;                  // destroy the geoms with the space (default 1)
+    int manual_cleanup;           // dSpaceSetManualCleanup's mark (default 0)
     int sublevel;
     int lock_count;               // > 0 while colliding: changes are refused
 };
@@ -139,6 +140,22 @@ void dxGeomOffsetMoveBody(dxGeom *g, const dReal *pos, const dReal *R);
 int dxCleanRotation(const dReal *R, dMatrix3 out);
 // q normalised into out; 0 if it is not finite or has zero length.
 int dxCleanQuaternion(const dReal *q, dQuaternion out);
+
+// A class's handler of dGeomLowLevelControl codes (geom_control.c): returns
+// 1 on success; keeps ODE's size protocol with dxGeomControlSizeValid.
+typedef int dxGeomControlFn(dxGeom *g, int controlClass, int controlCode, void *dataValue,
+                            int *dataSize);
+void dxGeomRegisterControl(int cls, dxGeomControlFn *fn);
+// 1 if *dataSize is `required` (and dataValue is given when required > 0);
+// else sets *dataSize to `required` and returns 0.
+int dxGeomControlSizeValid(const void *dataValue, int *dataSize, int required);
+
+// The contacts of a pair whose classes have a dSetColliderOverride
+// (collider_override.c); *handled is 0 when they have none.
+int dxCollideOverride(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip, int *handled);
+
+// Give dWorldExportDIF (libodedyn) the writer of geom lines (geom_export_dif.c).
+void dxGeomRegisterDifWriter(void);
 
 // Contacts produced for (b, a) made into contacts for (a, b): normals
 // negated, g1/g2 and side1/side2 swapped (collide.c).

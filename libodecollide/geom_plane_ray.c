@@ -153,3 +153,20 @@ void dGeomRayGet(dGeomID g, dVector3 start, dVector3 dir)
 RAY_FLAG(FirstContact, first_contact)
 RAY_FLAG(BackfaceCull, backface_cull)
 RAY_FLAG(ClosestHit, closest_hit)
+
+// The ODE 0.5 pair of the first two flags (deprecated in ODE 0.16).
+void dGeomRaySetParams(dGeomID g, int FirstContact, int BackfaceCull)
+{
+    CHECK_CLASS(g, dRayClass, "ray", return);
+    ((dxRay *)g)->first_contact = FirstContact != 0;
+    ((dxRay *)g)->backface_cull = BackfaceCull != 0;
+}
+
+void dGeomRayGetParams(dGeomID g, int *FirstContact, int *BackfaceCull)
+{
+    CHECK_CLASS(g, dRayClass, "ray", return);
+    DX_CHECK_ARG(FirstContact != NULL && BackfaceCull != NULL, return,
+                 "FirstContact or BackfaceCull is NULL");
+    *FirstContact = ((dxRay *)g)->first_contact;
+    *BackfaceCull = ((dxRay *)g)->backface_cull;
+}

@@ -118,6 +118,19 @@ int dSpaceGetCleanup(dSpaceID s)
     return s->cleanup;
 }
 
+// Only kept: no per-thread collision data exists to release (collision_space.h).
+void dSpaceSetManualCleanup(dSpaceID s, int mode)
+{
+    CHECK_SPACE(s, return);
+    s->manual_cleanup = mode != 0;
+}
+
+int dSpaceGetManualCleanup(dSpaceID s)
+{
+    CHECK_SPACE(s, return 0);
+    return s->manual_cleanup;
+}
+
 void dSpaceSetSublevel(dSpaceID s, int sublevel)
 {
     CHECK_SPACE(s, return);

@@ -54,6 +54,36 @@ ODE_API unsigned long dGeomGetCollideBits(dGeomID);
 ODE_API void dGeomEnable(dGeomID geom);
 ODE_API void dGeomDisable(dGeomID geom);
 ODE_API int dGeomIsEnabled(dGeomID geom);
+
+/* Low-level control (ODE 0.16): class-specific settings, each a control
+ * class and code with an argument of a fixed size. */
+enum {
+    dGeomCommonControlClass = 0,
+    dGeomColliderControlClass = 1
+};
+enum {
+    dGeomCommonAnyControlCode = 0,
+    dGeomColliderSetMergeSphereContactsControlCode = 1,
+    dGeomColliderGetMergeSphereContactsControlCode = 2
+};
+enum {
+    dGeomColliderMergeContactsValue__Default = 0,   /* with Set...: restore the default */
+    dGeomColliderMergeContactsValue_None = 1,
+    dGeomColliderMergeContactsValue_Normals = 2,
+    dGeomColliderMergeContactsValue_Full = 3
+};
+/** Run control code controlCode of class controlClass on geom with the
+ *  argument dataValue of *dataSize bytes. Returns 1 on success. If *dataSize
+ *  is not the size the code expects, it is set to that size and 0 is returned
+ *  (so NULL and 0 ask for the size); dGeomCommonAnyControlCode succeeds if
+ *  the geom has any code in the class. The merge-sphere-contacts codes
+ *  (an int, dGeomColliderMergeContactsValue_*) are understood by triangle
+ *  meshes only. A geom that understands none of the class is reported
+ *  through the debug handler, as ODE does; *dataSize is then set to 0 and 0
+ *  returned. */
+ODE_API int dGeomLowLevelControl(dGeomID geom, int controlClass, int controlCode,
+                                 void *dataValue, int *dataSize);
+
 /* Point and vector conversions in the geom's frame (ODE 0.16). */
 ODE_API void dGeomGetRelPointPos(dGeomID geom, dReal px, dReal py, dReal pz, dVector3 result);
 ODE_API void dGeomGetPosRelPoint(dGeomID geom, dReal px, dReal py, dReal pz, dVector3 result);
@@ -188,6 +218,11 @@ ODE_API void dGeomRaySetBackfaceCull(dGeomID g, int backfaceCull);
 ODE_API int dGeomRayGetBackfaceCull(dGeomID g);
 ODE_API void dGeomRaySetClosestHit(dGeomID g, int closestHit);
 ODE_API int dGeomRayGetClosestHit(dGeomID g);
+/** FirstContact and BackfaceCull at once (deprecated: use the calls above).
+ *  The getter writes 0 or 1 to each. */
+ODE_API_DEPRECATED ODE_API void dGeomRaySetParams(dGeomID g, int FirstContact, int BackfaceCull);
+ODE_API_DEPRECATED ODE_API void dGeomRayGetParams(dGeomID g, int *FirstContact,
+                                                  int *BackfaceCull);
 
 /** Geometry transform (10.7.7): holds one geom (in no space) with a pose
  *  relative to the transform. Cleanup 1: destroying the transform destroys
@@ -231,6 +266,14 @@ typedef struct dGeomClass {
 
 /** Register a class (at most dMaxUserClasses); returns its class number. */
 ODE_API int dCreateGeomClass(const dGeomClass *classptr);
+
+/** From now on dCollide of a geom of class i with one of class j (either
+ *  order: the contacts of (j, i) are fn's for (i, j) mirrored) calls fn, in
+ *  place of the selected backend, a transform's unwrapping or a user class's
+ *  collider. As in ODE there is no call that removes it, and a NULL fn makes
+ *  the pair produce no contacts. Geoms of one body, or a geom with itself, still
+ *  give none; i and j are class numbers below dGeomNumClasses. */
+ODE_API void dSetColliderOverride(int i, int j, dColliderFn *fn);
 ODE_API void *dGeomGetClassData(dGeomID);
 /** A placeable geom of a user class, in no space. */
 ODE_API dGeomID dCreateGeom(int classnum);

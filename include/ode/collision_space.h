@@ -46,6 +46,14 @@ ODE_API void dHashSpaceGetLevels(dSpaceID space, int *minlevel, int *maxlevel);
 /** 1 (default): destroying the space destroys its geoms; 0: they are only removed. */
 ODE_API void dSpaceSetCleanup(dSpaceID space, int mode);
 ODE_API int dSpaceGetCleanup(dSpaceID space);
+/** The manual thread-data cleanup mark of ODE 0.16 (for programs started
+ *  with dInitFlagManualThreadCleanup): 1 marks the space as released by
+ *  dCleanupODEAllDataForThread, 0 (the default) as released when its thread
+ *  ends. This library keeps no per-thread collision data, so the mark is
+ *  kept and reported but frees nothing either way; it is independent of
+ *  dSpaceSetCleanup and of the space's parent. */
+ODE_API void dSpaceSetManualCleanup(dSpaceID space, int mode);
+ODE_API int dSpaceGetManualCleanup(dSpaceID space);
 /** Sublevel of a space (ODE 0.16): orders nested spaces for dSpaceCollide2. */
 ODE_API void dSpaceSetSublevel(dSpaceID space, int sublevel);
 ODE_API int dSpaceGetSublevel(dSpaceID space);

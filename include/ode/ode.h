@@ -11,6 +11,7 @@
 #include <ode/memory.h>
 #include <ode/odemath.h>
 #include <ode/matrix.h>
+#include <ode/timer.h>
 #include <ode/rotation.h>
 #include <ode/mass.h>
 #include <ode/misc.h>
@@ -19,6 +20,7 @@
 #include <ode/collision_space.h>
 #include <ode/collision.h>
 #include <ode/backend.h>
+#include <ode/export-dif.h>
 #include <ode/version.h>
 
 /* The C++ wrappers (dWorld, dBody, dGeom ...), for C++ programs only. */
