@@ -230,10 +230,10 @@ void dGeomSetRotation(dGeomID g, const dMatrix3 R)
     if (g->body) {
         dBodySetRotation(g->body, R);
     } else {
+        DX_CHECK_ARG(dxIsFiniteMatrix3(R), return, "R is not finite");
         dMatrix3 clean;
-        dCopyMatrix4x3(clean, R);
-        DX_CHECK_ARG(dVALIDMAT3(clean) && dOrthogonalizeR(clean), return,
-                     "R is not a rotation");
+        dxCopyMatrix3(clean, R);   // without the padding, which may be uninitialised
+        DX_CHECK_ARG(dOrthogonalizeR(clean), return, "R is not a rotation");
         dCopyMatrix4x3(g->own_R, clean);
         dxGeomMarkMoved(g);
     }

@@ -278,7 +278,7 @@ int dxJointContactWarmInfo(const dxJoint *j, dVector3 point)
 
 static const dxJointClass contact_class = {
     dJointTypeContact, "contact", sizeof(dxJointContact), NULL, contact_count_rows,
-    contact_fill_rows
+    contact_fill_rows, NULL
 };
 
 // ---- creation and input checks --------------------------------------------

@@ -342,6 +342,19 @@ dReal dJointGetUniversalAngle2Rate(dJointID j)
     return universal_rate((dxJointUniversal *)j, 1);
 }
 
+// The names the ODE 0.5 guide's index gives the two rates.
+dReal dJointGetUniversalAngleRate1(dJointID j)
+{
+    UNIVERSAL(j, return 0);
+    return universal_rate((dxJointUniversal *)j, 0);
+}
+
+dReal dJointGetUniversalAngleRate2(dJointID j)
+{
+    UNIVERSAL(j, return 0);
+    return universal_rate((dxJointUniversal *)j, 1);
+}
+
 // torque1 about axis 1 and torque2 about axis 2 on body 1, the opposite on body 2.
 void dJointAddUniversalTorques(dJointID j, dReal torque1, dReal torque2)
 {
