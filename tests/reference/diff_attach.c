@@ -13,7 +13,9 @@
 // second slot and the second hinge-2 angle, and the rates of such a universal
 // joint (docs/design.md: here they take the user's sense, body 1 against
 // body 2, as its motors and stops do; ODE 0.16 mixes senses and applies
-// group 1 to axis 2 there).
+// group 1 to axis 2 there), and the motors of an angular motor attached in
+// the second slot (here they drive body 1 against body 2, as with a still
+// body in the first slot; ODE 0.16 drives the body against the world).
 
 #include "diff_print.h"
 
@@ -318,6 +320,33 @@ static void run_universal(int way)
     dWorldDestroy(s.w);
 }
 
+static void run_amotor(int way)
+{
+    scene s;
+    scene_make(&s);
+    dBodySetLinearVel(s.b[0], 0, 0, 0);
+    dBodySetAngularVel(s.b[0], 0, 0, 0);
+    dJointID j = dJointCreateAMotor(s.w, 0);
+    attach(j, &s, way);
+    dJointSetAMotorNumAxes(j, 2);
+    dJointSetAMotorAxis(j, 0, 0, 0, 0, 1);
+    dJointSetAMotorAxis(j, 1, 1, 1, 0, 0);
+    dJointSetAMotorParam(j, dParamVel, 1);
+    dJointSetAMotorParam(j, dParamFMax, 100);
+    dJointSetAMotorParam(j, dParamCFM, 0);
+    dJointSetAMotorParam(j, dParamVel2, -0.5);
+    dJointSetAMotorParam(j, dParamFMax2, 100);
+    dJointSetAMotorParam(j, dParamCFM2, 0);
+    dWorldStep(s.w, 0.01);
+    diff_values(name("amotor", "motor_avel", way, "run"), 1e-6, dBodyGetAngularVel(s.b[0]), 3);
+    dJointSetAMotorParam(j, dParamFMax, 0);
+    dJointSetAMotorParam(j, dParamFMax2, 0);
+    dJointAddAMotorTorques(j, 0.01, 0.02, 0);
+    dWorldStep(s.w, 0.01);
+    diff_values(name("amotor", "torque_avel", way, "run"), 1e-6, dBodyGetAngularVel(s.b[0]), 3);
+    dWorldDestroy(s.w);
+}
+
 int main(void)
 {
     dInitODE();
@@ -327,6 +356,7 @@ int main(void)
         run_hinge(way);
         run_universal(way);
     }
+    run_amotor(ONE);
     dCloseODE();
     return 0;
 }
