@@ -4,7 +4,7 @@
 // the reference ODE 0.16: every joint type with two bodies, with one body,
 // and with one body in the second slot (dJointAttach(j, 0, b)), freshly
 // created and re-attached after its anchor and axes were set; and short runs
-// of one-body joints attached in the second slot with stops and motors.
+// of one-body joints in either slot with stops, motors and added forces.
 // Bodies are posed away from the origin and turned, so frames matter.
 // Tolerances: 1e-9 for getters (the same few products), 1e-6 after steps.
 //
@@ -320,6 +320,21 @@ static void run_universal(int way)
     dWorldDestroy(s.w);
 }
 
+static void run_fixed(int way)
+{
+    scene s;
+    scene_make(&s);
+    dJointID j = dJointCreateFixed(s.w, 0);
+    attach(j, &s, way);
+    dJointSetFixed(j);
+    dBodyAddForce(s.b[0], 1, -2, 0.5);
+    dBodyAddTorque(s.b[0], 0.1, 0, -0.2);
+    for (int i = 0; i < 20; i++) dWorldStep(s.w, 0.01);
+    diff_values(name("fixed", "pos", way, "run"), 1e-6, dBodyGetPosition(s.b[0]), 3);
+    diff_values(name("fixed", "avel", way, "run"), 1e-6, dBodyGetAngularVel(s.b[0]), 3);
+    dWorldDestroy(s.w);
+}
+
 static void run_amotor(int way)
 {
     scene s;
@@ -355,6 +370,7 @@ int main(void)
         run_slider(way);
         run_hinge(way);
         run_universal(way);
+        run_fixed(way);
     }
     run_amotor(ONE);
     dCloseODE();
