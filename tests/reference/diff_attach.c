@@ -294,6 +294,21 @@ static void run_hinge(int way)
     dWorldDestroy(s.w);
 }
 
+// dJointSetSliderAxisDelta on a one-body slider in either slot. (Not
+// dJointSetHingeAxisOffset: ODE 0.16 composes the offset with the conjugate
+// of the relative rotation, so its angle is the offset only when the bodies
+// already stand that far apart, as in its unit tests; here in any pose.)
+static void run_delta(int way)
+{
+    scene s;
+    scene_make(&s);
+    dJointID j = dJointCreateSlider(s.w, 0);
+    attach(j, &s, way);
+    dJointSetSliderAxisDelta(j, 1, 0, 0, 0.5, 0.25, 0);
+    diff_value(name("slider", "delta_position", way, "run"), 1e-9, dJointGetSliderPosition(j));
+    dWorldDestroy(s.w);
+}
+
 static void run_universal(int way)
 {
     scene s;
@@ -371,7 +386,9 @@ int main(void)
         run_hinge(way);
         run_universal(way);
         run_fixed(way);
+        run_delta(way);
     }
+
     run_amotor(ONE);
     dCloseODE();
     return 0;
