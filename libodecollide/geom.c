@@ -243,10 +243,8 @@ void dGeomSetRotation(dGeomID g, const dMatrix3 R)
     } else if (g->body) {
         dBodySetRotation(g->body, R);
     } else {
-        dMatrix3 clean;
-        dCopyMatrix4x3(clean, R);
-        DX_CHECK_ARG(dVALIDMAT3(clean) && dOrthogonalizeR(clean), return,
-                     "R is not a rotation");
+        dMatrix3 clean;   // without the padding, which may be uninitialised
+        DX_CHECK_ARG(dxCleanRotation(R, clean), return, "R is not a finite rotation");
         dCopyMatrix4x3(g->own_R, clean);
         dxGeomMarkMoved(g);
     }

@@ -73,13 +73,8 @@ static void offset_changed(dxGeom *g)
 // orthonormal into out; 0 if they are not finite or not a rotation.
 int dxCleanRotation(const dReal *R, dMatrix3 out)
 {
-    for (int r = 0; r < 3; r++) {
-        for (int c = 0; c < 3; c++) {
-            if (!dxIsFinite(R[4 * r + c])) return 0;
-            out[4 * r + c] = R[4 * r + c];
-        }
-        out[4 * r + 3] = 0;
-    }
+    if (!dxIsFiniteMatrix3(R)) return 0;
+    dxCopyMatrix3(out, R);
     return dOrthogonalizeR(out);
 }
 

@@ -13,9 +13,8 @@
                      (c) == dSphereClass ? "sphere" : (c) == dBoxClass ? "box" \
                      : (c) == dCapsuleClass ? "capsule" : "cylinder"); \
     } while (0)
-#define CHECK_POSITIVE(v, what, on_fail) \
-    DX_CHECK_ARG((v) > 0 && dxIsFinite(v), on_fail, what " must be positive and finite, got %g", \
-                 (double)(v))
+// Sizes may be zero (ODE creates shapes that are sized later); colliders
+// take a zero size as a point, a segment or a flat box.
 #define CHECK_NON_NEGATIVE(v, what, on_fail) \
     DX_CHECK_ARG((v) >= 0 && dxIsFinite(v), on_fail, what " must be >= 0 and finite, got %g", \
                  (double)(v))
@@ -51,7 +50,7 @@ const dxGeomClassOps dx_sphere_ops = { dSphereClass, "sphere", sphere_aabb, NULL
 
 dGeomID dCreateSphere(dSpaceID space, dReal radius)
 {
-    CHECK_POSITIVE(radius, "radius", return NULL);
+    CHECK_NON_NEGATIVE(radius, "radius", return NULL);
     dxSphere *s = (dxSphere *)dxGeomCreate(sizeof *s, &dx_sphere_ops, DX_GEOM_PLACEABLE, space);
     s->radius = radius;
     return &s->g;
@@ -60,7 +59,7 @@ dGeomID dCreateSphere(dSpaceID space, dReal radius)
 void dGeomSphereSetRadius(dGeomID g, dReal radius)
 {
     CHECK_CLASS(g, dSphereClass, return);
-    CHECK_POSITIVE(radius, "radius", return);
+    CHECK_NON_NEGATIVE(radius, "radius", return);
     ((dxSphere *)g)->radius = radius;
     dxGeomShapeChanged(g);
 }
@@ -91,9 +90,9 @@ const dxGeomClassOps dx_box_ops = { dBoxClass, "box", box_aabb, NULL };
 
 dGeomID dCreateBox(dSpaceID space, dReal lx, dReal ly, dReal lz)
 {
-    CHECK_POSITIVE(lx, "lx", return NULL);
-    CHECK_POSITIVE(ly, "ly", return NULL);
-    CHECK_POSITIVE(lz, "lz", return NULL);
+    CHECK_NON_NEGATIVE(lx, "lx", return NULL);
+    CHECK_NON_NEGATIVE(ly, "ly", return NULL);
+    CHECK_NON_NEGATIVE(lz, "lz", return NULL);
     dxBox *b = (dxBox *)dxGeomCreate(sizeof *b, &dx_box_ops, DX_GEOM_PLACEABLE, space);
     dAssignVector3(b->side, lx, ly, lz);
     return &b->g;
@@ -102,9 +101,9 @@ dGeomID dCreateBox(dSpaceID space, dReal lx, dReal ly, dReal lz)
 void dGeomBoxSetLengths(dGeomID g, dReal lx, dReal ly, dReal lz)
 {
     CHECK_CLASS(g, dBoxClass, return);
-    CHECK_POSITIVE(lx, "lx", return);
-    CHECK_POSITIVE(ly, "ly", return);
-    CHECK_POSITIVE(lz, "lz", return);
+    CHECK_NON_NEGATIVE(lx, "lx", return);
+    CHECK_NON_NEGATIVE(ly, "ly", return);
+    CHECK_NON_NEGATIVE(lz, "lz", return);
     dAssignVector3(((dxBox *)g)->side, lx, ly, lz);
     dxGeomShapeChanged(g);
 }
@@ -149,7 +148,7 @@ const dxGeomClassOps dx_capsule_ops = { dCapsuleClass, "capsule", capsule_aabb, 
 
 dGeomID dCreateCapsule(dSpaceID space, dReal radius, dReal length)
 {
-    CHECK_POSITIVE(radius, "radius", return NULL);
+    CHECK_NON_NEGATIVE(radius, "radius", return NULL);
     CHECK_NON_NEGATIVE(length, "length", return NULL);
     dxCapsule *c = (dxCapsule *)dxGeomCreate(sizeof *c, &dx_capsule_ops, DX_GEOM_PLACEABLE,
                                              space);
@@ -161,7 +160,7 @@ dGeomID dCreateCapsule(dSpaceID space, dReal radius, dReal length)
 void dGeomCapsuleSetParams(dGeomID g, dReal radius, dReal length)
 {
     CHECK_CLASS(g, dCapsuleClass, return);
-    CHECK_POSITIVE(radius, "radius", return);
+    CHECK_NON_NEGATIVE(radius, "radius", return);
     CHECK_NON_NEGATIVE(length, "length", return);
     ((dxCapsule *)g)->radius = radius;
     ((dxCapsule *)g)->length = length;
@@ -207,8 +206,8 @@ const dxGeomClassOps dx_cylinder_ops = { dCylinderClass, "cylinder", cylinder_aa
 
 dGeomID dCreateCylinder(dSpaceID space, dReal radius, dReal length)
 {
-    CHECK_POSITIVE(radius, "radius", return NULL);
-    CHECK_POSITIVE(length, "length", return NULL);
+    CHECK_NON_NEGATIVE(radius, "radius", return NULL);
+    CHECK_NON_NEGATIVE(length, "length", return NULL);
     dxCylinder *c = (dxCylinder *)dxGeomCreate(sizeof *c, &dx_cylinder_ops, DX_GEOM_PLACEABLE,
                                                space);
     c->radius = radius;
@@ -219,8 +218,8 @@ dGeomID dCreateCylinder(dSpaceID space, dReal radius, dReal length)
 void dGeomCylinderSetParams(dGeomID g, dReal radius, dReal length)
 {
     CHECK_CLASS(g, dCylinderClass, return);
-    CHECK_POSITIVE(radius, "radius", return);
-    CHECK_POSITIVE(length, "length", return);
+    CHECK_NON_NEGATIVE(radius, "radius", return);
+    CHECK_NON_NEGATIVE(length, "length", return);
     ((dxCylinder *)g)->radius = radius;
     ((dxCylinder *)g)->length = length;
     dxGeomShapeChanged(g);

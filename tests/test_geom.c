@@ -373,12 +373,12 @@ static int test_bad_sizes_are_reported_and_change_nothing(void)
     dGeomRaySet(r, 1, 2, 3, 1, 0, 0);
     test_capture_reports();
 
-    CHECK(dCreateSphere(0, -1) == 0 && dCreateSphere(0, 0) == 0 && dCreateSphere(0, NAN) == 0);
-    CHECK(dCreateBox(0, 1, 0, 1) == 0 && dCreatePlane(0, 0, 0, 0, 1) == 0);
-    CHECK(dCreateCapsule(0, -1, 1) == 0 && dCreateCylinder(0, 1, 0) == 0);
+    CHECK(dCreateSphere(0, -1) == 0 && dCreateSphere(0, -0.5) == 0 && dCreateSphere(0, NAN) == 0);
+    CHECK(dCreateBox(0, 1, -1, 1) == 0 && dCreatePlane(0, 0, 0, 0, 1) == 0);
+    CHECK(dCreateCapsule(0, -1, 1) == 0 && dCreateCylinder(0, 1, -1) == 0);
     CHECK(dCreateRay(0, -1) == 0);
     dGeomSphereSetRadius(s, -2);
-    dGeomSphereSetRadius(s, 0);
+    dGeomSphereSetRadius(s, INFINITY);
     dGeomSphereSetRadius(s, NAN);
     dGeomBoxSetLengths(b, 1, -1, 1);
     dGeomCapsuleSetParams(c, 1, -1);
@@ -388,7 +388,7 @@ static int test_bad_sizes_are_reported_and_change_nothing(void)
     dGeomRaySetLength(r, NAN);
 
     CHECK(test_captured_count() == 17);
-    CHECK(test_captured_contains("dCreateSphere: radius must be positive"));
+    CHECK(test_captured_contains("dCreateSphere: radius must be >= 0"));
     CHECK(test_captured_contains("dGeomPlaneSetParams"));
     CHECK(test_captured_contains("dGeomRaySet: direction"));
     CHECK(dGeomSphereGetRadius(s) == 1);

@@ -509,6 +509,7 @@ static int test_check_rejects_invalid_masses(void)
     CHECK(test_captured_contains("dMassCheck"));
     CHECK(test_captured_contains("mass"));
 
+    // dMassSetParameters checks (and reports) as dMassCheck does, as in ODE 0.16
     dMassSetParameters(&m, -1, 0, 0, 0, 1, 1, 1, 0, 0, 0);   // negative mass
     CHECK(!dMassCheck(&m));
     dMassSetParameters(&m, 1, 0, 0, 0, 1, -1, 1, 0, 0, 0);   // negative moment
@@ -519,21 +520,22 @@ static int test_check_rejects_invalid_masses(void)
     CHECK(!dMassCheck(&m));
     dMassSetParameters(&m, 1, 0, 0, 0, 1, 1, 1, 5, 0, 0);    // off-diagonal too large
     CHECK(!dMassCheck(&m));
-    CHECK(test_captured_count() == 6);
+    CHECK(test_captured_count() == 11);
     CHECK(test_captured_contains("positive definite"));
+    CHECK(m.I[1] == 5);   // reported, and kept as given
 
     // a valid sphere's inertia about the origin, but a centre far away: the
     // inertia about the centre would be negative
     dMassSetSphere(&m, 1, 1);
     m.c[0] = 10;
     CHECK(!dMassCheck(&m));
-    CHECK(test_captured_count() == 7);
+    CHECK(test_captured_count() == 12);
     CHECK(test_captured_contains("centre of mass"));
     m.c[0] = NAN;
     CHECK(!dMassCheck(&m));
-    CHECK(test_captured_count() == 8);
+    CHECK(test_captured_count() == 13);
     CHECK(!dMassCheck(NULL));
-    CHECK(test_captured_count() == 9);
+    CHECK(test_captured_count() == 14);
     return 0;
 }
 
@@ -562,13 +564,13 @@ static int test_bad_solid_arguments_are_reported_and_ignored(void)
     REJECTED(dMassSetSphere(&m, 0, 1), "density");
     REJECTED(dMassSetSphere(&m, -1, 1), "density");
     REJECTED(dMassSetSphere(&m, NAN, 1), "density");
-    REJECTED(dMassSetSphere(&m, 1, 0), "radius");
+    REJECTED(dMassSetSphere(&m, 1, -1), "radius");
     REJECTED(dMassSetSphere(&m, 1, INFINITY), "radius");
     REJECTED(dMassSetSphereTotal(&m, 0, 1), "total mass");
     REJECTED(dMassSetSphereTotal(&m, 1, -1), "radius");
     REJECTED(dMassSetCapsule(&m, 1, 0, 1, 1), "direction");
     REJECTED(dMassSetCapsule(&m, 1, 4, 1, 1), "direction");
-    REJECTED(dMassSetCapsule(&m, 1, 1, 0, 1), "radius");
+    REJECTED(dMassSetCapsule(&m, 1, 1, -1, 1), "radius");
     REJECTED(dMassSetCapsule(&m, 1, 1, 1, -1), "length");
     REJECTED(dMassSetCapsule(&m, 1, 1, 1, NAN), "length");
     REJECTED(dMassSetCapsuleTotal(&m, -2, 1, 1, 1), "total mass");
@@ -577,7 +579,7 @@ static int test_bad_solid_arguments_are_reported_and_ignored(void)
     REJECTED(dMassSetCylinder(&m, 1, 2, -1, 1), "radius");
     REJECTED(dMassSetCylinder(&m, 1, 2, 1, -0.5f), "length");
     REJECTED(dMassSetCylinderTotal(&m, 1, -1, 1, 1), "direction");
-    REJECTED(dMassSetBox(&m, 1, 0, 1, 1), "sides");
+    REJECTED(dMassSetBox(&m, 1, -0.5f, 1, 1), "sides");
     REJECTED(dMassSetBox(&m, 1, 1, -1, 1), "sides");
     REJECTED(dMassSetBox(&m, 0, 1, 1, 1), "density");
     REJECTED(dMassSetBoxTotal(&m, 1, 1, 1, INFINITY), "sides");

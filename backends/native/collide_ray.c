@@ -64,8 +64,10 @@ static int quadratic_roots(dReal a, dReal b, dReal c, dReal *t0, dReal *t1)
     return 1;
 }
 
-// The span inside the ball of radius r > 0 centred at c (shape frame); the
-// normals point from c to the entry and exit points. 0 if the line misses.
+// The span inside the ball of radius r >= 0 centred at c (shape frame); the
+// normals point from c to the entry and exit points (for a point ball hit
+// through its centre: against the ray at entry, along it at exit). 0 if the
+// line misses.
 static int ball_span(const ray_local *r, const dReal c[3], dReal radius, ray_span *sp)
 {
     dReal q[3] = { r->s[0] - c[0], r->s[1] - c[1], r->s[2] - c[2] };
@@ -77,14 +79,20 @@ static int ball_span(const ray_local *r, const dReal c[3], dReal radius, ray_spa
     for (int k = 0; k < 2; k++) {
         for (int i = 0; i < 3; i++) n[k][i] = q[i] + t[k] * r->v[i];
         dReal len = dSqrt(dx_dot(n[k], n[k]));   // ~radius: the point is on the sphere
-        for (int i = 0; i < 3; i++) n[k][i] /= len;
+        if (len > 0) {
+            for (int i = 0; i < 3; i++) n[k][i] /= len;
+        } else {
+            const dReal along = (k ? 1 : -1) / dSqrt(dx_dot(r->v, r->v));
+            for (int i = 0; i < 3; i++) n[k][i] = along * r->v[i];
+        }
     }
     return 1;
 }
 
-// The span inside the infinite cylinder x^2 + y^2 <= radius^2 (radius > 0,
-// shape frame), with radial normals; infinite both ways for a line parallel
-// to the axis inside it. 0 if the line misses.
+// The span inside the infinite cylinder x^2 + y^2 <= radius^2 (radius >= 0,
+// shape frame), with radial normals (through the axis of a zero radius:
+// against the ray's radial part at entry, along it at exit); infinite both
+// ways for a line parallel to the axis inside it. 0 if the line misses.
 static int tube_span(const ray_local *r, dReal radius, ray_span *sp)
 {
     const dReal *s = r->s, *v = r->v;
@@ -102,7 +110,12 @@ static int tube_span(const ray_local *r, dReal radius, ray_span *sp)
     dReal *n[2] = { sp->n_in, sp->n_out };
     for (int k = 0; k < 2; k++) {
         dReal x = s[0] + t[k] * v[0], y = s[1] + t[k] * v[1], len = dSqrt(x * x + y * y);
-        set3(n[k], x / len, y / len, 0);   // len ~ radius
+        if (len > 0) {
+            set3(n[k], x / len, y / len, 0);   // len ~ radius
+        } else {
+            const dReal along = (k ? 1 : -1) / dSqrt(a);
+            set3(n[k], along * v[0], along * v[1], 0);
+        }
     }
     return 1;
 }

@@ -335,6 +335,10 @@ ODE_API dReal dJointGetUniversalAngle1(dJointID);
 ODE_API dReal dJointGetUniversalAngle2(dJointID);
 ODE_API dReal dJointGetUniversalAngle1Rate(dJointID);
 ODE_API dReal dJointGetUniversalAngle2Rate(dJointID);
+/** The same as dJointGetUniversalAngle1Rate / dJointGetUniversalAngle2Rate, under the
+ *  names the ODE 0.5 guide's index spells. */
+ODE_API dReal dJointGetUniversalAngleRate1(dJointID);
+ODE_API dReal dJointGetUniversalAngleRate2(dJointID);
 ODE_API dReal dJointGetFixedParam(dJointID, int parameter);
 ODE_API int dJointGetAMotorNumAxes(dJointID);
 ODE_API void dJointGetAMotorAxis(dJointID, int anum, dVector3 result);

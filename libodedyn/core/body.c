@@ -111,9 +111,9 @@ void dBodySetRotation(dBodyID b, const dMatrix3 R)
 {
     CHECK_BODY(b, return);
     DX_CHECK_ARG(R != NULL, return, "R is NULL");
-    DX_CHECK_ARG(dVALIDMAT3(R) && dxIsFinite3(R[0], R[5], R[10]), return, "R is not finite");
+    DX_CHECK_ARG(dxIsFiniteMatrix3(R), return, "R is not finite");
     dMatrix3 clean;
-    dCopyMatrix4x3(clean, R);
+    dxCopyMatrix3(clean, R);   // without the padding, which may be uninitialised
     DX_CHECK_ARG(dOrthogonalizeR(clean), return, "R is not a rotation (degenerate rows)");
     dQfromR(b->q, clean);
     dNormalize4(b->q);

@@ -49,4 +49,21 @@ static inline int dxIsFinite3(dReal x, dReal y, dReal z)
     return isfinite(x) && isfinite(y) && isfinite(z);
 }
 
+/* The 9 elements of a dMatrix3 that hold the matrix; R[3], R[7] and R[11] are
+ * padding, which ODE programs often leave uninitialised: never read them. */
+static inline int dxIsFiniteMatrix3(const dReal *R)
+{
+    return dxIsFinite3(R[0], R[1], R[2]) && dxIsFinite3(R[4], R[5], R[6]) &&
+           dxIsFinite3(R[8], R[9], R[10]);
+}
+
+/* Copy the 9 elements of a dMatrix3 and zero the padding of the copy. */
+static inline void dxCopyMatrix3(dReal *dst, const dReal *R)
+{
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++) dst[4 * i + j] = R[4 * i + j];
+        dst[4 * i + 3] = 0;
+    }
+}
+
 #endif

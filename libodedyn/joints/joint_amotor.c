@@ -43,6 +43,7 @@ typedef struct dxJointAMotor {
     dReal angle[3];           // user mode: the angles the user set
     dVector3 eref1[3];        // Euler mode: e0 e1 e2 in body 1's frame
     dVector3 eref2[3];        // the same at the reference, in body 2's frame
+    int axes_reversed;        // DX_JOINT_REVERSE when rel, axis and eref were stored
     dxLimot limot[3];
 } dxJointAMotor;
 
@@ -181,9 +182,28 @@ static void amotor_fill_rows(dxJoint *j, dxJointRows *rows)
     }
 }
 
+// After dJointAttach. ODE 0.16 recomputes nothing, and keeps its axes by
+// stored body: when the attachment turns round, an axis fixed to body 1
+// becomes one fixed to body 2 and the other way round, in the same frame.
+static void amotor_attached(dxJoint *j)
+{
+    dxJointAMotor *m = (dxJointAMotor *)j;
+    if (!dxJointBody(j, 0)) return;
+    const int reversed = (j->flags & DX_JOINT_REVERSE) != 0;
+    if (reversed == m->axes_reversed) return;
+    m->axes_reversed = reversed;
+    for (int i = 0; i < 3; i++) {
+        if (m->rel[i]) m->rel[i] = 3 - m->rel[i];
+        dVector3 t;
+        dCopyVector4(t, m->eref1[i]);
+        dCopyVector4(m->eref1[i], m->eref2[i]);
+        dCopyVector4(m->eref2[i], t);
+    }
+}
+
 static const dxJointClass amotor_class = {
     dJointTypeAMotor, "angular motor", sizeof(dxJointAMotor), amotor_init, amotor_count_rows,
-    amotor_fill_rows, NULL
+    amotor_fill_rows, amotor_attached
 };
 
 // ---- public API -------------------------------------------------------------

@@ -33,8 +33,20 @@ static void ball_fill_rows(dxJoint *j, dxJointRows *rows)
     for (int i = 0; i < 3; i++) rows->cfm[i] = b->cfm;
 }
 
+// After dJointAttach: the anchor stays where the getter now puts it (from the
+// first body's side) and is stored again for the new bodies (ODE 0.16).
+static void ball_attached(dxJoint *j)
+{
+    dxJointBall *b = (dxJointBall *)j;
+    dVector3 p;
+    if (!dxJointBody(j, 0)) return;
+    dJointGetBallAnchor(j, p);
+    dxJointSetAnchors(j, p[0], p[1], p[2], b->anchor1, b->anchor2);
+}
+
 static const dxJointClass ball_class = {
-    dJointTypeBall, "ball", sizeof(dxJointBall), ball_init, ball_count_rows, ball_fill_rows, NULL
+    dJointTypeBall, "ball", sizeof(dxJointBall), ball_init, ball_count_rows, ball_fill_rows,
+    ball_attached
 };
 
 dJointID dJointCreateBall(dWorldID w, dJointGroupID g)

@@ -79,7 +79,7 @@ static void fixed_fill_rows(dxJoint *j, dxJointRows *rows)
 
 static const dxJointClass fixed_class = {
     dJointTypeFixed, "fixed", sizeof(dxJointFixed), fixed_init, fixed_count_rows,
-    fixed_fill_rows, NULL
+    fixed_fill_rows, NULL   // ODE 0.16 recomputes nothing: dJointSetFixed does
 };
 
 dJointID dJointCreateFixed(dWorldID w, dJointGroupID g)

@@ -2,6 +2,11 @@
 //
 // joint_hinge.c -- the hinge joint (guide 7.3.2): the ball rows plus two rows
 // keeping the axes parallel, and a limit/motor row about the axis.
+//
+// Attached as (0, b), b is stored as body 0 and the axis is kept as the user
+// gave it; as in ODE 0.16 the angle, its rate and dJointAddHingeTorque then
+// take the user's sense (body 1 against body 2: the world against b) while
+// the stops and the motor act on b against the world, the opposite sense.
 
 #include "joint_geometry.h"
 
@@ -45,10 +50,32 @@ static void hinge_fill_rows(dxJoint *j, dxJointRows *rows)
     dxLimotAddRow(&h->limot, j, rows, 5, ax1, 1);
 }
 
+// After dJointAttach: anchor and axis stay where the getters now put them
+// (from the first body's side), stored again for the new bodies, and the
+// current pose becomes angle 0 (ODE 0.16).
+static void hinge_attached(dxJoint *j)
+{
+    dxJointHinge *h = (dxJointHinge *)j;
+    dVector3 v;
+    if (!dxJointBody(j, 0)) return;
+    dJointGetHingeAnchor(j, v);
+    dxJointSetAnchors(j, v[0], v[1], v[2], h->anchor1, h->anchor2);
+    dJointGetHingeAxis(j, v);
+    dxJointSetAxes(j, __func__, v[0], v[1], v[2], h->axis1, h->axis2);
+    dxJointRelativeQuaternion(j, h->qrel);
+}
+
 static const dxJointClass hinge_class = {
     dJointTypeHinge, "hinge", sizeof(dxJointHinge), hinge_init, hinge_count_rows,
-    hinge_fill_rows, NULL
+    hinge_fill_rows, hinge_attached
 };
+
+// The sign turning an angle, rate or torque of the stored bodies (body 0
+// against body 1) into the user's (body 1 against body 2 of dJointAttach).
+static dReal stored_sign(const dxJoint *j)
+{
+    return (j->flags & DX_JOINT_REVERSE) ? -1 : 1;
+}
 
 dJointID dJointCreateHinge(dWorldID w, dJointGroupID g)
 {
@@ -86,13 +113,6 @@ void dJointSetHingeAxis(dJointID j, dReal x, dReal y, dReal z)
 {
     HINGE(j, return);
     dxJointHinge *h = (dxJointHinge *)j;
-    // Attached as (0, b), b is stored as body 0: the stored axis is reversed so
-    // angle, rate, stops and motor keep the user's sense (body 1 against body 2).
-    if (j->flags & DX_JOINT_REVERSE) {
-        x = -x;
-        y = -y;
-        z = -z;
-    }
     if (!dxJointSetAxes(j, __func__, x, y, z, h->axis1, h->axis2)) return;
     dxJointRelativeQuaternion(j, h->qrel);
 }
@@ -103,9 +123,10 @@ void dJointSetHingeAxisOffset(dJointID j, dReal x, dReal y, dReal z, dReal angle
     DX_CHECK_ARG(dxIsFinite(angle), return, "angle is not finite");
     dxJointHinge *h = (dxJointHinge *)j;
     dJointSetHingeAxis(j, x, y, z);
-    // The current position is at `angle`: the zero was angle earlier about the axis.
+    // The current position is at `angle` (user's sense): the zero was that
+    // angle earlier about the axis, measured on the stored bodies.
     dQuaternion turn, q;
-    dQFromAxisAndAngle(turn, h->axis1[0], h->axis1[1], h->axis1[2], angle);
+    dQFromAxisAndAngle(turn, h->axis1[0], h->axis1[1], h->axis1[2], stored_sign(j) * angle);
     dQMultiply0(q, turn, h->qrel);
     dCopyVector4(h->qrel, q);
 }
@@ -134,7 +155,6 @@ void dJointGetHingeAxis(dJointID j, dVector3 result)
     CHECK_RESULT(result, return);
     dxJointHinge *h = (dxJointHinge *)j;
     dxJointGetAxis1(j, result, h->axis1);
-    if (j->flags & DX_JOINT_REVERSE) dNegateVector3(result);
 }
 
 void dJointSetHingeParam(dJointID j, int parameter, dReal value)
@@ -160,7 +180,7 @@ dReal dJointGetHingeAngle(dJointID j)
     HINGE(j, return 0);
     dxJointHinge *h = (dxJointHinge *)j;
     if (!dxJointBody(j, 0)) return 0;
-    return dxJointRelativeAngle(j, h->axis1, h->qrel);
+    return stored_sign(j) * dxJointRelativeAngle(j, h->axis1, h->qrel);
 }
 
 dReal dJointGetHingeAngleRate(dJointID j)
@@ -170,7 +190,7 @@ dReal dJointGetHingeAngleRate(dJointID j)
     if (!dxJointBody(j, 0)) return 0;
     dVector3 axis;
     dxJointGetAxis1(j, axis, h->axis1);
-    return dxJointRelativeAngleRate(j, axis);
+    return stored_sign(j) * dxJointRelativeAngleRate(j, axis);
 }
 
 void dJointAddHingeTorque(dJointID j, dReal torque)
@@ -182,6 +202,7 @@ void dJointAddHingeTorque(dJointID j, dReal torque)
     if (!b0) return;
     dVector3 axis;
     dxJointGetAxis1(j, axis, h->axis1);
+    torque *= stored_sign(j);
     dAddVectorScaledVector3(b0->torque, b0->torque, axis, torque);
     if (b1) dAddVectorScaledVector3(b1->torque, b1->torque, axis, -torque);
 }

@@ -299,9 +299,37 @@ static void hinge2_fill_rows(dxJoint *j, dxJointRows *rows)
     limot_row(h, 1, rows, row, d2);
 }
 
+// Store world point p as the anchor on both user bodies.
+static void set_anchor(dxJointHinge2 *h, const dVector3 p)
+{
+    for (int k = 0; k < 2; k++) {
+        const struct dxBody *b = user_body(&h->base, k);
+        dVector3 r;
+        if (b) dSubtractVectors3(r, p, b->pos);
+        else dCopyVector3(r, p);
+        from_world(&h->base, k, h->anchor[k], r);
+    }
+}
+
+// After dJointAttach, as ODE 0.16 does: the anchor stays where body 1 now
+// puts it and is stored again for body 2, the axes stay fixed in their
+// bodies, and the current pose becomes angle 0 with the current angle
+// between the axes kept (unless the new poses make the axes parallel).
+static void hinge2_attached(dxJoint *j)
+{
+    dxJointHinge2 *h = (dxJointHinge2 *)j;
+    if (!dxJointBody(j, 0)) return;
+    dVector3 r, p, a1, a2, cross;
+    get_anchor(h, 0, r, p);
+    set_anchor(h, p);
+    get_axes(h, a1, a2);
+    dCalcVectorCross3(cross, a1, a2);
+    if (dCalcVectorLength3(cross) > PARALLEL_SIN) set_reference(h);
+}
+
 static const dxJointClass hinge2_class = {
     dJointTypeHinge2, "hinge-2", sizeof(dxJointHinge2), hinge2_init, hinge2_count_rows,
-    hinge2_fill_rows, NULL
+    hinge2_fill_rows, hinge2_attached
 };
 
 // ---- public API -------------------------------------------------------------
@@ -321,14 +349,8 @@ void dJointSetHinge2Anchor(dJointID j, dReal x, dReal y, dReal z)
     DX_CHECK_ARG(dxIsFinite3(x, y, z), return, "anchor is not finite");
     dxJointHinge2 *h = (dxJointHinge2 *)j;
     if (!dxJointBody(j, 0)) return;   // not attached: setters do nothing
-    dVector3 p = { x, y, z, 0 };
-    for (int k = 0; k < 2; k++) {
-        const struct dxBody *b = user_body(j, k);
-        dVector3 r;
-        if (b) dSubtractVectors3(r, p, b->pos);
-        else dCopyVector3(r, p);
-        from_world(j, k, h->anchor[k], r);
-    }
+    const dVector3 p = { x, y, z, 0 };
+    set_anchor(h, p);
     // The anchor is kept; the zero angles need axes that are not parallel,
     // which the bodies' orientations can make of the default axes.
     dVector3 a1, a2;

@@ -20,7 +20,8 @@ static void null_fill_rows(dxJoint *j, dxJointRows *rows)
 }
 
 static const dxJointClass null_class = {
-    dJointTypeNull, "null", sizeof(dxJoint), NULL, null_count_rows, null_fill_rows, NULL
+    dJointTypeNull, "null", sizeof(dxJoint), NULL, null_count_rows, null_fill_rows,
+    NULL
 };
 
 dJointID dJointCreateNull(dWorldID w, dJointGroupID g)

@@ -4,13 +4,18 @@
 // lock the relative orientation, two keep body 0's origin on the line along
 // the axis through its place at set time, and a limit/motor row acts along
 // the axis.
+//
+// Attached as (0, b), b is stored as body 0 and the axis is kept as the user
+// gave it; as in ODE 0.16 the position, its rate, the stops, the motor and
+// dJointAddSliderForce then take the user's sense (body 1 against body 2:
+// the world against b), the opposite of b's displacement along the axis.
 
 #include "joint_fixed.h"
 #include "joint_geometry.h"
 
 typedef struct dxJointSlider {
     dxJoint base;
-    dVector3 axis1;     // body 0 frame, reversed when attached as (0, b)
+    dVector3 axis1;     // body 0 frame
     dVector3 offset;    // p0 - p1 at zero position, body 0 frame (world p0 without body 1)
     dQuaternion qrel;   // the relative orientation to keep
     dxLimot limot;
@@ -31,13 +36,21 @@ static void separation_error(const dxJoint *j, const dxJointSlider *s, dVector3 
     }
 }
 
-// Position of body 0 along the (stored) axis relative to body 1.
+// The sign turning a position, rate or force of the stored bodies (body 0
+// against body 1) into the user's (body 1 against body 2 of dJointAttach).
+static dReal stored_sign(const dxJoint *j)
+{
+    return (j->flags & DX_JOINT_REVERSE) ? -1 : 1;
+}
+
+// The position in the user's sense: body 0 along the axis relative to body 1,
+// negated when attached as (0, b).
 static dReal slider_position(const dxJoint *j, const dxJointSlider *s)
 {
     dVector3 ax, d;
     dxJointGetAxis1(j, ax, s->axis1);
     separation_error(j, s, d);
-    return dCalcVectorDot3(ax, d);
+    return stored_sign(j) * dCalcVectorDot3(ax, d);
 }
 
 static void slider_init(dxJoint *j)
@@ -95,12 +108,40 @@ static void slider_fill_rows(dxJoint *j, dxJointRows *rows)
     dxJointGetAxis1(j, ax, s->axis1);
     dxJointOrientationRows(j, rows, 0, s->qrel, rows->erp);
     line_rows(j, s, rows, ax);
+    dScaleVector3(ax, stored_sign(j));   // the stops and motor act in the user's sense
     dxLimotAddRow(&s->limot, j, rows, 5, ax, 0);
+}
+
+// The current configuration becomes position 0 and the orientation to keep;
+// delta (world) displaces the zero of a body attached to the world, as in
+// ODE 0.16's dJointSetSliderAxisDelta.
+static void set_zero(dxJoint *j, const dVector3 delta)
+{
+    dxJointSlider *s = (dxJointSlider *)j;
+    const struct dxBody *b0 = dxJointBody(j, 0), *b1 = dxJointBody(j, 1);
+    if (!b0) return;
+    if (b1) {
+        dVector3 c;
+        dSubtractVectors3(c, b0->pos, b1->pos);
+        dMultiply1_331(s->offset, b0->R, c);
+    } else {
+        dAddVectors3(s->offset, b0->pos, delta);
+    }
+    s->offset[3] = 0;
+    dxJointRelativeQuaternion(j, s->qrel);
+}
+
+// After dJointAttach: the axis stays fixed in the first body, and the current
+// configuration becomes position 0 (ODE 0.16).
+static void slider_attached(dxJoint *j)
+{
+    const dVector3 none = { 0, 0, 0, 0 };
+    set_zero(j, none);
 }
 
 static const dxJointClass slider_class = {
     dJointTypeSlider, "slider", sizeof(dxJointSlider), slider_init, slider_count_rows,
-    slider_fill_rows, NULL
+    slider_fill_rows, slider_attached
 };
 
 dJointID dJointCreateSlider(dWorldID w, dJointGroupID g)
@@ -118,21 +159,7 @@ static void set_axis(dxJoint *j, const char *function, dReal x, dReal y, dReal z
                      const dVector3 delta)
 {
     dxJointSlider *s = (dxJointSlider *)j;
-    const struct dxBody *b0 = dxJointBody(j, 0), *b1 = dxJointBody(j, 1);
-    // Attached as (0, b), b is stored as body 0: the stored axis is reversed so
-    // position, rate, stops and motor keep the user's sense (body 1 against body 2).
-    const dReal sign = (j->flags & DX_JOINT_REVERSE) ? -1 : 1;
-    if (!dxJointSetAxes(j, function, sign * x, sign * y, sign * z, s->axis1, NULL)) return;
-    if (!b0) return;
-    if (b1) {
-        dVector3 c;
-        dSubtractVectors3(c, b0->pos, b1->pos);
-        dMultiply1_331(s->offset, b0->R, c);
-    } else {
-        dAddVectors3(s->offset, b0->pos, delta);
-    }
-    s->offset[3] = 0;
-    dxJointRelativeQuaternion(j, s->qrel);
+    if (dxJointSetAxes(j, function, x, y, z, s->axis1, NULL)) set_zero(j, delta);
 }
 
 void dJointSetSliderAxis(dJointID j, dReal x, dReal y, dReal z)
@@ -157,7 +184,6 @@ void dJointGetSliderAxis(dJointID j, dVector3 result)
     DX_CHECK_ARG(result != NULL, return, "result is NULL");
     dxJointSlider *s = (dxJointSlider *)j;
     dxJointGetAxis1(j, result, s->axis1);
-    if (j->flags & DX_JOINT_REVERSE) dNegateVector3(result);
 }
 
 dReal dJointGetSliderPosition(dJointID j)
@@ -182,7 +208,7 @@ dReal dJointGetSliderPositionRate(dJointID j)
     dSubtractVectors3(sep, b0->pos, b1 ? b1->pos : s->offset);
     dReal rate = dCalcVectorDot3(ax, b0->lvel) + dCalcVectorDot3(wxa, sep);
     if (b1) rate -= dCalcVectorDot3(ax, b1->lvel);
-    return rate;
+    return stored_sign(j) * rate;
 }
 
 void dJointSetSliderParam(dJointID j, int parameter, dReal value)
@@ -216,7 +242,7 @@ void dJointAddSliderForce(dJointID j, dReal force)
     if (!b0) return;
     dVector3 f;
     dxJointGetAxis1(j, f, s->axis1);
-    dScaleVector3(f, force);
+    dScaleVector3(f, stored_sign(j) * force);
     dAddVectors3(b0->force, b0->force, f);
     if (b1) {
         dVector3 half, ltd;

@@ -21,6 +21,7 @@ typedef struct dxJointUniversal {
     dxJoint base;
     dVector3 anchor1, anchor2;   // body 0 frame; body 1 frame (or world)
     dVector3 axis[2];            // axis k in the frame of user body k+1 (or world)
+    int axes_reversed;           // DX_JOINT_REVERSE when the axes were stored
     dQuaternion qrel;            // r0 = conj(q2) q1 at zero angles (user bodies)
     dxLimot limot[2];
 } dxJointUniversal;
@@ -150,9 +151,33 @@ static void universal_fill_rows(dxJoint *j, dxJointRows *rows)
     }
 }
 
+// After dJointAttach, as ODE 0.16 does: the anchor stays where the getter now
+// puts it (from user body 1's side, the world's when attached as (0, b)) and
+// is stored again for the new bodies; each axis stays fixed in the frame of
+// the stored body it was fixed in (ODE keeps its axes by stored body, so
+// when the attachment turns round, axis 1 and axis 2 change places); the
+// current pose becomes angle 0 for both.
+static void universal_attached(dxJoint *j)
+{
+    dxJointUniversal *u = (dxJointUniversal *)j;
+    if (!dxJointBody(j, 0)) return;
+    const int reversed = (j->flags & DX_JOINT_REVERSE) != 0;
+    if (reversed != u->axes_reversed) {
+        dVector3 t;
+        dCopyVector4(t, u->axis[0]);
+        dCopyVector4(u->axis[0], u->axis[1]);
+        dCopyVector4(u->axis[1], t);
+        u->axes_reversed = reversed;
+    }
+    dVector3 p;
+    dJointGetUniversalAnchor(j, p);
+    dxJointSetAnchors(j, p[0], p[1], p[2], u->anchor1, u->anchor2);
+    user_relative_quaternion(j, u->qrel);
+}
+
 static const dxJointClass universal_class = {
     dJointTypeUniversal, "universal", sizeof(dxJointUniversal), universal_init,
-    universal_count_rows, universal_fill_rows, NULL
+    universal_count_rows, universal_fill_rows, universal_attached
 };
 
 dJointID dJointCreateUniversal(dWorldID w, dJointGroupID g)
@@ -312,6 +337,19 @@ dReal dJointGetUniversalAngle1Rate(dJointID j)
 }
 
 dReal dJointGetUniversalAngle2Rate(dJointID j)
+{
+    UNIVERSAL(j, return 0);
+    return universal_rate((dxJointUniversal *)j, 1);
+}
+
+// The names the ODE 0.5 guide's index gives the two rates.
+dReal dJointGetUniversalAngleRate1(dJointID j)
+{
+    UNIVERSAL(j, return 0);
+    return universal_rate((dxJointUniversal *)j, 0);
+}
+
+dReal dJointGetUniversalAngleRate2(dJointID j)
 {
     UNIVERSAL(j, return 0);
     return universal_rate((dxJointUniversal *)j, 1);

@@ -19,6 +19,9 @@
     } while (0)
 
 static int positive(dReal x) { return dxIsFinite(x) && x > 0; }
+// Sizes may be zero (ODE accepts a sphere of radius 0): the solid is then a
+// point, a rod or a plate, whose inertia dMassCheck reports as not definite.
+static int size_ok(dReal x) { return dxIsFinite(x) && x >= 0; }
 
 // 1 if the quadratic form of the 3x3 block A (row skip 4) is positive
 // definite: Sylvester's criterion (leading minors > 0) on the symmetric part
@@ -91,6 +94,7 @@ void dMassSetParameters(dMass *m, dReal themass, dReal cgx, dReal cgy, dReal cgz
     m->I[0] = I11; m->I[1] = I12; m->I[2] = I13;
     m->I[4] = I12; m->I[5] = I22; m->I[6] = I23;
     m->I[8] = I13; m->I[9] = I23; m->I[10] = I33;
+    dMassCheck(m);   // as ODE 0.16: an impossible mass is reported, and kept
 }
 
 // A solid centred at the origin with principal axes along the body axes.
@@ -126,7 +130,7 @@ static int round_args_ok(const char *fn, const dMass *m, dReal amount, int by_to
     if (!solid_args_ok(fn, m, amount, by_total)) return 0;
     REQUIRE(direction >= 1 && direction <= 3, "direction %d must be 1 (x), 2 (y) or 3 (z)",
             direction);
-    REQUIRE(positive(radius), "the radius %g must be positive and finite", (double)radius);
+    REQUIRE(size_ok(radius), "the radius %g must be >= 0 and finite", (double)radius);
     REQUIRE(dxIsFinite(length) && length >= 0, "the length %g must be >= 0 and finite",
             (double)length);
     return 1;
@@ -137,13 +141,14 @@ static void set_sphere(dMass *m, dReal mass, dReal r)
 {
     dReal i = REAL(0.4) * mass * r * r;
     set_diagonal(m, mass, i, i, i);
+    dMassCheck(m);
 }
 
 // The solids below: by density, or (the Total forms) by total mass.
 void dMassSetSphere(dMass *m, dReal density, dReal radius)
 {
     if (!solid_args_ok(__func__, m, density, 0)) return;
-    DX_CHECK_ARG(positive(radius), return, "the radius %g must be positive and finite",
+    DX_CHECK_ARG(size_ok(radius), return, "the radius %g must be >= 0 and finite",
                  (double)radius);
     set_sphere(m, REAL(4.0) / 3 * (dReal)M_PI * radius * radius * radius * density, radius);
 }
@@ -151,7 +156,7 @@ void dMassSetSphere(dMass *m, dReal density, dReal radius)
 void dMassSetSphereTotal(dMass *m, dReal total_mass, dReal radius)
 {
     if (!solid_args_ok(__func__, m, total_mass, 1)) return;
-    DX_CHECK_ARG(positive(radius), return, "the radius %g must be positive and finite",
+    DX_CHECK_ARG(size_ok(radius), return, "the radius %g must be >= 0 and finite",
                  (double)radius);
     set_sphere(m, total_mass, radius);
 }
@@ -163,11 +168,14 @@ void dMassSetSphereTotal(dMass *m, dReal total_mass, dReal radius)
 // gives the transverse term M2 (2/5 r^2 + 3/8 r l + l^2/4).
 static void set_capsule(dMass *m, dReal mass, int direction, dReal r, dReal l)
 {
-    dReal m1 = mass * (3 * l) / (3 * l + 4 * r), m2 = mass * (4 * r) / (3 * l + 4 * r);
+    const dReal parts = 3 * l + 4 * r;   // 0 for a point: no part has mass then
+    dReal m1 = parts > 0 ? mass * (3 * l) / parts : 0;
+    dReal m2 = parts > 0 ? mass * (4 * r) / parts : 0;
     dReal axial = (REAL(0.5) * m1 + REAL(0.4) * m2) * r * r;
     dReal transverse = m1 * (REAL(0.25) * r * r + l * l / 12) +
                        m2 * (REAL(0.4) * r * r + REAL(0.375) * r * l + REAL(0.25) * l * l);
     set_axial(m, mass, direction, axial, transverse);
+    dMassCheck(m);
 }
 
 // Volume of a capsule: cylinder plus sphere, pi r^2 (l + 4/3 r).
@@ -207,6 +215,7 @@ static void set_cylinder(dMass *m, dReal mass, int direction, dReal r, dReal l)
 {
     set_axial(m, mass, direction, REAL(0.5) * mass * r * r,
               mass * (REAL(0.25) * r * r + l * l / 12));
+    dMassCheck(m);
 }
 
 void dMassSetCylinder(dMass *m, dReal density, int direction, dReal radius, dReal length)
@@ -222,13 +231,13 @@ void dMassSetCylinderTotal(dMass *m, dReal total_mass, int direction, dReal radi
     set_cylinder(m, total_mass, direction, radius, length);
 }
 
-// The checks of the box: every side positive.
+// The checks of the box: every side >= 0.
 static int box_args_ok(const char *fn, const dMass *m, dReal amount, int by_total, dReal lx,
                        dReal ly, dReal lz)
 {
     if (!solid_args_ok(fn, m, amount, by_total)) return 0;
-    REQUIRE(positive(lx) && positive(ly) && positive(lz),
-            "the sides (%g, %g, %g) must be positive and finite", (double)lx, (double)ly,
+    REQUIRE(size_ok(lx) && size_ok(ly) && size_ok(lz),
+            "the sides (%g, %g, %g) must be >= 0 and finite", (double)lx, (double)ly,
             (double)lz);
     return 1;
 }
@@ -239,6 +248,7 @@ static void set_box(dMass *m, dReal mass, dReal lx, dReal ly, dReal lz)
     dReal k = mass / 12;
     set_diagonal(m, mass, k * (ly * ly + lz * lz), k * (lx * lx + lz * lz),
                  k * (lx * lx + ly * ly));
+    dMassCheck(m);
 }
 
 void dMassSetBox(dMass *m, dReal density, dReal lx, dReal ly, dReal lz)
