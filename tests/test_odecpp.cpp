@@ -1051,6 +1051,17 @@ static int test_geom_classes_match_c(void)
     CHECK(ray.getBackfaceCull() == 1 && dGeomRayGetBackfaceCull(ray) == 1);
     CHECK(ray.getFirstContact() == 1 && dGeomRayGetFirstContact(ray) == 1);
     CHECK(ray.getClosestHit() == 1 && dGeomRayGetClosestHit(ray) == 1);
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+#endif
+    int first = -1, cull = -1;
+    ray.setParams(0, 1);
+    ray.getParams(&first, &cull);
+    CHECK(first == 0 && cull == 1 && dGeomRayGetFirstContact(ray) == 0);
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
     CHECK(space.getNumGeoms() == 4);
 
     sphere.create(0, 2);   // replaces the sphere: the old one leaves the space

@@ -341,6 +341,24 @@ public:
     int getFirstContact() { return dGeomRayGetFirstContact(_id); }
     void setClosestHit(int closestHit) { dGeomRaySetClosestHit(_id, closestHit); }
     int getClosestHit() { return dGeomRayGetClosestHit(_id); }
+
+    // Both flags at once; deprecated with their C functions, as in ODE 0.16
+    // (the calls here do not warn: only a program calling these does).
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+#endif
+    ODE_API_DEPRECATED void setParams(int firstContact, int backfaceCull)
+    {
+        dGeomRaySetParams(_id, firstContact, backfaceCull);
+    }
+    ODE_API_DEPRECATED void getParams(int *firstContact, int *backfaceCull)
+    {
+        dGeomRayGetParams(_id, firstContact, backfaceCull);
+    }
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
 };
 
 // A geom transform, deprecated in ODE 0.16 (geom offsets replace it) and marked so
