@@ -18,6 +18,8 @@
 #include <ode/objects.h>
 #include <ode/collision_space.h>
 #include <ode/collision.h>
+#include <ode/threading.h>
+#include <ode/threading_impl.h>
 #include <ode/backend.h>
 #include <ode/version.h>
 

@@ -520,7 +520,7 @@ static void keep_feedback(dxArena *a, dxJoint *j, const qs_jrows *jr, const int 
 
 void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_system *sys)
 {
-    dxArena *a = &w->arena;
+    dxArena *a = w->arena;
     int m = 0, max_m = 0, nfeedback = 0, nbodies = 0, ncontacts = 0;
     for (int i = 0; i < count; i++) {
         const dxIsland *is = &islands[i];
@@ -569,7 +569,7 @@ void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_syst
 void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *bd, dReal h,
                   qs_system *sys, qs_island *part)
 {
-    dxArena *a = &w->arena;
+    dxArena *a = w->arena;
     qs_scratch *s = sys->scratch;
     qs_jrows *jr = &s->jr;
     part->body0 = sys->nbodies;
