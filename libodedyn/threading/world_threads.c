@@ -2,15 +2,13 @@
 //
 // world_threads.c -- a world's stepping threads: the public functions that
 // set the threading implementation and the islands limit, and the parallel
-// run of a step's pieces (step_threads.h) through the implementation's
-// functions: one call per thread, all of them released into a last call
-// that the stepping thread waits for.
+// run of a step's pieces (step_threads.h), each thread in its own arena.
 
+#include "parallel_run.h"
 #include "step_memory.h"
 #include "step_threads.h"
 #include "threading_internal.h"
 
-#include <stdatomic.h>
 
 #define CHECK_WORLD(w, on_fail) \
     DX_CHECK_ARG(dxWorldIsLive(w), on_fail, "world is NULL or was destroyed")
@@ -77,51 +75,28 @@ int dxStepThreadCount(struct dxWorld *w, int count)
     return n < 2 ? 1 : (int)n;
 }
 
-typedef struct parallel_run {
+// A step's piece on a thread's arena.
+typedef struct step_run {
     dxStepPieceFunction *piece;
     void *context;
-    int count;
-    atomic_int next;              // the next piece nobody has taken
-    dxArena *arenas;              // one per thread: instance_index
-} parallel_run;
+    dxArena *arenas;   // one per thread
+} step_run;
 
-// One thread's call: pieces until none is left.
-static int run_pieces(void *context, dcallindex_t index, dCallReleaseeID self)
+static void step_piece(void *context, int item, int thread)
 {
-    (void)self;
-    parallel_run *run = context;
-    dxArena *arena = &run->arenas[index];
-    for (int k; (k = atomic_fetch_add_explicit(&run->next, 1, memory_order_relaxed)) < run->count;)
-        run->piece(run->context, k, arena);
-    return 1;
-}
-
-static int all_done(void *context, dcallindex_t index, dCallReleaseeID self)
-{
-    (void)context;
-    (void)index;
-    (void)self;
-    return 1;
+    step_run *run = context;
+    run->piece(run->context, item, &run->arenas[thread]);
 }
 
 void dxStepRunParallel(struct dxWorld *w, int threads, int count, dxStepPieceFunction *piece,
                        void *context)
 {
-    const dThreadingFunctionsInfo *f = w->threading;
-    dThreadingImplementationID impl = w->threading_impl;
-    parallel_run run = { piece, context, count, 0, dxStepMemoryThreadArenas(w, threads) };
-    if (!w->step_wait) w->step_wait = f->alloc_call_wait(impl);
-    if (!w->step_wait || !f->preallocate_resources_for_calls(impl, (size_t)threads + 1)) {
-        run_pieces(&run, 0, NULL);   // the implementation has no room: on this thread
-        return;
+    step_run run = { piece, context, dxStepMemoryThreadArenas(w, threads) };
+    if (!w->step_wait) w->step_wait = w->threading->alloc_call_wait(w->threading_impl);
+    if (dxRunPieces(w->threading, w->threading_impl, w->step_wait, threads, count, step_piece,
+                    &run)) {
+        dxStepMemoryBalance(w, threads);
+    } else {   // the implementation has no room: on this thread
+        for (int k = 0; k < count; k++) piece(context, k, &run.arenas[0]);
     }
-    f->reset_call_wait(impl, w->step_wait);
-    dCallReleaseeID done;
-    f->post_call(impl, NULL, &done, (size_t)threads, NULL, w->step_wait, all_done, NULL, 0,
-                 "step pieces done");
-    for (int t = 0; t < threads; t++)
-        f->post_call(impl, NULL, NULL, 0, done, NULL, run_pieces, &run, (dcallindex_t)t,
-                     "step pieces");
-    f->wait_call(impl, NULL, w->step_wait, NULL, "step");
-    dxStepMemoryBalance(w, threads);
 }
