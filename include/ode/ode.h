@@ -11,6 +11,7 @@
 #include <ode/memory.h>
 #include <ode/odemath.h>
 #include <ode/matrix.h>
+#include <ode/matrix_coop.h>
 #include <ode/rotation.h>
 #include <ode/mass.h>
 #include <ode/misc.h>
@@ -20,6 +21,7 @@
 #include <ode/collision.h>
 #include <ode/threading.h>
 #include <ode/threading_impl.h>
+#include <ode/cooperative.h>
 #include <ode/backend.h>
 #include <ode/version.h>
 
