@@ -4,7 +4,8 @@
 // reference: thread counts of the implementations, the islands limit, fault
 // summaries and wait statuses of posted calls, and three separate pendulums
 // stepped with dWorldStep on a pool of 2 threads (they must move as without
-// threads: 1e-6 after 300 steps, as diff_dynamics).
+// threads: 1e-6 after 300 steps, as diff_dynamics); the cooperative L D L^T
+// factorisation and solve of a 70 x 70 matrix on the pool.
 
 #include "diff_print.h"
 
@@ -70,6 +71,29 @@ static void pendulums(dThreadingImplementationID impl)
     dWorldDestroy(w);
 }
 
+static void cooperative_ldlt(dThreadingImplementationID impl)
+{
+    enum { N = 70, SKIP = 72 };
+    static dReal A[N * SKIP], d[N], b[N];
+    for (int i = 0; i < N; i++) {
+        b[i] = (dReal)((i % 7) - 3);
+        for (int j = 0; j < N; j++)
+            A[i * SKIP + j] = (dReal)(i == j ? N : 1.0 / (1 + i + j));   // diagonally dominant
+    }
+    dCooperativeID coop = dCooperativeCreate(dThreadingImplementationGetFunctions(impl), impl);
+    dResourceRequirementsID rq = dResourceRequirementsCreate(coop);
+    dEstimateCooperativelyFactorLDLTResourceRequirements(rq, 2, N);
+    dEstimateCooperativelySolveLDLTResourceRequirements(rq, 2, N);
+    dResourceContainerID rc = dResourceContainerAcquire(rq);
+    dCooperativelyFactorLDLT(rc, 2, A, d, N, SKIP);
+    dCooperativelySolveLDLT(rc, 2, A, d, b, N, SKIP);
+    diff_values("coop_ldlt_d", 1e-12, d, N);
+    diff_values("coop_ldlt_x", 1e-12, b, N);
+    dResourceContainerDestroy(rc);
+    dResourceRequirementsDestroy(rq);
+    dCooperativeDestroy(coop);
+}
+
 int main(void)
 {
     dInitODE2(0);
@@ -86,6 +110,7 @@ int main(void)
     printf("pool_threads 0 %u\n", f->retrieve_thread_count(multi));
     calls(multi, "multi_threaded", 1);
     pendulums(multi);
+    cooperative_ldlt(multi);
     dThreadingImplementationShutdownProcessing(multi);
     dThreadingThreadPoolWaitIdleState(pool);
     printf("after_shutdown_threads 0 %u\n", f->retrieve_thread_count(multi));
