@@ -54,7 +54,7 @@ int dxStepWorld(struct dxWorld *w, dReal h, const char *function, dxIslandSolver
     int count;
     if (!dxStepBegin(w, h, function, &islands, &count)) return 0;
     step_islands s = { w, islands, h, solve };
-    const int threads = dxStepThreadCount(w, count);
+    const int threads = dxStepThreadCount(w, count, function);
     if (threads > 1) {
         dxStepRunParallel(w, threads, count, step_island, &s);
     } else {

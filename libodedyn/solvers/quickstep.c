@@ -296,8 +296,8 @@ int dWorldQuickStep(dWorldID w, dReal stepsize)
         dxIslandPrepare(w, a, &islands[i], h, &bd[i]);
         dxQuickBuild(w, &islands[i], &bd[i], h, &sys, &parts[i]);
     }
-    const int threads = sys.m > 0 ? dxStepThreadCount(w, count) : 1;
-    if (threads > 1) {
+    const int threads = dxStepThreadCount(w, count, __func__);
+    if (threads > 1 && sys.m > 0) {
         solve_islands s = { &sys, parts, w->qs_iterations };
         dxStepRunParallel(w, threads, count, solve_island, &s);
     } else if (sys.m > 0) {

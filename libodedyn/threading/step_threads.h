@@ -15,8 +15,9 @@
 
 // How many threads to run `count` pieces on: the implementation's thread
 // count, at most the world's islands limit and count; 1 means the caller
-// alone (no implementation, or one without threads).
-int dxStepThreadCount(struct dxWorld *w, int count);
+// alone (no implementation, or one without threads, or a freed one: reported
+// naming `function`).
+int dxStepThreadCount(struct dxWorld *w, int count, const char *function);
 
 // One piece: number `item`, with scratch from `arena` (reset between steps,
 // not between pieces: restore what you take).

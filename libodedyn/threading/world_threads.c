@@ -61,11 +61,11 @@ unsigned dWorldGetStepIslandsProcessingMaxThreadCount(dWorldID w)
     return w->islands_max_threads;
 }
 
-int dxStepThreadCount(struct dxWorld *w, int count)
+int dxStepThreadCount(struct dxWorld *w, int count, const char *function)
 {
     if (!w->threading || count < 2) return 1;
     if (w->threading == &dx_threading_functions && !dxThreadingIsLive(w->threading_impl)) {
-        dxReportBadArgument("dWorldStep", "the world's threading implementation was freed; "
+        dxReportBadArgument(function, "the world's threading implementation was freed; "
                             "stepping on the caller's thread");
         return 1;
     }
