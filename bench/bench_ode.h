@@ -86,6 +86,50 @@ static inline const char *bench_stepper_name(bench_stepper s)
     return s == BENCH_QUICK ? "quick" : s == BENCH_WORLD ? "world" : "fast";
 }
 
+// threads=N (0: none, the default): the world steps on a multi-threaded implementation served
+// by a pool of N threads (ODE 0.16's threading API; the stepping thread waits, so N threads
+// work). The variant name gets "-Nt".
+typedef struct bench_threads {
+    int n;
+    dThreadingImplementationID impl;
+    dThreadingThreadPoolID pool;
+    char variant[32];
+} bench_threads;
+
+static inline void bench_threads_start(bench_threads *t, bench_args *a, dWorldID w,
+                                       const char *variant)
+{
+    memset(t, 0, sizeof *t);
+    const char *s = bench_arg_str(a, "threads", "0");
+    char *end;
+    t->n = (int)strtol(s, &end, 10);
+    if (*end || t->n < 0) {
+        fprintf(stderr, "%s: threads wants a count, not '%s'\n", a->argv[0], s);
+        exit(2);
+    }
+    snprintf(t->variant, sizeof t->variant, "%s", variant);
+    if (t->n == 0) return;
+    snprintf(t->variant, sizeof t->variant, "%s-%dt", variant, t->n);
+    t->impl = dThreadingAllocateMultiThreadedImplementation();
+    t->pool = dThreadingAllocateThreadPool((unsigned)t->n, 0, dAllocateFlagBasicData, NULL);
+    if (!t->impl || !t->pool) {
+        fprintf(stderr, "%s: this engine has no thread pools\n", a->argv[0]);
+        exit(3);
+    }
+    dThreadingThreadPoolServeMultiThreadedImplementation(t->pool, t->impl);
+    dWorldSetStepThreadingImplementation(w, dThreadingImplementationGetFunctions(t->impl),
+                                         t->impl);
+}
+
+static inline void bench_threads_stop(bench_threads *t, dWorldID w)
+{
+    if (t->n == 0) return;
+    dThreadingImplementationShutdownProcessing(t->impl);
+    dThreadingFreeThreadPool(t->pool);
+    dWorldSetStepThreadingImplementation(w, NULL, NULL);
+    dThreadingFreeImplementation(t->impl);
+}
+
 // One step of the chosen stepper; iterations for QuickStep are set on the world.
 static inline void bench_step(dWorldID w, bench_stepper s, dReal dt, int iterations)
 {

@@ -132,11 +132,14 @@ int main(int argc, char **argv)
     const int steps = (int)bench_arg_int(&args, "steps", 600);
     const int iterations = (int)bench_arg_int(&args, "iterations", 20);
     const bench_stepper stepper = bench_arg_stepper(&args, "quick");
-    bench_args_check(&args, "[figures=N] [steps=N] [stepper=quick|world|fast] [iterations=N]");
+    bench_threads threads;
     const dReal dt = (dReal)(1.0 / 60.0);
 
     dInitODE2(0);
     dWorldID world = dWorldCreate();
+    bench_threads_start(&threads, &args, world, bench_stepper_name(stepper));
+    bench_args_check(&args,
+                     "[figures=N] [steps=N] [stepper=quick|world|fast] [iterations=N] [threads=N]");
     dWorldSetGravity(world, 0, 0, (dReal)-9.81);
     dWorldSetQuickStepNumIterations(world, iterations);
     dSpaceID space = dHashSpaceCreate(0);
@@ -173,7 +176,7 @@ int main(int argc, char **argv)
 
     double ke = 0;
     for (int i = 0; i < figures * PARTS; i++) ke += bench_body_ke(body[i]);
-    bench_report("ragdolls", BENCH_ENGINE, bench_stepper_name(stepper), figures * PARTS, steps,
+    bench_report("ragdolls", BENCH_ENGINE, threads.variant, figures * PARTS, steps,
                  coll_s, step_s,
                  "iterations=%d max_pen=%.6f joint_sep=%.6f joint_sep_end=%.6f ke_end=%.6g "
                  "contacts_per_step=%.1f",
@@ -181,6 +184,7 @@ int main(int argc, char **argv)
 
     dJointGroupDestroy(con.group);
     dSpaceDestroy(space);
+    bench_threads_stop(&threads, world);
     dWorldDestroy(world);
     dCloseODE();
     free(body);

@@ -27,11 +27,14 @@ int main(int argc, char **argv)
     const int steps = (int)bench_arg_int(&args, "steps", 300);
     const int iterations = (int)bench_arg_int(&args, "iterations", 20);
     const bench_stepper stepper = bench_arg_stepper(&args, "quick");
-    bench_args_check(&args, "[count=N] [steps=N] [stepper=quick|world|fast] [iterations=N]");
+    bench_threads threads;
     const dReal dt = (dReal)(1.0 / 60.0);
 
     dInitODE2(0);
     dWorldID world = dWorldCreate();
+    bench_threads_start(&threads, &args, world, bench_stepper_name(stepper));
+    bench_args_check(&args,
+                     "[count=N] [steps=N] [stepper=quick|world|fast] [iterations=N] [threads=N]");
     dWorldSetGravity(world, 0, 0, (dReal)-9.81);
     dWorldSetQuickStepNumIterations(world, iterations);
     dSpaceID space = dHashSpaceCreate(0);
@@ -81,13 +84,14 @@ int main(int argc, char **argv)
         if (p[2] > top) top = p[2];
         ke += bench_body_ke(body[i]);
     }
-    bench_report("spheres", BENCH_ENGINE, bench_stepper_name(stepper), count, steps, coll_s,
+    bench_report("spheres", BENCH_ENGINE, threads.variant, count, steps, coll_s,
                  step_s, "iterations=%d max_pen=%.6f escaped=%d top_z=%.4f ke_end=%.6g "
                  "contacts_per_step=%.1f",
                  iterations, con.max_depth, escaped, top, ke, (double)con.contacts / steps);
 
     dJointGroupDestroy(con.group);
     dSpaceDestroy(space);
+    bench_threads_stop(&threads, world);
     dWorldDestroy(world);
     dCloseODE();
     free(body);

@@ -12,6 +12,7 @@
 #include <ode/common.h>
 #include <ode/mass.h>
 #include <ode/contact.h>
+#include <ode/threading.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -34,6 +35,62 @@ ODE_API dReal dWorldGetERP(dWorldID);
 /** Global constraint force mixing, >= 0; default 1e-5 (single) or 1e-10 (double). */
 ODE_API void dWorldSetCFM(dWorldID, dReal cfm);
 ODE_API dReal dWorldGetCFM(dWorldID);
+
+/* ---- Stepping threads and working memory (ODE 0.16) ------------------- */
+
+#define dWORLDSTEP_THREADCOUNT_UNLIMITED dTHREADING_THREAD_COUNT_UNLIMITED
+
+/** At most count threads step the world's islands at once (default
+ *  dWORLDSTEP_THREADCOUNT_UNLIMITED: as many as the threading implementation
+ *  has). Each thread gets its own working memory. */
+ODE_API void dWorldSetStepIslandsProcessingMaxThreadCount(dWorldID w, unsigned count);
+ODE_API unsigned dWorldGetStepIslandsProcessingMaxThreadCount(dWorldID w);
+/** Step w with the working memory (arena, reservation policy, memory manager)
+ *  of from_world; the two must then not be stepped at the same time. Only for
+ *  a world without working memory yet (never stepped, no policy or manager
+ *  set). from_world NULL: w leaves the sharing and returns to defaults.
+ *  Returns 1, or 0 on failure. */
+ODE_API int dWorldUseSharedWorkingMemory(dWorldID w, dWorldID from_world);
+/** Free the working memory (of every world sharing it); the policy, the
+ *  memory manager and the sharing stay. */
+ODE_API void dWorldCleanupWorkingMemory(dWorldID w);
+
+#define dWORLDSTEP_RESERVEFACTOR_DEFAULT 1.2f
+#define dWORLDSTEP_RESERVESIZE_DEFAULT 65536U
+
+/** Working memory grows to reserve_factor (>= 1) times what a step needed,
+ *  and to at least reserve_minimum bytes. */
+typedef struct {
+    unsigned struct_size;
+    float reserve_factor;
+    unsigned reserve_minimum;
+} dWorldStepReserveInfo;
+
+/** NULL: the defaults above. Returns 1, or 0 on failure. */
+ODE_API int dWorldSetStepMemoryReservationPolicy(dWorldID w,
+                                                 const dWorldStepReserveInfo *policyinfo);
+
+/** The functions that allocate and free the blocks of a world's working memory
+ *  (shrink_block keeps a block's head; the working memory only grows, so it
+ *  may be NULL). */
+typedef struct {
+    unsigned struct_size;
+    void *(*alloc_block)(dsizeint block_size);
+    void *(*shrink_block)(void *block_pointer, dsizeint block_current_size,
+                          dsizeint block_smaller_size);
+    void (*free_block)(void *block_pointer, dsizeint block_current_size);
+} dWorldStepMemoryFunctionsInfo;
+
+/** NULL: dAlloc and dFree. The working memory allocated so far is freed with
+ *  the functions that allocated it. Returns 1, or 0 on failure. */
+ODE_API int dWorldSetStepMemoryManager(dWorldID w, const dWorldStepMemoryFunctionsInfo *memfuncs);
+
+/** dWorldStep and dWorldQuickStep run on threading_impl's threads (NULL,
+ *  NULL: on the caller's): with more than one thread, islands are stepped in
+ *  parallel, with results identical to the bit to a step on one thread. */
+ODE_API void dWorldSetStepThreadingImplementation(dWorldID w,
+                                                  const dThreadingFunctionsInfo *functions_info,
+                                                  dThreadingImplementationID threading_impl);
 
 /** Step with the big-matrix LCP method (accurate, O(m^3)). Returns 1, or 0 if
  *  the step was refused (bad step size). */

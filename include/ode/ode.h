@@ -11,6 +11,7 @@
 #include <ode/memory.h>
 #include <ode/odemath.h>
 #include <ode/matrix.h>
+#include <ode/matrix_coop.h>
 #include <ode/timer.h>
 #include <ode/rotation.h>
 #include <ode/mass.h>
@@ -19,6 +20,9 @@
 #include <ode/objects.h>
 #include <ode/collision_space.h>
 #include <ode/collision.h>
+#include <ode/threading.h>
+#include <ode/threading_impl.h>
+#include <ode/cooperative.h>
 #include <ode/backend.h>
 #include <ode/export-dif.h>
 #include <ode/version.h>

@@ -7,22 +7,45 @@
 #include <ode/memory.h>
 
 #define ARENA_ALIGN 64
-#define ARENA_MIN_BLOCK (64 * 1024)
 
 struct dxArenaBlock {
     dxArenaBlock *prev;   // older block in the chain, freed at reset
     size_t size;          // usable bytes after the header
     size_t used;
-    size_t alloc_size;    // what dAlloc was asked for, for dFree
+    size_t alloc_size;    // what the policy's alloc was asked for
     char *data;           // aligned start of the usable bytes
 };
 
+static void *default_alloc(void *context, size_t bytes)
+{
+    (void)context;
+    return dAlloc(bytes);
+}
+
+static void default_release(void *context, void *p, size_t bytes)
+{
+    (void)context;
+    dFree(p, bytes);
+}
+
+static const dxArenaPolicy default_policy = { default_alloc, default_release, NULL, 1.2f,
+                                              64 * 1024 };
+
 static size_t round_up(size_t n, size_t a) { return (n + a - 1) / a * a; }
 
-static dxArenaBlock *block_create(size_t size, dxArenaBlock *prev)
+// The size of a block that holds `bytes` with the policy's reserve.
+static size_t reserve_size(const dxArenaPolicy *p, size_t bytes)
+{
+    size_t size = (size_t)((double)bytes * (double)p->reserve_factor);
+    if (size < bytes) size = bytes;
+    if (size < p->reserve_minimum) size = p->reserve_minimum;
+    return round_up(size ? size : 1, ARENA_ALIGN);
+}
+
+static dxArenaBlock *block_create(const dxArenaPolicy *p, size_t size, dxArenaBlock *prev)
 {
     size_t alloc_size = sizeof(dxArenaBlock) + ARENA_ALIGN + size;
-    dxArenaBlock *b = dAlloc(alloc_size);
+    dxArenaBlock *b = p->alloc(p->context, alloc_size);
     b->prev = prev;
     b->size = size;
     b->used = 0;
@@ -31,39 +54,46 @@ static dxArenaBlock *block_create(size_t size, dxArenaBlock *prev)
     return b;
 }
 
-static void chain_free(dxArenaBlock *b)
+static void chain_free(const dxArenaPolicy *p, dxArenaBlock *b)
 {
     while (b) {
         dxArenaBlock *prev = b->prev;
-        dFree(b, b->alloc_size);
+        p->release(p->context, b, b->alloc_size);
         b = prev;
     }
 }
 
-void dxArenaInit(dxArena *arena)
+void dxArenaInit(dxArena *arena) { dxArenaInitPolicy(arena, NULL); }
+
+void dxArenaInitPolicy(dxArena *arena, const dxArenaPolicy *policy)
 {
     arena->block = NULL;
     arena->peak = 0;
     arena->in_use = 0;
+    arena->policy = policy ? policy : &default_policy;
 }
 
 void dxArenaFree(dxArena *arena)
 {
-    chain_free(arena->block);
-    dxArenaInit(arena);
+    chain_free(arena->policy, arena->block);
+    dxArenaInitPolicy(arena, arena->policy);
 }
 
 void dxArenaReset(dxArena *arena)
 {
     dxArenaBlock *b = arena->block;
-    if (b && b->prev) {   // the last steps needed a chain: make one block that fits
-        size_t size = round_up(arena->peak + arena->peak / 4, ARENA_ALIGN);
-        chain_free(b);
-        arena->block = block_create(size, NULL);
+    if (b ? b->prev || b->size < arena->peak : arena->peak > 0) {   // make one block that fits
+        chain_free(arena->policy, b);
+        arena->block = block_create(arena->policy, reserve_size(arena->policy, arena->peak), NULL);
     } else if (b) {
         b->used = 0;
     }
     arena->in_use = 0;
+}
+
+void dxArenaReserve(dxArena *arena, size_t bytes)
+{
+    if (bytes > arena->peak) arena->peak = bytes;
 }
 
 void *dxArenaAlloc(dxArena *arena, size_t bytes)
@@ -71,9 +101,10 @@ void *dxArenaAlloc(dxArena *arena, size_t bytes)
     bytes = round_up(bytes ? bytes : 1, ARENA_ALIGN);
     dxArenaBlock *b = arena->block;
     if (!b || b->size - b->used < bytes) {
-        size_t size = bytes > ARENA_MIN_BLOCK ? bytes : ARENA_MIN_BLOCK;
+        size_t size = reserve_size(arena->policy, b ? 0 : arena->peak);
+        if (size < bytes) size = bytes;
         if (b && size < b->size * 2) size = b->size * 2;
-        b = block_create(size, b);
+        b = block_create(arena->policy, size, b);
         arena->block = b;
     }
     void *p = b->data + b->used;

@@ -37,6 +37,7 @@ void dCloseODE(void)
         dxPoolDrain(&dx_world_pool);
         dxPoolDrain(&dx_body_pool);
         dxJointPoolsDrain();
+        dxThreadingPoolsDrain();
     }
 }
 

@@ -206,7 +206,16 @@ struct dxWorld {
     int sf1_auto_enable_depth;
     dxDamping damping;
 
-    dxArena arena;                // per-step scratch, reused every step
+    dxArena *arena;               // the step's scratch: the main arena of `memory`
+                                  // (NULL until the world has memory)
+    struct dxStepMemory *memory;  // working memory, maybe shared (step_memory.c)
+    // Threads for stepping (threading/world_threads.c): NULL, or a threading
+    // implementation's functions; at most islands_max_threads (0: any number)
+    // of its threads step islands.
+    const dThreadingFunctionsInfo *threading;
+    dThreadingImplementationID threading_impl;
+    unsigned islands_max_threads;
+    dCallWaitID step_wait;        // of threading_impl, allocated at the first threaded step
     uint32_t step_count;          // steps taken (any stepper), for the warm start
     struct dxWarmCache *qs_warm;  // dWorldQuickStep's contact forces of the last
                                   // step (quickstep_warm.c), NULL until one
@@ -214,6 +223,8 @@ struct dxWorld {
 
 // Free a world's warm-start cache (dWorldDestroy).
 void dxWarmCacheFree(struct dxWorld *w);
+// Give back what the world holds of its threading implementation (dWorldDestroy).
+void dxWorldThreadingRelease(struct dxWorld *w);
 
 // ---- shared internal functions ------------------------------------------
 

@@ -27,5 +27,7 @@ void dxPoolGive(dxPool *pool, void *block);
 void dxPoolDrain(dxPool *pool);
 // Free the pooled blocks of every joint type and of joint groups (joint.c).
 void dxJointPoolsDrain(void);
+// Free the pooled blocks of threading implementations and thread pools.
+void dxThreadingPoolsDrain(void);
 
 #endif

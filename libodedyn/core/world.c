@@ -5,6 +5,7 @@
 
 #include "objects_internal.h"
 #include "pool.h"
+#include "step_memory.h"
 
 #include <ode/memory.h>
 
@@ -38,7 +39,6 @@ dWorldID dWorldCreate(void)
     w->damping.linear_threshold = REAL(0.01);
     w->damping.angular_threshold = REAL(0.01);
     w->damping.max_angular_speed = dInfinity;
-    dxArenaInit(&w->arena);
     return w;
 }
 
@@ -59,7 +59,8 @@ void dWorldDestroy(dWorldID w)
         }
     }
     while (w->bodies) dBodyDestroy(w->bodies);
-    dxArenaFree(&w->arena);
+    dxStepMemoryRelease(w);
+    dxWorldThreadingRelease(w);
     dxWarmCacheFree(w);
     w->hdr.magic = DX_MAGIC_DEAD;
     dxPoolGive(&dx_world_pool, w);

@@ -5,30 +5,46 @@
 // rows, velocity update and integration; only the solve for the constraint
 // forces is the solver's. (dWorldQuickStep builds its rows straight into its
 // own layout and solves all islands together: quickstep.c.)
+//
+// Islands share no body and no row, so with a threading implementation they
+// are stepped on its threads, each in its own arena: an island's numbers are
+// the same whichever thread steps it. What may reach data outside the
+// island (the geoms of moved bodies, the moved callbacks) follows on the
+// stepping thread, in island order, whatever the number of threads.
 
 #include "step_internal.h"
+#include "step_threads.h"
 
 #include <ode/matrix.h>
 
-static void step_island(struct dxWorld *w, const dxIsland *is, dReal h, dxIslandSolver *solve)
+typedef struct step_islands {
+    struct dxWorld *w;
+    const dxIsland *islands;
+    dReal h;
+    dxIslandSolver *solve;
+} step_islands;
+
+static void step_island(void *context, int item, dxArena *a)
 {
-    dxArena *a = &w->arena;
+    const step_islands *s = context;
+    const dxIsland *is = &s->islands[item];
+    const dReal h = s->h;
     dxArenaMark mark = dxArenaSave(a);
     dxIslandBodies bd;
-    dxIslandPrepare(w, is, h, &bd);
+    dxIslandPrepare(s->w, a, is, h, &bd);
     dxIslandRows r;
-    dxRowsBuild(w, is, h, &r);
+    dxRowsBuild(s->w, a, is, h, &r);
 
     dReal *cforce = DX_ARENA_ARRAY(a, dReal, 6 * is->nb);
     dSetZero(cforce, 6 * is->nb);
     if (r.m > 0) {
         dReal *lambda = DX_ARENA_ARRAY(a, dReal, r.m);
         dSetZero(lambda, r.m);
-        solve(w, is, &bd, &r, h, lambda);
+        s->solve(s->w, a, is, &bd, &r, h, lambda);
         dxRowsApplyForces(is, &r, lambda, cforce);
     }
     dxIslandUpdateVelocities(is, &bd, cforce, h);
-    dxIslandIntegrate(is, h);
+    dxIslandMove(is, h);
     dxArenaRestore(a, mark);
 }
 
@@ -37,7 +53,14 @@ int dxStepWorld(struct dxWorld *w, dReal h, const char *function, dxIslandSolver
     dxIsland *islands;
     int count;
     if (!dxStepBegin(w, h, function, &islands, &count)) return 0;
-    for (int i = 0; i < count; i++) step_island(w, &islands[i], h, solve);
+    step_islands s = { w, islands, h, solve };
+    const int threads = dxStepThreadCount(w, count, function);
+    if (threads > 1) {
+        dxStepRunParallel(w, threads, count, step_island, &s);
+    } else {
+        for (int i = 0; i < count; i++) step_island(&s, i, w->arena);
+    }
+    for (int i = 0; i < count; i++) dxIslandFinish(&islands[i]);
     dxStepKinematicBodies(w, h);
     dxStepEnd(islands, count, h);
     return 1;

@@ -89,14 +89,24 @@ static void finish_body(struct dxBody *b)
     dZeroVector3(b->torque);
 }
 
-void dxIslandIntegrate(const dxIsland *is, dReal h)
+void dxIslandMove(const dxIsland *is, dReal h)
 {
     for (int i = 0; i < is->nb; i++) {
         struct dxBody *b = is->bodies[i];
         damp(b);
         dxBodyIntegrate(b, h);
-        finish_body(b);
     }
+}
+
+void dxIslandFinish(const dxIsland *is)
+{
+    for (int i = 0; i < is->nb; i++) finish_body(is->bodies[i]);
+}
+
+void dxIslandIntegrate(const dxIsland *is, dReal h)
+{
+    dxIslandMove(is, h);
+    dxIslandFinish(is);
 }
 
 void dxStepKinematicBodies(struct dxWorld *w, dReal h)

@@ -41,9 +41,9 @@ int dxStepBegin(struct dxWorld *w, dReal h, const char *function, dxIsland **isl
         dxReportBadArgument(function, "stepsize must be positive and finite, got %g", (double)h);
         return 0;
     }
-    dxArenaReset(&w->arena);
+    dxStepMemoryBegin(w);
     w->step_count++;
-    dxArena *a = &w->arena;
+    dxArena *a = w->arena;
     struct dxBody **all_bodies = DX_ARENA_ARRAY(a, struct dxBody *, w->num_bodies + 1);
     dxJoint **all_joints = DX_ARENA_ARRAY(a, dxJoint *, w->num_joints + 1);
     struct dxBody **stack = DX_ARENA_ARRAY(a, struct dxBody *, w->num_bodies + 1);

@@ -66,6 +66,7 @@
 // 1.99 m against 1.52 m cold), and ragdolls gained nothing.
 
 #include "quickstep.h"
+#include "step_threads.h"
 
 #include <string.h>
 
@@ -210,6 +211,39 @@ static void solve(qs_system *sys, qs_island *parts, int count, int iterations, i
     }
 }
 
+// With a threading implementation the islands are swept apart, each on
+// whichever thread takes it: an island goes through exactly the updates, in
+// exactly the order, that it gets interleaved with the others in solve()
+// (its blocks in its joints' order, its rows in its shuffled order, the same
+// shuffles, the same sweeps rows first), and no island reads another's
+// numbers, so the results are the same to the bit.
+typedef struct solve_islands {
+    qs_system *sys;
+    qs_island *parts;
+    int iterations;
+} solve_islands;
+
+static void solve_island(void *context, int item, dxArena *arena)
+{
+    (void)arena;
+    const solve_islands *s = context;
+    qs_island *p = &s->parts[item];
+    if (p->nblocks == 0 && p->norder == 0) return;
+    qs_system one = *s->sys;   // this island's blocks and rows only
+    one.nblocks = p->nblocks;
+    one.bseq = s->sys->bseq + p->block0;
+    for (int t = 0; t < p->nblocks; t++) one.bseq[t] = &s->sys->blocks[p->block0 + t];
+    one.norder = p->norder;
+    one.seq = s->sys->order + p->order0;
+    for (int it = 0; it < s->iterations; it++) {
+        if (it % REORDER_PERIOD == 0) {
+            shuffle(one.seq, p->norder, &p->seed);
+            normals_before_friction(s->sys, p, s->sys->at);
+        }
+        dxQuickSweep(&one, it & 1);
+    }
+}
+
 // The forces a joint with feedback applies: J^T lambda of its rows, per body.
 static void joint_feedback(const qs_feedback *q, const dReal *lambda)
 {
@@ -249,7 +283,7 @@ int dWorldQuickStep(dWorldID w, dReal stepsize)
     dxIsland *islands;
     int count;
     if (!dxStepBegin(w, stepsize, __func__, &islands, &count)) return 0;
-    dxArena *a = &w->arena;
+    dxArena *a = w->arena;
     const dReal h = stepsize;
     qs_system sys;
     dxQuickSetup(w, islands, count, &sys);
@@ -259,10 +293,16 @@ int dWorldQuickStep(dWorldID w, dReal stepsize)
     int *tmp = DX_ARENA_ARRAY(a, int, count + 1);
     for (int i = 0; i < count; i++) {
         parts[i].seed = island_seed(&islands[i]);
-        dxIslandPrepare(w, &islands[i], h, &bd[i]);
+        dxIslandPrepare(w, a, &islands[i], h, &bd[i]);
         dxQuickBuild(w, &islands[i], &bd[i], h, &sys, &parts[i]);
     }
-    if (sys.m > 0) solve(&sys, parts, count, w->qs_iterations, list, tmp);
+    const int threads = dxStepThreadCount(w, count, __func__);
+    if (threads > 1 && sys.m > 0) {
+        solve_islands s = { &sys, parts, w->qs_iterations };
+        dxStepRunParallel(w, threads, count, solve_island, &s);
+    } else if (sys.m > 0) {
+        solve(&sys, parts, count, w->qs_iterations, list, tmp);
+    }
     for (int k = 0; k < sys.nfeedback; k++) joint_feedback(&sys.feedback[k], sys.lambda);
     dxQuickWarmEnd(w, sys.warm, sys.lambda);   // before the bodies move
     for (int i = 0; i < count; i++) {

@@ -519,7 +519,7 @@ static void keep_feedback(dxArena *a, dxJoint *j, const qs_jrows *jr, const int 
 // that lives until the step ends.
 static qs_jrows *fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h)
 {
-    dxArena *a = &w->arena;
+    dxArena *a = w->arena;
     size_t m = 0;
     for (int k = 0; k < is->nj; k++) m += (size_t)is->joints[k]->rows.m;
     qs_jrows *jrows = DX_ARENA_ARRAY(a, qs_jrows, is->nj + 1);
@@ -547,7 +547,7 @@ static qs_jrows *fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h
 
 void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_system *sys)
 {
-    dxArena *a = &w->arena;
+    dxArena *a = w->arena;
     int m = 0, max_m = 0, nfeedback = 0, nbodies = 0, ncontacts = 0;
     for (int i = 0; i < count; i++) {
         const dxIsland *is = &islands[i];
@@ -590,7 +590,7 @@ void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_syst
 void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *bd, dReal h,
                   qs_system *sys, qs_island *part)
 {
-    dxArena *a = &w->arena;
+    dxArena *a = w->arena;
     qs_scratch *s = sys->scratch;
     part->body0 = sys->nbodies;
     part->block0 = sys->nblocks;

@@ -49,9 +49,9 @@ static void add_gyroscopic_torque(struct dxBody *b, dReal h)
     dAddVectorScaledVector3(b->torque, b->torque, t, -dRecip(h));
 }
 
-void dxIslandPrepare(struct dxWorld *w, const dxIsland *is, dReal h, dxIslandBodies *out)
+void dxIslandPrepare(struct dxWorld *w, dxArena *a, const dxIsland *is, dReal h,
+                     dxIslandBodies *out)
 {
-    dxArena *a = &w->arena;
     out->inv_mass = DX_ARENA_ARRAY(a, dReal, is->nb);
     out->inv_inertia = DX_ARENA_ARRAY(a, dReal, 12 * is->nb);
     for (int i = 0; i < is->nb; i++) {
@@ -130,9 +130,8 @@ void dxJointRowsFill(struct dxWorld *w, dxJoint *j, dReal h, dReal *J, dReal *c,
     fold_kinematic(j, J, c, m);
 }
 
-void dxRowsBuild(struct dxWorld *w, const dxIsland *is, dReal h, dxIslandRows *r)
+void dxRowsBuild(struct dxWorld *w, dxArena *a, const dxIsland *is, dReal h, dxIslandRows *r)
 {
-    dxArena *a = &w->arena;
     r->joint_row = DX_ARENA_ARRAY(a, int, is->nj + 1);
     int m = 0;
     for (int k = 0; k < is->nj; k++) {

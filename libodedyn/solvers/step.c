@@ -161,10 +161,11 @@ static dReal *form_rhs(dxArena *a, const dxIsland *is, const dxIslandBodies *bd,
 }
 
 // The big-matrix solve: A lambda = rhs + w as a mixed LCP.
-static void solve_big_matrix(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *bd,
-                             const dxIslandRows *r, dReal h, dReal *lambda)
+static void solve_big_matrix(struct dxWorld *w, dxArena *a, const dxIsland *is,
+                             const dxIslandBodies *bd, const dxIslandRows *r, dReal h,
+                             dReal *lambda)
 {
-    dxArena *a = &w->arena;
+    (void)w;
     const dReal fps = dRecip(h);
     body_rows br;
     index_rows_by_body(a, r, is->nb, &br);

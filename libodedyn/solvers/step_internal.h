@@ -14,6 +14,7 @@
 #define DX_STEP_INTERNAL_H
 
 #include "objects_internal.h"
+#include "step_memory.h"
 
 typedef struct dxIsland {
     struct dxBody **bodies;   // b->tag is the body's index here while stepping
@@ -43,17 +44,22 @@ typedef struct dxIslandRows {
 } dxIslandRows;
 
 // A stepper's solve: the constraint forces lambda[r->m] of one island, from
-// its bodies bd and rows r (lambda is zeroed scratch of the world arena).
-typedef void dxIslandSolver(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *bd,
-                            const dxIslandRows *r, dReal h, dReal *lambda);
+// its bodies bd and rows r (lambda is zeroed scratch; more scratch from
+// arena). Reads and writes only the island's data: islands may be solved
+// at once on several threads.
+typedef void dxIslandSolver(struct dxWorld *w, dxArena *arena, const dxIsland *is,
+                            const dxIslandBodies *bd, const dxIslandRows *r, dReal h,
+                            dReal *lambda);
 // A whole step with one solver (dWorldStep): islands; per island external
-// forces, rows, solve, velocities, positions; kinematic bodies;
-// auto-disable. Returns 1, or 0 (reported) for a bad world or step.
+// forces, rows, solve, velocities, positions (on the threads of the world's
+// threading implementation, if it has one); then on the caller's thread the
+// moved bodies' geoms and callbacks, kinematic bodies, auto-disable.
+// Returns 1, or 0 (reported) for a bad world or step.
 // (dWorldQuickStep does the same steps its own way, quickstep.c.)
 int dxStepWorld(struct dxWorld *w, dReal h, const char *function, dxIslandSolver *solve);
 
-// Check the step size and find the islands (arena scratch). Returns 0 (after
-// reporting) if the step must not run.
+// Check the step size, reset the world's arena and find the islands (arena
+// scratch). Returns 0 (after reporting) if the step must not run.
 // Counts the step in w->step_count.
 int dxStepBegin(struct dxWorld *w, dReal h, const char *function, dxIsland **islands,
                 int *count);
@@ -64,11 +70,15 @@ int dxStepBegin(struct dxWorld *w, dReal h, const char *function, dxIsland **isl
 int dxJointContactWarmInfo(const dxJoint *j, dVector3 point);
 void dxStepEnd(const dxIsland *islands, int count, dReal h);
 
-void dxIslandPrepare(struct dxWorld *w, const dxIsland *is, dReal h, dxIslandBodies *out);
+// The island's body data (from arena), with gravity and the gyroscopic
+// torque added to the accumulators.
+void dxIslandPrepare(struct dxWorld *w, dxArena *arena, const dxIsland *is, dReal h,
+                     dxIslandBodies *out);
 // The unconstrained rates v/h + M^-1 (f, t) of the island's bodies
 // (fps = 1/h), 6 per body, into rates.
 void dxIslandBodyRates(const dxIsland *is, const dxIslandBodies *bd, dReal fps, dReal *rates);
-void dxRowsBuild(struct dxWorld *w, const dxIsland *is, dReal h, dxIslandRows *rows);
+void dxRowsBuild(struct dxWorld *w, dxArena *arena, const dxIsland *is, dReal h,
+                 dxIslandRows *rows);
 // The rows of one joint (j->rows.m of them, counted this step) at J, c, cfm,
 // lo, hi, findex (row i at index i, J with DX_ROW_SKIP): J zeroed and filled,
 // cfm, lo, hi defaulted and filled, findex joint-local or -1, kinematic
@@ -83,8 +93,14 @@ void dxRowsApplyForces(const dxIsland *is, const dxIslandRows *rows, const dReal
 void dxIslandUpdateVelocities(const dxIsland *is, const dxIslandBodies *bd,
                               const dReal *constraint_forces, dReal h);
 // Positions and orientations from the velocities, damping, geom notification,
-// and zeroed accumulators.
+// and zeroed accumulators: dxIslandMove then dxIslandFinish.
 void dxIslandIntegrate(const dxIsland *is, dReal h);
+// Damping, then positions and orientations from the velocities (touches only
+// the island's bodies).
+void dxIslandMove(const dxIsland *is, dReal h);
+// After the move: the geoms' and the moved callbacks' notification (which may
+// reach shared collision data: one thread), and zeroed accumulators.
+void dxIslandFinish(const dxIsland *is);
 // Move the enabled kinematic bodies by their velocities.
 void dxStepKinematicBodies(struct dxWorld *w, dReal h);
 

@@ -76,7 +76,7 @@ static void wake_within_depth(struct dxWorld *w)
 {
     const int depth = w->sf1_auto_enable_depth;
     if (depth <= 0) return;
-    struct dxBody **queue = DX_ARENA_ARRAY(&w->arena, struct dxBody *, w->num_bodies + 1);
+    struct dxBody **queue = DX_ARENA_ARRAY(w->arena, struct dxBody *, w->num_bodies + 1);
     int head = 0, tail = 0;
     for (struct dxBody *b = w->bodies; b; b = b->next) {
         b->tag = -1;
@@ -127,7 +127,7 @@ static void walk_island(struct dxBody *seed, struct dxBody **stack, dxIsland *al
 // Gather the bodies and joints of this step (arena scratch).
 static void collect(struct dxWorld *w, sf1_step *st)
 {
-    dxArena *a = &w->arena;
+    dxArena *a = w->arena;
     st->all.bodies = DX_ARENA_ARRAY(a, struct dxBody *, w->num_bodies + 1);
     st->all.joints = DX_ARENA_ARRAY(a, dxJoint *, w->num_joints + 1);
     st->all.nb = st->all.nj = 0;
@@ -269,11 +269,11 @@ static void form_local_system(const sf1_step *st, joint_system *js)
 static void solve_joint(sf1_step *st, dxJoint *j, dReal f[12])
 {
     joint_system *js = &st->js;
-    joint_system_reserve(&st->world->arena, js, j->rows.m);
+    joint_system_reserve(st->world->arena, js, j->rows.m);
     js->m = j->rows.m;
     fill_joint_rows(st, j, js);
     form_local_system(st, js);
-    if (!dxSolveLCP(&st->world->arena, js->m, js->A, js->lambda, js->rhs, js->w, 0, js->lo,
+    if (!dxSolveLCP(st->world->arena, js->m, js->A, js->lambda, js->rhs, js->w, 0, js->lo,
                     js->hi, js->findex))
         st->lcp_failures++;
     for (int i = 0; i < js->m; i++)
@@ -369,7 +369,7 @@ void dWorldStepFast1(dWorldID w, dReal stepsize, int maxiterations)
                  "stepsize must be positive and finite, got %g", (double)stepsize);
     DX_CHECK_ARG(maxiterations >= 1, return, "maxiterations must be >= 1, got %d",
                  maxiterations);
-    dxArenaReset(&w->arena);
+    dxStepMemoryBegin(w);
     w->step_count++;   // (no QuickStep warm start across it)
     wake_within_depth(w);
 
@@ -380,11 +380,11 @@ void dWorldStepFast1(dWorldID w, dReal stepsize, int maxiterations)
     st.rows_fps = dRecip(stepsize);
     st.lcp_failures = 0;
     st.js.cap = 0;
-    joint_system_reserve(&w->arena, &st.js, JOINT_ROWS);
+    joint_system_reserve(w->arena, &st.js, JOINT_ROWS);
     collect(w, &st);
     dSetZero(st.force, 12 * st.all.nj);
-    dxIslandPrepare(w, &st.all, stepsize, &st.bd);
-    st.external = DX_ARENA_ARRAY(&w->arena, dReal, 6 * (size_t)st.all.nb + 1);
+    dxIslandPrepare(w, w->arena, &st.all, stepsize, &st.bd);
+    st.external = DX_ARENA_ARRAY(w->arena, dReal, 6 * (size_t)st.all.nb + 1);
     for (int i = 0; i < st.all.nb; i++) {
         dCopyVector3(st.external + 6 * i, st.all.bodies[i]->force);
         dCopyVector3(st.external + 6 * i + 3, st.all.bodies[i]->torque);
