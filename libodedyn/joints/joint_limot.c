@@ -98,24 +98,54 @@ static dReal axis_velocity(const dxJoint *j, const dReal axis[3], int rotational
 }
 
 // A motor powering against its stop: the stop row holds the joint, and the
-// motor's force is applied directly (a fraction of it, the fudge factor, when
-// it powers away from the stop, where it would otherwise need a second row).
-static void push_against_stop(const dxLimot *lm, dxJoint *j, const dReal axis[3],
-                              const dReal ltd[3], int rotational)
+// motor's force is applied directly along the row's Jacobian (a fraction of
+// it, the fudge factor, when it powers away from the stop, where it would
+// otherwise need a second row).
+static void push_against_stop(const dxLimot *lm, dxJoint *j, const dxJointRows *rows, int row)
 {
     struct dxBody *b0 = dxJointBody(j, 0), *b1 = dxJointBody(j, 1);
+    const int s = row * rows->rowskip;
     dReal fm = lm->fmax;
     if (lm->vel > 0 || (lm->vel == 0 && lm->limit == 2)) fm = -fm;
     if ((lm->limit == 1 && lm->vel > 0) || (lm->limit == 2 && lm->vel < 0)) fm *= lm->fudge_factor;
-    dReal *acc0 = rotational ? b0->torque : b0->force;
-    dAddVectorScaledVector3(acc0, acc0, axis, -fm);
+    dAddVectorScaledVector3(b0->force, b0->force, rows->J1l + s, -fm);
+    dAddVectorScaledVector3(b0->torque, b0->torque, rows->J1a + s, -fm);
     if (b1) {
-        dReal *acc1 = rotational ? b1->torque : b1->force;
-        dAddVectorScaledVector3(acc1, acc1, axis, fm);
-        if (!rotational) {
-            dAddVectorScaledVector3(b0->torque, b0->torque, ltd, -fm);
-            dAddVectorScaledVector3(b1->torque, b1->torque, ltd, -fm);
+        dAddVectorScaledVector3(b1->force, b1->force, rows->J2l + s, -fm);
+        dAddVectorScaledVector3(b1->torque, b1->torque, rows->J2a + s, -fm);
+    }
+}
+
+void dxLimotSetRow(dxLimot *lm, dxJoint *j, dxJointRows *rows, int row, dReal velocity)
+{
+    int powered = lm->fmax > 0 && !(lm->limit && lm->lostop == lm->histop);
+    if (powered) {
+        rows->cfm[row] = lm->normal_cfm;
+        if (!lm->limit) {
+            rows->c[row] = lm->vel;
+            rows->lo[row] = -lm->fmax;
+            rows->hi[row] = lm->fmax;
+        } else {
+            push_against_stop(lm, j, rows, row);
         }
+    }
+    if (!lm->limit) return;
+
+    rows->c[row] = -rows->fps * lm->stop_erp * lm->limit_err;
+    rows->cfm[row] = lm->stop_cfm;
+    if (lm->lostop == lm->histop) {   // locked: a two-sided row
+        rows->lo[row] = -dInfinity;
+        rows->hi[row] = dInfinity;
+        return;
+    }
+    rows->lo[row] = lm->limit == 1 ? 0 : -dInfinity;
+    rows->hi[row] = lm->limit == 1 ? dInfinity : 0;
+    if (lm->bounce > 0) {
+        // Restitution: an incoming velocity v leaves as -bounce * v, if that
+        // asks more than the position correction does.
+        dReal bounced = -lm->bounce * velocity;
+        if (lm->limit == 1 && velocity < 0 && bounced > rows->c[row]) rows->c[row] = bounced;
+        if (lm->limit == 2 && velocity > 0 && bounced < rows->c[row]) rows->c[row] = bounced;
     }
 }
 
@@ -132,45 +162,15 @@ int dxLimotAddRow(dxLimot *lm, dxJoint *j, dxJointRows *rows, int row, const dRe
 
     // A linear row between two bodies acts at the midpoint of their centres,
     // so the pair of forces creates no couple (no spurious angular momentum).
-    dVector3 ltd = { 0, 0, 0, 0 };
     if (!rotational && b1) {
         dVector3 half;
         dSubtractVectors3(half, b1->pos, b0->pos);
         dScaleVector3(half, REAL(0.5));
-        dCalcVectorCross3(ltd, half, axis);
-        dCopyVector3(rows->J1a + s, ltd);
-        dCopyVector3(rows->J2a + s, ltd);
+        dCalcVectorCross3(rows->J1a + s, half, axis);
+        dCopyVector3(rows->J2a + s, rows->J1a + s);
     }
 
-    int powered = lm->fmax > 0 && !(lm->limit && lm->lostop == lm->histop);
-    if (powered) {
-        rows->cfm[row] = lm->normal_cfm;
-        if (!lm->limit) {
-            rows->c[row] = lm->vel;
-            rows->lo[row] = -lm->fmax;
-            rows->hi[row] = lm->fmax;
-        } else {
-            push_against_stop(lm, j, axis, ltd, rotational);
-        }
-    }
-    if (!lm->limit) return 1;
-
-    rows->c[row] = -rows->fps * lm->stop_erp * lm->limit_err;
-    rows->cfm[row] = lm->stop_cfm;
-    if (lm->lostop == lm->histop) {   // locked: a two-sided row
-        rows->lo[row] = -dInfinity;
-        rows->hi[row] = dInfinity;
-        return 1;
-    }
-    rows->lo[row] = lm->limit == 1 ? 0 : -dInfinity;
-    rows->hi[row] = lm->limit == 1 ? dInfinity : 0;
-    if (lm->bounce > 0) {
-        // Restitution: an incoming velocity v leaves as -bounce * v, if that
-        // asks more than the position correction does.
-        dReal v = axis_velocity(j, axis, rotational);
-        dReal bounced = -lm->bounce * v;
-        if (lm->limit == 1 && v < 0 && bounced > rows->c[row]) rows->c[row] = bounced;
-        if (lm->limit == 2 && v > 0 && bounced < rows->c[row]) rows->c[row] = bounced;
-    }
+    dxLimotSetRow(lm, j, rows, row,
+                  lm->limit && lm->bounce > 0 ? axis_velocity(j, axis, rotational) : 0);
     return 1;
 }

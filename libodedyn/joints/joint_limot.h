@@ -35,6 +35,11 @@ int dxLimotActive(const dxLimot *lm);
 // rotational selects a torque (else a force) row. Returns rows added (0/1).
 int dxLimotAddRow(dxLimot *lm, dxJoint *j, dxJointRows *rows, int row, const dReal axis[3],
                   int rotational);
+// The rest of such a row once its Jacobian is written (for rows that act
+// elsewhere than dxLimotAddRow puts them): motor bounds and velocity, or the
+// stop's bounds, correction and bounce (velocity: the row's, J v), and a motor
+// powering against its stop pushing along the row's Jacobian.
+void dxLimotSetRow(dxLimot *lm, dxJoint *j, dxJointRows *rows, int row, dReal velocity);
 
 // Split a parameter number into group (0..2) and parameter in the group;
 // reports and returns 0 if the group exceeds max_groups or the number is not

@@ -160,25 +160,6 @@ static void pu_count_rows(dxJoint *j, dxJointRowCount *count)
     if (dxLimotActive(&pu->limot2)) count->m++;
 }
 
-// A motor powering against its stop on the slide row: the motor's force
-// (signed as ODE does, scaled by the fudge factor when powering away from the
-// stop) applied along the row's Jacobian directly.
-static void push_slide_against_stop(const dxLimot *lm, dxJoint *j, const dxJointRows *rows,
-                                    int row)
-{
-    struct dxBody *b0 = dxJointBody(j, 0), *b1 = dxJointBody(j, 1);
-    const int s = row * rows->rowskip;
-    dReal fm = lm->fmax;
-    if (lm->vel > 0 || (lm->vel == 0 && lm->limit == 2)) fm = -fm;
-    if ((lm->limit == 1 && lm->vel > 0) || (lm->limit == 2 && lm->vel < 0)) fm *= lm->fudge_factor;
-    dAddVectorScaledVector3(b0->force, b0->force, rows->J1l + s, -fm);
-    dAddVectorScaledVector3(b0->torque, b0->torque, rows->J1a + s, -fm);
-    if (b1) {
-        dAddVectorScaledVector3(b1->force, b1->force, rows->J2l + s, -fm);
-        dAddVectorScaledVector3(b1->torque, b1->torque, rows->J2a + s, -fm);
-    }
-}
-
 // The slide's limit/motor row at `row`, acting at the anchors: along axis
 // (world) on body 0's anchor (pt1 from its centre) against body 1's (pt2).
 // Returns the rows added (0 or 1).
@@ -194,36 +175,13 @@ static int slide_limot_row(dxLimot *lm, dxJoint *j, dxJointRows *rows, int row,
         dCopyNegatedVector3(rows->J2l + s, axis);
         dCalcVectorCross3(rows->J2a + s, pt2, rows->J2l + s);
     }
-    const int powered = lm->fmax > 0 && !(lm->limit && lm->lostop == lm->histop);
-    if (powered) {
-        rows->cfm[row] = lm->normal_cfm;
-        if (!lm->limit) {
-            rows->c[row] = lm->vel;
-            rows->lo[row] = -lm->fmax;
-            rows->hi[row] = lm->fmax;
-        } else {
-            push_slide_against_stop(lm, j, rows, row);
-        }
-    }
-    if (!lm->limit) return 1;
-    rows->c[row] = -rows->fps * lm->stop_erp * lm->limit_err;
-    rows->cfm[row] = lm->stop_cfm;
-    if (lm->lostop == lm->histop) {
-        rows->lo[row] = -dInfinity;
-        rows->hi[row] = dInfinity;
-        return 1;
-    }
-    rows->lo[row] = lm->limit == 1 ? 0 : -dInfinity;
-    rows->hi[row] = lm->limit == 1 ? dInfinity : 0;
-    if (lm->bounce > 0) {
-        // The row's velocity J v; an incoming one leaves as -bounce * v.
-        dReal v = dCalcVectorDot3(b0->lvel, rows->J1l + s) + dCalcVectorDot3(b0->avel, rows->J1a + s);
+    dReal v = 0;   // the row's velocity J v, for a bounce
+    if (lm->limit && lm->bounce > 0) {
+        v = dCalcVectorDot3(b0->lvel, rows->J1l + s) + dCalcVectorDot3(b0->avel, rows->J1a + s);
         if (b1)
             v += dCalcVectorDot3(b1->lvel, rows->J2l + s) + dCalcVectorDot3(b1->avel, rows->J2a + s);
-        const dReal bounced = -lm->bounce * v;
-        if (lm->limit == 1 && v < 0 && bounced > rows->c[row]) rows->c[row] = bounced;
-        if (lm->limit == 2 && v > 0 && bounced < rows->c[row]) rows->c[row] = bounced;
     }
+    dxLimotSetRow(lm, j, rows, row, v);
     return 1;
 }
 
