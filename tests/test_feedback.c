@@ -33,8 +33,8 @@ static int powered_into_stop(stepper step)
     dJointSetFeedback(s, &fb);
     for (int i = 0; i < 100; i++) {
         step(w, REAL(0.002));
-        CHECK_NEAR(dJointGetSliderPosition(s), 0, TOL(1e-6, 2e-4));
-        CHECK_NEAR(fb.f1[0], 4000, TOL(1e-3, 0.5));
+        CHECK_NEAR(dJointGetSliderPosition(s), 0, TOL(1e-6, 1e-3));
+        CHECK_NEAR(fb.f1[0], 4000, TOL(1e-3, 10));   // single: CFM 1e-5 softens the stop
     }
     dWorldDestroy(w);
     return 0;

@@ -260,6 +260,7 @@ static int test_same_contacts_as_a_geometry_transform(void)
     dGeomSetRotation(held, oR);
     dGeomID transform = dCreateGeomTransform(0);
     dGeomTransformSetInfo(transform, 1);   // contacts name the held geom
+    dGeomTransformSetCleanup(transform, 1);   // and it goes with the transform
     dGeomTransformSetGeom(transform, held);
     dGeomSetBody(transform, b);
 
@@ -301,6 +302,7 @@ static int test_offsets_and_transforms_on_one_body(void)
     dGeomID held = dCreateSphere(0, REAL(0.5));
     dGeomSetPosition(held, 0, 0, 1);
     dGeomTransformSetGeom(transform, held);
+    dGeomTransformSetCleanup(transform, 1);
     dGeomID all[4] = { plain, off1, off2, transform };
     for (int i = 0; i < 4; i++) dGeomSetBody(all[i], b);
     dGeomSetOffsetPosition(off1, 1, 0, 0);
