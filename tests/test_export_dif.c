@@ -72,7 +72,8 @@ static double deviation(const char *from, const char *key, int k, const dReal *e
 }
 
 #define VALUES_TOL TOL(1e-12, 2e-5)
-#define CHECK_VALUES(from, key, k, expect, n) CHECK_NEAR(deviation(from, key, k, expect, n), 0, VALUES_TOL)
+#define CHECK_VALUES(from, key, k, expect, n) \
+    CHECK_NEAR(deviation(from, key, k, expect, n), 0, VALUES_TOL)
 
 static dBodyID make_body(dWorldID w, dReal x, dReal y, dReal z)
 {
@@ -418,7 +419,8 @@ static int test_contact_is_written_with_its_surface(void)
     // Newest first: the Approx1_2 contact, the full one, the plain one.
     CHECK(strstr(text, "joint[0] = dynamics.contact_joint {\n\tworld = world,\n"
                        "\tbody = {body[0]}\n\tpos = {1,2,3},\n\tnormal = {0,0,1},\n"
-                       "\tdepth = 0.125,\n\tmu = 0.5,\n\tfriction_approximation = 2,\n}\n") != NULL);
+                       "\tdepth = 0.125,\n\tmu = 0.5,\n\tfriction_approximation = 2,\n}\n") !=
+          NULL);
     CHECK(strstr(text, "\tmu = 0.5,\n\tmu2 = 0.25,\n\tbounce = 0.75,\n\tbounce_vel = 0.1,\n"
                        "\tsoft_ERP = 0.2,\n\tsoft_CFM = 0.001,\n\tmotion1 = 1.5,\n"
                        "\tmotion2 = -2.5,\n\tslip1 = 0.01,\n\tslip2 = 0.02,\n"

@@ -447,7 +447,7 @@ static void print_piston(const dxDifPrinter *p, const joint_view *v)
 // attachment), and a body-2 axis without b1 as a body-1 one; the axis is
 // kept in that frame. Where this library fixes the axis elsewhere (rel 1
 // attached as (0, b), rel 2 attached as (b, 0): in the world), it is
-// written in b's frame now, ODE's value while b has not turned since.
+// written in b's frame now: ODE's value until b turns after the axis is set.
 static void print_lmotor(const dxDifPrinter *p, const joint_view *v)
 {
     int rel[3];

@@ -204,7 +204,8 @@ static void build_scene(dWorldID w, dSpaceID space)
     dWorldSetAutoDisableAverageSamplesCount(w, 3);
 
     dBodyID b[NUM_BODIES];
-    for (int i = 0; i < NUM_BODIES; i++) b[i] = make_body(w, 0.5 * i, 0.25 * (i % 3), 1 + 0.1 * i, 0.2 * i);
+    for (int i = 0; i < NUM_BODIES; i++)
+        b[i] = make_body(w, 0.5 * i, 0.25 * (i % 3), 1 + 0.1 * i, 0.2 * i);
     dBodySetFiniteRotationMode(b[1], 1);
     dBodySetFiniteRotationAxis(b[1], 0.6, 0.8, 0.5);
     dBodyDisable(b[2]);
