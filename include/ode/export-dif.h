@@ -14,9 +14,8 @@ extern "C" {
 /** Write world w to file as DIF text. world_name prefixes every top-level
  *  name ("" gives `world`, `body[i]`, `joint[i]`). Numbers have 15
  *  significant digits (7 with dSINGLE). Geoms are written when the collision
- *  library attached them; a contact joint's surface is not written (see
- *  docs/design.md). A NULL or destroyed world, or a NULL file or name, is
- *  reported through the debug handler and nothing is written. */
+ *  library attached them. A NULL or destroyed world, or a NULL file or name,
+ *  is reported through the debug handler and nothing is written. */
 ODE_API void dWorldExportDIF(dWorldID w, FILE *file, const char *world_name);
 
 #ifdef __cplusplus

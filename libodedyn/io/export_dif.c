@@ -7,22 +7,27 @@
 // "nonzero" only when all three components are, the fixed joint's qrel is
 // written with three components, category and collide bits have no comma.
 //
-// Joints are read through their public getters only. ODE writes the values
-// a joint keeps in its bodies' frames (anchors, axes, the rest orientation
-// qrel, the slider offset); they are recovered here from the getters' world
-// values, the bodies' poses and the current angle or position. That gives the
-// kept values exactly while the joint holds; when it is violated (error the
-// next step would correct), the values describe the nearest pose that holds.
-// A joint attached as (0, b) keeps b as its first body, and ODE writes it in
-// that order: its anchors, axes, angles and axis relativities are mapped from
-// the getters' user order to that order.
+// Joints are read through their public getters where these say enough. ODE
+// writes the values a joint keeps in its bodies' frames (anchors, axes, the
+// rest orientations qrel, the slider and PR offsets); they are recovered here
+// from the getters' world values, the bodies' poses and the current angle or
+// position. That gives the kept values exactly while the joint holds; when it
+// is violated (error the next step would correct), the values describe the
+// nearest pose that holds. A joint attached as (0, b) keeps b as its first
+// body, and ODE writes it in that order: its anchors, axes, angles and axis
+// relativities are mapped from the getters' user order to that order. What
+// no getter tells, the joint's own file gives through an internal accessor
+// (joint_kept.h): the contact's dContact, the linear motor's axis
+// relativities, and the rest orientations of the PR, PU and piston joints
+// (a quaternion's sign does not follow from the angle).
 //
-// Each joint type has one printer in joint_printers; a type without one
-// (the contact joint, whose surface has no getter, and the ODE 0.16 types
-// not in this library yet) is written as ODE writes a type it does not
-// know: its name, its bodies, and the line `unknown joint`.
+// Each joint type has one printer in joint_printers; a type without one (the
+// null joint, and the ODE 0.16 types ODE has no printer for) is written as
+// ODE writes a type it does not know: its name, its bodies, and the line
+// `unknown joint`.
 
 #include "dif_print.h"
+#include "joint_kept.h"
 #include "objects_internal.h"
 
 #include <ode/export-dif.h>
@@ -94,6 +99,8 @@ static void relative_quaternion(const joint_view *v, dQuaternion q)
 // The rest orientation of a hinge-like axis. ODE measures the angle from the
 // relative orientation now and the rest one qrel as now conj(qrel) =
 // rot(axis, -angle) (axis in b0's frame), hence qrel = rot(axis, angle) now.
+// The sign of the kept qrel does not follow (q and -q give the same angle):
+// this gives the one of the relative quaternion now.
 static void rest_quaternion(const dQuaternion now, const dVector3 axis, dReal angle,
                             dQuaternion qrel)
 {
@@ -329,6 +336,166 @@ static void print_amotor(const dxDifPrinter *p, const joint_view *v)
     dxDifPrintReal(p, "angle3", num > 2 ? dJointGetAMotorAngle(v->j, 2) : 0);
 }
 
+// The PR joint keeps the anchor in b1's frame (anchor2), the rotation axis
+// in both bodies' frames, the slide axis in b0's, the rest orientation qrel
+// and the offset: the anchor in b0's frame at position 0. The position is
+// axis . (p0 + R0 offset - anchor), so offset = R0^T (anchor - p0 +
+// position axis).
+static void print_pr(const dxDifPrinter *p, const joint_view *v)
+{
+    dVector3 anchor, axp, axr, a2, axr1, axr2, axp1, d, offset;
+    dJointGetPRAnchor(v->j, anchor);
+    dJointGetPRAxis1(v->j, axp);
+    dJointGetPRAxis2(v->j, axr);
+    body_point(v->b1, anchor, a2);
+    body_direction(v->b0, axr, axr1);
+    body_direction(v->b1, axr, axr2);
+    body_direction(v->b0, axp, axp1);
+    // Attached as (0, b), the position is reported with the opposite sign.
+    dReal pos = dJointGetPRPosition(v->j);
+    if (v->reversed) pos = -pos;
+    dAddScaledVectors3(d, anchor, axp, 1, pos);
+    body_point(v->b0, d, offset);
+    dQuaternion qrel;
+    dxJointPRRest(v->j, qrel);
+    dxDifPrintReals(p, "anchor2", a2, 3);
+    dxDifPrintReals(p, "axisR1", axr1, 3);
+    dxDifPrintReals(p, "axisR2", axr2, 3);
+    dxDifPrintReals(p, "axisP1", axp1, 3);
+    dxDifPrintReals(p, "qrel", qrel, 4);
+    dxDifPrintReals(p, "offset", offset, 3);
+    print_limot(p, v, dJointGetPRParam, 0, 1);
+    print_limot(p, v, dJointGetPRParam, 1, 2);
+}
+
+// ODE keeps a PU joint's axis P in b0's frame also when the joint was
+// attached as (0, b), at b's orientation when the axis was set; this library
+// keeps that axis in the world (axp). b's orientation q0 then is recovered
+// from the kept rest orientations, taken as set with the axis: qrel2 is
+// the cross (axis 2, axis 1) in the world then, its second column axis 1
+// then, which with axis 2 (w2, fixed in the world) gives the cross (axis 1,
+// axis 2), and qrel1 = conj(q0) cross.
+static void pu_reversed_axis_p(const dVector3 w2, const dQuaternion qrel1,
+                               const dQuaternion qrel2, const dVector3 axp, dVector3 out)
+{
+    dMatrix3 R;
+    dQtoR(qrel2, R);
+    const dVector3 ax1 = { R[1], R[5], R[9], 0 };
+    dRFrom2Axes(R, ax1[0], ax1[1], ax1[2], w2[0], w2[1], w2[2]);
+    dQuaternion cross, q0;
+    dRtoQ(R, cross);
+    dQMultiply2(q0, cross, qrel1);
+    dQtoR(q0, R);
+    dMultiply1_331(out, R, axp);
+}
+
+// The PU joint keeps what the universal joint keeps, with anchor1 (b0's) off
+// anchor2 along axis P by the position, and axis P in b0's frame.
+static void print_pu(const dxDifPrinter *p, const joint_view *v)
+{
+    dVector3 an1, an2, axp, a1, a2, w1, w2, ax1, ax2, axp1;
+    dJointGetPUAnchor(v->j, an2);
+    dJointGetPUAxisP(v->j, axp);
+    dReal pos = dJointGetPUPosition(v->j);
+    if (v->reversed) pos = -pos;
+    dAddScaledVectors3(an1, an2, axp, 1, pos);
+    body_point(v->b0, an1, a1);
+    body_point(v->b1, an2, a2);
+    // Attached as (0, b), the getters swap the axes into the user's order.
+    dJointGetPUAxis1(v->j, v->reversed ? w2 : w1);
+    dJointGetPUAxis2(v->j, v->reversed ? w1 : w2);
+    body_direction(v->b0, w1, ax1);
+    body_direction(v->b1, w2, ax2);
+    dQuaternion qrel1, qrel2;
+    dxJointPURest(v->j, qrel1, qrel2);
+    if (v->reversed) pu_reversed_axis_p(w2, qrel1, qrel2, axp, axp1);
+    else body_direction(v->b0, axp, axp1);
+    dxDifPrintReals(p, "anchor1", a1, 3);
+    dxDifPrintReals(p, "anchor2", a2, 3);
+    dxDifPrintReals(p, "axis1", ax1, 3);
+    dxDifPrintReals(p, "axis2", ax2, 3);
+    dxDifPrintReals(p, "axisP", axp1, 3);
+    dxDifPrintReals(p, "qrel1", qrel1, 4);
+    dxDifPrintReals(p, "qrel2", qrel2, 4);
+    print_limot(p, v, dJointGetPUParam, 0, 1);
+    print_limot(p, v, dJointGetPUParam, 1, 2);
+    print_limot(p, v, dJointGetPUParam, 2, 3);
+}
+
+// The piston keeps an anchor and the axis in each body's frame, and the rest
+// orientation.
+static void print_piston(const dxDifPrinter *p, const joint_view *v)
+{
+    dVector3 a1, a2, axis, ax1, ax2;
+    kept_anchors(v, dJointGetPistonAnchor, dJointGetPistonAnchor2, a1, a2);
+    dJointGetPistonAxis(v->j, axis);
+    body_direction(v->b0, axis, ax1);
+    body_direction(v->b1, axis, ax2);
+    dQuaternion qrel;
+    dxJointPistonRest(v->j, qrel);
+    dxDifPrintReals(p, "anchor1", a1, 3);
+    dxDifPrintReals(p, "anchor2", a2, 3);
+    dxDifPrintReals(p, "axis1", ax1, 3);
+    dxDifPrintReals(p, "axis2", ax2, 3);
+    dxDifPrintReals(p, "qrel", qrel, 4);
+    print_limot(p, v, dJointGetPistonParam, 0, 1);
+    print_limot(p, v, dJointGetPistonParam, 1, 2);
+}
+
+// The linear motor's rel has no getter (dxJointLMotorAxisRel). ODE keeps rel
+// as given, body 1 and 2 being the kept b0 and b1 (it ignores a (0, b)
+// attachment), and a body-2 axis without b1 as a body-1 one; the axis is
+// kept in that frame. Where this library fixes the axis elsewhere (rel 1
+// attached as (0, b), rel 2 attached as (b, 0): in the world), it is
+// written in b's frame now: ODE's value until b turns after the axis is set.
+static void print_lmotor(const dxDifPrinter *p, const joint_view *v)
+{
+    int rel[3];
+    dVector3 axis[3];
+    for (int i = 0; i < 3; i++) {
+        dVector3 w;
+        rel[i] = dxJointLMotorAxisRel(v->j, i);
+        if (rel[i] == 2 && !v->b1) rel[i] = 1;
+        dJointGetLMotorAxis(v->j, i, w);
+        body_direction(rel[i] == 1 ? v->b0 : rel[i] == 2 ? v->b1 : NULL, w, axis[i]);
+    }
+    dxDifPrintInt(p, "num", dJointGetLMotorNumAxes(v->j));
+    dxDifIndent(p);
+    fprintf(p->file, "rel = {%d,%d,%d},\n", rel[0], rel[1], rel[2]);
+    dxDifPrintReals(p, "axis1", axis[0], 3);
+    dxDifPrintReals(p, "axis2", axis[1], 3);
+    dxDifPrintReals(p, "axis3", axis[2], 3);
+    for (int i = 0; i < 3; i++) print_limot(p, v, dJointGetLMotorParam, i, i + 1);
+}
+
+// The contact joint writes the dContact it was made from: its point, the
+// surface's coefficients its mode uses, the friction pyramid bits as one
+// number (1: direction 1, 2: direction 2) and fdir1.
+static void print_contact(const dxDifPrinter *p, const joint_view *v)
+{
+    const dContact *c = dxJointContactGet(v->j);
+    const dSurfaceParameters *s = &c->surface;
+    const int mode = s->mode;
+    dxDifPrintReals(p, "pos", c->geom.pos, 3);
+    dxDifPrintReals(p, "normal", c->geom.normal, 3);
+    dxDifPrintReal(p, "depth", c->geom.depth);
+    dxDifPrintReal(p, "mu", s->mu);
+    if (mode & dContactMu2) dxDifPrintReal(p, "mu2", s->mu2);
+    if (mode & dContactBounce) {
+        dxDifPrintReal(p, "bounce", s->bounce);
+        dxDifPrintReal(p, "bounce_vel", s->bounce_vel);
+    }
+    if (mode & dContactSoftERP) dxDifPrintReal(p, "soft_ERP", s->soft_erp);
+    if (mode & dContactSoftCFM) dxDifPrintReal(p, "soft_CFM", s->soft_cfm);
+    if (mode & dContactMotion1) dxDifPrintReal(p, "motion1", s->motion1);
+    if (mode & dContactMotion2) dxDifPrintReal(p, "motion2", s->motion2);
+    if (mode & dContactSlip1) dxDifPrintReal(p, "slip1", s->slip1);
+    if (mode & dContactSlip2) dxDifPrintReal(p, "slip2", s->slip2);
+    const int approx = ((mode & dContactApprox1_1) ? 1 : 0) | ((mode & dContactApprox1_2) ? 2 : 0);
+    if (approx) dxDifPrintInt(p, "friction_approximation", approx);
+    if (mode & dContactFDir1) dxDifPrintReals(p, "fdir1", c->fdir1, 3);
+}
+
 // DIF names (as ODE writes them) and printers, by dJointType. To add a
 // type: write its printer from its getters and put it here.
 static const struct {
@@ -338,22 +505,18 @@ static const struct {
     [dJointTypeBall] = { "ball", print_ball },
     [dJointTypeHinge] = { "hinge", print_hinge },
     [dJointTypeSlider] = { "slider", print_slider },
-    // The contact's dContact has no getter; ODE writes pos, normal, depth
-    // and the surface here.
-    [dJointTypeContact] = { "contact", print_unknown },
+    [dJointTypeContact] = { "contact", print_contact },
     [dJointTypeUniversal] = { "universal", print_universal },
     [dJointTypeHinge2] = { "ODE_hinge2", print_hinge2 },
     [dJointTypeFixed] = { "fixed", print_fixed },
     [dJointTypeNull] = { "null", print_unknown },   // as ODE writes it
     [dJointTypeAMotor] = { "ODE_angular_motor", print_amotor },
-    // ODE 0.16 types, written as an unknown type until this library has
-    // them: ODE names LMotor, PR, PU and piston (and writes their anchors,
-    // axes and limits); plane-2D, DBall, DHinge and transmission it calls
-    // "unknown" too.
-    [dJointTypeLMotor] = { "ODE_linear_motor", print_unknown },
-    [dJointTypePR] = { "PR", print_unknown },
-    [dJointTypePU] = { "PU", print_unknown },
-    [dJointTypePiston] = { "piston", print_unknown },
+    [dJointTypeLMotor] = { "ODE_linear_motor", print_lmotor },
+    [dJointTypePR] = { "PR", print_pr },
+    [dJointTypePU] = { "PU", print_pu },
+    [dJointTypePiston] = { "piston", print_piston },
+    // ODE 0.16 has no printer and no name for plane-2D, DBall, DHinge and
+    // transmission: it writes them as "unknown" types.
 };
 
 static void print_joint(const dxDifPrinter *file_printer, const char *prefix, int num,

@@ -40,6 +40,7 @@
 // sanitise_surface). A negative depth (the shapes do not touch yet) is
 // accepted and gives no correction, like depth 0.
 
+#include "joint_kept.h"
 #include "joint_geometry.h"
 
 // The rows a contact contributes, by kind (bit set = row present).
@@ -274,6 +275,12 @@ int dxJointContactWarmInfo(const dxJoint *j, dVector3 point)
     if (j->cls->type != dJointTypeContact || c->inert) return -1;
     dCopyVector3(point, c->contact.geom.pos);
     return (int)(c->rows_present & (ROW_T1 | ROW_T2));
+}
+
+const dContact *dxJointContactGet(const dxJoint *j)
+{
+    if (j->cls->type != dJointTypeContact) return NULL;
+    return &((const dxJointContact *)j)->contact;
 }
 
 static const dxJointClass contact_class = {

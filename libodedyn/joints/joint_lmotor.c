@@ -15,6 +15,7 @@
 // +vel; this library fixes it in the world and moves b at -vel, as body 2.)
 
 #include "joint_geometry.h"
+#include "joint_kept.h"
 
 typedef struct dxJointLMotor {
     dxJoint base;
@@ -129,6 +130,12 @@ void dJointGetLMotorAxis(dJointID j, int anum, dVector3 result)
     CHECK_ANUM(anum, return);
     DX_CHECK_ARG(result != NULL, return, "result is NULL");
     world_axis((dxJointLMotor *)j, anum, result);
+}
+
+int dxJointLMotorAxisRel(const dxJoint *j, int anum)
+{
+    if (j->cls->type != dJointTypeLMotor || anum < 0 || anum > 2) return 0;
+    return ((const dxJointLMotor *)j)->rel[anum];
 }
 
 void dJointSetLMotorParam(dJointID j, int parameter, dReal value)

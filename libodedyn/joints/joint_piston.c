@@ -12,6 +12,7 @@
 // world), as ODE's do.
 
 #include "joint_geometry.h"
+#include "joint_kept.h"
 #include "joint_slide.h"
 
 typedef struct dxJointPiston {
@@ -93,6 +94,11 @@ static void piston_attached(dxJoint *j)
     dxJointSetAnchors(j, anchor[0], anchor[1], anchor[2], p->anchor1, p->anchor2);
     dxJointSetAxes(j, "dJointAttach", axis[0], axis[1], axis[2], p->axis1, p->axis2);
     dxJointRelativeQuaternion(j, p->qrel);
+}
+
+void dxJointPistonRest(const dxJoint *j, dQuaternion qrel)
+{
+    if (j->cls->type == dJointTypePiston) dCopyVector4(qrel, ((const dxJointPiston *)j)->qrel);
 }
 
 static const dxJointClass piston_class = {

@@ -13,6 +13,7 @@
 // stored sense (body b against the world) in that case, as ODE's do.
 
 #include "joint_geometry.h"
+#include "joint_kept.h"
 #include "joint_slide.h"
 
 typedef struct dxJointPR {
@@ -99,6 +100,11 @@ static void pr_attached(dxJoint *j)
     dxJointSetAxes(j, "dJointAttach", axp[0], axp[1], axp[2], pr->axis_p, NULL);
     dxJointSetAxes(j, "dJointAttach", axr[0], axr[1], axr[2], pr->axis_r1, pr->axis_r2);
     dxJointRelativeQuaternion(j, pr->qrel);
+}
+
+void dxJointPRRest(const dxJoint *j, dQuaternion qrel)
+{
+    if (j->cls->type == dJointTypePR) dCopyVector4(qrel, ((const dxJointPR *)j)->qrel);
 }
 
 static const dxJointClass pr_class = {

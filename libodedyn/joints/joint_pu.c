@@ -16,6 +16,7 @@
 // the constraint rows, which agree while b is not turned).
 
 #include "joint_geometry.h"
+#include "joint_kept.h"
 #include "joint_slide.h"
 
 typedef struct dxJointPU {
@@ -263,6 +264,13 @@ static void pu_attached(dxJoint *j)
     dJointGetPUAxis3(j, ax[2]);
     dxJointSetAnchors(j, anchor[0], anchor[1], anchor[2], pu->anchor1, pu->anchor2);
     for (int k = 0; k < 3; k++) set_user_axis(j, "dJointAttach", k, ax[k][0], ax[k][1], ax[k][2]);
+}
+
+void dxJointPURest(const dxJoint *j, dQuaternion qrel1, dQuaternion qrel2)
+{
+    if (j->cls->type != dJointTypePU) return;
+    dCopyVector4(qrel1, ((const dxJointPU *)j)->qrel1);
+    dCopyVector4(qrel2, ((const dxJointPU *)j)->qrel2);
 }
 
 static const dxJointClass pu_class = {

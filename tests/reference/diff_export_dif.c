@@ -2,9 +2,9 @@
 //
 // diff_export_dif.c -- dWorldExportDIF on one scene: a world with bodies of
 // every flag, geoms of every class ODE writes, and every joint type of both
-// libraries except the contact (whose surface this library cannot read
-// back), each moved away from its rest pose along its own freedoms so that
-// angles and positions are not zero, and joints attached as (0, b). The
+// libraries, each moved away from its rest pose along its own freedoms so
+// that angles and positions are not zero, attached to two bodies, to one
+// (b, 0) and as (0, b), and contact joints with several surface modes. The
 // DIF text is turned into lines for compare.py: one per text line, named by
 // the line with its numbers taken out (so the layout must match exactly),
 // its numbers as the values.
@@ -14,6 +14,8 @@
 #include <ctype.h>
 #include <stdlib.h>
 #include <string.h>
+
+#define NUM_BODIES 36
 
 // Turn a rotation about a world axis through a world point into a body move.
 static void turn_body(dBodyID b, const dReal *point, const dReal *axis, dReal angle)
@@ -59,6 +61,137 @@ static void set_limot(dJointID j, void (*set)(dJointID, int, dReal), int group, 
     set(j, g + dParamStopCFM, 2e-5 * k);
 }
 
+// Move body b by d along world direction dir.
+static void slide_body(dBodyID b, const dReal *dir, dReal d)
+{
+    const dReal *p = dBodyGetPosition(b);
+    dBodySetPosition(b, p[0] + d * dir[0], p[1] + d * dir[1], p[2] + d * dir[2]);
+}
+
+// A PR joint attached as (b1, b2): body 1 slid along the slide axis, and the
+// body turning about the rotation axis at the anchor (the one attached
+// second, or b1 alone) turned.
+static void add_pr(dWorldID w, dBodyID b1, dBodyID b2, dReal x, dReal k)
+{
+    dJointID j = dJointCreatePR(w, 0);
+    dJointAttach(j, b1, b2);
+    dJointSetPRAnchor(j, x, 0.4, 3.1);
+    dJointSetPRAxis1(j, 0, 0.6, 0.8);
+    dJointSetPRAxis2(j, 1, 0, 0);
+    set_limot(j, dJointSetPRParam, 0, fabs(k));
+    set_limot(j, dJointSetPRParam, 1, 2 * fabs(k));
+    dVector3 a, axp, axr;
+    dJointGetPRAnchor(j, a);
+    dJointGetPRAxis1(j, axp);
+    dJointGetPRAxis2(j, axr);
+    dBodyID slider = b1 ? b1 : b2;
+    slide_body(slider, axp, 0.2 * k);
+    turn_body(b1 && b2 ? b2 : slider, a, axr, 0.3 * k);
+}
+
+// A PU joint attached as (b1, b2), turned about both axes at the anchor, then
+// slid along axis P (taken before the turns: attached as (0, b), the two
+// libraries report axis P differently once b turned).
+static void add_pu(dWorldID w, dBodyID b1, dBodyID b2, dReal x, dReal k)
+{
+    dJointID j = dJointCreatePU(w, 0);
+    dJointAttach(j, b1, b2);
+    dJointSetPUAnchor(j, x, 0.2, 2.9);
+    dJointSetPUAxis1(j, 1, 0, 0);
+    dJointSetPUAxis2(j, 0, 0.6, 0.8);
+    dJointSetPUAxisP(j, 0.8, 0, 0.6);
+    set_limot(j, dJointSetPUParam, 0, fabs(k));
+    set_limot(j, dJointSetPUParam, 1, 2 * fabs(k));
+    set_limot(j, dJointSetPUParam, 2, 3 * fabs(k));
+    dVector3 a, ax1, ax2, axp;
+    dJointGetPUAnchor(j, a);
+    dJointGetPUAxis1(j, ax1);
+    dJointGetPUAxis2(j, ax2);
+    dJointGetPUAxisP(j, axp);
+    // Axis 1 is fixed to body 1, axis 2 to body 2: turn each body about its own.
+    if (b2) turn_body(b2, a, ax2, -0.25 * k);
+    else turn_body(b1, a, ax2, -0.25 * k);
+    if (b1) {
+        dJointGetPUAxis1(j, ax1);
+        turn_body(b1, a, ax1, 0.15 * k);
+        dJointGetPUAxisP(j, axp);
+        slide_body(b1, axp, 0.35 * k);
+    } else {
+        dJointGetPUAxis1(j, ax1);
+        turn_body(b2, a, ax1, 0.15 * k);
+        slide_body(b2, axp, -0.35 * k);
+    }
+}
+
+// A piston attached as (b1, b2): each body moved along and about the axis.
+static void add_piston(dWorldID w, dBodyID b1, dBodyID b2, dReal x, dReal k)
+{
+    dJointID j = dJointCreatePiston(w, 0);
+    dJointAttach(j, b1, b2);
+    dJointSetPistonAnchor(j, x, 0.1, 2.6);
+    dJointSetPistonAxis(j, 0.48, 0.6, 0.64);
+    set_limot(j, dJointSetPistonParam, 0, fabs(k));
+    set_limot(j, dJointSetPistonParam, 1, 2 * fabs(k));
+    dVector3 a, ax;
+    dJointGetPistonAnchor(j, a);
+    dJointGetPistonAxis(j, ax);
+    if (b1) {
+        turn_body(b1, a, ax, 0.4 * k);
+        slide_body(b1, ax, 0.3 * k);
+    }
+    if (b2) {
+        turn_body(b2, a, ax, -0.2 * k);
+        slide_body(b2, ax, -0.1 * k);
+    }
+}
+
+// A linear motor attached as (b1, b2) with its three axes in the frames rel
+// names (set after the bodies' last moves: ODE and this library fix a rel 1
+// axis of a (0, b) motor, and a rel 2 axis of a (b, 0) one, to different
+// frames, which agree until b turns).
+static void add_lmotor(dWorldID w, dBodyID b1, dBodyID b2, int rel0, int rel1, int rel2, dReal k)
+{
+    dJointID j = dJointCreateLMotor(w, 0);
+    dJointAttach(j, b1, b2);
+    dJointSetLMotorNumAxes(j, rel2 ? 3 : 2);
+    dJointSetLMotorAxis(j, 0, rel0, 1, 0.5, 0);
+    dJointSetLMotorAxis(j, 1, rel1, 0, 1, 2);
+    dJointSetLMotorAxis(j, 2, rel2, 0.3, -0.4, 0.5);
+    for (int i = 0; i < 3; i++) set_limot(j, dJointSetLMotorParam, i, k + i);
+}
+
+// A contact between b1 and b2 with surface mode `mode`, every coefficient set.
+static void add_contact(dWorldID w, dBodyID b1, dBodyID b2, int mode, dReal k)
+{
+    dContact c;
+    memset(&c, 0, sizeof c);
+    c.geom.pos[0] = k;
+    c.geom.pos[1] = -0.5;
+    c.geom.pos[2] = 0.25 * k;
+    c.geom.normal[0] = 0.6;
+    c.geom.normal[2] = 0.8;
+    c.geom.depth = 0.01 * k;
+    c.surface.mode = mode;
+    c.surface.mu = k == 4 ? dInfinity : 0.5 * k;
+    c.surface.mu2 = 0.25 * k;
+    c.surface.rho = 0.01;
+    c.surface.rho2 = 0.02;
+    c.surface.rhoN = 0.03;
+    c.surface.bounce = 0.1 * k;
+    c.surface.bounce_vel = 0.05;
+    c.surface.soft_erp = 0.3;
+    c.surface.soft_cfm = 1e-4 * k;
+    c.surface.motion1 = 0.5;
+    c.surface.motion2 = -0.5 * k;
+    c.surface.motionN = 0.125;
+    c.surface.slip1 = 0.001 * k;
+    c.surface.slip2 = 0.002;
+    c.fdir1[0] = 0;
+    c.fdir1[1] = 1;
+    c.fdir1[2] = 0;
+    dJointAttach(dJointCreateContact(w, 0, &c), b1, b2);
+}
+
 static void build_scene(dWorldID w, dSpaceID space)
 {
     dWorldSetGravity(w, 0, 0, -9.81);
@@ -70,8 +203,9 @@ static void build_scene(dWorldID w, dSpaceID space)
     dWorldSetAutoDisableTime(w, 0.5);
     dWorldSetAutoDisableAverageSamplesCount(w, 3);
 
-    dBodyID b[20];
-    for (int i = 0; i < 20; i++) b[i] = make_body(w, 0.5 * i, 0.25 * (i % 3), 1 + 0.1 * i, 0.2 * i);
+    dBodyID b[NUM_BODIES];
+    for (int i = 0; i < NUM_BODIES; i++)
+        b[i] = make_body(w, 0.5 * i, 0.25 * (i % 3), 1 + 0.1 * i, 0.2 * i);
     dBodySetFiniteRotationMode(b[1], 1);
     dBodySetFiniteRotationAxis(b[1], 0.6, 0.8, 0.5);
     dBodyDisable(b[2]);
@@ -214,6 +348,35 @@ static void build_scene(dWorldID w, dSpaceID space)
     dJointSetAMotorNumAxes(am_rev, 2);
     dJointSetAMotorAxis(am_rev, 0, 2, 0, 0.6, 0.8);
     dJointSetAMotorAxis(am_rev, 1, 0, 1, 0, 0);
+
+    // ODE 0.16's PR, PU, piston and linear motor: attached to two bodies, to
+    // one, and as (0, b).
+    add_pr(w, b[20], b[21], 10.2, 1);
+    add_pr(w, b[22], 0, 11.1, -1.5);
+    add_pr(w, 0, b[23], 11.6, 0.5);
+    add_pu(w, b[24], b[25], 12.1, 1);
+    add_pu(w, b[26], 0, 13.1, -0.5);
+    add_pu(w, 0, b[27], 13.7, 1.5);
+    add_piston(w, b[28], b[29], 14.2, 1);
+    add_piston(w, b[30], 0, 15.3, 0.5);
+    add_piston(w, 0, b[31], 15.8, -1);
+    add_lmotor(w, b[20], b[21], 0, 1, 2, 1);
+    add_lmotor(w, b[22], 0, 2, 1, 0, 2);
+    add_lmotor(w, 0, b[23], 1, 2, 0, 3);
+    add_lmotor(w, b[32], b[33], 2, 0, 0, 4);   // two axes
+
+    // Contacts: no mode, then every coefficient ODE writes, on two bodies,
+    // one body and as (0, b).
+    add_contact(w, b[34], b[35], 0, 1);
+    add_contact(w, b[34], b[35],
+                dContactMu2 | dContactBounce | dContactSoftERP | dContactSoftCFM | dContactApprox1,
+                2);
+    add_contact(w, b[34], 0,
+                dContactMotion1 | dContactMotion2 | dContactSlip1 | dContactSlip2 |
+                    dContactFDir1 | dContactApprox1_2,
+                3);
+    add_contact(w, 0, b[35], dContactApprox1_1 | dContactRolling | dContactMotionN | dContactFDir1,
+                4);
 
     dJointCreateBall(w, 0);   // attached to nothing
 }
