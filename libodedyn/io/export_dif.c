@@ -165,13 +165,8 @@ static void print_hinge(const dxDifPrinter *p, const joint_view *v)
     dJointGetHingeAxis(v->j, axis);
     body_direction(v->b0, axis, ax1);
     body_direction(v->b1, axis, ax2);
-    // For a joint attached as (0, b), ODE measures the kept angle as b against
-    // the world and reports the opposite.
-    dReal angle = dJointGetHingeAngle(v->j);
-    if (v->reversed) angle = -angle;
-    dQuaternion now, qrel;
-    relative_quaternion(v, now);
-    rest_quaternion(now, ax1, angle, qrel);
+    dQuaternion qrel;
+    dxJointHingeRest(v->j, qrel);
     dxDifPrintReals(p, "anchor1", a1, 3);
     dxDifPrintReals(p, "anchor2", a2, 3);
     dxDifPrintReals(p, "axis1", ax1, 3);

@@ -9,6 +9,7 @@
 // the stops and the motor act on b against the world, the opposite sense.
 
 #include "joint_geometry.h"
+#include "joint_kept.h"
 
 typedef struct dxJointHinge {
     dxJoint base;
@@ -63,6 +64,11 @@ static void hinge_attached(dxJoint *j)
     dJointGetHingeAxis(j, v);
     dxJointSetAxes(j, __func__, v[0], v[1], v[2], h->axis1, h->axis2);
     dxJointRelativeQuaternion(j, h->qrel);
+}
+
+void dxJointHingeRest(const dxJoint *j, dQuaternion qrel)
+{
+    if (j->cls->type == dJointTypeHinge) dCopyVector4(qrel, ((const dxJointHinge *)j)->qrel);
 }
 
 static const dxJointClass hinge_class = {

@@ -20,11 +20,12 @@ const dContact *dxJointContactGet(const dxJoint *j);
 // user's body 1, 2 body 2; 0 for an axis never set or another joint type.
 int dxJointLMotorAxisRel(const dxJoint *j, int anum);
 
-// The rest orientations (relative orientation at zero angle) of the PR and
-// piston joints, and the PU joint's two (each body against the cross of the
+// The rest orientations (relative orientation at zero angle) of the hinge,
+// PR and piston joints, and the PU joint's two (each body against the cross of the
 // axes), as kept. Only a quaternion's rotation follows from the angle
 // getters, not its sign, which ODE's file shows. Left unchanged for another
 // joint type.
+void dxJointHingeRest(const dxJoint *j, dQuaternion qrel);
 void dxJointPRRest(const dxJoint *j, dQuaternion qrel);
 void dxJointPistonRest(const dxJoint *j, dQuaternion qrel);
 void dxJointPURest(const dxJoint *j, dQuaternion qrel1, dQuaternion qrel2);
