@@ -1,0 +1,275 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// collide_trimesh.c -- the native trimesh colliders' shared walk and
+// contact reduction (collide_trimesh.h), triangle geometry helpers, and the
+// two colliders that need no per-triangle solid test: trimesh-plane (the
+// vertices below the plane) and trimesh-ray (every triangle the ray
+// crosses, nearest first).
+
+#include "collide_trimesh.h"
+
+#include <ode/memory.h>
+
+// ---- the walk and the reduction --------------------------------------------
+
+void dxTriLoad(const dxTriMeshData *d, int t, dxTri *out)
+{
+    out->index = t;
+    dxTriMeshTriangle(d, t, out->v);
+    for (int k = 0; k < 3; k++) out->n[k] = d->normal[3 * t + k];
+    out->features = dxTriMeshFeatures(d, t);
+    out->neighbour = d->neighbour + 3 * t;
+}
+
+void dxTriAdd(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth, int tri)
+{
+    dxTriMesh *m = q->mesh;
+    if (m->raw_count == m->raw_cap) {
+        int ncap = m->raw_cap ? 2 * m->raw_cap : 32;
+        m->raw = (dxTriMeshRaw *)dRealloc(m->raw, (size_t)m->raw_cap * sizeof *m->raw,
+                                          (size_t)ncap * sizeof *m->raw);
+        m->raw_cap = ncap;
+    }
+    dxTriMeshRaw *r = &m->raw[m->raw_count++];
+    for (int k = 0; k < 3; k++) {
+        r->pos[k] = pos[k];
+        r->n[k] = n[k];
+    }
+    r->depth = depth;
+    r->tri = tri;
+}
+
+static dReal dist2(const dReal a[3], const dReal b[3])
+{
+    dReal d[3] = { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+    return dx_dot(d, d);
+}
+
+// Merge contacts at (nearly) the same point with (nearly) the same normal,
+// keeping the deeper; returns the new count.
+static int merge_duplicates(dxTriMesh *m, dReal tol)
+{
+    dxTriMeshRaw *r = m->raw;
+    int n = 0;
+    for (int i = 0; i < m->raw_count; i++) {
+        int j = 0;
+        while (j < n && !(dist2(r[i].pos, r[j].pos) <= tol * tol &&
+                          dx_dot(r[i].n, r[j].n) > 1 - (dReal)1e-6))
+            j++;
+        if (j == n) {
+            r[n++] = r[i];
+            continue;
+        }
+        int a = r[j].tri, b = r[i].tri;
+        if (r[i].depth > r[j].depth) r[j] = r[i];
+        r[j].tri = a == b ? a : m->merge_callback ? m->merge_callback(&m->g, a, b) : -1;
+    }
+    return n;
+}
+
+// Move the contacts to keep to the front: the deepest, then each time the
+// one farthest from those kept (the deeper on ties).
+static void select_spread(dxTriMeshRaw *r, int n, int keep)
+{
+    dxTriMeshRaw t;
+    int best = 0;
+    for (int i = 1; i < n; i++)
+        if (r[i].depth > r[best].depth) best = i;
+    t = r[0], r[0] = r[best], r[best] = t;
+    for (int k = 1; k < keep; k++) {
+        dReal far = -1;
+        best = k;
+        for (int i = k; i < n; i++) {
+            dReal near = dInfinity;
+            for (int j = 0; j < k; j++) near = dMin(near, dist2(r[i].pos, r[j].pos));
+            if (near > far || (near == far && r[i].depth > r[best].depth)) {
+                far = near;
+                best = i;
+            }
+        }
+        t = r[k], r[k] = r[best], r[best] = t;
+    }
+}
+
+// Reduce the raw contacts and write them in world coordinates.
+static int finish(dxTriQuery *q, int flags, dContactGeom *c, int skip)
+{
+    dxTriMesh *m = q->mesh;
+    dxGeom *g = &m->g;
+    int n = merge_duplicates(m, q->scale * (dReal)1e-5);
+    int max = dx_max_contacts(flags);
+    if (n > max) {
+        select_spread(m->raw, n, max);
+        n = max;
+    }
+    for (int i = 0; i < n; i++) {
+        const dxTriMeshRaw *r = &m->raw[i];
+        dReal pos[3], nw[3];
+        dx_point_to_world(g->R, g->pos, r->pos, pos);
+        dx_to_world(g->R, r->n, nw);
+        for (int k = 0; k < 3; k++) nw[k] = -nw[k];   // into the mesh (g1)
+        dx_put_contact(c, i, skip, pos, nw, r->depth, g, q->other);
+        dxContactAt(c, i, skip)->side1 = r->tri;
+    }
+    return n;
+}
+
+// The other geom's pose in the mesh frame, and its box there.
+static void pose_other(dxTriQuery *q, dReal lo[3], dReal hi[3])
+{
+    dxGeom *mesh = &q->mesh->g, *o = q->other;
+    if (o->flags & DX_GEOM_PLACEABLE) {
+        dxTriMeshToLocal(mesh, o->pos, q->pos);
+        for (int j = 0; j < 3; j++) {
+            dReal col[3] = { o->R[j], o->R[4 + j], o->R[8 + j] }, lc[3];
+            dxTriMeshDirToLocal(mesh, col, lc);
+            for (int i = 0; i < 3; i++) q->R[4 * i + j] = lc[i];
+        }
+        for (int i = 0; i < 3; i++) q->R[4 * i + 3] = 0;
+    }
+    dxGeomUpdateAABB(o);
+    if (!(o->flags & DX_GEOM_PLACEABLE)) {   // a plane: the whole mesh
+        dxTriMeshDataBounds(q->data, lo, hi);
+        q->scale = 0;
+        for (int k = 0; k < 3; k++) q->scale += hi[k] - lo[k];
+        return;
+    }
+    dReal cw[3], hw[3], cl[3];
+    for (int k = 0; k < 3; k++) {
+        cw[k] = (o->aabb[2 * k] + o->aabb[2 * k + 1]) / 2;
+        hw[k] = (o->aabb[2 * k + 1] - o->aabb[2 * k]) / 2;
+    }
+    dxTriMeshToLocal(mesh, cw, cl);
+    const dReal *R = mesh->R;
+    q->scale = 0;
+    for (int i = 0; i < 3; i++) {
+        dReal e = dFabs(R[i]) * hw[0] + dFabs(R[4 + i]) * hw[1] + dFabs(R[8 + i]) * hw[2];
+        lo[i] = cl[i] - e;
+        hi[i] = cl[i] + e;
+        q->scale += hw[i];
+    }
+}
+
+int dxTriMeshCollide(dxGeom *mesh, dxGeom *other, int flags, dContactGeom *c, int skip,
+                     dxTriTest *test)
+{
+    dxTriMesh *m = (dxTriMesh *)mesh;
+    if (!m->data || m->data->tri_count == 0) return 0;
+    dxTriQuery q = { .mesh = m, .data = m->data, .other = other };
+    dReal lo[3], hi[3];
+    pose_other(&q, lo, hi);
+    int count = dxTriMeshQueryBox(m->data, lo, hi, &m->candidates, &m->candidates_cap);
+    m->raw_count = 0;
+    int hits = 0;
+    for (int i = 0; i < count; i++) {
+        int t = m->candidates[i];
+        if (dxTriMeshIsDegenerate(m->data, t)) continue;
+        if (m->callback && !m->callback(mesh, other, t)) continue;
+        dxTri tri;
+        dxTriLoad(m->data, t, &tri);
+        if (!test(&q, &tri)) continue;
+        dxTriMeshReserveInts(&m->hits, &m->hits_cap, hits + 1);
+        m->hits[hits++] = t;
+    }
+    if (hits > 0 && m->array_callback) m->array_callback(mesh, other, m->hits, hits);
+    return m->raw_count ? finish(&q, flags, c, skip) : 0;
+}
+
+// ---- triangle geometry --------------------------------------------------------
+
+int dxTriClosestPoint(const dxTri *t, const dReal p[3], dReal q[3])
+{
+    // Regions of the triangle's plane, tested in turn with the
+    // barycentric signs (vertex, edge, then face regions).
+    const dReal *a = t->v[0], *b = t->v[1], *c = t->v[2];
+    dReal ab[3], ac[3], ap[3], bp[3], cp[3];
+    for (int i = 0; i < 3; i++) {
+        ab[i] = b[i] - a[i];
+        ac[i] = c[i] - a[i];
+        ap[i] = p[i] - a[i];
+        bp[i] = p[i] - b[i];
+        cp[i] = p[i] - c[i];
+    }
+    dReal d1 = dx_dot(ab, ap), d2 = dx_dot(ac, ap);
+    if (d1 <= 0 && d2 <= 0) {
+        for (int i = 0; i < 3; i++) q[i] = a[i];
+        return 4;
+    }
+    dReal d3 = dx_dot(ab, bp), d4 = dx_dot(ac, bp);
+    if (d3 >= 0 && d4 <= d3) {
+        for (int i = 0; i < 3; i++) q[i] = b[i];
+        return 5;
+    }
+    dReal vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+        dReal s = d1 / (d1 - d3);
+        for (int i = 0; i < 3; i++) q[i] = a[i] + s * ab[i];
+        return 1;
+    }
+    dReal d5 = dx_dot(ab, cp), d6 = dx_dot(ac, cp);
+    if (d6 >= 0 && d5 <= d6) {
+        for (int i = 0; i < 3; i++) q[i] = c[i];
+        return 6;
+    }
+    dReal vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+        dReal s = d2 / (d2 - d6);
+        for (int i = 0; i < 3; i++) q[i] = a[i] + s * ac[i];
+        return 3;   // edge 2: v2 to v0
+    }
+    dReal va = d3 * d6 - d5 * d4;
+    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
+        dReal s = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        for (int i = 0; i < 3; i++) q[i] = b[i] + s * (c[i] - b[i]);
+        return 2;
+    }
+    dReal denom = 1 / (va + vb + vc), v = vb * denom, w = vc * denom;
+    for (int i = 0; i < 3; i++) q[i] = a[i] + v * ab[i] + w * ac[i];
+    return 0;
+}
+
+int dxTriFeatureNormal(const dxTriQuery *q, const dxTri *t, int feature, const dReal dir[3])
+{
+    if (feature == 0) return 0;
+    if (feature >= 4) return (t->features & (DX_TRI_VERTEX_FEATURE << (feature - 4))) != 0;
+    int k = feature - 1;
+    if (!(t->features & (DX_TRI_EDGE_FEATURE << k))) return 0;
+    int u = t->neighbour[k];
+    if (u < 0) return 1;
+    // The neighbour's in-plane direction away from itself across the edge
+    // (towards this triangle's side): dir must not point back over it.
+    const dReal *a = t->v[k], *b = t->v[(k + 1) % 3], *far = t->v[(k + 2) % 3];
+    const dReal *nu = q->data->normal + 3 * u;
+    dReal e[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] }, m[3], af[3];
+    dReal cr[3] = { nu[1] * e[2] - nu[2] * e[1], nu[2] * e[0] - nu[0] * e[2],
+                    nu[0] * e[1] - nu[1] * e[0] };
+    for (int i = 0; i < 3; i++) af[i] = far[i] - a[i];
+    dReal s = dx_dot(cr, af) < 0 ? -1 : 1;
+    for (int i = 0; i < 3; i++) m[i] = s * cr[i];
+    return dx_dot(m, dir) >= 0 ? 1 : -1;
+}
+
+// ---- trimesh-plane ----------------------------------------------------------------
+
+// The triangle's vertices below the plane, each a contact at the vertex.
+static int plane_test(dxTriQuery *q, const dxTri *t)
+{
+    const dxPlane *p = (const dxPlane *)q->other;
+    dReal nl[3];
+    dxTriMeshDirToLocal(&q->mesh->g, p->p, nl);
+    dReal d = p->p[3] - dx_dot(p->p, q->mesh->g.pos);
+    dReal leave[3] = { -nl[0], -nl[1], -nl[2] };   // the plane leaves downwards
+    int touched = 0;
+    for (int k = 0; k < 3; k++) {
+        dReal depth = d - dx_dot(nl, t->v[k]);
+        if (depth < 0) continue;
+        dxTriAdd(q, t->v[k], leave, depth, t->index);
+        touched = 1;
+    }
+    return touched;
+}
+
+int dxCollideTriMeshPlane(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
+{
+    return dxTriMeshCollide(o1, o2, flags, c, skip, plane_test);
+}

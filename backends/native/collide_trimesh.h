@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// collide_trimesh.h -- what the native trimesh colliders share
+// (collide_trimesh.c): the other geom posed in the mesh's frame, the walk
+// over the triangles near it (the per-triangle and array callbacks), and the
+// reduction of the triangles' contacts to a small manifold written in
+// world coordinates (g1 the mesh, side1 the triangle).
+
+#ifndef DX_COLLIDE_TRIMESH_H
+#define DX_COLLIDE_TRIMESH_H
+
+#include "../../libodecollide/trimesh_internal.h"
+#include "collide_math.h"
+
+// One pair's query, everything in the mesh frame.
+typedef struct dxTriQuery {
+    dxTriMesh *mesh;
+    const dxTriMeshData *data;
+    dxGeom *other;
+    dReal pos[3];      // the other geom's position ...
+    dReal R[12];       // ... and rotation (row-major 3x4) in the mesh frame
+    dReal scale;       // the other geom's size (tolerances)
+} dxTriQuery;
+
+// One triangle: its vertices, unit normal, feature bits (DX_TRI_*_FEATURE)
+// and neighbours across its edges.
+typedef struct dxTri {
+    int index;
+    dReal v[3][3];
+    dReal n[3];
+    unsigned features;
+    const int *neighbour;
+} dxTri;
+
+// A triangle test: adds the triangle's contacts with dxTriAdd and returns 1
+// if the triangle touches the other geom.
+typedef int dxTriTest(dxTriQuery *q, const dxTri *t);
+
+// Add a contact: pos in the overlap, n the unit direction in which the other
+// geom leaves the mesh, depth >= 0 (mesh frame).
+void dxTriAdd(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth, int tri);
+
+// The collider body: every triangle whose box meets the other geom's box
+// (mesh frame) and that the per-triangle callback accepts goes through
+// test; the array callback then sees those that touch; the contacts are
+// reduced (near-duplicates merged, the triangles of a merged one given to
+// the merge callback, at most flags & 0xffff kept: the deepest first, then
+// each the farthest from those kept) and written.
+int dxTriMeshCollide(dxGeom *mesh, dxGeom *other, int flags, dContactGeom *c, int skip,
+                     dxTriTest *test);
+
+// Load triangle t (dxTri) from the data.
+void dxTriLoad(const dxTriMeshData *d, int t, dxTri *out);
+
+// The closest point of triangle t to p: into q; returns the feature it is
+// on: 0 the face, 1 + k edge k (v_k to v_k+1), 4 + k vertex k.
+int dxTriClosestPoint(const dxTri *t, const dReal p[3], dReal q[3]);
+
+// How a contact at `feature` (as dxTriClosestPoint) leaving along the unit
+// direction dir is made: 1 along dir (a convex or border edge or vertex);
+// 0 along the face normal (the face itself, or a flat or concave edge or
+// vertex: no internal-edge bumps); -1 not at all (an edge whose neighbour
+// face sees the point in front of itself: that face gives the contact).
+int dxTriFeatureNormal(const dxTriQuery *q, const dxTri *t, int feature, const dReal dir[3]);
+
+#endif

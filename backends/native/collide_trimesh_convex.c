@@ -1,0 +1,283 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// collide_trimesh_convex.c -- a trimesh against a sphere, a capsule and a
+// box, triangle by triangle in the mesh frame. Triangles are one-sided:
+// a shape whose centre is behind a triangle's plane does not touch it.
+//
+// - Sphere: the closest point of the triangle; on the face, or on an edge
+//   or vertex that is not a real feature (flat or concave), the contact
+//   takes the face normal and the depth below the face's plane, so a ball
+//   rolling over a flat area of many triangles meets one plane.
+// - Capsule: the axis segment clipped to the triangle's prism gives a
+//   contact at each end (face normal, depth below the plane); if it misses
+//   the prism, the closest points of the segment and the triangle's edges
+//   as for the sphere.
+// - Box: rejected if a separating axis exists (the triangle's normal, the
+//   box's axes, the edges' cross products); else the part of the box behind
+//   the triangle and inside its prism (each box face clipped by the prism's
+//   four planes) gives its corners deeper than rounding, with the face
+//   normal and their depth below the plane.
+
+#include "collide_trimesh.h"
+
+static void sub3(dReal out[3], const dReal a[3], const dReal b[3])
+{
+    for (int i = 0; i < 3; i++) out[i] = a[i] - b[i];
+}
+
+static void cross3(dReal out[3], const dReal a[3], const dReal b[3])
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+// Height of p above triangle t's plane.
+static dReal height(const dxTri *t, const dReal p[3])
+{
+    dReal d[3];
+    sub3(d, p, t->v[0]);
+    return dx_dot(t->n, d);
+}
+
+// A ball of radius r at p (on the segment of a capsule, or a sphere's
+// centre) against the closest point q of t, on feature f: the contact as
+// the header describes. Returns 1 if one was added.
+static int ball_contact(dxTriQuery *q, const dxTri *t, const dReal p[3], dReal r,
+                        const dReal on_tri[3], int f)
+{
+    dReal d[3];
+    sub3(d, p, on_tri);
+    dReal dist2 = dx_dot(d, d);
+    if (dist2 > r * r) return 0;
+    dReal dist = dSqrt(dist2), dir[3] = { t->n[0], t->n[1], t->n[2] };
+    int how = 0;
+    if (f != 0 && dist > DX_COLLIDE_EPS * r) {
+        for (int i = 0; i < 3; i++) dir[i] = d[i] / dist;
+        how = dxTriFeatureNormal(q, t, f, dir);
+    }
+    if (how < 0) return 0;
+    dReal depth, pos[3];
+    if (how == 0) {
+        depth = r - height(t, p);
+        if (depth < 0) return 0;
+        for (int i = 0; i < 3; i++) dir[i] = t->n[i];
+    } else {
+        depth = r - dist;
+    }
+    for (int i = 0; i < 3; i++) pos[i] = p[i] - r * dir[i];
+    dxTriAdd(q, pos, dir, depth, t->index);
+    return 1;
+}
+
+// ---- sphere ---------------------------------------------------------------------
+
+static int sphere_test(dxTriQuery *q, const dxTri *t)
+{
+    dReal r = ((const dxSphere *)q->other)->radius, h = height(t, q->pos);
+    if (h < 0 || h > r) return 0;
+    dReal on_tri[3];
+    int f = dxTriClosestPoint(t, q->pos, on_tri);
+    return ball_contact(q, t, q->pos, r, on_tri, f);
+}
+
+int dxCollideTriMeshSphere(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
+{
+    return dxTriMeshCollide(o1, o2, flags, c, skip, sphere_test);
+}
+
+// ---- capsule --------------------------------------------------------------------
+
+// The inward normal of edge k's side of the prism (not unit).
+static void side_normal(const dxTri *t, int k, dReal m[3])
+{
+    dReal e[3];
+    sub3(e, t->v[(k + 1) % 3], t->v[k]);
+    cross3(m, t->n, e);
+}
+
+// The parameter range [*lo, *hi] of p0 + s (p1 - p0) inside the prism of t
+// (borders widened by rounding): 0 if empty.
+static int clip_to_prism(const dxTri *t, const dReal p0[3], const dReal p1[3], dReal tol,
+                         dReal *lo, dReal *hi)
+{
+    *lo = 0;
+    *hi = 1;
+    for (int k = 0; k < 3; k++) {
+        dReal m[3], a[3], b[3];
+        side_normal(t, k, m);
+        sub3(a, p0, t->v[k]);
+        sub3(b, p1, t->v[k]);
+        dReal slack = tol * dSqrt(dx_dot(m, m));
+        dReal f0 = dx_dot(m, a) + slack, f1 = dx_dot(m, b) + slack;
+        if (f0 < 0 && f1 < 0) return 0;
+        if (f0 < 0) *lo = dMax(*lo, f0 / (f0 - f1));
+        else if (f1 < 0) *hi = dMin(*hi, f0 / (f0 - f1));
+    }
+    return *lo <= *hi;
+}
+
+static int capsule_test(dxTriQuery *q, const dxTri *t)
+{
+    const dxCapsule *cap = (const dxCapsule *)q->other;
+    dReal r = cap->radius, half = cap->length / 2, a[3], p0[3], p1[3];
+    dx_axis(q->R, 2, a);
+    if (height(t, q->pos) < 0) return 0;
+    for (int i = 0; i < 3; i++) {
+        p0[i] = q->pos[i] - half * a[i];
+        p1[i] = q->pos[i] + half * a[i];
+    }
+    if (dMin(height(t, p0), height(t, p1)) > r) return 0;
+    dReal lo, hi;
+    int added = 0;
+    if (clip_to_prism(t, p0, p1, DX_COLLIDE_EPS * q->scale, &lo, &hi)) {
+        dReal s[2] = { lo, hi };
+        for (int j = 0; j < (hi - lo > DX_COLLIDE_EPS ? 2 : 1); j++) {
+            dReal e[3], pos[3];
+            for (int i = 0; i < 3; i++) e[i] = p0[i] + s[j] * (p1[i] - p0[i]);
+            dReal depth = r - height(t, e);
+            if (depth < 0) continue;
+            for (int i = 0; i < 3; i++) pos[i] = e[i] - r * t->n[i];
+            dxTriAdd(q, pos, t->n, depth, t->index);
+            added = 1;
+        }
+        if (added) return 1;
+    }
+    // The closest points of the axis and the triangle's edges.
+    dReal best = dInfinity, ps[3], pt[3];
+    int feature = 0;
+    for (int k = 0; k < 3; k++) {
+        const dReal *va = t->v[k], *vb = t->v[(k + 1) % 3];
+        dReal ec[3], eu[3];
+        sub3(eu, vb, va);
+        dReal elen = dSqrt(dx_dot(eu, eu));
+        for (int i = 0; i < 3; i++) {
+            ec[i] = (va[i] + vb[i]) / 2;
+            eu[i] /= elen;
+        }
+        dReal s, u;
+        dx_closest_segments(q->pos, a, half, ec, eu, elen / 2, &s, &u);
+        dReal x[3], y[3], d[3];
+        for (int i = 0; i < 3; i++) {
+            x[i] = q->pos[i] + s * a[i];
+            y[i] = ec[i] + u * eu[i];
+        }
+        sub3(d, x, y);
+        dReal dd = dx_dot(d, d);
+        if (dd < best) {
+            best = dd;
+            for (int i = 0; i < 3; i++) {
+                ps[i] = x[i];
+                pt[i] = y[i];
+            }
+            dReal end = elen / 2 * (1 - DX_COLLIDE_EPS);
+            feature = u <= -end ? 4 + k : u >= end ? 4 + (k + 1) % 3 : 1 + k;
+        }
+    }
+    if (best > r * r || height(t, ps) < 0) return 0;
+    return ball_contact(q, t, ps, r, pt, feature);
+}
+
+int dxCollideTriMeshCapsule(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
+{
+    return dxTriMeshCollide(o1, o2, flags, c, skip, capsule_test);
+}
+
+// ---- box --------------------------------------------------------------------------
+
+// Whether the axis L separates the triangle from the box (centre c, unit
+// axes ax[j], half sides h[j]).
+static int separates(const dxTri *t, const dReal L[3], const dReal c[3], dReal ax[3][3],
+                     const dReal h[3])
+{
+    dReal len2 = dx_dot(L, L);
+    if (len2 <= DX_COLLIDE_EPS * DX_COLLIDE_EPS) return 0;   // parallel edges: no axis
+    dReal t0 = dx_dot(L, t->v[0]), t1 = dx_dot(L, t->v[1]), t2 = dx_dot(L, t->v[2]);
+    dReal tmin = dMin(t0, dMin(t1, t2)), tmax = dMax(t0, dMax(t1, t2));
+    dReal bc = dx_dot(L, c), br = 0;
+    for (int j = 0; j < 3; j++) br += h[j] * dFabs(dx_dot(L, ax[j]));
+    return tmax < bc - br || tmin > bc + br;
+}
+
+enum { POLY_MAX = 16 };
+
+// Keep the part of polygon p (n points) where m . (x - o) >= 0.
+static int clip_polygon(dReal p[][3], int n, const dReal m[3], const dReal o[3],
+                        dReal out[][3])
+{
+    int k = 0;
+    for (int i = 0; i < n; i++) {
+        const dReal *a = p[i], *b = p[(i + 1) % n];
+        dReal da[3], db[3];
+        sub3(da, a, o);
+        sub3(db, b, o);
+        dReal fa = dx_dot(m, da), fb = dx_dot(m, db);
+        if (fa >= 0) {
+            for (int j = 0; j < 3; j++) out[k][j] = a[j];
+            k++;
+        }
+        if ((fa >= 0) != (fb >= 0)) {
+            dReal s = fa / (fa - fb);
+            for (int j = 0; j < 3; j++) out[k][j] = a[j] + s * (b[j] - a[j]);
+            k++;
+        }
+    }
+    return k;
+}
+
+static int box_test(dxTriQuery *q, const dxTri *t)
+{
+    const dReal *side = ((const dxBox *)q->other)->side;
+    const dReal *c = q->pos;
+    if (height(t, c) < 0) return 0;
+    dReal h[3] = { side[0] / 2, side[1] / 2, side[2] / 2 }, ax[3][3];
+    for (int j = 0; j < 3; j++) dx_axis(q->R, j, ax[j]);
+    if (separates(t, t->n, c, ax, h)) return 0;
+    for (int j = 0; j < 3; j++)
+        if (separates(t, ax[j], c, ax, h)) return 0;
+    for (int k = 0; k < 3; k++) {
+        dReal e[3], L[3];
+        sub3(e, t->v[(k + 1) % 3], t->v[k]);
+        for (int j = 0; j < 3; j++) {
+            cross3(L, e, ax[j]);
+            if (separates(t, L, c, ax, h)) return 0;
+        }
+    }
+    // Corners: bit j of the index picks the sign of axis j.
+    dReal corner[8][3];
+    for (int v = 0; v < 8; v++)
+        for (int i = 0; i < 3; i++)
+            corner[v][i] = c[i] + (v & 1 ? h[0] : -h[0]) * ax[0][i] +
+                           (v & 2 ? h[1] : -h[1]) * ax[1][i] + (v & 4 ? h[2] : -h[2]) * ax[2][i];
+    static const int faces[6][4] = { { 0, 2, 6, 4 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
+                                     { 2, 3, 7, 6 }, { 0, 1, 3, 2 }, { 4, 5, 7, 6 } };
+    dReal planes_m[4][3], below[3] = { -t->n[0], -t->n[1], -t->n[2] };
+    for (int k = 0; k < 3; k++) side_normal(t, k, planes_m[k]);
+    for (int i = 0; i < 3; i++) planes_m[3][i] = below[i];
+    const dReal *planes_o[4] = { t->v[0], t->v[1], t->v[2], t->v[0] };
+    dReal eps = DX_COLLIDE_EPS * q->scale;
+    int added = 0;
+    for (int f = 0; f < 6; f++) {
+        dReal a[POLY_MAX][3], b[POLY_MAX][3];
+        for (int i = 0; i < 4; i++)
+            for (int j = 0; j < 3; j++) a[i][j] = corner[faces[f][i]][j];
+        int n = 4;
+        for (int p = 0; p < 4 && n > 0; p++) {
+            n = clip_polygon(a, n, planes_m[p], planes_o[p], b);
+            for (int i = 0; i < n; i++)
+                for (int j = 0; j < 3; j++) a[i][j] = b[i][j];
+        }
+        for (int i = 0; i < n; i++) {
+            dReal depth = -height(t, a[i]);
+            if (depth <= eps) continue;
+            dxTriAdd(q, a[i], t->n, depth, t->index);
+            added = 1;
+        }
+    }
+    return added;
+}
+
+int dxCollideTriMeshBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
+{
+    return dxTriMeshCollide(o1, o2, flags, c, skip, box_test);
+}
