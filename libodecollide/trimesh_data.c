@@ -74,6 +74,9 @@ static void clear_derived(dxTriMeshData *d)
         dFree(d->order, n * sizeof(int));
         dFree(d->nodes, 2 * n * sizeof(dxTriMeshNode));
         if (d->built_flags) dFree(d->built_flags, n);
+        dFree(d->weld, (size_t)d->vertex_count * sizeof(int));
+        dFree(d->vertex_first, ((size_t)d->vertex_count + 1) * sizeof(int));
+        dFree(d->vertex_adj, (size_t)d->vertex_adj_count * sizeof(int) + sizeof(int));
     }
     d->normal = NULL;
     d->neighbour = NULL;
@@ -81,6 +84,9 @@ static void clear_derived(dxTriMeshData *d)
     d->order = NULL;
     d->nodes = NULL;
     d->built_flags = NULL;
+    d->weld = NULL;
+    d->vertex_first = d->vertex_adj = NULL;
+    d->vertex_adj_count = 0;
     d->node_count = 0;
     d->tri_count = 0;
     d->vertex_count = 0;
@@ -121,15 +127,86 @@ static int compare_edges(const void *pa, const void *pb)
     return a->tri < b->tri ? -1 : a->tri > b->tri;
 }
 
-// Neighbours across edges: two triangles sharing the vertex indices of an
-// edge (an edge of more than two triangles has none).
+typedef struct vertex_key {
+    dReal p[3];
+    int i;
+} vertex_key;
+
+static int compare_vertices(const void *pa, const void *pb)
+{
+    const vertex_key *a = pa, *b = pb;
+    for (int k = 0; k < 3; k++)
+        if (a->p[k] != b->p[k]) return a->p[k] < b->p[k] ? -1 : 1;
+    return a->i < b->i ? -1 : a->i > b->i;
+}
+
+// weld[i]: the first vertex at exactly the position of vertex i, so that
+// meshes with repeated vertices (per face, for normals or texture
+// coordinates) still know their neighbours.
+static void compute_weld(dxTriMeshData *d)
+{
+    size_t n = (size_t)d->vertex_count;
+    vertex_key *v = (vertex_key *)dAlloc(n * sizeof *v);
+    for (int i = 0; i < d->vertex_count; i++) {
+        dxTriMeshVertex(d, i, v[i].p);
+        v[i].i = i;
+    }
+    qsort(v, n, sizeof *v, compare_vertices);
+    for (size_t i = 0; i < n; i++) {
+        int same = i > 0 && v[i].p[0] == v[i - 1].p[0] && v[i].p[1] == v[i - 1].p[1] &&
+                   v[i].p[2] == v[i - 1].p[2];
+        d->weld[v[i].i] = same ? d->weld[v[i - 1].i] : v[i].i;
+    }
+    dFree(v, n * sizeof *v);
+}
+
+// The welded vertex indices of triangle t.
+static void welded_indices(const dxTriMeshData *d, int t, int idx[3])
+{
+    dxTriMeshIndices(d, t, idx);
+    for (int k = 0; k < 3; k++) idx[k] = d->weld[idx[k]];
+}
+
+// The vertices joined to each (welded) vertex by an edge, from the edges
+// sorted by their ends (CSR: vertex_adj[vertex_first[v] .. vertex_first[v + 1])).
+static void compute_vertex_adjacency(dxTriMeshData *d, const edge_key *e, size_t n)
+{
+    int *first = (int *)dAlloc(((size_t)d->vertex_count + 1) * sizeof(int));
+    memset(first, 0, ((size_t)d->vertex_count + 1) * sizeof(int));
+    int unique = 0;
+    for (size_t i = 0; i < n; i++) {
+        if (i > 0 && e[i].lo == e[i - 1].lo && e[i].hi == e[i - 1].hi) continue;
+        if (e[i].lo == e[i].hi) continue;
+        first[e[i].lo + 1]++;
+        first[e[i].hi + 1]++;
+        unique++;
+    }
+    for (int v = 0; v < d->vertex_count; v++) first[v + 1] += first[v];
+    int *adj = (int *)dAlloc((size_t)(2 * unique) * sizeof(int) + sizeof(int));
+    int *fill = (int *)dAlloc((size_t)d->vertex_count * sizeof(int));
+    memcpy(fill, first, (size_t)d->vertex_count * sizeof(int));
+    for (size_t i = 0; i < n; i++) {
+        if (i > 0 && e[i].lo == e[i - 1].lo && e[i].hi == e[i - 1].hi) continue;
+        if (e[i].lo == e[i].hi) continue;
+        adj[fill[e[i].lo]++] = e[i].hi;
+        adj[fill[e[i].hi]++] = e[i].lo;
+    }
+    dFree(fill, (size_t)d->vertex_count * sizeof(int));
+    d->vertex_first = first;
+    d->vertex_adj = adj;
+    d->vertex_adj_count = 2 * unique;
+}
+
+// Neighbours across edges: two triangles sharing the (welded) vertices of
+// an edge (an edge of more than two triangles has none); and the vertices'
+// neighbours.
 static void compute_neighbours(dxTriMeshData *d)
 {
     size_t n = 3 * (size_t)d->tri_count;
     edge_key *e = (edge_key *)dAlloc(n * sizeof *e);
     for (int t = 0; t < d->tri_count; t++) {
         int idx[3];
-        dxTriMeshIndices(d, t, idx);
+        welded_indices(d, t, idx);
         for (int k = 0; k < 3; k++) {
             int a = idx[k], b = idx[(k + 1) % 3];
             e[3 * t + k] = (edge_key){ a < b ? a : b, a < b ? b : a, t, k };
@@ -146,6 +223,7 @@ static void compute_neighbours(dxTriMeshData *d)
         }
         i = j;
     }
+    compute_vertex_adjacency(d, e, n);
     dFree(e, n * sizeof *e);
 }
 
@@ -159,7 +237,7 @@ static void compute_features(dxTriMeshData *d)
     memset(vertex_feature, 0, (size_t)d->vertex_count + 1);
     for (int t = 0; t < d->tri_count; t++) {
         int idx[3];
-        dxTriMeshIndices(d, t, idx);
+        welded_indices(d, t, idx);
         const dReal *n = d->normal + 3 * t;
         unsigned char f = 0;
         for (int k = 0; k < 3; k++) {
@@ -167,7 +245,7 @@ static void compute_features(dxTriMeshData *d)
             if (u >= 0 && !dxTriMeshIsDegenerate(d, t) && !dxTriMeshIsDegenerate(d, u)) {
                 const dReal *nu = d->normal + 3 * u;
                 int uidx[3];
-                dxTriMeshIndices(d, u, uidx);
+                welded_indices(d, u, uidx);
                 int far = uidx[0];
                 for (int m = 0; m < 3; m++)
                     if (uidx[m] != idx[k] && uidx[m] != idx[(k + 1) % 3]) far = uidx[m];
@@ -188,7 +266,7 @@ static void compute_features(dxTriMeshData *d)
     }
     for (int t = 0; t < d->tri_count; t++) {
         int idx[3];
-        dxTriMeshIndices(d, t, idx);
+        welded_indices(d, t, idx);
         for (int k = 0; k < 3; k++)
             if (vertex_feature[idx[k]]) d->features[t] |= (unsigned char)(DX_TRI_VERTEX_FEATURE << k);
     }
@@ -260,7 +338,9 @@ static void build_checked(const char *fn, dxTriMeshData *d, const void *vertices
     d->normal = (dReal *)dAlloc(3 * n * sizeof(dReal));
     d->neighbour = (int *)dAlloc(3 * n * sizeof(int));
     d->features = (unsigned char *)dAlloc(n);
+    d->weld = (int *)dAlloc((size_t)vertex_count * sizeof(int));
     compute_normals(d);
+    compute_weld(d);
     compute_neighbours(d);
     compute_features(d);
     dxTriMeshBuildTree(d);

@@ -44,6 +44,9 @@ struct dxTriMeshData {
     unsigned char *user_flags;            // dTRIMESHDATA_USE_FLAGS set by the user
     // Derived (owned).
     dReal *normal;                        // 3 per triangle: unit, or 0 if degenerate
+    int *weld;                            // per vertex: the first one at its position
+    int *vertex_first, *vertex_adj;       // per welded vertex: the vertices joined to it
+    int vertex_adj_count;
     int *neighbour;                       // 3 per triangle: across edge k, or -1
     unsigned char *features;              // DX_TRI_*_FEATURE bits per triangle
     dxTriMeshNode *nodes;

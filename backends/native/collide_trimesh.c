@@ -15,7 +15,11 @@
 void dxTriLoad(const dxTriMeshData *d, int t, dxTri *out)
 {
     out->index = t;
-    dxTriMeshTriangle(d, t, out->v);
+    dxTriMeshIndices(d, t, out->vi);
+    for (int k = 0; k < 3; k++) {
+        out->vi[k] = d->weld[out->vi[k]];
+        dxTriMeshVertex(d, out->vi[k], out->v[k]);
+    }
     for (int k = 0; k < 3; k++) out->n[k] = d->normal[3 * t + k];
     out->features = dxTriMeshFeatures(d, t);
     out->neighbour = d->neighbour + 3 * t;
@@ -67,27 +71,151 @@ static int merge_duplicates(dxTriMesh *m, dReal tol)
     return n;
 }
 
-// Move the contacts to keep to the front: the deepest, then each time the
-// one farthest from those kept (the deeper on ties).
+// Normals this close belong to one flat group.
+#define SAME_NORMAL ((dReal)1 - 10 * DX_COLLIDE_EPS)
+
+// Within a group of contacts with one normal (one flat patch, where depth
+// varies linearly), only the corners of the patch's convex hull matter:
+// mark them in keep[] (gift wrapping in the plane; points on a hull edge
+// between two corners are left out). members lists the group.
+static void mark_hull(const dxTriMeshRaw *r, const int *members, int count, dReal area_tol,
+                      int *keep)
+{
+    if (count <= 2) {
+        for (int i = 0; i < count; i++) keep[members[i]] = 1;
+        return;
+    }
+    dReal e1[3], e2[3];
+    const dReal *n = r[members[0]].n;
+    dx_perpendicular(n, e1);
+    e2[0] = n[1] * e1[2] - n[2] * e1[1];
+    e2[1] = n[2] * e1[0] - n[0] * e1[2];
+    e2[2] = n[0] * e1[1] - n[1] * e1[0];
+#define U(i) dx_dot(r[members[i]].pos, e1)
+#define V(i) dx_dot(r[members[i]].pos, e2)
+    int start = 0;
+    for (int i = 1; i < count; i++)
+        if (U(i) < U(start) || (U(i) == U(start) && V(i) < V(start))) start = i;
+    int cur = start;
+    for (int steps = 0; steps <= count; steps++) {
+        keep[members[cur]] = 1;
+        int next = -1;
+        dReal nu = 0, nv = 0;
+        for (int q = 0; q < count; q++) {
+            if (q == cur) continue;
+            dReal qu = U(q) - U(cur), qv = V(q) - V(cur);
+            if (next < 0) {
+                next = q, nu = qu, nv = qv;
+                continue;
+            }
+            dReal cross = nu * qv - nv * qu;   // < 0: q is clockwise of next
+            if (cross < -area_tol ||
+                (cross <= area_tol && qu * qu + qv * qv > nu * nu + nv * nv))
+                next = q, nu = qu, nv = qv;
+        }
+        cur = next;
+        if (cur == start) break;
+    }
+#undef U
+#undef V
+}
+
+// Keep only the hull corners of each flat group; returns the new count.
+static int prune_flat_groups(dxTriMesh *m, int n, dReal area_tol)
+{
+    dxTriMeshReserveInts(&m->candidates, &m->candidates_cap, n);
+    dxTriMeshReserveInts(&m->hits, &m->hits_cap, 2 * n);
+    int *members = m->candidates, *keep = m->hits, *done = m->hits + n;
+    for (int i = 0; i < n; i++) keep[i] = done[i] = 0;
+    for (int i = 0; i < n; i++) {
+        if (done[i]) continue;
+        int count = 0;
+        for (int j = i; j < n; j++)
+            if (!done[j] && dx_dot(m->raw[i].n, m->raw[j].n) > SAME_NORMAL) {
+                members[count++] = j;
+                done[j] = 1;
+            }
+        mark_hull(m->raw, members, count, area_tol, keep);
+    }
+    int k = 0;
+    for (int i = 0; i < n; i++)
+        if (keep[i]) m->raw[k++] = m->raw[i];
+    return k;
+}
+
+static void swap_raw(dxTriMeshRaw *r, int a, int b)
+{
+    dxTriMeshRaw t = r[a];
+    r[a] = r[b];
+    r[b] = t;
+}
+
+// Twice the area by which the triangle (a, b, c) (normal direction N) grows
+// if it takes in p.
+static dReal hull_growth(const dReal *a, const dReal *b, const dReal *c, const dReal N[3],
+                         const dReal *p)
+{
+    const dReal *v[3] = { a, b, c };
+    dReal growth = 0;
+    for (int k = 0; k < 3; k++) {
+        const dReal *x = v[k], *y = v[(k + 1) % 3];
+        dReal e[3] = { y[0] - x[0], y[1] - x[1], y[2] - x[2] };
+        dReal d[3] = { p[0] - x[0], p[1] - x[1], p[2] - x[2] };
+        dReal cr[3] = { e[1] * d[2] - e[2] * d[1], e[2] * d[0] - e[0] * d[2],
+                        e[0] * d[1] - e[1] * d[0] };
+        dReal s = dx_dot(cr, N);
+        if (s < 0) growth -= s;
+    }
+    return growth;
+}
+
+// Move the `keep` contacts to keep to the front: the deepest, the farthest
+// from it, the farthest from the line of those two, the one that widens
+// their triangle most, then each the farthest from those kept.
 static void select_spread(dxTriMeshRaw *r, int n, int keep)
 {
-    dxTriMeshRaw t;
     int best = 0;
     for (int i = 1; i < n; i++)
         if (r[i].depth > r[best].depth) best = i;
-    t = r[0], r[0] = r[best], r[best] = t;
+    swap_raw(r, 0, best);
+    dReal N[3] = { 0, 0, 0 };
     for (int k = 1; k < keep; k++) {
-        dReal far = -1;
+        dReal score_best = -1;
         best = k;
         for (int i = k; i < n; i++) {
-            dReal near = dInfinity;
-            for (int j = 0; j < k; j++) near = dMin(near, dist2(r[i].pos, r[j].pos));
-            if (near > far || (near == far && r[i].depth > r[best].depth)) {
-                far = near;
+            dReal score;
+            if (k == 2) {
+                dReal e[3], d[3], cr[3];
+                for (int j = 0; j < 3; j++) {
+                    e[j] = r[1].pos[j] - r[0].pos[j];
+                    d[j] = r[i].pos[j] - r[0].pos[j];
+                }
+                cr[0] = e[1] * d[2] - e[2] * d[1];
+                cr[1] = e[2] * d[0] - e[0] * d[2];
+                cr[2] = e[0] * d[1] - e[1] * d[0];
+                score = dx_dot(cr, cr);
+            } else if (k == 3 && dx_dot(N, N) > 0) {
+                score = hull_growth(r[0].pos, r[1].pos, r[2].pos, N, r[i].pos);
+            } else {
+                score = dInfinity;
+                for (int j = 0; j < k; j++) score = dMin(score, dist2(r[i].pos, r[j].pos));
+            }
+            if (score > score_best) {
+                score_best = score;
                 best = i;
             }
         }
-        t = r[k], r[k] = r[best], r[best] = t;
+        swap_raw(r, k, best);
+        if (k == 2) {
+            dReal e[3], d[3];
+            for (int j = 0; j < 3; j++) {
+                e[j] = r[1].pos[j] - r[0].pos[j];
+                d[j] = r[2].pos[j] - r[0].pos[j];
+            }
+            N[0] = e[1] * d[2] - e[2] * d[1];
+            N[1] = e[2] * d[0] - e[0] * d[2];
+            N[2] = e[0] * d[1] - e[1] * d[0];
+        }
     }
 }
 
@@ -96,7 +224,9 @@ static int finish(dxTriQuery *q, int flags, dContactGeom *c, int skip)
 {
     dxTriMesh *m = q->mesh;
     dxGeom *g = &m->g;
-    int n = merge_duplicates(m, q->scale * (dReal)1e-5);
+    dReal tol = q->scale * (dReal)1e-5;
+    int n = merge_duplicates(m, tol);
+    n = prune_flat_groups(m, n, tol * q->scale);
     int max = dx_max_contacts(flags);
     if (n > max) {
         select_spread(m->raw, n, max);
@@ -231,7 +361,20 @@ int dxTriClosestPoint(const dxTri *t, const dReal p[3], dReal q[3])
 int dxTriFeatureNormal(const dxTriQuery *q, const dxTri *t, int feature, const dReal dir[3])
 {
     if (feature == 0) return 0;
-    if (feature >= 4) return (t->features & (DX_TRI_VERTEX_FEATURE << (feature - 4))) != 0;
+    if (feature >= 4) {
+        // A vertex's region: no edge from it may lean towards dir (exact
+        // for a convex vertex).
+        int k = feature - 4;
+        if (!(t->features & (DX_TRI_VERTEX_FEATURE << k))) return 0;
+        const dxTriMeshData *d = q->data;
+        for (int j = d->vertex_first[t->vi[k]]; j < d->vertex_first[t->vi[k] + 1]; j++) {
+            dReal w[3], e[3];
+            dxTriMeshVertex(d, d->vertex_adj[j], w);
+            for (int i = 0; i < 3; i++) e[i] = w[i] - t->v[k][i];
+            if (dx_dot(e, dir) > DX_COLLIDE_EPS * dSqrt(dx_dot(e, e))) return -1;
+        }
+        return 1;
+    }
     int k = feature - 1;
     if (!(t->features & (DX_TRI_EDGE_FEATURE << k))) return 0;
     int u = t->neighbour[k];

@@ -26,6 +26,7 @@ typedef struct dxTriQuery {
 // and neighbours across its edges.
 typedef struct dxTri {
     int index;
+    int vi[3];         // (welded) vertex indices
     dReal v[3][3];
     dReal n[3];
     unsigned features;
@@ -57,10 +58,12 @@ void dxTriLoad(const dxTriMeshData *d, int t, dxTri *out);
 int dxTriClosestPoint(const dxTri *t, const dReal p[3], dReal q[3]);
 
 // How a contact at `feature` (as dxTriClosestPoint) leaving along the unit
-// direction dir is made: 1 along dir (a convex or border edge or vertex);
-// 0 along the face normal (the face itself, or a flat or concave edge or
-// vertex: no internal-edge bumps); -1 not at all (an edge whose neighbour
-// face sees the point in front of itself: that face gives the contact).
+// direction dir is made: 1 along dir (a convex or border edge or vertex,
+// dir within its region); 0 not a feature (the face; a flat or concave edge
+// or vertex, where a neighbour face gives the contact unless the point is
+// over this triangle's border: then the face normal, with no internal-edge
+// bumps); -1 not at all (dir is outside the feature's region: a neighbour
+// face or edge is nearer and gives the contact).
 int dxTriFeatureNormal(const dxTriQuery *q, const dxTri *t, int feature, const dReal dir[3]);
 
 #endif

@@ -4,10 +4,12 @@
 // box, triangle by triangle in the mesh frame. Triangles are one-sided:
 // a shape whose centre is behind a triangle's plane does not touch it.
 //
-// - Sphere: the closest point of the triangle; on the face, or on an edge
-//   or vertex that is not a real feature (flat or concave), the contact
-//   takes the face normal and the depth below the face's plane, so a ball
-//   rolling over a flat area of many triangles meets one plane.
+// - Sphere: the closest point of the triangle; on the face the contact
+//   takes the face normal and the depth below the face's plane; on a
+//   convex edge or vertex, the direction from it (if within its region);
+//   an edge or vertex that is not a real feature (flat or concave) leaves
+//   the contact to the neighbouring face, so a ball rolling over a flat
+//   area of many triangles meets one plane.
 // - Capsule: the axis segment clipped to the triangle's prism gives a
 //   contact at each end (face normal, depth below the plane); if it misses
 //   the prism, the closest points of the segment and the triangle's edges
@@ -19,6 +21,14 @@
 //   normal and their depth below the plane.
 
 #include "collide_trimesh.h"
+
+// How far (relative to the other geom's size) a point may be off a
+// triangle's border and still count as over it (rounding at shared edges).
+#ifdef dSINGLE
+#define OVER_BORDER ((dReal)1e-4)
+#else
+#define OVER_BORDER ((dReal)1e-7)
+#endif
 
 static void sub3(dReal out[3], const dReal a[3], const dReal b[3])
 {
@@ -40,9 +50,12 @@ static dReal height(const dxTri *t, const dReal p[3])
     return dx_dot(t->n, d);
 }
 
-// A ball of radius r at p (on the segment of a capsule, or a sphere's
-// centre) against the closest point q of t, on feature f: the contact as
-// the header describes. Returns 1 if one was added.
+// A ball of radius r at p (a sphere's centre, or a point of a capsule's
+// axis) against the closest point on_tri of t, on feature f (as
+// dxTriClosestPoint): along the face normal on the face, or over a flat or
+// concave edge or vertex when p is (within rounding) over the triangle's
+// border; along the direction from a convex feature within its region;
+// else none. Returns 1 if a contact was added.
 static int ball_contact(dxTriQuery *q, const dxTri *t, const dReal p[3], dReal r,
                         const dReal on_tri[3], int f)
 {
@@ -50,16 +63,19 @@ static int ball_contact(dxTriQuery *q, const dxTri *t, const dReal p[3], dReal r
     sub3(d, p, on_tri);
     dReal dist2 = dx_dot(d, d);
     if (dist2 > r * r) return 0;
-    dReal dist = dSqrt(dist2), dir[3] = { t->n[0], t->n[1], t->n[2] };
+    dReal dist = dSqrt(dist2), h = height(t, p), dir[3] = { t->n[0], t->n[1], t->n[2] };
     int how = 0;
     if (f != 0 && dist > DX_COLLIDE_EPS * r) {
         for (int i = 0; i < 3; i++) dir[i] = d[i] / dist;
         how = dxTriFeatureNormal(q, t, f, dir);
+        // Off the border of a non-feature: the neighbour's contact.
+        dReal off2 = dist2 - h * h, tol = OVER_BORDER * q->scale;
+        if (how == 0 && off2 > tol * tol) return 0;
     }
     if (how < 0) return 0;
     dReal depth, pos[3];
     if (how == 0) {
-        depth = r - height(t, p);
+        depth = r - h;
         if (depth < 0) return 0;
         for (int i = 0; i < 3; i++) dir[i] = t->n[i];
     } else {
