@@ -15,10 +15,11 @@
 //   the prism, the closest points of the segment and the triangle's edges
 //   as for the sphere.
 // - Box: rejected if a separating axis exists (the triangle's normal, the
-//   box's axes, the edges' cross products); else the part of the box behind
-//   the triangle and inside its prism (each box face clipped by the prism's
-//   four planes) gives its corners deeper than rounding, with the face
-//   normal and their depth below the plane.
+//   box's axes, the edges' cross products); else each box face clipped to
+//   the triangle's prism gives its corners on or behind the triangle's
+//   plane, with the face normal and their depth below the plane (the
+//   corners of the part of the box behind the triangle, but for those on
+//   the plane itself).
 
 #include "collide_trimesh.h"
 
@@ -267,10 +268,8 @@ static int box_test(dxTriQuery *q, const dxTri *t)
                            (v & 2 ? h[1] : -h[1]) * ax[1][i] + (v & 4 ? h[2] : -h[2]) * ax[2][i];
     static const int faces[6][4] = { { 0, 2, 6, 4 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
                                      { 2, 3, 7, 6 }, { 0, 1, 3, 2 }, { 4, 5, 7, 6 } };
-    dReal planes_m[4][3], below[3] = { -t->n[0], -t->n[1], -t->n[2] };
-    for (int k = 0; k < 3; k++) side_normal(t, k, planes_m[k]);
-    for (int i = 0; i < 3; i++) planes_m[3][i] = below[i];
-    const dReal *planes_o[4] = { t->v[0], t->v[1], t->v[2], t->v[0] };
+    dReal sides[3][3];
+    for (int k = 0; k < 3; k++) side_normal(t, k, sides[k]);
     dReal eps = DX_COLLIDE_EPS * q->scale;
     int added = 0;
     for (int f = 0; f < 6; f++) {
@@ -278,15 +277,17 @@ static int box_test(dxTriQuery *q, const dxTri *t)
         for (int i = 0; i < 4; i++)
             for (int j = 0; j < 3; j++) a[i][j] = corner[faces[f][i]][j];
         int n = 4;
-        for (int p = 0; p < 4 && n > 0; p++) {
-            n = clip_polygon(a, n, planes_m[p], planes_o[p], b);
+        for (int k = 0; k < 3 && n > 0; k++) {
+            n = clip_polygon(a, n, sides[k], t->v[k], b);
             for (int i = 0; i < n; i++)
                 for (int j = 0; j < 3; j++) a[i][j] = b[i][j];
         }
+        // The points on or behind the plane (touching counts); where the
+        // face crosses the plane the depth is zero and adds nothing.
         for (int i = 0; i < n; i++) {
             dReal depth = -height(t, a[i]);
-            if (depth <= eps) continue;
-            dxTriAdd(q, a[i], t->n, depth, t->index);
+            if (depth < -eps) continue;
+            dxTriAdd(q, a[i], t->n, dMax(depth, 0), t->index);
             added = 1;
         }
     }
