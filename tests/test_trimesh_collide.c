@@ -201,6 +201,70 @@ static int test_capsule_on_flat_grid(void)
     return 0;
 }
 
+// A cylinder on a flat grid: lying, its lowest line (exact depth) gives
+// the two ends; standing, its cap gives points around the rim, spread; tilted,
+// the lowest rim point is the deepest, exactly.
+static int test_cylinder_on_flat_grid(void)
+{
+    test_mesh m;
+    mesh_grid(&m, 9, 2, flat);
+    dGeomID g = dCreateTriMesh(0, m.data, NULL, NULL, NULL);
+    dGeomID cyl = dCreateCylinder(0, 0.3, 0.8);
+    dContactGeom c[MAXC];
+    rng_state = 18;
+    for (int i = 0; i < 100; i++) {
+        // Sinking less than the prism's next side line rises (5.8 mm).
+        double x = rnd(-1, 1), y = rnd(-1, 1), yaw = rnd(0, 2 * M_PI), sink = rnd(0, 0.005);
+        dMatrix3 R1, R2, R;
+        dRFromAxisAndAngle(R1, 1, 0, 0, M_PI / 2);
+        dRFromAxisAndAngle(R2, 0, 0, 1, yaw);
+        dMultiply0_333(R, R2, R1);
+        dGeomSetRotation(cyl, R);
+        dGeomSetPosition(cyl, x, y, 0.3 - sink);
+        int n = collide_both(g, cyl, 8, c);
+        // The ends of the lowest line, and maybe a shallower point where a
+        // mesh vertex meets the prism's neighbouring side.
+        CHECK(n >= 2);
+        double apart = 0;   // the farthest two at the full depth
+        for (int k = 0; k < n; k++) {
+            CHECK_VEC(c[k].normal, 0, 0, -1, EPS);
+            CHECK(c[k].depth <= sink + EPS);
+            for (int j = 0; j < k; j++)
+                if (fabs(c[k].depth - sink) < EPS && fabs(c[j].depth - sink) < EPS)
+                    apart = fmax(apart, dCalcPointsDistance3(c[k].pos, c[j].pos));
+        }
+        CHECK_NEAR(apart, 0.8, EPS);
+        // Deeper: a band of contacts, the deepest exact.
+        dGeomSetPosition(cyl, x, y, 0.3 - 10 * sink);
+        n = collide_both(g, cyl, 8, c);
+        CHECK(n >= 2);
+        CHECK_NEAR(c[deepest(c, n)].depth, 10 * sink, EPS);
+        // Standing on its cap.
+        dGeomSetRotation(cyl, R2);
+        dGeomSetPosition(cyl, x, y, 0.4 - sink);
+        n = collide_both(g, cyl, 4, c);
+        CHECK(n == 4);
+        for (int k = 0; k < 4; k++) {
+            CHECK_NEAR(c[k].depth, sink, EPS);
+            double dx = c[k].pos[0] - x, dy = c[k].pos[1] - y;
+            // On the inscribed 32-gon: within its sagitta of the rim.
+            CHECK_NEAR(sqrt(dx * dx + dy * dy), 0.3, 0.3 * (1 - cos(M_PI / 32)) + EPS);
+        }
+        CHECK(dCalcPointsDistance3(c[0].pos, c[1].pos) > 0.59);   // across the rim
+        // Tilted by 0.4 rad about a horizontal axis.
+        set_rot(cyl, cos(yaw), sin(yaw), 0, 0.4);
+        dGeomSetPosition(cyl, x, y, 0.3);
+        n = collide_both(g, cyl, 4, c);
+        double lowest = 0.3 - 0.4 * cos(0.4) - 0.3 * sin(0.4);   // the lowest rim point
+        CHECK(n >= 1);
+        CHECK_NEAR(c[deepest(c, n)].depth, -lowest, EPS);
+    }
+    dGeomDestroy(cyl);
+    dGeomDestroy(g);
+    mesh_free(&m);
+    return 0;
+}
+
 // ---- every pair, random poses, signed distances --------------------------------
 
 typedef struct solid {
@@ -250,7 +314,9 @@ static int sweep(solid *s, dGeomID prim, int max)
             if (!(dp > -1e3 * EPS) || !(dm > -s->tess - 1e3 * EPS)) {
                 test_fail(__FILE__, __LINE__, "%s vs %s pose %d contact %d: depth in shape %g, in mesh %g, deepest %g",
                           s->name, dGeomGetClass(prim) == dSphereClass ? "sphere" :
-                          dGeomGetClass(prim) == dBoxClass ? "box" : "capsule", i, k, dp, dm, (double)most);
+                          dGeomGetClass(prim) == dBoxClass ? "box" :
+                          dGeomGetClass(prim) == dCapsuleClass ? "capsule" : "cylinder",
+                          i, k, dp, dm, (double)most);
                 return 1;
             }
             if (s->kind == 4) CHECK(fabs(q[2]) <= most + 1e3 * EPS);
@@ -275,13 +341,13 @@ static int test_every_pair_sdf(void)
     mesh_box(&solids[2].mesh, 2.0, 1.6, 1.2, 2);
     mesh_torus(&solids[3].mesh, 1.0, 0.4, 48, 24);
     mesh_sheet(&solids[4].mesh, 1.5);
-    dGeomID prims[3] = { dCreateSphere(0, 0.35), dCreateBox(0, 0.6, 0.4, 0.3),
-                         dCreateCapsule(0, 0.2, 0.5) };
+    dGeomID prims[4] = { dCreateSphere(0, 0.35), dCreateBox(0, 0.6, 0.4, 0.3),
+                         dCreateCapsule(0, 0.2, 0.5), dCreateCylinder(0, 0.25, 0.4) };
     rng_state = 14;
     int fail = 0;
     for (int s = 0; s < 5 && !fail; s++)
-        for (int p = 0; p < 3 && !fail; p++) fail = sweep(&solids[s], prims[p], p == 0 ? 4 : 8);
-    for (int p = 0; p < 3; p++) dGeomDestroy(prims[p]);
+        for (int p = 0; p < 4 && !fail; p++) fail = sweep(&solids[s], prims[p], p == 0 ? 4 : 8);
+    for (int p = 0; p < 4; p++) dGeomDestroy(prims[p]);
     for (int s = 0; s < 5; s++) mesh_free(&solids[s].mesh);
     return fail;
 }
@@ -298,7 +364,7 @@ static int test_sphere_icosphere_depth(void)
     dContactGeom c[MAXC];
     rng_state = 15;
     for (int i = 0; i < 200; i++) {
-        double d[3] = { rnd(-1, 1), rnd(-1, 1), rnd(-1, 1) };
+        dReal d[3] = { rnd(-1, 1), rnd(-1, 1), rnd(-1, 1) };
         double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), dist = rnd(1.05, 1.29);
         for (int k = 0; k < 3; k++) d[k] /= len;
         dGeomSetPosition(s, dist * d[0], dist * d[1], dist * d[2]);
@@ -525,21 +591,22 @@ static int test_no_allocation_when_warm(void)
     test_mesh m;
     mesh_grid(&m, 20, 3, wavy);
     dGeomID g = dCreateTriMesh(0, m.data, NULL, NULL, NULL);
-    dGeomID prims[4] = { dCreateSphere(0, 0.4), dCreateBox(0, 0.7, 0.5, 0.4),
-                         dCreateCapsule(0, 0.2, 0.8), dCreateRay(0, 3) };
+    dGeomID prims[5] = { dCreateSphere(0, 0.4), dCreateBox(0, 0.7, 0.5, 0.4),
+                         dCreateCapsule(0, 0.2, 0.8), dCreateRay(0, 3),
+                         dCreateCylinder(0, 0.3, 0.5) };
     dContactGeom c[MAXC];
     for (int pass = 0; pass < 2; pass++) {
         if (pass == 1) test_count_allocations();
         rng_state = 17;
         for (int i = 0; i < 100; i++)
-            for (int p = 0; p < 4; p++) {
+            for (int p = 0; p < 5; p++) {
                 dGeomSetPosition(prims[p], rnd(-2, 2), rnd(-2, 2), rnd(-0.3, 0.5));
                 set_rot(prims[p], rnd(-1, 1), rnd(-1, 1), 1, rnd(0, 3));
                 dCollide(g, prims[p], MAXC, c, sizeof c[0]);
             }
     }
     CHECK(test_allocations_counted() == 0);
-    for (int p = 0; p < 4; p++) dGeomDestroy(prims[p]);
+    for (int p = 0; p < 5; p++) dGeomDestroy(prims[p]);
     dGeomDestroy(g);
     mesh_free(&m);
     return 0;
@@ -549,6 +616,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_sphere_on_flat_grid),
     TEST_CASE(test_box_on_flat_grid),
     TEST_CASE(test_capsule_on_flat_grid),
+    TEST_CASE(test_cylinder_on_flat_grid),
     TEST_CASE(test_every_pair_sdf),
     TEST_CASE(test_sphere_icosphere_depth),
     TEST_CASE(test_plane),

@@ -71,14 +71,17 @@ static int merge_duplicates(dxTriMesh *m, dReal tol)
     return n;
 }
 
-// Normals this close belong to one flat group.
+// Normals this close belong to one flat group; points this close to a line
+// (sine of the angle) are on it.
 #define SAME_NORMAL ((dReal)1 - 10 * DX_COLLIDE_EPS)
+#define SAME_LINE (100 * DX_COLLIDE_EPS)
 
-// Within a group of contacts with one normal (one flat patch, where depth
-// varies linearly), only the corners of the patch's convex hull matter:
-// mark them in keep[] (gift wrapping in the plane; points on a hull edge
-// between two corners are left out). members lists the group.
-static void mark_hull(const dxTriMeshRaw *r, const int *members, int count, dReal area_tol,
+// Within a group of contacts with one normal (one flat patch), the corners
+// of the patch's convex hull and its deepest point are what matters (with a
+// flat solid on it, where depth varies linearly, the corners alone): mark
+// them in keep[] (gift wrapping in the plane; points on a hull edge between
+// two corners are left out). members lists the group.
+static void mark_hull(const dxTriMeshRaw *r, const int *members, int count, dReal depth_tol,
                       int *keep)
 {
     if (count <= 2) {
@@ -108,9 +111,11 @@ static void mark_hull(const dxTriMeshRaw *r, const int *members, int count, dRea
                 next = q, nu = qu, nv = qv;
                 continue;
             }
-            dReal cross = nu * qv - nv * qu;   // < 0: q is clockwise of next
-            if (cross < -area_tol ||
-                (cross <= area_tol && qu * qu + qv * qv > nu * nu + nv * nv))
+            // cross < 0: q is clockwise of next; collinear within a
+            // relative sine of SAME_LINE.
+            dReal cross = nu * qv - nv * qu, q2 = qu * qu + qv * qv, n2 = nu * nu + nv * nv;
+            dReal tol = SAME_LINE * dSqrt(q2 * n2);
+            if (cross < -tol || (cross <= tol && q2 > n2))
                 next = q, nu = qu, nv = qv;
         }
         cur = next;
@@ -118,10 +123,18 @@ static void mark_hull(const dxTriMeshRaw *r, const int *members, int count, dRea
     }
 #undef U
 #undef V
+    int deepest = 0;
+    dReal corner_depth = -dInfinity;
+    for (int i = 0; i < count; i++) {
+        if (r[members[i]].depth > r[members[deepest]].depth) deepest = i;
+        if (keep[members[i]]) corner_depth = dMax(corner_depth, r[members[i]].depth);
+    }
+    if (r[members[deepest]].depth > corner_depth + depth_tol) keep[members[deepest]] = 1;
 }
 
-// Keep only the hull corners of each flat group; returns the new count.
-static int prune_flat_groups(dxTriMesh *m, int n, dReal area_tol)
+// Keep only the hull corners (and an inner point deeper than them by more
+// than tol) of each flat group; returns the new count.
+static int prune_flat_groups(dxTriMesh *m, int n, dReal tol)
 {
     dxTriMeshReserveInts(&m->candidates, &m->candidates_cap, n);
     dxTriMeshReserveInts(&m->hits, &m->hits_cap, 2 * n);
@@ -135,7 +148,7 @@ static int prune_flat_groups(dxTriMesh *m, int n, dReal area_tol)
                 members[count++] = j;
                 done[j] = 1;
             }
-        mark_hull(m->raw, members, count, area_tol, keep);
+        mark_hull(m->raw, members, count, tol, keep);
     }
     int k = 0;
     for (int i = 0; i < n; i++)
@@ -226,7 +239,7 @@ static int finish(dxTriQuery *q, int flags, dContactGeom *c, int skip)
     dxGeom *g = &m->g;
     dReal tol = q->scale * (dReal)1e-5;
     int n = merge_duplicates(m, tol);
-    n = prune_flat_groups(m, n, tol * q->scale);
+    n = prune_flat_groups(m, n, tol);
     int max = dx_max_contacts(flags);
     if (n > max) {
         select_spread(m->raw, n, max);

@@ -202,25 +202,49 @@ int dxCollideTriMeshCapsule(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, 
 
 // ---- box --------------------------------------------------------------------------
 
-// Whether the axis L separates the triangle from the box (centre c, unit
-// axes ax[j], half sides h[j]).
-static int separates(const dxTri *t, const dReal L[3], const dReal c[3], dReal ax[3][3],
-                     const dReal h[3])
+// The interval of triangle t's projection on the axis L.
+static void triangle_interval(const dxTri *t, const dReal L[3], dReal *lo, dReal *hi)
 {
-    dReal len2 = dx_dot(L, L);
-    if (len2 <= DX_COLLIDE_EPS * DX_COLLIDE_EPS) return 0;   // parallel edges: no axis
     dReal t0 = dx_dot(L, t->v[0]), t1 = dx_dot(L, t->v[1]), t2 = dx_dot(L, t->v[2]);
-    dReal tmin = dMin(t0, dMin(t1, t2)), tmax = dMax(t0, dMax(t1, t2));
-    dReal bc = dx_dot(L, c), br = 0;
-    for (int j = 0; j < 3; j++) br += h[j] * dFabs(dx_dot(L, ax[j]));
-    return tmax < bc - br || tmin > bc + br;
+    *lo = dMin(t0, dMin(t1, t2));
+    *hi = dMax(t0, dMax(t1, t2));
 }
 
-enum { POLY_MAX = 16 };
+// Whether the axis L separates the triangle from the box (centre c, unit
+// axes ax[j], half sides h[j]).
+static int separates_box(const dxTri *t, const dReal L[3], const dReal c[3], dReal ax[3][3],
+                         const dReal h[3])
+{
+    if (dx_dot(L, L) <= DX_COLLIDE_EPS * DX_COLLIDE_EPS) return 0;   // parallel edges
+    dReal lo, hi, bc = dx_dot(L, c), br = 0;
+    triangle_interval(t, L, &lo, &hi);
+    for (int j = 0; j < 3; j++) br += h[j] * dFabs(dx_dot(L, ax[j]));
+    return hi < bc - br || lo > bc + br;
+}
 
-// Keep the part of polygon p (n points) where m . (x - o) >= 0.
-static int clip_polygon(dReal p[][3], int n, const dReal m[3], const dReal o[3],
-                        dReal out[][3])
+// Whether the axis L separates the triangle from the cylinder (centre c,
+// unit axis a, radius r, half length h): its projection reaches
+// h |L.a| + r sqrt(|L|^2 - (L.a)^2) from the centre's.
+static int separates_cylinder(const dxTri *t, const dReal L[3], const dReal c[3],
+                              const dReal a[3], dReal r, dReal h)
+{
+    dReal len2 = dx_dot(L, L);
+    if (len2 <= DX_COLLIDE_EPS * DX_COLLIDE_EPS) return 0;
+    dReal la = dx_dot(L, a), lo, hi, bc = dx_dot(L, c);
+    dReal across = len2 - la * la;
+    dReal br = h * dFabs(la) + r * dSqrt(across > 0 ? across : 0);
+    triangle_interval(t, L, &lo, &hi);
+    return hi < bc - br || lo > bc + br;
+}
+
+// A cylinder's cap has CYL_SIDES corners; clipped by three planes a face
+// gains at most three.
+enum { CYL_SIDES = 32, POLY_MAX = CYL_SIDES + 4 };
+
+// Keep the part of polygon p (n points, tags tp) where m . (x - o) >= -slack;
+// a point made on this boundary gets the tag `made`.
+static int clip_polygon(dReal p[][3], const int *tp, int n, const dReal m[3], const dReal o[3],
+                        dReal slack, int made, dReal out[][3], int *tout)
 {
     int k = 0;
     for (int i = 0; i < n; i++) {
@@ -228,18 +252,59 @@ static int clip_polygon(dReal p[][3], int n, const dReal m[3], const dReal o[3],
         dReal da[3], db[3];
         sub3(da, a, o);
         sub3(db, b, o);
-        dReal fa = dx_dot(m, da), fb = dx_dot(m, db);
+        dReal fa = dx_dot(m, da) + slack, fb = dx_dot(m, db) + slack;
         if (fa >= 0) {
             for (int j = 0; j < 3; j++) out[k][j] = a[j];
-            k++;
+            tout[k++] = tp[i];
         }
         if ((fa >= 0) != (fb >= 0)) {
             dReal s = fa / (fa - fb);
             for (int j = 0; j < 3; j++) out[k][j] = a[j] + s * (b[j] - a[j]);
-            k++;
+            tout[k++] = made;
         }
     }
     return k;
+}
+
+// Whether t's edge k joins two coplanar faces (an edge only of the
+// triangulation, not of the surface).
+static int flat_edge(const dxTriQuery *q, const dxTri *t, int k)
+{
+    if (t->features & (DX_TRI_EDGE_FEATURE << k)) return 0;
+    int u = t->neighbour[k];
+    return u >= 0 && dx_dot(t->n, q->data->normal + 3 * u) > 1 - 10 * DX_COLLIDE_EPS;
+}
+
+// One face (polygon a, n corners) of a convex solid against triangle t:
+// clipped to the triangle's prism (widened by rounding), its points on or
+// behind the triangle's plane are contacts with the face normal and their
+// depth below the plane (where the face crosses the plane the depth is zero
+// and adds nothing). Points made on the prism's side at a flat edge are
+// left out: they are corners of the triangulation, not of the contact
+// patch (the corners of the solid over the neighbour come from it).
+// Returns 1 if any was added.
+static int face_contacts(dxTriQuery *q, const dxTri *t, dReal a[][3], int n)
+{
+    dReal b[POLY_MAX][3], m[3], eps = DX_COLLIDE_EPS * q->scale;
+    int ta[POLY_MAX], tb[POLY_MAX];
+    for (int i = 0; i < n; i++) ta[i] = -1;
+    for (int k = 0; k < 3 && n > 0; k++) {
+        side_normal(t, k, m);
+        n = clip_polygon(a, ta, n, m, t->v[k], eps * dSqrt(dx_dot(m, m)), k, b, tb);
+        for (int i = 0; i < n; i++) {
+            for (int j = 0; j < 3; j++) a[i][j] = b[i][j];
+            ta[i] = tb[i];
+        }
+    }
+    int flat[3] = { flat_edge(q, t, 0), flat_edge(q, t, 1), flat_edge(q, t, 2) };
+    int added = 0;
+    for (int i = 0; i < n; i++) {
+        dReal depth = -height(t, a[i]);
+        if (depth < -eps || (ta[i] >= 0 && flat[ta[i]])) continue;
+        dxTriAdd(q, a[i], t->n, dMax(depth, 0), t->index);
+        added = 1;
+    }
+    return added;
 }
 
 static int box_test(dxTriQuery *q, const dxTri *t)
@@ -249,15 +314,15 @@ static int box_test(dxTriQuery *q, const dxTri *t)
     if (height(t, c) < 0) return 0;
     dReal h[3] = { side[0] / 2, side[1] / 2, side[2] / 2 }, ax[3][3];
     for (int j = 0; j < 3; j++) dx_axis(q->R, j, ax[j]);
-    if (separates(t, t->n, c, ax, h)) return 0;
+    if (separates_box(t, t->n, c, ax, h)) return 0;
     for (int j = 0; j < 3; j++)
-        if (separates(t, ax[j], c, ax, h)) return 0;
+        if (separates_box(t, ax[j], c, ax, h)) return 0;
     for (int k = 0; k < 3; k++) {
         dReal e[3], L[3];
         sub3(e, t->v[(k + 1) % 3], t->v[k]);
         for (int j = 0; j < 3; j++) {
             cross3(L, e, ax[j]);
-            if (separates(t, L, c, ax, h)) return 0;
+            if (separates_box(t, L, c, ax, h)) return 0;
         }
     }
     // Corners: bit j of the index picks the sign of axis j.
@@ -268,28 +333,12 @@ static int box_test(dxTriQuery *q, const dxTri *t)
                            (v & 2 ? h[1] : -h[1]) * ax[1][i] + (v & 4 ? h[2] : -h[2]) * ax[2][i];
     static const int faces[6][4] = { { 0, 2, 6, 4 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
                                      { 2, 3, 7, 6 }, { 0, 1, 3, 2 }, { 4, 5, 7, 6 } };
-    dReal sides[3][3];
-    for (int k = 0; k < 3; k++) side_normal(t, k, sides[k]);
-    dReal eps = DX_COLLIDE_EPS * q->scale;
     int added = 0;
     for (int f = 0; f < 6; f++) {
-        dReal a[POLY_MAX][3], b[POLY_MAX][3];
+        dReal a[POLY_MAX][3];
         for (int i = 0; i < 4; i++)
             for (int j = 0; j < 3; j++) a[i][j] = corner[faces[f][i]][j];
-        int n = 4;
-        for (int k = 0; k < 3 && n > 0; k++) {
-            n = clip_polygon(a, n, sides[k], t->v[k], b);
-            for (int i = 0; i < n; i++)
-                for (int j = 0; j < 3; j++) a[i][j] = b[i][j];
-        }
-        // The points on or behind the plane (touching counts); where the
-        // face crosses the plane the depth is zero and adds nothing.
-        for (int i = 0; i < n; i++) {
-            dReal depth = -height(t, a[i]);
-            if (depth < -eps) continue;
-            dxTriAdd(q, a[i], t->n, dMax(depth, 0), t->index);
-            added = 1;
-        }
+        added |= face_contacts(q, t, a, 4);
     }
     return added;
 }
@@ -297,4 +346,75 @@ static int box_test(dxTriQuery *q, const dxTri *t)
 int dxCollideTriMeshBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
 {
     return dxTriMeshCollide(o1, o2, flags, c, skip, box_test);
+}
+
+// ---- cylinder ---------------------------------------------------------------------
+
+// The cylinder as a prism of CYL_SIDES sides inscribed in it, turned about
+// its axis so that one side line lies where the cylinder reaches deepest
+// below the triangle: that depth is exact, and so is a cylinder lying on
+// its side (its lowest line is an edge of the prism). Elsewhere the prism
+// is inside the cylinder by at most r (1 - cos(pi / CYL_SIDES)), 0.5% of r.
+static int cylinder_test(dxTriQuery *q, const dxTri *t)
+{
+    const dxCylinder *cyl = (const dxCylinder *)q->other;
+    const dReal *c = q->pos, r = cyl->radius, h = cyl->length / 2;
+    if (height(t, c) < 0) return 0;
+    dReal a[3], x[3], y[3];
+    dx_axis(q->R, 2, a);
+    if (separates_cylinder(t, t->n, c, a, r, h) || separates_cylinder(t, a, c, a, r, h))
+        return 0;
+    for (int k = 0; k < 3; k++) {
+        dReal e[3], L[3];
+        sub3(e, t->v[(k + 1) % 3], t->v[k]);
+        cross3(L, e, a);
+        if (separates_cylinder(t, L, c, a, r, h)) return 0;
+    }
+    // x: the direction across the axis closest to -n (any if the axis is
+    // along n); y completes the frame.
+    dReal down = -dx_dot(t->n, a);
+    for (int i = 0; i < 3; i++) x[i] = -t->n[i] - down * a[i];
+    dReal xl = dSqrt(dx_dot(x, x));
+    if (xl > DX_COLLIDE_EPS) {
+        for (int i = 0; i < 3; i++) x[i] /= xl;
+    } else {
+        dx_axis(q->R, 0, x);
+    }
+    cross3(y, a, x);
+    // The corners, turning by 2 pi / CYL_SIDES (its cosine and sine).
+    const dReal step_c = (dReal)0.98078528040323044913, step_s = (dReal)0.19509032201612826785;
+    dReal rim[2][CYL_SIDES][3], cs = r, sn = 0;
+    for (int s = 0; s < CYL_SIDES; s++) {
+        for (int i = 0; i < 3; i++) {
+            dReal p = c[i] + cs * x[i] + sn * y[i];
+            rim[0][s][i] = p - h * a[i];
+            rim[1][s][i] = p + h * a[i];
+        }
+        dReal nc = cs * step_c - sn * step_s;
+        sn = sn * step_c + cs * step_s;
+        cs = nc;
+    }
+    int added = 0;
+    dReal poly[POLY_MAX][3];
+    for (int cap = 0; cap < 2; cap++) {
+        for (int s = 0; s < CYL_SIDES; s++)
+            for (int i = 0; i < 3; i++) poly[s][i] = rim[cap][s][i];
+        added |= face_contacts(q, t, poly, CYL_SIDES);
+    }
+    for (int s = 0; s < CYL_SIDES; s++) {
+        int u = (s + 1) % CYL_SIDES;
+        for (int i = 0; i < 3; i++) {
+            poly[0][i] = rim[0][s][i];
+            poly[1][i] = rim[0][u][i];
+            poly[2][i] = rim[1][u][i];
+            poly[3][i] = rim[1][s][i];
+        }
+        added |= face_contacts(q, t, poly, 4);
+    }
+    return added;
+}
+
+int dxCollideTriMeshCylinder(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
+{
+    return dxTriMeshCollide(o1, o2, flags, c, skip, cylinder_test);
 }

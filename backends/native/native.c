@@ -27,6 +27,7 @@ static dxCollider *const table[NATIVE_CLASSES][NATIVE_CLASSES] = {
                     [dCylinderClass] = dxCollideRayCylinder, [dPlaneClass] = dxCollideRayPlane },
     [dTriMeshClass] = { [dSphereClass] = dxCollideTriMeshSphere, [dBoxClass] = dxCollideTriMeshBox,
                         [dCapsuleClass] = dxCollideTriMeshCapsule,
+                        [dCylinderClass] = dxCollideTriMeshCylinder,
                         [dPlaneClass] = dxCollideTriMeshPlane, [dRayClass] = dxCollideTriMeshRay },
 };
 

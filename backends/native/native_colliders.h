@@ -29,6 +29,6 @@ dxCollider dxCollideCylinderBox, dxCollideCylinderCapsule, dxCollideCylinderCyli
 
 // Trimeshes (collide_trimesh*.c): side1 is the triangle of each contact.
 dxCollider dxCollideTriMeshSphere, dxCollideTriMeshBox, dxCollideTriMeshCapsule,
-    dxCollideTriMeshPlane, dxCollideTriMeshRay;
+    dxCollideTriMeshCylinder, dxCollideTriMeshPlane, dxCollideTriMeshRay;
 
 #endif
