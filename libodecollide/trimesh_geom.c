@@ -169,6 +169,7 @@ void dGeomTriMeshSetLastTransform(dGeomID g, const dMatrix4 last_trans)
     CHECK_TRIMESH(g, return);
     DX_CHECK_ARG(last_trans != NULL, return, "last_trans is NULL");
     memcpy(((dxTriMesh *)g)->last_transform, last_trans, sizeof(dMatrix4));
+    ((dxTriMesh *)g)->last_set = 1;
 }
 
 const dReal *dGeomTriMeshGetLastTransform(dGeomID g)

@@ -64,7 +64,7 @@ typedef struct dxTriMeshData dxTriMeshData;
 // Scratch memory of a geom's collisions, grown when needed and reused.
 typedef struct dxTriMeshRaw {
     dReal pos[3], n[3], depth;   // n: the direction the other geom leaves along
-    int tri;
+    int tri, tri2;               // the triangle, and the other's (a trimesh) or -1
 } dxTriMeshRaw;
 
 typedef struct dxTriMesh {
@@ -77,6 +77,7 @@ typedef struct dxTriMesh {
     dTriTriMergeCallback *merge_callback;
     unsigned tc_classes;                  // bit per class: temporal coherence on
     dMatrix4 last_transform;
+    int last_set;                         // SetLastTransform was called
     int *candidates, *hits;               // triangle lists of one query
     int candidates_cap, hits_cap;
     dxTriMeshRaw *raw;                    // contacts before reduction

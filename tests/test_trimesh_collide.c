@@ -501,6 +501,97 @@ static int test_ray_closed_box(void)
     return 0;
 }
 
+// ---- trimesh-trimesh ----------------------------------------------------------------
+
+static int veto_all(dGeomID mesh, dGeomID other, int tri)
+{
+    (void)mesh;
+    (void)other;
+    (void)tri;
+    return 0;
+}
+
+// Two closed boxes, one resting 0.1 into the other's top (turned 0.3 rad):
+// contacts straight down at the overlap's depth, in both boxes; mirrored;
+// the other mesh's per-triangle callback vetoes.
+static int test_trimesh_trimesh_stack(void)
+{
+    test_mesh ma, mb;
+    mesh_box(&ma, 2, 2, 2, 2);
+    mesh_box(&mb, 1, 1, 1, 3);
+    dGeomID a = dCreateTriMesh(0, ma.data, NULL, NULL, NULL);
+    dGeomID b = dCreateTriMesh(0, mb.data, NULL, NULL, NULL);
+    dGeomSetPosition(b, 0.2, -0.1, 1.4);
+    set_rot(b, 0, 0, 1, 0.3);
+    dContactGeom c[MAXC];
+    int n = collide_both(a, b, 8, c);
+    CHECK(n >= 3);
+    for (int k = 0; k < n; k++) {
+        CHECK_VEC(c[k].normal, 0, 0, -1, EPS);
+        double p[3] = { c[k].pos[0], c[k].pos[1], c[k].pos[2] }, lb[3];
+        dVector3 local;
+        dGeomGetPosRelPoint(b, p[0], p[1], p[2], local);
+        for (int i = 0; i < 3; i++) lb[i] = local[i];
+        CHECK(sdf_box(2, 2, 2, p) > -1e3 * EPS && sdf_box(1, 1, 1, lb) > -1e3 * EPS);
+    }
+    CHECK_NEAR(c[deepest(c, n)].depth, 0.1, 1e3 * EPS);
+    // Apart.
+    dGeomSetPosition(b, 0.2, -0.1, 1.51);
+    CHECK(dCollide(a, b, 8, c, sizeof c[0]) == 0);
+    dGeomSetPosition(b, 0.2, -0.1, 1.4);
+    dGeomTriMeshSetCallback(b, veto_all);
+    CHECK(dCollide(a, b, 8, c, sizeof c[0]) == 0);
+    dGeomDestroy(a);
+    dGeomDestroy(b);
+    mesh_free(&ma);
+    mesh_free(&mb);
+    return 0;
+}
+
+static void set_last_transform_at(dGeomID g, double x, double y, double z)
+{
+    const dReal *R = dGeomGetRotation(g);
+    dMatrix4 T = { R[0], R[4], R[8], 0, R[1], R[5], R[9], 0, R[2], R[6], R[10], 0,
+                   (dReal)x, (dReal)y, (dReal)z, 1 };
+    dGeomTriMeshSetLastTransform(g, T);
+}
+
+// Two single triangles crossing tip to tip: a's (z = 0, up) pokes 0.05
+// through b's (x = 0, facing -x) and b's pokes 0.05 down through a's, a tie.
+// Without last transforms either face may be taken; with them, the face b
+// moved into.
+static int test_trimesh_trimesh_last_transform(void)
+{
+    dReal va[3][4] = { { -2, -1, 0, 0 }, { 0.05, 0, 0, 0 }, { -2, 1, 0, 0 } };
+    dReal vb[3][4] = { { 0, -1, 2, 0 }, { 0, 1, 2, 0 }, { 0, 0, -0.05, 0 } };
+    dTriIndex idx[3] = { 0, 1, 2 };
+    dTriMeshDataID da = dGeomTriMeshDataCreate(), db = dGeomTriMeshDataCreate();
+    dGeomTriMeshDataBuildSimple(da, &va[0][0], 3, idx, 3);
+    dGeomTriMeshDataBuildSimple(db, &vb[0][0], 3, idx, 3);
+    dGeomID a = dCreateTriMesh(0, da, NULL, NULL, NULL);
+    dGeomID b = dCreateTriMesh(0, db, NULL, NULL, NULL);
+    dContactGeom c[MAXC];
+    int n = collide_both(a, b, 8, c);
+    CHECK(n == 1);
+    CHECK_NEAR(c[0].depth, 0.05, 1e3 * EPS);
+    CHECK(fabs(c[0].normal[2] + 1) < 1e3 * EPS || fabs(c[0].normal[0] + 1) < 1e3 * EPS);
+    set_last_transform_at(a, 0, 0, 0);
+    set_last_transform_at(b, 0, 0, 0.5);   // b came down
+    n = collide_both(a, b, 8, c);
+    CHECK(n == 1);
+    CHECK_VEC(c[0].normal, 0, 0, -1, 1e3 * EPS);
+    set_last_transform_at(b, 0.5, 0, 0);   // b came from +x
+    n = collide_both(a, b, 8, c);
+    CHECK(n == 1);
+    CHECK_VEC(c[0].normal, -1, 0, 0, 1e3 * EPS);
+    CHECK_NEAR(c[0].depth, 0.05, 1e3 * EPS);
+    dGeomDestroy(a);
+    dGeomDestroy(b);
+    dGeomTriMeshDataDestroy(da);
+    dGeomTriMeshDataDestroy(db);
+    return 0;
+}
+
 // ---- callbacks -----------------------------------------------------------------------
 
 static int veto_odd(dGeomID mesh, dGeomID other, int tri)
@@ -622,6 +713,8 @@ const test_case test_cases[] = {
     TEST_CASE(test_plane),
     TEST_CASE(test_ray_terrain),
     TEST_CASE(test_ray_closed_box),
+    TEST_CASE(test_trimesh_trimesh_stack),
+    TEST_CASE(test_trimesh_trimesh_last_transform),
     TEST_CASE(test_callbacks),
     TEST_CASE(test_no_allocation_when_warm),
     TEST_END,

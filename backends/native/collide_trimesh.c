@@ -27,6 +27,12 @@ void dxTriLoad(const dxTriMeshData *d, int t, dxTri *out)
 
 void dxTriAdd(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth, int tri)
 {
+    dxTriAdd2(q, pos, n, depth, tri, -1);
+}
+
+void dxTriAdd2(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth, int tri,
+               int tri2)
+{
     dxTriMesh *m = q->mesh;
     if (m->raw_count == m->raw_cap) {
         int ncap = m->raw_cap ? 2 * m->raw_cap : 32;
@@ -41,6 +47,7 @@ void dxTriAdd(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth, 
     }
     r->depth = depth;
     r->tri = tri;
+    r->tri2 = tri2;
 }
 
 static dReal dist2(const dReal a[3], const dReal b[3])
@@ -49,9 +56,18 @@ static dReal dist2(const dReal a[3], const dReal b[3])
     return dx_dot(d, d);
 }
 
+// The triangle index of a contact merged from those of triangles a and b
+// of mesh g (its merge callback's, else -1).
+static int merged_side(dxGeom *g, int a, int b)
+{
+    if (a == b) return a;
+    dxTriMesh *m = g->ops->cls == dTriMeshClass ? (dxTriMesh *)g : NULL;
+    return m && m->merge_callback ? m->merge_callback(g, a, b) : -1;
+}
+
 // Merge contacts at (nearly) the same point with (nearly) the same normal,
 // keeping the deeper; returns the new count.
-static int merge_duplicates(dxTriMesh *m, dReal tol)
+static int merge_duplicates(dxTriMesh *m, dxGeom *other, dReal tol)
 {
     dxTriMeshRaw *r = m->raw;
     int n = 0;
@@ -64,9 +80,10 @@ static int merge_duplicates(dxTriMesh *m, dReal tol)
             r[n++] = r[i];
             continue;
         }
-        int a = r[j].tri, b = r[i].tri;
+        int a = r[j].tri, b = r[i].tri, a2 = r[j].tri2, b2 = r[i].tri2;
         if (r[i].depth > r[j].depth) r[j] = r[i];
-        r[j].tri = a == b ? a : m->merge_callback ? m->merge_callback(&m->g, a, b) : -1;
+        r[j].tri = merged_side(&m->g, a, b);
+        if (a2 >= 0 || b2 >= 0) r[j].tri2 = merged_side(other, a2, b2);
     }
     return n;
 }
@@ -232,13 +249,12 @@ static void select_spread(dxTriMeshRaw *r, int n, int keep)
     }
 }
 
-// Reduce the raw contacts and write them in world coordinates.
-static int finish(dxTriQuery *q, int flags, dContactGeom *c, int skip)
+int dxTriMeshFinish(dxTriQuery *q, int flags, dContactGeom *c, int skip)
 {
     dxTriMesh *m = q->mesh;
     dxGeom *g = &m->g;
     dReal tol = q->scale * (dReal)1e-5;
-    int n = merge_duplicates(m, tol);
+    int n = merge_duplicates(m, q->other, tol);
     n = prune_flat_groups(m, n, tol);
     int max = dx_max_contacts(flags);
     if (n > max) {
@@ -253,6 +269,7 @@ static int finish(dxTriQuery *q, int flags, dContactGeom *c, int skip)
         for (int k = 0; k < 3; k++) nw[k] = -nw[k];   // into the mesh (g1)
         dx_put_contact(c, i, skip, pos, nw, r->depth, g, q->other);
         dxContactAt(c, i, skip)->side1 = r->tri;
+        dxContactAt(c, i, skip)->side2 = r->tri2;
     }
     return n;
 }
@@ -315,7 +332,7 @@ int dxTriMeshCollide(dxGeom *mesh, dxGeom *other, int flags, dContactGeom *c, in
         m->hits[hits++] = t;
     }
     if (hits > 0 && m->array_callback) m->array_callback(mesh, other, m->hits, hits);
-    return m->raw_count ? finish(&q, flags, c, skip) : 0;
+    return m->raw_count ? dxTriMeshFinish(&q, flags, c, skip) : 0;
 }
 
 // ---- triangle geometry --------------------------------------------------------
@@ -403,6 +420,66 @@ int dxTriFeatureNormal(const dxTriQuery *q, const dxTri *t, int feature, const d
     dReal s = dx_dot(cr, af) < 0 ? -1 : 1;
     for (int i = 0; i < 3; i++) m[i] = s * cr[i];
     return dx_dot(m, dir) >= 0 ? 1 : -1;
+}
+
+void dxTriSideNormal(const dxTri *t, int k, dReal m[3])
+{
+    dReal e[3] = { t->v[(k + 1) % 3][0] - t->v[k][0], t->v[(k + 1) % 3][1] - t->v[k][1],
+                   t->v[(k + 1) % 3][2] - t->v[k][2] };
+    m[0] = t->n[1] * e[2] - t->n[2] * e[1];
+    m[1] = t->n[2] * e[0] - t->n[0] * e[2];
+    m[2] = t->n[0] * e[1] - t->n[1] * e[0];
+}
+
+// Keep the part of polygon p (n points, tags tp) where m . (x - o) >= -slack;
+// a point made on this boundary gets the tag `made`.
+static int clip_polygon(dReal p[][3], const int *tp, int n, const dReal m[3], const dReal o[3],
+                        dReal slack, int made, dReal out[][3], int *tout)
+{
+    int k = 0;
+    for (int i = 0; i < n; i++) {
+        const dReal *a = p[i], *b = p[(i + 1) % n];
+        dReal da[3] = { a[0] - o[0], a[1] - o[1], a[2] - o[2] };
+        dReal db[3] = { b[0] - o[0], b[1] - o[1], b[2] - o[2] };
+        dReal fa = dx_dot(m, da) + slack, fb = dx_dot(m, db) + slack;
+        if (fa >= 0) {
+            for (int j = 0; j < 3; j++) out[k][j] = a[j];
+            tout[k++] = tp[i];
+        }
+        if ((fa >= 0) != (fb >= 0)) {
+            dReal s = fa / (fa - fb);
+            for (int j = 0; j < 3; j++) out[k][j] = a[j] + s * (b[j] - a[j]);
+            tout[k++] = made;
+        }
+    }
+    return k;
+}
+
+// Whether t's edge k joins two coplanar faces (an edge only of the
+// triangulation, not of the surface).
+static int flat_edge(const dxTriQuery *q, const dxTri *t, int k)
+{
+    if (!q->data) return 0;
+    if (t->features & (DX_TRI_EDGE_FEATURE << k)) return 0;
+    int u = t->neighbour[k];
+    return u >= 0 && dx_dot(t->n, q->data->normal + 3 * u) > 1 - 10 * DX_COLLIDE_EPS;
+}
+
+int dxTriClipToPrism(const dxTriQuery *q, const dxTri *t, dReal a[][3], int n, int *made)
+{
+    dReal b[DX_TRI_POLY_MAX][3], m[3], eps = DX_COLLIDE_EPS * q->scale;
+    int tb[DX_TRI_POLY_MAX];
+    for (int i = 0; i < n; i++) made[i] = DX_TRI_MADE_NOT;
+    for (int k = 0; k < 3 && n > 0; k++) {
+        dxTriSideNormal(t, k, m);
+        int tag = flat_edge(q, t, k) ? DX_TRI_MADE_AT_FLAT_EDGE : DX_TRI_MADE_AT_EDGE;
+        n = clip_polygon(a, made, n, m, t->v[k], eps * dSqrt(dx_dot(m, m)), tag, b, tb);
+        for (int i = 0; i < n; i++) {
+            for (int j = 0; j < 3; j++) a[i][j] = b[i][j];
+            made[i] = tb[i];
+        }
+    }
+    return n;
 }
 
 // ---- trimesh-plane ----------------------------------------------------------------

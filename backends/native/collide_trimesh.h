@@ -41,6 +41,10 @@ typedef int dxTriTest(dxTriQuery *q, const dxTri *t);
 // geom leaves the mesh, depth >= 0 (mesh frame).
 void dxTriAdd(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth, int tri);
 
+// The same with the other's triangle (the other geom being a trimesh).
+void dxTriAdd2(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth, int tri,
+               int tri2);
+
 // The collider body: every triangle whose box meets the other geom's box
 // (mesh frame) and that the per-triangle callback accepts goes through
 // test; the array callback then sees those that touch; the contacts are
@@ -49,6 +53,12 @@ void dxTriAdd(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth, 
 // each the farthest from those kept) and written.
 int dxTriMeshCollide(dxGeom *mesh, dxGeom *other, int flags, dContactGeom *c, int skip,
                      dxTriTest *test);
+
+// Reduce the contacts gathered in q->mesh->raw (near-duplicates merged, the
+// triangles of a merged one given to the merge callbacks, flat groups kept
+// to their hull corners, at most flags & 0xffff kept: the deepest first,
+// then the spread) and write them in world coordinates; returns the count.
+int dxTriMeshFinish(dxTriQuery *q, int flags, dContactGeom *c, int skip);
 
 // Load triangle t (dxTri) from the data.
 void dxTriLoad(const dxTriMeshData *d, int t, dxTri *out);
@@ -65,5 +75,17 @@ int dxTriClosestPoint(const dxTri *t, const dReal p[3], dReal q[3]);
 // bumps); -1 not at all (dir is outside the feature's region: a neighbour
 // face or edge is nearer and gives the contact).
 int dxTriFeatureNormal(const dxTriQuery *q, const dxTri *t, int feature, const dReal dir[3]);
+
+// The inward normal (not unit) of the side of t's prism through edge k.
+void dxTriSideNormal(const dxTri *t, int k, dReal m[3]);
+
+// Clip the polygon a (n corners, at most DX_TRI_POLY_MAX - 3) to the prism
+// of t (its sides widened by rounding): returns the new corner count, and
+// for each corner in made[] whether it was made on a side of the prism, at
+// an edge between coplanar faces (then a corner of the triangulation only,
+// not of a contact patch; never if q->data is NULL) or another edge.
+enum { DX_TRI_POLY_MAX = 36 };
+enum { DX_TRI_MADE_NOT, DX_TRI_MADE_AT_EDGE, DX_TRI_MADE_AT_FLAT_EDGE };
+int dxTriClipToPrism(const dxTriQuery *q, const dxTri *t, dReal a[][3], int n, int *made);
 
 #endif

@@ -105,14 +105,6 @@ int dxCollideTriMeshSphere(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, i
 
 // ---- capsule --------------------------------------------------------------------
 
-// The inward normal of edge k's side of the prism (not unit).
-static void side_normal(const dxTri *t, int k, dReal m[3])
-{
-    dReal e[3];
-    sub3(e, t->v[(k + 1) % 3], t->v[k]);
-    cross3(m, t->n, e);
-}
-
 // The parameter range [*lo, *hi] of p0 + s (p1 - p0) inside the prism of t
 // (borders widened by rounding): 0 if empty.
 static int clip_to_prism(const dxTri *t, const dReal p0[3], const dReal p1[3], dReal tol,
@@ -122,7 +114,7 @@ static int clip_to_prism(const dxTri *t, const dReal p0[3], const dReal p1[3], d
     *hi = 1;
     for (int k = 0; k < 3; k++) {
         dReal m[3], a[3], b[3];
-        side_normal(t, k, m);
+        dxTriSideNormal(t, k, m);
         sub3(a, p0, t->v[k]);
         sub3(b, p1, t->v[k]);
         dReal slack = tol * dSqrt(dx_dot(m, m));
@@ -237,43 +229,9 @@ static int separates_cylinder(const dxTri *t, const dReal L[3], const dReal c[3]
     return hi < bc - br || lo > bc + br;
 }
 
-// A cylinder's cap has CYL_SIDES corners; clipped by three planes a face
-// gains at most three.
-enum { CYL_SIDES = 32, POLY_MAX = CYL_SIDES + 4 };
-
-// Keep the part of polygon p (n points, tags tp) where m . (x - o) >= -slack;
-// a point made on this boundary gets the tag `made`.
-static int clip_polygon(dReal p[][3], const int *tp, int n, const dReal m[3], const dReal o[3],
-                        dReal slack, int made, dReal out[][3], int *tout)
-{
-    int k = 0;
-    for (int i = 0; i < n; i++) {
-        const dReal *a = p[i], *b = p[(i + 1) % n];
-        dReal da[3], db[3];
-        sub3(da, a, o);
-        sub3(db, b, o);
-        dReal fa = dx_dot(m, da) + slack, fb = dx_dot(m, db) + slack;
-        if (fa >= 0) {
-            for (int j = 0; j < 3; j++) out[k][j] = a[j];
-            tout[k++] = tp[i];
-        }
-        if ((fa >= 0) != (fb >= 0)) {
-            dReal s = fa / (fa - fb);
-            for (int j = 0; j < 3; j++) out[k][j] = a[j] + s * (b[j] - a[j]);
-            tout[k++] = made;
-        }
-    }
-    return k;
-}
-
-// Whether t's edge k joins two coplanar faces (an edge only of the
-// triangulation, not of the surface).
-static int flat_edge(const dxTriQuery *q, const dxTri *t, int k)
-{
-    if (t->features & (DX_TRI_EDGE_FEATURE << k)) return 0;
-    int u = t->neighbour[k];
-    return u >= 0 && dx_dot(t->n, q->data->normal + 3 * u) > 1 - 10 * DX_COLLIDE_EPS;
-}
+// A cylinder's cap has CYL_SIDES corners (a polygon clipped to a prism
+// gains at most three).
+enum { CYL_SIDES = 32, POLY_MAX = DX_TRI_POLY_MAX };
 
 // One face (polygon a, n corners) of a convex solid against triangle t:
 // clipped to the triangle's prism (widened by rounding), its points on or
@@ -285,22 +243,13 @@ static int flat_edge(const dxTriQuery *q, const dxTri *t, int k)
 // Returns 1 if any was added.
 static int face_contacts(dxTriQuery *q, const dxTri *t, dReal a[][3], int n)
 {
-    dReal b[POLY_MAX][3], m[3], eps = DX_COLLIDE_EPS * q->scale;
-    int ta[POLY_MAX], tb[POLY_MAX];
-    for (int i = 0; i < n; i++) ta[i] = -1;
-    for (int k = 0; k < 3 && n > 0; k++) {
-        side_normal(t, k, m);
-        n = clip_polygon(a, ta, n, m, t->v[k], eps * dSqrt(dx_dot(m, m)), k, b, tb);
-        for (int i = 0; i < n; i++) {
-            for (int j = 0; j < 3; j++) a[i][j] = b[i][j];
-            ta[i] = tb[i];
-        }
-    }
-    int flat[3] = { flat_edge(q, t, 0), flat_edge(q, t, 1), flat_edge(q, t, 2) };
+    int made[POLY_MAX];
+    n = dxTriClipToPrism(q, t, a, n, made);
+    dReal eps = DX_COLLIDE_EPS * q->scale;
     int added = 0;
     for (int i = 0; i < n; i++) {
         dReal depth = -height(t, a[i]);
-        if (depth < -eps || (ta[i] >= 0 && flat[ta[i]])) continue;
+        if (depth < -eps || made[i] == DX_TRI_MADE_AT_FLAT_EDGE) continue;
         dxTriAdd(q, a[i], t->n, dMax(depth, 0), t->index);
         added = 1;
     }

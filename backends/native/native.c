@@ -28,7 +28,8 @@ static dxCollider *const table[NATIVE_CLASSES][NATIVE_CLASSES] = {
     [dTriMeshClass] = { [dSphereClass] = dxCollideTriMeshSphere, [dBoxClass] = dxCollideTriMeshBox,
                         [dCapsuleClass] = dxCollideTriMeshCapsule,
                         [dCylinderClass] = dxCollideTriMeshCylinder,
-                        [dPlaneClass] = dxCollideTriMeshPlane, [dRayClass] = dxCollideTriMeshRay },
+                        [dPlaneClass] = dxCollideTriMeshPlane, [dRayClass] = dxCollideTriMeshRay,
+                        [dTriMeshClass] = dxCollideTriMeshTriMesh },
 };
 
 static int native_supports(int c1, int c2)

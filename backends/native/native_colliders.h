@@ -29,6 +29,7 @@ dxCollider dxCollideCylinderBox, dxCollideCylinderCapsule, dxCollideCylinderCyli
 
 // Trimeshes (collide_trimesh*.c): side1 is the triangle of each contact.
 dxCollider dxCollideTriMeshSphere, dxCollideTriMeshBox, dxCollideTriMeshCapsule,
-    dxCollideTriMeshCylinder, dxCollideTriMeshPlane, dxCollideTriMeshRay;
+    dxCollideTriMeshCylinder, dxCollideTriMeshPlane, dxCollideTriMeshRay,
+    dxCollideTriMeshTriMesh;
 
 #endif
