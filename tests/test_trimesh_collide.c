@@ -676,6 +676,46 @@ static int test_callbacks(void)
     return 0;
 }
 
+// The FCL and Bullet adapters do not take trimesh pairs: selected, they
+// leave them to native (the same contacts), saying so once.
+static int test_other_backends_fall_back(void)
+{
+    const char *const *names = dCollisionListBackends();
+    int others = 0;
+    test_mesh m;
+    mesh_grid(&m, 6, 2, wavy);
+    dGeomID g = dCreateTriMesh(0, m.data, NULL, NULL, NULL);
+    dGeomID prims[2] = { dCreateSphere(0, 0.4), dCreateBox(0, 0.5, 0.6, 0.7) };
+    dGeomSetPosition(prims[0], 0.3, 0.2, 0.2);
+    dGeomSetPosition(prims[1], -0.4, 0.5, 0.1);
+    dContactGeom want[2][MAXC], got[MAXC];
+    int nwant[2];
+    for (int p = 0; p < 2; p++) nwant[p] = dCollide(g, prims[p], MAXC, want[p], sizeof got[0]);
+    for (int i = 0; names[i]; i++) {
+        if (strcmp(names[i], "native") == 0) continue;
+        others++;
+        test_capture_reports();
+        CHECK(dCollisionSetBackend(names[i]));
+        for (int p = 0; p < 2; p++) {
+            CHECK(nwant[p] > 0);
+            CHECK(dCollide(g, prims[p], MAXC, got, sizeof got[0]) == nwant[p]);
+            for (int k = 0; k < nwant[p]; k++) {
+                const dContactGeom *a = &got[k], *b = &want[p][k];
+                CHECK(a->depth == b->depth && a->side1 == b->side1 && a->g2 == b->g2);
+                for (int j = 0; j < 3; j++)
+                    CHECK(a->pos[j] == b->pos[j] && a->normal[j] == b->normal[j]);
+            }
+        }
+        CHECK(test_captured_contains("trimesh"));
+        test_release_reports();
+        dCollisionSetBackend("native");
+    }
+    for (int p = 0; p < 2; p++) dGeomDestroy(prims[p]);
+    dGeomDestroy(g);
+    mesh_free(&m);
+    return others ? 0 : test_skip("no other backend built");
+}
+
 // Once the scratch has grown, collisions allocate nothing.
 static int test_no_allocation_when_warm(void)
 {
@@ -716,6 +756,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_trimesh_trimesh_stack),
     TEST_CASE(test_trimesh_trimesh_last_transform),
     TEST_CASE(test_callbacks),
+    TEST_CASE(test_other_backends_fall_back),
     TEST_CASE(test_no_allocation_when_warm),
     TEST_END,
 };
