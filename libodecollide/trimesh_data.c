@@ -72,7 +72,7 @@ static void clear_derived(dxTriMeshData *d)
         dFree(d->neighbour, 3 * n * sizeof(int));
         dFree(d->features, n);
         dFree(d->order, n * sizeof(int));
-        dFree(d->nodes, 2 * n * sizeof(dxTriMeshNode));
+        dFree(d->nodes, (size_t)d->node_count * sizeof(dxTriMeshNode));
         if (d->built_flags) dFree(d->built_flags, n);
         dFree(d->weld, (size_t)d->vertex_count * sizeof(int));
         dFree(d->vertex_first, ((size_t)d->vertex_count + 1) * sizeof(int));

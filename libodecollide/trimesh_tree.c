@@ -108,6 +108,9 @@ void dxTriMeshBuildTree(dxTriMeshData *d)
         for (int k = 0; k < 3; k++) centre[3 * t + k] = (box[6 * t + k] + box[6 * t + 3 + k]) / 2;
     }
     build_node(d, centre, box, 0, d->tri_count);
+    // Fewer nodes than the 2 n reserved are used (about n / 2): give the rest back.
+    d->nodes = (dxTriMeshNode *)dRealloc(d->nodes, 2 * n * sizeof(dxTriMeshNode),
+                                         (size_t)d->node_count * sizeof(dxTriMeshNode));
     dFree(box, 6 * n * sizeof(dReal));
     dFree(centre, 3 * n * sizeof(dReal));
 }

@@ -243,9 +243,14 @@ enum { CYL_SIDES = 32, POLY_MAX = DX_TRI_POLY_MAX };
 // Returns 1 if any was added.
 static int face_contacts(dxTriQuery *q, const dxTri *t, dReal a[][3], int n)
 {
+    // A face wholly in front of the plane adds nothing (clipping keeps
+    // points within the polygon): skip the clipping.
+    dReal eps = DX_COLLIDE_EPS * q->scale;
+    int behind = 0;
+    for (int i = 0; i < n && !behind; i++) behind = height(t, a[i]) <= eps;
+    if (!behind) return 0;
     int made[POLY_MAX];
     n = dxTriClipToPrism(q, t, a, n, made);
-    dReal eps = DX_COLLIDE_EPS * q->scale;
     int added = 0;
     for (int i = 0; i < n; i++) {
         dReal depth = -height(t, a[i]);
