@@ -20,8 +20,9 @@ enum {
 // Per-triangle feature bits (same values as dMESHDATAUSE_*): edge k joins
 // vertices k and k+1 (mod 3). A set bit means the edge or vertex is a real
 // feature of the surface: on the border or convex. Edges between coplanar
-// faces and concave edges are not, nor vertices with no such edge: a
-// contact found there takes the face normal instead (no internal-edge bumps).
+// faces and concave edges are not, nor vertices with no such edge: the
+// colliders leave contacts there to the neighbouring faces (no internal-edge
+// bumps).
 enum { DX_TRI_EDGE_FEATURE = 0x01, DX_TRI_VERTEX_FEATURE = 0x08 };
 
 // A node of the box tree: a leaf holds count > 0 triangles order[first ..];

@@ -15,7 +15,7 @@
 // One pair's query, everything in the mesh frame.
 typedef struct dxTriQuery {
     dxTriMesh *mesh;
-    const dxTriMeshData *data;
+    const dxTriMeshData *data;   // the mesh's data (NULL: see dxTriClipToPrism)
     dxGeom *other;
     dReal pos[3];      // the other geom's position ...
     dReal R[12];       // ... and rotation (row-major 3x4) in the mesh frame

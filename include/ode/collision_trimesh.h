@@ -129,12 +129,15 @@ ODE_API_DEPRECATED ODE_API void dGeomTriMeshDataGetBuffer(dTriMeshDataID g, unsi
                                                           int *bufLen);
 ODE_API_DEPRECATED ODE_API void dGeomTriMeshDataSetBuffer(dTriMeshDataID g, unsigned char *buf);
 
-/** Per-triangle callback: return 0 to ignore the triangle for this pair. */
+/** Per-triangle callback, asked for each triangle near the other geom before it
+ *  is tested (for rays, for each hit after the ray callback): return 0 to
+ *  ignore the triangle for this pair. */
 typedef int dTriCallback(dGeomID TriMesh, dGeomID RefObject, int TriangleIndex);
 ODE_API void dGeomTriMeshSetCallback(dGeomID g, dTriCallback *Callback);
 ODE_API dTriCallback *dGeomTriMeshGetCallback(dGeomID g);
 
-/** Called once per pair with every triangle that touches the other geom. */
+/** Called once per collision with every triangle that touches the other geom (of
+ *  those the per-triangle callback let through); not for rays. */
 typedef void dTriArrayCallback(dGeomID TriMesh, dGeomID RefObject, const int *TriIndices,
                                int TriCount);
 ODE_API void dGeomTriMeshSetArrayCallback(dGeomID g, dTriArrayCallback *ArrayCallback);
