@@ -22,7 +22,8 @@ void dxTriMeshBuildTree(dxTriMeshData *d);   // trimesh_tree.c
 void dxTriMeshRefitTree(dxTriMeshData *d);
 
 #define CHECK_DATA(d, on_fail) \
-    DX_CHECK_ARG(dxTriMeshDataIsLive(d), on_fail, "trimesh data is NULL or was destroyed")
+    DX_CHECK_ARG(dxTriMeshDataIsLive(d) && !(d)->destroy_pending, on_fail, \
+                 "trimesh data is NULL or was destroyed")
 
 void dxTriMeshVertex(const dxTriMeshData *d, int i, dReal out[3])
 {

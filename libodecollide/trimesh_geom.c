@@ -63,6 +63,7 @@ static void detach_data(dxTriMesh *m)
 
 static void attach_data(dxTriMesh *m, dxTriMeshData *d)
 {
+    if (m->data == d) return;
     detach_data(m);
     m->data = d;
     if (!d) return;
@@ -90,8 +91,8 @@ void dxTriMeshDataChanged(dxTriMeshData *d)
 dGeomID dCreateTriMesh(dSpaceID space, dTriMeshDataID Data, dTriCallback *Callback,
                        dTriArrayCallback *ArrayCallback, dTriRayCallback *RayCallback)
 {
-    DX_CHECK_ARG(Data == NULL || dxTriMeshDataIsLive(Data), return NULL,
-                 "Data was destroyed");
+    DX_CHECK_ARG(Data == NULL || (dxTriMeshDataIsLive(Data) && !Data->destroy_pending),
+                 return NULL, "Data was destroyed");
     dxTriMesh *m = (dxTriMesh *)dxGeomCreate(sizeof *m, &dx_trimesh_ops, DX_GEOM_PLACEABLE,
                                              NULL);
     m->callback = Callback;
@@ -106,7 +107,8 @@ dGeomID dCreateTriMesh(dSpaceID space, dTriMeshDataID Data, dTriCallback *Callba
 void dGeomTriMeshSetData(dGeomID g, dTriMeshDataID Data)
 {
     CHECK_TRIMESH(g, return);
-    DX_CHECK_ARG(Data == NULL || dxTriMeshDataIsLive(Data), return, "Data was destroyed");
+    DX_CHECK_ARG(Data == NULL || (dxTriMeshDataIsLive(Data) && !Data->destroy_pending), return,
+                 "Data was destroyed");
     attach_data((dxTriMesh *)g, Data);
     dxGeomShapeChanged(g);
 }

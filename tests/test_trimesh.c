@@ -311,6 +311,14 @@ static int test_destroy_data_first(void)
     CHECK(dCollide(a, s, 4, c, sizeof c[0]) == 1);
     dGeomDestroy(a);
     CHECK(dCollide(b, s, 4, c, sizeof c[0]) == 1);
+    // Destroyed is destroyed: it cannot be given to a geom or destroyed again.
+    dTriMeshDataID gone = dGeomTriMeshGetData(b);
+    test_capture_reports();
+    CHECK(dCreateTriMesh(0, gone, NULL, NULL, NULL) == NULL);
+    dGeomTriMeshSetData(b, gone);
+    dGeomTriMeshDataDestroy(gone);
+    CHECK(test_captured_count() == 3 && test_captured_contains("destroyed"));
+    test_release_reports();
     dGeomDestroy(b);
     dGeomDestroy(s);
     mesh_free(&m);
