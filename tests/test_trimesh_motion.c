@@ -4,7 +4,8 @@
 // behave as on a plane (no internal-edge bumps): a ball rolling and a box
 // sliding diagonally across a grid mesh keep their vertical speed under
 // 1 mm/s, every contact normal within 1 degree of the face normal, and
-// follow the same path as on a plane.
+// follow the same path as on a plane; a mesh body comes to rest on a plane
+// and on meshes.
 
 #include "test.h"
 #include "test_trimesh_meshes.h"
@@ -125,8 +126,60 @@ static int test_box_slides_as_on_plane(void)
     return 0;
 }
 
+// A closed box mesh (1 x 0.8 x 0.6, mass from dMassSetTrimesh) dropped
+// tilted onto a floor: on a plane, a grid mesh and a closed box mesh it
+// comes to rest flat on its face, its centre 0.3 up.
+static int test_mesh_body_settles(void)
+{
+    for (int floor_kind = 0; floor_kind < 3; floor_kind++) {
+        world = dWorldCreate();
+        dWorldSetGravity(world, 0, 0, -9.81);
+        contacts = dJointGroupCreate(0);
+        dSpaceID space = dHashSpaceCreate(0);
+        test_mesh fl = { 0 }, m;
+        if (floor_kind == 0) {
+            dCreatePlane(space, 0, 0, 1, 0);
+        } else if (floor_kind == 1) {
+            mesh_grid(&fl, 16, 5, NULL);
+            dCreateTriMesh(space, fl.data, NULL, NULL, NULL);
+        } else {
+            mesh_box(&fl, 10, 10, 1, 8);
+            dGeomSetPosition(dCreateTriMesh(space, fl.data, NULL, NULL, NULL), 0, 0, -0.5);
+        }
+        mesh_box(&m, 1, 0.8, 0.6, 2);
+        dGeomID g = dCreateTriMesh(space, m.data, NULL, NULL, NULL);
+        dBodyID b = dBodyCreate(world);
+        dGeomSetBody(g, b);
+        dMass mass;
+        dMassSetTrimesh(&mass, 1, g);
+        CHECK_NEAR(mass.mass, 0.48, TOL(1e-9, 1e-5));
+        dBodySetMass(b, &mass);
+        dBodySetPosition(b, 0.3, 0.2, 1);
+        dMatrix3 R;
+        dRFromAxisAndAngle(R, 1, 0.5, 0.2, 0.4);
+        dBodySetRotation(b, R);
+        friction = 0.8;
+        for (int s = 0; s < 600; s++) {
+            dSpaceCollide(space, NULL, near_cb);
+            dWorldQuickStep(world, 0.01);
+            dJointGroupEmpty(contacts);
+        }
+        const dReal *p = dBodyGetPosition(b), *Rb = dBodyGetRotation(b);
+        CHECK_NEAR(p[2], 0.3, 2e-3);
+        CHECK(fabs(Rb[10]) > 0.999);   // a face down
+        CHECK(dCalcVectorLength3(dBodyGetLinearVel(b)) < 1e-2);
+        dSpaceDestroy(space);
+        dJointGroupDestroy(contacts);
+        dWorldDestroy(world);
+        mesh_free(&m);
+        mesh_free(&fl);
+    }
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_ball_rolls_as_on_plane),
     TEST_CASE(test_box_slides_as_on_plane),
+    TEST_CASE(test_mesh_body_settles),
     TEST_END,
 };

@@ -6,9 +6,9 @@
 // of triangles that cross (an edge of one passes through the other) gives
 // contacts along one of the two face normals: the points of either triangle
 // within the other's prism and behind its plane, at their depths below it.
-// Which face: the one a corner of the other triangle is behind (a corner
-// in a face), else the one with the shallower penetration; where the two are
-// nearly as deep and both geoms have a last transform
+// Which face: not one behind which the other mesh has the centre of its
+// box (as the convex pairs are one-sided), else the one with the shallower
+// penetration; where the two are nearly as deep and both geoms have a last transform
 // (dGeomTriMeshSetLastTransform, guide 10.7.6), the one the other triangle
 // moved into since then. Both meshes' per-triangle, array
 // and merge callbacks apply; side1 and side2 are the two triangles.
@@ -52,22 +52,20 @@ static int triangles_cross(const dxTri *a, const dxTri *b)
 }
 
 // The points of triangle `moving` within the prism of `face` and behind its
-// plane (into pts, depths into depth); returns how many, the deepest depth
-// in *most, and in *corner whether a corner of `moving` is among them.
+// plane (into pts, depths into depth); returns how many, and the deepest
+// depth in *most.
 static int points_behind(const dxTriQuery *q, const dxTri *face, const dxTri *moving,
-                         dReal pts[][3], dReal *depth, dReal *most, int *corner)
+                         dReal pts[][3], dReal *depth, dReal *most)
 {
     int made[DX_TRI_POLY_MAX];
     for (int k = 0; k < 3; k++)
         for (int i = 0; i < 3; i++) pts[k][i] = moving->v[k][i];
     int n = dxTriClipToPrism(q, face, pts, 3, made), kept = 0;
     *most = 0;
-    *corner = 0;
     for (int j = 0; j < n; j++) {
         dReal d = 0;
         for (int i = 0; i < 3; i++) d -= face->n[i] * (pts[j][i] - face->v[0][i]);
         if (d <= 0) continue;
-        if (made[j] == DX_TRI_MADE_NOT) *corner = 1;
         for (int i = 0; i < 3; i++) pts[kept][i] = pts[j][i];
         depth[kept++] = d;
         if (d > *most) *most = d;
@@ -97,7 +95,8 @@ static int last_position(const dxTriMesh *a, const dxTriMesh *b, const dReal p[3
 
 // The contacts of triangles t (first mesh) and u (second, in the first's
 // frame) if they cross; returns 1 then.
-static int pair_contacts(dxTriQuery *q, const dxTri *t, const dxTri *u)
+static int pair_contacts(dxTriQuery *q, const dxTri *t, const dxTri *u, const dReal centre_a[3],
+                         const dReal centre_b[3])
 {
     if (!triangles_cross(t, u)) return 0;
     dReal pu[DX_TRI_POLY_MAX][3], du[DX_TRI_POLY_MAX], mu_;
@@ -105,14 +104,20 @@ static int pair_contacts(dxTriQuery *q, const dxTri *t, const dxTri *u)
     // u's data is not in this frame: its flat edges are not looked up.
     dxTriQuery qu = *q;
     qu.data = NULL;
-    int cu, ct;
-    int nu = points_behind(q, t, u, pu, du, &mu_, &cu);   // u's behind t: u leaves along n_t
-    int nt = points_behind(&qu, u, t, pt, dt, &mt_, &ct);   // t's behind u: along -n_u
+    int nu = points_behind(q, t, u, pu, du, &mu_);   // u's points behind t: u leaves along n_t
+    int nt = points_behind(&qu, u, t, pt, dt, &mt_);   // t's behind u: u leaves along -n_u
+    // A direction is out of the question if the mesh it moves has its centre
+    // behind the face it would leave (as for the one-sided convex pairs).
+    dReal d[3];
+    for (int i = 0; i < 3; i++) d[i] = centre_b[i] - t->v[0][i];
+    if (dx_dot(d, t->n) < 0 && nt > 0) nu = 0;
+    for (int i = 0; i < 3; i++) d[i] = centre_a[i] - u->v[0][i];
+    if (dx_dot(d, u->n) < 0 && nu > 0) nt = 0;
     if (nu == 0 && nt == 0) return 0;
-    int use_t = nt == 0 || (nu > 0 && (cu != ct ? cu : mu_ <= mt_));
+    int use_t = nt == 0 || (nu > 0 && mu_ <= mt_);
     dReal c[3], before[3];
     for (int i = 0; i < 3; i++) c[i] = (u->v[0][i] + u->v[1][i] + u->v[2][i]) / 3;
-    int close = nu > 0 && nt > 0 && cu == ct && dFabs(mu_ - mt_) <= NEAR_TIE * dMax(mu_, mt_);
+    int close = nu > 0 && nt > 0 && dFabs(mu_ - mt_) <= NEAR_TIE * dMax(mu_, mt_);
     if (close && last_position(q->mesh, (dxTriMesh *)q->other, c, before)) {
         dReal moved[3] = { c[0] - before[0], c[1] - before[1], c[2] - before[2] };
         dReal into_t = -dx_dot(moved, t->n), into_u = dx_dot(moved, u->n);
@@ -174,10 +179,15 @@ static int collide_ordered(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, i
         hi[i] = cb[i] + e;
     }
     int nb = dxTriMeshQueryBox(db, lo, hi, &b->candidates, &b->candidates_cap);
+    dReal centre_b[3];   // b's box centre in a's frame
     {
-        dReal blo[3], bhi[3];
+        dReal blo[3], bhi[3], cbl[3];
         dxTriMeshDataBounds(db, blo, bhi);
-        for (int k = 0; k < 3; k++) q.scale += (bhi[k] - blo[k]) / 2;
+        for (int k = 0; k < 3; k++) {
+            q.scale += (bhi[k] - blo[k]) / 2;
+            cbl[k] = (blo[k] + bhi[k]) / 2;
+        }
+        dx_point_to_world(q.R, q.pos, cbl, centre_b);
     }
     a->raw_count = 0;
     int hits_a = 0, hits_b = 0;
@@ -208,7 +218,7 @@ static int collide_ordered(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, i
             if (a->callback && !a->callback(o1, o2, ta)) continue;
             dxTri t;
             dxTriLoad(da, ta, &t);
-            if (!pair_contacts(&q, &t, &u)) continue;
+            if (!pair_contacts(&q, &t, &u, ca, centre_b)) continue;
             touched_b = 1;
             dxTriMeshReserveInts(&a->hits, &a->hits_cap, hits_a + 1);
             a->hits[hits_a++] = ta;
