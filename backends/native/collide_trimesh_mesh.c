@@ -6,9 +6,9 @@
 // of triangles that cross (an edge of one passes through the other) gives
 // contacts along one of the two face normals: the points of either triangle
 // within the other's prism and behind its plane, at their depths below it.
-// Which face: not one behind which the other mesh has the centre of its
-// box (as the convex pairs are one-sided), else the one with the shallower
-// penetration; where the two are nearly as deep and both geoms have a last transform
+// Which face: never one behind which the other mesh has the centre of its
+// box (as the convex pairs are one-sided: no contact if both are), else the
+// one with the shallower penetration; where the two are nearly as deep and both geoms have a last transform
 // (dGeomTriMeshSetLastTransform, guide 10.7.6), the one the other triangle
 // moved into since then. Both meshes' per-triangle, array
 // and merge callbacks apply; side1 and side2 are the two triangles.
@@ -107,12 +107,13 @@ static int pair_contacts(dxTriQuery *q, const dxTri *t, const dxTri *u, const dR
     int nu = points_behind(q, t, u, pu, du, &mu_);   // u's points behind t: u leaves along n_t
     int nt = points_behind(&qu, u, t, pt, dt, &mt_);   // t's behind u: u leaves along -n_u
     // A direction is out of the question if the mesh it moves has its centre
-    // behind the face it would leave (as for the one-sided convex pairs).
+    // behind the face it would leave (as for the one-sided convex pairs): a
+    // floor's vertex inside a resting box must not throw it sideways.
     dReal d[3];
     for (int i = 0; i < 3; i++) d[i] = centre_b[i] - t->v[0][i];
-    if (dx_dot(d, t->n) < 0 && nt > 0) nu = 0;
+    if (dx_dot(d, t->n) < 0) nu = 0;
     for (int i = 0; i < 3; i++) d[i] = centre_a[i] - u->v[0][i];
-    if (dx_dot(d, u->n) < 0 && nu > 0) nt = 0;
+    if (dx_dot(d, u->n) < 0) nt = 0;
     if (nu == 0 && nt == 0) return 0;
     int use_t = nt == 0 || (nu > 0 && mu_ <= mt_);
     dReal c[3], before[3];
