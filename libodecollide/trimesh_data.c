@@ -89,6 +89,7 @@ static void clear_derived(dxTriMeshData *d)
     d->vertex_first = d->vertex_adj = NULL;
     d->vertex_adj_count = 0;
     d->node_count = 0;
+    d->closed = 0;
     d->tri_count = 0;
     d->vertex_count = 0;
     d->vertices = d->indices = d->user_normals = NULL;
@@ -226,6 +227,9 @@ static void compute_neighbours(dxTriMeshData *d)
     }
     compute_vertex_adjacency(d, e, n);
     dFree(e, n * sizeof *e);
+    d->closed = 1;
+    for (size_t i = 0; i < n; i++)
+        if (d->neighbour[i] < 0) d->closed = 0;
 }
 
 // Which edges and vertices are features (trimesh_internal.h): an edge is one

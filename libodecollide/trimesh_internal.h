@@ -49,6 +49,7 @@ struct dxTriMeshData {
     int *vertex_first, *vertex_adj;       // per welded vertex: the vertices joined to it
     int vertex_adj_count;
     int *neighbour;                       // 3 per triangle: across edge k, or -1
+    int closed;                           // every edge has a neighbour
     unsigned char *features;              // DX_TRI_*_FEATURE bits per triangle
     dxTriMeshNode *nodes;
     int node_count;

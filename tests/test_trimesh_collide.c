@@ -352,6 +352,59 @@ static int test_every_pair_sdf(void)
     return fail;
 }
 
+// A small closed box mesh against each mesh at random poses: every contact
+// lies on or in the box and in the other mesh's solid (up to its
+// tessellation); both orders mirror.
+static int test_trimesh_trimesh_sdf(void)
+{
+    solid solids[4] = {
+        { "terrain", { 0 }, 0, 0, 0, 0, 0.3 * 0.25 * 0.25 },
+        { "icosphere", { 0 }, 1, 1.2, 0, 0, 1.2 * 0.01 },
+        { "box", { 0 }, 2, 2.0, 1.6, 1.2, 0 },
+        { "torus", { 0 }, 3, 1.0, 0.4, 0, 0.4 * 0.02 },
+    };
+    mesh_grid(&solids[0].mesh, 16, 2, wavy);
+    mesh_icosphere(&solids[1].mesh, 1.2, 3);
+    mesh_box(&solids[2].mesh, 2.0, 1.6, 1.2, 2);
+    mesh_torus(&solids[3].mesh, 1.0, 0.4, 48, 24);
+    test_mesh small;
+    mesh_box(&small, 0.6, 0.4, 0.3, 2);
+    dGeomID b = dCreateTriMesh(0, small.data, NULL, NULL, NULL);
+    dContactGeom c[MAXC];
+    rng_state = 19;
+    int fail = 0, touching = 0;
+    for (int s = 0; s < 4 && !fail; s++) {
+        dGeomID a = dCreateTriMesh(0, solids[s].mesh.data, NULL, NULL, NULL);
+        for (int i = 0; i < 200 && !fail; i++) {
+            double p[3] = { rnd(-1.6, 1.6), rnd(-1.6, 1.6), rnd(-1.6, 1.6) };
+            if (s == 0) p[2] = rnd(-0.2, 0.5);
+            dGeomSetPosition(b, p[0], p[1], p[2]);
+            set_rot(b, rnd(-1, 1), rnd(-1, 1), rnd(-1, 1) + 0.01, rnd(0, M_PI));
+            int n = collide_both(a, b, 8, c);
+            if (n < 0) fail = 1;
+            touching += n > 0;
+            for (int k = 0; k < n && !fail; k++) {
+                dVector3 local;
+                dGeomGetPosRelPoint(b, c[k].pos[0], c[k].pos[1], c[k].pos[2], local);
+                double lb[3] = { local[0], local[1], local[2] };
+                double q[3] = { c[k].pos[0], c[k].pos[1], c[k].pos[2] };
+                double db = sdf_box(0.6, 0.4, 0.3, lb), da = solid_depth(&solids[s], q);
+                if (!(db > -1e3 * EPS) || !(da > -solids[s].tess - 1e3 * EPS)) {
+                    test_fail(__FILE__, __LINE__, "%s pose %d contact %d: in box %g, in mesh %g",
+                              solids[s].name, i, k, db, da);
+                    fail = 1;
+                }
+            }
+        }
+        dGeomDestroy(a);
+    }
+    CHECK(fail || touching > 40);
+    dGeomDestroy(b);
+    mesh_free(&small);
+    for (int s = 0; s < 4; s++) mesh_free(&solids[s].mesh);
+    return fail;
+}
+
 // A ball against the icosphere: the polyhedron's exact penetration (the
 // deepest contact separates the pair) and a radial normal within the
 // tessellation's angle.
@@ -755,6 +808,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_ray_closed_box),
     TEST_CASE(test_trimesh_trimesh_stack),
     TEST_CASE(test_trimesh_trimesh_last_transform),
+    TEST_CASE(test_trimesh_trimesh_sdf),
     TEST_CASE(test_callbacks),
     TEST_CASE(test_other_backends_fall_back),
     TEST_CASE(test_no_allocation_when_warm),

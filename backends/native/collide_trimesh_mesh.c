@@ -52,10 +52,11 @@ static int triangles_cross(const dxTri *a, const dxTri *b)
 }
 
 // The points of triangle `moving` within the prism of `face` and behind its
-// plane (into pts, depths into depth); returns how many, and the deepest
-// depth in *most.
+// plane, but not deeper than `reach` (the face's solid is no thicker there),
+// into pts (depths into depth); returns how many, and the deepest depth in
+// *most.
 static int points_behind(const dxTriQuery *q, const dxTri *face, const dxTri *moving,
-                         dReal pts[][3], dReal *depth, dReal *most)
+                         dReal reach, dReal pts[][3], dReal *depth, dReal *most)
 {
     int made[DX_TRI_POLY_MAX];
     for (int k = 0; k < 3; k++)
@@ -65,7 +66,7 @@ static int points_behind(const dxTriQuery *q, const dxTri *face, const dxTri *mo
     for (int j = 0; j < n; j++) {
         dReal d = 0;
         for (int i = 0; i < 3; i++) d -= face->n[i] * (pts[j][i] - face->v[0][i]);
-        if (d <= 0) continue;
+        if (d <= 0 || d > reach) continue;
         for (int i = 0; i < 3; i++) pts[kept][i] = pts[j][i];
         depth[kept++] = d;
         if (d > *most) *most = d;
@@ -95,8 +96,18 @@ static int last_position(const dxTriMesh *a, const dxTriMesh *b, const dReal p[3
 
 // The contacts of triangles t (first mesh) and u (second, in the first's
 // frame) if they cross; returns 1 then.
+// How thick the solid of a mesh can be across the unit direction n (its
+// frame): its box's width if it is closed, else unbounded (a sheet or
+// terrain stands for everything behind it).
+static dReal reach_along(const dxTriMeshData *d, const dReal h[3], const dReal n[3])
+{
+    if (!d->closed) return dInfinity;
+    return 2 * (h[0] * dFabs(n[0]) + h[1] * dFabs(n[1]) + h[2] * dFabs(n[2]));
+}
+
+// reach_u: how thick the second mesh is across u (reach_along).
 static int pair_contacts(dxTriQuery *q, const dxTri *t, const dxTri *u, const dReal centre_a[3],
-                         const dReal centre_b[3])
+                         const dReal half_a[3], const dReal centre_b[3], dReal reach_u)
 {
     if (!triangles_cross(t, u)) return 0;
     dReal pu[DX_TRI_POLY_MAX][3], du[DX_TRI_POLY_MAX], mu_;
@@ -104,8 +115,9 @@ static int pair_contacts(dxTriQuery *q, const dxTri *t, const dxTri *u, const dR
     // u's data is not in this frame: its flat edges are not looked up.
     dxTriQuery qu = *q;
     qu.data = NULL;
-    int nu = points_behind(q, t, u, pu, du, &mu_);   // u's points behind t: u leaves along n_t
-    int nt = points_behind(&qu, u, t, pt, dt, &mt_);   // t's behind u: u leaves along -n_u
+    dReal reach_t = reach_along(q->data, half_a, t->n);
+    int nu = points_behind(q, t, u, reach_t, pu, du, &mu_);   // u's behind t: leaves along n_t
+    int nt = points_behind(&qu, u, t, reach_u, pt, dt, &mt_);  // t's behind u: along -n_u
     // A direction is out of the question if the mesh it moves has its centre
     // behind the face it would leave (as for the one-sided convex pairs): a
     // floor's vertex inside a resting box must not throw it sideways.
@@ -180,12 +192,13 @@ static int collide_ordered(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, i
         hi[i] = cb[i] + e;
     }
     int nb = dxTriMeshQueryBox(db, lo, hi, &b->candidates, &b->candidates_cap);
-    dReal centre_b[3];   // b's box centre in a's frame
+    dReal centre_b[3], half_b[3];   // b's box: centre in a's frame, half sides in b's
     {
         dReal blo[3], bhi[3], cbl[3];
         dxTriMeshDataBounds(db, blo, bhi);
         for (int k = 0; k < 3; k++) {
-            q.scale += (bhi[k] - blo[k]) / 2;
+            half_b[k] = (bhi[k] - blo[k]) / 2;
+            q.scale += half_b[k];
             cbl[k] = (blo[k] + bhi[k]) / 2;
         }
         dx_point_to_world(q.R, q.pos, cbl, centre_b);
@@ -198,6 +211,7 @@ static int collide_ordered(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, i
         if (b->callback && !b->callback(o2, o1, ub)) continue;
         dxTri u;
         dxTriLoad(db, ub, &u);
+        dReal reach_u = reach_along(db, half_b, u.n);   // u.n still in b's frame
         // u in a's frame, and its box there.
         dReal n[3];
         for (int k = 0; k < 3; k++) {
@@ -219,7 +233,7 @@ static int collide_ordered(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, i
             if (a->callback && !a->callback(o1, o2, ta)) continue;
             dxTri t;
             dxTriLoad(da, ta, &t);
-            if (!pair_contacts(&q, &t, &u, ca, centre_b)) continue;
+            if (!pair_contacts(&q, &t, &u, ca, ha, centre_b, reach_u)) continue;
             touched_b = 1;
             dxTriMeshReserveInts(&a->hits, &a->hits_cap, hits_a + 1);
             a->hits[hits_a++] = ta;
