@@ -4,8 +4,9 @@
 // on meshes generated here (grid terrain, icosphere, closed box, torus,
 // thin sheet): hand-worked poses (depth, normal, position), every pair both
 // ways with each contact checked against the solids' own signed distances,
-// rays with the barycentric callback, the plane, the per-triangle, array
-// and merge callbacks, and no per-query allocation once warm.
+// rays with the barycentric callback, the plane, trimesh-trimesh (with the
+// last transforms), the per-triangle, array and merge callbacks, the other
+// backends' fallback, and no per-query allocation once warm.
 
 #include "collide_check.h"
 #include "test.h"

@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
 // collide_trimesh.c -- the native trimesh colliders' shared walk and
-// contact reduction (collide_trimesh.h), triangle geometry helpers, and the
-// two colliders that need no per-triangle solid test: trimesh-plane (the
-// vertices below the plane) and trimesh-ray (every triangle the ray
-// crosses, nearest first).
+// contact reduction (collide_trimesh.h), triangle geometry helpers (closest
+// points, feature regions, clipping to a triangle's prism), and
+// trimesh-plane (the vertices below the plane).
 
 #include "collide_trimesh.h"
 
