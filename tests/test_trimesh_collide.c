@@ -776,22 +776,26 @@ static int test_no_allocation_when_warm(void)
     test_mesh m;
     mesh_grid(&m, 20, 3, wavy);
     dGeomID g = dCreateTriMesh(0, m.data, NULL, NULL, NULL);
-    dGeomID prims[5] = { dCreateSphere(0, 0.4), dCreateBox(0, 0.7, 0.5, 0.4),
+    test_mesh small;
+    mesh_box(&small, 0.6, 0.5, 0.4, 2);
+    dGeomID prims[6] = { dCreateSphere(0, 0.4), dCreateBox(0, 0.7, 0.5, 0.4),
                          dCreateCapsule(0, 0.2, 0.8), dCreateRay(0, 3),
-                         dCreateCylinder(0, 0.3, 0.5) };
+                         dCreateCylinder(0, 0.3, 0.5),
+                         dCreateTriMesh(0, small.data, NULL, NULL, NULL) };
     dContactGeom c[MAXC];
     for (int pass = 0; pass < 2; pass++) {
         if (pass == 1) test_count_allocations();
         rng_state = 17;
         for (int i = 0; i < 100; i++)
-            for (int p = 0; p < 5; p++) {
+            for (int p = 0; p < 6; p++) {
                 dGeomSetPosition(prims[p], rnd(-2, 2), rnd(-2, 2), rnd(-0.3, 0.5));
                 set_rot(prims[p], rnd(-1, 1), rnd(-1, 1), 1, rnd(0, 3));
                 dCollide(g, prims[p], MAXC, c, sizeof c[0]);
             }
     }
     CHECK(test_allocations_counted() == 0);
-    for (int p = 0; p < 5; p++) dGeomDestroy(prims[p]);
+    for (int p = 0; p < 6; p++) dGeomDestroy(prims[p]);
+    mesh_free(&small);
     dGeomDestroy(g);
     mesh_free(&m);
     return 0;
