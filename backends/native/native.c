@@ -6,7 +6,7 @@
 #include "../../libodecollide/backend_internal.h"
 #include "native_colliders.h"
 
-enum { NATIVE_CLASSES = dRayClass + 1 };   // sphere, box, capsule, cylinder, plane, ray
+enum { NATIVE_CLASSES = dTriMeshClass + 1 };   // sphere ... ray, convex, transform, trimesh
 
 // table[a][b] collides (class a, class b) in that order; NULL if no collider.
 static dxCollider *const table[NATIVE_CLASSES][NATIVE_CLASSES] = {
@@ -25,6 +25,11 @@ static dxCollider *const table[NATIVE_CLASSES][NATIVE_CLASSES] = {
     [dRayClass] = { [dSphereClass] = dxCollideRaySphere, [dBoxClass] = dxCollideRayBox,
                     [dCapsuleClass] = dxCollideRayCapsule,
                     [dCylinderClass] = dxCollideRayCylinder, [dPlaneClass] = dxCollideRayPlane },
+    [dTriMeshClass] = { [dSphereClass] = dxCollideTriMeshSphere, [dBoxClass] = dxCollideTriMeshBox,
+                        [dCapsuleClass] = dxCollideTriMeshCapsule,
+                        [dCylinderClass] = dxCollideTriMeshCylinder,
+                        [dPlaneClass] = dxCollideTriMeshPlane, [dRayClass] = dxCollideTriMeshRay,
+                        [dTriMeshClass] = dxCollideTriMeshTriMesh },
 };
 
 static int native_supports(int c1, int c2)

@@ -27,4 +27,9 @@ dxCollider dxCollideRaySphere, dxCollideRayBox, dxCollideRayCapsule, dxCollideRa
 // Convex pairs without a closed form, through libccd (collide_ccd.c).
 dxCollider dxCollideCylinderBox, dxCollideCylinderCapsule, dxCollideCylinderCylinder;
 
+// Trimeshes (collide_trimesh*.c): side1 is the triangle of each contact.
+dxCollider dxCollideTriMeshSphere, dxCollideTriMeshBox, dxCollideTriMeshCapsule,
+    dxCollideTriMeshCylinder, dxCollideTriMeshPlane, dxCollideTriMeshRay,
+    dxCollideTriMeshTriMesh;
+
 #endif

@@ -282,4 +282,6 @@ ODE_API dGeomID dCreateGeom(int classnum);
 }
 #endif
 
+#include <ode/collision_trimesh.h>
+
 #endif

@@ -39,6 +39,12 @@ ODE_API void dMassSetCylinderTotal(dMass *m, dReal total_mass, int direction, dR
 /** A box with side lengths lx, ly, lz along the body axes. */
 ODE_API void dMassSetBox(dMass *m, dReal density, dReal lx, dReal ly, dReal lz);
 ODE_API void dMassSetBoxTotal(dMass *m, dReal total_mass, dReal lx, dReal ly, dReal lz);
+/** The solid inside a closed trimesh geom (outward winding), in world
+ *  coordinates; as in ODE 0.16 the inertia about the origin is moved to the
+ *  centre of mass with dMassTranslate (exact for a mesh centred on the
+ *  origin). Defined in the collision library. */
+ODE_API void dMassSetTrimesh(dMass *m, dReal density, dGeomID g);
+ODE_API void dMassSetTrimeshTotal(dMass *m, dReal total_mass, dGeomID g);
 /** Scale the mass (and the inertia with it) to newmass. */
 ODE_API void dMassAdjust(dMass *m, dReal newmass);
 /** The same object displaced by (x,y,z) in the body frame. */

@@ -1,0 +1,507 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// collide_trimesh.c -- the native trimesh colliders' shared walk and
+// contact reduction (collide_trimesh.h), triangle geometry helpers (closest
+// points, feature regions, clipping to a triangle's prism), and
+// trimesh-plane (the vertices below the plane).
+
+#include "collide_trimesh.h"
+
+#include <ode/memory.h>
+
+// ---- the walk and the reduction --------------------------------------------
+
+void dxTriLoad(const dxTriMeshData *d, int t, dxTri *out)
+{
+    out->index = t;
+    dxTriMeshIndices(d, t, out->vi);
+    for (int k = 0; k < 3; k++) {
+        out->vi[k] = d->weld[out->vi[k]];
+        dxTriMeshVertex(d, out->vi[k], out->v[k]);
+    }
+    for (int k = 0; k < 3; k++) out->n[k] = d->normal[3 * t + k];
+    out->features = dxTriMeshFeatures(d, t);
+    out->neighbour = d->neighbour + 3 * t;
+}
+
+void dxTriAdd(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth, int tri)
+{
+    dxTriAdd2(q, pos, n, depth, tri, -1);
+}
+
+void dxTriAdd2(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth, int tri,
+               int tri2)
+{
+    dxTriMesh *m = q->mesh;
+    if (m->raw_count == m->raw_cap) {
+        int ncap = m->raw_cap ? 2 * m->raw_cap : 32;
+        m->raw = (dxTriMeshRaw *)dRealloc(m->raw, (size_t)m->raw_cap * sizeof *m->raw,
+                                          (size_t)ncap * sizeof *m->raw);
+        m->raw_cap = ncap;
+    }
+    dxTriMeshRaw *r = &m->raw[m->raw_count++];
+    for (int k = 0; k < 3; k++) {
+        r->pos[k] = pos[k];
+        r->n[k] = n[k];
+    }
+    r->depth = depth;
+    r->tri = tri;
+    r->tri2 = tri2;
+}
+
+static dReal dist2(const dReal a[3], const dReal b[3])
+{
+    dReal d[3] = { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+    return dx_dot(d, d);
+}
+
+// The triangle index of a contact merged from those of triangles a and b
+// of mesh g (its merge callback's, else -1).
+static int merged_side(dxGeom *g, int a, int b)
+{
+    if (a == b) return a;
+    dxTriMesh *m = g->ops->cls == dTriMeshClass ? (dxTriMesh *)g : NULL;
+    return m && m->merge_callback ? m->merge_callback(g, a, b) : -1;
+}
+
+// Merge contacts at (nearly) the same point with (nearly) the same normal,
+// keeping the deeper; returns the new count.
+static int merge_duplicates(dxTriMesh *m, dxGeom *other, dReal tol)
+{
+    dxTriMeshRaw *r = m->raw;
+    int n = 0;
+    for (int i = 0; i < m->raw_count; i++) {
+        int j = 0;
+        while (j < n && !(dist2(r[i].pos, r[j].pos) <= tol * tol &&
+                          dx_dot(r[i].n, r[j].n) > 1 - (dReal)1e-6))
+            j++;
+        if (j == n) {
+            r[n++] = r[i];
+            continue;
+        }
+        int a = r[j].tri, b = r[i].tri, a2 = r[j].tri2, b2 = r[i].tri2;
+        if (r[i].depth > r[j].depth) r[j] = r[i];
+        r[j].tri = merged_side(&m->g, a, b);
+        if (a2 >= 0 || b2 >= 0) r[j].tri2 = merged_side(other, a2, b2);
+    }
+    return n;
+}
+
+// Normals this close belong to one flat group; points this close to a line
+// (sine of the angle) are on it.
+#define SAME_NORMAL ((dReal)1 - 10 * DX_COLLIDE_EPS)
+#define SAME_LINE (100 * DX_COLLIDE_EPS)
+
+// Within a group of contacts with one normal (one flat patch), the corners
+// of the patch's convex hull and its deepest point are what matters (with a
+// flat solid on it, where depth varies linearly, the corners alone): mark
+// them in keep[] (gift wrapping in the plane; points on a hull edge between
+// two corners are left out). members lists the group.
+static void mark_hull(const dxTriMeshRaw *r, const int *members, int count, dReal depth_tol,
+                      int *keep)
+{
+    if (count <= 2) {
+        for (int i = 0; i < count; i++) keep[members[i]] = 1;
+        return;
+    }
+    dReal e1[3], e2[3];
+    const dReal *n = r[members[0]].n;
+    dx_perpendicular(n, e1);
+    e2[0] = n[1] * e1[2] - n[2] * e1[1];
+    e2[1] = n[2] * e1[0] - n[0] * e1[2];
+    e2[2] = n[0] * e1[1] - n[1] * e1[0];
+#define U(i) dx_dot(r[members[i]].pos, e1)
+#define V(i) dx_dot(r[members[i]].pos, e2)
+    int start = 0;
+    for (int i = 1; i < count; i++)
+        if (U(i) < U(start) || (U(i) == U(start) && V(i) < V(start))) start = i;
+    int cur = start;
+    for (int steps = 0; steps <= count; steps++) {
+        keep[members[cur]] = 1;
+        int next = -1;
+        dReal nu = 0, nv = 0;
+        for (int q = 0; q < count; q++) {
+            if (q == cur) continue;
+            dReal qu = U(q) - U(cur), qv = V(q) - V(cur);
+            if (next < 0) {
+                next = q, nu = qu, nv = qv;
+                continue;
+            }
+            // cross < 0: q is clockwise of next; collinear within a
+            // relative sine of SAME_LINE.
+            dReal cross = nu * qv - nv * qu, q2 = qu * qu + qv * qv, n2 = nu * nu + nv * nv;
+            dReal tol = SAME_LINE * dSqrt(q2 * n2);
+            if (cross < -tol || (cross <= tol && q2 > n2))
+                next = q, nu = qu, nv = qv;
+        }
+        cur = next;
+        if (cur == start) break;
+    }
+#undef U
+#undef V
+    int deepest = 0;
+    dReal corner_depth = -dInfinity;
+    for (int i = 0; i < count; i++) {
+        if (r[members[i]].depth > r[members[deepest]].depth) deepest = i;
+        if (keep[members[i]]) corner_depth = dMax(corner_depth, r[members[i]].depth);
+    }
+    if (r[members[deepest]].depth > corner_depth + depth_tol) keep[members[deepest]] = 1;
+}
+
+// Keep only the hull corners (and an inner point deeper than them by more
+// than tol) of each flat group; returns the new count.
+static int prune_flat_groups(dxTriMesh *m, int n, dReal tol)
+{
+    dxTriMeshReserveInts(&m->candidates, &m->candidates_cap, n);
+    dxTriMeshReserveInts(&m->hits, &m->hits_cap, 2 * n);
+    int *members = m->candidates, *keep = m->hits, *done = m->hits + n;
+    for (int i = 0; i < n; i++) keep[i] = done[i] = 0;
+    for (int i = 0; i < n; i++) {
+        if (done[i]) continue;
+        int count = 0;
+        for (int j = i; j < n; j++)
+            if (!done[j] && dx_dot(m->raw[i].n, m->raw[j].n) > SAME_NORMAL) {
+                members[count++] = j;
+                done[j] = 1;
+            }
+        mark_hull(m->raw, members, count, tol, keep);
+    }
+    int k = 0;
+    for (int i = 0; i < n; i++)
+        if (keep[i]) m->raw[k++] = m->raw[i];
+    return k;
+}
+
+static void swap_raw(dxTriMeshRaw *r, int a, int b)
+{
+    dxTriMeshRaw t = r[a];
+    r[a] = r[b];
+    r[b] = t;
+}
+
+// Twice the area by which the triangle (a, b, c) (normal direction N) grows
+// if it takes in p.
+static dReal hull_growth(const dReal *a, const dReal *b, const dReal *c, const dReal N[3],
+                         const dReal *p)
+{
+    const dReal *v[3] = { a, b, c };
+    dReal growth = 0;
+    for (int k = 0; k < 3; k++) {
+        const dReal *x = v[k], *y = v[(k + 1) % 3];
+        dReal e[3] = { y[0] - x[0], y[1] - x[1], y[2] - x[2] };
+        dReal d[3] = { p[0] - x[0], p[1] - x[1], p[2] - x[2] };
+        dReal cr[3] = { e[1] * d[2] - e[2] * d[1], e[2] * d[0] - e[0] * d[2],
+                        e[0] * d[1] - e[1] * d[0] };
+        dReal s = dx_dot(cr, N);
+        if (s < 0) growth -= s;
+    }
+    return growth;
+}
+
+// Move the `keep` contacts to keep to the front: the deepest, the farthest
+// from it, the farthest from the line of those two, the one that widens
+// their triangle most, then each the farthest from those kept.
+static void select_spread(dxTriMeshRaw *r, int n, int keep)
+{
+    int best = 0;
+    for (int i = 1; i < n; i++)
+        if (r[i].depth > r[best].depth) best = i;
+    swap_raw(r, 0, best);
+    dReal N[3] = { 0, 0, 0 };
+    for (int k = 1; k < keep; k++) {
+        dReal score_best = -1;
+        best = k;
+        for (int i = k; i < n; i++) {
+            dReal score;
+            if (k == 2) {
+                dReal e[3], d[3], cr[3];
+                for (int j = 0; j < 3; j++) {
+                    e[j] = r[1].pos[j] - r[0].pos[j];
+                    d[j] = r[i].pos[j] - r[0].pos[j];
+                }
+                cr[0] = e[1] * d[2] - e[2] * d[1];
+                cr[1] = e[2] * d[0] - e[0] * d[2];
+                cr[2] = e[0] * d[1] - e[1] * d[0];
+                score = dx_dot(cr, cr);
+            } else if (k == 3 && dx_dot(N, N) > 0) {
+                score = hull_growth(r[0].pos, r[1].pos, r[2].pos, N, r[i].pos);
+            } else {
+                score = dInfinity;
+                for (int j = 0; j < k; j++) score = dMin(score, dist2(r[i].pos, r[j].pos));
+            }
+            if (score > score_best) {
+                score_best = score;
+                best = i;
+            }
+        }
+        swap_raw(r, k, best);
+        if (k == 2) {
+            dReal e[3], d[3];
+            for (int j = 0; j < 3; j++) {
+                e[j] = r[1].pos[j] - r[0].pos[j];
+                d[j] = r[2].pos[j] - r[0].pos[j];
+            }
+            N[0] = e[1] * d[2] - e[2] * d[1];
+            N[1] = e[2] * d[0] - e[0] * d[2];
+            N[2] = e[0] * d[1] - e[1] * d[0];
+        }
+    }
+}
+
+int dxTriMeshFinish(dxTriQuery *q, int flags, dContactGeom *c, int skip)
+{
+    dxTriMesh *m = q->mesh;
+    dxGeom *g = &m->g;
+    dReal tol = q->scale * (dReal)1e-5;
+    int n = merge_duplicates(m, q->other, tol);
+    n = prune_flat_groups(m, n, tol);
+    int max = dx_max_contacts(flags);
+    if (n > max) {
+        select_spread(m->raw, n, max);
+        n = max;
+    }
+    for (int i = 0; i < n; i++) {
+        const dxTriMeshRaw *r = &m->raw[i];
+        dReal pos[3], nw[3];
+        dx_point_to_world(g->R, g->pos, r->pos, pos);
+        dx_to_world(g->R, r->n, nw);
+        for (int k = 0; k < 3; k++) nw[k] = -nw[k];   // into the mesh (g1)
+        dx_put_contact(c, i, skip, pos, nw, r->depth, g, q->other);
+        dxContactAt(c, i, skip)->side1 = r->tri;
+        dxContactAt(c, i, skip)->side2 = r->tri2;
+    }
+    return n;
+}
+
+// The other geom's pose in the mesh frame, and its box there.
+static void pose_other(dxTriQuery *q, dReal lo[3], dReal hi[3])
+{
+    dxGeom *mesh = &q->mesh->g, *o = q->other;
+    if (o->flags & DX_GEOM_PLACEABLE) {
+        dxTriMeshToLocal(mesh, o->pos, q->pos);
+        for (int j = 0; j < 3; j++) {
+            dReal col[3] = { o->R[j], o->R[4 + j], o->R[8 + j] }, lc[3];
+            dxTriMeshDirToLocal(mesh, col, lc);
+            for (int i = 0; i < 3; i++) q->R[4 * i + j] = lc[i];
+        }
+        for (int i = 0; i < 3; i++) q->R[4 * i + 3] = 0;
+    }
+    dxGeomUpdateAABB(o);
+    if (!(o->flags & DX_GEOM_PLACEABLE)) {   // a plane: the whole mesh
+        dxTriMeshDataBounds(q->data, lo, hi);
+        q->scale = 0;
+        for (int k = 0; k < 3; k++) q->scale += hi[k] - lo[k];
+        return;
+    }
+    dReal cw[3], hw[3], cl[3];
+    for (int k = 0; k < 3; k++) {
+        cw[k] = (o->aabb[2 * k] + o->aabb[2 * k + 1]) / 2;
+        hw[k] = (o->aabb[2 * k + 1] - o->aabb[2 * k]) / 2;
+    }
+    dxTriMeshToLocal(mesh, cw, cl);
+    const dReal *R = mesh->R;
+    q->scale = 0;
+    for (int i = 0; i < 3; i++) {
+        dReal e = dFabs(R[i]) * hw[0] + dFabs(R[4 + i]) * hw[1] + dFabs(R[8 + i]) * hw[2];
+        lo[i] = cl[i] - e;
+        hi[i] = cl[i] + e;
+        q->scale += hw[i];
+    }
+}
+
+int dxTriMeshCollide(dxGeom *mesh, dxGeom *other, int flags, dContactGeom *c, int skip,
+                     dxTriTest *test)
+{
+    dxTriMesh *m = (dxTriMesh *)mesh;
+    if (!m->data || m->data->tri_count == 0) return 0;
+    dxTriQuery q = { .mesh = m, .data = m->data, .other = other };
+    dReal lo[3], hi[3];
+    pose_other(&q, lo, hi);
+    int count = dxTriMeshQueryBox(m->data, lo, hi, &m->candidates, &m->candidates_cap);
+    m->raw_count = 0;
+    int hits = 0;
+    for (int i = 0; i < count; i++) {
+        int t = m->candidates[i];
+        if (dxTriMeshIsDegenerate(m->data, t)) continue;
+        if (m->callback && !m->callback(mesh, other, t)) continue;
+        dxTri tri;
+        dxTriLoad(m->data, t, &tri);
+        if (!test(&q, &tri)) continue;
+        dxTriMeshReserveInts(&m->hits, &m->hits_cap, hits + 1);
+        m->hits[hits++] = t;
+    }
+    if (hits > 0 && m->array_callback) m->array_callback(mesh, other, m->hits, hits);
+    return m->raw_count ? dxTriMeshFinish(&q, flags, c, skip) : 0;
+}
+
+// ---- triangle geometry --------------------------------------------------------
+
+int dxTriClosestPoint(const dxTri *t, const dReal p[3], dReal q[3])
+{
+    // Regions of the triangle's plane, tested in turn with the
+    // barycentric signs (vertex, edge, then face regions).
+    const dReal *a = t->v[0], *b = t->v[1], *c = t->v[2];
+    dReal ab[3], ac[3], ap[3], bp[3], cp[3];
+    for (int i = 0; i < 3; i++) {
+        ab[i] = b[i] - a[i];
+        ac[i] = c[i] - a[i];
+        ap[i] = p[i] - a[i];
+        bp[i] = p[i] - b[i];
+        cp[i] = p[i] - c[i];
+    }
+    dReal d1 = dx_dot(ab, ap), d2 = dx_dot(ac, ap);
+    if (d1 <= 0 && d2 <= 0) {
+        for (int i = 0; i < 3; i++) q[i] = a[i];
+        return 4;
+    }
+    dReal d3 = dx_dot(ab, bp), d4 = dx_dot(ac, bp);
+    if (d3 >= 0 && d4 <= d3) {
+        for (int i = 0; i < 3; i++) q[i] = b[i];
+        return 5;
+    }
+    dReal vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+        dReal s = d1 / (d1 - d3);
+        for (int i = 0; i < 3; i++) q[i] = a[i] + s * ab[i];
+        return 1;
+    }
+    dReal d5 = dx_dot(ab, cp), d6 = dx_dot(ac, cp);
+    if (d6 >= 0 && d5 <= d6) {
+        for (int i = 0; i < 3; i++) q[i] = c[i];
+        return 6;
+    }
+    dReal vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+        dReal s = d2 / (d2 - d6);
+        for (int i = 0; i < 3; i++) q[i] = a[i] + s * ac[i];
+        return 3;   // edge 2: v2 to v0
+    }
+    dReal va = d3 * d6 - d5 * d4;
+    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
+        dReal s = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        for (int i = 0; i < 3; i++) q[i] = b[i] + s * (c[i] - b[i]);
+        return 2;
+    }
+    dReal denom = 1 / (va + vb + vc), v = vb * denom, w = vc * denom;
+    for (int i = 0; i < 3; i++) q[i] = a[i] + v * ab[i] + w * ac[i];
+    return 0;
+}
+
+int dxTriFeatureNormal(const dxTriQuery *q, const dxTri *t, int feature, const dReal dir[3])
+{
+    if (feature == 0) return 0;
+    if (feature >= 4) {
+        // A vertex's region: no edge from it may lean towards dir (exact
+        // for a convex vertex).
+        int k = feature - 4;
+        if (!(t->features & (DX_TRI_VERTEX_FEATURE << k))) return 0;
+        const dxTriMeshData *d = q->data;
+        for (int j = d->vertex_first[t->vi[k]]; j < d->vertex_first[t->vi[k] + 1]; j++) {
+            dReal w[3], e[3];
+            dxTriMeshVertex(d, d->vertex_adj[j], w);
+            for (int i = 0; i < 3; i++) e[i] = w[i] - t->v[k][i];
+            if (dx_dot(e, dir) > DX_COLLIDE_EPS * dSqrt(dx_dot(e, e))) return -1;
+        }
+        return 1;
+    }
+    int k = feature - 1;
+    if (!(t->features & (DX_TRI_EDGE_FEATURE << k))) return 0;
+    int u = t->neighbour[k];
+    if (u < 0) return 1;
+    // The neighbour's in-plane direction away from itself across the edge
+    // (towards this triangle's side): dir must not point back over it.
+    const dReal *a = t->v[k], *b = t->v[(k + 1) % 3], *far = t->v[(k + 2) % 3];
+    const dReal *nu = q->data->normal + 3 * u;
+    dReal e[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] }, m[3], af[3];
+    dReal cr[3] = { nu[1] * e[2] - nu[2] * e[1], nu[2] * e[0] - nu[0] * e[2],
+                    nu[0] * e[1] - nu[1] * e[0] };
+    for (int i = 0; i < 3; i++) af[i] = far[i] - a[i];
+    dReal s = dx_dot(cr, af) < 0 ? -1 : 1;
+    for (int i = 0; i < 3; i++) m[i] = s * cr[i];
+    return dx_dot(m, dir) >= 0 ? 1 : -1;
+}
+
+void dxTriSideNormal(const dxTri *t, int k, dReal m[3])
+{
+    dReal e[3] = { t->v[(k + 1) % 3][0] - t->v[k][0], t->v[(k + 1) % 3][1] - t->v[k][1],
+                   t->v[(k + 1) % 3][2] - t->v[k][2] };
+    m[0] = t->n[1] * e[2] - t->n[2] * e[1];
+    m[1] = t->n[2] * e[0] - t->n[0] * e[2];
+    m[2] = t->n[0] * e[1] - t->n[1] * e[0];
+}
+
+// Keep the part of polygon p (n points, tags tp) where m . (x - o) >= -slack;
+// a point made on this boundary gets the tag `made`.
+static int clip_polygon(dReal p[][3], const int *tp, int n, const dReal m[3], const dReal o[3],
+                        dReal slack, int made, dReal out[][3], int *tout)
+{
+    int k = 0;
+    for (int i = 0; i < n; i++) {
+        const dReal *a = p[i], *b = p[(i + 1) % n];
+        dReal da[3] = { a[0] - o[0], a[1] - o[1], a[2] - o[2] };
+        dReal db[3] = { b[0] - o[0], b[1] - o[1], b[2] - o[2] };
+        dReal fa = dx_dot(m, da) + slack, fb = dx_dot(m, db) + slack;
+        if (fa >= 0) {
+            for (int j = 0; j < 3; j++) out[k][j] = a[j];
+            tout[k++] = tp[i];
+        }
+        if ((fa >= 0) != (fb >= 0)) {
+            dReal s = fa / (fa - fb);
+            for (int j = 0; j < 3; j++) out[k][j] = a[j] + s * (b[j] - a[j]);
+            tout[k++] = made;
+        }
+    }
+    return k;
+}
+
+// Whether t's edge k joins two coplanar faces (an edge only of the
+// triangulation, not of the surface).
+static int flat_edge(const dxTriQuery *q, const dxTri *t, int k)
+{
+    if (!q->data) return 0;
+    if (t->features & (DX_TRI_EDGE_FEATURE << k)) return 0;
+    int u = t->neighbour[k];
+    return u >= 0 && dx_dot(t->n, q->data->normal + 3 * u) > 1 - 10 * DX_COLLIDE_EPS;
+}
+
+int dxTriClipToPrism(const dxTriQuery *q, const dxTri *t, dReal a[][3], int n, int *made)
+{
+    dReal b[DX_TRI_POLY_MAX][3], m[3], eps = DX_COLLIDE_EPS * q->scale;
+    int tb[DX_TRI_POLY_MAX];
+    for (int i = 0; i < n; i++) made[i] = DX_TRI_MADE_NOT;
+    for (int k = 0; k < 3 && n > 0; k++) {
+        dxTriSideNormal(t, k, m);
+        int tag = flat_edge(q, t, k) ? DX_TRI_MADE_AT_FLAT_EDGE : DX_TRI_MADE_AT_EDGE;
+        n = clip_polygon(a, made, n, m, t->v[k], eps * dSqrt(dx_dot(m, m)), tag, b, tb);
+        for (int i = 0; i < n; i++) {
+            for (int j = 0; j < 3; j++) a[i][j] = b[i][j];
+            made[i] = tb[i];
+        }
+    }
+    return n;
+}
+
+// ---- trimesh-plane ----------------------------------------------------------------
+
+// The triangle's vertices below the plane, each a contact at the vertex.
+static int plane_test(dxTriQuery *q, const dxTri *t)
+{
+    const dxPlane *p = (const dxPlane *)q->other;
+    dReal nl[3];
+    dxTriMeshDirToLocal(&q->mesh->g, p->p, nl);
+    dReal d = p->p[3] - dx_dot(p->p, q->mesh->g.pos);
+    dReal leave[3] = { -nl[0], -nl[1], -nl[2] };   // the plane leaves downwards
+    int touched = 0;
+    for (int k = 0; k < 3; k++) {
+        dReal depth = d - dx_dot(nl, t->v[k]);
+        if (depth < 0) continue;
+        dxTriAdd(q, t->v[k], leave, depth, t->index);
+        touched = 1;
+    }
+    return touched;
+}
+
+int dxCollideTriMeshPlane(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
+{
+    return dxTriMeshCollide(o1, o2, flags, c, skip, plane_test);
+}

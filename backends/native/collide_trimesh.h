@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// collide_trimesh.h -- what the native trimesh colliders share
+// (collide_trimesh.c): the other geom posed in the mesh's frame, the walk
+// over the triangles near it (the per-triangle and array callbacks), and the
+// reduction of the triangles' contacts to a small manifold written in
+// world coordinates (g1 the mesh, side1 the triangle).
+
+#ifndef DX_COLLIDE_TRIMESH_H
+#define DX_COLLIDE_TRIMESH_H
+
+#include "../../libodecollide/trimesh_internal.h"
+#include "collide_math.h"
+
+// One pair's query, everything in the mesh frame.
+typedef struct dxTriQuery {
+    dxTriMesh *mesh;
+    const dxTriMeshData *data;   // the mesh's data (NULL: see dxTriClipToPrism)
+    dxGeom *other;
+    dReal pos[3];      // the other geom's position ...
+    dReal R[12];       // ... and rotation (row-major 3x4) in the mesh frame
+    dReal scale;       // the other geom's size (tolerances)
+} dxTriQuery;
+
+// One triangle: its vertices, unit normal, feature bits (DX_TRI_*_FEATURE)
+// and neighbours across its edges.
+typedef struct dxTri {
+    int index;
+    int vi[3];         // (welded) vertex indices
+    dReal v[3][3];
+    dReal n[3];
+    unsigned features;
+    const int *neighbour;
+} dxTri;
+
+// A triangle test: adds the triangle's contacts with dxTriAdd and returns 1
+// if the triangle touches the other geom.
+typedef int dxTriTest(dxTriQuery *q, const dxTri *t);
+
+// Add a contact: pos in the overlap, n the unit direction in which the other
+// geom leaves the mesh, depth >= 0 (mesh frame).
+void dxTriAdd(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth, int tri);
+
+// The same with the other's triangle (the other geom being a trimesh).
+void dxTriAdd2(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth, int tri,
+               int tri2);
+
+// The collider body: every triangle whose box meets the other geom's box
+// (mesh frame) and that the per-triangle callback accepts goes through
+// test; the array callback then sees those that touch; the contacts are
+// reduced (near-duplicates merged, the triangles of a merged one given to
+// the merge callback, at most flags & 0xffff kept: the deepest first, then
+// each the farthest from those kept) and written.
+int dxTriMeshCollide(dxGeom *mesh, dxGeom *other, int flags, dContactGeom *c, int skip,
+                     dxTriTest *test);
+
+// Reduce the contacts gathered in q->mesh->raw (near-duplicates merged, the
+// triangles of a merged one given to the merge callbacks, flat groups kept
+// to their hull corners, at most flags & 0xffff kept: the deepest first,
+// then the spread) and write them in world coordinates; returns the count.
+int dxTriMeshFinish(dxTriQuery *q, int flags, dContactGeom *c, int skip);
+
+// Load triangle t (dxTri) from the data.
+void dxTriLoad(const dxTriMeshData *d, int t, dxTri *out);
+
+// The closest point of triangle t to p: into q; returns the feature it is
+// on: 0 the face, 1 + k edge k (v_k to v_k+1), 4 + k vertex k.
+int dxTriClosestPoint(const dxTri *t, const dReal p[3], dReal q[3]);
+
+// How a contact at `feature` (as dxTriClosestPoint) leaving along the unit
+// direction dir is made: 1 along dir (a convex or border edge or vertex,
+// dir within its region); 0 not a feature (the face; a flat or concave edge
+// or vertex, where a neighbour face gives the contact unless the point is
+// over this triangle's border: then the face normal, with no internal-edge
+// bumps); -1 not at all (dir is outside the feature's region: a neighbour
+// face or edge is nearer and gives the contact).
+int dxTriFeatureNormal(const dxTriQuery *q, const dxTri *t, int feature, const dReal dir[3]);
+
+// The inward normal (not unit) of the side of t's prism through edge k.
+void dxTriSideNormal(const dxTri *t, int k, dReal m[3]);
+
+// Clip the polygon a (n corners, at most DX_TRI_POLY_MAX - 3) to the prism
+// of t (its sides widened by rounding): returns the new corner count, and
+// for each corner in made[] whether it was made on a side of the prism, at
+// an edge between coplanar faces (then a corner of the triangulation only,
+// not of a contact patch; never if q->data is NULL) or another edge.
+enum { DX_TRI_POLY_MAX = 36 };
+enum { DX_TRI_MADE_NOT, DX_TRI_MADE_AT_EDGE, DX_TRI_MADE_AT_FLAT_EDGE };
+int dxTriClipToPrism(const dxTriQuery *q, const dxTri *t, dReal a[][3], int n, int *made);
+
+#endif

@@ -1,0 +1,374 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// collide_trimesh_convex.c -- a trimesh against a sphere, a capsule and a
+// box, triangle by triangle in the mesh frame. Triangles are one-sided:
+// a shape whose centre is behind a triangle's plane does not touch it.
+//
+// - Sphere: the closest point of the triangle; on the face the contact
+//   takes the face normal and the depth below the face's plane; on a
+//   convex edge or vertex, the direction from it (if within its region);
+//   an edge or vertex that is not a real feature (flat or concave) leaves
+//   the contact to the neighbouring face, so a ball rolling over a flat
+//   area of many triangles meets one plane.
+// - Capsule: the axis segment clipped to the triangle's prism gives a
+//   contact at each end (face normal, depth below the plane); if it misses
+//   the prism, the closest points of the segment and the triangle's edges
+//   as for the sphere.
+// - Box: rejected if a separating axis exists (the triangle's normal, the
+//   box's axes, the edges' cross products); else each box face clipped to
+//   the triangle's prism gives its corners on or behind the triangle's
+//   plane, with the face normal and their depth below the plane (the
+//   corners of the part of the box behind the triangle, but for those on
+//   the plane itself).
+
+#include "collide_trimesh.h"
+
+// How far (relative to the other geom's size) a point may be off a
+// triangle's border and still count as over it (rounding at shared edges).
+#ifdef dSINGLE
+#define OVER_BORDER ((dReal)1e-4)
+#else
+#define OVER_BORDER ((dReal)1e-7)
+#endif
+
+static void sub3(dReal out[3], const dReal a[3], const dReal b[3])
+{
+    for (int i = 0; i < 3; i++) out[i] = a[i] - b[i];
+}
+
+static void cross3(dReal out[3], const dReal a[3], const dReal b[3])
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+// Height of p above triangle t's plane.
+static dReal height(const dxTri *t, const dReal p[3])
+{
+    dReal d[3];
+    sub3(d, p, t->v[0]);
+    return dx_dot(t->n, d);
+}
+
+// A ball of radius r at p (a sphere's centre, or a point of a capsule's
+// axis) against the closest point on_tri of t, on feature f (as
+// dxTriClosestPoint): along the face normal on the face, or over a flat or
+// concave edge or vertex when p is (within rounding) over the triangle's
+// border; along the direction from a convex feature within its region;
+// else none. Returns 1 if a contact was added.
+static int ball_contact(dxTriQuery *q, const dxTri *t, const dReal p[3], dReal r,
+                        const dReal on_tri[3], int f)
+{
+    dReal d[3];
+    sub3(d, p, on_tri);
+    dReal dist2 = dx_dot(d, d);
+    if (dist2 > r * r) return 0;
+    dReal dist = dSqrt(dist2), h = height(t, p), dir[3] = { t->n[0], t->n[1], t->n[2] };
+    int how = 0;
+    if (f != 0 && dist > DX_COLLIDE_EPS * r) {
+        for (int i = 0; i < 3; i++) dir[i] = d[i] / dist;
+        how = dxTriFeatureNormal(q, t, f, dir);
+        // Off the border of a non-feature: the neighbour's contact.
+        dReal off2 = dist2 - h * h, tol = OVER_BORDER * q->scale;
+        if (how == 0 && off2 > tol * tol) return 0;
+    }
+    if (how < 0) return 0;
+    dReal depth, pos[3];
+    if (how == 0) {
+        depth = r - h;
+        if (depth < 0) return 0;
+        for (int i = 0; i < 3; i++) dir[i] = t->n[i];
+    } else {
+        depth = r - dist;
+    }
+    for (int i = 0; i < 3; i++) pos[i] = p[i] - r * dir[i];
+    dxTriAdd(q, pos, dir, depth, t->index);
+    return 1;
+}
+
+// ---- sphere ---------------------------------------------------------------------
+
+static int sphere_test(dxTriQuery *q, const dxTri *t)
+{
+    dReal r = ((const dxSphere *)q->other)->radius, h = height(t, q->pos);
+    if (h < 0 || h > r) return 0;
+    dReal on_tri[3];
+    int f = dxTriClosestPoint(t, q->pos, on_tri);
+    return ball_contact(q, t, q->pos, r, on_tri, f);
+}
+
+int dxCollideTriMeshSphere(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
+{
+    return dxTriMeshCollide(o1, o2, flags, c, skip, sphere_test);
+}
+
+// ---- capsule --------------------------------------------------------------------
+
+// The parameter range [*lo, *hi] of p0 + s (p1 - p0) inside the prism of t
+// (borders widened by rounding): 0 if empty.
+static int clip_to_prism(const dxTri *t, const dReal p0[3], const dReal p1[3], dReal tol,
+                         dReal *lo, dReal *hi)
+{
+    *lo = 0;
+    *hi = 1;
+    for (int k = 0; k < 3; k++) {
+        dReal m[3], a[3], b[3];
+        dxTriSideNormal(t, k, m);
+        sub3(a, p0, t->v[k]);
+        sub3(b, p1, t->v[k]);
+        dReal slack = tol * dSqrt(dx_dot(m, m));
+        dReal f0 = dx_dot(m, a) + slack, f1 = dx_dot(m, b) + slack;
+        if (f0 < 0 && f1 < 0) return 0;
+        if (f0 < 0) *lo = dMax(*lo, f0 / (f0 - f1));
+        else if (f1 < 0) *hi = dMin(*hi, f0 / (f0 - f1));
+    }
+    return *lo <= *hi;
+}
+
+static int capsule_test(dxTriQuery *q, const dxTri *t)
+{
+    const dxCapsule *cap = (const dxCapsule *)q->other;
+    dReal r = cap->radius, half = cap->length / 2, a[3], p0[3], p1[3];
+    dx_axis(q->R, 2, a);
+    if (height(t, q->pos) < 0) return 0;
+    for (int i = 0; i < 3; i++) {
+        p0[i] = q->pos[i] - half * a[i];
+        p1[i] = q->pos[i] + half * a[i];
+    }
+    if (dMin(height(t, p0), height(t, p1)) > r) return 0;
+    dReal lo, hi;
+    int added = 0;
+    if (clip_to_prism(t, p0, p1, DX_COLLIDE_EPS * q->scale, &lo, &hi)) {
+        dReal s[2] = { lo, hi };
+        for (int j = 0; j < (hi - lo > DX_COLLIDE_EPS ? 2 : 1); j++) {
+            dReal e[3], pos[3];
+            for (int i = 0; i < 3; i++) e[i] = p0[i] + s[j] * (p1[i] - p0[i]);
+            dReal depth = r - height(t, e);
+            if (depth < 0) continue;
+            for (int i = 0; i < 3; i++) pos[i] = e[i] - r * t->n[i];
+            dxTriAdd(q, pos, t->n, depth, t->index);
+            added = 1;
+        }
+        if (added) return 1;
+    }
+    // The closest points of the axis and the triangle's edges.
+    dReal best = dInfinity, ps[3], pt[3];
+    int feature = 0;
+    for (int k = 0; k < 3; k++) {
+        const dReal *va = t->v[k], *vb = t->v[(k + 1) % 3];
+        dReal ec[3], eu[3];
+        sub3(eu, vb, va);
+        dReal elen = dSqrt(dx_dot(eu, eu));
+        for (int i = 0; i < 3; i++) {
+            ec[i] = (va[i] + vb[i]) / 2;
+            eu[i] /= elen;
+        }
+        dReal s, u;
+        dx_closest_segments(q->pos, a, half, ec, eu, elen / 2, &s, &u);
+        dReal x[3], y[3], d[3];
+        for (int i = 0; i < 3; i++) {
+            x[i] = q->pos[i] + s * a[i];
+            y[i] = ec[i] + u * eu[i];
+        }
+        sub3(d, x, y);
+        dReal dd = dx_dot(d, d);
+        if (dd < best) {
+            best = dd;
+            for (int i = 0; i < 3; i++) {
+                ps[i] = x[i];
+                pt[i] = y[i];
+            }
+            dReal end = elen / 2 * (1 - DX_COLLIDE_EPS);
+            feature = u <= -end ? 4 + k : u >= end ? 4 + (k + 1) % 3 : 1 + k;
+        }
+    }
+    if (best > r * r || height(t, ps) < 0) return 0;
+    return ball_contact(q, t, ps, r, pt, feature);
+}
+
+int dxCollideTriMeshCapsule(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
+{
+    return dxTriMeshCollide(o1, o2, flags, c, skip, capsule_test);
+}
+
+// ---- box --------------------------------------------------------------------------
+
+// The interval of triangle t's projection on the axis L.
+static void triangle_interval(const dxTri *t, const dReal L[3], dReal *lo, dReal *hi)
+{
+    dReal t0 = dx_dot(L, t->v[0]), t1 = dx_dot(L, t->v[1]), t2 = dx_dot(L, t->v[2]);
+    *lo = dMin(t0, dMin(t1, t2));
+    *hi = dMax(t0, dMax(t1, t2));
+}
+
+// Whether the axis L separates the triangle from the box (centre c, unit
+// axes ax[j], half sides h[j]).
+static int separates_box(const dxTri *t, const dReal L[3], const dReal c[3], dReal ax[3][3],
+                         const dReal h[3])
+{
+    if (dx_dot(L, L) <= DX_COLLIDE_EPS * DX_COLLIDE_EPS) return 0;   // parallel edges
+    dReal lo, hi, bc = dx_dot(L, c), br = 0;
+    triangle_interval(t, L, &lo, &hi);
+    for (int j = 0; j < 3; j++) br += h[j] * dFabs(dx_dot(L, ax[j]));
+    return hi < bc - br || lo > bc + br;
+}
+
+// Whether the axis L separates the triangle from the cylinder (centre c,
+// unit axis a, radius r, half length h): its projection reaches
+// h |L.a| + r sqrt(|L|^2 - (L.a)^2) from the centre's.
+static int separates_cylinder(const dxTri *t, const dReal L[3], const dReal c[3],
+                              const dReal a[3], dReal r, dReal h)
+{
+    dReal len2 = dx_dot(L, L);
+    if (len2 <= DX_COLLIDE_EPS * DX_COLLIDE_EPS) return 0;
+    dReal la = dx_dot(L, a), lo, hi, bc = dx_dot(L, c);
+    dReal across = len2 - la * la;
+    dReal br = h * dFabs(la) + r * dSqrt(across > 0 ? across : 0);
+    triangle_interval(t, L, &lo, &hi);
+    return hi < bc - br || lo > bc + br;
+}
+
+// A cylinder's cap has CYL_SIDES corners (a polygon clipped to a prism
+// gains at most three).
+enum { CYL_SIDES = 32, POLY_MAX = DX_TRI_POLY_MAX };
+
+// One face (polygon a, n corners) of a convex solid against triangle t:
+// clipped to the triangle's prism (widened by rounding), its points on or
+// behind the triangle's plane are contacts with the face normal and their
+// depth below the plane (where the face crosses the plane the depth is zero
+// and adds nothing). Points made on the prism's side at a flat edge are
+// left out: they are corners of the triangulation, not of the contact
+// patch (the corners of the solid over the neighbour come from it).
+// Returns 1 if any was added.
+static int face_contacts(dxTriQuery *q, const dxTri *t, dReal a[][3], int n)
+{
+    // A face wholly in front of the plane adds nothing (clipping keeps
+    // points within the polygon): skip the clipping.
+    dReal eps = DX_COLLIDE_EPS * q->scale;
+    int behind = 0;
+    for (int i = 0; i < n && !behind; i++) behind = height(t, a[i]) <= eps;
+    if (!behind) return 0;
+    int made[POLY_MAX];
+    n = dxTriClipToPrism(q, t, a, n, made);
+    int added = 0;
+    for (int i = 0; i < n; i++) {
+        dReal depth = -height(t, a[i]);
+        if (depth < -eps || made[i] == DX_TRI_MADE_AT_FLAT_EDGE) continue;
+        dxTriAdd(q, a[i], t->n, dMax(depth, 0), t->index);
+        added = 1;
+    }
+    return added;
+}
+
+static int box_test(dxTriQuery *q, const dxTri *t)
+{
+    const dReal *side = ((const dxBox *)q->other)->side;
+    const dReal *c = q->pos;
+    if (height(t, c) < 0) return 0;
+    dReal h[3] = { side[0] / 2, side[1] / 2, side[2] / 2 }, ax[3][3];
+    for (int j = 0; j < 3; j++) dx_axis(q->R, j, ax[j]);
+    if (separates_box(t, t->n, c, ax, h)) return 0;
+    for (int j = 0; j < 3; j++)
+        if (separates_box(t, ax[j], c, ax, h)) return 0;
+    for (int k = 0; k < 3; k++) {
+        dReal e[3], L[3];
+        sub3(e, t->v[(k + 1) % 3], t->v[k]);
+        for (int j = 0; j < 3; j++) {
+            cross3(L, e, ax[j]);
+            if (separates_box(t, L, c, ax, h)) return 0;
+        }
+    }
+    // Corners: bit j of the index picks the sign of axis j.
+    dReal corner[8][3];
+    for (int v = 0; v < 8; v++)
+        for (int i = 0; i < 3; i++)
+            corner[v][i] = c[i] + (v & 1 ? h[0] : -h[0]) * ax[0][i] +
+                           (v & 2 ? h[1] : -h[1]) * ax[1][i] + (v & 4 ? h[2] : -h[2]) * ax[2][i];
+    static const int faces[6][4] = { { 0, 2, 6, 4 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
+                                     { 2, 3, 7, 6 }, { 0, 1, 3, 2 }, { 4, 5, 7, 6 } };
+    int added = 0;
+    for (int f = 0; f < 6; f++) {
+        dReal a[POLY_MAX][3];
+        for (int i = 0; i < 4; i++)
+            for (int j = 0; j < 3; j++) a[i][j] = corner[faces[f][i]][j];
+        added |= face_contacts(q, t, a, 4);
+    }
+    return added;
+}
+
+int dxCollideTriMeshBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
+{
+    return dxTriMeshCollide(o1, o2, flags, c, skip, box_test);
+}
+
+// ---- cylinder ---------------------------------------------------------------------
+
+// The cylinder as a prism of CYL_SIDES sides inscribed in it, turned about
+// its axis so that one side line lies where the cylinder reaches deepest
+// below the triangle: that depth is exact, and so is a cylinder lying on
+// its side (its lowest line is an edge of the prism). Elsewhere the prism
+// is inside the cylinder by at most r (1 - cos(pi / CYL_SIDES)), 0.5% of r.
+static int cylinder_test(dxTriQuery *q, const dxTri *t)
+{
+    const dxCylinder *cyl = (const dxCylinder *)q->other;
+    const dReal *c = q->pos, r = cyl->radius, h = cyl->length / 2;
+    if (height(t, c) < 0) return 0;
+    dReal a[3], x[3], y[3];
+    dx_axis(q->R, 2, a);
+    if (separates_cylinder(t, t->n, c, a, r, h) || separates_cylinder(t, a, c, a, r, h))
+        return 0;
+    for (int k = 0; k < 3; k++) {
+        dReal e[3], L[3];
+        sub3(e, t->v[(k + 1) % 3], t->v[k]);
+        cross3(L, e, a);
+        if (separates_cylinder(t, L, c, a, r, h)) return 0;
+    }
+    // x: the direction across the axis closest to -n (any if the axis is
+    // along n); y completes the frame.
+    dReal down = -dx_dot(t->n, a);
+    for (int i = 0; i < 3; i++) x[i] = -t->n[i] - down * a[i];
+    dReal xl = dSqrt(dx_dot(x, x));
+    if (xl > DX_COLLIDE_EPS) {
+        for (int i = 0; i < 3; i++) x[i] /= xl;
+    } else {
+        dx_axis(q->R, 0, x);
+    }
+    cross3(y, a, x);
+    // The corners, turning by 2 pi / CYL_SIDES (its cosine and sine).
+    const dReal step_c = (dReal)0.98078528040323044913, step_s = (dReal)0.19509032201612826785;
+    dReal rim[2][CYL_SIDES][3], cs = r, sn = 0;
+    for (int s = 0; s < CYL_SIDES; s++) {
+        for (int i = 0; i < 3; i++) {
+            dReal p = c[i] + cs * x[i] + sn * y[i];
+            rim[0][s][i] = p - h * a[i];
+            rim[1][s][i] = p + h * a[i];
+        }
+        dReal nc = cs * step_c - sn * step_s;
+        sn = sn * step_c + cs * step_s;
+        cs = nc;
+    }
+    int added = 0;
+    dReal poly[POLY_MAX][3];
+    for (int cap = 0; cap < 2; cap++) {
+        for (int s = 0; s < CYL_SIDES; s++)
+            for (int i = 0; i < 3; i++) poly[s][i] = rim[cap][s][i];
+        added |= face_contacts(q, t, poly, CYL_SIDES);
+    }
+    for (int s = 0; s < CYL_SIDES; s++) {
+        int u = (s + 1) % CYL_SIDES;
+        for (int i = 0; i < 3; i++) {
+            poly[0][i] = rim[0][s][i];
+            poly[1][i] = rim[0][u][i];
+            poly[2][i] = rim[1][u][i];
+            poly[3][i] = rim[1][s][i];
+        }
+        added |= face_contacts(q, t, poly, 4);
+    }
+    return added;
+}
+
+int dxCollideTriMeshCylinder(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
+{
+    return dxTriMeshCollide(o1, o2, flags, c, skip, cylinder_test);
+}

@@ -1,0 +1,225 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// trimesh_geom.c -- the trimesh geom class (guide 10.7.6): creation on a
+// data object, the callbacks, temporal-coherence settings (kept, with no
+// effect on contacts), the last transform, triangles in world coordinates
+// and the bounding box.
+
+#include <ode/memory.h>
+#include <string.h>
+
+#include "shapes.h"
+#include "trimesh_internal.h"
+
+void dxTriMeshDataFree(dxTriMeshData *d);   // trimesh_data.c
+
+#define CHECK_TRIMESH(g, on_fail) \
+    do { \
+        DX_CHECK_GEOM(g, on_fail); \
+        DX_CHECK_ARG((g)->ops->cls == dTriMeshClass, on_fail, "geom is a %s, not a trimesh", \
+                     (g)->ops->name); \
+    } while (0)
+
+void dxTriMeshToLocal(const dxGeom *mesh, const dReal p[3], dReal out[3])
+{
+    dReal d[3] = { p[0] - mesh->pos[0], p[1] - mesh->pos[1], p[2] - mesh->pos[2] };
+    dxTriMeshDirToLocal(mesh, d, out);
+}
+
+void dxTriMeshDirToLocal(const dxGeom *mesh, const dReal v[3], dReal out[3])
+{
+    const dReal *R = mesh->R;
+    for (int i = 0; i < 3; i++) out[i] = R[i] * v[0] + R[4 + i] * v[1] + R[8 + i] * v[2];
+}
+
+// The box around the tree's root box, posed.
+static void trimesh_aabb(dxGeom *g)
+{
+    dxTriMesh *m = (dxTriMesh *)g;
+    dReal lo[3] = { 0, 0, 0 }, hi[3] = { 0, 0, 0 };
+    if (m->data) dxTriMeshDataBounds(m->data, lo, hi);
+    dReal c[3], h[3], centre[3];
+    for (int k = 0; k < 3; k++) {
+        c[k] = (lo[k] + hi[k]) / 2;
+        h[k] = (hi[k] - lo[k]) / 2;
+    }
+    dMultiply0_331(centre, g->R, c);
+    for (int k = 0; k < 3; k++) centre[k] += g->pos[k];
+    dxAABBOfBox(g->aabb, centre, g->R, h);
+}
+
+// Let go of the data (freed if it was destroyed while in use).
+static void detach_data(dxTriMesh *m)
+{
+    dxTriMeshData *d = m->data;
+    if (!d) return;
+    dxTriMesh **p = &d->first_user;
+    while (*p && *p != m) p = &(*p)->next_user;
+    if (*p) *p = m->next_user;
+    m->next_user = NULL;
+    m->data = NULL;
+    if (--d->users == 0 && d->destroy_pending) dxTriMeshDataFree(d);
+}
+
+static void attach_data(dxTriMesh *m, dxTriMeshData *d)
+{
+    if (m->data == d) return;
+    detach_data(m);
+    m->data = d;
+    if (!d) return;
+    d->users++;
+    m->next_user = d->first_user;
+    d->first_user = m;
+}
+
+static void trimesh_destroy(dxGeom *g)
+{
+    dxTriMesh *m = (dxTriMesh *)g;
+    detach_data(m);
+    dFree(m->candidates, (size_t)m->candidates_cap * sizeof(int));
+    dFree(m->hits, (size_t)m->hits_cap * sizeof(int));
+    dFree(m->raw, (size_t)m->raw_cap * sizeof(dxTriMeshRaw));
+}
+
+const dxGeomClassOps dx_trimesh_ops = { dTriMeshClass, "trimesh", trimesh_aabb, trimesh_destroy };
+
+void dxTriMeshDataChanged(dxTriMeshData *d)
+{
+    for (dxTriMesh *m = d->first_user; m; m = m->next_user) dxGeomShapeChanged(&m->g);
+}
+
+dGeomID dCreateTriMesh(dSpaceID space, dTriMeshDataID Data, dTriCallback *Callback,
+                       dTriArrayCallback *ArrayCallback, dTriRayCallback *RayCallback)
+{
+    DX_CHECK_ARG(Data == NULL || (dxTriMeshDataIsLive(Data) && !Data->destroy_pending),
+                 return NULL, "Data was destroyed");
+    dxTriMesh *m = (dxTriMesh *)dxGeomCreate(sizeof *m, &dx_trimesh_ops, DX_GEOM_PLACEABLE,
+                                             NULL);
+    m->callback = Callback;
+    m->array_callback = ArrayCallback;
+    m->ray_callback = RayCallback;
+    for (int i = 0; i < 4; i++) m->last_transform[5 * i] = 1;
+    attach_data(m, Data);
+    if (space) dSpaceAdd(space, &m->g);
+    return &m->g;
+}
+
+void dGeomTriMeshSetData(dGeomID g, dTriMeshDataID Data)
+{
+    CHECK_TRIMESH(g, return);
+    DX_CHECK_ARG(Data == NULL || (dxTriMeshDataIsLive(Data) && !Data->destroy_pending), return,
+                 "Data was destroyed");
+    attach_data((dxTriMesh *)g, Data);
+    dxGeomShapeChanged(g);
+}
+
+dTriMeshDataID dGeomTriMeshGetData(dGeomID g)
+{
+    CHECK_TRIMESH(g, return NULL);
+    return ((dxTriMesh *)g)->data;
+}
+
+dTriMeshDataID dGeomTriMeshGetTriMeshDataID(dGeomID g)
+{
+    return dGeomTriMeshGetData(g);
+}
+
+#define CALLBACK_ACCESSORS(Name, Type, field) \
+    void dGeomTriMeshSet##Name(dGeomID g, Type *cb) \
+    { \
+        CHECK_TRIMESH(g, return); \
+        ((dxTriMesh *)g)->field = cb; \
+    } \
+    Type *dGeomTriMeshGet##Name(dGeomID g) \
+    { \
+        CHECK_TRIMESH(g, return NULL); \
+        return ((dxTriMesh *)g)->field; \
+    }
+
+CALLBACK_ACCESSORS(Callback, dTriCallback, callback)
+CALLBACK_ACCESSORS(ArrayCallback, dTriArrayCallback, array_callback)
+CALLBACK_ACCESSORS(RayCallback, dTriRayCallback, ray_callback)
+CALLBACK_ACCESSORS(TriMergeCallback, dTriTriMergeCallback, merge_callback)
+
+#define CHECK_TC_CLASS(c, on_fail) \
+    DX_CHECK_ARG((c) >= 0 && (c) < 32, on_fail, "geomClass %d is not a geometry class", (c))
+
+void dGeomTriMeshEnableTC(dGeomID g, int geomClass, int enable)
+{
+    CHECK_TRIMESH(g, return);
+    CHECK_TC_CLASS(geomClass, return);
+    dxTriMesh *m = (dxTriMesh *)g;
+    if (enable) m->tc_classes |= 1u << geomClass;
+    else m->tc_classes &= ~(1u << geomClass);
+}
+
+int dGeomTriMeshIsTCEnabled(dGeomID g, int geomClass)
+{
+    CHECK_TRIMESH(g, return 0);
+    CHECK_TC_CLASS(geomClass, return 0);
+    return (((dxTriMesh *)g)->tc_classes >> geomClass) & 1;
+}
+
+// Nothing is cached between collisions, so there is nothing to clear.
+void dGeomTriMeshClearTCCache(dGeomID g)
+{
+    CHECK_TRIMESH(g, return);
+}
+
+void dGeomTriMeshSetLastTransform(dGeomID g, const dMatrix4 last_trans)
+{
+    CHECK_TRIMESH(g, return);
+    DX_CHECK_ARG(last_trans != NULL, return, "last_trans is NULL");
+    memcpy(((dxTriMesh *)g)->last_transform, last_trans, sizeof(dMatrix4));
+    ((dxTriMesh *)g)->last_set = 1;
+}
+
+const dReal *dGeomTriMeshGetLastTransform(dGeomID g)
+{
+    CHECK_TRIMESH(g, return NULL);
+    return ((dxTriMesh *)g)->last_transform;
+}
+
+int dGeomTriMeshGetTriangleCount(dGeomID g)
+{
+    CHECK_TRIMESH(g, return 0);
+    const dxTriMeshData *d = ((dxTriMesh *)g)->data;
+    return d ? d->tri_count : 0;
+}
+
+#define CHECK_INDEX(g, i, on_fail) \
+    DX_CHECK_ARG(((dxTriMesh *)g)->data && (i) >= 0 && (i) < ((dxTriMesh *)g)->data->tri_count, \
+                 on_fail, "Index %d is not a triangle of the mesh (%d)", (i), \
+                 dGeomTriMeshGetTriangleCount(g))
+
+// Triangle t of the geom in world coordinates.
+static void world_triangle(dxGeom *g, int t, dReal v[3][3])
+{
+    dReal local[3][3];
+    dxTriMeshTriangle(((dxTriMesh *)g)->data, t, local);
+    for (int k = 0; k < 3; k++) {
+        dMultiply0_331(v[k], g->R, local[k]);
+        for (int i = 0; i < 3; i++) v[k][i] += g->pos[i];
+    }
+}
+
+void dGeomTriMeshGetTriangle(dGeomID g, int Index, dVector3 *v0, dVector3 *v1, dVector3 *v2)
+{
+    CHECK_TRIMESH(g, return);
+    CHECK_INDEX(g, Index, return);
+    dReal v[3][3];
+    world_triangle(g, Index, v);
+    dVector3 *out[3] = { v0, v1, v2 };
+    for (int k = 0; k < 3; k++)
+        if (out[k]) dAssignVector3(*out[k], v[k][0], v[k][1], v[k][2]);
+}
+
+void dGeomTriMeshGetPoint(dGeomID g, int Index, dReal u, dReal v, dVector3 Out)
+{
+    CHECK_TRIMESH(g, return);
+    CHECK_INDEX(g, Index, return);
+    DX_CHECK_ARG(Out != NULL, return, "Out is NULL");
+    dReal w[3][3];
+    world_triangle(g, Index, w);
+    for (int i = 0; i < 3; i++) Out[i] = (1 - u - v) * w[0][i] + u * w[1][i] + v * w[2][i];
+}

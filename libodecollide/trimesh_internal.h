@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// trimesh_internal.h -- triangle mesh data (the user's arrays, read in place,
+// and what is derived from them: face normals, edge features, a tree of
+// boxes) and the trimesh geom, for trimesh_*.c and the native colliders.
+// Everything here is in the mesh's own frame.
+
+#ifndef DX_TRIMESH_INTERNAL_H
+#define DX_TRIMESH_INTERNAL_H
+
+#include <ode/collision_trimesh.h>
+
+#include "geom_internal.h"
+
+enum {
+    DX_MAGIC_TRIMESH_DATA = 0x54726944u,   // "TriD"
+    DX_MAGIC_TRIMESH_DATA_DEAD = 0xdead7e1du
+};
+
+// Per-triangle feature bits (same values as dMESHDATAUSE_*): edge k joins
+// vertices k and k+1 (mod 3). A set bit means the edge or vertex is a real
+// feature of the surface: on the border or convex. Edges between coplanar
+// faces and concave edges are not, nor vertices with no such edge: the
+// colliders leave contacts there to the neighbouring faces (no internal-edge
+// bumps).
+enum { DX_TRI_EDGE_FEATURE = 0x01, DX_TRI_VERTEX_FEATURE = 0x08 };
+
+// A node of the box tree: a leaf holds count > 0 triangles order[first ..];
+// an inner node (count 0) has its children at index + 1 and at `first`.
+typedef struct dxTriMeshNode {
+    dReal lo[3], hi[3];
+    int first, count;
+} dxTriMeshNode;
+
+struct dxTriMesh;
+
+struct dxTriMeshData {
+    uint32_t magic;
+    // The user's arrays (not copied).
+    const void *vertices;
+    int vertex_stride, vertex_count, vertex_double;   // double or float coordinates
+    const void *indices;
+    int tri_stride, tri_count;
+    const void *user_normals;             // dTRIMESHDATA_FACE_NORMALS
+    unsigned char *user_flags;            // dTRIMESHDATA_USE_FLAGS set by the user
+    // Derived (owned).
+    dReal *normal;                        // 3 per triangle: unit, or 0 if degenerate
+    int *weld;                            // per vertex: the first one at its position
+    int *vertex_first, *vertex_adj;       // per welded vertex: the vertices joined to it
+    int vertex_adj_count;
+    int *neighbour;                       // 3 per triangle: across edge k, or -1
+    int closed;                           // every edge has a neighbour
+    unsigned char *features;              // DX_TRI_*_FEATURE bits per triangle
+    dxTriMeshNode *nodes;
+    int node_count;
+    int *order;                           // triangles in leaf order
+    unsigned char *built_flags;           // Preprocess: use flags
+    void *face_angles;                    // Preprocess: angles per edge
+    size_t face_angles_size;
+    int users;                            // trimesh geoms using the data ...
+    struct dxTriMesh *first_user;         // ... listed through next_user
+    int destroy_pending;                  // destroyed while still used
+};
+typedef struct dxTriMeshData dxTriMeshData;
+
+// Scratch memory of a geom's collisions, grown when needed and reused.
+typedef struct dxTriMeshRaw {
+    dReal pos[3], n[3], depth;   // n: the direction the other geom leaves along
+    int tri, tri2;               // the triangle, and the other's (a trimesh) or -1
+} dxTriMeshRaw;
+
+typedef struct dxTriMesh {
+    dxGeom g;
+    dxTriMeshData *data;
+    struct dxTriMesh *next_user;          // the next geom on the same data
+    dTriCallback *callback;
+    dTriArrayCallback *array_callback;
+    dTriRayCallback *ray_callback;
+    dTriTriMergeCallback *merge_callback;
+    unsigned tc_classes;                  // bit per class: temporal coherence on
+    dMatrix4 last_transform;
+    int last_set;                         // SetLastTransform was called
+    int *candidates, *hits;               // triangle lists of one query
+    int candidates_cap, hits_cap;
+    dxTriMeshRaw *raw;                    // contacts before reduction
+    int raw_count, raw_cap;
+} dxTriMesh;
+
+extern const dxGeomClassOps dx_trimesh_ops;
+
+static inline int dxTriMeshDataIsLive(const dxTriMeshData *d)
+{
+    return d != NULL && d->magic == DX_MAGIC_TRIMESH_DATA;
+}
+
+// The geometry of the data changed: every geom on it learns it (bounding
+// box, backend caches).
+void dxTriMeshDataChanged(dxTriMeshData *d);
+
+// The feature bits the colliders use for triangle t: the user's
+// dTRIMESHDATA_USE_FLAGS if set, else those computed with the data.
+static inline unsigned dxTriMeshFeatures(const dxTriMeshData *d, int t)
+{
+    return d->user_flags ? d->user_flags[t] : d->features[t];
+}
+
+// Vertex i (0 <= i < vertex_count) in dReal.
+void dxTriMeshVertex(const dxTriMeshData *d, int i, dReal out[3]);
+// The three vertex indices of triangle t.
+void dxTriMeshIndices(const dxTriMeshData *d, int t, int idx[3]);
+// The three vertices of triangle t.
+void dxTriMeshTriangle(const dxTriMeshData *d, int t, dReal v[3][3]);
+// A triangle with a zero normal has no area and never collides.
+static inline int dxTriMeshIsDegenerate(const dxTriMeshData *d, int t)
+{
+    const dReal *n = d->normal + 3 * t;
+    return n[0] == 0 && n[1] == 0 && n[2] == 0;
+}
+
+// Every triangle whose box overlaps [lo, hi] (mesh frame) into *out (grown
+// as needed, capacity *cap); returns the count.
+int dxTriMeshQueryBox(const dxTriMeshData *d, const dReal lo[3], const dReal hi[3], int **out,
+                      int *cap);
+// Grow an int array to hold n.
+void dxTriMeshReserveInts(int **a, int *cap, int n);
+
+// The bounding box of the whole mesh in its frame (empty data: a point).
+void dxTriMeshDataBounds(const dxTriMeshData *d, dReal lo[3], dReal hi[3]);
+
+// A geom's world pose as the mesh frame of its collisions: p_mesh = R^T (p - pos).
+void dxTriMeshToLocal(const dxGeom *mesh, const dReal p[3], dReal out[3]);
+void dxTriMeshDirToLocal(const dxGeom *mesh, const dReal v[3], dReal out[3]);
+
+#endif

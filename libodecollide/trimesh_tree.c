@@ -1,0 +1,173 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// trimesh_tree.c -- the box tree of a mesh: built once per data object
+// (top-down, each node's triangles split at the median of their centres
+// along the longest side of the centres' box, leaves of at most LEAF
+// triangles), refitted bottom-up when the vertices move (same topology),
+// and walked with a fixed stack to list the triangles near a box.
+
+#include <ode/memory.h>
+#include <string.h>
+
+#include "trimesh_internal.h"
+
+// A median split halves the triangles, so the depth stays below
+// log2(tri_count) + 2, far below STACK.
+enum { LEAF = 4, STACK = 64 };
+
+void dxTriMeshBuildTree(dxTriMeshData *d);
+void dxTriMeshRefitTree(dxTriMeshData *d);
+
+static void triangle_box(const dxTriMeshData *d, int t, dReal lo[3], dReal hi[3])
+{
+    dReal v[3][3];
+    dxTriMeshTriangle(d, t, v);
+    for (int k = 0; k < 3; k++) {
+        lo[k] = dMin(v[0][k], dMin(v[1][k], v[2][k]));
+        hi[k] = dMax(v[0][k], dMax(v[1][k], v[2][k]));
+    }
+}
+
+// Rearrange order[lo, hi) so that the element at mid has the centre it
+// would have sorted by centre[.][axis], no larger ones before it
+// (quickselect).
+static void select_median(int *order, const dReal *centre, int axis, int lo, int hi, int mid)
+{
+    while (hi - lo > 1) {
+        dReal pivot = centre[3 * order[(lo + hi) / 2] + axis];
+        int i = lo, j = hi - 1;
+        while (i <= j) {
+            while (centre[3 * order[i] + axis] < pivot) i++;
+            while (centre[3 * order[j] + axis] > pivot) j--;
+            if (i <= j) {
+                int t = order[i];
+                order[i] = order[j];
+                order[j] = t;
+                i++;
+                j--;
+            }
+        }
+        if (mid <= j) hi = j + 1;
+        else if (mid >= i) lo = i;
+        else return;
+    }
+}
+
+static void grow(dReal lo[3], dReal hi[3], const dReal blo[3], const dReal bhi[3])
+{
+    for (int k = 0; k < 3; k++) {
+        if (blo[k] < lo[k]) lo[k] = blo[k];
+        if (bhi[k] > hi[k]) hi[k] = bhi[k];
+    }
+}
+
+// The node over order[lo, hi), at index d->node_count (preorder: the left
+// child follows its parent); box holds 6 numbers per triangle (lo, hi).
+static void build_node(dxTriMeshData *d, const dReal *centre, const dReal *box, int lo, int hi)
+{
+    dxTriMeshNode *node = &d->nodes[d->node_count++];
+    dReal clo[3] = { dInfinity, dInfinity, dInfinity };
+    dReal chi[3] = { -dInfinity, -dInfinity, -dInfinity };
+    for (int k = 0; k < 3; k++) {
+        node->lo[k] = dInfinity;
+        node->hi[k] = -dInfinity;
+    }
+    for (int i = lo; i < hi; i++) {
+        int t = d->order[i];
+        grow(node->lo, node->hi, box + 6 * t, box + 6 * t + 3);
+        grow(clo, chi, centre + 3 * t, centre + 3 * t);
+    }
+    if (hi - lo <= LEAF) {
+        node->first = lo;
+        node->count = hi - lo;
+        return;
+    }
+    int axis = 0;
+    for (int k = 1; k < 3; k++)
+        if (chi[k] - clo[k] > chi[axis] - clo[axis]) axis = k;
+    int mid = (lo + hi) / 2;
+    select_median(d->order, centre, axis, lo, hi, mid);
+    node->count = 0;
+    build_node(d, centre, box, lo, mid);
+    // nodes holds 2 n from the start: `node` stays valid.
+    node->first = d->node_count;
+    build_node(d, centre, box, mid, hi);
+}
+
+void dxTriMeshBuildTree(dxTriMeshData *d)
+{
+    size_t n = (size_t)d->tri_count;
+    d->order = (int *)dAlloc(n * sizeof(int));
+    d->nodes = (dxTriMeshNode *)dAlloc(2 * n * sizeof(dxTriMeshNode));
+    d->node_count = 0;
+    dReal *box = (dReal *)dAlloc(6 * n * sizeof(dReal));
+    dReal *centre = (dReal *)dAlloc(3 * n * sizeof(dReal));
+    for (int t = 0; t < d->tri_count; t++) {
+        d->order[t] = t;
+        triangle_box(d, t, box + 6 * t, box + 6 * t + 3);
+        for (int k = 0; k < 3; k++) centre[3 * t + k] = (box[6 * t + k] + box[6 * t + 3 + k]) / 2;
+    }
+    build_node(d, centre, box, 0, d->tri_count);
+    // Fewer nodes than the 2 n reserved are used (about n / 2): give the rest back.
+    d->nodes = (dxTriMeshNode *)dRealloc(d->nodes, 2 * n * sizeof(dxTriMeshNode),
+                                         (size_t)d->node_count * sizeof(dxTriMeshNode));
+    dFree(box, 6 * n * sizeof(dReal));
+    dFree(centre, 3 * n * sizeof(dReal));
+}
+
+void dxTriMeshRefitTree(dxTriMeshData *d)
+{
+    // Children come after their parent: going backwards meets them first.
+    for (int i = d->node_count - 1; i >= 0; i--) {
+        dxTriMeshNode *node = &d->nodes[i];
+        for (int k = 0; k < 3; k++) {
+            node->lo[k] = dInfinity;
+            node->hi[k] = -dInfinity;
+        }
+        if (node->count > 0) {
+            for (int j = node->first; j < node->first + node->count; j++) {
+                dReal lo[3], hi[3];
+                triangle_box(d, d->order[j], lo, hi);
+                grow(node->lo, node->hi, lo, hi);
+            }
+        } else {
+            grow(node->lo, node->hi, d->nodes[i + 1].lo, d->nodes[i + 1].hi);
+            grow(node->lo, node->hi, d->nodes[node->first].lo, d->nodes[node->first].hi);
+        }
+    }
+}
+
+static int overlaps(const dxTriMeshNode *node, const dReal lo[3], const dReal hi[3])
+{
+    return node->lo[0] <= hi[0] && node->hi[0] >= lo[0] && node->lo[1] <= hi[1] &&
+           node->hi[1] >= lo[1] && node->lo[2] <= hi[2] && node->hi[2] >= lo[2];
+}
+
+int dxTriMeshQueryBox(const dxTriMeshData *d, const dReal lo[3], const dReal hi[3], int **out,
+                      int *cap)
+{
+    if (d->node_count == 0) return 0;
+    int stack[STACK], top = 0, n = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        int i = stack[--top];
+        const dxTriMeshNode *node = &d->nodes[i];
+        if (!overlaps(node, lo, hi)) continue;
+        if (node->count > 0) {
+            dxTriMeshReserveInts(out, cap, n + node->count);
+            for (int j = 0; j < node->count; j++) (*out)[n++] = d->order[node->first + j];
+        } else {
+            stack[top++] = node->first;
+            stack[top++] = i + 1;
+        }
+    }
+    return n;
+}
+
+void dxTriMeshDataBounds(const dxTriMeshData *d, dReal lo[3], dReal hi[3])
+{
+    for (int k = 0; k < 3; k++) {
+        lo[k] = d->node_count ? d->nodes[0].lo[k] : 0;
+        hi[k] = d->node_count ? d->nodes[0].hi[k] : 0;
+    }
+}
