@@ -31,7 +31,6 @@
 #include "space_sap_pairs.h"
 
 #include <ode/memory.h>
-#include <stdlib.h>
 #include <string.h>
 
 enum { PX_FREE, PX_NEW, PX_LISTED, PX_WILD, PX_DEAD };
@@ -43,6 +42,12 @@ typedef struct sap_proxy {
     int state;                    // PX_...
     int next_free;                // the next free proxy (FREE)
 } sap_proxy;
+
+// A box open in a fresh sweep: its extent on the second and third axes.
+typedef struct sap_open {
+    dReal b[4];
+    int p;
+} sap_open;
 
 // One end of a proxy's box along an axis.
 typedef struct sap_end {
@@ -61,9 +66,17 @@ typedef struct dxSapSpace {
     int proxy_of_cap;
     sap_end *end[3];              // the sorted ends on each axis (2 * pxcap allocated)
     int nend;                     // ends per list
+    sap_end *tmp;                 // scratch for sorting a list (2 * pxcap allocated)
+    int rest_unsorted;            // a fresh sort left the second and third lists unsorted
     int *wild, nwild;             // the WILD proxies (pxcap allocated)
-    int *active, *active_at;      // a fresh sweep's open boxes (pxcap allocated)
+    sap_open *open;               // a fresh sweep's open boxes (pxcap allocated) ...
+    int *open_at;                 // ... and where each proxy's is
     int dead;                     // DEAD proxies still in the lists
+    // Choosing between moving ends and sorting afresh: swaps of ends made so
+    // far, the cost of the last fresh sort in swaps, and the swaps one
+    // changed box cost in the last refresh that moved some.
+    long swaps, afresh_cost;
+    double swaps_per_move;
     dxSapPairSet pairs;
 } dxSapSpace;
 
@@ -86,9 +99,10 @@ static int proxy_alloc(dxSapSpace *ss)
         ss->px = grow(ss->px, ss->pxcap, cap, sizeof *ss->px);
         for (int k = 0; k < 3; k++)
             ss->end[k] = grow(ss->end[k], 2 * ss->pxcap, 2 * cap, sizeof *ss->end[k]);
+        ss->tmp = grow(ss->tmp, 2 * ss->pxcap, 2 * cap, sizeof *ss->tmp);
         ss->wild = grow(ss->wild, ss->pxcap, cap, sizeof *ss->wild);
-        ss->active = grow(ss->active, ss->pxcap, cap, sizeof *ss->active);
-        ss->active_at = grow(ss->active_at, ss->pxcap, cap, sizeof *ss->active_at);
+        ss->open = grow(ss->open, ss->pxcap, cap, sizeof *ss->open);
+        ss->open_at = grow(ss->open_at, ss->pxcap, cap, sizeof *ss->open_at);
         ss->pxcap = cap;
     }
     return ss->npx++;
@@ -194,6 +208,7 @@ static void settle(dxSapSpace *ss, int k, int i, int events)
         list[i] = y;
         ss->px[y.e >> 1].at[k][y.e & 1] = i;
         i--;
+        ss->swaps++;
     }
     while (i + 1 < ss->nend && before(&list[i + 1], &x)) {
         const sap_end y = list[i + 1];
@@ -201,6 +216,7 @@ static void settle(dxSapSpace *ss, int k, int i, int events)
         list[i] = y;
         ss->px[y.e >> 1].at[k][y.e & 1] = i;
         i++;
+        ss->swaps++;
     }
     list[i] = x;
     ss->px[p].at[k][high] = i;
@@ -227,8 +243,9 @@ static void move_proxy(dxSapSpace *ss, int p, const dReal nb[6])
 
 // Put the new proxy p (its box current) into the lists: its ends start above
 // every other end and move down, low end first. On the second and third axes
-// they are just placed; on the first, every overlap they start is a pair's if
-// the boxes overlap on the other two.
+// they are just placed (those lists may still wait for their sort: see
+// rebuild); on the first, every overlap they start is a pair's if the boxes
+// overlap on the other two.
 static void link_proxy(dxSapSpace *ss, int p)
 {
     sap_proxy *x = &ss->px[p];
@@ -273,20 +290,62 @@ static void compact(dxSapSpace *ss)
     ss->dead = 0;
 }
 
-static int by_value(const void *a, const void *b)
+// Merge the sorted runs src[lo, mid) and src[mid, hi) into dst (stable).
+static void merge(const sap_end *src, sap_end *dst, int lo, int mid, int hi)
 {
-    const sap_end *x = a, *y = b;
-    if (before(x, y)) return -1;
-    if (before(y, x)) return 1;
-    return (x->e > y->e) - (x->e < y->e);
+    int i = lo, j = mid, o = lo;
+    while (i < mid && j < hi) dst[o++] = before(&src[j], &src[i]) ? src[j++] : src[i++];
+    while (i < mid) dst[o++] = src[i++];
+    while (j < hi) dst[o++] = src[j++];
 }
 
-// Sort the lists afresh with every listed and new proxy, and find the set by
-// one sweep along the first axis: each low end meets the boxes open there and
-// keeps those that overlap on the other two axes.
+// Sort list k (stable merge sort through the scratch list, runs of 16 by
+// insertion first) and note where each end went.
+static void sort_list(dxSapSpace *ss, int k)
+{
+    sap_end *src = ss->end[k], *dst = ss->tmp;
+    const int n = ss->nend;
+    for (int lo = 0; lo < n; lo += 16) {
+        const int hi = lo + 16 < n ? lo + 16 : n;
+        for (int i = lo + 1; i < hi; i++) {
+            const sap_end x = src[i];
+            int j = i;
+            for (; j > lo && before(&x, &src[j - 1]); j--) src[j] = src[j - 1];
+            src[j] = x;
+        }
+    }
+    for (int w = 16; w < n; w *= 2) {
+        for (int lo = 0; lo < n; lo += 2 * w) {
+            const int mid = lo + w < n ? lo + w : n, hi = lo + 2 * w < n ? lo + 2 * w : n;
+            merge(src, dst, lo, mid, hi);
+        }
+        sap_end *t = src;
+        src = dst;
+        dst = t;
+    }
+    if (src != ss->end[k]) memcpy(ss->end[k], src, (size_t)n * sizeof *src);
+    for (int i = 0; i < n; i++) ss->px[ss->end[k][i].e >> 1].at[k][ss->end[k][i].e & 1] = i;
+}
+
+// Before ends are moved one by one, all three lists must be sorted.
+static void sort_rest(dxSapSpace *ss)
+{
+    if (!ss->rest_unsorted) return;
+    sort_list(ss, 1);
+    sort_list(ss, 2);
+    ss->rest_unsorted = 0;
+}
+
+// Sort the lists afresh with every listed and new proxy (freeing the removed
+// ones), and find the set by one sweep along the first axis: each low end
+// meets the boxes open there (kept side by side for the scan) and keeps those
+// that overlap on the other two axes. Its cost, in swaps of ends, is kept.
 static void rebuild(dxSapSpace *ss)
 {
     dxSpace *s = &ss->s;
+    for (int p = 0; p < ss->npx; p++)
+        if (ss->px[p].state == PX_DEAD) proxy_free(ss, p);
+    ss->dead = 0;
     ss->nend = 0;
     for (int i = 0; i < s->count; i++) {
         const int p = ss->proxy_of[i];
@@ -299,47 +358,65 @@ static void rebuild(dxSapSpace *ss)
         }
         ss->nend += 2;
     }
-    for (int k = 0; k < 3; k++) {
-        qsort(ss->end[k], (size_t)ss->nend, sizeof *ss->end[k], by_value);
-        for (int i = 0; i < ss->nend; i++) {
-            const int e = ss->end[k][i].e;
-            ss->px[e >> 1].at[k][e & 1] = i;
-        }
-    }
+    // The first list now, the other two only when ends are moved next (a
+    // scene sorted afresh at every refresh never needs them).
+    sort_list(ss, 0);
+    ss->rest_unsorted = 1;
 
     dxSapPairClear(&ss->pairs);
+    long visits = 0;
     int open = 0;
     for (int i = 0; i < ss->nend; i++) {
         const int p = ss->end[0][i].e >> 1;
         if (ss->end[0][i].e & 1) {   // close p: the last open box takes its place
-            const int j = ss->active_at[p], last = ss->active[--open];
-            ss->active[j] = last;
-            ss->active_at[last] = j;
+            const int j = ss->open_at[p];
+            ss->open[j] = ss->open[--open];
+            ss->open_at[ss->open[j].p] = j;
             continue;
         }
         const dReal *a = ss->px[p].box;
         for (int j = 0; j < open; j++) {
-            const int q = ss->active[j];
-            const dReal *b = ss->px[q].box;
-            if (a[2] <= b[3] && b[2] <= a[3] && a[4] <= b[5] && b[4] <= a[5])
+            const dReal *b = ss->open[j].b;
+            if ((a[2] <= b[1]) & (b[0] <= a[3]) & (a[4] <= b[3]) & (b[2] <= a[5])) {
+                const int q = ss->open[j].p;
                 dxSapPairAdd(&ss->pairs, p, ss->px[p].g, q, ss->px[q].g);
+            }
         }
-        ss->active[open] = p;
-        ss->active_at[p] = open++;
+        visits += open;
+        ss->open[open] = (sap_open){ { a[2], a[3], a[4], a[5] }, p };
+        ss->open_at[p] = open++;
     }
     // Room for the set to grow by half without allocating.
     dxSapPairReserve(&ss->pairs, ss->pairs.count + ss->pairs.count / 2 + 64);
+    // A visit costs about a swap; sorting about 8 swaps an end (measured).
+    ss->afresh_cost = visits + 8L * 3 * ss->nend;
 }
 
 // Bring the structure up to date with the geoms' AABBs (current: the caller
 // updated them). Returns 0 if it is stale while a collision of this space
 // walks it: the caller then tests geoms one by one.
+//
+// Moving the changed boxes' ends costs swaps in proportion to the ends they
+// pass; sorting afresh costs about the same whatever moved. The changed boxes
+// are counted first: if, at the last refresh's swaps per box, moving them
+// would cost more than the last fresh sort, the lists are sorted afresh;
+// moving also gives up for a fresh sort once its swaps pass that cost. So a
+// refresh costs at most about twice the cheaper of the two.
 static int sap_refresh(dxSapSpace *ss)
 {
     if (!ss->stale) return 1;
     if (ss->walking > 0) return 0;
     dxSpace *s = &ss->s;
-    int fresh = 0, leaving = 0;
+    int changed = 0;
+    for (int i = 0; i < s->count; i++) {
+        const sap_proxy *x = &ss->px[ss->proxy_of[i]];
+        dReal nb[6];
+        read_box(ss, s->geoms[i], nb);
+        changed += x->state == PX_LISTED && memcmp(nb, x->box, sizeof nb) != 0;
+    }
+    int afresh = changed * ss->swaps_per_move > (double)ss->afresh_cost;
+    const long swaps0 = ss->swaps;
+    int fresh = 0, leaving = 0, moved = 0;
     ss->nwild = 0;
     for (int i = 0; i < s->count; i++) {
         const int p = ss->proxy_of[i];
@@ -348,8 +425,15 @@ static int sap_refresh(dxSapSpace *ss)
         const int wild = read_box(ss, s->geoms[i], nb);
         if (x->state == PX_LISTED) {
             if (memcmp(nb, x->box, sizeof nb) == 0) continue;
+            if (!wild && afresh) {
+                memcpy(x->box, nb, sizeof nb);
+                continue;
+            }
             if (!wild) {
+                sort_rest(ss);
                 move_proxy(ss, p, nb);
+                moved++;
+                afresh = ss->swaps - swaps0 > ss->afresh_cost;
                 continue;
             }
             leaving++;
@@ -359,14 +443,13 @@ static int sap_refresh(dxSapSpace *ss)
         if (wild) ss->wild[ss->nwild++] = p;
         else fresh++;
     }
-    if (ss->dead > 0 || leaving > 0) compact(ss);
-    if (fresh > 0) {
-        if (8 * fresh > ss->nend / 2) {
-            rebuild(ss);
-        } else {
-            for (int i = 0; i < s->count; i++)
-                if (ss->px[ss->proxy_of[i]].state == PX_NEW) link_proxy(ss, ss->proxy_of[i]);
-        }
+    if (moved > 0) ss->swaps_per_move = (double)(ss->swaps - swaps0) / moved;
+    if (afresh || 8 * fresh > ss->nend / 2) {
+        rebuild(ss);
+    } else {
+        if (ss->dead > 0 || leaving > 0) compact(ss);
+        for (int i = 0; i < s->count && fresh > 0; i++)
+            if (ss->px[ss->proxy_of[i]].state == PX_NEW) link_proxy(ss, ss->proxy_of[i]);
     }
     ss->stale = 0;
     return 1;
@@ -432,9 +515,10 @@ static void sap_destroy(dxSpace *s)
     dxSapSpace *ss = (dxSapSpace *)s;
     dFree(ss->px, (size_t)ss->pxcap * sizeof *ss->px);
     for (int k = 0; k < 3; k++) dFree(ss->end[k], 2 * (size_t)ss->pxcap * sizeof *ss->end[k]);
+    dFree(ss->tmp, 2 * (size_t)ss->pxcap * sizeof *ss->tmp);
     dFree(ss->wild, (size_t)ss->pxcap * sizeof *ss->wild);
-    dFree(ss->active, (size_t)ss->pxcap * sizeof *ss->active);
-    dFree(ss->active_at, (size_t)ss->pxcap * sizeof *ss->active_at);
+    dFree(ss->open, (size_t)ss->pxcap * sizeof *ss->open);
+    dFree(ss->open_at, (size_t)ss->pxcap * sizeof *ss->open_at);
     dFree(ss->proxy_of, (size_t)ss->proxy_of_cap * sizeof *ss->proxy_of);
     dxSapPairFree(&ss->pairs);
 }

@@ -481,11 +481,50 @@ static int test_sap_follows_a_pile_with_equal_ends(void)
     return 0;
 }
 
+static int test_sap_follows_the_pile_all_moving_then_few(void)
+{
+    // Every box moving (the lists sorted afresh each time) for some steps,
+    // then a few (ends moved one by one again), and again, with a box added
+    // and one destroyed in between: the pairs follow all the way.
+    dSpaceID s = dSweepAndPruneSpaceCreate(0, dSAP_AXES_ZXY);
+    dGeomID g[217];
+    int n = 216;
+    for (int i = 0; i < n; i++) {
+        g[i] = dCreateBox(s, 1, 1, 1);
+        dGeomSetPosition(g[i], i % 6, (i / 6) % 6, i / 36);
+        number(g[i], i);
+    }
+    rng_state = 9;
+    for (int step = 0; step < 60; step++) {
+        const int all = (step / 6) % 2 == 0;
+        for (int k = 0; k < (all ? n : 3); k++) {
+            const int i = all ? k : (int)rnd(0, n);
+            const dReal home[3] = { i % 6, (i / 6) % 6, i / 36 };
+            dGeomSetPosition(g[i], home[0] + rnd(-0.2, 0.2), home[1] + rnd(-0.2, 0.2),
+                             home[2] + rnd(-0.2, 0.2));
+        }
+        if (step == 20) {
+            g[n] = dCreateSphere(s, 1);
+            dGeomSetPosition(g[n], 2.5, 2.5, 2.5);
+            number(g[n], n);
+            n++;
+        }
+        if (step == 40) {
+            dGeomDestroy(g[100]);
+            g[100] = g[--n];
+        }
+        if (check_sap_finds_exactly(s, g, n)) return 1;
+    }
+    dSpaceDestroy(s);
+    return 0;
+}
+
 static int test_sap_follows_adds_and_removes_between_collides(void)
 {
     // Each step some geoms are destroyed, one is taken out and put back,
     // a few are added (inserted one by one) or, every tenth step, many (the
-    // lists sorted afresh), and some move.
+    // lists sorted afresh; the step after, only two are added), and some
+    // move.
     enum { MAX = 1200 };
     dSpaceID s = dSweepAndPruneSpaceCreate(0, dSAP_AXES_YXZ);
     dGeomID *g = malloc(MAX * sizeof *g);
@@ -493,6 +532,15 @@ static int test_sap_follows_adds_and_removes_between_collides(void)
     random_scene(s, g, n, 88);
     if (check_sap_finds_exactly(s, g, n)) return 1;
     for (int step = 0; step < 40; step++) {
+        if (step % 10 == 6) {   // after a fresh sort, only two new geoms
+            for (int k = 0; k < 2; k++) {
+                g[n] = dCreateSphere(s, rnd(0.1, 2));
+                dGeomSetPosition(g[n], rnd(-25, 25), rnd(-25, 25), rnd(-25, 25));
+                number(g[n++], next++);
+            }
+            if (check_sap_finds_exactly(s, g, n)) return 1;
+            continue;
+        }
         for (int k = 0; k < step % 4; k++) {
             const int i = 1 + (int)rnd(0, n - 1);
             dGeomDestroy(g[i]);
@@ -1443,6 +1491,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_sap_rejects_a_bad_axis_order),
     TEST_CASE(test_sap_follows_many_random_moves),
     TEST_CASE(test_sap_follows_a_pile_with_equal_ends),
+    TEST_CASE(test_sap_follows_the_pile_all_moving_then_few),
     TEST_CASE(test_sap_follows_adds_and_removes_between_collides),
     TEST_CASE(test_sap_handles_infinite_nan_and_empty_boxes),
     TEST_CASE(test_moved_geoms_are_found_at_their_new_place),
