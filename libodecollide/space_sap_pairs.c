@@ -64,11 +64,28 @@ void dxSapPairReserve(dxSapPairSet *ps, int n)
         ps->at = dAlloc((size_t)tcap * sizeof *ps->at);
         ps->tcap = tcap;
         table_fill(ps);
+        ps->unindexed = 0;
     }
+}
+
+static void index_pairs(dxSapPairSet *ps)
+{
+    if (!ps->unindexed) return;
+    dxSapPairReserve(ps, ps->count);
+    table_fill(ps);
+    ps->unindexed = 0;
+}
+
+void dxSapPairAppend(dxSapPairSet *ps, int a, dxGeom *ga, int b, dxGeom *gb)
+{
+    if (ps->count + 1 > ps->cap) dxSapPairReserve(ps, 2 * (ps->count + 1));
+    ps->pair[ps->count++] = a < b ? (dxSapPair){ ga, gb, a, b } : (dxSapPair){ gb, ga, b, a };
+    ps->unindexed = 1;
 }
 
 void dxSapPairAdd(dxSapPairSet *ps, int a, dxGeom *ga, int b, dxGeom *gb)
 {
+    index_pairs(ps);
     if (ps->count + 1 > ps->cap || 2 * (ps->count + 1) > ps->tcap)
         dxSapPairReserve(ps, 2 * (ps->count + 1));
     uint64_t k = pair_key(a, b);
@@ -82,6 +99,7 @@ void dxSapPairAdd(dxSapPairSet *ps, int a, dxGeom *ga, int b, dxGeom *gb)
 void dxSapPairRemove(dxSapPairSet *ps, int a, int b)
 {
     if (ps->count == 0) return;
+    index_pairs(ps);
     uint64_t k = pair_key(a, b);
     int t = find_slot(ps, k);
     if (ps->key[t] == 0) return;
@@ -114,13 +132,13 @@ void dxSapPairFilter(dxSapPairSet *ps, int (*keep)(void *ctx, int a, int b), voi
     for (int i = 0; i < ps->count; i++)
         if (keep(ctx, ps->pair[i].a, ps->pair[i].b)) ps->pair[n++] = ps->pair[i];
     ps->count = n;
-    if (ps->tcap) table_fill(ps);
+    if (ps->tcap && !ps->unindexed) table_fill(ps);
 }
 
 void dxSapPairClear(dxSapPairSet *ps)
 {
     ps->count = 0;
-    if (ps->tcap) memset(ps->key, 0, (size_t)ps->tcap * sizeof *ps->key);
+    ps->unindexed = 1;   // filled (empty) when next needed
 }
 
 void dxSapPairFree(dxSapPairSet *ps)

@@ -24,10 +24,15 @@ typedef struct dxSapPairSet {
     uint64_t *key;                // the hash table: 0 for an empty slot ...
     int *at;                      // ... else the pair's index in pair[]
     int tcap;                     // table size, a power of two (0 before the first use)
+    int unindexed;                // pairs were appended since the table was filled
 } dxSapPairSet;
 
 // Add the pair of proxies a != b (geoms ga, gb) unless it is there.
 void dxSapPairAdd(dxSapPairSet *ps, int a, dxGeom *ga, int b, dxGeom *gb);
+// Append the pair of proxies a != b, known not to be there, leaving the
+// table to be filled at the next add or remove (a fresh sweep finds each pair
+// once, and a sweep at every refresh never needs the table).
+void dxSapPairAppend(dxSapPairSet *ps, int a, dxGeom *ga, int b, dxGeom *gb);
 // Remove the pair of proxies a, b if it is there.
 void dxSapPairRemove(dxSapPairSet *ps, int a, int b);
 // Keep only the pairs for which keep(ctx, a, b) is 1 (rebuilding the table).
