@@ -175,51 +175,58 @@ static int before(const sap_end *x, const sap_end *y)
     return x->v < y->v || (x->v == y->v && (x->e & 1) < (y->e & 1));
 }
 
-// The boxes overlap on the two axes other than k.
-static int overlap_besides(const dReal *a, const dReal *b, int k)
+// The boxes overlap on axes j1 and j2.
+static inline int overlap_on(const dReal *a, const dReal *b, int j1, int j2)
 {
-    for (int j = 0; j < 3; j++)
-        if (j != k && !(a[2 * j] <= b[2 * j + 1] && b[2 * j] <= a[2 * j + 1])) return 0;
-    return 1;
+    return (a[2 * j1] <= b[2 * j1 + 1]) & (b[2 * j1] <= a[2 * j1 + 1]) &
+           (a[2 * j2] <= b[2 * j2 + 1]) & (b[2 * j2] <= a[2 * j2 + 1]);
 }
 
-// p's end passed one of q's of the other kind on axis k: their overlap along
-// k starts (start = 1) or ends. The pair is in the set exactly when it
-// overlaps on the other two axes too (boxes as the lists place them).
-static void crossed(dxSapSpace *ss, int k, int p, int q, int start)
+// The pair p, q overlaps on two axes, and on the third an end of p passed one
+// of q's of the other kind: their overlap there starts (start = 1) or ends.
+static void crossed(dxSapSpace *ss, int p, int q, int start)
 {
-    if (q == p || !overlap_besides(ss->px[p].box, ss->px[q].box, k)) return;
     if (!start) dxSapPairRemove(&ss->pairs, p, q);
-    else if (ss->px[q].state == PX_LISTED) dxSapPairAdd(&ss->pairs, p, ss->px[p].g, q, ss->px[q].g);
+    else if (ss->px[q].state == PX_LISTED)
+        dxSapPairAdd(&ss->pairs, p, ss->px[p].g, q, ss->px[q].g);
 }
 
 // Move the end at place i of list k down (then up) to its place. A low end
 // moving down past a high end starts an overlap, a high end moving down past
-// a low end ends one; moving up, the other way round. With events 0 the
-// overlaps it starts or ends are not looked at.
+// a low end ends one; moving up, the other way round. The pair is in the set
+// exactly when it overlaps on the other two axes too (boxes as the lists
+// place them). With events 0 the overlaps it starts or ends are not looked
+// at.
 static void settle(dxSapSpace *ss, int k, int i, int events)
 {
-    sap_end *list = ss->end[k];
+    sap_end *const list = ss->end[k];
+    sap_proxy *const px = ss->px;
+    const int j1 = k == 0 ? 1 : 0, j2 = k == 2 ? 1 : 2;
     const sap_end x = list[i];
     const int p = x.e >> 1, high = x.e & 1;
+    const dReal *box = px[p].box;
+    long swaps = 0;
     while (i > 0 && before(&x, &list[i - 1])) {
         const sap_end y = list[i - 1];
-        if (events && (y.e & 1) != high) crossed(ss, k, p, y.e >> 1, !high);
+        const int q = y.e >> 1;
+        if (events && (y.e & 1) != high && q != p && overlap_on(box, px[q].box, j1, j2))
+            crossed(ss, p, q, !high);
         list[i] = y;
-        ss->px[y.e >> 1].at[k][y.e & 1] = i;
-        i--;
-        ss->swaps++;
+        px[q].at[k][y.e & 1] = i--;
+        swaps++;
     }
     while (i + 1 < ss->nend && before(&list[i + 1], &x)) {
         const sap_end y = list[i + 1];
-        if (events && (y.e & 1) != high) crossed(ss, k, p, y.e >> 1, high);
+        const int q = y.e >> 1;
+        if (events && (y.e & 1) != high && q != p && overlap_on(box, px[q].box, j1, j2))
+            crossed(ss, p, q, high);
         list[i] = y;
-        ss->px[y.e >> 1].at[k][y.e & 1] = i;
-        i++;
-        ss->swaps++;
+        px[q].at[k][y.e & 1] = i++;
+        swaps++;
     }
     list[i] = x;
-    ss->px[p].at[k][high] = i;
+    px[p].at[k][high] = i;
+    ss->swaps += swaps;
 }
 
 // The listed proxy p's box became nb, one axis after the other (so that its
