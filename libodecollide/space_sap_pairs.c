@@ -24,7 +24,7 @@ static uint64_t pair_key(int a, int b)
 // Fibonacci hashing: the top bits of key times 2^64 / phi.
 static int home_slot(const dxSapPairSet *ps, uint64_t key)
 {
-    return (int)((key * 0x9E3779B97F4A7C15u) >> 32) & (ps->tcap - 1);
+    return (int)(((key * 0x9E3779B97F4A7C15u) >> 32) & (uint64_t)(ps->tcap - 1));
 }
 
 // The table slot holding key, or the empty slot where it would go.

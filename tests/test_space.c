@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
-// test_space.c -- spaces (guide 10.3, 10.5, 10.6): the simple, hash and
-// quadtree spaces report the same pairs as a brute-force AABB test, each
-// once; the hash and quadtree spaces do near-linear work on spread-out scenes
-// (counted with dx_aabb_tests, never timed); bits, disabled geoms, geoms of
-// one body and nested spaces; the cases of dSpaceCollide2; locking during
-// the callback; cleanup; geom order; hash levels; space bounding boxes; bad
-// input. White-box: needs geom_internal.h for the counter.
+// test_space.c -- spaces (guide 10.3, 10.5, 10.6): the simple, hash,
+// quadtree and sweep-and-prune spaces report the same pairs as a brute-force
+// AABB test, each once; the hash and quadtree spaces do near-linear work on
+// spread-out scenes (counted with dx_aabb_tests, never timed); the
+// sweep-and-prune space keeps its pairs exact through many moves, adds,
+// removes, equal ends, and NaN, empty and infinite boxes; bits, disabled
+// geoms, geoms of one body and nested spaces; the cases of dSpaceCollide2;
+// locking during the callback; cleanup; geom order; hash levels; space
+// bounding boxes; bad input. White-box: needs geom_internal.h for the counter.
 
 #include "test.h"
 
@@ -746,9 +748,9 @@ static int test_hash_space_work_grows_near_linearly(void)
     return 0;
 }
 
-// The sweep visits the geoms whose boxes overlap its own along the sweep
-// axis and passes on only those that overlap on the other two: every pair it
-// tests is a pair of overlapping boxes, whatever the number of geoms.
+// The space keeps the pairs whose boxes overlap on all three axes and tests
+// only those: every pair it tests is a pair of overlapping boxes, whatever
+// the number of geoms.
 static int test_sap_tests_only_overlapping_boxes(void)
 {
     const int n[2] = { 1000, 8000 };
