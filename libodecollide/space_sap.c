@@ -10,18 +10,22 @@
 // through their lists by insertion: an end that passes another proxy's end of
 // the other kind starts or ends the pair's overlap along that axis, and if
 // the boxes (as the lists place them) overlap on the other two axes, the pair
-// joins or leaves the set. A box is moved one axis after the other, so the set
-// stays exact after every swap. At equal values low ends sort before high ends, so boxes that just
-// touch overlap (closed boxes). dSpaceCollide then walks the set, and only
-// geoms whose boxes changed cost work beyond one comparison of boxes each.
+// joins or leaves the set. A box is moved one axis after the other, so the
+// set stays exact after every swap. At equal values low ends sort before high
+// ends, so boxes that just touch overlap (closed boxes). dSpaceCollide then
+// walks the set: only geoms whose boxes changed cost work beyond one
+// comparison of boxes each.
 //
-// Proxies whose box holds a NaN or is empty (low above high, e.g. an empty
-// nested space) stay out of the lists ("wild") and are tested against every
-// geom of the space, as the AABB test decides for them. New proxies are
-// inserted at the top of the lists and moved down; when many are new (a first
-// collision) the lists are sorted afresh and the set found by one sweep.
+// When moving ends would cost more than sorting afresh (most of a dense pile
+// moving; see sap_refresh), or many proxies are new (a first collision), the
+// first list is sorted afresh and the set found by one sweep along it. New
+// proxies are otherwise inserted at the top of the lists and moved down.
 // Removed proxies leave the lists and the set in one pass at the next
-// refresh. The structure is refreshed only when the space's bounding box was
+// refresh. Proxies whose box holds a NaN or is empty (low above high, e.g. an
+// empty nested space) stay out of the lists ("wild") and are tested against
+// every geom of the space, as the AABB test decides for them.
+//
+// The structure is refreshed only when the space's bounding box was
 // recomputed (something in it moved, came or went), never while a collision
 // of the space walks it (a callback that moves geoms makes nested queries
 // test geom by geom). Arrays grow geometrically: a steady state allocates
@@ -343,8 +347,8 @@ static void sort_rest(dxSapSpace *ss)
     ss->rest_unsorted = 0;
 }
 
-// Sort the lists afresh with every listed and new proxy (freeing the removed
-// ones), and find the set by one sweep along the first axis: each low end
+// Fill the lists afresh with every listed and new proxy (freeing the removed
+// ones), sort the first, and find the set by one sweep along it: each low end
 // meets the boxes open there (kept side by side for the scan) and keeps those
 // that overlap on the other two axes. Its cost, in swaps of ends, is kept.
 static void rebuild(dxSapSpace *ss)
