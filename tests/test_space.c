@@ -521,6 +521,36 @@ static int test_sap_follows_the_pile_all_moving_then_few(void)
     return 0;
 }
 
+static int test_sap_allocates_nothing_moving_ends_or_sorting_afresh(void)
+{
+    // After a warm-up of both (every box moving: the lists sorted afresh;
+    // a few: ends moved), neither allocates.
+    dSpaceID s = dSweepAndPruneSpaceCreate(0, dSAP_AXES_XZY);
+    dGeomID g[216];
+    for (int i = 0; i < 216; i++) {
+        g[i] = dCreateBox(s, 1, 1, 1);
+        number(g[i], i);
+    }
+    rng_state = 21;
+    pairs got = { 0 };
+    for (int step = 0; step < 40; step++) {
+        if (step == 20) test_count_allocations();
+        const int all = (step / 4) % 2 == 0;
+        for (int k = 0; k < (all ? 216 : 3); k++) {
+            const int i = all ? k : (int)rnd(0, 216);
+            dGeomSetPosition(g[i], i % 6 + rnd(-0.2, 0.2), (i / 6) % 6 + rnd(-0.2, 0.2),
+                             i / 36 + rnd(-0.2, 0.2));
+        }
+        got.n = 0;
+        dSpaceCollide(s, &got, record);
+        dSpaceCollide2(g[5], (dGeomID)s, &got, record);
+    }
+    CHECK(test_allocations_counted() == 0);
+    pairs_free(&got);
+    dSpaceDestroy(s);
+    return 0;
+}
+
 static int test_sap_follows_adds_and_removes_between_collides(void)
 {
     // Each step some geoms are destroyed, one is taken out and put back,
@@ -1494,6 +1524,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_sap_follows_many_random_moves),
     TEST_CASE(test_sap_follows_a_pile_with_equal_ends),
     TEST_CASE(test_sap_follows_the_pile_all_moving_then_few),
+    TEST_CASE(test_sap_allocates_nothing_moving_ends_or_sorting_afresh),
     TEST_CASE(test_sap_follows_adds_and_removes_between_collides),
     TEST_CASE(test_sap_handles_infinite_nan_and_empty_boxes),
     TEST_CASE(test_moved_geoms_are_found_at_their_new_place),
