@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
-// test_space.c -- spaces (guide 10.3, 10.5, 10.6): the simple, hash and
-// quadtree spaces report the same pairs as a brute-force AABB test, each
-// once; the hash and quadtree spaces do near-linear work on spread-out scenes
-// (counted with dx_aabb_tests, never timed); bits, disabled geoms, geoms of
-// one body and nested spaces; the cases of dSpaceCollide2; locking during
-// the callback; cleanup; geom order; hash levels; space bounding boxes; bad
-// input. White-box: needs geom_internal.h for the counter.
+// test_space.c -- spaces (guide 10.3, 10.5, 10.6): the simple, hash,
+// quadtree and sweep-and-prune spaces report the same pairs as a brute-force
+// AABB test, each once; the hash and quadtree spaces do near-linear work on
+// spread-out scenes (counted with dx_aabb_tests, never timed); the
+// sweep-and-prune space keeps its pairs exact through many moves, adds,
+// removes, equal ends, and NaN, empty and infinite boxes; bits, disabled
+// geoms, geoms of one body and nested spaces; the cases of dSpaceCollide2;
+// locking during the callback; cleanup; geom order; hash levels; space
+// bounding boxes; bad input. White-box: needs geom_internal.h for the counter.
 
 #include "test.h"
 
@@ -372,6 +374,325 @@ static int test_sap_rejects_a_bad_axis_order(void)
     return 0;
 }
 
+// ---- the sweep-and-prune space's incremental paths ------------------------------
+
+// g[i] moves: mostly a little, some far, some onto the integer grid (ends
+// equal to other ends), boxes resized; never geom 0 (the plane).
+static void stir(dGeomID *g, int n, int count)
+{
+    for (int k = 0; k < count; k++) {
+        const int i = 1 + (int)rnd(0, n - 1);
+        const dReal *p = dGeomGetPosition(g[i]);
+        const double r = rnd(0, 1);
+        if (r < 0.1) {
+            dGeomSetPosition(g[i], rnd(-25, 25), rnd(-25, 25), rnd(-25, 25));
+        } else if (r < 0.2 && dGeomGetClass(g[i]) == dBoxClass) {
+            dGeomBoxSetLengths(g[i], rnd(0.2, 4), rnd(0.2, 4), rnd(0.2, 4));
+        } else if (r < 0.3) {
+            dGeomSetPosition(g[i], floor(p[0]), floor(p[1]), floor(p[2]));
+        } else {
+            dGeomSetPosition(g[i], p[0] + rnd(-0.5, 0.5), p[1] + rnd(-0.5, 0.5),
+                             p[2] + rnd(-0.5, 0.5));
+        }
+    }
+}
+
+// As check_space_finds, and the space tested no other pair: its pair set
+// holds no pair whose boxes stopped overlapping (every geom enabled, no
+// bits or bodies in the way, no NaN or empty box).
+static int check_sap_finds_exactly(dSpaceID s, dGeomID *g, int n)
+{
+    pairs want = { 0 }, got = { 0 };
+    brute_pairs(g, n, &want);
+    unsigned long before = dx_aabb_tests;
+
+    dSpaceCollide(s, &got, record);
+
+    CHECK(dx_aabb_tests - before == (unsigned long)got.n);
+    CHECK(pairs_unique(&got));
+    CHECK(pairs_same(&got, &want));
+    pairs_free(&want);
+    pairs_free(&got);
+    return 0;
+}
+
+// The probe (not in s) against s by dSpaceCollide2 finds the brute-force
+// pairs of probe with g[0 .. n-1], each once.
+static int check_probe_finds(dSpaceID s, dGeomID probe, dGeomID *g, int n)
+{
+    pairs want = { 0 }, got = { 0 };
+    for (int i = 0; i < n; i++)
+        if (expect_touch(probe, g[i])) pairs_add(&want, idx(probe), idx(g[i]));
+
+    dSpaceCollide2(probe, (dGeomID)s, &got, record);
+
+    CHECK(pairs_unique(&got));
+    CHECK(pairs_same(&got, &want));
+    pairs_free(&want);
+    pairs_free(&got);
+    return 0;
+}
+
+static int test_sap_follows_many_random_moves(void)
+{
+    // Every step a tenth of the geoms move; the kept pair set must be the
+    // brute-force one after each, in two axis orders.
+    static const int orders[2] = { dSAP_AXES_XZY, dSAP_AXES_ZYX };
+    for (int o = 0; o < 2; o++) {
+        dSpaceID s = dSweepAndPruneSpaceCreate(0, orders[o]);
+        dGeomID g[SCENE_N], probe = dCreateBox(0, 3, 3, 3);
+        const int n = 400;
+        random_scene(s, g, n, 31 + (uint64_t)o);
+        number(probe, 999);
+        for (int step = 0; step < 60; step++) {
+            stir(g, n, n / 10);
+            if (check_sap_finds_exactly(s, g, n)) return 1;
+            dGeomSetPosition(probe, rnd(-20, 20), rnd(-20, 20), rnd(-20, 20));
+            if (check_probe_finds(s, probe, g, n)) return 1;
+        }
+        dGeomDestroy(probe);
+        dSpaceDestroy(s);
+    }
+    return 0;
+}
+
+static int test_sap_follows_a_pile_with_equal_ends(void)
+{
+    // Unit boxes on the integer grid: every box's ends equal its neighbours'
+    // (touching boxes overlap). A few boxes move a little each step, and
+    // some go back exactly home.
+    dSpaceID s = dSweepAndPruneSpaceCreate(0, dSAP_AXES_XZY);
+    dGeomID g[216];
+    for (int i = 0; i < 216; i++) {
+        g[i] = dCreateBox(s, 1, 1, 1);
+        dGeomSetPosition(g[i], i % 6, (i / 6) % 6, i / 36);
+        number(g[i], i);
+    }
+    rng_state = 5;
+    for (int step = 0; step < 100; step++) {
+        for (int k = 0; k < 5; k++) {
+            const int i = (int)rnd(0, 216);
+            const dReal home[3] = { i % 6, (i / 6) % 6, i / 36 };
+            const dReal d = rnd(0, 1) < 0.3 ? 0 : REAL(0.05);
+            dGeomSetPosition(g[i], home[0] + d * rnd(-1, 1), home[1] + d * rnd(-1, 1),
+                             home[2] + d * rnd(-1, 1));
+        }
+        if (check_sap_finds_exactly(s, g, 216)) return 1;
+    }
+    dSpaceDestroy(s);
+    return 0;
+}
+
+static int test_sap_follows_the_pile_all_moving_then_few(void)
+{
+    // Every box moving (the lists sorted afresh each time) for some steps,
+    // then a few (ends moved one by one again), and again, with a box added
+    // and one destroyed in between: the pairs follow all the way.
+    dSpaceID s = dSweepAndPruneSpaceCreate(0, dSAP_AXES_ZXY);
+    dGeomID g[217];
+    int n = 216;
+    for (int i = 0; i < n; i++) {
+        g[i] = dCreateBox(s, 1, 1, 1);
+        dGeomSetPosition(g[i], i % 6, (i / 6) % 6, i / 36);
+        number(g[i], i);
+    }
+    rng_state = 9;
+    for (int step = 0; step < 60; step++) {
+        const int all = (step / 6) % 2 == 0;
+        for (int k = 0; k < (all ? n : 3); k++) {
+            const int i = all ? k : (int)rnd(0, n);
+            const dReal home[3] = { i % 6, (i / 6) % 6, i / 36 };
+            dGeomSetPosition(g[i], home[0] + rnd(-0.2, 0.2), home[1] + rnd(-0.2, 0.2),
+                             home[2] + rnd(-0.2, 0.2));
+        }
+        if (step == 20) {
+            g[n] = dCreateSphere(s, 1);
+            dGeomSetPosition(g[n], 2.5, 2.5, 2.5);
+            number(g[n], n);
+            n++;
+        }
+        if (step == 40) {
+            dGeomDestroy(g[100]);
+            g[100] = g[--n];
+        }
+        if (check_sap_finds_exactly(s, g, n)) return 1;
+    }
+    dSpaceDestroy(s);
+    return 0;
+}
+
+static int test_sap_allocates_nothing_moving_ends_or_sorting_afresh(void)
+{
+    // After a warm-up of both (every box moving: the lists sorted afresh;
+    // a few: ends moved), neither allocates.
+    dSpaceID s = dSweepAndPruneSpaceCreate(0, dSAP_AXES_XZY);
+    dGeomID g[216];
+    for (int i = 0; i < 216; i++) {
+        g[i] = dCreateBox(s, 1, 1, 1);
+        number(g[i], i);
+    }
+    rng_state = 21;
+    pairs got = { 0 };
+    for (int step = 0; step < 40; step++) {
+        if (step == 20) test_count_allocations();
+        const int all = (step / 4) % 2 == 0;
+        for (int k = 0; k < (all ? 216 : 3); k++) {
+            const int i = all ? k : (int)rnd(0, 216);
+            dGeomSetPosition(g[i], i % 6 + rnd(-0.2, 0.2), (i / 6) % 6 + rnd(-0.2, 0.2),
+                             i / 36 + rnd(-0.2, 0.2));
+        }
+        got.n = 0;
+        dSpaceCollide(s, &got, record);
+        dSpaceCollide2(g[5], (dGeomID)s, &got, record);
+    }
+    CHECK(test_allocations_counted() == 0);
+    pairs_free(&got);
+    dSpaceDestroy(s);
+    return 0;
+}
+
+static int test_sap_follows_adds_and_removes_between_collides(void)
+{
+    // Each step some geoms are destroyed, one is taken out and put back,
+    // a few are added (inserted one by one) or, every tenth step, many (the
+    // lists sorted afresh; the step after, only two are added), and some
+    // move.
+    enum { MAX = 1200 };
+    dSpaceID s = dSweepAndPruneSpaceCreate(0, dSAP_AXES_YXZ);
+    dGeomID *g = malloc(MAX * sizeof *g);
+    int n = 200, next = 200;
+    random_scene(s, g, n, 88);
+    if (check_sap_finds_exactly(s, g, n)) return 1;
+    for (int step = 0; step < 40; step++) {
+        if (step % 10 == 6) {   // after a fresh sort, only two new geoms
+            for (int k = 0; k < 2; k++) {
+                g[n] = dCreateSphere(s, rnd(0.1, 2));
+                dGeomSetPosition(g[n], rnd(-25, 25), rnd(-25, 25), rnd(-25, 25));
+                number(g[n++], next++);
+            }
+            if (check_sap_finds_exactly(s, g, n)) return 1;
+            continue;
+        }
+        for (int k = 0; k < step % 4; k++) {
+            const int i = 1 + (int)rnd(0, n - 1);
+            dGeomDestroy(g[i]);
+            g[i] = g[--n];
+        }
+        const int out = 1 + (int)rnd(0, n - 1);
+        dSpaceRemove(s, g[out]);
+        dGeomSetPosition(g[out], rnd(-25, 25), rnd(-25, 25), rnd(-25, 25));
+        dSpaceAdd(s, g[out]);
+        const int add = step % 10 == 5 ? 120 : 2;
+        for (int k = 0; k < add && n < MAX; k++) {
+            g[n] = rnd(0, 1) < 0.5 ? dCreateSphere(s, rnd(0.1, 2))
+                                   : dCreateBox(s, rnd(0.2, 4), rnd(0.2, 4), rnd(0.2, 4));
+            dGeomSetPosition(g[n], rnd(-25, 25), rnd(-25, 25), rnd(-25, 25));
+            number(g[n++], next++);
+        }
+        stir(g, n, n / 20);
+        if (check_sap_finds_exactly(s, g, n)) return 1;
+    }
+    CHECK(n > 600);
+    free(g);
+    dSpaceDestroy(s);
+    return 0;
+}
+
+// A user class whose AABB is its class data: any six numbers, NaN included.
+static dColliderFn *no_collider(int num)
+{
+    (void)num;
+    return NULL;
+}
+
+static void data_aabb(dGeomID g, dReal aabb[6])
+{
+    memcpy(aabb, dGeomGetClassData(g), 6 * sizeof(dReal));
+}
+
+static dGeomID create_free_box(dSpaceID s)
+{
+    static int cls = -1;
+    if (cls < 0) {
+        dGeomClass c = { 6 * sizeof(dReal), no_collider, data_aabb, NULL, NULL };
+        cls = dCreateGeomClass(&c);
+    }
+    dGeomID g = dCreateGeom(cls);
+    if (s) dSpaceAdd(s, g);
+    return g;
+}
+
+// Set the free box's AABB and tell its space.
+static void set_free_box(dGeomID g, dReal x0, dReal x1, dReal y0, dReal y1, dReal z0, dReal z1)
+{
+    dReal *b = dGeomGetClassData(g);
+    const dReal v[6] = { x0, x1, y0, y1, z0, z1 };
+    memcpy(b, v, sizeof v);
+    dGeomSetPosition(g, 0, 0, 0);
+}
+
+static int test_sap_handles_infinite_nan_and_empty_boxes(void)
+{
+    // Planes (infinite boxes), an empty nested space (low above high: it
+    // meets the plane's box), and free boxes that change between finite,
+    // NaN, empty and infinite boxes, compared with the brute force each step,
+    // also from a probe and a NaN probe outside the space.
+    dSpaceID s = dSweepAndPruneSpaceCreate(0, dSAP_AXES_XYZ);
+    dGeomID g[60];
+    int n = 0;
+    g[n++] = dCreatePlane(s, 0, 0, 1, -20);
+    g[n++] = dCreatePlane(s, 1, 0, 0, 0);
+    dSpaceID inner = dSimpleSpaceCreate(s);
+    g[n++] = (dGeomID)inner;
+    rng_state = 17;
+    for (int i = 0; i < 40; i++) {
+        g[n] = dCreateSphere(s, rnd(0.5, 3));
+        dGeomSetPosition(g[n++], rnd(-10, 10), rnd(-10, 10), rnd(-10, 10));
+    }
+    const int first_free = n;
+    for (int i = 0; i < 8; i++) {
+        g[n] = create_free_box(s);
+        set_free_box(g[n++], -1, 1, -1, 1, -1, 1);
+    }
+    for (int i = 0; i < n; i++) number(g[i], i);
+    dGeomID probe = dCreateSphere(0, 4), nan_probe = create_free_box(0);
+    number(probe, 100);
+    number(nan_probe, 101);
+    set_free_box(nan_probe, 0, 1, NAN, 1, 0, 1);
+    dGeomID inner_ball = NULL;
+
+    for (int step = 0; step < 50; step++) {
+        for (int i = first_free; i < n; i++) {
+            const double r = rnd(0, 1);
+            const dReal c[3] = { rnd(-10, 10), rnd(-10, 10), rnd(-10, 10) };
+            const int axis = (int)rnd(0, 3);
+            dReal b[6] = { c[0] - 2, c[0] + 2, c[1] - 2, c[1] + 2, c[2] - 2, c[2] + 2 };
+            if (r < 0.15) b[2 * axis + (int)rnd(0, 2)] = NAN;
+            else if (r < 0.3) b[2 * axis] = c[axis] + 3;   // empty along one axis
+            else if (r < 0.4) b[2 * axis] = -dInfinity;
+            else if (r < 0.5) b[2 * axis] = -dInfinity, b[2 * axis + 1] = dInfinity;
+            set_free_box(g[i], b[0], b[1], b[2], b[3], b[4], b[5]);
+        }
+        if (step % 7 == 3) {   // the nested space fills up and empties again
+            if (inner_ball) {
+                dGeomDestroy(inner_ball);
+                inner_ball = NULL;
+            } else {
+                inner_ball = dCreateSphere(inner, 1);
+            }
+        }
+        stir(g + 2, 41, 5);   // the spheres (g[2] is the space: stir skips its first)
+        if (check_space_finds(s, g, n)) return 1;
+        dGeomSetPosition(probe, rnd(-10, 10), rnd(-10, 10), rnd(-10, 10));
+        if (check_probe_finds(s, probe, g, n)) return 1;
+        if (check_probe_finds(s, nan_probe, g, n)) return 1;
+    }
+    dGeomDestroy(probe);
+    dGeomDestroy(nan_probe);
+    dSpaceDestroy(s);
+    return 0;
+}
+
 static int test_moved_geoms_are_found_at_their_new_place(void)
 {
     for (int t = 0; t < N_TYPES; t++) {
@@ -457,9 +778,9 @@ static int test_hash_space_work_grows_near_linearly(void)
     return 0;
 }
 
-// The sweep visits the geoms whose boxes overlap its own along the sweep
-// axis and passes on only those that overlap on the other two: every pair it
-// tests is a pair of overlapping boxes, whatever the number of geoms.
+// The space keeps the pairs whose boxes overlap on all three axes and tests
+// only those: every pair it tests is a pair of overlapping boxes, whatever
+// the number of geoms.
 static int test_sap_tests_only_overlapping_boxes(void)
 {
     const int n[2] = { 1000, 8000 };
@@ -1200,6 +1521,12 @@ const test_case test_cases[] = {
     TEST_CASE(test_quadtree_agrees_whatever_its_axes_and_region),
     TEST_CASE(test_sap_agrees_whatever_its_axis_order),
     TEST_CASE(test_sap_rejects_a_bad_axis_order),
+    TEST_CASE(test_sap_follows_many_random_moves),
+    TEST_CASE(test_sap_follows_a_pile_with_equal_ends),
+    TEST_CASE(test_sap_follows_the_pile_all_moving_then_few),
+    TEST_CASE(test_sap_allocates_nothing_moving_ends_or_sorting_afresh),
+    TEST_CASE(test_sap_follows_adds_and_removes_between_collides),
+    TEST_CASE(test_sap_handles_infinite_nan_and_empty_boxes),
     TEST_CASE(test_moved_geoms_are_found_at_their_new_place),
     TEST_CASE(test_hash_space_work_grows_near_linearly),
     TEST_CASE(test_sap_tests_only_overlapping_boxes),
