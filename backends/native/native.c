@@ -6,7 +6,7 @@
 #include "../../libodecollide/backend_internal.h"
 #include "native_colliders.h"
 
-enum { NATIVE_CLASSES = dRayClass + 1 };   // sphere, box, capsule, cylinder, plane, ray
+enum { NATIVE_CLASSES = dConvexClass + 1 };   // sphere, box, capsule, cylinder, plane, ray, convex
 
 // table[a][b] collides (class a, class b) in that order; NULL if no collider.
 static dxCollider *const table[NATIVE_CLASSES][NATIVE_CLASSES] = {
@@ -24,7 +24,12 @@ static dxCollider *const table[NATIVE_CLASSES][NATIVE_CLASSES] = {
                          [dPlaneClass] = dxCollideCylinderPlane },
     [dRayClass] = { [dSphereClass] = dxCollideRaySphere, [dBoxClass] = dxCollideRayBox,
                     [dCapsuleClass] = dxCollideRayCapsule,
-                    [dCylinderClass] = dxCollideRayCylinder, [dPlaneClass] = dxCollideRayPlane },
+                    [dCylinderClass] = dxCollideRayCylinder, [dPlaneClass] = dxCollideRayPlane,
+                    [dConvexClass] = dxCollideRayConvex },
+    [dConvexClass] = { [dSphereClass] = dxCollideConvexSphere, [dBoxClass] = dxCollideConvexBox,
+                       [dCapsuleClass] = dxCollideConvexCapsule,
+                       [dCylinderClass] = dxCollideConvexCylinder,
+                       [dPlaneClass] = dxCollideConvexPlane, [dConvexClass] = dxCollideConvexConvex },
 };
 
 static int native_supports(int c1, int c2)

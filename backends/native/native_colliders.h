@@ -27,4 +27,8 @@ dxCollider dxCollideRaySphere, dxCollideRayBox, dxCollideRayCapsule, dxCollideRa
 // Convex pairs without a closed form, through libccd (collide_ccd.c).
 dxCollider dxCollideCylinderBox, dxCollideCylinderCapsule, dxCollideCylinderCylinder;
 
+// The convex hull (collide_convex.c); the triangle mesh pair is not here.
+dxCollider dxCollideConvexConvex, dxCollideConvexBox, dxCollideConvexPlane, dxCollideConvexSphere,
+    dxCollideConvexCapsule, dxCollideConvexCylinder, dxCollideRayConvex;
+
 #endif

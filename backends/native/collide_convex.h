@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// collide_convex.h -- what the convex hull colliders' files share: a hull
+// (a convex geom, or a box made into one) posed in the world, evaluated in
+// double precision whatever dReal is.
+
+#ifndef DX_COLLIDE_CONVEX_H
+#define DX_COLLIDE_CONVEX_H
+
+#include "native_colliders.h"
+
+typedef struct dx_hull {
+    const dReal *pts;         // npts x (x, y, z), local
+    const dReal *planes;      // nplanes x (a, b, c, d), local, outward
+    const unsigned *polys;    // per plane: count, indices
+    unsigned npts, nplanes;
+    double R[9];              // world = R local + c (row-major)
+    double c[3];
+    double size;              // the largest distance of a point from the origin of the frame
+} dx_hull;
+
+// The storage of a box made into a hull (dx_hull_of_geom's box case).
+typedef struct dx_hull_box {
+    dReal pts[24], planes[24];
+    unsigned polys[30];
+} dx_hull_box;
+
+// The hull of a convex geom or (into the storage bx) of a box geom.
+void dx_hull_of_geom(dx_hull *h, const dxGeom *g, dx_hull_box *bx);
+
+// Point i in world coordinates.
+void dx_hull_vertex(const dx_hull *h, unsigned i, double out[3]);
+// Plane f in world coordinates: unit outward normal n and offset (n . x = d).
+void dx_hull_plane(const dx_hull *h, unsigned f, double n[3], double *d);
+// max over the points of m . x, and (if idx) which point.
+double dx_hull_extent(const dx_hull *h, const double m[3], unsigned *idx);
+// The polygon of plane f: its count and indices (walks the polygon list).
+const unsigned *dx_hull_polygon(const dx_hull *h, unsigned f, unsigned *count);
+// Clips [*t0, *t1] to where o + t d (world) is inside h, with planes that d
+// runs along (|n . d| below 1e-9) kept if o is within tol of them; 0 if
+// empty by more than tol (rounding can leave a point's span crossed).
+int dx_hull_clip_line(const dx_hull *h, const double o[3], const double d[3], double tol,
+                      double *t0, double *t1);
+
+// Hull against hull (separating axes; face contacts clipped, or an edge
+// pair's point), as dxCollideBoxBox does for boxes. Contacts name o1, o2.
+int dx_hull_hull(const dx_hull *a, const dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
+                 dContactGeom *out, int skip);
+
+#endif

@@ -1,0 +1,22 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// geom_convex.h -- the convex hull class (ODE 0.16's dCreateConvex): the
+// caller's arrays, kept by pointer as ODE keeps them, for the geom's own
+// file and the native convex colliders.
+
+#ifndef DX_GEOM_CONVEX_H
+#define DX_GEOM_CONVEX_H
+
+#include "shapes.h"
+
+typedef struct dxConvex {
+    dxGeom g;
+    const dReal *planes;          // planecount x (a, b, c, d): a x + b y + c z = d, outward
+    const dReal *points;          // pointcount x (x, y, z), in the geom's frame
+    const unsigned *polygons;     // per plane: count, then count point indices
+    unsigned planecount, pointcount;
+} dxConvex;
+
+extern const dxGeomClassOps dx_convex_ops;
+
+#endif
