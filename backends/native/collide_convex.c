@@ -639,7 +639,7 @@ static void consider(const hull_cyl *p, const double d[3], double best_n[3], dou
 }
 
 // The starting directions of the search, with their depths.
-enum { MAX_STARTS = 256, SEARCH_STARTS = 4 };
+enum { MAX_STARTS = 512, SEARCH_STARTS = 6 };
 typedef struct starts {
     double n[MAX_STARTS][3], depth[MAX_STARTS];
     int count;
@@ -653,12 +653,15 @@ static void add_start(const hull_cyl *p, const double d[3], starts *st)
     if (depth < INFINITY) st->depth[st->count++] = depth;
 }
 
-// Pattern search for the least depth near n (unit): steps in 8 directions
-// across it, shrinking by 3 when none improves, down to 1e-9 radians.
+// Pattern search for the least depth near n (unit): steps in 12
+// directions across it, the pattern turned by 0.7 radians each time (so a
+// valley along a crease of the depth is followed whatever its heading),
+// the step shrinking by 2 after two failures running, down to 1e-9 radians.
 static void refine(const hull_cyl *p, double n[3], double *depth)
 {
-    double step = 0.05;
-    for (int it = 0; it < 400 && step > 1e-9; it++) {
+    double step = 0.05, turn = 0;
+    int failed = 0;
+    for (int it = 0; it < 600 && step > 1e-9; it++) {
         double u[3], v[3], e[3] = { 0, 0, 0 };
         int k = fabs(n[0]) <= fabs(n[1]) && fabs(n[0]) <= fabs(n[2]) ? 0
                 : fabs(n[1]) <= fabs(n[2])                        ? 1
@@ -668,16 +671,19 @@ static void refine(const hull_cyl *p, double n[3], double *depth)
         normalize3(u);
         cross3(n, u, v);
         double best = *depth, bn[3];
-        for (int d = 0; d < 8; d++) {
-            double a = d * 0.78539816339744831, m[3];
+        for (int d = 0; d < 12; d++) {
+            double a = turn + d * 0.52359877559829887, m[3];
             for (int i = 0; i < 3; i++) m[i] = n[i] + step * (cos(a) * u[i] + sin(a) * v[i]);
             consider(p, m, bn, &best);
         }
+        turn += 0.7;
         if (best < *depth) {
             *depth = best;
             memcpy(n, bn, sizeof bn);
-        } else {
-            step /= 3;
+            failed = 0;
+        } else if (++failed == 2) {
+            step /= 2;
+            failed = 0;
         }
     }
 }
@@ -727,7 +733,7 @@ static int cylinder_on_face(const dx_hull *h, unsigned f, const double nf[3], do
     }
     if (fabs(cz) > CYL_ALIGNED) return 0;
     double w[3], p0[3], p1[3];   // the side line nearest the face
-    for (int i = 0; i < 3; i++) w[i] = nf[i] - cz * cy->z[i];
+    for (int i = 0; i < 3; i++) w[i] = cz * cy->z[i] - nf[i];   // towards the face
     if (!normalize3(w)) return 0;
     for (int i = 0; i < 3; i++) {
         p0[i] = cy->c[i] + cy->r * w[i] - cy->hl * cy->z[i];
@@ -783,6 +789,16 @@ int dxCollideConvexCylinder(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out
             add_start(&p, m, &st);
             for (int i = 0; i < 3; i++) m[i] = -m[i];
             add_start(&p, m, &st);
+            // The axis square to the edge (a rim on the edge), the edge
+            // square to the axis (the side along it): both signs.
+            double ee = dot3(e, e), ez = dot3(e, cy.z);
+            if (!(ee > 0)) continue;
+            for (int sg = -1; sg <= 1; sg += 2) {
+                for (int i = 0; i < 3; i++) m[i] = sg * (cy.z[i] - ez / ee * e[i]);
+                add_start(&p, m, &st);
+                for (int i = 0; i < 3; i++) m[i] = sg * (e[i] - ez * cy.z[i]);
+                add_start(&p, m, &st);
+            }
         }
     }
     for (unsigned v = 0; v < h.npts; v++) {

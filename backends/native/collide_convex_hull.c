@@ -10,7 +10,8 @@
 // other hull's face most against the reference face, clipped to the
 // reference face's side planes, each point below the reference face as
 // deep as it is under it, placed in the middle of its line along the
-// normal inside both hulls (the deepest carries s(n)). An edge axis gives
+// normal inside both hulls (the deepest carries the exact translation along
+// the normal that parts the hulls, as box-box's does). An edge axis gives
 // one point between the closest points of the two edges. Everything inside
 // is double.
 
