@@ -22,7 +22,7 @@
 #include <string.h>
 
 // A normal within this of a hull face's counts as that face's (manifold).
-#define FACE_ALIGNED (1 - 1e-9)
+#define FACE_ALIGNED (1 - DX_HULL_EPS)
 // The cylinder's cap and side rest on a face within this of it.
 #define CYL_ALIGNED 1e-3
 enum { RIM_POINTS = 16, MAX_EXTRA = 64 };

@@ -9,6 +9,15 @@
 
 #include "native_colliders.h"
 
+// Relative tolerance of the hulls' geometry: directions this close to
+// parallel, points this close (times the sizes) to a plane. Single
+// precision poses are orthonormal only to ~1e-7.
+#ifdef dSINGLE
+#define DX_HULL_EPS 1e-5
+#else
+#define DX_HULL_EPS 1e-9
+#endif
+
 typedef struct dx_hull {
     const dReal *pts;         // npts x (x, y, z), local
     const dReal *planes;      // nplanes x (a, b, c, d), local, outward
@@ -37,7 +46,7 @@ double dx_hull_extent(const dx_hull *h, const double m[3], unsigned *idx);
 // The polygon of plane f: its count and indices (walks the polygon list).
 const unsigned *dx_hull_polygon(const dx_hull *h, unsigned f, unsigned *count);
 // Clips [*t0, *t1] to where o + t d (world) is inside h, with planes that d
-// runs along (|n . d| below 1e-9) kept if o is within tol of them; 0 if
+// runs along (|n . d| below DX_HULL_EPS) kept if o is within tol of them; 0 if
 // empty by more than tol (rounding can leave a point's span crossed).
 int dx_hull_clip_line(const dx_hull *h, const double o[3], const double d[3], double tol,
                       double *t0, double *t1);

@@ -131,7 +131,7 @@ int dx_hull_clip_line(const dx_hull *h, const double o[3], const double d[3], do
         double n[3], off;
         dx_hull_plane(h, f, n, &off);
         double nd = dot3(n, d), gap = off - dot3(n, o);   // n . (o + t d) <= off
-        if (fabs(nd) <= 1e-9 * dl) {
+        if (fabs(nd) <= DX_HULL_EPS * dl) {
             if (gap < -tol) return 0;
             continue;
         }
@@ -312,7 +312,7 @@ typedef struct hull_point {
 static int middle_inside(const dx_hull *a, const dx_hull *b, const double q[3], const double n[3],
                          double t0, double t1, double pos[3])
 {
-    double tol = 1e-9 * (a->size + b->size);
+    double tol = DX_HULL_EPS * (a->size + b->size);
     if (!dx_hull_clip_line(a, q, n, tol, &t0, &t1) || !dx_hull_clip_line(b, q, n, tol, &t0, &t1))
         return 0;
     double t = (t0 + t1) / 2;
