@@ -2,10 +2,13 @@
 //
 // geom_convex.c -- the convex hull class of ODE 0.16: creation and
 // dGeomSetConvex with their checks, and the bounding box of the points as
-// posed. The arrays belong to the caller (as in ODE): nothing is copied and
-// nothing is freed with the geom.
+// posed. The arrays belong to the caller (as in ODE): they are not copied.
+// The geom owns only the edge list it derives from the polygons (each edge
+// with its two faces), which the colliders use to skip edge pairs.
 
 #include "geom_convex.h"
+
+#include <ode/memory.h>
 
 // 1 if the hull data is usable by the colliders; else reports what is
 // wrong (naming the calling function) and returns 0.
@@ -61,16 +64,60 @@ static void convex_aabb(dxGeom *g)
     }
 }
 
-const dxGeomClassOps dx_convex_ops = { dConvexClass, "convex", convex_aabb, NULL };
+// The edges of the polygons, each once, with the faces on either side
+// (room for *cap). Made once per dGeomSetConvex.
+static dxHullEdge *convex_edges(const unsigned *polygons, unsigned planecount, unsigned *count,
+                                size_t *cap)
+{
+    size_t sides = 0;
+    const unsigned *poly = polygons;
+    for (unsigned f = 0; f < planecount; f++) {
+        sides += *poly;
+        poly += 1 + *poly;
+    }
+    dxHullEdge *e = dAlloc(sizeof *e * sides);
+    *cap = sides;
+    unsigned n = 0;
+    poly = polygons;
+    for (unsigned f = 0; f < planecount; f++, poly += 1 + *poly) {
+        for (unsigned k = 0; k < poly[0]; k++) {
+            unsigned i = poly[1 + k], j = poly[1 + (k + 1) % poly[0]];
+            unsigned a = i < j ? i : j, b = i < j ? j : i, m = 0;
+            while (m < n && !(e[m].a == a && e[m].b == b)) m++;
+            if (m < n) {   // the same edge from its other face
+                if (e[m].f2 == e[m].f1 && e[m].f1 != f) e[m].f2 = f;
+                continue;
+            }
+            e[n++] = (dxHullEdge){ a, b, f, f };
+        }
+    }
+    *count = n;
+    return e;
+}
+
+static void free_edges(dxConvex *c)
+{
+    if (c->edges) dFree(c->edges, sizeof *c->edges * c->edgecap);
+    c->edges = NULL;
+}
+
+static void convex_destroy(dxGeom *g)
+{
+    free_edges((dxConvex *)g);
+}
+
+const dxGeomClassOps dx_convex_ops = { dConvexClass, "convex", convex_aabb, convex_destroy };
 
 static void convex_set(dxConvex *c, const dReal *planes, unsigned planecount,
                        const dReal *points, unsigned pointcount, const unsigned *polygons)
 {
+    free_edges(c);
     c->planes = planes;
     c->planecount = planecount;
     c->points = points;
     c->pointcount = pointcount;
     c->polygons = polygons;
+    c->edges = convex_edges(polygons, planecount, &c->edgecount, &c->edgecap);
 }
 
 dGeomID dCreateConvex(dSpaceID space, const dReal *planes, unsigned int planecount,

@@ -9,12 +9,21 @@
 
 #include "shapes.h"
 
+// An edge of the hull, (a, b) with a < b, between faces f1 and f2 (f2 =
+// f1 when the polygons give the edge only once).
+typedef struct dxHullEdge {
+    unsigned a, b, f1, f2;
+} dxHullEdge;
+
 typedef struct dxConvex {
     dxGeom g;
     const dReal *planes;          // planecount x (a, b, c, d): a x + b y + c z = d, outward
     const dReal *points;          // pointcount x (x, y, z), in the geom's frame
     const unsigned *polygons;     // per plane: count, then count point indices
     unsigned planecount, pointcount;
+    dxHullEdge *edges;            // derived from the polygons, owned by the geom
+    unsigned edgecount;
+    size_t edgecap;               // the entries allocated (one per polygon side)
 } dxConvex;
 
 extern const dxGeomClassOps dx_convex_ops;

@@ -8,6 +8,7 @@
 #define DX_COLLIDE_CONVEX_H
 
 #include "native_colliders.h"
+#include "../../libodecollide/geom_convex.h"
 
 // Relative tolerance of the hulls' geometry: directions this close to
 // parallel, points this close (times the sizes) to a plane. Single
@@ -18,20 +19,33 @@
 #define DX_HULL_EPS 1e-9
 #endif
 
+// An edge posed in the world: its direction (b - a), its faces' unit
+// normals, and their cross product n2 x n1 (the edge pair test's).
+typedef struct dx_hull_edge {
+    double u[3], n1[3], n2[3], n2xn1[3];
+} dx_hull_edge;
+
+// Hulls with at most this many edges keep them posed (dx_hull.posed).
+enum { DX_HULL_POSED_EDGES = 64 };
+
 typedef struct dx_hull {
     const dReal *pts;         // npts x (x, y, z), local
     const dReal *planes;      // nplanes x (a, b, c, d), local, outward
     const unsigned *polys;    // per plane: count, indices
-    unsigned npts, nplanes;
+    const dxHullEdge *edges;  // each edge once, with its two faces
+    unsigned npts, nplanes, nedges;
     double R[9];              // world = R local + c (row-major)
     double c[3];
     double size;              // the largest distance of a point from the origin of the frame
+    int posed;                // 1 if posed[] holds the edges (nedges <= DX_HULL_POSED_EDGES)
+    dx_hull_edge posed_edges[DX_HULL_POSED_EDGES];
 } dx_hull;
 
 // The storage of a box made into a hull (dx_hull_of_geom's box case).
 typedef struct dx_hull_box {
     dReal pts[24], planes[24];
     unsigned polys[30];
+    dxHullEdge edges[12];
 } dx_hull_box;
 
 // The hull of a convex geom or (into the storage bx) of a box geom.

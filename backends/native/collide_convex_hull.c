@@ -17,7 +17,6 @@
 
 #include "collide_convex.h"
 #include "collide_math.h"
-#include "../../libodecollide/geom_convex.h"
 
 #include <math.h>
 #include <string.h>
@@ -39,6 +38,18 @@ static void cross3(const double *a, const double *b, double out[3])
     out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
+// Edge e of h in the world (dx_hull_edge).
+static void pose_edge(const dx_hull *h, const dxHullEdge *e, dx_hull_edge *out)
+{
+    double p0[3], p1[3], d;
+    dx_hull_vertex(h, e->a, p0);
+    dx_hull_vertex(h, e->b, p1);
+    for (int i = 0; i < 3; i++) out->u[i] = p1[i] - p0[i];
+    dx_hull_plane(h, e->f1, out->n1, &d);
+    dx_hull_plane(h, e->f2, out->n2, &d);
+    cross3(out->n2, out->n1, out->n2xn1);
+}
+
 void dx_hull_of_geom(dx_hull *h, const dxGeom *g, dx_hull_box *bx)
 {
     if (g->ops->cls == dConvexClass) {
@@ -48,6 +59,8 @@ void dx_hull_of_geom(dx_hull *h, const dxGeom *g, dx_hull_box *bx)
         h->polys = c->polygons;
         h->npts = c->pointcount;
         h->nplanes = c->planecount;
+        h->edges = c->edges;
+        h->nedges = c->edgecount;
     } else {   // a box: corners by bits (x, y, z), faces -x +x -y +y -z +z
         const dReal *side = ((const dxBox *)g)->side;
         static const unsigned faces[6][4] = { { 0, 4, 6, 2 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
@@ -62,11 +75,24 @@ void dx_hull_of_geom(dx_hull *h, const dxGeom *g, dx_hull_box *bx)
             bx->polys[5 * f] = 4;
             for (int k = 0; k < 4; k++) bx->polys[5 * f + 1 + k] = faces[f][k];
         }
+        // Edge along axis k from the corner with bit k clear to the one
+        // with it set, between the faces of the other two axes' bits.
+        int n = 0;
+        for (int k = 0; k < 3; k++) {
+            int i = (k + 1) % 3, j = (k + 2) % 3;
+            for (unsigned bits = 0; bits < 4; bits++) {
+                unsigned bi = bits & 1, bj = bits >> 1, a = bi << i | bj << j;
+                bx->edges[n++] = (dxHullEdge){ a, a | 1u << k, (unsigned)(2 * i) + bi,
+                                               (unsigned)(2 * j) + bj };
+            }
+        }
         h->pts = bx->pts;
         h->planes = bx->planes;
         h->polys = bx->polys;
+        h->edges = bx->edges;
         h->npts = 8;
         h->nplanes = 6;
+        h->nedges = 12;
     }
     h->size = 0;
     for (int i = 0; i < 3; i++) {
@@ -79,6 +105,9 @@ void dx_hull_of_geom(dx_hull *h, const dxGeom *g, dx_hull_box *bx)
         if (r2 > h->size) h->size = r2;
     }
     h->size = sqrt(h->size);
+    h->posed = h->nedges <= DX_HULL_POSED_EDGES;
+    for (unsigned k = 0; h->posed && k < h->nedges; k++)
+        pose_edge(h, &h->edges[k], &h->posed_edges[k]);
 }
 
 void dx_hull_vertex(const dx_hull *h, unsigned i, double out[3])
@@ -154,32 +183,38 @@ static double depth_along(const dx_hull *a, const dx_hull *b, const double n[3])
     return dx_hull_extent(b, n, NULL) + dx_hull_extent(a, m, NULL);
 }
 
-// The edges of a hull: each polygon side (i, j) with i < j, so that every
-// edge of a consistently wound hull comes once. Iterates with *pos a walk
-// through the polygon list (start at 0, with *k = 0): returns 0 at the end.
-typedef struct edge_walk {
-    const unsigned *poly;
-    unsigned face, k;
-} edge_walk;
-
-static int next_edge(const dx_hull *h, edge_walk *w, unsigned *i, unsigned *j)
+// The unit axis of the edge pair (a's edge i, b's edge j), into m (either
+// sign); 0 if the pair can give no face of the Minkowski difference a - b
+// (the arcs of the two edges on the unit sphere, between their faces'
+// normals, do not cross: the least depth is never there) or the edges are
+// parallel. An edge without a second face is always tried.
+static int edge_axis(const dx_hull *a, unsigned i, const dx_hull *b, unsigned j, double m[3])
 {
-    while (w->face < h->nplanes) {
-        unsigned n = w->poly[0];
-        while (w->k < n) {
-            unsigned a = w->poly[1 + w->k], b = w->poly[1 + (w->k + 1) % n];
-            w->k++;
-            if (a < b) {
-                *i = a;
-                *j = b;
-                return 1;
-            }
-        }
-        w->poly += 1 + n;
-        w->face++;
-        w->k = 0;
+    const dxHullEdge *ea = &a->edges[i], *eb = &b->edges[j];
+    dx_hull_edge pa, pb;
+    const dx_hull_edge *xa = &pa, *xb = &pb;
+    if (a->posed)
+        xa = &a->posed_edges[i];
+    else
+        pose_edge(a, ea, &pa);
+    if (b->posed)
+        xb = &b->posed_edges[j];
+    else
+        pose_edge(b, eb, &pb);
+    if (ea->f1 != ea->f2 && eb->f1 != eb->f2) {
+        // a's arc runs from n1 to n2, b's (negated, for the difference)
+        // from -n1 to -n2: they cross when each arc's ends lie on
+        // opposite sides of the other's great circle, on the same side.
+        double cba = -dot3(xb->n1, xa->n2xn1), dba = -dot3(xb->n2, xa->n2xn1);
+        double adc = dot3(xa->n1, xb->n2xn1), bdc = dot3(xa->n2, xb->n2xn1);
+        if (!(cba * dba < 0 && adc * bdc < 0 && cba * bdc > 0)) return 0;
     }
-    return 0;
+    cross3(xa->u, xb->u, m);
+    double l2 = dot3(m, m);
+    if (l2 <= DX_COLLIDE_EPS * dot3(xa->u, xa->u) * dot3(xb->u, xb->u)) return 0;   // parallel
+    double inv = 1 / sqrt(l2);
+    for (int k = 0; k < 3; k++) m[k] *= inv;
+    return 1;
 }
 
 // The best axis found: its unit normal (into a), its depth, and what it is:
@@ -188,7 +223,7 @@ typedef struct sat_axis {
     double n[3], depth;
     int ref;            // 0: a's face, 1: b's face, 2: edges
     unsigned face;
-    unsigned ea[2], eb[2];
+    unsigned ea, eb;    // the edges (indices into a's and b's edge lists)
 } sat_axis;
 
 // 0 if a separating axis parts a and b; else the face axis and the edge
@@ -213,38 +248,21 @@ static int sat(const dx_hull *a, const dx_hull *b, sat_axis *face, sat_axis *edg
             }
         }
     }
-    edge_walk wa = { a->polys, 0, 0 };
-    unsigned ia, ja;
-    while (next_edge(a, &wa, &ia, &ja)) {
-        double p0[3], p1[3], ua[3];
-        dx_hull_vertex(a, ia, p0);
-        dx_hull_vertex(a, ja, p1);
-        for (int i = 0; i < 3; i++) ua[i] = p1[i] - p0[i];
-        edge_walk wb = { b->polys, 0, 0 };
-        unsigned ib, jb;
-        while (next_edge(b, &wb, &ib, &jb)) {
-            double q0[3], q1[3], ub[3], n[3];
-            dx_hull_vertex(b, ib, q0);
-            dx_hull_vertex(b, jb, q1);
-            for (int i = 0; i < 3; i++) ub[i] = q1[i] - q0[i];
-            cross3(ua, ub, n);
-            double l2 = dot3(n, n);
-            if (l2 <= DX_COLLIDE_EPS * dot3(ua, ua) * dot3(ub, ub)) continue;   // parallel
-            double inv = 1 / sqrt(l2);
-            for (int i = 0; i < 3; i++) n[i] *= inv;
+    for (unsigned i = 0; i < a->nedges; i++) {
+        for (unsigned j = 0; j < b->nedges; j++) {
+            double n[3];
+            if (!edge_axis(a, i, b, j, n)) continue;
             for (int sg = 0; sg < 2; sg++) {
                 if (sg)
-                    for (int i = 0; i < 3; i++) n[i] = -n[i];
+                    for (int k = 0; k < 3; k++) n[k] = -n[k];
                 double s = depth_along(a, b, n);
                 if (s < 0) return 0;
                 if (s < edge->depth) {
                     edge->depth = s;
                     memcpy(edge->n, n, sizeof edge->n);
                     edge->ref = 2;
-                    edge->ea[0] = ia;
-                    edge->ea[1] = ja;
-                    edge->eb[0] = ib;
-                    edge->eb[1] = jb;
+                    edge->ea = i;
+                    edge->eb = j;
                 }
             }
         }
@@ -271,28 +289,13 @@ static double clearance(const dx_hull *a, const dx_hull *b, const double n[3])
             if (mn > 0) best = fmin(best, depth_along(a, b, m) / mn);
         }
     }
-    edge_walk wa = { a->polys, 0, 0 };
-    unsigned ia, ja;
-    while (next_edge(a, &wa, &ia, &ja)) {
-        double p0[3], p1[3], ua[3];
-        dx_hull_vertex(a, ia, p0);
-        dx_hull_vertex(a, ja, p1);
-        for (int i = 0; i < 3; i++) ua[i] = p1[i] - p0[i];
-        edge_walk wb = { b->polys, 0, 0 };
-        unsigned ib, jb;
-        while (next_edge(b, &wb, &ib, &jb)) {
-            double q0[3], q1[3], ub[3], m[3];
-            dx_hull_vertex(b, ib, q0);
-            dx_hull_vertex(b, jb, q1);
-            for (int i = 0; i < 3; i++) ub[i] = q1[i] - q0[i];
-            cross3(ua, ub, m);
-            double l2 = dot3(m, m);
-            if (l2 <= DX_COLLIDE_EPS * dot3(ua, ua) * dot3(ub, ub)) continue;
-            double inv = 1 / sqrt(l2), mn;
-            for (int i = 0; i < 3; i++) m[i] *= inv;
-            mn = dot3(m, n);
+    for (unsigned i = 0; i < a->nedges; i++) {
+        for (unsigned j = 0; j < b->nedges; j++) {
+            double m[3];
+            if (!edge_axis(a, i, b, j, m)) continue;
+            double mn = dot3(m, n);
             if (mn < 0) {
-                for (int i = 0; i < 3; i++) m[i] = -m[i];
+                for (int k = 0; k < 3; k++) m[k] = -m[k];
                 mn = -mn;
             }
             if (mn > 0) best = fmin(best, depth_along(a, b, m) / mn);
@@ -433,28 +436,25 @@ static int face_points(const dx_hull *r, unsigned f, const double nf[3], double 
     return kept;
 }
 
-// The edge of h through its point v most square to n, parallel to the edge
-// (i0, i1) of h if one is (the supporting copy of that edge): its ends.
-static void supporting_edge(const dx_hull *h, unsigned v, const unsigned e[2], double p0[3],
+// The edge of h through its point v parallel to h's edge e (the copy of
+// that edge on the side facing the other hull), or e itself: its ends.
+static void supporting_edge(const dx_hull *h, unsigned v, const dxHullEdge *e, double p0[3],
                             double p1[3])
 {
-    double ref0[3], ref1[3], u[3];
-    dx_hull_vertex(h, e[0], ref0);
-    dx_hull_vertex(h, e[1], ref1);
-    for (int i = 0; i < 3; i++) u[i] = ref1[i] - ref0[i];
-    double lu = sqrt(dot3(u, u)), best = -1;
-    memcpy(p0, ref0, sizeof ref0);
-    memcpy(p1, ref1, sizeof ref1);
-    edge_walk w = { h->polys, 0, 0 };
-    unsigned i, j;
-    while (next_edge(h, &w, &i, &j)) {
-        if (i != v && j != v) continue;
+    double u[3];
+    dx_hull_vertex(h, e->a, p0);
+    dx_hull_vertex(h, e->b, p1);
+    for (int i = 0; i < 3; i++) u[i] = p1[i] - p0[i];
+    double lu = sqrt(dot3(u, u)), best = 0;
+    for (unsigned k = 0; k < h->nedges; k++) {
+        const dxHullEdge *f = &h->edges[k];
+        if (f->a != v && f->b != v) continue;
         double q0[3], q1[3], d[3];
-        dx_hull_vertex(h, i, q0);
-        dx_hull_vertex(h, j, q1);
-        for (int k = 0; k < 3; k++) d[k] = q1[k] - q0[k];
+        dx_hull_vertex(h, f->a, q0);
+        dx_hull_vertex(h, f->b, q1);
+        for (int i = 0; i < 3; i++) d[i] = q1[i] - q0[i];
         double c = fabs(dot3(d, u)) / (sqrt(dot3(d, d)) * lu);
-        if (c > best) {
+        if (c > best && c > 1 - DX_HULL_EPS) {
             best = c;
             memcpy(p0, q0, sizeof q0);
             memcpy(p1, q1, sizeof q1);
@@ -472,23 +472,28 @@ static void edge_point(const dx_hull *a, const dx_hull *b, const sat_axis *ax, d
     dx_hull_extent(a, m, &va);
     dx_hull_extent(b, ax->n, &vb);
     double a0[3], a1[3], b0[3], b1[3], u[3], v[3], w[3];
-    supporting_edge(a, va, ax->ea, a0, a1);
-    supporting_edge(b, vb, ax->eb, b0, b1);
+    supporting_edge(a, va, &a->edges[ax->ea], a0, a1);
+    supporting_edge(b, vb, &b->edges[ax->eb], b0, b1);
     for (int i = 0; i < 3; i++) {
         u[i] = a1[i] - a0[i];
         v[i] = b1[i] - b0[i];
     }
     double lu = sqrt(dot3(u, u)), lv = sqrt(dot3(v, v));
+    double iu = lu > 0 ? 1 / lu : 0, iv = lv > 0 ? 1 / lv : 0;   // 0: a point edge
     double ca[3], cb[3];   // the edges' middles
     for (int i = 0; i < 3; i++) {
-        u[i] /= lu;
-        v[i] /= lv;
+        u[i] *= iu;
+        v[i] *= iv;
         ca[i] = (a0[i] + a1[i]) / 2;
         cb[i] = (b0[i] + b1[i]) / 2;
         w[i] = ca[i] - cb[i];
     }
     double bb = dot3(u, v), d = dot3(u, w), e = dot3(v, w), denom = 1 - bb * bb;
-    double s = (bb * e - d) / denom, t = (e - bb * d) / denom;
+    double s = 0, t = 0;   // parallel supporting edges: their middles
+    if (denom > DX_HULL_EPS) {
+        s = (bb * e - d) / denom;
+        t = (e - bb * d) / denom;
+    }
     s = s < -lu / 2 ? -lu / 2 : s > lu / 2 ? lu / 2 : s;
     t = t < -lv / 2 ? -lv / 2 : t > lv / 2 ? lv / 2 : t;
     double qb[3], dir[3];
