@@ -522,6 +522,80 @@ static int test_cylinder_on_convex(void)
     return 0;
 }
 
+// A prism over a regular 40-gon (120 edges: more than the colliders keep
+// posed), radius 1 to the corners, height 1.
+enum { SIDES = 40 };
+typedef struct prism {
+    dReal points[6 * SIDES], planes[4 * (SIDES + 2)];
+    unsigned polygons[2 * (SIDES + 1) + 5 * SIDES];
+} prism;
+
+static dGeomID make_prism(prism *p)
+{
+    unsigned *q = p->polygons;
+    for (int i = 0; i < SIDES; i++) {
+        double a = 2 * M_PI * i / SIDES, b = a + M_PI / SIDES;
+        for (int top = 0; top < 2; top++) {
+            dReal *v = p->points + 3 * (SIDES * top + i);
+            v[0] = (dReal)cos(a);
+            v[1] = (dReal)sin(a);
+            v[2] = top ? (dReal)0.5 : (dReal)-0.5;
+        }
+        dReal *pl = p->planes + 4 * (2 + i);
+        pl[0] = (dReal)cos(b);
+        pl[1] = (dReal)sin(b);
+        pl[2] = 0;
+        pl[3] = (dReal)cos(M_PI / SIDES);
+    }
+    const dReal caps[8] = { 0, 0, 1, (dReal)0.5, 0, 0, -1, (dReal)0.5 };
+    memcpy(p->planes, caps, sizeof caps);
+    *q++ = SIDES;
+    for (int i = 0; i < SIDES; i++) *q++ = (unsigned)(SIDES + i);
+    *q++ = SIDES;
+    for (int i = SIDES - 1; i >= 0; i--) *q++ = (unsigned)i;
+    for (int i = 0; i < SIDES; i++) {
+        unsigned j = (unsigned)(i + 1) % SIDES;
+        *q++ = 4;
+        *q++ = (unsigned)i;
+        *q++ = j;
+        *q++ = SIDES + j;
+        *q++ = (unsigned)(SIDES + i);
+    }
+    return dCreateConvex(0, p->planes, SIDES + 2, p->points, 2 * SIDES, p->polygons);
+}
+
+// The prism standing on a box and on another prism (turned about z): the
+// bottom polygon, MAXC of its corners spread, each as deep as it sinks.
+static int test_large_prism(void)
+{
+    static prism pa, pb;
+    dGeomID a = make_prism(&pa), b = make_prism(&pb), box = dCreateBox(0, 5, 5, 1);
+    CHECK(a && b);
+    dGeomSetPosition(a, (dReal)0.1, 0, (dReal)0.99);
+    dContactGeom c[MAXC];
+    int n = dCollide(a, box, MAXC, c, sizeof c[0]);
+    CHECK(n == MAXC);
+    for (int i = 0; i < n; i++) {
+        CHECK_NEAR(c[i].depth, 0.01, EPS);
+        CHECK_VEC(c[i].normal, 0, 0, 1, EPS);
+        double r = hypot(c[i].pos[0] - 0.1, c[i].pos[1]);
+        CHECK_NEAR(r, 1, 1e-3 + EPS);   // corners (pos within the 2.5 mm sagitta)
+    }
+    set_rot(b, 0, 0, 1, (dReal)0.05);
+    dGeomSetPosition(b, 0, 0, (dReal)-0.98);
+    dGeomSetPosition(a, 0, 0, 0);
+    n = dCollide(a, b, MAXC, c, sizeof c[0]);
+    CHECK(n == MAXC);
+    for (int i = 0; i < n; i++) {
+        CHECK_NEAR(c[i].depth, 0.02, EPS);
+        CHECK_VEC(c[i].normal, 0, 0, 1, EPS);
+    }
+    dGeomDestroy(a);
+    dGeomDestroy(b);
+    dGeomDestroy(box);
+    return 0;
+}
+
 // ---- resting ------------------------------------------------------------------
 
 // A 0.5 cube (as convex, or as a box) dropped on a plane at z = 0: its
@@ -700,6 +774,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_octahedron_capsule_plane),
     TEST_CASE(test_cube_on_box_polygon),
     TEST_CASE(test_cylinder_on_convex),
+    TEST_CASE(test_large_prism),
     TEST_CASE(test_resting_on_plane),
     TEST_CASE(test_bad_input),
     TEST_END,

@@ -4,7 +4,9 @@
 // The pair test is the separating axis test of two polyhedra: the least
 // translation of o1 along a unit n that parts them, s(n) = h_b(n) + h_a(-n)
 // (h the support value), is least over the face normals of either and the
-// cross products of an edge of each; a negative value there separates them.
+// cross products of an edge of each whose arcs on the unit sphere cross
+// (the faces of the Minkowski difference); a negative value there
+// separates them.
 // As for box-box (collide_box.c), an edge axis wins only if 1.05 times
 // shallower than the best face. A face axis gives the contact polygon: the
 // other hull's face most against the reference face, clipped to the
