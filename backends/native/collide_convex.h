@@ -25,8 +25,8 @@ typedef struct dx_hull_edge {
     double u[3], n1[3], n2[3], n2xn1[3];
 } dx_hull_edge;
 
-// Hulls with at most this many edges keep them posed (dx_hull.posed).
-enum { DX_HULL_POSED_EDGES = 64 };
+// Hulls with at most this many edges (faces) keep them posed in the world.
+enum { DX_HULL_POSED_EDGES = 64, DX_HULL_POSED_FACES = 48 };
 
 typedef struct dx_hull {
     const dReal *pts;         // npts x (x, y, z), local
@@ -37,8 +37,10 @@ typedef struct dx_hull {
     double R[9];              // world = R local + c (row-major)
     double c[3];
     double size;              // the largest distance of a point from the origin of the frame
-    int posed;                // 1 if posed[] holds the edges (nedges <= DX_HULL_POSED_EDGES)
+    int posed;                // 1 if posed_edges holds the edges (nedges <= DX_HULL_POSED_EDGES)
     dx_hull_edge posed_edges[DX_HULL_POSED_EDGES];
+    int faces_posed;          // 1 if face_n, face_d hold the planes (nplanes <= ..._FACES)
+    double face_n[DX_HULL_POSED_FACES][3], face_d[DX_HULL_POSED_FACES];
 } dx_hull;
 
 // The storage of a box made into a hull (dx_hull_of_geom's box case).

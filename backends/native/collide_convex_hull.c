@@ -107,6 +107,11 @@ void dx_hull_of_geom(dx_hull *h, const dxGeom *g, dx_hull_box *bx)
         if (r2 > h->size) h->size = r2;
     }
     h->size = sqrt(h->size);
+    h->faces_posed = 0;
+    if (h->nplanes <= DX_HULL_POSED_FACES) {
+        for (unsigned f = 0; f < h->nplanes; f++) dx_hull_plane(h, f, h->face_n[f], &h->face_d[f]);
+        h->faces_posed = 1;
+    }
     h->posed = h->nedges <= DX_HULL_POSED_EDGES;
     for (unsigned k = 0; h->posed && k < h->nedges; k++)
         pose_edge(h, &h->edges[k], &h->posed_edges[k]);
@@ -121,6 +126,11 @@ void dx_hull_vertex(const dx_hull *h, unsigned i, double out[3])
 
 void dx_hull_plane(const dx_hull *h, unsigned f, double n[3], double *d)
 {
+    if (h->faces_posed) {
+        memcpy(n, h->face_n[f], sizeof h->face_n[f]);
+        *d = h->face_d[f];
+        return;
+    }
     const dReal *p = h->planes + 4 * f;
     double l = sqrt((double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2]);
     for (int r = 0; r < 3; r++)
@@ -228,10 +238,20 @@ typedef struct sat_axis {
     unsigned ea, eb;    // the edges (indices into a's and b's edge lists)
 } sat_axis;
 
+// The edge pair axes sat found (for clearance), unless there were more.
+enum { MAX_EDGE_AXES = 128 };
+typedef struct edge_axes {
+    double m[MAX_EDGE_AXES][3];
+    int n, overflow;
+} edge_axes;
+
 // 0 if a separating axis parts a and b; else the face axis and the edge
-// axis of least depth (edge->depth is infinite if no edge pair counts).
-static int sat(const dx_hull *a, const dx_hull *b, sat_axis *face, sat_axis *edge)
+// axis of least depth (edge->depth is infinite if no edge pair counts),
+// and the edge pair axes into found.
+static int sat(const dx_hull *a, const dx_hull *b, sat_axis *face, sat_axis *edge,
+               edge_axes *found)
 {
+    found->n = found->overflow = 0;
     face->depth = edge->depth = INFINITY;
     for (int side = 0; side < 2; side++) {
         const dx_hull *h = side ? b : a;
@@ -254,6 +274,10 @@ static int sat(const dx_hull *a, const dx_hull *b, sat_axis *face, sat_axis *edg
         for (unsigned j = 0; j < b->nedges; j++) {
             double n[3];
             if (!edge_axis(a, i, b, j, n)) continue;
+            if (found->n < MAX_EDGE_AXES)
+                memcpy(found->m[found->n++], n, sizeof n);
+            else
+                found->overflow = 1;
             for (int sg = 0; sg < 2; sg++) {
                 if (sg)
                     for (int k = 0; k < 3; k++) n[k] = -n[k];
@@ -272,12 +296,27 @@ static int sat(const dx_hull *a, const dx_hull *b, sat_axis *face, sat_axis *edg
     return 1;
 }
 
+// What the edge pair axis m (either sign) allows a to move along n
+// before parting from b: s(m) / (m . n) with m turned to face n; infinite
+// if m is square to n.
+static double edge_clearance(const dx_hull *a, const dx_hull *b, const double n[3],
+                             const double m_in[3])
+{
+    double m[3] = { m_in[0], m_in[1], m_in[2] }, mn = dot3(m, n);
+    if (mn < 0) {
+        for (int k = 0; k < 3; k++) m[k] = -m[k];
+        mn = -mn;
+    }
+    return mn > 0 ? depth_along(a, b, m) / mn : INFINITY;
+}
+
 // The exact translation of a along the unit n that parts it from b (as
 // box_clearance in collide_box.c): a moved by t n is clear of b along a
 // candidate axis m once t (m . n) > s(m); the least such t over the axes
 // facing n. The candidates hold every face normal of the Minkowski
 // difference, so this is exact; it is at most s(n).
-static double clearance(const dx_hull *a, const dx_hull *b, const double n[3])
+static double clearance(const dx_hull *a, const dx_hull *b, const double n[3],
+                        const edge_axes *found)
 {
     double best = depth_along(a, b, n);
     for (int side = 0; side < 2; side++) {
@@ -291,16 +330,12 @@ static double clearance(const dx_hull *a, const dx_hull *b, const double n[3])
             if (mn > 0) best = fmin(best, depth_along(a, b, m) / mn);
         }
     }
-    for (unsigned i = 0; i < a->nedges; i++) {
+    for (int k = 0; !found->overflow && k < found->n; k++)
+        best = fmin(best, edge_clearance(a, b, n, found->m[k]));
+    for (unsigned i = 0; found->overflow && i < a->nedges; i++) {
         for (unsigned j = 0; j < b->nedges; j++) {
             double m[3];
-            if (!edge_axis(a, i, b, j, m)) continue;
-            double mn = dot3(m, n);
-            if (mn < 0) {
-                for (int k = 0; k < 3; k++) m[k] = -m[k];
-                mn = -mn;
-            }
-            if (mn > 0) best = fmin(best, depth_along(a, b, m) / mn);
+            if (edge_axis(a, i, b, j, m)) best = fmin(best, edge_clearance(a, b, n, m));
         }
     }
     return best;
@@ -535,7 +570,8 @@ int dx_hull_hull(const dx_hull *a, const dx_hull *b, dxGeom *o1, dxGeom *o2, int
                  dContactGeom *out, int skip)
 {
     sat_axis face, edge;
-    if (!sat(a, b, &face, &edge)) return 0;
+    edge_axes found;
+    if (!sat(a, b, &face, &edge, &found)) return 0;
     int max = dx_max_contacts(flags);
     if (edge.depth * EDGE_PREFERENCE < face.depth) {
         double pos[3];
@@ -548,7 +584,7 @@ int dx_hull_hull(const dx_hull *a, const dx_hull *b, dxGeom *o1, dxGeom *o2, int
     dx_hull_plane(r, face.face, nf, &df);
     hull_point pts[MAXP];
     int n = face_points(r, face.face, nf, df, inc, max, pts);
-    double clear = clearance(a, b, face.n);
+    double clear = clearance(a, b, face.n, &found);
     if (n == 0) {
         double pos[3];
         deepest_pair_point(a, b, face.n, pos);
