@@ -37,7 +37,7 @@ typedef struct dx_hull {
     double R[9];              // world = R local + c (row-major)
     double c[3];
     double size;              // the largest distance of a point from the origin of the frame
-    int posed;                // 1 if posed_edges holds the edges (nedges <= DX_HULL_POSED_EDGES)
+    int posed;                // 1 once posed_edges holds the edges (if nedges <= ..._EDGES)
     dx_hull_edge posed_edges[DX_HULL_POSED_EDGES];
     int faces_posed;          // 1 if face_n, face_d hold the planes (nplanes <= ..._FACES)
     double face_n[DX_HULL_POSED_FACES][3], face_d[DX_HULL_POSED_FACES];
@@ -69,7 +69,7 @@ int dx_hull_clip_line(const dx_hull *h, const double o[3], const double d[3], do
 
 // Hull against hull (separating axes; face contacts clipped, or an edge
 // pair's point), as dxCollideBoxBox does for boxes. Contacts name o1, o2.
-int dx_hull_hull(const dx_hull *a, const dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
+int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
                  dContactGeom *out, int skip);
 
 #endif

@@ -112,9 +112,15 @@ void dx_hull_of_geom(dx_hull *h, const dxGeom *g, dx_hull_box *bx)
         for (unsigned f = 0; f < h->nplanes; f++) dx_hull_plane(h, f, h->face_n[f], &h->face_d[f]);
         h->faces_posed = 1;
     }
-    h->posed = h->nedges <= DX_HULL_POSED_EDGES;
-    for (unsigned k = 0; h->posed && k < h->nedges; k++)
-        pose_edge(h, &h->edges[k], &h->posed_edges[k]);
+    h->posed = 0;   // dx_hull_pose_edges, when the edges are needed
+}
+
+// Poses the edges of h into posed_edges if they fit.
+static void pose_edges(dx_hull *h)
+{
+    if (h->posed || h->nedges > DX_HULL_POSED_EDGES) return;
+    for (unsigned k = 0; k < h->nedges; k++) pose_edge(h, &h->edges[k], &h->posed_edges[k]);
+    h->posed = 1;
 }
 
 void dx_hull_vertex(const dx_hull *h, unsigned i, double out[3])
@@ -248,8 +254,7 @@ typedef struct edge_axes {
 // 0 if a separating axis parts a and b; else the face axis and the edge
 // axis of least depth (edge->depth is infinite if no edge pair counts),
 // and the edge pair axes into found.
-static int sat(const dx_hull *a, const dx_hull *b, sat_axis *face, sat_axis *edge,
-               edge_axes *found)
+static int sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axes *found)
 {
     found->n = found->overflow = 0;
     face->depth = edge->depth = INFINITY;
@@ -270,6 +275,8 @@ static int sat(const dx_hull *a, const dx_hull *b, sat_axis *face, sat_axis *edg
             }
         }
     }
+    pose_edges(a);
+    pose_edges(b);
     for (unsigned i = 0; i < a->nedges; i++) {
         for (unsigned j = 0; j < b->nedges; j++) {
             double n[3];
@@ -566,7 +573,7 @@ static void put(dContactGeom *out, int i, int skip, const double p[3], const dou
     dx_put_contact(out, i, skip, pos, nn, (dReal)depth, o1, o2);
 }
 
-int dx_hull_hull(const dx_hull *a, const dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
+int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
                  dContactGeom *out, int skip)
 {
     sat_axis face, edge;
