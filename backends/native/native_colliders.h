@@ -31,5 +31,8 @@ dxCollider dxCollideCylinderBox, dxCollideCylinderCapsule, dxCollideCylinderCyli
 dxCollider dxCollideTriMeshSphere, dxCollideTriMeshBox, dxCollideTriMeshCapsule,
     dxCollideTriMeshCylinder, dxCollideTriMeshPlane, dxCollideTriMeshRay,
     dxCollideTriMeshTriMesh;
+// The convex hull (collide_convex.c); the triangle mesh pair is not here.
+dxCollider dxCollideConvexConvex, dxCollideConvexBox, dxCollideConvexPlane, dxCollideConvexSphere,
+    dxCollideConvexCapsule, dxCollideConvexCylinder, dxCollideRayConvex;
 
 #endif

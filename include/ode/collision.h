@@ -202,6 +202,18 @@ ODE_API dGeomID dCreateCylinder(dSpaceID space, dReal radius, dReal length);
 ODE_API void dGeomCylinderSetParams(dGeomID cylinder, dReal radius, dReal length);
 ODE_API void dGeomCylinderGetParams(dGeomID cylinder, dReal *radius, dReal *length);
 
+/** Convex hull (ODE 0.16): planecount planes (a, b, c, d) with unit normals
+ *  (a, b, c) pointing out, pointcount points (x, y, z), and for each plane
+ *  in order its polygon as [count, i0, i1, ...] (point indices, counter-
+ *  clockwise seen from outside). The arrays are not copied: they must
+ *  outlive the geom (or the next dGeomSetConvex). */
+ODE_API dGeomID dCreateConvex(dSpaceID space, const dReal *planes, unsigned int planecount,
+                              const dReal *points, unsigned int pointcount,
+                              const unsigned int *polygons);
+ODE_API void dGeomSetConvex(dGeomID g, const dReal *planes, unsigned int planecount,
+                            const dReal *points, unsigned int pointcount,
+                            const unsigned int *polygons);
+
 /** Ray (10.7.5): from the geom position along local +z, length >= 0. Its
  *  contacts are the hit points on the other geom: depth = distance from the
  *  start, normal = the surface normal there (facing the ray when the ray is o1). */

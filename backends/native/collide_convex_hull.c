@@ -1,0 +1,606 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// collide_convex_hull.c -- convex hulls in the world, and hull against hull.
+// The pair test is the separating axis test of two polyhedra: the least
+// translation of o1 along a unit n that parts them, s(n) = h_b(n) + h_a(-n)
+// (h the support value), is least over the face normals of either and the
+// cross products of an edge of each whose arcs on the unit sphere cross
+// (the faces of the Minkowski difference); a negative value there
+// separates them.
+// As for box-box (collide_box.c), an edge axis wins only if 1.05 times
+// shallower than the best face. A face axis gives the contact polygon: the
+// other hull's face most against the reference face, clipped to the
+// reference face's side planes, each point below the reference face as
+// deep as it is under it, placed in the middle of its line along the
+// normal inside both hulls (the deepest carries the exact translation along
+// the normal that parts the hulls, as box-box's does). An edge axis gives
+// one point between the closest points of the two edges. Everything inside
+// is double.
+
+#include "collide_convex.h"
+#include "collide_math.h"
+
+#include <math.h>
+#include <string.h>
+
+#define EDGE_PREFERENCE 1.05
+// Polygon buffers: the clipped polygon has at most the incident polygon's
+// count plus one per reference edge; larger polygons give one contact.
+enum { MAXP = 256, MAXP_INCIDENT = 128 };
+
+static double dot3(const double *a, const double *b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static void cross3(const double *a, const double *b, double out[3])
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+// Edge e of h in the world (dx_hull_edge).
+static void pose_edge(const dx_hull *h, const dxHullEdge *e, dx_hull_edge *out)
+{
+    double p0[3], p1[3], d;
+    dx_hull_vertex(h, e->a, p0);
+    dx_hull_vertex(h, e->b, p1);
+    for (int i = 0; i < 3; i++) out->u[i] = p1[i] - p0[i];
+    dx_hull_plane(h, e->f1, out->n1, &d);
+    dx_hull_plane(h, e->f2, out->n2, &d);
+    cross3(out->n2, out->n1, out->n2xn1);
+}
+
+void dx_hull_of_geom(dx_hull *h, const dxGeom *g, dx_hull_box *bx)
+{
+    if (g->ops->cls == dConvexClass) {
+        const dxConvex *c = (const dxConvex *)g;
+        h->pts = c->points;
+        h->planes = c->planes;
+        h->polys = c->polygons;
+        h->npts = c->pointcount;
+        h->nplanes = c->planecount;
+        h->edges = c->edges;
+        h->nedges = c->edgecount;
+    } else {   // a box: corners by bits (x, y, z), faces -x +x -y +y -z +z
+        const dReal *side = ((const dxBox *)g)->side;
+        static const unsigned faces[6][4] = { { 0, 4, 6, 2 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
+                                              { 2, 6, 7, 3 }, { 0, 2, 3, 1 }, { 4, 5, 7, 6 } };
+        for (unsigned v = 0; v < 8; v++)
+            for (int i = 0; i < 3; i++) bx->pts[3 * v + i] = (v >> i & 1 ? 1 : -1) * side[i] / 2;
+        for (int f = 0; f < 6; f++) {
+            int axis = f / 2;
+            dReal sg = f & 1 ? 1 : -1;
+            for (int i = 0; i < 3; i++) bx->planes[4 * f + i] = i == axis ? sg : 0;
+            bx->planes[4 * f + 3] = side[axis] / 2;
+            bx->polys[5 * f] = 4;
+            for (int k = 0; k < 4; k++) bx->polys[5 * f + 1 + k] = faces[f][k];
+        }
+        // Edge along axis k from the corner with bit k clear to the one
+        // with it set, between the faces of the other two axes' bits.
+        int n = 0;
+        for (int k = 0; k < 3; k++) {
+            int i = (k + 1) % 3, j = (k + 2) % 3;
+            for (unsigned bits = 0; bits < 4; bits++) {
+                unsigned bi = bits & 1, bj = bits >> 1, a = bi << i | bj << j;
+                bx->edges[n++] = (dxHullEdge){ a, a | 1u << k, (unsigned)(2 * i) + bi,
+                                               (unsigned)(2 * j) + bj };
+            }
+        }
+        h->pts = bx->pts;
+        h->planes = bx->planes;
+        h->polys = bx->polys;
+        h->edges = bx->edges;
+        h->npts = 8;
+        h->nplanes = 6;
+        h->nedges = 12;
+    }
+    h->size = 0;
+    for (int i = 0; i < 3; i++) {
+        h->c[i] = g->pos[i];
+        for (int k = 0; k < 3; k++) h->R[3 * i + k] = g->R[4 * i + k];
+    }
+    for (unsigned v = 0; v < h->npts; v++) {
+        const dReal *p = h->pts + 3 * v;
+        double r2 = (double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2];
+        if (r2 > h->size) h->size = r2;
+    }
+    h->size = sqrt(h->size);
+    h->faces_posed = 0;
+    if (h->nplanes <= DX_HULL_POSED_FACES) {
+        for (unsigned f = 0; f < h->nplanes; f++) dx_hull_plane(h, f, h->face_n[f], &h->face_d[f]);
+        h->faces_posed = 1;
+    }
+    h->posed = 0;   // dx_hull_pose_edges, when the edges are needed
+}
+
+// Poses the edges of h into posed_edges if they fit.
+static void pose_edges(dx_hull *h)
+{
+    if (h->posed || h->nedges > DX_HULL_POSED_EDGES) return;
+    for (unsigned k = 0; k < h->nedges; k++) pose_edge(h, &h->edges[k], &h->posed_edges[k]);
+    h->posed = 1;
+}
+
+void dx_hull_vertex(const dx_hull *h, unsigned i, double out[3])
+{
+    const dReal *p = h->pts + 3 * i;
+    for (int r = 0; r < 3; r++)
+        out[r] = h->c[r] + h->R[3 * r] * p[0] + h->R[3 * r + 1] * p[1] + h->R[3 * r + 2] * p[2];
+}
+
+void dx_hull_plane(const dx_hull *h, unsigned f, double n[3], double *d)
+{
+    if (h->faces_posed) {
+        memcpy(n, h->face_n[f], sizeof h->face_n[f]);
+        *d = h->face_d[f];
+        return;
+    }
+    const dReal *p = h->planes + 4 * f;
+    double l = sqrt((double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2]);
+    for (int r = 0; r < 3; r++)
+        n[r] = (h->R[3 * r] * p[0] + h->R[3 * r + 1] * p[1] + h->R[3 * r + 2] * p[2]) / l;
+    *d = p[3] / l + dot3(n, h->c);
+}
+
+double dx_hull_extent(const dx_hull *h, const double m[3], unsigned *idx)
+{
+    double ml[3];   // m in the hull's frame
+    for (int k = 0; k < 3; k++) ml[k] = h->R[k] * m[0] + h->R[3 + k] * m[1] + h->R[6 + k] * m[2];
+    double best = -INFINITY;
+    unsigned bi = 0;
+    for (unsigned v = 0; v < h->npts; v++) {
+        const dReal *p = h->pts + 3 * v;
+        double e = ml[0] * p[0] + ml[1] * p[1] + ml[2] * p[2];
+        if (e > best) {
+            best = e;
+            bi = v;
+        }
+    }
+    if (idx) *idx = bi;
+    return best + dot3(m, h->c);
+}
+
+const unsigned *dx_hull_polygon(const dx_hull *h, unsigned f, unsigned *count)
+{
+    const unsigned *p = h->polys;
+    for (unsigned k = 0; k < f; k++) p += 1 + *p;
+    *count = *p;
+    return p + 1;
+}
+
+int dx_hull_clip_line(const dx_hull *h, const double o[3], const double d[3], double tol,
+                      double *t0, double *t1)
+{
+    double dl = sqrt(dot3(d, d));
+    for (unsigned f = 0; f < h->nplanes; f++) {
+        double n[3], off;
+        dx_hull_plane(h, f, n, &off);
+        double nd = dot3(n, d), gap = off - dot3(n, o);   // n . (o + t d) <= off
+        if (fabs(nd) <= DX_HULL_EPS * dl) {
+            if (gap < -tol) return 0;
+            continue;
+        }
+        double t = gap / nd;
+        if (nd > 0) {
+            if (t < *t1) *t1 = t;
+        } else if (t > *t0) {
+            *t0 = t;
+        }
+    }
+    return *t0 <= *t1 + tol / dl;
+}
+
+// ---- separating axes ---------------------------------------------------------
+
+// The translation of a along the unit n that parts it from b.
+static double depth_along(const dx_hull *a, const dx_hull *b, const double n[3])
+{
+    double m[3] = { -n[0], -n[1], -n[2] };
+    return dx_hull_extent(b, n, NULL) + dx_hull_extent(a, m, NULL);
+}
+
+// The unit axis of the edge pair (a's edge i, b's edge j), into m (either
+// sign); 0 if the pair can give no face of the Minkowski difference a - b
+// (the arcs of the two edges on the unit sphere, between their faces'
+// normals, do not cross: the least depth is never there) or the edges are
+// parallel. An edge without a second face is always tried.
+static int edge_axis(const dx_hull *a, unsigned i, const dx_hull *b, unsigned j, double m[3])
+{
+    const dxHullEdge *ea = &a->edges[i], *eb = &b->edges[j];
+    dx_hull_edge pa, pb;
+    const dx_hull_edge *xa = &pa, *xb = &pb;
+    if (a->posed)
+        xa = &a->posed_edges[i];
+    else
+        pose_edge(a, ea, &pa);
+    if (b->posed)
+        xb = &b->posed_edges[j];
+    else
+        pose_edge(b, eb, &pb);
+    if (ea->f1 != ea->f2 && eb->f1 != eb->f2) {
+        // a's arc runs from n1 to n2, b's (negated, for the difference)
+        // from -n1 to -n2: they cross when each arc's ends lie on
+        // opposite sides of the other's great circle, on the same side.
+        double cba = -dot3(xb->n1, xa->n2xn1), dba = -dot3(xb->n2, xa->n2xn1);
+        double adc = dot3(xa->n1, xb->n2xn1), bdc = dot3(xa->n2, xb->n2xn1);
+        if (!(cba * dba < 0 && adc * bdc < 0 && cba * bdc > 0)) return 0;
+    }
+    cross3(xa->u, xb->u, m);
+    double l2 = dot3(m, m);
+    if (l2 <= DX_COLLIDE_EPS * dot3(xa->u, xa->u) * dot3(xb->u, xb->u)) return 0;   // parallel
+    double inv = 1 / sqrt(l2);
+    for (int k = 0; k < 3; k++) m[k] *= inv;
+    return 1;
+}
+
+// The best axis found: its unit normal (into a), its depth, and what it is:
+// a face of a (ref 0) or of b (ref 1) with its index, or an edge pair.
+typedef struct sat_axis {
+    double n[3], depth;
+    int ref;            // 0: a's face, 1: b's face, 2: edges
+    unsigned face;
+    unsigned ea, eb;    // the edges (indices into a's and b's edge lists)
+} sat_axis;
+
+// The edge pair axes sat found (for clearance), unless there were more.
+enum { MAX_EDGE_AXES = 128 };
+typedef struct edge_axes {
+    double m[MAX_EDGE_AXES][3];
+    int n, overflow;
+} edge_axes;
+
+// 0 if a separating axis parts a and b; else the face axis and the edge
+// axis of least depth (edge->depth is infinite if no edge pair counts),
+// and the edge pair axes into found.
+static int sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axes *found)
+{
+    found->n = found->overflow = 0;
+    face->depth = edge->depth = INFINITY;
+    for (int side = 0; side < 2; side++) {
+        const dx_hull *h = side ? b : a;
+        for (unsigned f = 0; f < h->nplanes; f++) {
+            double n[3], d;
+            dx_hull_plane(h, f, n, &d);
+            if (!side)   // a's face pushes a back along -n
+                for (int i = 0; i < 3; i++) n[i] = -n[i];
+            double s = depth_along(a, b, n);
+            if (s < 0) return 0;
+            if (s < face->depth) {
+                face->depth = s;
+                memcpy(face->n, n, sizeof face->n);
+                face->ref = side;
+                face->face = f;
+            }
+        }
+    }
+    pose_edges(a);
+    pose_edges(b);
+    for (unsigned i = 0; i < a->nedges; i++) {
+        for (unsigned j = 0; j < b->nedges; j++) {
+            double n[3];
+            if (!edge_axis(a, i, b, j, n)) continue;
+            if (found->n < MAX_EDGE_AXES)
+                memcpy(found->m[found->n++], n, sizeof n);
+            else
+                found->overflow = 1;
+            for (int sg = 0; sg < 2; sg++) {
+                if (sg)
+                    for (int k = 0; k < 3; k++) n[k] = -n[k];
+                double s = depth_along(a, b, n);
+                if (s < 0) return 0;
+                if (s < edge->depth) {
+                    edge->depth = s;
+                    memcpy(edge->n, n, sizeof edge->n);
+                    edge->ref = 2;
+                    edge->ea = i;
+                    edge->eb = j;
+                }
+            }
+        }
+    }
+    return 1;
+}
+
+// What the edge pair axis m (either sign) allows a to move along n
+// before parting from b: s(m) / (m . n) with m turned to face n; infinite
+// if m is square to n.
+static double edge_clearance(const dx_hull *a, const dx_hull *b, const double n[3],
+                             const double m_in[3])
+{
+    double m[3] = { m_in[0], m_in[1], m_in[2] }, mn = dot3(m, n);
+    if (mn < 0) {
+        for (int k = 0; k < 3; k++) m[k] = -m[k];
+        mn = -mn;
+    }
+    return mn > 0 ? depth_along(a, b, m) / mn : INFINITY;
+}
+
+// The exact translation of a along the unit n that parts it from b (as
+// box_clearance in collide_box.c): a moved by t n is clear of b along a
+// candidate axis m once t (m . n) > s(m); the least such t over the axes
+// facing n. The candidates hold every face normal of the Minkowski
+// difference, so this is exact; it is at most s(n).
+static double clearance(const dx_hull *a, const dx_hull *b, const double n[3],
+                        const edge_axes *found)
+{
+    double best = depth_along(a, b, n);
+    for (int side = 0; side < 2; side++) {
+        const dx_hull *h = side ? b : a;
+        for (unsigned f = 0; f < h->nplanes; f++) {
+            double m[3], d;
+            dx_hull_plane(h, f, m, &d);
+            if (!side)
+                for (int i = 0; i < 3; i++) m[i] = -m[i];
+            double mn = dot3(m, n);
+            if (mn > 0) best = fmin(best, depth_along(a, b, m) / mn);
+        }
+    }
+    for (int k = 0; !found->overflow && k < found->n; k++)
+        best = fmin(best, edge_clearance(a, b, n, found->m[k]));
+    for (unsigned i = 0; found->overflow && i < a->nedges; i++) {
+        for (unsigned j = 0; j < b->nedges; j++) {
+            double m[3];
+            if (edge_axis(a, i, b, j, m)) best = fmin(best, edge_clearance(a, b, n, m));
+        }
+    }
+    return best;
+}
+
+// ---- contact points --------------------------------------------------------------
+
+typedef struct hull_point {
+    double p[3], depth;
+} hull_point;
+
+// pos: the middle of the part of the line q + t n inside both hulls; 0 if
+// there is none.
+static int middle_inside(const dx_hull *a, const dx_hull *b, const double q[3], const double n[3],
+                         double t0, double t1, double pos[3])
+{
+    double tol = DX_HULL_EPS * (a->size + b->size);
+    if (!dx_hull_clip_line(a, q, n, tol, &t0, &t1) || !dx_hull_clip_line(b, q, n, tol, &t0, &t1))
+        return 0;
+    double t = (t0 + t1) / 2;
+    for (int i = 0; i < 3; i++) pos[i] = q[i] + t * n[i];
+    return 1;
+}
+
+// Keeps the part of poly (n points) with s . x <= off in out; the new count.
+static int clip_plane(const hull_point *poly, int n, const double s[3], double off,
+                      hull_point *out)
+{
+    int m = 0;
+    for (int i = 0; i < n && m < MAXP; i++) {
+        const hull_point *p = &poly[i], *q = &poly[(i + 1) % n];
+        double dp = dot3(s, p->p) - off, dq = dot3(s, q->p) - off;
+        if (dp <= 0) out[m++] = *p;
+        if (m < MAXP && ((dp < 0 && dq > 0) || (dp > 0 && dq < 0))) {
+            double f = dp / (dp - dq);
+            for (int k = 0; k < 3; k++) out[m].p[k] = p->p[k] + f * (q->p[k] - p->p[k]);
+            m++;
+        }
+    }
+    return m;
+}
+
+// The index of the point of pts (n) furthest, across the normal nf, from
+// the nearest of the first k.
+static int furthest_from_taken(const hull_point *pts, int n, int k, const double nf[3])
+{
+    int best = k;
+    double best_d = -1;
+    for (int i = k; i < n; i++) {
+        double nearest = INFINITY;
+        for (int j = 0; j < k; j++) {
+            double d[3];
+            for (int q = 0; q < 3; q++) d[q] = pts[i].p[q] - pts[j].p[q];
+            double along = dot3(d, nf), d2 = dot3(d, d) - along * along;
+            if (d2 < nearest) nearest = d2;
+        }
+        if (nearest > best_d) {
+            best_d = nearest;
+            best = i;
+        }
+    }
+    return best;
+}
+
+// The face contacts: the reference hull r's face f (outward unit nf at
+// offset df, facing the incident hull i). Writes the points, deepest first,
+// at most max (spread), into pts; returns the count (0 if none was found).
+static int face_points(const dx_hull *r, unsigned f, const double nf[3], double df,
+                       const dx_hull *inc, int max, hull_point *pts)
+{
+    // The incident face: the one most against nf.
+    unsigned best = 0, count;
+    double lowest = INFINITY;
+    for (unsigned g = 0; g < inc->nplanes; g++) {
+        double n[3], d;
+        dx_hull_plane(inc, g, n, &d);
+        double c = dot3(n, nf);
+        if (c < lowest) {
+            lowest = c;
+            best = g;
+        }
+    }
+    const unsigned *idx = dx_hull_polygon(inc, best, &count);
+    if (count > MAXP_INCIDENT) return 0;
+    hull_point buf[2][MAXP];
+    int cur = 0, n = (int)count;
+    for (int k = 0; k < n; k++) dx_hull_vertex(inc, idx[k], buf[0][k].p);
+    // The side planes of the reference polygon, oriented away from its centre.
+    const unsigned *ref = dx_hull_polygon(r, f, &count);
+    double centre[3] = { 0, 0, 0 };
+    for (unsigned k = 0; k < count; k++) {
+        double v[3];
+        dx_hull_vertex(r, ref[k], v);
+        for (int q = 0; q < 3; q++) centre[q] += v[q] / count;
+    }
+    for (unsigned k = 0; k < count && n > 0; k++) {
+        double v0[3], v1[3], e[3], s[3];
+        dx_hull_vertex(r, ref[k], v0);
+        dx_hull_vertex(r, ref[(k + 1) % count], v1);
+        for (int q = 0; q < 3; q++) e[q] = v1[q] - v0[q];
+        cross3(e, nf, s);
+        double off = dot3(s, v0);
+        if (dot3(s, centre) > off) {
+            for (int q = 0; q < 3; q++) s[q] = -s[q];
+            off = -off;
+        }
+        n = clip_plane(buf[cur], n, s, off, buf[cur ^ 1]);
+        cur ^= 1;
+    }
+    // Points below the reference face, lying inside both hulls along nf.
+    int kept = 0, deepest = 0;
+    for (int k = 0; k < n; k++) {
+        hull_point *p = &buf[cur][k];
+        double depth = df - dot3(nf, p->p);
+        if (depth < 0) continue;
+        hull_point q;
+        if (!middle_inside(r, inc, p->p, nf, -INFINITY, INFINITY, q.p)) continue;
+        q.depth = depth;
+        if (kept == 0 || q.depth > pts[deepest].depth) deepest = kept;
+        pts[kept++] = q;
+    }
+    if (kept == 0) return 0;
+    hull_point t = pts[0];
+    pts[0] = pts[deepest];
+    pts[deepest] = t;
+    if (kept > max) {
+        for (int k = 1; k < max; k++) {
+            int far = furthest_from_taken(pts, kept, k, nf);
+            t = pts[k];
+            pts[k] = pts[far];
+            pts[far] = t;
+        }
+        kept = max;
+    }
+    return kept;
+}
+
+// The edge of h through its point v parallel to h's edge e (the copy of
+// that edge on the side facing the other hull), or e itself: its ends.
+static void supporting_edge(const dx_hull *h, unsigned v, const dxHullEdge *e, double p0[3],
+                            double p1[3])
+{
+    double u[3];
+    dx_hull_vertex(h, e->a, p0);
+    dx_hull_vertex(h, e->b, p1);
+    for (int i = 0; i < 3; i++) u[i] = p1[i] - p0[i];
+    double lu = sqrt(dot3(u, u)), best = 0;
+    for (unsigned k = 0; k < h->nedges; k++) {
+        const dxHullEdge *f = &h->edges[k];
+        if (f->a != v && f->b != v) continue;
+        double q0[3], q1[3], d[3];
+        dx_hull_vertex(h, f->a, q0);
+        dx_hull_vertex(h, f->b, q1);
+        for (int i = 0; i < 3; i++) d[i] = q1[i] - q0[i];
+        double c = fabs(dot3(d, u)) / (sqrt(dot3(d, d)) * lu);
+        if (c > best && c > 1 - DX_HULL_EPS) {
+            best = c;
+            memcpy(p0, q0, sizeof q0);
+            memcpy(p1, q1, sizeof q1);
+        }
+    }
+}
+
+// The edge case: one point between the closest points of a's and b's
+// supporting edges (the lines' closest parameters clamped to each edge),
+// in the middle of the part of the segment between them inside both hulls.
+static void edge_point(const dx_hull *a, const dx_hull *b, const sat_axis *ax, double pos[3])
+{
+    unsigned va, vb;
+    double m[3] = { -ax->n[0], -ax->n[1], -ax->n[2] };
+    dx_hull_extent(a, m, &va);
+    dx_hull_extent(b, ax->n, &vb);
+    double a0[3], a1[3], b0[3], b1[3], u[3], v[3], w[3];
+    supporting_edge(a, va, &a->edges[ax->ea], a0, a1);
+    supporting_edge(b, vb, &b->edges[ax->eb], b0, b1);
+    for (int i = 0; i < 3; i++) {
+        u[i] = a1[i] - a0[i];
+        v[i] = b1[i] - b0[i];
+    }
+    double lu = sqrt(dot3(u, u)), lv = sqrt(dot3(v, v));
+    double iu = lu > 0 ? 1 / lu : 0, iv = lv > 0 ? 1 / lv : 0;   // 0: a point edge
+    double ca[3], cb[3];   // the edges' middles
+    for (int i = 0; i < 3; i++) {
+        u[i] *= iu;
+        v[i] *= iv;
+        ca[i] = (a0[i] + a1[i]) / 2;
+        cb[i] = (b0[i] + b1[i]) / 2;
+        w[i] = ca[i] - cb[i];
+    }
+    double bb = dot3(u, v), d = dot3(u, w), e = dot3(v, w), denom = 1 - bb * bb;
+    double s = 0, t = 0;   // parallel supporting edges: their middles
+    if (denom > DX_HULL_EPS) {
+        s = (bb * e - d) / denom;
+        t = (e - bb * d) / denom;
+    }
+    s = s < -lu / 2 ? -lu / 2 : s > lu / 2 ? lu / 2 : s;
+    t = t < -lv / 2 ? -lv / 2 : t > lv / 2 ? lv / 2 : t;
+    double qb[3], dir[3];
+    for (int i = 0; i < 3; i++) {
+        qb[i] = cb[i] + t * v[i];
+        dir[i] = ca[i] + s * u[i] - qb[i];
+    }
+    if (middle_inside(a, b, qb, dir, 0, 1, pos)) return;
+    for (int i = 0; i < 3; i++) pos[i] = qb[i] + dir[i] / 2;
+}
+
+// One contact where no polygon point was found: between the deepest points.
+static void deepest_pair_point(const dx_hull *a, const dx_hull *b, const double n[3],
+                               double pos[3])
+{
+    unsigned va, vb;
+    double m[3] = { -n[0], -n[1], -n[2] }, pa[3], pb[3];
+    dx_hull_extent(a, m, &va);
+    dx_hull_extent(b, n, &vb);
+    dx_hull_vertex(a, va, pa);
+    dx_hull_vertex(b, vb, pb);
+    for (int i = 0; i < 3; i++) pos[i] = (pa[i] + pb[i]) / 2;
+}
+
+static void put(dContactGeom *out, int i, int skip, const double p[3], const double n[3],
+                double depth, dxGeom *o1, dxGeom *o2)
+{
+    dReal pos[3], nn[3];
+    for (int k = 0; k < 3; k++) {
+        pos[k] = (dReal)p[k];
+        nn[k] = (dReal)n[k];
+    }
+    dx_put_contact(out, i, skip, pos, nn, (dReal)depth, o1, o2);
+}
+
+int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
+                 dContactGeom *out, int skip)
+{
+    sat_axis face, edge;
+    edge_axes found;
+    if (!sat(a, b, &face, &edge, &found)) return 0;
+    int max = dx_max_contacts(flags);
+    if (edge.depth * EDGE_PREFERENCE < face.depth) {
+        double pos[3];
+        edge_point(a, b, &edge, pos);
+        put(out, 0, skip, pos, edge.n, edge.depth, o1, o2);
+        return 1;
+    }
+    const dx_hull *r = face.ref ? b : a, *inc = face.ref ? a : b;
+    double nf[3], df;
+    dx_hull_plane(r, face.face, nf, &df);
+    hull_point pts[MAXP];
+    int n = face_points(r, face.face, nf, df, inc, max, pts);
+    double clear = clearance(a, b, face.n, &found);
+    if (n == 0) {
+        double pos[3];
+        deepest_pair_point(a, b, face.n, pos);
+        put(out, 0, skip, pos, face.n, clear, o1, o2);
+        return 1;
+    }
+    for (int k = 0; k < n; k++) {
+        double depth = k == 0 && pts[0].depth < clear ? clear : pts[k].depth;
+        put(out, k, skip, pts[k].p, face.n, depth, o1, o2);
+    }
+    return n;
+}

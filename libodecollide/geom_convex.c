@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// geom_convex.c -- the convex hull class of ODE 0.16: creation and
+// dGeomSetConvex with their checks, and the bounding box of the points as
+// posed. The arrays belong to the caller (as in ODE): they are not copied.
+// The geom owns only the edge list it derives from the polygons (each edge
+// with its two faces), which the colliders use to skip edge pairs.
+
+#include "geom_convex.h"
+
+#include <ode/memory.h>
+
+// 1 if the hull data is usable by the colliders; else reports what is
+// wrong (naming the calling function) and returns 0.
+static int convex_valid(const char *fn, const dReal *planes, unsigned planecount,
+                        const dReal *points, unsigned pointcount, const unsigned *polygons)
+{
+#define CONVEX_CHECK(cond, ...) \
+    do { \
+        if (!(cond)) { \
+            dxReportBadArgument(fn, __VA_ARGS__); \
+            return 0; \
+        } \
+    } while (0)
+    CONVEX_CHECK(planecount > 0, "planecount is 0: a convex needs planes");
+    CONVEX_CHECK(pointcount > 0, "pointcount is 0: a convex needs points");
+    CONVEX_CHECK(planes != NULL, "planes is NULL with planecount %u", planecount);
+    CONVEX_CHECK(points != NULL, "points is NULL with pointcount %u", pointcount);
+    CONVEX_CHECK(polygons != NULL, "polygons is NULL with planecount %u", planecount);
+    for (unsigned i = 0; i < 3 * pointcount; i++)
+        CONVEX_CHECK(dxIsFinite(points[i]), "points[%u] is not finite", i);
+    const unsigned *poly = polygons;
+    for (unsigned f = 0; f < planecount; f++) {
+        const dReal *p = planes + 4 * f;
+        for (int k = 0; k < 4; k++)
+            CONVEX_CHECK(dxIsFinite(p[k]), "planes[%u] is not finite", 4 * f + (unsigned)k);
+        CONVEX_CHECK(p[0] * p[0] + p[1] * p[1] + p[2] * p[2] > 0,
+                     "plane %u has a zero normal", f);
+        unsigned count = *poly++;
+        CONVEX_CHECK(count >= 3, "polygon %u has %u points (at least 3 needed)", f, count);
+        for (unsigned k = 0; k < count; k++, poly++)
+            CONVEX_CHECK(*poly < pointcount, "polygon %u uses point %u, past pointcount %u", f,
+                         *poly, pointcount);
+    }
+    return 1;
+#undef CONVEX_CHECK
+}
+
+static void convex_aabb(dxGeom *g)
+{
+    const dxConvex *c = (const dxConvex *)g;
+    for (int i = 0; i < 3; i++) {
+        g->aabb[2 * i] = dInfinity;
+        g->aabb[2 * i + 1] = -dInfinity;
+    }
+    for (unsigned v = 0; v < c->pointcount; v++) {
+        const dReal *p = c->points + 3 * v;
+        for (int i = 0; i < 3; i++) {
+            dReal x = g->pos[i] + g->R[4 * i] * p[0] + g->R[4 * i + 1] * p[1] +
+                      g->R[4 * i + 2] * p[2];
+            if (x < g->aabb[2 * i]) g->aabb[2 * i] = x;
+            if (x > g->aabb[2 * i + 1]) g->aabb[2 * i + 1] = x;
+        }
+    }
+}
+
+// The edges of the polygons, each once, with the faces on either side
+// (room for *cap). Made once per dGeomSetConvex.
+static dxHullEdge *convex_edges(const unsigned *polygons, unsigned planecount, unsigned *count,
+                                size_t *cap)
+{
+    size_t sides = 0;
+    const unsigned *poly = polygons;
+    for (unsigned f = 0; f < planecount; f++) {
+        sides += *poly;
+        poly += 1 + *poly;
+    }
+    dxHullEdge *e = dAlloc(sizeof *e * sides);
+    *cap = sides;
+    unsigned n = 0;
+    poly = polygons;
+    for (unsigned f = 0; f < planecount; f++, poly += 1 + *poly) {
+        for (unsigned k = 0; k < poly[0]; k++) {
+            unsigned i = poly[1 + k], j = poly[1 + (k + 1) % poly[0]];
+            unsigned a = i < j ? i : j, b = i < j ? j : i, m = 0;
+            while (m < n && !(e[m].a == a && e[m].b == b)) m++;
+            if (m < n) {   // the same edge from its other face
+                if (e[m].f2 == e[m].f1 && e[m].f1 != f) e[m].f2 = f;
+                continue;
+            }
+            e[n++] = (dxHullEdge){ a, b, f, f };
+        }
+    }
+    *count = n;
+    return e;
+}
+
+static void free_edges(dxConvex *c)
+{
+    if (c->edges) dFree(c->edges, sizeof *c->edges * c->edgecap);
+    c->edges = NULL;
+}
+
+static void convex_destroy(dxGeom *g)
+{
+    free_edges((dxConvex *)g);
+}
+
+const dxGeomClassOps dx_convex_ops = { dConvexClass, "convex", convex_aabb, convex_destroy };
+
+static void convex_set(dxConvex *c, const dReal *planes, unsigned planecount,
+                       const dReal *points, unsigned pointcount, const unsigned *polygons)
+{
+    free_edges(c);
+    c->planes = planes;
+    c->planecount = planecount;
+    c->points = points;
+    c->pointcount = pointcount;
+    c->polygons = polygons;
+    c->edges = convex_edges(polygons, planecount, &c->edgecount, &c->edgecap);
+}
+
+dGeomID dCreateConvex(dSpaceID space, const dReal *planes, unsigned int planecount,
+                      const dReal *points, unsigned int pointcount, const unsigned int *polygons)
+{
+    if (!convex_valid(__func__, planes, planecount, points, pointcount, polygons)) return NULL;
+    dxConvex *c = (dxConvex *)dxGeomCreate(sizeof *c, &dx_convex_ops, DX_GEOM_PLACEABLE, space);
+    convex_set(c, planes, planecount, points, pointcount, polygons);
+    return &c->g;
+}
+
+void dGeomSetConvex(dGeomID g, const dReal *planes, unsigned int planecount,
+                    const dReal *points, unsigned int pointcount, const unsigned int *polygons)
+{
+    DX_CHECK_GEOM(g, return);
+    DX_CHECK_ARG(g->ops->cls == dConvexClass, return, "geom is a %s, not a convex",
+                 g->ops->name);
+    if (!convex_valid(__func__, planes, planecount, points, pointcount, polygons)) return;
+    convex_set((dxConvex *)g, planes, planecount, points, pointcount, polygons);
+    dxGeomShapeChanged(g);
+}

@@ -1,0 +1,781 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// test_convex.c -- the convex hull geom (ODE 0.16's dCreateConvex) through
+// dCollide. A convex built as a box must behave as that box: on seeded
+// random poses its contacts with a box, a plane and a sphere equal the box's
+// own (box-box, box-plane, sphere-box: same count, each contact within
+// 1e-9), its depths and normals with a capsule and a cylinder agree with
+// the box's, and rays hit it where they hit the box; both argument orders.
+// A convex cube rests on a plane under dWorldStep and dWorldQuickStep at the
+// box's height with four contacts, and lies on a box with the face polygon.
+// A non-box hull (an octahedron) gets the analytic sphere depth. Bad input
+// is a named error, never a crash.
+
+#include "collide_check.h"
+#include "convex_depth.h"
+#include "test.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+enum { MAXC = 16 };
+
+#define EPS TOL(1e-9, 2e-4)
+
+// ---- hull data --------------------------------------------------------------------
+
+// A box as ODE's convex arrays: corners by bits (x, y, z), faces -x +x -y
+// +y -z +z wound counterclockwise seen from outside.
+typedef struct box_hull {
+    dReal planes[24], points[24];
+    unsigned polygons[30];
+} box_hull;
+
+static void make_box_hull(box_hull *b, dReal lx, dReal ly, dReal lz)
+{
+    const dReal h[3] = { lx / 2, ly / 2, lz / 2 };
+    static const unsigned faces[6][4] = { { 0, 4, 6, 2 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
+                                          { 2, 6, 7, 3 }, { 0, 2, 3, 1 }, { 4, 5, 7, 6 } };
+    for (unsigned v = 0; v < 8; v++)
+        for (int i = 0; i < 3; i++) b->points[3 * v + i] = (v >> i & 1) ? h[i] : -h[i];
+    for (int f = 0; f < 6; f++) {
+        for (int i = 0; i < 3; i++) b->planes[4 * f + i] = i == f / 2 ? (f & 1 ? 1 : -1) : 0;
+        b->planes[4 * f + 3] = h[f / 2];
+        b->polygons[5 * f] = 4;
+        for (int k = 0; k < 4; k++) b->polygons[5 * f + 1 + k] = faces[f][k];
+    }
+}
+
+// ---- poses and comparisons ----------------------------------------------------------
+
+static void random_rotation(dMatrix3 R)
+{
+    dReal q[4];
+    double n = 0;
+    do {
+        n = 0;
+        for (int i = 0; i < 4; i++) {
+            q[i] = (dReal)rnd(-1, 1);
+            n += (double)q[i] * q[i];
+        }
+    } while (n < 0.1 || n > 1);
+    for (int i = 0; i < 4; i++) q[i] = (dReal)(q[i] / sqrt(n));
+    dRfromQ(R, q);
+}
+
+static void place(dGeomID g, const dReal *p, const dMatrix3 R)
+{
+    dGeomSetPosition(g, p[0], p[1], p[2]);
+    dGeomSetRotation(g, R);
+}
+
+// Contact a matches b: position, normal, depth within tol, and g1/g2 as given.
+static int same_contact(const dContactGeom *a, const dContactGeom *b, double tol)
+{
+    for (int i = 0; i < 3; i++)
+        if (fabs(a->pos[i] - b->pos[i]) > tol || fabs(a->normal[i] - b->normal[i]) > tol)
+            return 0;
+    return fabs(a->depth - b->depth) <= tol;
+}
+
+// Every contact of c (n) matches one of ref (m = n), each used once.
+static inline int same_sets(const dContactGeom *c, int n, const dContactGeom *ref, int m, double tol)
+{
+    if (n != m) return 0;
+    int used[MAXC] = { 0 };
+    for (int i = 0; i < n; i++) {
+        int found = 0;
+        for (int j = 0; j < m && !found; j++)
+            if (!used[j] && same_contact(&c[i], &ref[j], tol)) found = used[j] = 1;
+        if (!found) return 0;
+    }
+    return 1;
+}
+
+// The deepest contacts match. In single precision box-box's float
+// clipping of deep overlaps can keep or lose a clipped corner that the
+// double computation of the hull drops or keeps: only the deepest is
+// compared there (double compares the whole sets).
+static inline int same_deepest(const dContactGeom *c, int n, const dContactGeom *ref, int m,
+                               double tol)
+{
+    return n > 0 && m > 0 && same_contact(&c[deepest(c, n)], &ref[deepest(ref, m)], tol);
+}
+
+#ifdef dSINGLE
+#define SAME_SETS same_deepest
+#else
+#define SAME_SETS same_sets
+#endif
+
+// g1 / g2 of every contact are (a, b).
+static int names(const dContactGeom *c, int n, dGeomID a, dGeomID b)
+{
+    for (int i = 0; i < n; i++)
+        if (c[i].g1 != a || c[i].g2 != b) return 0;
+    return 1;
+}
+
+// ---- the convex cube as a box ----------------------------------------------------
+
+// The convex (made from the box's sides) and the box both at (p, R), each
+// collided with `other` in both orders: the same contacts (as sets), or
+// only the same deepest depth and normal (deep_only, with tol). Counts the
+// poses where they touch.
+typedef struct pair_stats {
+    int touching, checked;
+} pair_stats;
+
+static int compare_pair(dGeomID hull, dGeomID box, dGeomID other, int max, int deep_only,
+                        double tol, pair_stats *st)
+{
+    dContactGeom ch[MAXC], cb[MAXC];
+    for (int order = 0; order < 2; order++) {
+        int nh = order ? dCollide(other, hull, max, ch, sizeof ch[0])
+                       : dCollide(hull, other, max, ch, sizeof ch[0]);
+        int nb = order ? dCollide(other, box, max, cb, sizeof cb[0])
+                       : dCollide(box, other, max, cb, sizeof cb[0]);
+        if ((nh > 0) != (nb > 0)) {
+            // Only a grazing pose may disagree.
+            const dContactGeom *k = nh ? &ch[deepest(ch, nh)] : &cb[deepest(cb, nb)];
+            if (k->depth > tol) {
+                fprintf(stderr, "# order %d: convex %d contacts, box %d (depth %g)\n", order,
+                        nh, nb, (double)k->depth);
+                return 1;
+            }
+            continue;
+        }
+        if (nh == 0) continue;
+        st->touching++;
+        CHECK(nh <= max);
+        CHECK(order ? names(ch, nh, other, hull) : names(ch, nh, hull, other));
+        if (!deep_only) {
+            if (!SAME_SETS(ch, nh, cb, nb, tol)) {
+                fprintf(stderr, "# order %d: sets differ (%d vs %d)\n", order, nh, nb);
+                for (int i = 0; i < nh || i < nb; i++)
+                    fprintf(stderr, "#  %s %s\n", i < nh ? "h" : " ", i < nb ? "b" : " ");
+                for (int i = 0; i < nh; i++)
+                    fprintf(stderr, "#  h pos %.12g %.12g %.12g n %.12g %.12g %.12g d %.12g\n",
+                            (double)ch[i].pos[0], (double)ch[i].pos[1], (double)ch[i].pos[2],
+                            (double)ch[i].normal[0], (double)ch[i].normal[1],
+                            (double)ch[i].normal[2], (double)ch[i].depth);
+                for (int i = 0; i < nb; i++)
+                    fprintf(stderr, "#  b pos %.12g %.12g %.12g n %.12g %.12g %.12g d %.12g\n",
+                            (double)cb[i].pos[0], (double)cb[i].pos[1], (double)cb[i].pos[2],
+                            (double)cb[i].normal[0], (double)cb[i].normal[1],
+                            (double)cb[i].normal[2], (double)cb[i].depth);
+                return 1;
+            }
+        } else {
+            // The deepest depths agree, and each normal is a direction
+            // along which the pair parts by that depth (the box's support
+            // functions): near-ties between directions make the normals
+            // themselves differ.
+            const dContactGeom *kh = &ch[deepest(ch, nh)], *kb = &cb[deepest(cb, nb)];
+            CHECK_NEAR(kh->depth, kb->depth, tol);
+            double n[3] = { kh->normal[0], kh->normal[1], kh->normal[2] };
+            double along = order ? convex_depth_along(other, box, n)
+                                 : convex_depth_along(box, other, n);
+            CHECK_NEAR(along, kh->depth, tol);
+        }
+        st->checked++;
+    }
+    return 0;
+}
+
+// `poses` random poses of a convex box and a box of the same random sides
+// against `other` (posed near them by pose_other); then the statistics.
+static int random_against(dGeomID other, int max, int deep_only, double tol, int poses,
+                          unsigned long long seed, int placeable_other, pair_stats *st)
+{
+    rng_state = seed;
+    box_hull bh;
+    dReal s[3] = { (dReal)rnd(0.3, 2), (dReal)rnd(0.3, 2), (dReal)rnd(0.3, 2) };
+    make_box_hull(&bh, s[0], s[1], s[2]);
+    dGeomID hull = dCreateConvex(0, bh.planes, 6, bh.points, 8, bh.polygons);
+    dGeomID box = dCreateBox(0, s[0], s[1], s[2]);
+    CHECK(hull && dGeomGetClass(hull) == dConvexClass);
+    for (int k = 0; k < poses; k++) {
+        dMatrix3 R;
+        dReal p[3];
+        random_rotation(R);
+        for (int i = 0; i < 3; i++) p[i] = (dReal)rnd(-1, 1);
+        place(hull, p, R);
+        place(box, p, R);
+        if (placeable_other) {
+            dMatrix3 Ro;
+            dReal po[3];
+            random_rotation(Ro);
+            for (int i = 0; i < 3; i++) po[i] = (dReal)rnd(-1, 1);
+            place(other, po, Ro);
+        }
+        if (compare_pair(hull, box, other, max, deep_only, tol, st)) {
+            fprintf(stderr, "# pose %d\n", k);
+            dGeomDestroy(hull);
+            dGeomDestroy(box);
+            return 1;
+        }
+    }
+    dGeomDestroy(hull);
+    dGeomDestroy(box);
+    return 0;
+}
+
+static int test_box_equals_box_box(void)
+{
+    pair_stats st = { 0, 0 };
+    for (int run = 0; run < 4; run++) {
+        rng_state = 100 + (unsigned long long)run;
+        dGeomID other = dCreateBox(0, (dReal)rnd(0.3, 2), (dReal)rnd(0.3, 2), (dReal)rnd(0.3, 2));
+        int bad = random_against(other, MAXC, 0, EPS, 250, 7 + (unsigned long long)run, 1, &st);
+        dGeomDestroy(other);
+        CHECK(!bad);
+    }
+    printf("# convex-box: %d touching of %d compared, all as box-box\n", st.touching, st.checked);
+    CHECK(st.touching > 300);
+    return 0;
+}
+
+static int test_box_equals_box_plane(void)
+{
+    pair_stats st = { 0, 0 };
+    dGeomID plane = dCreatePlane(0, (dReal)0.3, (dReal)0.2, 1, (dReal)0.1);
+    // Box-plane keeps at most 4 corners.
+    CHECK(!random_against(plane, 4, 0, EPS, 400, 21, 0, &st));
+    dGeomDestroy(plane);
+    CHECK(st.touching > 200);
+    return 0;
+}
+
+static int test_box_equals_sphere_box(void)
+{
+    pair_stats st = { 0, 0 };
+    dGeomID s = dCreateSphere(0, (dReal)0.6);
+    CHECK(!random_against(s, 1, 0, EPS, 400, 31, 1, &st));
+    dGeomDestroy(s);
+    CHECK(st.touching > 200);
+    return 0;
+}
+
+static int test_box_like_capsule_box(void)
+{
+    pair_stats st = { 0, 0 };
+    dGeomID c = dCreateCapsule(0, (dReal)0.3, (dReal)0.8);
+    CHECK(!random_against(c, MAXC, 1, TOL(1e-6, 1e-3), 400, 41, 1, &st));
+    dGeomDestroy(c);
+    CHECK(st.touching > 200);
+    return 0;
+}
+
+static int test_box_like_cylinder_box(void)
+{
+    pair_stats st = { 0, 0 };
+    dGeomID c = dCreateCylinder(0, (dReal)0.4, (dReal)0.9);
+    CHECK(!random_against(c, MAXC, 1, TOL(1e-3, 2e-3), 300, 51, 1, &st));
+    dGeomDestroy(c);
+    CHECK(st.touching > 150);
+    return 0;
+}
+
+// Convex against convex: two convex boxes as the two boxes.
+static int test_convex_convex_equals_box_box(void)
+{
+    rng_state = 61;
+    int touching = 0;
+    for (int k = 0; k < 600; k++) {
+        box_hull ha, hb;
+        dReal sa[3], sb[3];
+        for (int i = 0; i < 3; i++) {
+            sa[i] = (dReal)rnd(0.3, 2);
+            sb[i] = (dReal)rnd(0.3, 2);
+        }
+        make_box_hull(&ha, sa[0], sa[1], sa[2]);
+        make_box_hull(&hb, sb[0], sb[1], sb[2]);
+        dGeomID a = dCreateConvex(0, ha.planes, 6, ha.points, 8, ha.polygons);
+        dGeomID b = dCreateConvex(0, hb.planes, 6, hb.points, 8, hb.polygons);
+        dGeomID ba = dCreateBox(0, sa[0], sa[1], sa[2]), bb = dCreateBox(0, sb[0], sb[1], sb[2]);
+        dMatrix3 Ra, Rb;
+        dReal pa[3], pb[3];
+        random_rotation(Ra);
+        random_rotation(Rb);
+        for (int i = 0; i < 3; i++) {
+            pa[i] = (dReal)rnd(-1, 1);
+            pb[i] = (dReal)rnd(-1, 1);
+        }
+        place(a, pa, Ra);
+        place(ba, pa, Ra);
+        place(b, pb, Rb);
+        place(bb, pb, Rb);
+        dContactGeom c[MAXC], r[MAXC];
+        int n = dCollide(a, b, MAXC, c, sizeof c[0]), m = dCollide(ba, bb, MAXC, r, sizeof r[0]);
+        int ok = (n > 0) == (m > 0) || (n ? c[deepest(c, n)].depth : r[deepest(r, m)].depth) < EPS;
+        if (ok && n > 0 && m > 0) {
+            touching++;
+            ok = SAME_SETS(c, n, r, m, EPS) && names(c, n, a, b);
+        }
+        dGeomDestroy(a);
+        dGeomDestroy(b);
+        dGeomDestroy(ba);
+        dGeomDestroy(bb);
+        if (!ok) {
+            fprintf(stderr, "# pose %d: %d vs %d contacts\n", k, n, m);
+            for (int i = 0; i < n || i < m; i++)
+                fprintf(stderr, "#  %g %g %g %g | %g %g %g %g\n", i < n ? c[i].pos[0] : 0,
+                        i < n ? c[i].pos[1] : 0, i < n ? c[i].pos[2] : 0, i < n ? c[i].depth : 0,
+                        i < m ? r[i].pos[0] : 0, i < m ? r[i].pos[1] : 0, i < m ? r[i].pos[2] : 0,
+                        i < m ? r[i].depth : 0);
+        }
+        CHECK(ok);
+    }
+    CHECK(touching > 150);
+    return 0;
+}
+
+// Rays from random starts towards the box: the same hit as the box's.
+static int test_rays_as_box(void)
+{
+    rng_state = 71;
+    box_hull bh;
+    make_box_hull(&bh, 1, (dReal)0.6, (dReal)1.4);
+    dGeomID hull = dCreateConvex(0, bh.planes, 6, bh.points, 8, bh.polygons);
+    dGeomID box = dCreateBox(0, 1, (dReal)0.6, (dReal)1.4);
+    dGeomID ray = dCreateRay(0, 3);
+    int hits = 0, inside = 0;
+    for (int k = 0; k < 500; k++) {
+        dMatrix3 R;
+        dReal p[3] = { (dReal)rnd(-.2, .2), (dReal)rnd(-.2, .2), (dReal)rnd(-.2, .2) };
+        random_rotation(R);
+        place(hull, p, R);
+        place(box, p, R);
+        dReal s[3], d[3];
+        for (int i = 0; i < 3; i++) {
+            s[i] = (dReal)rnd(-1.5, 1.5);
+            d[i] = (dReal)rnd(-1, 1) - s[i] * (dReal)0.5;
+        }
+        dGeomRaySet(ray, s[0], s[1], s[2], d[0], d[1], d[2]);
+        for (int order = 0; order < 2; order++) {
+            dContactGeom c[2], r[2];
+            int n = order ? dCollide(hull, ray, 2, c, sizeof c[0]) : dCollide(ray, hull, 2, c, sizeof c[0]);
+            int m = order ? dCollide(box, ray, 2, r, sizeof r[0]) : dCollide(ray, box, 2, r, sizeof r[0]);
+            CHECK(n == m && n <= 1);
+            if (!n) continue;
+            hits += !order;
+            inside += !order && dGeomBoxPointDepth(box, s[0], s[1], s[2]) > 0;
+            CHECK(same_contact(&c[0], &r[0], EPS));
+            CHECK(order ? names(c, 1, hull, ray) : names(c, 1, ray, hull));
+        }
+    }
+    CHECK(hits > 100 && inside > 10);
+    dGeomDestroy(hull);
+    dGeomDestroy(box);
+    dGeomDestroy(ray);
+    return 0;
+}
+
+// ---- a hull that is not a box ----------------------------------------------------
+
+// The octahedron |x| + |y| + |z| <= 1: 6 points, 8 triangles.
+static dReal octa_points[18] = { 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1 };
+static dReal octa_planes[32];
+static unsigned octa_polygons[32];
+
+static dGeomID make_octahedron(void)
+{
+    for (int f = 0; f < 8; f++) {
+        dReal sx = f & 1 ? -1 : 1, sy = f & 2 ? -1 : 1, sz = f & 4 ? -1 : 1;
+        dReal k = 1 / dSqrt(3);
+        octa_planes[4 * f] = sx * k;
+        octa_planes[4 * f + 1] = sy * k;
+        octa_planes[4 * f + 2] = sz * k;
+        octa_planes[4 * f + 3] = k;
+        unsigned px = sx > 0 ? 0 : 1, py = sy > 0 ? 2 : 3, pz = sz > 0 ? 4 : 5;
+        octa_polygons[4 * f] = 3;
+        // Counterclockwise seen from outside: x, y, z when the signs' product is +.
+        int even = sx * sy * sz > 0;
+        octa_polygons[4 * f + 1] = px;
+        octa_polygons[4 * f + 2] = even ? py : pz;
+        octa_polygons[4 * f + 3] = even ? pz : py;
+    }
+    return dCreateConvex(0, octa_planes, 8, octa_points, 6, octa_polygons);
+}
+
+// A sphere over a face, over an edge, over a corner, and inside: the exact
+// depths and normals.
+static int test_octahedron_sphere(void)
+{
+    dGeomID o = make_octahedron(), s = dCreateSphere(0, (dReal)0.5);
+    CHECK(o);
+    dContactGeom c[4];
+    dReal k = 1 / dSqrt(3);
+    // Over the face (+,+,+) at distance 0.4 from it.
+    dReal f = k + (dReal)0.4;
+    dGeomSetPosition(s, f * k, f * k, f * k);
+    CHECK(dCollide(o, s, 4, c, sizeof c[0]) == 1);
+    CHECK_NEAR(c[0].depth, 0.1, EPS);
+    CHECK_VEC(c[0].normal, -k, -k, -k, EPS);
+    CHECK_VEC(c[0].pos, k * k, k * k, k * k, EPS);
+    // Over the corner (0, 0, 1) along z, 0.3 above it.
+    dGeomSetPosition(s, 0, 0, (dReal)1.3);
+    CHECK(dCollide(s, o, 4, c, sizeof c[0]) == 1);
+    CHECK_NEAR(c[0].depth, 0.2, EPS);
+    CHECK_VEC(c[0].normal, 0, 0, 1, EPS);
+    CHECK_VEC(c[0].pos, 0, 0, 1, EPS);
+    // Over the edge from (1,0,0) to (0,1,0), 0.45 out.
+    dReal e = (dReal)(0.5 + 0.45 / sqrt(2));
+    dGeomSetPosition(s, e, e, 0);
+    CHECK(dCollide(s, o, 4, c, sizeof c[0]) == 1);
+    CHECK_NEAR(c[0].depth, 0.05, EPS);
+    CHECK_VEC(c[0].normal, 1 / sqrt(2), 1 / sqrt(2), 0, EPS);
+    // Centre inside, 0.2 from the face (+,+,+): out through it.
+    f = k - (dReal)0.2;
+    dGeomSetPosition(s, f * k, f * k, f * k);
+    CHECK(dCollide(s, o, 4, c, sizeof c[0]) == 1);
+    CHECK_NEAR(c[0].depth, 0.7, EPS);
+    CHECK_VEC(c[0].normal, k, k, k, EPS);
+    // Apart.
+    dGeomSetPosition(s, 0, 0, (dReal)1.6);
+    CHECK(dCollide(s, o, 4, c, sizeof c[0]) == 0);
+    // The AABB is the points', posed.
+    dReal aabb[6];
+    dGeomSetPosition(o, 1, 2, 3);
+    dGeomGetAABB(o, aabb);
+    CHECK_NEAR(aabb[0], 0, EPS);
+    CHECK_NEAR(aabb[1], 2, EPS);
+    CHECK_NEAR(aabb[4], 2, EPS);
+    CHECK_NEAR(aabb[5], 4, EPS);
+    dGeomDestroy(o);
+    dGeomDestroy(s);
+    return 0;
+}
+
+// An octahedron on a plane, point down: one contact at the tip; a capsule
+// lying across its top corner: one contact; a capsule lying on a face: two.
+static int test_octahedron_capsule_plane(void)
+{
+    dGeomID o = make_octahedron(), p = dCreatePlane(0, 0, 0, 1, -(dReal)0.9);
+    dContactGeom c[MAXC];
+    CHECK(dCollide(o, p, MAXC, c, sizeof c[0]) == 1);
+    CHECK_NEAR(c[0].depth, 0.1, EPS);
+    CHECK_VEC(c[0].pos, 0, 0, -1, EPS);
+    CHECK_VEC(c[0].normal, 0, 0, 1, EPS);
+    dGeomID cap = dCreateCapsule(0, (dReal)0.2, 1);
+    set_rot(cap, 1, 0, 0, (dReal)(M_PI / 2));   // along y
+    dGeomSetPosition(cap, 0, 0, (dReal)1.15);
+    CHECK(dCollide(o, cap, MAXC, c, sizeof c[0]) == 1);
+    CHECK_NEAR(c[0].depth, 0.05, EPS);
+    CHECK_VEC(c[0].normal, 0, 0, -1, EPS);
+    // Lying on the face (+,+,+), along the face's direction (1,-1,0)/sqrt 2,
+    // 0.15 over it: both ends sink 0.05.
+    dReal k = 1 / dSqrt(3), f = k + (dReal)0.15, s2 = dSqrt(2);
+    dMatrix3 R;
+    dRFromZAxis(R, 1 / s2, -1 / s2, 0);
+    dGeomSetRotation(cap, R);
+    dGeomSetPosition(cap, f * k, f * k, f * k);
+    int n = dCollide(o, cap, MAXC, c, sizeof c[0]);
+    CHECK(n == 2);
+    for (int i = 0; i < 2; i++) {
+        CHECK_NEAR(c[i].depth, 0.05, EPS);
+        CHECK_VEC(c[i].normal, -k, -k, -k, EPS);
+        CHECK(point_depth(cap, c[i].pos) >= -EPS);
+    }
+    dGeomDestroy(o);
+    dGeomDestroy(p);
+    dGeomDestroy(cap);
+    return 0;
+}
+
+// A cylinder standing on a convex box's top: its rim points over the face
+// (a polygon around the axis), all 0.02 deep; lying: its two line ends.
+static int test_cylinder_on_convex(void)
+{
+    box_hull bh;
+    make_box_hull(&bh, 4, 4, 1);
+    dGeomID hull = dCreateConvex(0, bh.planes, 6, bh.points, 8, bh.polygons);
+    dGeomID cyl = dCreateCylinder(0, (dReal)0.5, 1);
+    dGeomSetPosition(cyl, (dReal)0.2, (dReal)0.1, (dReal)0.98);
+    dContactGeom c[MAXC];
+    int n = dCollide(cyl, hull, MAXC, c, sizeof c[0]);
+    CHECK(n >= 8);
+    double cx = 0, cy = 0;
+    for (int i = 0; i < n; i++) {
+        CHECK_NEAR(c[i].depth, 0.02, TOL(1e-7, 1e-4));
+        CHECK_VEC(c[i].normal, 0, 0, 1, TOL(1e-7, 1e-4));
+        CHECK(point_depth(cyl, c[i].pos) >= -TOL(1e-7, 1e-4));
+        cx += c[i].pos[0] / n;
+        cy += c[i].pos[1] / n;
+    }
+    CHECK_NEAR(cx, 0.2, 1e-6);
+    CHECK_NEAR(cy, 0.1, 1e-6);
+    set_rot(cyl, 1, 0, 0, (dReal)(M_PI / 2));
+    dGeomSetPosition(cyl, 0, 0, (dReal)0.99);
+    n = dCollide(hull, cyl, MAXC, c, sizeof c[0]);
+    CHECK(n == 2);
+    for (int i = 0; i < n; i++) {
+        CHECK_NEAR(c[i].depth, 0.01, TOL(1e-7, 1e-4));
+        CHECK_VEC(c[i].normal, 0, 0, -1, TOL(1e-7, 1e-4));
+    }
+    CHECK_NEAR(fabs(c[0].pos[1] - c[1].pos[1]), 1, TOL(1e-7, 1e-4));
+    dGeomDestroy(hull);
+    dGeomDestroy(cyl);
+    return 0;
+}
+
+// A prism over a regular 40-gon (120 edges: more than the colliders keep
+// posed), radius 1 to the corners, height 1.
+enum { SIDES = 40 };
+typedef struct prism {
+    dReal points[6 * SIDES], planes[4 * (SIDES + 2)];
+    unsigned polygons[2 * (SIDES + 1) + 5 * SIDES];
+} prism;
+
+static dGeomID make_prism(prism *p)
+{
+    unsigned *q = p->polygons;
+    for (int i = 0; i < SIDES; i++) {
+        double a = 2 * M_PI * i / SIDES, b = a + M_PI / SIDES;
+        for (int top = 0; top < 2; top++) {
+            dReal *v = p->points + 3 * (SIDES * top + i);
+            v[0] = (dReal)cos(a);
+            v[1] = (dReal)sin(a);
+            v[2] = top ? (dReal)0.5 : (dReal)-0.5;
+        }
+        dReal *pl = p->planes + 4 * (2 + i);
+        pl[0] = (dReal)cos(b);
+        pl[1] = (dReal)sin(b);
+        pl[2] = 0;
+        pl[3] = (dReal)cos(M_PI / SIDES);
+    }
+    const dReal caps[8] = { 0, 0, 1, (dReal)0.5, 0, 0, -1, (dReal)0.5 };
+    memcpy(p->planes, caps, sizeof caps);
+    *q++ = SIDES;
+    for (int i = 0; i < SIDES; i++) *q++ = (unsigned)(SIDES + i);
+    *q++ = SIDES;
+    for (int i = SIDES - 1; i >= 0; i--) *q++ = (unsigned)i;
+    for (int i = 0; i < SIDES; i++) {
+        unsigned j = (unsigned)(i + 1) % SIDES;
+        *q++ = 4;
+        *q++ = (unsigned)i;
+        *q++ = j;
+        *q++ = SIDES + j;
+        *q++ = (unsigned)(SIDES + i);
+    }
+    return dCreateConvex(0, p->planes, SIDES + 2, p->points, 2 * SIDES, p->polygons);
+}
+
+// The prism standing on a box and on another prism (turned about z): the
+// bottom polygon, MAXC of its corners spread, each as deep as it sinks.
+static int test_large_prism(void)
+{
+    static prism pa, pb;
+    dGeomID a = make_prism(&pa), b = make_prism(&pb), box = dCreateBox(0, 5, 5, 1);
+    CHECK(a && b);
+    dGeomSetPosition(a, (dReal)0.1, 0, (dReal)0.99);
+    dContactGeom c[MAXC];
+    int n = dCollide(a, box, MAXC, c, sizeof c[0]);
+    CHECK(n == MAXC);
+    for (int i = 0; i < n; i++) {
+        CHECK_NEAR(c[i].depth, 0.01, EPS);
+        CHECK_VEC(c[i].normal, 0, 0, 1, EPS);
+        double r = hypot(c[i].pos[0] - 0.1, c[i].pos[1]);
+        CHECK_NEAR(r, 1, 1e-3 + EPS);   // corners (pos within the 2.5 mm sagitta)
+    }
+    set_rot(b, 0, 0, 1, (dReal)0.05);
+    dGeomSetPosition(b, 0, 0, (dReal)-0.98);
+    dGeomSetPosition(a, 0, 0, 0);
+    n = dCollide(a, b, MAXC, c, sizeof c[0]);
+    CHECK(n == MAXC);
+    for (int i = 0; i < n; i++) {
+        CHECK_NEAR(c[i].depth, 0.02, EPS);
+        CHECK_VEC(c[i].normal, 0, 0, 1, EPS);
+    }
+    dGeomDestroy(a);
+    dGeomDestroy(b);
+    dGeomDestroy(box);
+    return 0;
+}
+
+// ---- resting ------------------------------------------------------------------
+
+// A 0.5 cube (as convex, or as a box) dropped on a plane at z = 0: its
+// height after `steps`, and the contact count then.
+static int rest_on_plane(int as_convex, int quick, double *height, int *contacts)
+{
+    static box_hull bh;
+    make_box_hull(&bh, (dReal)0.5, (dReal)0.5, (dReal)0.5);
+    dWorldID w = dWorldCreate();
+    dSpaceID space = dSimpleSpaceCreate(0);
+    dJointGroupID group = dJointGroupCreate(0);
+    dWorldSetGravity(w, 0, 0, (dReal)-9.81);
+    dGeomID plane = dCreatePlane(space, 0, 0, 1, 0);
+    dBodyID b = dBodyCreate(w);
+    dMass m;
+    dMassSetBox(&m, 1, (dReal)0.5, (dReal)0.5, (dReal)0.5);
+    dBodySetMass(b, &m);
+    dBodySetPosition(b, 0, 0, (dReal)0.3);
+    dGeomID g = as_convex ? dCreateConvex(space, bh.planes, 6, bh.points, 8, bh.polygons)
+                          : dCreateBox(space, (dReal)0.5, (dReal)0.5, (dReal)0.5);
+    dGeomSetBody(g, b);
+    int n = 0;
+    for (int step = 0; step < 300; step++) {
+        dContactGeom cg[8];
+        n = dCollide(g, plane, 8, cg, sizeof cg[0]);
+        for (int i = 0; i < n; i++) {
+            dContact ct;
+            memset(&ct, 0, sizeof ct);
+            ct.surface.mode = dContactSoftERP | dContactSoftCFM;
+            ct.surface.mu = 1;
+            ct.surface.soft_erp = (dReal)0.2;
+            ct.surface.soft_cfm = (dReal)1e-5;
+            ct.geom = cg[i];
+            dJointAttach(dJointCreateContact(w, group, &ct), b, 0);
+        }
+        if (quick)
+            dWorldQuickStep(w, (dReal)0.01);
+        else
+            dWorldStep(w, (dReal)0.01);
+        dJointGroupEmpty(group);
+    }
+    *height = dBodyGetPosition(b)[2];
+    *contacts = n;
+    dJointGroupDestroy(group);
+    dSpaceDestroy(space);
+    dWorldDestroy(w);
+    return 0;
+}
+
+static int test_resting_on_plane(void)
+{
+    for (int quick = 0; quick < 2; quick++) {
+        double hc, hb;
+        int nc, nb;
+        rest_on_plane(1, quick, &hc, &nc);
+        rest_on_plane(0, quick, &hb, &nb);
+        CHECK(nc == 4 && nb == 4);
+        CHECK_NEAR(hc, hb, 1e-3);
+        CHECK_NEAR(hc, 0.25, 2e-3);
+    }
+    return 0;
+}
+
+// A convex cube lying on a larger box: the face polygon (its 4 corners).
+static int test_cube_on_box_polygon(void)
+{
+    box_hull bh;
+    make_box_hull(&bh, 1, 1, 1);
+    dGeomID hull = dCreateConvex(0, bh.planes, 6, bh.points, 8, bh.polygons);
+    dGeomID box = dCreateBox(0, 4, 4, 1);
+    dGeomSetPosition(hull, (dReal)0.3, (dReal)-0.2, (dReal)0.99);
+    set_rot(hull, 0, 0, 1, (dReal)0.4);
+    dContactGeom c[MAXC];
+    int n = dCollide(hull, box, MAXC, c, sizeof c[0]);
+    CHECK(n == 4);
+    for (int i = 0; i < n; i++) {
+        CHECK_NEAR(c[i].depth, 0.01, EPS);
+        CHECK_VEC(c[i].normal, 0, 0, 1, EPS);
+        CHECK_NEAR(c[i].pos[2], 0.495, EPS);
+    }
+    // Asking for fewer keeps that many, the deepest first.
+    CHECK(dCollide(box, hull, 2, c, sizeof c[0]) == 2);
+    CHECK_VEC(c[0].normal, 0, 0, -1, EPS);
+    dGeomDestroy(hull);
+    dGeomDestroy(box);
+    return 0;
+}
+
+// ---- bad input ------------------------------------------------------------------
+
+static char last_error[512];
+static int errors;
+
+static void record(int num, const char *msg, va_list ap)
+{
+    (void)num;
+    vsnprintf(last_error, sizeof last_error, msg, ap);
+    errors++;
+}
+
+// The call reports an error naming fn and mentioning what.
+static int reported(const char *fn, const char *what)
+{
+    if (errors != 1 || !strstr(last_error, fn) || !strstr(last_error, what)) {
+        fprintf(stderr, "# errors %d, last \"%s\" (wanted %s, %s)\n", errors, last_error, fn,
+                what);
+        return 0;
+    }
+    errors = 0;
+    last_error[0] = 0;
+    return 1;
+}
+
+static int test_bad_input(void)
+{
+    box_hull bh;
+    make_box_hull(&bh, 1, 1, 1);
+    dSetDebugHandler(record);
+    errors = 0;
+    CHECK(dCreateConvex(0, NULL, 6, bh.points, 8, bh.polygons) == NULL);
+    CHECK(reported("dCreateConvex", "planes"));
+    CHECK(dCreateConvex(0, bh.planes, 0, bh.points, 8, bh.polygons) == NULL);
+    CHECK(reported("dCreateConvex", "planecount"));
+    CHECK(dCreateConvex(0, bh.planes, 6, NULL, 8, bh.polygons) == NULL);
+    CHECK(reported("dCreateConvex", "points"));
+    CHECK(dCreateConvex(0, bh.planes, 6, bh.points, 0, bh.polygons) == NULL);
+    CHECK(reported("dCreateConvex", "pointcount"));
+    CHECK(dCreateConvex(0, bh.planes, 6, bh.points, 8, NULL) == NULL);
+    CHECK(reported("dCreateConvex", "polygons"));
+    box_hull bad = bh;
+    bad.points[5] = (dReal)NAN;
+    CHECK(dCreateConvex(0, bad.planes, 6, bad.points, 8, bad.polygons) == NULL);
+    CHECK(reported("dCreateConvex", "points[5]"));
+    bad = bh;
+    bad.planes[7] = (dReal)INFINITY;
+    CHECK(dCreateConvex(0, bad.planes, 6, bad.points, 8, bad.polygons) == NULL);
+    CHECK(reported("dCreateConvex", "planes[7]"));
+    bad = bh;
+    bad.polygons[13] = 8;
+    CHECK(dCreateConvex(0, bad.planes, 6, bad.points, 8, bad.polygons) == NULL);
+    CHECK(reported("dCreateConvex", "past pointcount"));
+    // A valid convex keeps its data when set with bad data.
+    dGeomID g = dCreateConvex(0, bh.planes, 6, bh.points, 8, bh.polygons);
+    CHECK(g && errors == 0);
+    dGeomSetConvex(g, bh.planes, 6, bh.points, 3, bh.polygons);
+    CHECK(reported("dGeomSetConvex", "past pointcount"));
+    dGeomID s = dCreateSphere(0, 1);
+    dGeomSetConvex(s, bh.planes, 6, bh.points, 8, bh.polygons);
+    CHECK(reported("dGeomSetConvex", "not a convex"));
+    dSetDebugHandler(0);
+    dContactGeom c[4];
+    dGeomSetPosition(s, 0, 0, (dReal)1.2);
+    CHECK(dCollide(g, s, 4, c, sizeof c[0]) == 1);
+    CHECK_NEAR(c[0].depth, 0.3, EPS);
+    // dGeomSetConvex takes new data (not copied): a taller box.
+    box_hull tall;
+    make_box_hull(&tall, 1, 1, 3);
+    dGeomSetConvex(g, tall.planes, 6, tall.points, 8, tall.polygons);
+    dGeomSetPosition(s, 0, 0, (dReal)2.2);
+    CHECK(dCollide(g, s, 4, c, sizeof c[0]) == 1);
+    CHECK_NEAR(c[0].depth, 0.3, EPS);
+    dGeomDestroy(g);
+    dGeomDestroy(s);
+    return 0;
+}
+
+const test_case test_cases[] = {
+    TEST_CASE(test_box_equals_box_box),
+    TEST_CASE(test_convex_convex_equals_box_box),
+    TEST_CASE(test_box_equals_box_plane),
+    TEST_CASE(test_box_equals_sphere_box),
+    TEST_CASE(test_box_like_capsule_box),
+    TEST_CASE(test_box_like_cylinder_box),
+    TEST_CASE(test_rays_as_box),
+    TEST_CASE(test_octahedron_sphere),
+    TEST_CASE(test_octahedron_capsule_plane),
+    TEST_CASE(test_cube_on_box_polygon),
+    TEST_CASE(test_cylinder_on_convex),
+    TEST_CASE(test_large_prism),
+    TEST_CASE(test_resting_on_plane),
+    TEST_CASE(test_bad_input),
+    TEST_END,
+};
