@@ -32,4 +32,9 @@ dxCollider dxCollideTriMeshSphere, dxCollideTriMeshBox, dxCollideTriMeshCapsule,
     dxCollideTriMeshCylinder, dxCollideTriMeshPlane, dxCollideTriMeshRay,
     dxCollideTriMeshTriMesh;
 
+// Heightfields (collide_heightfield.c): the trimesh colliders on the cells
+// under the other geom; side1 is -1.
+dxCollider dxCollideHeightfieldSphere, dxCollideHeightfieldBox, dxCollideHeightfieldCapsule,
+    dxCollideHeightfieldCylinder, dxCollideHeightfieldRay;
+
 #endif
