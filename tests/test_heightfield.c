@@ -114,7 +114,10 @@ static dGeomID random_solid(int k, const dReal *P, const dReal *R)
     default: g = dCreateCylinder(0, size = urand(0.1, 0.6), urand(0.2, 1.2)); break;
     }
     double x = urand(-3, 3), z = urand(-2.2, 2.2);
-    double local[3] = { x, surface(x, z) + urand(0.02, 1) * size, z }, w[3];
+    // Centre above the triangulated surface (which lies up to 0.02 below
+    // the curved one): a centre under it is the buried case, which a
+    // one-sided trimesh does not have.
+    double local[3] = { x, surface(x, z) + 0.03 + urand(0, 1) * size, z }, w[3];
     for (int i = 0; i < 3; i++)
         w[i] = P[i] + R[4 * i] * local[0] + R[4 * i + 1] * local[1] + R[4 * i + 2] * local[2];
     dGeomSetPosition(g, w[0], w[1], w[2]);
@@ -141,10 +144,12 @@ static int test_contacts_match_a_trimesh_of_the_surface(void)
     for (int i = 0; i < 800; i++) {
         int k = i % 4;
         dGeomID g = random_solid(k, P, R);
-        dContactGeom a[64], b[64];
-        int na = dCollide(hf, g, 64, a, sizeof a[0]);
-        int nb = dCollide(mesh, g, 64, b, sizeof b[0]);
-        CHECK(na == nb);
+        // Room for every contact: the pick among more than the maximum
+        // depends on the triangles' order, which differs.
+        static dContactGeom a[512], b[512];
+        int na = dCollide(hf, g, 512, a, sizeof a[0]);
+        int nb = dCollide(mesh, g, 512, b, sizeof b[0]);
+        CHECK(na == nb && na < 512);
         CHECK(contacts_match(a, na, b, nb, TOL(1e-9, 2e-4)));
         CHECK(contacts_match(b, nb, a, na, TOL(1e-9, 2e-4)));
         for (int j = 0; j < na; j++) {
@@ -434,7 +439,10 @@ static int test_wrapped_field_repeats(void)
     dGeomID ball = dCreateSphere(0, 0.4);
     srand(3);
     for (int i = 0; i < 50; i++) {
-        double x = urand(-3.5, 3.5), z = urand(-2.5, 2.5);
+        // Away from the finite field's border cells (and their ring), and
+        // from the last samples, which the wrapped field replaces by the
+        // first ones (the period is width samples - 1).
+        double x = urand(-2.5, 2.5), z = urand(-1.5, 1.5);
         double y = field_height(finite, x, z) + urand(0.1, 0.35);
         int kx = (int)urand(-3, 3), kz = (int)urand(-3, 3);
         dContactGeom a[8], b[8];
@@ -442,13 +450,12 @@ static int test_wrapped_field_repeats(void)
         int na = dCollide(finite, ball, 8, a, sizeof a[0]);
         dGeomSetPosition(ball, x + kx * WIDTH, y, z + kz * DEPTH);
         int nb = dCollide(wrapped, ball, 8, b, sizeof b[0]);
-        CHECK(na == 1 && nb == 1);
-        if (na == 1 && nb == 1) {
-            CHECK_NEAR(a[0].depth, b[0].depth, TOL(1e-9, 1e-4));
-            CHECK_VEC(b[0].normal, a[0].normal[0], a[0].normal[1], a[0].normal[2],
-                      TOL(1e-9, 1e-4));
-            CHECK_NEAR(b[0].pos[0] - kx * WIDTH, a[0].pos[0], TOL(1e-9, 1e-4));
+        CHECK(na >= 1 && na == nb);
+        for (int j = 0; j < nb; j++) {
+            b[j].pos[0] -= kx * WIDTH;
+            b[j].pos[2] -= kz * DEPTH;
         }
+        CHECK(contacts_match(a, na, b, nb, TOL(1e-9, 1e-4)));
         // The finite field has nothing out there.
         CHECK(dCollide(finite, ball, 8, a, sizeof a[0]) == 0 || (kx == 0 && kz == 0));
     }
@@ -516,11 +523,12 @@ static int test_warm_collisions_allocate_nothing(void)
     dGeomID box = dCreateBox(0, 1, 1, 1);
     dGeomSetPosition(box, 0, surface(0, 0) + 0.3, 0);
     dContactGeom c[16];
-    CHECK(dCollide(hf, box, 16, c, sizeof c[0]) > 0);
-    test_count_allocations();
-    for (int i = 0; i < 10; i++) {
-        dGeomSetPosition(box, 0.1 * i, surface(0.1 * i, 0) + 0.3, 0);
-        dCollide(hf, box, 16, c, sizeof c[0]);
+    for (int pass = 0; pass < 2; pass++) {   // the first warms the scratch arrays
+        if (pass == 1) test_count_allocations();
+        for (int i = 0; i < 10; i++) {
+            dGeomSetPosition(box, 0.1 * i, surface(0.1 * i, 0) + 0.3, 0);
+            CHECK(dCollide(hf, box, 16, c, sizeof c[0]) > 0);
+        }
     }
     CHECK(test_allocations_counted() == 0);
     dGeomDestroy(box);
@@ -557,7 +565,7 @@ static int test_bad_input_is_reported(void)
     dGeomHeightfieldDataSetBounds(d, 2, 1);
     CHECK(test_captured_contains("minHeight is above maxHeight"));
     int reports = test_captured_count();
-    CHECK(reports == 10);
+    CHECK(reports == 9);
 
     // Never built: no contacts, no crash.
     dGeomID g = dCreateHeightfield(0, d, 1), ball = dCreateSphere(0, 1);
