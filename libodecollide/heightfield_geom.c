@@ -4,10 +4,8 @@
 // object (placeable or not), changing its data, and the bounding box.
 
 #include <ode/memory.h>
-#include <string.h>
 
 #include "heightfield_internal.h"
-#include "shapes.h"
 
 void dxHeightfieldDataFree(dxHeightfieldData *d);   // heightfield_data.c
 

@@ -193,6 +193,17 @@ static int test_both_argument_orders_mirror(void)
         }
         dGeomDestroy(g);
     }
+    // A ray straight down: the hit on the surface, the normal facing the ray
+    // when it is g1 (BACKENDS.md), negated when it is g2.
+    dGeomID ray = dCreateRay(0, 10);
+    dGeomRaySet(ray, 0.7, 5, -0.3, 0, -1, 0);
+    dContactGeom a, b;
+    CHECK(dCollide(ray, hf, 1, &a, sizeof a) == 1 && dCollide(hf, ray, 1, &b, sizeof b) == 1);
+    CHECK_NEAR(a.pos[1], 5 - a.depth, TOL(1e-12, 1e-5));
+    CHECK(a.normal[1] > 0.5 && a.g1 == ray && b.g1 == hf);
+    CHECK_VEC(b.normal, -a.normal[0], -a.normal[1], -a.normal[2], 0);
+    CHECK_VEC(b.pos, a.pos[0], a.pos[1], a.pos[2], 0);
+    dGeomDestroy(ray);
     dGeomDestroy(hf);
     dGeomHeightfieldDataDestroy(hd);
     return 0;
