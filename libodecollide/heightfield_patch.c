@@ -189,17 +189,25 @@ int dxHeightfieldBuildPatch(dxHeightfield *h, int x0, int x1, int z0, int z1)
     // vertex_first is free until adjacency(): the per-vertex marks go there.
     features(p, (unsigned char *)p->vertex_first);
     adjacency(p, nvx, nvz);
+    // One leaf: the asked cells' triangles, in the box of their vertices.
+    dxTriMeshNode *node = p->nodes;
+    for (int k = 0; k < 3; k++) {
+        node->lo[k] = dInfinity;
+        node->hi[k] = -dInfinity;
+    }
     int count = 0, ncx = nvx - 1;
     for (int j = z0 - vz0; j < z1 - vz0; j++)
         for (int i = x0 - vx0; i < x1 - vx0; i++) {
             p->order[count++] = 2 * (i + j * ncx);
             p->order[count++] = 2 * (i + j * ncx) + 1;
+            for (int c = 0; c < 4; c++) {
+                const dReal *w = v + 3 * (i + (c & 1) + (j + (c >> 1)) * nvx);
+                for (int k = 0; k < 3; k++) {
+                    node->lo[k] = dMin(node->lo[k], w[k]);
+                    node->hi[k] = dMax(node->hi[k], w[k]);
+                }
+            }
         }
-    dxTriMeshNode *node = p->nodes;
-    for (int k = 0; k < 3; k++) {
-        node->lo[k] = -dInfinity;
-        node->hi[k] = dInfinity;
-    }
     node->first = 0;
     node->count = count;
     p->node_count = count > 0;

@@ -338,6 +338,74 @@ static int test_resting_box_gets_four_contacts(void)
     return 0;
 }
 
+// A closed box mesh (full sides 0.8 x 0.5 x 0.6, 12 triangles wound outwards).
+static double box_v[8][3];
+static dTriIndex box_i[12][3] = { { 0, 2, 3 }, { 0, 3, 1 }, { 4, 5, 7 }, { 4, 7, 6 },
+                                  { 0, 1, 5 }, { 0, 5, 4 }, { 2, 6, 7 }, { 2, 7, 3 },
+                                  { 0, 4, 6 }, { 0, 6, 2 }, { 1, 3, 7 }, { 1, 7, 5 } };
+
+// Heightfield-trimesh: a closed box mesh lying flat 1 mm deep in a flat
+// field gets its four bottom corners, straight up, 1 mm deep, at any place
+// and yaw; turned at random near a curved field, both orders mirror and
+// every contact is as deep as the box's corner below the surface at most.
+static int test_trimesh_rests_on_a_flat_field_and_orders_mirror(void)
+{
+    for (int v = 0; v < 8; v++) {
+        box_v[v][0] = v & 1 ? 0.4 : -0.4;
+        box_v[v][1] = v & 2 ? 0.25 : -0.25;
+        box_v[v][2] = v & 4 ? 0.3 : -0.3;
+    }
+    dTriMeshDataID bd = dGeomTriMeshDataCreate();
+    dGeomTriMeshDataBuildDouble(bd, box_v, sizeof box_v[0], 8, box_i, 36, sizeof box_i[0]);
+    dGeomID box = dCreateTriMesh(0, bd, NULL, NULL, NULL);
+    dHeightfieldDataID fd;
+    dGeomID flat_hf = make_flat_field(0, &fd);   // its Y is the world's Z
+    srand(13);
+    static dContactGeom a[64], r[64];
+    for (int i = 0; i < 20; i++) {
+        dMatrix3 R;
+        dRFromAxisAndAngle(R, 0, 0, 1, urand(0, M_PI));
+        dGeomSetRotation(box, R);
+        dGeomSetPosition(box, urand(-5, 5), urand(-3, 3), 0.3 - 1e-3);
+        int n = dCollide(flat_hf, box, 64, a, sizeof a[0]);
+        CHECK(n == 4);
+        for (int j = 0; j < n; j++) {
+            CHECK_NEAR(a[j].depth, 1e-3, TOL(1e-9, 1e-5));
+            CHECK_VEC(a[j].normal, 0, 0, -1, TOL(1e-9, 1e-6));
+            CHECK(a[j].g1 == flat_hf && a[j].g2 == box);
+        }
+    }
+    dHeightfieldDataID hd = make_field(0, 0);
+    dGeomID hf = dCreateHeightfield(0, hd, 1);
+    const dReal P[3] = { 0, 0, 0 };
+    dMatrix3 I;
+    dRSetIdentity(I);
+    int touching = 0;
+    for (int i = 0; i < 100; i++) {
+        dGeomID g = random_solid(1, P, I);   // a pose near the surface
+        const dReal *p = dGeomGetPosition(g);
+        dGeomSetPosition(box, p[0], p[1], p[2]);
+        dGeomSetRotation(box, dGeomGetRotation(g));
+        dGeomDestroy(g);
+        int na = dCollide(hf, box, 64, a, sizeof a[0]);
+        int nr = dCollide(box, hf, 64, r, sizeof r[0]);
+        CHECK(nr == na);
+        for (int j = 0; j < nr; j++) {
+            CHECK(r[j].g1 == box && r[j].g2 == hf && a[j].depth >= 0 && a[j].depth < 0.75);
+            CHECK_VEC(r[j].normal, -a[j].normal[0], -a[j].normal[1], -a[j].normal[2], 0);
+        }
+        touching += na > 0;
+    }
+    CHECK(touching > 20);
+    dGeomDestroy(box);
+    dGeomDestroy(hf);
+    dGeomDestroy(flat_hf);
+    dGeomHeightfieldDataDestroy(hd);
+    dGeomHeightfieldDataDestroy(fd);
+    dGeomTriMeshDataDestroy(bd);
+    return 0;
+}
+
 // ---- data: build forms, copy, bounds, wrap, thickness -------------------------------
 
 // The height the field shows at local (x, z): a ray straight down.
@@ -637,6 +705,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_ball_rolls_as_on_plane),
     TEST_CASE(test_box_slides_as_on_plane),
     TEST_CASE(test_resting_box_gets_four_contacts),
+    TEST_CASE(test_trimesh_rests_on_a_flat_field_and_orders_mirror),
     TEST_CASE(test_every_build_form_gives_the_same_surface),
     TEST_CASE(test_copy_flag_decides_whether_heights_are_read_in_place),
     TEST_CASE(test_bounds_make_the_bounding_box),

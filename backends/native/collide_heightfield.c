@@ -15,7 +15,7 @@
 
 // More cells than this under one geom is a geom far larger than the field's
 // cells (or a long ray across it): refused rather than run for minutes.
-#define MAX_CELLS (1 << 22)
+#define MAX_CELLS (1 << 20)
 
 // The surface under local point p (inside the field, or wrapping): the
 // point on it straight above or below p, and the triangle's upward unit
@@ -140,7 +140,8 @@ static int collide(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip,
         return 0;
     }
     if (!dxHeightfieldBuildPatch(h, (int)fx0, (int)fx1, (int)fz0, (int)fz1)) return 0;
-    if (o2->ops->cls != dRayClass && buried_contact(h, o2, c, skip)) return 1;
+    int solid = o2->ops->cls != dRayClass && o2->ops->cls != dTriMeshClass;
+    if (solid && buried_contact(h, o2, c, skip)) return 1;
     h->shadow.g.pos = o1->pos;   // the heightfield's pose (a body's, if it has one)
     h->shadow.g.R = o1->R;
     int n = mesh(&h->shadow.g, o2, flags, c, skip);
@@ -170,6 +171,11 @@ int dxCollideHeightfieldCapsule(dxGeom *o1, dxGeom *o2, int flags, dContactGeom 
 int dxCollideHeightfieldCylinder(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
 {
     return collide(o1, o2, flags, c, skip, dxCollideTriMeshCylinder);
+}
+
+int dxCollideHeightfieldTriMesh(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
+{
+    return collide(o1, o2, flags, c, skip, dxCollideTriMeshTriMesh);
 }
 
 int dxCollideHeightfieldRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)

@@ -34,7 +34,8 @@ static dxCollider *const table[NATIVE_CLASSES][NATIVE_CLASSES] = {
                             [dBoxClass] = dxCollideHeightfieldBox,
                             [dCapsuleClass] = dxCollideHeightfieldCapsule,
                             [dCylinderClass] = dxCollideHeightfieldCylinder,
-                            [dRayClass] = dxCollideHeightfieldRay },
+                            [dRayClass] = dxCollideHeightfieldRay,
+                            [dTriMeshClass] = dxCollideHeightfieldTriMesh },
 };
 
 static int native_supports(int c1, int c2)

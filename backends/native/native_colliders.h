@@ -35,6 +35,6 @@ dxCollider dxCollideTriMeshSphere, dxCollideTriMeshBox, dxCollideTriMeshCapsule,
 // Heightfields (collide_heightfield.c): the trimesh colliders on the cells
 // under the other geom; side1 is -1.
 dxCollider dxCollideHeightfieldSphere, dxCollideHeightfieldBox, dxCollideHeightfieldCapsule,
-    dxCollideHeightfieldCylinder, dxCollideHeightfieldRay;
+    dxCollideHeightfieldCylinder, dxCollideHeightfieldRay, dxCollideHeightfieldTriMesh;
 
 #endif
