@@ -527,6 +527,7 @@ static int test_wrapped_field_repeats(void)
         double x = urand(-2.5, 2.5), z = urand(-1.5, 1.5);
         double y = field_height(finite, x, z) + urand(0.1, 0.35);
         int kx = (int)urand(-3, 3), kz = (int)urand(-3, 3);
+        if (i == 0 && sizeof(dReal) == sizeof(double)) kx = 5000;   // 40 km away
         dContactGeom a[8], b[8];
         dGeomSetPosition(ball, x, y, z);
         int na = dCollide(finite, ball, 8, a, sizeof a[0]);

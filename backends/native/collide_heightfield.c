@@ -14,7 +14,7 @@
 #include "native_colliders.h"
 
 // More cells than this under one geom is a geom far larger than the field's
-// cells (or a long ray across it): refused rather than run for minutes.
+// cells (or a long ray across it): refused rather than run for seconds.
 #define MAX_CELLS (1 << 20)
 
 // The surface under local point p (inside the field, or wrapping): the
@@ -85,7 +85,7 @@ static int buried_contact(dxHeightfield *h, dxGeom *o2, dContactGeom *c, int ski
 {
     const dxHeightfieldData *d = h->data;
     dReal p[3], s[3], n[3];
-    dxTriMeshToLocal(&h->g, o2->pos, p);
+    dxTriMeshToLocal(&h->shadow.g, o2->pos, p);   // the patch's frame (wrap: shifted)
     if (!d->wrap && (dFabs(p[0]) > d->width / 2 || dFabs(p[2]) > d->depth / 2)) return 0;
     if (p[1] < d->min_height) return 0;
     surface_at(d, p, s, n);
@@ -126,25 +126,43 @@ static int collide(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip,
     dReal sw = dxHeightfieldCellWidth(d), sd = dxHeightfieldCellDepth(d);
     dReal fx0 = dFloor((lo[0] + d->width / 2) / sw), fx1 = dCeil((hi[0] + d->width / 2) / sw);
     dReal fz0 = dFloor((lo[2] + d->depth / 2) / sd), fz1 = dCeil((hi[2] + d->depth / 2) / sd);
-    if (!d->wrap) {
+    // A wrapping field: whole periods off the first are taken out of the
+    // cell indices and put into the patch's origin (shift, field frame).
+    dReal shift[3] = { 0, 0, 0 };
+    if (d->wrap) {
+        dReal px = (dReal)(d->width_samples - 1), pz = (dReal)(d->depth_samples - 1);
+        dReal kx = dFloor(fx0 / px) * px, kz = dFloor(fz0 / pz) * pz;
+        fx0 -= kx;
+        fx1 -= kx;
+        fz0 -= kz;
+        fz1 -= kz;
+        shift[0] = kx * sw;
+        shift[2] = kz * sd;
+    } else {
         fx0 = dMax(fx0, 0);
         fz0 = dMax(fz0, 0);
         fx1 = dMin(fx1, (dReal)(d->width_samples - 1));
         fz1 = dMin(fz1, (dReal)(d->depth_samples - 1));
     }
     if (!(fx0 < fx1 && fz0 < fz1)) return 0;   // outside the field (or NaN)
-    if ((fx1 - fx0) * (fz1 - fz0) > (dReal)MAX_CELLS || dFabs(fx0) > (dReal)MAX_CELLS ||
-        dFabs(fz0) > (dReal)MAX_CELLS) {
+    if ((fx1 - fx0) * (fz1 - fz0) > (dReal)MAX_CELLS) {
         dxReportMessage("dCollide", "a %s covers more than %d heightfield cells: no contacts",
                         o2->ops->name, MAX_CELLS);
         return 0;
     }
     if (!dxHeightfieldBuildPatch(h, (int)fx0, (int)fx1, (int)fz0, (int)fz1)) return 0;
+    // The patch's pose: the heightfield's (a body's, if it has one), moved by
+    // the whole periods taken out.
+    dxGeom *s = &h->shadow.g;
+    s->R = o1->R;
+    s->pos = o1->pos;
+    if (shift[0] != 0 || shift[2] != 0) {
+        dx_point_to_world(o1->R, o1->pos, shift, s->own_pos);
+        s->pos = s->own_pos;
+    }
     int solid = o2->ops->cls != dRayClass && o2->ops->cls != dTriMeshClass;
     if (solid && buried_contact(h, o2, c, skip)) return 1;
-    h->shadow.g.pos = o1->pos;   // the heightfield's pose (a body's, if it has one)
-    h->shadow.g.R = o1->R;
-    int n = mesh(&h->shadow.g, o2, flags, c, skip);
+    int n = mesh(s, o2, flags, c, skip);
     for (int i = 0; i < n; i++) {
         dContactGeom *k = dxContactAt(c, i, skip);
         k->g1 = o1;
