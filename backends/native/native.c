@@ -6,7 +6,7 @@
 #include "../../libodecollide/backend_internal.h"
 #include "native_colliders.h"
 
-enum { NATIVE_CLASSES = dTriMeshClass + 1 };   // sphere ... ray, convex, transform, trimesh
+enum { NATIVE_CLASSES = dHeightfieldClass + 1 };   // sphere ... ray, ..., trimesh, heightfield
 
 // table[a][b] collides (class a, class b) in that order; NULL if no collider.
 static dxCollider *const table[NATIVE_CLASSES][NATIVE_CLASSES] = {
@@ -35,6 +35,12 @@ static dxCollider *const table[NATIVE_CLASSES][NATIVE_CLASSES] = {
                         [dCylinderClass] = dxCollideTriMeshCylinder,
                         [dPlaneClass] = dxCollideTriMeshPlane, [dRayClass] = dxCollideTriMeshRay,
                         [dTriMeshClass] = dxCollideTriMeshTriMesh },
+    [dHeightfieldClass] = { [dSphereClass] = dxCollideHeightfieldSphere,
+                            [dBoxClass] = dxCollideHeightfieldBox,
+                            [dCapsuleClass] = dxCollideHeightfieldCapsule,
+                            [dCylinderClass] = dxCollideHeightfieldCylinder,
+                            [dRayClass] = dxCollideHeightfieldRay,
+                            [dTriMeshClass] = dxCollideHeightfieldTriMesh },
 };
 
 static int native_supports(int c1, int c2)

@@ -35,4 +35,9 @@ dxCollider dxCollideTriMeshSphere, dxCollideTriMeshBox, dxCollideTriMeshCapsule,
 dxCollider dxCollideConvexConvex, dxCollideConvexBox, dxCollideConvexPlane, dxCollideConvexSphere,
     dxCollideConvexCapsule, dxCollideConvexCylinder, dxCollideRayConvex;
 
+// Heightfields (collide_heightfield.c): the trimesh colliders on the cells
+// under the other geom; side1 is -1.
+dxCollider dxCollideHeightfieldSphere, dxCollideHeightfieldBox, dxCollideHeightfieldCapsule,
+    dxCollideHeightfieldCylinder, dxCollideHeightfieldRay, dxCollideHeightfieldTriMesh;
+
 #endif

@@ -295,5 +295,6 @@ ODE_API dGeomID dCreateGeom(int classnum);
 #endif
 
 #include <ode/collision_trimesh.h>
+#include <ode/collision_heightfield.h>
 
 #endif
