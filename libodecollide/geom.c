@@ -265,9 +265,8 @@ void dGeomSetQuaternion(dGeomID g, const dQuaternion q)
     } else if (g->body) {
         dBodySetQuaternion(g->body, q);
     } else {
-        dQuaternion n = { q[0], q[1], q[2], q[3] };
-        DX_CHECK_ARG(dxIsFinite(n[0]) && dxIsFinite3(n[1], n[2], n[3]) && dSafeNormalize4(n),
-                     return, "q is not finite or has zero length");
+        dQuaternion n;
+        DX_CHECK_ARG(dxCleanQuaternion(q, n), return, "q is not finite or has zero length");
         dRfromQ(g->own_R, n);
         dxGeomMarkMoved(g);
     }

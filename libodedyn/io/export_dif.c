@@ -158,20 +158,31 @@ static void print_ball(const dxDifPrinter *p, const joint_view *v)
     dxDifPrintReals(p, "anchor2", a2, 3);
 }
 
-static void print_hinge(const dxDifPrinter *p, const joint_view *v)
+// Anchors and the axis in both bodies' frames and the kept rest orientation,
+// as ODE writes them for the hinge and the piston.
+static void print_anchors_axis_rest(const dxDifPrinter *p, const joint_view *v,
+                                    vector_getter *anchor1, vector_getter *anchor2,
+                                    vector_getter *axis_getter,
+                                    void (*rest)(const dxJoint *, dQuaternion))
 {
     dVector3 a1, a2, axis, ax1, ax2;
-    kept_anchors(v, dJointGetHingeAnchor, dJointGetHingeAnchor2, a1, a2);
-    dJointGetHingeAxis(v->j, axis);
+    kept_anchors(v, anchor1, anchor2, a1, a2);
+    axis_getter(v->j, axis);
     body_direction(v->b0, axis, ax1);
     body_direction(v->b1, axis, ax2);
     dQuaternion qrel;
-    dxJointHingeRest(v->j, qrel);
+    rest(v->j, qrel);
     dxDifPrintReals(p, "anchor1", a1, 3);
     dxDifPrintReals(p, "anchor2", a2, 3);
     dxDifPrintReals(p, "axis1", ax1, 3);
     dxDifPrintReals(p, "axis2", ax2, 3);
     dxDifPrintReals(p, "qrel", qrel, 4);
+}
+
+static void print_hinge(const dxDifPrinter *p, const joint_view *v)
+{
+    print_anchors_axis_rest(p, v, dJointGetHingeAnchor, dJointGetHingeAnchor2,
+                            dJointGetHingeAxis, dxJointHingeRest);
     print_limot(p, v, dJointGetHingeParam, 0, -1);
 }
 
@@ -421,18 +432,8 @@ static void print_pu(const dxDifPrinter *p, const joint_view *v)
 // orientation.
 static void print_piston(const dxDifPrinter *p, const joint_view *v)
 {
-    dVector3 a1, a2, axis, ax1, ax2;
-    kept_anchors(v, dJointGetPistonAnchor, dJointGetPistonAnchor2, a1, a2);
-    dJointGetPistonAxis(v->j, axis);
-    body_direction(v->b0, axis, ax1);
-    body_direction(v->b1, axis, ax2);
-    dQuaternion qrel;
-    dxJointPistonRest(v->j, qrel);
-    dxDifPrintReals(p, "anchor1", a1, 3);
-    dxDifPrintReals(p, "anchor2", a2, 3);
-    dxDifPrintReals(p, "axis1", ax1, 3);
-    dxDifPrintReals(p, "axis2", ax2, 3);
-    dxDifPrintReals(p, "qrel", qrel, 4);
+    print_anchors_axis_rest(p, v, dJointGetPistonAnchor, dJointGetPistonAnchor2,
+                            dJointGetPistonAxis, dxJointPistonRest);
     print_limot(p, v, dJointGetPistonParam, 0, 1);
     print_limot(p, v, dJointGetPistonParam, 1, 2);
 }
