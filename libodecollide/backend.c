@@ -8,7 +8,8 @@
 // collision): it selects the backend of that name, loading its module, or
 // else as soon as a backend of that name is registered; if none is by the
 // first collision, that is reported once and native stays. An explicit
-// dCollisionSetBackend wins over the variable.
+// dCollisionSetBackend wins over the variable. "first,shadow" also turns
+// shadow mode on (backend_shadow.c) with the second name, found the same way.
 //
 // Modules are looked for in the directory of the libodecollide.so that holds
 // this code (dladdr): in its subdirectory DX_BACKEND_MODULE_SUBDIR (the
@@ -18,6 +19,7 @@
 #define _GNU_SOURCE   // dladdr
 
 #include "backend_internal.h"
+#include "backend_shadow.h"
 #include "backend_support.h"
 
 #include <dlfcn.h>
@@ -44,6 +46,8 @@ static const dCollisionBackend *selected;
 static int strict;
 static int fallback_reported;
 static char requested[64];   // ODE_COLLISION_BACKEND while no backend of that name exists
+static const dCollisionBackend *shadow;   // shadow mode's backend, or NULL when off
+static char requested_shadow[64];   // its name from ODE_COLLISION_BACKEND, likewise
 
 // The modules meson built, and where they were found.
 static const char *const module_names[] = { DX_BACKEND_MODULES NULL };
@@ -144,9 +148,34 @@ static const char *module_missing(const char *name, char *why, size_t size)
     return NULL;
 }
 
+// The backend named in ODE_COLLISION_BACKEND for a role ("" for the
+// selected one, "shadow " for the shadow), loaded; or NULL, after saving the
+// name in `request` (not registered yet) or reporting why it cannot load.
+static const dCollisionBackend *from_environment(const char *name, const char *role,
+                                                 char *request, size_t size)
+{
+    entry *e = find(name);
+    if (!e) {
+        snprintf(request, size, "%s", name);
+        return NULL;
+    }
+    char why[512];
+    const dCollisionBackend *b = load(e, why, sizeof why);
+    if (!b)
+        dMessage(d_ERR_UNKNOWN, "ODE_COLLISION_BACKEND: cannot load the %s\"%s\" backend: %s; "
+                 "%s", role, name, why, role[0] ? "no shadow mode" : "using native");
+    return b;
+}
+
+static void start_shadow(const dCollisionBackend *b)
+{
+    shadow = b;
+    dxShadowReportAtExit();
+}
+
 // The first use registers native, lists the modules found and reads
-// ODE_COLLISION_BACKEND (a name too long for `requested` is cut and then
-// matches nothing).
+// ODE_COLLISION_BACKEND, "name" or "name,shadow" (a name too long for
+// `requested` is cut and then matches nothing).
 static void ensure_native(void)
 {
     if (backend_count > 0) return;
@@ -155,27 +184,24 @@ static void ensure_native(void)
     find_modules();
     const char *env = getenv("ODE_COLLISION_BACKEND");
     if (!env) return;
-    entry *e = find(env);
-    if (!e) {
-        snprintf(requested, sizeof requested, "%s", env);
-        return;
-    }
-    char why[512];
-    const dCollisionBackend *b = load(e, why, sizeof why);
+    char first[64];
+    const char *comma = strchr(env, ',');
+    snprintf(first, sizeof first, "%.*s", comma ? (int)(comma - env) : (int)strlen(env), env);
+    const dCollisionBackend *b = from_environment(first, "", requested, sizeof requested);
     if (b) selected = b;
-    else
-        dMessage(d_ERR_UNKNOWN, "ODE_COLLISION_BACKEND: cannot load the \"%s\" backend: %s; "
-                 "using native", env, why);
+    if (comma && (b = from_environment(comma + 1, "shadow ", requested_shadow,
+                                       sizeof requested_shadow)))
+        start_shadow(b);
 }
 
 // A requested backend that never registered: say so once, at the first collision.
-static void give_up_request(void)
+static void give_up_request(char *request, const char *role, const char *fallback)
 {
     char why[512];
-    const char *missing = module_missing(requested, why, sizeof why);
-    dMessage(d_ERR_UNKNOWN, "ODE_COLLISION_BACKEND: no backend named \"%s\"%s%s; using native",
-             requested, missing ? ": " : "", missing ? missing : "");
-    requested[0] = 0;
+    const char *missing = module_missing(request, why, sizeof why);
+    dMessage(d_ERR_UNKNOWN, "ODE_COLLISION_BACKEND: no %sbackend named \"%s\"%s%s; %s", role,
+             request, missing ? ": " : "", missing ? missing : "", fallback);
+    request[0] = 0;
 }
 
 int dCollisionRegisterBackend(const dCollisionBackend *b)
@@ -190,6 +216,10 @@ int dCollisionRegisterBackend(const dCollisionBackend *b)
     if (requested[0] && strcmp(requested, b->name) == 0) {
         selected = b;
         requested[0] = 0;
+    }
+    if (requested_shadow[0] && strcmp(requested_shadow, b->name) == 0) {
+        start_shadow(b);
+        requested_shadow[0] = 0;
     }
     return 1;
 }
@@ -225,10 +255,48 @@ const char *const *dCollisionListBackends(void)
 
 void dCollisionSetStrict(int on) { strict = on != 0; }
 
+int dCollisionBackendSupports(const char *name, int class1, int class2)
+{
+    DX_CHECK_ARG(name != NULL, return 0, "name is NULL");
+    ensure_native();
+    entry *e = find(name);
+    DX_CHECK_ARG(e != NULL, return 0, "no collision backend named \"%s\"", name);
+    char why[512];
+    const dCollisionBackend *b = load(e, why, sizeof why);
+    DX_CHECK_ARG(b != NULL, return 0, "cannot load the \"%s\" backend: %s", name, why);
+    return b->supports(class1, class2) != 0;
+}
+
+int dCollisionSetShadowBackend(const char *name)
+{
+    ensure_native();
+    requested_shadow[0] = 0;
+    if (!name) {
+        shadow = NULL;
+        return 1;
+    }
+    entry *e = find(name);
+    char why[512];
+    const char *missing = e ? NULL : module_missing(name, why, sizeof why);
+    DX_CHECK_ARG(e != NULL, return 0, "no collision backend named \"%s\"%s%s", name,
+                 missing ? ": " : "", missing ? missing : "");
+    const dCollisionBackend *b = load(e, why, sizeof why);
+    DX_CHECK_ARG(b != NULL, return 0, "cannot load the \"%s\" backend: %s", name, why);
+    start_shadow(b);
+    return 1;
+}
+
+const char *dCollisionGetShadowBackend(void)
+{
+    ensure_native();
+    return shadow ? shadow->name : NULL;
+}
+
 int dxBackendCollide(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *contact, int skip)
 {
     ensure_native();
-    if (requested[0]) give_up_request();
+    if (requested[0]) give_up_request(requested, "", "using native");
+    if (requested_shadow[0]) give_up_request(requested_shadow, "shadow ", "no shadow mode");
     const dCollisionBackend *b = selected;
     if (b != backends[0].table && !b->supports(o1->ops->cls, o2->ops->cls)) {
         if (strict) {
@@ -243,19 +311,32 @@ int dxBackendCollide(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *contact, i
         }
         b = backends[0].table;
     }
+    if (shadow) return dxShadowCollide(b, shadow, o1, o2, flags, contact, skip);
     return b->collide(o1, o2, flags, contact, skip);
 }
 
-void dxBackendGeomChanged(dxGeom *g)
+static void notify_changed(dxGeom *g)
 {
     for (int i = 0; i < backend_count; i++)
         if (backends[i].table && backends[i].table->geom_changed)
             backends[i].table->geom_changed(g);
 }
 
-void dxBackendGeomDestroyed(dxGeom *g)
+static void notify_destroyed(dxGeom *g)
 {
     for (int i = 0; i < backend_count; i++)
         if (backends[i].table && backends[i].table->geom_destroyed)
             backends[i].table->geom_destroyed(g);
+}
+
+void dxBackendGeomChanged(dxGeom *g)
+{
+    notify_changed(g);
+    dxShadowNotify(g, notify_changed);
+}
+
+void dxBackendGeomDestroyed(dxGeom *g)
+{
+    notify_destroyed(g);
+    dxShadowNotify(g, notify_destroyed);
 }

@@ -65,6 +65,8 @@ struct dxGeom {
                                   // body's pose composed with it, geom_offset.c)
     void *backend_cache;          // a backend's shape object for this geom ...
     const void *backend_cache_owner;   // ... and which backend made it (it frees it)
+    void *shadow_cache;           // the same for the shadow backend (backend_shadow.c),
+    const void *shadow_cache_owner;    // swapped in around its calls
 };
 
 // ---- spaces ------------------------------------------------------------
