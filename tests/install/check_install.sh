@@ -4,6 +4,7 @@
 # - `pkg-config ode`, `pkg-config odedyn`, plain -lode (the linker script),
 #   ODE's `precision` variable;
 # - bin/ode-config: its options, and a program built with its flags;
+# - bin/odecontactdiff: it runs and measures native and every installed module;
 # - the static archives through `pkg-config --static` (a backend module cannot
 #   be loaded there: the registry says so and native stays), and a fully
 #   static program where a static libccd exists;
@@ -328,6 +329,24 @@ elif [ -x /usr/bin/python3 ] && ext=$(/usr/bin/python3 -c 'import ode; print(ode
     fi
 else
     skip "PyODE runs on our libode.so.8" "python3-pyode is not installed"
+fi
+
+# odecontactdiff: installed in bindir, it measures every installed backend.
+contactdiff=$(find "$prefix" -name odecontactdiff -type f | head -n 1)
+contactdiff_runs() {
+    LD_LIBRARY_PATH=$libdir "$contactdiff" --seed 1 --count 3 --pair box sphere --csv \
+        >"$work/contactdiff.csv"
+    [ $? -le 1 ] || return 1
+    for m in native $modules; do
+        name=${m##*/libodecollide-}
+        name=${name%.so}
+        grep -q "^$name,box-sphere,3," "$work/contactdiff.csv" || { echo "no $name row"; return 1; }
+    done
+}
+if [ -n "$contactdiff" ]; then
+    check "the installed odecontactdiff measures native and every installed module" contactdiff_runs
+else
+    check "odecontactdiff is installed" false
 fi
 
 check "the installed libodedyn defines no collision function" no_collision_code_in_libodedyn
