@@ -7,7 +7,8 @@
 // disagreements, with poses and both results kept; the program always sees
 // the first backend's contacts; FCL and Bullet (skipped when not built)
 // shadowing a box resting on a plane report a reduced manifold exactly when
-// that backend gives one contact there; bad arguments are reported.
+// that backend gives one contact there; FCL and Bullet, both caching
+// shapes, keep their own under shadow mode; bad arguments are reported.
 
 #include "test.h"
 
@@ -383,6 +384,43 @@ static int shadow_resting_box(const char *name)
 static int test_fcl_shadowing_a_resting_box(void) { return shadow_resting_box("fcl"); }
 static int test_bullet_shadowing_a_resting_box(void) { return shadow_resting_box("bullet"); }
 
+// FCL answering with Bullet shadowing: each keeps its own cached shapes
+// (both use the geom's cache), so FCL's contacts are those it gives alone,
+// also after a resize, and destroying the geoms frees both (the sanitizer
+// build finds leaks).
+static int test_two_caching_backends_keep_their_own_shapes(void)
+{
+    if (!backend_built("fcl") || !backend_built("bullet"))
+        return test_skip("fcl and bullet are not both built");
+    dGeomID box = dCreateBox(0, 1, 0.6, 0.4), cap = dCreateCapsule(0, 0.3, 0.8);
+    dGeomSetPosition(cap, 0.5, 0.2, 0.3);
+    dContactGeom alone[MAXC], shadowed[MAXC];
+    CHECK(dCollisionSetBackend("fcl") == 1);
+    for (int round = 0; round < 2; round++) {
+        if (round == 1) dGeomBoxSetLengths(box, 1.2, 0.8, 0.5);
+        CHECK(dCollisionSetShadowBackend("bullet") == 1);
+        int n1 = dCollide(box, cap, MAXC, shadowed, sizeof shadowed[0]);
+        CHECK(dCollisionSetShadowBackend(NULL) == 1);
+        int n0 = dCollide(box, cap, MAXC, alone, sizeof alone[0]);
+        CHECK(n0 >= 1 && n1 == n0);
+        for (int i = 0; i < n0; i++) {
+            CHECK(alone[i].depth == shadowed[i].depth);
+            CHECK(memcmp(alone[i].pos, shadowed[i].pos, sizeof alone[i].pos) == 0);
+            CHECK(memcmp(alone[i].normal, shadowed[i].normal, sizeof alone[i].normal) == 0);
+        }
+    }
+    CHECK(dCollisionSetShadowBackend("bullet") == 1);
+    dCollisionShadowReset();
+    CHECK(dCollide(box, cap, MAXC, shadowed, sizeof shadowed[0]) >= 1);
+    dCollisionShadowStats s = stats_of(dBoxClass, dCapsuleClass);
+    CHECK(s.calls == 1 && s.not_answered == 0);
+    dGeomDestroy(box);
+    dGeomDestroy(cap);
+    CHECK(dCollisionSetShadowBackend(NULL) == 1);
+    CHECK(dCollisionSetBackend("native") == 1);
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_the_environment_turns_shadow_mode_on),
     TEST_CASE(test_native_shadowing_native_agrees),
@@ -390,5 +428,6 @@ const test_case test_cases[] = {
     TEST_CASE(test_bad_arguments_are_reported),
     TEST_CASE(test_fcl_shadowing_a_resting_box),
     TEST_CASE(test_bullet_shadowing_a_resting_box),
+    TEST_CASE(test_two_caching_backends_keep_their_own_shapes),
     TEST_END
 };

@@ -9,7 +9,8 @@
  * selects one, so an unchanged program can switch (a name that is registered
  * later is selected when it registers).
  * A pair the selected backend does not support is handled by "native", with
- * one message through dMessage, unless strict mode makes that an error. */
+ * one message through dMessage, unless strict mode makes that an error.
+ * "first,shadow" (e.g. "native,fcl") also turns shadow mode on (below). */
 #ifndef ODE_BACKEND_H
 #define ODE_BACKEND_H
 
@@ -72,8 +73,8 @@ ODE_API int dCollisionBackendSupports(const char *name, int class1, int class2);
  * last report or reset, the summary table is printed on stderr.
  * ODE_COLLISION_BACKEND=first,shadow (e.g. "native,fcl") turns it on from the
  * environment. While it is on, dCollide calls that reach a backend are
- * serialised by one lock (so threads may call dCollide); when it is off it
- * costs one test per call. */
+ * serialised by one lock (so threads may call dCollide); turn it on or off
+ * while no other thread collides. When it is off it costs one test per call. */
 #define dCOLLISION_SHADOW_MAX_CONTACTS 64
 #define dCOLLISION_SHADOW_RECORDS 4
 enum {
