@@ -75,7 +75,7 @@ static void keep_record(pair_entry *e, dxGeom *o1, dxGeom *o2, int flags, const 
     }
 }
 
-static double larger(double a, double b) { return a > b ? a : b; }
+static double larger(double a, double b) { return b > a ? b : a; }
 
 // Count one compared call in its pair class.
 static void count(pair_entry *e, dxGeom *o1, dxGeom *o2, int flags, const dContactGeom *a, int na,

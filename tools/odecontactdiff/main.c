@@ -220,7 +220,8 @@ static void measure_scene(cd_results *res, const char **backends, const char *pa
     for (int i = 0; i < n; i++)
         for (int j = i + 1; j < n; j++) {
             contact_truth t;
-            if (contact_truth_compute(ids[i], ids[j], &t)) cd_measure(res, backends, ids[i], ids[j], &t);
+            if (contact_truth_compute(ids[i], ids[j], &t))
+                cd_measure(res, backends, ids[i], ids[j], &t);
         }
     for (int i = 0; i < n; i++) dGeomDestroy(ids[i]);
     free(ids);
@@ -254,9 +255,10 @@ int main(int argc, char **argv)
     }
     if (o.csv) cd_print_csv(stdout, &res);
     else {
-        printf("odecontactdiff: seed %lu, %ld random poses per pair%s%s; tolerances: depth and "
-               "separation 5 mm + 5 %%, points 1 cm + 10 %%\n", o.seed, o.count,
-               o.scene ? ", scene " : "", o.scene ? o.scene : "");
+        printf("odecontactdiff: ");
+        if (o.scene) printf("scene %s%s", o.scene, o.npairs ? ", " : "");
+        if (o.npairs || !o.scene) printf("seed %lu, %ld random poses per pair", o.seed, o.count);
+        printf("; tolerances: depth and separation 5 mm + 5 %%, points 1 cm + 10 %%\n");
         cd_print_table(stdout, &res);
     }
     if (o.plot && !cd_write_svg(o.plot, &res)) fail_usage("--plot: cannot write %s", o.plot);

@@ -17,7 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-static double larger(double a, double b) { return a > b ? a : b; }
+static double larger(double a, double b) { return b > a ? b : a; }
 
 double cd_grazing_band(const cd_shape *a, const cd_shape *b)
 {

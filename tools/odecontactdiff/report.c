@@ -53,8 +53,16 @@ typedef struct frame {
     double x0, x1, y0, y1;
 } frame;
 
-static double px(const frame *fr, double x) { return LEFT + (x - fr->x0) / (fr->x1 - fr->x0) * (W - LEFT - RIGHT); }
-static double py(const frame *fr, double y) { return H - BOTTOM - (y - fr->y0) / (fr->y1 - fr->y0) * (H - TOP - BOTTOM); }
+// Plot coordinates of a data point.
+static double px(const frame *fr, double x)
+{
+    return LEFT + (x - fr->x0) / (fr->x1 - fr->x0) * (W - LEFT - RIGHT);
+}
+
+static double py(const frame *fr, double y)
+{
+    return H - BOTTOM - (y - fr->y0) / (fr->y1 - fr->y0) * (H - TOP - BOTTOM);
+}
 
 // The backends (not the truth) in first-seen order; returns their count.
 static int backend_names(const cd_results *res, const char *names[8])
@@ -91,8 +99,8 @@ static frame plot_frame(const cd_results *res)
 
 static void axes(FILE *f, const frame *fr)
 {
-    fprintf(f, "<rect x=\"%d\" y=\"%d\" width=\"%d\" height=\"%d\" fill=\"none\" stroke=\"#444\"/>\n",
-            LEFT, TOP, W - LEFT - RIGHT, H - TOP - BOTTOM);
+    fprintf(f, "<rect x=\"%d\" y=\"%d\" width=\"%d\" height=\"%d\" fill=\"none\" "
+            "stroke=\"#444\"/>\n", LEFT, TOP, W - LEFT - RIGHT, H - TOP - BOTTOM);
     for (int i = 0; i <= 5; i++) {
         double x = fr->x0 + (fr->x1 - fr->x0) * i / 5, y = fr->y0 + (fr->y1 - fr->y0) * i / 5;
         fprintf(f, "<line x1=\"%.1f\" y1=\"%d\" x2=\"%.1f\" y2=\"%d\" stroke=\"#444\"/>"
@@ -120,8 +128,9 @@ int cd_write_svg(const char *path, const cd_results *res)
     FILE *f = fopen(path, "w");
     if (!f) return 0;
     frame fr = plot_frame(res);
-    fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
-            "width=\"%d\" height=\"%d\" font-family=\"sans-serif\" font-size=\"12\">\n"
+    fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
+            "font-family=\"sans-serif\" font-size=\"12\">\n"
             "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n"
             "<text x=\"%d\" y=\"24\" font-size=\"15\">Deepest depth error against the true "
             "depth (dashed: the contract's tolerance)</text>\n", W, H, LEFT);
