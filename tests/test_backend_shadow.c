@@ -206,7 +206,8 @@ static int collide_spheres(dGeomID a, dGeomID b, double gap, int told)
     dGeomSetPosition(b, gap, 0, 0);
     dContactGeom c[MAXC];
     int n = dCollide(a, b, MAXC, c, sizeof c[0]);
-    if (n != 1 || fabs(c[0].depth - (1 - gap)) > TOL(1e-12, 1e-6) || c[0].normal[0] != -1)
+    if (n != 1 || fabs(c[0].depth - (1 - gap)) > TOL(1e-12, 1e-6) ||
+        fabs(c[0].normal[0] + 1) > TOL(1e-12, 1e-6))
         return -1;
     return n;
 }
