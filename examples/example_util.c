@@ -53,7 +53,10 @@ static void near_callback(void *data, dGeomID o1, dGeomID o2)
         contact[i].surface = *s1;
         contact[i].surface.mode |= s2->mode;
         contact[i].surface.mu = (s1->mu + s2->mu) / 2;
-        contact[i].surface.bounce = s1->bounce > s2->bounce ? s1->bounce : s2->bounce;
+        if (s2->bounce > s1->bounce) {
+            contact[i].surface.bounce = s2->bounce;
+            contact[i].surface.bounce_vel = s2->bounce_vel;
+        }
         dJointID j = dJointCreateContact(c->world, c->group, &contact[i]);
         dJointAttach(j, b1, b2);
         if (c->seen_count < c->seen_capacity) c->seen[c->seen_count++] = contact[i].geom;

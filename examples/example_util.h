@@ -44,7 +44,7 @@ typedef struct exu_contacts {
 
 // Empty the group, collide the space and attach a contact joint per contact.
 // A geom's data, if set, is a dSurfaceParameters* used for its contacts (the
-// mean mu and the larger bounce of the pair's two). Bodies already joined by
+// modes of both, the mean mu, the bounce of the bouncier). Bodies already joined by
 // a non-contact joint do not collide.
 void exu_collide(exu_contacts *c, dSpaceID space);
 
