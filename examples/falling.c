@@ -21,6 +21,7 @@ static dContactGeom contact_buffer[1024];
 static struct object {
     dBodyID body;
     dGeomID geom;
+    int kind;
     long dropped_at;   // step number
 } objects[MAX_OBJECTS];
 static int object_count;
@@ -58,7 +59,7 @@ static void drop(int kind, dReal x, dReal y, dReal z, dReal angle)
     dRFromAxisAndAngle(R, 1, 0.5, 0.2, angle);
     dBodySetRotation(b, R);
     dGeomSetBody(g, b);
-    objects[object_count++] = (struct object){ b, g, steps };
+    objects[object_count++] = (struct object){ b, g, kind, steps };
 }
 
 static void start(void)
@@ -95,8 +96,7 @@ static void step(int pause)
     };
     dsSetTexture(DS_WOOD);
     for (int i = 0; i < object_count; i++) {
-        const int cls = dGeomGetClass(objects[i].geom);
-        const int kind = cls == dBoxClass ? 0 : cls == dSphereClass ? 1 : cls == dCapsuleClass ? 2 : 3;
+        const int kind = objects[i].kind;
         dsSetColor(colours[kind][0], colours[kind][1], colours[kind][2]);
         exu_draw_geom(objects[i].geom);
     }
