@@ -199,6 +199,8 @@ int main(int argc, char **argv)
     dInitODE2(0);
     world = dWorldCreate();
     dWorldSetGravity(world, 0, 0, -9.81);
+    // Stiff contacts in both precisions (single's default CFM, 1e-5, soaks up bounce).
+    dWorldSetCFM(world, 1e-10);
     dWorldSetAutoDisableFlag(world, 0);
     space = dHashSpaceCreate(0);
     dCreatePlane(space, 0, 0, 1, 0);
