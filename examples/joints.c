@@ -342,7 +342,7 @@ static void flip(void)
 
 static void start(void)
 {
-    static const float xyz[3] = { 0.0f, -6.5f, 3.2f };
+    static const float xyz[3] = { 0.0f, -8.0f, 3.6f };
     static const float hpr[3] = { 90.0f, -14.0f, 0.0f };
     dsSetViewpoint(xyz, hpr);
     exu_keys("joints", "  m: reverse the motors (they also reverse every 3 s)\n");

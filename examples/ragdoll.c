@@ -116,8 +116,8 @@ static void build(dReal lift)
 
 static void start(void)
 {
-    static const float xyz[3] = { 1.0f, -3.2f, 1.4f };
-    static const float hpr[3] = { 80.0f, -15.0f, 0.0f };
+    static const float xyz[3] = { 0.8f, -3.4f, 1.4f };
+    static const float hpr[3] = { 90.0f, -15.0f, 0.0f };
     dsSetViewpoint(xyz, hpr);
     exu_keys("ragdoll", "  k: kick the torso\n");
 }

@@ -119,8 +119,8 @@ static void add(int patch, int kind, dReal u, dReal v)
 
 static void start(void)
 {
-    static const float xyz[3] = { 0.0f, -8.5f, 4.0f };
-    static const float hpr[3] = { 90.0f, -22.0f, 0.0f };
+    static const float xyz[3] = { 0.0f, -10.0f, 5.0f };
+    static const float hpr[3] = { 90.0f, -25.0f, 0.0f };
     dsSetViewpoint(xyz, hpr);
     exu_keys("terrain", "  d: drop a ball on each terrain\n"
              "  left: a triangle mesh; right: a heightfield of the same surface\n");
