@@ -17,12 +17,14 @@ for name in falling stack chain buggy ragdoll joints friction terrain rays backe
         continue
     fi
     rm -f "$images/$name.png"
-    if "$program" -headless -frames 300 -png "$images/$name.png" >/dev/null &&
-       [ -s "$images/$name.png" ]; then
-        echo "docs/images/$name.png"
-    else
-        echo "$name: failed (run $program -headless to see why)"
+    if ! "$program" -headless -frames 300 -png "$images/$name.png" >/dev/null; then
+        echo "$name: its checks failed (run $program -headless to see why)"
         failed=$((failed + 1))
+    elif [ ! -s "$images/$name.png" ]; then
+        echo "$name: ran, but wrote no $images/$name.png (is drawstuff's -png supported?)"
+        failed=$((failed + 1))
+    else
+        echo "docs/images/$name.png"
     fi
 done
 exit $failed
