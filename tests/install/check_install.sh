@@ -71,6 +71,31 @@ build_with_pkgconfig() {
     LD_LIBRARY_PATH=$libdir "$work/prog_$1"
 }
 
+# rpath DIR: what the --libs flags add for a libdir DIR: an rpath, unless the
+# prefix is one the loader searches.
+rpath() {
+    case $prefix in
+    /usr | /usr/local) ;;
+    *) printf ' %s' "-Wl,-rpath,$1" ;;
+    esac
+}
+
+# A program built with the flags of pkg-config (or ode-config) runs as
+# installed, without LD_LIBRARY_PATH, on the installed libraries.
+runs_without_library_path() {
+    local flags
+    case $1 in
+    ode-config) flags="$("$ode_config" --cflags) $("$ode_config" --libs)" ;;
+    *) flags=$(ours_pc --cflags --libs "$1") ;;
+    esac
+    cc -std=c99 -o "$work/norpath_$1" "$here/ode_program.c" $flags -lm &&
+    env -u LD_LIBRARY_PATH ldd "$work/norpath_$1" | grep -E 'libode' &&
+    ! env -u LD_LIBRARY_PATH ldd "$work/norpath_$1" | grep -E 'libode.* => not found' &&
+    [ -z "$(env -u LD_LIBRARY_PATH ldd "$work/norpath_$1" | grep -E 'libode' |
+            grep -v " => $libdir/")" ] &&
+    env -u LD_LIBRARY_PATH "$work/norpath_$1"
+}
+
 build_with_plain_lode() {
     cc -o "$work/prog_lode" "$here/ode_program.c" -I"$prefix/include" -L"$libdir" -lode -lm &&
     LD_LIBRARY_PATH=$libdir "$work/prog_lode"
@@ -82,17 +107,19 @@ precision_variable() {
     [ "$p" = dDOUBLE ] || [ "$p" = dSINGLE ]
 }
 
-# ode-config answers ODE's options, in order, relocated by --prefix=DIR.
+# ode-config answers ODE's options, in order, relocated by --prefix=DIR (with
+# an rpath to the libdir, as the prefix is not /usr or /usr/local).
 ode_config_options() {
     local libdir_rel=${libdir#"$prefix"/}
     [ "$("$ode_config" --version)" = "$(ours_pc --modversion ode)" ] &&
     [ "$("$ode_config" --prefix)" = "$prefix" ] &&
     [ "$("$ode_config" --exec-prefix)" = "$prefix" ] &&
     [ "$("$ode_config" --cflags)" = "-I$prefix/include" ] &&
-    [ "$("$ode_config" --libs)" = "-L$libdir -lode" ] &&
+    [ "$("$ode_config" --libs)" = "-L$libdir -lode$(rpath "$libdir")" ] &&
     [ "$("$ode_config" --prefix=/x --cflags --libs | tr '\n' ' ')" = \
-      "-I/x/include -L/x/$libdir_rel -lode " ] &&
-    [ "$("$ode_config" --exec-prefix=/e --prefix=/x --libs)" = "-L/e/$libdir_rel -lode" ] &&
+      "-I/x/include -L/x/$libdir_rel -lode$(rpath "/x/$libdir_rel") " ] &&
+    [ "$("$ode_config" --exec-prefix=/e --prefix=/x --libs)" = \
+      "-L/e/$libdir_rel -lode$(rpath "/e/$libdir_rel")" ] &&
     ! "$ode_config" 2>/dev/null && ! "$ode_config" --bogus 2>/dev/null
 }
 
@@ -251,6 +278,10 @@ echo "TAP version 13"
 check "an ODE program builds and runs with pkg-config ode" build_with_pkgconfig ode
 check "a dynamics-only program builds and runs with pkg-config odedyn" build_with_pkgconfig odedyn
 check "an ODE program builds and runs with plain -lode (linker script)" build_with_plain_lode
+for how in ode odedyn ode-config; do
+    check "a program built with $how's flags runs without LD_LIBRARY_PATH" \
+        runs_without_library_path "$how"
+done
 check "ode.pc has ODE's precision variable" precision_variable
 
 if [ -n "$ode_config" ]; then
