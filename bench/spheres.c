@@ -77,17 +77,21 @@ int main(int argc, char **argv)
     }
 
     int escaped = 0;
-    double ke = 0, top = 0;
+    double ke = 0, top = 0, vmax = 0;
     for (int i = 0; i < count; i++) {
         const dReal *p = dBodyGetPosition(body[i]);
+        const dReal *v = dBodyGetLinearVel(body[i]);
+        double speed = sqrt((double)v[0] * v[0] + (double)v[1] * v[1] + (double)v[2] * v[2]);
+        if (speed > vmax) vmax = speed;
         if (fabs(p[0]) > HALF || fabs(p[1]) > HALF || p[2] < 0 || p[2] > HEIGHT) escaped++;
         if (p[2] > top) top = p[2];
         ke += bench_body_ke(body[i]);
     }
     bench_report("spheres", BENCH_ENGINE, threads.variant, count, steps, coll_s,
                  step_s, "iterations=%d max_pen=%.6f escaped=%d top_z=%.4f ke_end=%.6g "
-                 "contacts_per_step=%.1f",
-                 iterations, con.max_depth, escaped, top, ke, (double)con.contacts / steps);
+                 "vmax_end=%.6g ke_per_kg_end=%.6g contacts_per_step=%.1f",
+                 iterations, con.max_depth, escaped, top, ke, vmax, ke / count,
+                 (double)con.contacts / steps);
 
     dJointGroupDestroy(con.group);
     dSpaceDestroy(space);

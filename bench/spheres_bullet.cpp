@@ -58,17 +58,21 @@ int main(int argc, char **argv)
     double total_s = 0, max_pen = 0;
     long contacts = 0;
     for (int s = 0; s < steps; s++) {
+        bench_count_on();
         double t0 = bench_now();
         w.world->stepSimulation(dt, 0);
         total_s += bench_now() - t0;
+        bench_count_off();
         double pen = w.penetration(&contacts);
         if (pen > max_pen) max_pen = pen;
     }
 
     int escaped = 0;
-    double ke = 0, top = 0;
+    double ke = 0, top = 0, vmax = 0;
     for (size_t i = first; i < w.bodies.size(); i++) {
         const btVector3 p = w.bodies[i]->getCenterOfMassPosition();
+        double speed = w.bodies[i]->getLinearVelocity().length();
+        if (speed > vmax) vmax = speed;
         if (std::fabs(p.x()) > HALF || std::fabs(p.y()) > HALF || p.z() < 0 || p.z() > HEIGHT)
             escaped++;
         if (p.z() > top) top = p.z();
@@ -77,7 +81,8 @@ int main(int argc, char **argv)
     bench_report("spheres", BENCH_ENGINE, "quick", count, steps, w.world->coll_s,
                  total_s - w.world->coll_s,
                  "iterations=%d max_pen=%.6f escaped=%d top_z=%.4f ke_end=%.6g "
-                 "contacts_per_step=%.1f",
-                 iterations, max_pen, escaped, top, ke, (double)contacts / steps);
+                 "vmax_end=%.6g ke_per_kg_end=%.6g contacts_per_step=%.1f",
+                 iterations, max_pen, escaped, top, ke, vmax, ke / count,
+                 (double)contacts / steps);
     return 0;
 }
