@@ -14,7 +14,9 @@
 
 // The sweeps are built twice where the compiler can pick a version when the
 // library is loaded (GNU ifunc, x86-64): for AVX2 and for the baseline.
-#if defined(__GNUC__) && defined(__x86_64__) && defined(__ELF__) && defined(__has_attribute)
+// (-DQS_SWEEP_CLONES= builds the baseline alone, to compare the two.)
+#if !defined(QS_SWEEP_CLONES) && defined(__GNUC__) && defined(__x86_64__) && \
+    defined(__ELF__) && defined(__has_attribute)
 #if __has_attribute(target_clones)
 #define QS_SWEEP_CLONES __attribute__((target_clones("avx2", "default")))
 #endif
@@ -295,10 +297,12 @@ QS_SWEEP_CLONES static void sweep_rows(const qs_system *sys)
         for (int k = 0; k < n; k++) update_free_row(&rows[order[k]], lambda, fc);
         return;
     }
-    for (int k = 0; k < n; k++) {
-        if (k + PREFETCH_AHEAD < n) prefetch_row(&rows[order[k + PREFETCH_AHEAD]]);
+    int k = 0;
+    for (; k + PREFETCH_AHEAD < n; k++) {
+        prefetch_row(&rows[order[k + PREFETCH_AHEAD]]);
         update_free_row(&rows[order[k]], lambda, fc);
     }
+    for (; k < n; k++) update_free_row(&rows[order[k]], lambda, fc);
 }
 
 void dxQuickSweep(const qs_system *sys, int rows_first)
