@@ -19,6 +19,24 @@
 
 #define BENCH_MAX_ARGS 16
 
+// Instruction counting: under `valgrind --tool=callgrind --collect-atstart=no` (bench/run
+// --instructions) only what lies between bench_count_on() and bench_count_off() is counted,
+// the same timed parts as the clock's. Outside valgrind these are a few no-op instructions;
+// without valgrind's headers, nothing.
+#if defined(__has_include)
+#if __has_include(<valgrind/callgrind.h>)
+#include <valgrind/callgrind.h>
+#define BENCH_HAVE_CALLGRIND 1
+#endif
+#endif
+#ifdef BENCH_HAVE_CALLGRIND
+#define bench_count_on() CALLGRIND_TOGGLE_COLLECT
+#define bench_count_off() CALLGRIND_TOGGLE_COLLECT
+#else
+#define bench_count_on() ((void)0)
+#define bench_count_off() ((void)0)
+#endif
+
 typedef struct bench_args {
     int argc;
     char **argv;

@@ -69,9 +69,11 @@ int main(int argc, char **argv)
     double total_s = 0, max_pen = 0, sep_max = 0, sep_end = 0;
     long contacts = 0;
     for (int s = 0; s < steps; s++) {
+        bench_count_on();
         double t0 = bench_now();
         w.world->stepSimulation(dt, 0);
         total_s += bench_now() - t0;
+        bench_count_off();
         double pen = w.penetration(&contacts);
         if (pen > max_pen) max_pen = pen;
         sep_end = 0;

@@ -66,9 +66,11 @@ int main(int argc, char **argv)
                              home[i][1] + bench_rand(&rng, -0.05, 0.05),
                              home[i][2] + bench_rand(&rng, -0.05, 0.05));
         }
+        bench_count_on();
         double t0 = bench_now();
         dSpaceCollide(space, &pairs, count_pair);
         coll += bench_now() - t0;
+        bench_count_off();
     }
     bench_report("pile", BENCH_ENGINE, kind, boxes, steps, coll, 0,
                  "moving_pct=%ld pairs_per_step=%.1f", percent, (double)pairs / steps);

@@ -174,13 +174,19 @@ int main(int argc, char **argv)
         if (sep_end > sep_max) sep_max = sep_end;
     }
 
-    double ke = 0;
-    for (int i = 0; i < figures * PARTS; i++) ke += bench_body_ke(body[i]);
+    double ke = 0, mass = 0;
+    for (int i = 0; i < figures * PARTS; i++) {
+        dMass m;
+        dBodyGetMass(body[i], &m);
+        ke += bench_body_ke(body[i]);
+        mass += m.mass;
+    }
     bench_report("ragdolls", BENCH_ENGINE, threads.variant, figures * PARTS, steps,
                  coll_s, step_s,
                  "iterations=%d max_pen=%.6f joint_sep=%.6f joint_sep_end=%.6f ke_end=%.6g "
-                 "contacts_per_step=%.1f",
-                 iterations, con.max_depth, sep_max, sep_end, ke, (double)con.contacts / steps);
+                 "ke_per_kg_end=%.6g contacts_per_step=%.1f",
+                 iterations, con.max_depth, sep_max, sep_end, ke, ke / mass,
+                 (double)con.contacts / steps);
 
     dJointGroupDestroy(con.group);
     dSpaceDestroy(space);

@@ -8,7 +8,8 @@
 // 50 cm thick). Hash space, 4 contacts per pair, mu 0.8 with dContactApprox1, dt 1/60,
 // gravity 9.81, world ERP and CFM left at their defaults.
 // Quality: the deepest contact seen, how many spheres ended outside the container (escaped),
-// the height of the highest sphere and the kinetic energy at the end.
+// the height of the highest sphere, the kinetic energy and the largest speed at the end, and
+// how many spheres moved faster than 0.1 m/s per step over the last 60 steps (moving_end).
 
 #include "bench_ode.h"
 
@@ -19,6 +20,8 @@
 #define HEIGHT 4.0  // wall height
 #define PITCH 0.24  // spawn grid spacing
 #define PER_ROW 12
+#define LAST 60      // the steps (1 s) over which moving_end counts
+#define MOVING 0.1   // m/s: a sphere faster than this is still moving
 
 int main(int argc, char **argv)
 {
@@ -72,22 +75,34 @@ int main(int argc, char **argv)
     bench_contacts con;
     bench_contacts_init(&con, world);
     double coll_s = 0, step_s = 0;
+    long moving = 0;   // spheres faster than MOVING, summed over the last LAST steps
     for (int s = 0; s < steps; s++) {
         bench_timed_step(space, &con, stepper, dt, iterations, &coll_s, &step_s);
+        if (s < steps - LAST) continue;
+        for (int i = 0; i < count; i++) {
+            const dReal *v = dBodyGetLinearVel(body[i]);
+            moving += (double)v[0] * v[0] + (double)v[1] * v[1] + (double)v[2] * v[2] >
+                      MOVING * MOVING;
+        }
     }
+    const int last = steps < LAST ? steps : LAST;
 
     int escaped = 0;
-    double ke = 0, top = 0;
+    double ke = 0, top = 0, vmax = 0;
     for (int i = 0; i < count; i++) {
         const dReal *p = dBodyGetPosition(body[i]);
+        const dReal *v = dBodyGetLinearVel(body[i]);
+        double speed = sqrt((double)v[0] * v[0] + (double)v[1] * v[1] + (double)v[2] * v[2]);
+        if (speed > vmax) vmax = speed;
         if (fabs(p[0]) > HALF || fabs(p[1]) > HALF || p[2] < 0 || p[2] > HEIGHT) escaped++;
         if (p[2] > top) top = p[2];
         ke += bench_body_ke(body[i]);
     }
     bench_report("spheres", BENCH_ENGINE, threads.variant, count, steps, coll_s,
                  step_s, "iterations=%d max_pen=%.6f escaped=%d top_z=%.4f ke_end=%.6g "
-                 "contacts_per_step=%.1f",
-                 iterations, con.max_depth, escaped, top, ke, (double)con.contacts / steps);
+                 "vmax_end=%.6g ke_per_kg_end=%.6g moving_end=%.2f contacts_per_step=%.1f",
+                 iterations, con.max_depth, escaped, top, ke, vmax, ke / count,
+                 (double)moving / last, (double)con.contacts / steps);
 
     dJointGroupDestroy(con.group);
     dSpaceDestroy(space);

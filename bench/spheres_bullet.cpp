@@ -11,6 +11,8 @@
 static const double RADIUS = 0.1, MASS = 1.0, HALF = 1.5, WALL = 0.5, HEIGHT = 4.0;
 static const double PITCH = 0.24;
 static const int PER_ROW = 12;
+static const int LAST = 60;          // the steps (1 s) over which moving_end counts
+static const double MOVING = 0.1;    // m/s: a sphere faster than this is still moving
 
 int main(int argc, char **argv)
 {
@@ -56,19 +58,27 @@ int main(int argc, char **argv)
     }
 
     double total_s = 0, max_pen = 0;
-    long contacts = 0;
+    long contacts = 0, moving = 0;   // as in spheres.c: spheres faster than MOVING
     for (int s = 0; s < steps; s++) {
+        bench_count_on();
         double t0 = bench_now();
         w.world->stepSimulation(dt, 0);
         total_s += bench_now() - t0;
+        bench_count_off();
         double pen = w.penetration(&contacts);
         if (pen > max_pen) max_pen = pen;
+        if (s < steps - LAST) continue;
+        for (size_t i = first; i < w.bodies.size(); i++)
+            moving += w.bodies[i]->getLinearVelocity().length() > MOVING;
     }
+    const int last = steps < LAST ? steps : LAST;
 
     int escaped = 0;
-    double ke = 0, top = 0;
+    double ke = 0, top = 0, vmax = 0;
     for (size_t i = first; i < w.bodies.size(); i++) {
         const btVector3 p = w.bodies[i]->getCenterOfMassPosition();
+        double speed = w.bodies[i]->getLinearVelocity().length();
+        if (speed > vmax) vmax = speed;
         if (std::fabs(p.x()) > HALF || std::fabs(p.y()) > HALF || p.z() < 0 || p.z() > HEIGHT)
             escaped++;
         if (p.z() > top) top = p.z();
@@ -77,7 +87,8 @@ int main(int argc, char **argv)
     bench_report("spheres", BENCH_ENGINE, "quick", count, steps, w.world->coll_s,
                  total_s - w.world->coll_s,
                  "iterations=%d max_pen=%.6f escaped=%d top_z=%.4f ke_end=%.6g "
-                 "contacts_per_step=%.1f",
-                 iterations, max_pen, escaped, top, ke, (double)contacts / steps);
+                 "vmax_end=%.6g ke_per_kg_end=%.6g moving_end=%.2f contacts_per_step=%.1f",
+                 iterations, max_pen, escaped, top, ke, vmax, ke / count,
+                 (double)moving / last, (double)contacts / steps);
     return 0;
 }

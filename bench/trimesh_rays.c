@@ -47,6 +47,7 @@ int main(int argc, char **argv)
             tri[t][0] = a, tri[t][1] = b, tri[t][2] = d, t++;
             tri[t][0] = a, tri[t][1] = d, tri[t][2] = c, t++;
         }
+    bench_count_on();
     double t0 = bench_now();
     dTriMeshDataID data = dGeomTriMeshDataCreate();
     dGeomTriMeshDataBuildDouble(data, v, 3 * sizeof(double), nv, tri, 3 * nt,
@@ -55,6 +56,7 @@ int main(int argc, char **argv)
     dReal aabb[6];
     dGeomGetAABB(mesh, aabb);   // the tree is built by now in both engines
     double build_s = bench_now() - t0;
+    bench_count_off();
 
     bench_rng rng = bench_rng_init(13);
     for (int i = 0; i < rays; i++) {
@@ -71,6 +73,7 @@ int main(int argc, char **argv)
     long hits = 0;
     double dist = 0, ray_s = 0;
     for (int k = 0; k < rounds; k++) {
+        bench_count_on();
         double t1 = bench_now();
         for (int i = 0; i < rays; i++) {
             const double *r = ray[i];
@@ -83,6 +86,7 @@ int main(int argc, char **argv)
             }
         }
         ray_s += bench_now() - t1;
+        bench_count_off();
     }
     bench_report("trimesh_rays", BENCH_ENGINE, "closest", rays, rounds, ray_s, build_s,
                  "triangles=%d hits=%ld mean_dist=%.6f us_per_ray=%.3f", nt, hits,

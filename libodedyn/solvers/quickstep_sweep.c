@@ -2,14 +2,37 @@
 //
 // quickstep_sweep.c -- one sweep of dWorldQuickStep's projected SOR over
 // every block and every row of all islands (quickstep.h). This is where
-// QuickStep spends its time: the updates work on pairs of numbers (a block's
-// residuals, lambdas and Ainv res two rows at a time), the block updates are
+// QuickStep spends its time: the updates work on fours and pairs of numbers
+// (a body's 6 numbers as 4 + 2; a block's residuals, lambdas and Ainv res two
+// rows at a time), the block updates are
 // inlined once per size so that the loops have constant bounds, and the row
 // update branches only on one body or two.
 
 #include "quickstep.h"
 
 #include <string.h>
+
+// The sweeps are built twice where the compiler can pick a version when the
+// library is loaded (GNU ifunc: x86-64, ELF, glibc): for AVX2 and for the
+// baseline. (-DQS_SWEEP_CLONES= builds the baseline alone, to compare the two.)
+#if !defined(QS_SWEEP_CLONES) && defined(__GNUC__) && defined(__x86_64__) && \
+    defined(__ELF__) && defined(__GLIBC__) && defined(__has_attribute)
+#if __has_attribute(target_clones)
+#define QS_SWEEP_CLONES __attribute__((target_clones("avx2", "default")))
+#endif
+#endif
+#ifndef QS_SWEEP_CLONES
+#define QS_SWEEP_CLONES
+#endif
+// The functions that take or return fours are all inlined into the sweeps:
+// no call passes them, so the baseline's ABI note about them does not apply.
+#if defined(__clang__)
+#if __has_warning("-Wpsabi")
+#pragma clang diagnostic ignored "-Wpsabi"
+#endif
+#elif defined(__GNUC__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
 
 // The rows are read in a random order that hardware prefetchers cannot
 // guess, and a big island's rows do not fit in the caches: the row this many
@@ -37,11 +60,94 @@ QS_INLINE void store2(qs_v2 v, dReal *p)
     memcpy(p, &v, sizeof v);
 }
 
-// x += delta M for np pairs.
-QS_INLINE void add_pairs(qs_v2 *x, dReal delta, const qs_v2 *M, int np)
+// Fours of numbers: a body's 6 numbers of J, M or fc are a four and a pair
+// (4 + 2), so that an update takes half the arithmetic of pairs alone where
+// the machine has 4-wide vectors (AVX: the sweeps are built for it too,
+// above); elsewhere the compiler splits them in pairs. Sums are made in the
+// same order either way: the results do not depend on which code runs.
+#if defined(__GNUC__)
+typedef dReal qs_v4 __attribute__((vector_size(4 * sizeof(dReal))));
+#define v4_add(x, y) ((x) + (y))
+#define v4_mul(x, y) ((x) * (y))
+QS_INLINE qs_v4 v4_splat(dReal a)
 {
-    const qs_v2 k = qs_splat(delta);
-    for (int e = 0; e < np; e++) x[e] = qs_add(x[e], qs_mul(k, M[e]));
+    qs_v4 v = { a, a, a, a };
+    return v;
+}
+// [a0 + a2, a1 + a3] + b
+QS_INLINE qs_v2 v4_fold(qs_v4 a, qs_v2 b)
+{
+    const qs_v2 lo = { a[0], a[1] }, hi = { a[2], a[3] };
+    return (lo + hi) + b;
+}
+#else
+typedef struct qs_v4 {
+    dReal e[4];
+} qs_v4;
+static inline qs_v4 v4_add(qs_v4 x, qs_v4 y)
+{
+    qs_v4 v = { { x.e[0] + y.e[0], x.e[1] + y.e[1], x.e[2] + y.e[2], x.e[3] + y.e[3] } };
+    return v;
+}
+static inline qs_v4 v4_mul(qs_v4 x, qs_v4 y)
+{
+    qs_v4 v = { { x.e[0] * y.e[0], x.e[1] * y.e[1], x.e[2] * y.e[2], x.e[3] * y.e[3] } };
+    return v;
+}
+static inline qs_v4 v4_splat(dReal a)
+{
+    qs_v4 v = { { a, a, a, a } };
+    return v;
+}
+static inline qs_v2 v4_fold(qs_v4 a, qs_v2 b)
+{
+    qs_v2 v = { { (a.e[0] + a.e[2]) + b.e[0], (a.e[1] + a.e[3]) + b.e[1] } };
+    return v;
+}
+#endif
+
+QS_INLINE qs_v4 load4(const dReal *p)
+{
+    qs_v4 v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+
+QS_INLINE void store4(qs_v4 v, dReal *p)
+{
+    memcpy(p, &v, sizeof v);
+}
+
+// A body's 6 numbers of fc, in registers.
+typedef struct qs_b6 {
+    qs_v4 a;   // numbers 0-3
+    qs_v2 b;   // numbers 4-5
+} qs_b6;
+
+QS_INLINE qs_b6 b6_load(const dReal *p)
+{
+    qs_b6 x = { load4(p), load2(p + 4) };
+    return x;
+}
+
+QS_INLINE void b6_store(qs_b6 x, dReal *p)
+{
+    store4(x.a, p);
+    store2(x.b, p + 4);
+}
+
+// One body's part of J . x (J: its 6 numbers), the two lanes not yet
+// summed: lane k is (J_k x_k + J_k+2 x_k+2) + J_k+4 x_k+4.
+QS_INLINE qs_v2 b6_dot(const dReal *J, qs_b6 x)
+{
+    return v4_fold(v4_mul(load4(J), x.a), qs_mul(load2(J + 4), x.b));
+}
+
+// x + delta M for one body's 6 numbers of M (d4, d2: delta splat).
+QS_INLINE qs_b6 b6_add(qs_b6 x, qs_v4 d4, qs_v2 d2, const dReal *M)
+{
+    qs_b6 y = { v4_add(x.a, v4_mul(d4, load4(M))), qs_add(x.b, qs_mul(d2, load2(M + 4))) };
+    return y;
 }
 
 // [sum of a's lanes, sum of b's lanes].
@@ -56,12 +162,13 @@ QS_INLINE qs_v2 hadd2(qs_v2 a, qs_v2 b)
 #endif
 }
 
-// J . x for np pairs of J and x (3 or 6), the two lanes not yet summed.
-QS_INLINE qs_v2 dot_lanes(const qs_v2 *J, const qs_v2 *x, int np)
+// Row a's J . fc of a block (12 numbers a row: its first body's 6, then its
+// second's), the two lanes not yet summed; np 3: one body.
+QS_INLINE qs_v2 block_dot(const qs_v2 *J, int a, qs_b6 x0, qs_b6 x1, int np)
 {
-    qs_v2 s = qs_add(qs_add(qs_mul(J[0], x[0]), qs_mul(J[1], x[1])), qs_mul(J[2], x[2]));
-    if (np == 6)
-        s = qs_add(s, qs_add(qs_add(qs_mul(J[3], x[3]), qs_mul(J[4], x[4])), qs_mul(J[5], x[5])));
+    const dReal *Ja = (const dReal *)(J + 6 * a);
+    qs_v2 s = b6_dot(Ja, x0);
+    if (np == 6) s = qs_add(s, b6_dot(Ja + 6, x1));
     return s;
 }
 
@@ -74,18 +181,14 @@ QS_INLINE void update_block(const qs_block *blk, int n, int np, dReal *lambda, d
     const qs_v2 *J = blk->J, *M = blk->M;
     const qs_v2 *Ainv = (const qs_v2 *)blk->Ainv;   // rows of w / 2 pairs
     dReal *f0 = fc + blk->o0, *f1 = fc + blk->o1, *l = lambda + blk->first;
-    qs_v2 x[6] = { load2(f0), load2(f0 + 2), load2(f0 + 4) };
-    if (np == 6) {
-        x[3] = load2(f1);
-        x[4] = load2(f1 + 2);
-        x[5] = load2(f1 + 4);
-    }
+    qs_b6 x0 = b6_load(f0), x1 = x0;
+    if (np == 6) x1 = b6_load(f1);
     qs_v2 res[QS_MAX_BLOCK / 2];   // in pairs: res[a / 2] lane a % 2
     for (int a = 0; a < QS_MAX_BLOCK / 2; a++) res[a] = qs_splat(0);   // (for the compiler)
     for (int a = 0; a < n; a += 2) {
-        const qs_v2 sa = dot_lanes(J + 6 * a, x, np);
+        const qs_v2 sa = block_dot(J, a, x0, x1, np);
         if (a + 1 < n) {
-            const qs_v2 sb = dot_lanes(J + 6 * (a + 1), x, np);
+            const qs_v2 sb = block_dot(J, a + 1, x0, x1, np);
             const qs_v2 r = qs_sub(load2(blk->rhs + a), qs_mul(load2(blk->cfm + a), load2(l + a)));
             res[a / 2] = qs_sub(r, hadd2(sa, sb));
         } else {
@@ -106,11 +209,15 @@ QS_INLINE void update_block(const qs_block *blk, int n, int np, dReal *lambda, d
             l[a] += qs_lane(d, 0);
         }
     }
-    for (int a = 0; a < n; a++) add_pairs(x, delta[a], M + 6 * a, np);
-    for (int e = 0; e < 3; e++) {
-        store2(x[e], f0 + 2 * e);
-        if (np == 6) store2(x[3 + e], f1 + 2 * e);
+    for (int a = 0; a < n; a++) {
+        const qs_v4 d4 = v4_splat(delta[a]);
+        const qs_v2 d2 = qs_splat(delta[a]);
+        const dReal *Ma = (const dReal *)(M + 6 * a);
+        x0 = b6_add(x0, d4, d2, Ma);
+        if (np == 6) x1 = b6_add(x1, d4, d2, Ma + 6);
     }
+    b6_store(x0, f0);
+    if (np == 6) b6_store(x1, f1);
 }
 
 QS_INLINE void update_block_n(const qs_block *blk, int n, dReal *lambda, dReal *fc)
@@ -126,28 +233,22 @@ QS_INLINE void update_block_n(const qs_block *blk, int n, dReal *lambda, dReal *
 QS_INLINE void update_row(const qs_row *q, int coupled, int np, dReal *lambda, dReal *fc)
 {
     dReal *f0 = fc + q->o0, *f1 = fc + q->o1;
-    qs_v2 x[3] = { load2(f0), load2(f0 + 2), load2(f0 + 4) };
-    qs_v2 y[3];
+    const qs_b6 x0 = b6_load(f0);
+    qs_b6 x1 = x0;
     const dReal s = dFabs(lambda[q->f]), old = lambda[q->pos];
-    qs_v2 dot = qs_add(qs_add(qs_mul(q->J[0], x[0]), qs_mul(q->J[1], x[1])),
-                       qs_mul(q->J[2], x[2]));
+    qs_v2 dot = b6_dot((const dReal *)q->J, x0);
     if (np == 6) {
-        y[0] = load2(f1);
-        y[1] = load2(f1 + 2);
-        y[2] = load2(f1 + 4);
-        dot = qs_add(dot, qs_add(qs_add(qs_mul(q->J1[0], y[0]), qs_mul(q->J1[1], y[1])),
-                                 qs_mul(q->J1[2], y[2])));
+        x1 = b6_load(f1);
+        dot = qs_add(dot, b6_dot((const dReal *)q->J1, x1));
     }
     const dReal now = clamp(old + q->rhs - q->cfm * old - (qs_lane(dot, 0) + qs_lane(dot, 1)),
                             q->lo * s, q->hi * s);
     lambda[q->pos] = now;
     const dReal delta = now - old;
-    add_pairs(x, delta, q->M, 3);
-    for (int e = 0; e < 3; e++) store2(x[e], f0 + 2 * e);
-    if (np == 6) {
-        add_pairs(y, delta, q->M1, 3);
-        for (int e = 0; e < 3; e++) store2(y[e], f1 + 2 * e);
-    }
+    const qs_v4 d4 = v4_splat(delta);
+    const qs_v2 d2 = qs_splat(delta);
+    b6_store(b6_add(x0, d4, d2, (const dReal *)q->M), f0);
+    if (np == 6) b6_store(b6_add(x1, d4, d2, (const dReal *)q->M1), f1);
     if (coupled)
         for (int a = 0; a < q->gn; a++) lambda[q->gfirst + a] += delta * q->g[a];
 }
@@ -172,7 +273,7 @@ QS_INLINE void prefetch_row(const qs_row *q)
 }
 
 // The blocks in bseq, each followed by its coupled rows.
-static void sweep_blocks(const qs_system *sys)
+QS_SWEEP_CLONES static void sweep_blocks(const qs_system *sys)
 {
     dReal *lambda = sys->lambda, *fc = sys->fc;
     for (int k = 0; k < sys->nblocks; k++) {
@@ -191,7 +292,7 @@ static void sweep_blocks(const qs_system *sys)
 
 // The rows in seq; those of a big system (beyond PREFETCH_BYTES) fetched
 // ahead.
-static void sweep_rows(const qs_system *sys)
+QS_SWEEP_CLONES static void sweep_rows(const qs_system *sys)
 {
     dReal *lambda = sys->lambda, *fc = sys->fc;
     const qs_row *rows = sys->rows;
@@ -200,10 +301,12 @@ static void sweep_rows(const qs_system *sys)
         for (int k = 0; k < n; k++) update_free_row(&rows[order[k]], lambda, fc);
         return;
     }
-    for (int k = 0; k < n; k++) {
-        if (k + PREFETCH_AHEAD < n) prefetch_row(&rows[order[k + PREFETCH_AHEAD]]);
+    int k = 0;
+    for (; k + PREFETCH_AHEAD < n; k++) {
+        prefetch_row(&rows[order[k + PREFETCH_AHEAD]]);
         update_free_row(&rows[order[k]], lambda, fc);
     }
+    for (; k < n; k++) update_free_row(&rows[order[k]], lambda, fc);
 }
 
 void dxQuickSweep(const qs_system *sys, int rows_first)
