@@ -249,6 +249,20 @@ bool in_order(dGeomID g1, dGeomID g2)
     return std::less<const void *>()(g1, g2);
 }
 
+// What Bullet leaves out of the contract (issue 14): a capsule or cylinder
+// on a plane gets one point even with multipoint perturbation, which becomes
+// the manifold of its end or rim points under the plane Bullet's answer
+// defines; box-box points are the middle of the witness segment (Bullet's
+// port of ODE's box-box), put back where they lie in both boxes.
+void complete_contacts(dGeomID o1, dGeomID o2, dxContactSink *sink)
+{
+    const int c1 = dGeomGetClass(o1), c2 = dGeomGetClass(o2);
+    auto curved = [](int c) { return c == dCapsuleClass || c == dCylinderClass; };
+    if (c2 == dPlaneClass && curved(c1)) dxSinkPlaneManifold(sink, o1, 1);
+    if (c1 == dPlaneClass && curved(c2)) dxSinkPlaneManifold(sink, o2, 0);
+    if (c1 == dBoxClass && c2 == dBoxClass) dxSinkPointsInBoth(sink, o1, o2);
+}
+
 // The contacts of two solids, Bullet seeing them as (first, second).
 int collide_pair(dGeomID o1, dGeomID o2, int flags, dContactGeom *out, int skip)
 {
@@ -269,6 +283,7 @@ int collide_pair(dGeomID o1, dGeomID o2, int flags, dContactGeom *out, int skip)
     SinkResult result(&wa, &wb, keep_order ? &a.object : &b.object, points_to_keep(c1, c2),
                       c2 == dPlaneClass, &sink);
     algorithm.get()->processCollision(&wa, &wb, w.world.getDispatchInfo(), &result);
+    complete_contacts(o1, o2, &sink);
     return dxSinkFinish(&sink, o1, o2, flags, out, skip);
 }
 
