@@ -98,11 +98,28 @@ void dxSinkPlaneManifold(dxContactSink *s, dGeomID shape, int shape_is_o1)
     }
 }
 
-// Signed depth of p in g (positive inside) for the classes ODE has a public
-// point-depth function for; 0 (no preference) for the others.
+// Signed depth of p in a cylinder g: positive inside (distance to the
+// surface), minus the distance outside.
+static dReal cylinder_point_depth(dGeomID g, const dReal p[3])
+{
+    dxShapeDesc d;
+    dReal c[3], R[12], l[3];
+    dxGeomDescribe(g, &d);
+    dxGeomPose(g, c, R);
+    for (int k = 0; k < 3; k++)
+        l[k] = (p[0] - c[0]) * R[k] + (p[1] - c[1]) * R[4 + k] + (p[2] - c[2]) * R[8 + k];
+    dReal radial = d.p[0] - sqrt(l[0] * l[0] + l[1] * l[1]), axial = d.p[1] / 2 - fabs(l[2]);
+    if (radial >= 0 && axial >= 0) return radial < axial ? radial : axial;
+    dReal or = radial < 0 ? -radial : 0, oa = axial < 0 ? -axial : 0;
+    return -sqrt(or * or + oa * oa);
+}
+
+// Signed depth of p in g (positive inside); 0 (no preference) for classes
+// without a closed form here.
 static dReal point_depth(dGeomID g, const dReal p[3])
 {
     switch (dGeomGetClass(g)) {
+    case dCylinderClass: return cylinder_point_depth(g, p);
     case dSphereClass: return dGeomSpherePointDepth(g, p[0], p[1], p[2]);
     case dBoxClass: return dGeomBoxPointDepth(g, p[0], p[1], p[2]);
     case dCapsuleClass: return dGeomCapsulePointDepth(g, p[0], p[1], p[2]);

@@ -83,7 +83,7 @@ DX_INTERNAL_EXPORT void dxSinkPlaneManifold(dxContactSink *s, dGeomID shape, int
 // the two shapes' witness points (pos -+ normal * depth / 2), which can
 // leave one shape when they are deep: each point moved to the middle or an
 // end of that segment, whichever lies deepest in both (sphere, box, capsule,
-// plane; a cylinder has no preference).
+// cylinder, plane).
 DX_INTERNAL_EXPORT void dxSinkPointsInBoth(dxContactSink *s, dGeomID o1, dGeomID o2);
 
 // A backend module (libodecollide-NAME.so: backends/fcl, backends/bullet)

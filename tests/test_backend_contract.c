@@ -24,7 +24,7 @@
 #include <stdio.h>
 #include <string.h>
 
-enum { MAXC = 16, POSES = 60 };
+enum { MAXC = 16, POSES = 100 };
 
 static const int classes[] = { dSphereClass, dBoxClass, dCapsuleClass, dCylinderClass,
                                dPlaneClass };

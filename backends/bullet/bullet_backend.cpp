@@ -252,15 +252,17 @@ bool in_order(dGeomID g1, dGeomID g2)
 // What Bullet leaves out of the contract (issue 14): a capsule or cylinder
 // on a plane gets one point even with multipoint perturbation, which becomes
 // the manifold of its end or rim points under the plane Bullet's answer
-// defines; box-box points are the middle of the witness segment (Bullet's
-// port of ODE's box-box), put back where they lie in both boxes.
+// defines; a contact point of two solids is the middle of the witness
+// segment, which leaves one of them when deep (box-box, sphere-cylinder:
+// 0.09 and 0.06 outside), so it is moved to the middle or an end of that
+// segment, whichever lies deepest in both.
 void complete_contacts(dGeomID o1, dGeomID o2, dxContactSink *sink)
 {
     const int c1 = dGeomGetClass(o1), c2 = dGeomGetClass(o2);
     auto curved = [](int c) { return c == dCapsuleClass || c == dCylinderClass; };
     if (c2 == dPlaneClass && curved(c1)) dxSinkPlaneManifold(sink, o1, 1);
     if (c1 == dPlaneClass && curved(c2)) dxSinkPlaneManifold(sink, o2, 0);
-    if (c1 == dBoxClass && c2 == dBoxClass) dxSinkPointsInBoth(sink, o1, o2);
+    if (c1 != dPlaneClass && c2 != dPlaneClass) dxSinkPointsInBoth(sink, o1, o2);
 }
 
 // The contacts of two solids, Bullet seeing them as (first, second).
