@@ -206,16 +206,20 @@ bool is_solid(int cls)
            cls == dCylinderClass || cls == dPlaneClass;
 }
 
-// A cylinder against a box, capsule or cylinder (through Bullet's EPA, which
-// fails on some such poses: in 1000 random shallow poses, a cylinder pair got
-// a quarter of the true depth along a normal that leaves it overlapped, and a
-// box-cylinder pair a point 0.086 outside both shapes for a depth of 0.057).
+// A cylinder against a box or a cylinder: Bullet's EPA fails on some such
+// poses. Against the support-function truth (500 random poses, both
+// orders), two cylinders got depths 0.22 off in 4 of 1000 calls, along
+// normals that leave them overlapped by 0.27; in tests/test_backends.c's
+// poses a box-cylinder contact lay 0.086 and 0.072 outside the two shapes
+// for a depth of 0.057. Bullet's other penetration solver,
+// btMinkowskiPenetrationDepthSolver, is worse (a third of the cylinder
+// pairs, and sphere-cylinder, box-capsule and capsule-cylinder fail).
+// Capsule-cylinder meets the contract once its points are moved into both
+// shapes (complete_contacts).
 bool epa_cylinder_pair(int c1, int c2)
 {
     bool cyl1 = c1 == dCylinderClass, cyl2 = c2 == dCylinderClass;
-    auto epa_partner = [](int c) {
-        return c == dBoxClass || c == dCapsuleClass || c == dCylinderClass;
-    };
+    auto epa_partner = [](int c) { return c == dBoxClass || c == dCylinderClass; };
     return (cyl1 && epa_partner(c2)) || (cyl2 && epa_partner(c1));
 }
 
