@@ -77,8 +77,9 @@ int main(int argc, char **argv)
     }
 
     int escaped = 0;
-    double ke = 0, top = 0;
+    double ke = 0, top = 0, v_end = 0;
     for (int i = 0; i < count; i++) {
+        v_end = fmax(v_end, bench_body_speed(body[i]));
         const dReal *p = dBodyGetPosition(body[i]);
         if (fabs(p[0]) > HALF || fabs(p[1]) > HALF || p[2] < 0 || p[2] > HEIGHT) escaped++;
         if (p[2] > top) top = p[2];
@@ -86,8 +87,9 @@ int main(int argc, char **argv)
     }
     bench_report("spheres", BENCH_ENGINE, threads.variant, count, steps, coll_s,
                  step_s, "iterations=%d max_pen=%.6f escaped=%d top_z=%.4f ke_end=%.6g "
-                 "contacts_per_step=%.1f",
-                 iterations, con.max_depth, escaped, top, ke, (double)con.contacts / steps);
+                 "v_end=%.3g contacts_per_step=%.1f",
+                 iterations, con.max_depth, escaped, top, ke, v_end,
+                 (double)con.contacts / steps);
 
     dJointGroupDestroy(con.group);
     dSpaceDestroy(space);
