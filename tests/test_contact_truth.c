@@ -72,7 +72,8 @@ static int test_sphere_capsule_depth(void)
     rng_state = 12;
     double worst = 0;
     for (int i = 0; i < SAMPLES; i++) {
-        dGeomID a = dCreateCapsule(0, rnd(0.1, 0.5), rnd(0, 1.5)), b = dCreateSphere(0, rnd(0.1, 1));
+        dGeomID a = dCreateCapsule(0, rnd(0.1, 0.5), rnd(0, 1.5));
+        dGeomID b = dCreateSphere(0, rnd(0.1, 1));
         dGeomSetPosition(a, rnd(-1, 1), rnd(-1, 1), rnd(-1, 1));
         random_rotation(a);
         dGeomSetPosition(b, rnd(-1, 1), rnd(-1, 1), rnd(-1, 1));
@@ -145,7 +146,8 @@ static int test_box_plane_depth(void)
             double h = 0;
             for (int j = 0; j < 3; j++) {
                 double x = c[j];
-                for (int m = 0; m < 3; m++) x += R[4 * j + m] * ((k >> m & 1) ? 0.5 : -0.5) * side[m];
+                for (int m = 0; m < 3; m++)
+                    x += R[4 * j + m] * ((k >> m & 1) ? 0.5 : -0.5) * side[m];
                 h += abcd[j] * x;
             }
             low = fmin(low, h);
@@ -227,8 +229,8 @@ static int test_point_depth_matches_ode(void)
     for (int i = 0; i < SAMPLES; i++) {
         double p[3] = { rnd(-1, 1), rnd(-1, 1), rnd(-1, 1) };
         dReal q[3] = { p[0], p[1], p[2] };
-        CHECK_NEAR(contact_truth_point_depth(g[0], p), dGeomSpherePointDepth(g[0], q[0], q[1], q[2]),
-                   TRUTH_TOL);
+        CHECK_NEAR(contact_truth_point_depth(g[0], p),
+                   dGeomSpherePointDepth(g[0], q[0], q[1], q[2]), TRUTH_TOL);
         double bd = contact_truth_point_depth(g[1], p);
         if (bd >= 0) CHECK_NEAR(bd, dGeomBoxPointDepth(g[1], q[0], q[1], q[2]), TRUTH_TOL);
         CHECK_NEAR(contact_truth_point_depth(g[2], p),
@@ -245,7 +247,8 @@ static int test_point_depth_matches_ode(void)
 // Rays and two planes are not pairs of the truth: it says so and writes nothing.
 static int test_unsupported_pairs_are_refused(void)
 {
-    dGeomID ray = dCreateRay(0, 1), p1 = dCreatePlane(0, 0, 0, 1, 0), p2 = dCreatePlane(0, 1, 0, 0, 0);
+    dGeomID ray = dCreateRay(0, 1), p1 = dCreatePlane(0, 0, 0, 1, 0);
+    dGeomID p2 = dCreatePlane(0, 1, 0, 0, 0);
     contact_truth t = { 7, 7, { 7, 7, 7 } };
 
     CHECK(!contact_truth_compute(ray, p1, &t));
