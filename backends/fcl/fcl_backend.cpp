@@ -70,9 +70,8 @@ int fcl_supports(int c1, int c2) noexcept
     if (!is_primitive(c1) || !is_primitive(c2)) return 0;
     const int lo = c1 < c2 ? c1 : c2, hi = c1 < c2 ? c2 : c1;
     if (lo == dPlaneClass && hi == dPlaneClass) return 0;
-    const bool curved_hi = hi == dCapsuleClass || hi == dCylinderClass;
     if (lo == dSphereClass) return hi != dCapsuleClass;
-    return !curved_hi || lo == dPlaneClass || hi == dPlaneClass;
+    return hi != dCapsuleClass && hi != dCylinderClass;   // box-box, or anything-plane
 }
 
 // The FCL shape of a description (sizes mean the same in both libraries,
