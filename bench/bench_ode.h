@@ -179,6 +179,13 @@ static inline double bench_body_ke(dBodyID b)
     return 0.5 * m.mass * lin + 0.5 * rot;
 }
 
+// Speed of a body's origin (m/s): the final "at rest" figure.
+static inline double bench_body_speed(dBodyID b)
+{
+    const dReal *v = dBodyGetLinearVel(b);
+    return sqrt((double)v[0] * v[0] + (double)v[1] * v[1] + (double)v[2] * v[2]);
+}
+
 // Distance between a joint's two anchors (ball, hinge, universal), 0 for other joints.
 static inline double bench_joint_separation(dJointID j)
 {

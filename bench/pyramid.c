@@ -61,8 +61,9 @@ int main(int argc, char **argv)
     }
 
     int fallen = 0;
-    double ke = 0, top_drift = 0;
+    double ke = 0, top_drift = 0, v_end = 0;
     for (int i = 0; i < n; i++) {
+        v_end = fmax(v_end, bench_body_speed(body[i]));
         const dReal *p = dBodyGetPosition(body[i]);
         double dx = p[0] - start[i][0], dy = p[1] - start[i][1], dz = p[2] - start[i][2];
         double d = sqrt(dx * dx + dy * dy + dz * dz);
@@ -73,8 +74,8 @@ int main(int argc, char **argv)
     bench_report(stepper == BENCH_FAST ? "stepfast" : "pyramid", BENCH_ENGINE,
                  bench_stepper_name(stepper), n, steps, coll_s, step_s,
                  "iterations=%d max_pen=%.6f top_drift=%.6f fallen=%d stands=%d ke_end=%.6g "
-                 "contacts_per_step=%.1f",
-                 iterations, con.max_depth, top_drift, fallen, fallen == 0, ke,
+                 "v_end=%.3g contacts_per_step=%.1f",
+                 iterations, con.max_depth, top_drift, fallen, fallen == 0, ke, v_end,
                  (double)con.contacts / steps);
 
     dJointGroupDestroy(con.group);

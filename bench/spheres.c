@@ -91,9 +91,7 @@ int main(int argc, char **argv)
     double ke = 0, top = 0, vmax = 0;
     for (int i = 0; i < count; i++) {
         const dReal *p = dBodyGetPosition(body[i]);
-        const dReal *v = dBodyGetLinearVel(body[i]);
-        double speed = sqrt((double)v[0] * v[0] + (double)v[1] * v[1] + (double)v[2] * v[2]);
-        if (speed > vmax) vmax = speed;
+        vmax = fmax(vmax, bench_body_speed(body[i]));
         if (fabs(p[0]) > HALF || fabs(p[1]) > HALF || p[2] < 0 || p[2] > HEIGHT) escaped++;
         if (p[2] > top) top = p[2];
         ke += bench_body_ke(body[i]);

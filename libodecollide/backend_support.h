@@ -72,6 +72,20 @@ DX_INTERNAL_EXPORT void dxSinkAdd(dxContactSink *s, const dReal pos[3], const dR
 DX_INTERNAL_EXPORT int dxSinkFinish(dxContactSink *s, dGeomID o1, dGeomID o2, int flags,
                                     dContactGeom *out, int skip);
 
+// Face contacts (backend_manifold.c). For a box, capsule or cylinder
+// `shape` against a plane, where the backend gave one point: the sink's
+// deepest contact (its normal and depth) is kept as the backend's answer and
+// the sink is refilled with the shape's features under the plane that
+// answer defines (corners, end points, cap rim points), each as deep as it
+// lies below it. shape_is_o1: the shape is the o1 of the sink's sense.
+DX_INTERNAL_EXPORT void dxSinkPlaneManifold(dxContactSink *s, dGeomID shape, int shape_is_o1);
+// For a backend whose contact point is the middle of the segment between
+// the two shapes' witness points (pos -+ normal * depth / 2), which can
+// leave one shape when they are deep: each point moved to the middle or an
+// end of that segment, whichever lies deepest in both (sphere, box, capsule,
+// cylinder, plane).
+DX_INTERNAL_EXPORT void dxSinkPointsInBoth(dxContactSink *s, dGeomID o1, dGeomID o2);
+
 // A backend module (libodecollide-NAME.so: backends/fcl, backends/bullet)
 // defines this entry point, which libodecollide calls once after dlopen: it
 // returns the module's table if `abi` is the DX_BACKEND_ABI the module was

@@ -206,16 +206,20 @@ bool is_solid(int cls)
            cls == dCylinderClass || cls == dPlaneClass;
 }
 
-// A cylinder against a box, capsule or cylinder (through Bullet's EPA, which
-// fails on some such poses: in 1000 random shallow poses, a cylinder pair got
-// a quarter of the true depth along a normal that leaves it overlapped, and a
-// box-cylinder pair a point 0.086 outside both shapes for a depth of 0.057).
+// A cylinder against a box or a cylinder: Bullet's EPA fails on some such
+// poses. Against the support-function truth (500 random poses, both
+// orders), two cylinders got depths 0.22 off in 4 of 1000 calls, along
+// normals that leave them overlapped by 0.27; in tests/test_backends.c's
+// poses a box-cylinder contact lay 0.086 and 0.072 outside the two shapes
+// for a depth of 0.057. Bullet's other penetration solver,
+// btMinkowskiPenetrationDepthSolver, is worse (a third of the cylinder
+// pairs, and sphere-cylinder, box-capsule and capsule-cylinder fail).
+// Capsule-cylinder meets the contract once its points are moved into both
+// shapes (complete_contacts).
 bool epa_cylinder_pair(int c1, int c2)
 {
     bool cyl1 = c1 == dCylinderClass, cyl2 = c2 == dCylinderClass;
-    auto epa_partner = [](int c) {
-        return c == dBoxClass || c == dCapsuleClass || c == dCylinderClass;
-    };
+    auto epa_partner = [](int c) { return c == dBoxClass || c == dCylinderClass; };
     return (cyl1 && epa_partner(c2)) || (cyl2 && epa_partner(c1));
 }
 
@@ -249,6 +253,22 @@ bool in_order(dGeomID g1, dGeomID g2)
     return std::less<const void *>()(g1, g2);
 }
 
+// What Bullet leaves out of the contract (issue 14): a capsule or cylinder
+// on a plane gets one point even with multipoint perturbation, which becomes
+// the manifold of its end or rim points under the plane Bullet's answer
+// defines; a contact point of two solids is the middle of the witness
+// segment, which leaves one of them when deep (box-box, sphere-cylinder:
+// 0.09 and 0.06 outside), so it is moved to the middle or an end of that
+// segment, whichever lies deepest in both.
+void complete_contacts(dGeomID o1, dGeomID o2, dxContactSink *sink)
+{
+    const int c1 = dGeomGetClass(o1), c2 = dGeomGetClass(o2);
+    auto curved = [](int c) { return c == dCapsuleClass || c == dCylinderClass; };
+    if (c2 == dPlaneClass && curved(c1)) dxSinkPlaneManifold(sink, o1, 1);
+    if (c1 == dPlaneClass && curved(c2)) dxSinkPlaneManifold(sink, o2, 0);
+    if (c1 != dPlaneClass && c2 != dPlaneClass) dxSinkPointsInBoth(sink, o1, o2);
+}
+
 // The contacts of two solids, Bullet seeing them as (first, second).
 int collide_pair(dGeomID o1, dGeomID o2, int flags, dContactGeom *out, int skip)
 {
@@ -269,6 +289,7 @@ int collide_pair(dGeomID o1, dGeomID o2, int flags, dContactGeom *out, int skip)
     SinkResult result(&wa, &wb, keep_order ? &a.object : &b.object, points_to_keep(c1, c2),
                       c2 == dPlaneClass, &sink);
     algorithm.get()->processCollision(&wa, &wb, w.world.getDispatchInfo(), &result);
+    complete_contacts(o1, o2, &sink);
     return dxSinkFinish(&sink, o1, o2, flags, out, skip);
 }
 
