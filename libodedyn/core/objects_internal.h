@@ -204,6 +204,7 @@ struct dxWorld {
     dReal erp, cfm;
     int qs_iterations;
     dReal qs_w;
+    int position_iterations;      // sweeps of solvers/position_correction.c, 0: none
     dReal max_correcting_vel;
     dReal contact_surface_layer;
     dxAutoDisable adis;

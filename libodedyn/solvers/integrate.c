@@ -107,6 +107,7 @@ void dxIslandFinish(const dxIsland *is)
 void dxIslandIntegrate(const dxIsland *is, dReal h)
 {
     dxIslandMove(is, h);
+    dxIslandCorrectPositions(is, h);
     dxIslandFinish(is);
 }
 

@@ -106,11 +106,17 @@ void dxRowsApplyForces(const dxIsland *is, const dxIslandRows *rows, const dReal
 void dxIslandUpdateVelocities(const dxIsland *is, const dxIslandBodies *bd,
                               const dReal *constraint_forces, dReal h);
 // Positions and orientations from the velocities, damping, geom notification,
-// and zeroed accumulators: dxIslandMove then dxIslandFinish.
+// and zeroed accumulators: dxIslandMove, dxIslandCorrectPositions, then
+// dxIslandFinish.
 void dxIslandIntegrate(const dxIsland *is, dReal h);
 // Damping, then positions and orientations from the velocities (touches only
 // the island's bodies).
 void dxIslandMove(const dxIsland *is, dReal h);
+// After the move, if the world asks for position iterations: that many
+// Gauss-Seidel sweeps over the island's joints moving its bodies to remove
+// the joints' position error (position_correction.c). Touches only the
+// island's bodies (and the accumulators, which dxIslandFinish clears).
+void dxIslandCorrectPositions(const dxIsland *is, dReal h);
 // After the move: the geoms' and the moved callbacks' notification (which may
 // reach shared collision data: one thread), and zeroed accumulators.
 void dxIslandFinish(const dxIsland *is);
