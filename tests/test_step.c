@@ -99,12 +99,17 @@ static int test_torque_free_body_keeps_angular_momentum(void)
     double finite = angular_momentum_drift(1, &e_fin);
 
     // (The reference ODE 0.16 loses a third of this body's energy in these 10 s.)
-    printf("# |dL|/|L| over 10 s: infinitesimal %.3g, finite %.3g; energy ratio %.5f, %.5f\n",
+    printf("# |dL|/|L| over 10 s: infinitesimal %.3g, finite %.3g; energy ratio %.9f, %.9f\n",
            infinitesimal, finite, e_inf, e_fin);
+    // (The world vector L is measured with the rate the step ends on, which
+    // leads the mean rate of the step's turn: a bounded offset of order h w,
+    // in either rotation mode. Its length and the energy are kept to
+    // rounding: test_gyroscopic.c.)
     CHECK(finite < TOL(0.01, 0.02));
     CHECK(infinitesimal < TOL(0.01, 0.02));
-    CHECK(finite <= infinitesimal);
-    CHECK(e_fin <= 1.0 + 1e-6 && e_fin > 0.99);   // implicit gyroscopic term: no energy gain
+    // (No energy gain beyond rounding: 1000 steps of 6e-8 in single precision.)
+    CHECK(e_inf <= 1.0 + TOL(1e-9, 2e-5) && e_inf > 1.0 - TOL(1e-9, 2e-5));
+    CHECK(e_fin <= 1.0 + TOL(1e-9, 2e-5) && e_fin > 1.0 - TOL(1e-9, 2e-5));
     return 0;
 }
 

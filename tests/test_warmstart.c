@@ -100,7 +100,9 @@ static void stack_step(stack *s, double h, int cold, double shift)
     dJointGroupEmpty(s->g);
 }
 
-// A copy of a's bodies' state in b (the same number of boxes).
+// A copy of a's bodies' state in b (the same number of boxes), to the bit:
+// dBodySetQuaternion normalises again, which can move the last bit, and the
+// gyroscopic work ledger has no public setter (white-box).
 static void stack_copy_state(stack *b, const stack *a)
 {
     for (int k = 0; k < a->n; k++) {
@@ -110,6 +112,9 @@ static void stack_copy_state(stack *b, const stack *a)
         dBodySetQuaternion(b->box[k], q);
         dBodySetLinearVel(b->box[k], v[0], v[1], v[2]);
         dBodySetAngularVel(b->box[k], o[0], o[1], o[2]);
+        memcpy(b->box[k]->q, a->box[k]->q, sizeof(dQuaternion));
+        memcpy(b->box[k]->R, a->box[k]->R, sizeof(dMatrix3));
+        b->box[k]->gyro_pending = a->box[k]->gyro_pending;
     }
 }
 

@@ -118,6 +118,7 @@ void dBodySetRotation(dBodyID b, const dMatrix3 R)
     dQfromR(b->q, clean);
     dNormalize4(b->q);
     dxBodyUpdateRotation(b);
+    b->gyro_pending = 0;   // a new rotational state: an empty gyroscopic ledger
     dxBodyNotifyMoved(b);
 }
 
@@ -130,6 +131,7 @@ void dBodySetQuaternion(dBodyID b, const dQuaternion q)
     DX_CHECK_ARG(dSafeNormalize4(n), return, "q has zero length");
     dCopyVector4(b->q, n);
     dxBodyUpdateRotation(b);
+    b->gyro_pending = 0;
     dxBodyNotifyMoved(b);
 }
 
@@ -145,6 +147,7 @@ void dBodySetAngularVel(dBodyID b, dReal x, dReal y, dReal z)
     CHECK_BODY(b, return);
     DX_CHECK_ARG(dxIsFinite3(x, y, z), return, "angular velocity is not finite");
     dAssignVector3(b->avel, x, y, z);
+    b->gyro_pending = 0;
 }
 
 const dReal *dBodyGetPosition(dBodyID b)
@@ -216,6 +219,7 @@ void dBodySetMass(dBodyID b, const dMass *m)
     dZeroVector3(b->mass.c);
     b->inv_mass = dRecip(m->mass);
     dCopyMatrix4x3(b->inv_inertia, inv);
+    b->gyro_pending = 0;
 }
 
 void dBodyGetMass(dBodyID b, dMass *m)

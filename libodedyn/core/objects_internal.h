@@ -87,6 +87,11 @@ struct dxBody {
     dVector3 lvel, avel;
     dVector3 force, torque;       // accumulators, zeroed after each step
     dVector3 finite_rot_axis;
+    // The gyroscopic work ledger (solvers/rows.c): this step's gyroscopic
+    // torque (world), its work over the first half of the step, and the work
+    // it did in the last step, which the next step's torque gives back.
+    dVector3 gyro_torque;
+    dReal gyro_work, gyro_pending;
 
     dxJointNode *joints;          // the nodes of the joints attached here
     int num_joints;
@@ -199,6 +204,7 @@ struct dxWorld {
     dReal erp, cfm;
     int qs_iterations;
     dReal qs_w;
+    int position_iterations;      // sweeps of solvers/position_correction.c, 0: none
     dReal max_correcting_vel;
     dReal contact_surface_layer;
     dxAutoDisable adis;

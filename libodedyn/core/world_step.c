@@ -45,6 +45,7 @@ static void step_island(void *context, int item, dxArena *a)
     }
     dxIslandUpdateVelocities(is, &bd, cforce, h);
     dxIslandMove(is, h);
+    dxIslandCorrectPositions(is, h);
     dxArenaRestore(a, mark);
 }
 

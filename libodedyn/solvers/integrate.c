@@ -93,6 +93,7 @@ void dxIslandMove(const dxIsland *is, dReal h)
 {
     for (int i = 0; i < is->nb; i++) {
         struct dxBody *b = is->bodies[i];
+        dxBodyGyroscopicEnd(b, h);
         damp(b);
         dxBodyIntegrate(b, h);
     }
@@ -106,6 +107,7 @@ void dxIslandFinish(const dxIsland *is)
 void dxIslandIntegrate(const dxIsland *is, dReal h)
 {
     dxIslandMove(is, h);
+    dxIslandCorrectPositions(is, h);
     dxIslandFinish(is);
 }
 

@@ -102,6 +102,7 @@ static void auto_disable(struct dxBody *b, dReal h)
         b->flags |= DX_BODY_DISABLED;
         dZeroVector3(b->lvel);
         dZeroVector3(b->avel);
+        b->gyro_pending = 0;   // nothing left to give back to a body at rest
     }
 }
 

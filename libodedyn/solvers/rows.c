@@ -9,6 +9,8 @@
 
 #include <ode/matrix.h>
 
+#include <float.h>
+
 void dxBodyWorldInverseInertia(const struct dxBody *b, dReal *out)
 {
     dMatrix3 tmp;
@@ -16,40 +18,120 @@ void dxBodyWorldInverseInertia(const struct dxBody *b, dReal *out)
     dMultiply0_333(out, b->R, tmp);
 }
 
-// The gyroscopic effect, integrated implicitly so that a spinning body's
-// energy cannot grow: one Newton step of backward Euler for the torque-free
-// Euler equation in the body frame, I (w' - w) + h w' x (I w') = 0, starting
-// at w:  w' = w - J^-1 (h w x I w),  J = I + h ([w]x I - [I w]x).
-// The velocity change is handed to the stepper as the equivalent torque.
-static void add_gyroscopic_torque(struct dxBody *b, dReal h)
+// Newton's method stops when its step is this small relative to the solution.
+#ifdef dSINGLE
+#define GYRO_TOL (16 * FLT_EPSILON)
+#else
+#define GYRO_TOL (16 * DBL_EPSILON)
+#endif
+
+// The torque-free motion of a body over one step, in the body frame: the
+// implicit midpoint rule for Euler's equation,
+//   I (x - w) + h m x (I m) = 0,   m = (w + x) / 2,
+// solved by Newton's method from x = w (Jacobian I + h/2 ([m]x I - [I m]x)).
+// Any solution keeps both quadratic invariants exactly: dotting the equation
+// with m gives x.Ix = w.Iw (energy), with I m gives |Ix| = |Iw| (|L|).
+// Because the position update then turns the body about x itself, these are
+// also the energy and |L| measured after the step. An iteration that does
+// not converge (a huge spin for the step) is scaled back to w's energy, so
+// the term never adds energy. Writes x; see docs/design.md for the choice.
+static void gyroscopic_midpoint(const dReal *I, const dReal *w, dReal h, dReal *x)
 {
-    const dReal *I = b->mass.I;
-    // An isotropic inertia (a sphere, a cube) has w x I w = 0: nothing to add.
-    if (I[1] == 0 && I[2] == 0 && I[6] == 0 && I[4] == 0 && I[8] == 0 && I[9] == 0 &&
-        I[0] == I[5] && I[0] == I[10])
-        return;
-    dVector3 w, L, f, dw;
-    dMultiply1_331(w, b->R, b->avel);   // body frame
-    dMultiply0_331(L, I, w);
-    dCalcVectorCross3(f, w, L);
-    dScaleVector3(f, h);
-    dMatrix3 J, wx, Lx, wxI, Jinv;
-    dZeroMatrix3(wx);
-    dZeroMatrix3(Lx);
-    dSetCrossMatrixPlus(wx, w, 4);
-    dSetCrossMatrixPlus(Lx, L, 4);
-    dMultiply0_333(wxI, wx, I);
-    for (int i = 0; i < 12; i++) J[i] = I[i] + h * (wxI[i] - Lx[i]);
-    if (dInvertMatrix3(Jinv, J) == 0) return;
-    dMultiply0_331(dw, Jinv, f);         // w' = w - dw
-    // torque = I_world * (-dw_world) / h, with I_world R = R I
-    dVector3 Idw, t;
-    dMultiply0_331(Idw, I, dw);
-    dMultiply0_331(t, b->R, Idw);
-    dAddVectorScaledVector3(b->torque, b->torque, t, -dRecip(h));
+    const dReal tol = GYRO_TOL;
+    dCopyVector3(x, w);
+    for (int it = 0; it < 12; it++) {
+        dVector3 m, Im, mIm, F, step;
+        for (int k = 0; k < 3; k++) m[k] = REAL(0.5) * (w[k] + x[k]);
+        dMultiply0_331(Im, I, m);
+        dCalcVectorCross3(mIm, m, Im);
+        dVector3 d;
+        dSubtractVectors3(d, x, w);
+        dMultiply0_331(F, I, d);
+        dAddVectorScaledVector3(F, F, mIm, h);
+        dMatrix3 mx, Imx, mxI, J, Jinv;
+        dZeroMatrix3(mx);
+        dZeroMatrix3(Imx);
+        dSetCrossMatrixPlus(mx, m, 4);
+        dSetCrossMatrixPlus(Imx, Im, 4);
+        dMultiply0_333(mxI, mx, I);
+        for (int k = 0; k < 12; k++) J[k] = I[k] + REAL(0.5) * h * (mxI[k] - Imx[k]);
+        if (dInvertMatrix3(Jinv, J) == 0) break;
+        dMultiply0_331(step, Jinv, F);
+        dSubtractVectors3(x, x, step);
+        if (dCalcVectorLengthSquare3(step) <= tol * tol * dCalcVectorLengthSquare3(x)) break;
+    }
+    dVector3 Iw, Ix;
+    dMultiply0_331(Iw, I, w);
+    dMultiply0_331(Ix, I, x);
+    const dReal e0 = dCalcVectorDot3(w, Iw), e1 = dCalcVectorDot3(x, Ix);
+    if (!(e1 <= e0)) {
+        if (e1 > 0 && dxIsFinite(e1)) dScaleVector3(x, dSqrt(e0 / e1));
+        else dCopyVector3(x, w);
+    }
 }
 
-void dxIslandPrepare(struct dxWorld *w, dxArena *a, const dxIsland *is, dReal h,
+// Body b's gyroscopic change x - w (body frame) over a step h, or 0 when it
+// has none (the term off, or an isotropic inertia, where w x I w = 0).
+static int gyroscopic_change(const struct dxBody *b, dReal h, dReal *d)
+{
+    const dReal *I = b->mass.I;
+    if ((b->flags & DX_BODY_NO_GYROSCOPIC) ||
+        (I[1] == 0 && I[2] == 0 && I[6] == 0 && I[4] == 0 && I[8] == 0 && I[9] == 0 &&
+         I[0] == I[5] && I[0] == I[10]))
+        return 0;
+    dVector3 w, x;
+    dMultiply1_331(w, b->R, b->avel);   // body frame
+    gyroscopic_midpoint(I, w, h, x);
+    dSubtractVectors3(d, x, w);
+    return 1;
+}
+
+// The torque that gives back last step's gyroscopic work, -W / h along the
+// momentum L = I w (which turns the body about its own rate, so it is
+// realised wherever the body may still turn as it turned): added to t.
+// Limited to a tenth of the rate per step, so a stale or odd entry cannot
+// throw the body.
+static void add_work_correction(const struct dxBody *b, dReal h, dReal *t)
+{
+    dVector3 wb, Lb, L;
+    dMultiply1_331(wb, b->R, b->avel);
+    dMultiply0_331(Lb, b->mass.I, wb);
+    dMultiply0_331(L, b->R, Lb);
+    const dReal e2 = dCalcVectorDot3(b->avel, L);   // twice the rotational energy
+    if (!(e2 > 0)) return;
+    dReal k = -b->gyro_pending / e2;   // relative change of the rate, h * torque / L
+    const dReal limit = REAL(0.1);
+    if (k > limit) k = limit;
+    if (k < -limit) k = -limit;
+    dAddVectorScaledVector3(t, t, L, k / h);
+}
+
+int dxBodyGyroscopicTorque(struct dxBody *b, dReal h, dReal *t)
+{
+    dVector3 d, Id;
+    dZeroVector3(b->gyro_torque);
+    b->gyro_work = 0;
+    if (!gyroscopic_change(b, h, d)) {
+        b->gyro_pending = 0;
+        return 0;
+    }
+    dMultiply0_331(Id, b->mass.I, d);
+    dMultiply0_331(t, b->R, Id);
+    dScaleVector3(t, dRecip(h));
+    if (b->gyro_pending != 0) add_work_correction(b, h, t);
+    dCopyVector3(b->gyro_torque, t);
+    b->gyro_work = REAL(0.5) * h * dCalcVectorDot3(t, b->avel);
+    return 1;
+}
+
+void dxBodyGyroscopicEnd(struct dxBody *b, dReal h)
+{
+    b->gyro_pending += b->gyro_work + REAL(0.5) * h * dCalcVectorDot3(b->gyro_torque, b->avel);
+    dZeroVector3(b->gyro_torque);
+    b->gyro_work = 0;
+}
+
+void dxIslandPrepare(struct dxWorld *w, dxArena *a, const dxIsland *is, dReal gyro_h,
                      dxIslandBodies *out)
 {
     out->inv_mass = DX_ARENA_ARRAY(a, dReal, is->nb);
@@ -61,7 +143,9 @@ void dxIslandPrepare(struct dxWorld *w, dxArena *a, const dxIsland *is, dReal h,
         dxBodyWorldInverseInertia(b, out->inv_inertia + 12 * i);
         if (!(b->flags & DX_BODY_NO_GRAVITY))
             dAddVectorScaledVector3(b->force, b->force, w->gravity, b->mass.mass);
-        if (!(b->flags & DX_BODY_NO_GYROSCOPIC)) add_gyroscopic_torque(b, h);
+        dVector3 t;
+        if (gyro_h > 0 && dxBodyGyroscopicTorque(b, gyro_h, t))
+            dAddVectors3(b->torque, b->torque, t);
     }
 }
 

@@ -70,10 +70,23 @@ int dxStepBegin(struct dxWorld *w, dReal h, const char *function, dxIsland **isl
 int dxJointContactWarmInfo(const dxJoint *j, dVector3 point);
 void dxStepEnd(const dxIsland *islands, int count, dReal h);
 
-// The island's body data (from arena), with gravity and the gyroscopic
-// torque added to the accumulators.
-void dxIslandPrepare(struct dxWorld *w, dxArena *arena, const dxIsland *is, dReal h,
+// The island's body data (from arena), with gravity and, if gyro_h > 0, the
+// gyroscopic torque of a step gyro_h added to the accumulators (StepFast1
+// passes 0 and adds the gyroscopic change per sub-step).
+void dxIslandPrepare(struct dxWorld *w, dxArena *arena, const dxIsland *is, dReal gyro_h,
                      dxIslandBodies *out);
+// The gyroscopic torque t (world) of body b for a step h (rows.c): the one
+// that takes its angular velocity to the torque-free implicit midpoint
+// solution of Euler's equation, which keeps the rotational energy and |L|,
+// plus the return of the work the gyroscopic torque did in the body's last
+// step (nonzero only where joints or contacts took part of the change).
+// Returns 0 (t untouched) for a body with the term off or isotropic inertia.
+// Opens the step's ledger entry: call dxBodyGyroscopicEnd after the
+// velocity update, before the body moves.
+int dxBodyGyroscopicTorque(struct dxBody *b, dReal h, dReal *t);
+// Close the ledger entry: the work h t . (w_start + w_end) / 2 the
+// gyroscopic torque did over the step (w_end = the body's rate now).
+void dxBodyGyroscopicEnd(struct dxBody *b, dReal h);
 // The unconstrained rates v/h + M^-1 (f, t) of the island's bodies
 // (fps = 1/h), 6 per body, into rates.
 void dxIslandBodyRates(const dxIsland *is, const dxIslandBodies *bd, dReal fps, dReal *rates);
@@ -93,11 +106,17 @@ void dxRowsApplyForces(const dxIsland *is, const dxIslandRows *rows, const dReal
 void dxIslandUpdateVelocities(const dxIsland *is, const dxIslandBodies *bd,
                               const dReal *constraint_forces, dReal h);
 // Positions and orientations from the velocities, damping, geom notification,
-// and zeroed accumulators: dxIslandMove then dxIslandFinish.
+// and zeroed accumulators: dxIslandMove, dxIslandCorrectPositions, then
+// dxIslandFinish.
 void dxIslandIntegrate(const dxIsland *is, dReal h);
 // Damping, then positions and orientations from the velocities (touches only
 // the island's bodies).
 void dxIslandMove(const dxIsland *is, dReal h);
+// After the move, if the world asks for position iterations: that many
+// Gauss-Seidel sweeps over the island's joints moving its bodies to remove
+// the joints' position error (position_correction.c). Touches only the
+// island's bodies (and the accumulators, which dxIslandFinish clears).
+void dxIslandCorrectPositions(const dxIsland *is, dReal h);
 // After the move: the geoms' and the moved callbacks' notification (which may
 // reach shared collision data: one thread), and zeroed accumulators.
 void dxIslandFinish(const dxIsland *is);

@@ -58,7 +58,7 @@ typedef struct sf1_step {
     dxIslandBodies bd;            // inverse masses; world inverse inertias, kept current
     dReal *force;                 // 12 per joint: J^T lambda of its latest solve
     dReal *external;              // 6 per body: force and torque of the step, as
-                                  // prepared (accumulators, gravity, gyroscopic)
+                                  // prepared (accumulators, gravity)
     struct dxBody **kinematic;    // the enabled kinematic bodies
     int nk;
     dReal s, fps;                 // sub-step and its inverse
@@ -145,14 +145,17 @@ static void collect(struct dxWorld *w, sf1_step *st)
 }
 
 // v += s M^-1 (f, t): this sub-step's share of the step's external forces
-// (accumulators, gravity and gyroscopic torque, added once by dxIslandPrepare).
+// (accumulators and gravity, added once by dxIslandPrepare), and the
+// gyroscopic change of the sub-step, from the body's pose and rate now.
 static void apply_external_forces(const sf1_step *st)
 {
     for (int i = 0; i < st->all.nb; i++) {
         struct dxBody *b = st->all.bodies[i];
-        dVector3 dw;
+        dVector3 dw, t, torque;
+        dCopyVector3(torque, b->torque);
+        if (dxBodyGyroscopicTorque(b, st->s, t)) dAddVectors3(torque, torque, t);
         dAddVectorScaledVector3(b->lvel, b->lvel, b->force, st->s * st->bd.inv_mass[i]);
-        dMultiply0_331(dw, st->bd.inv_inertia + 12 * i, b->torque);
+        dMultiply0_331(dw, st->bd.inv_inertia + 12 * i, torque);
         dAddVectorScaledVector3(b->avel, b->avel, dw, st->s);
     }
 }
@@ -329,12 +332,16 @@ static void solve_joints(sf1_step *st)
 static void move_bodies(sf1_step *st)
 {
     if (st->last) {
-        dxIslandIntegrate(&st->all, st->s);
+        // (No position sweeps: the sub-steps already relax joint by joint, and
+        // sweeps after the last one left a released chain further apart.)
+        dxIslandMove(&st->all, st->s);
+        dxIslandFinish(&st->all);
         dxStepKinematicBodies(st->world, st->s);
         return;
     }
     for (int i = 0; i < st->all.nb; i++) {
         struct dxBody *b = st->all.bodies[i];
+        dxBodyGyroscopicEnd(b, st->s);
         dxBodyIntegrate(b, st->s);
         dxBodyWorldInverseInertia(b, st->bd.inv_inertia + 12 * i);
     }
@@ -358,6 +365,7 @@ static void sf1_auto_disable(const dxIsland *all)
             b->flags |= DX_BODY_DISABLED;
             dZeroVector3(b->lvel);
             dZeroVector3(b->avel);
+            b->gyro_pending = 0;
         }
     }
 }
@@ -383,7 +391,7 @@ void dWorldStepFast1(dWorldID w, dReal stepsize, int maxiterations)
     joint_system_reserve(w->arena, &st.js, JOINT_ROWS);
     collect(w, &st);
     dSetZero(st.force, 12 * st.all.nj);
-    dxIslandPrepare(w, w->arena, &st.all, stepsize, &st.bd);
+    dxIslandPrepare(w, w->arena, &st.all, 0, &st.bd);
     st.external = DX_ARENA_ARRAY(w->arena, dReal, 6 * (size_t)st.all.nb + 1);
     for (int i = 0; i < st.all.nb; i++) {
         dCopyVector3(st.external + 6 * i, st.all.bodies[i]->force);
