@@ -77,6 +77,9 @@ typedef struct dxTriMesh {
     dTriArrayCallback *array_callback;
     dTriRayCallback *ray_callback;
     dTriTriMergeCallback *merge_callback;
+    // How a sphere's contacts merge: dGeomColliderMergeContactsValue_None,
+    // _Normals or _Full; 0 (a heightfield's shadow mesh) as other shapes'.
+    int sphere_merge;
     unsigned tc_classes;                  // bit per class: temporal coherence on
     dMatrix4 last_transform;
     int last_set;                         // SetLastTransform was called

@@ -248,20 +248,11 @@ static void select_spread(dxTriMeshRaw *r, int n, int keep)
     }
 }
 
-int dxTriMeshFinish(dxTriQuery *q, int flags, dContactGeom *c, int skip)
+void dxTriMeshWrite(dxTriQuery *q, int n, dContactGeom *c, int skip)
 {
-    dxTriMesh *m = q->mesh;
-    dxGeom *g = &m->g;
-    dReal tol = q->scale * (dReal)1e-5;
-    int n = merge_duplicates(m, q->other, tol);
-    n = prune_flat_groups(m, n, tol);
-    int max = dx_max_contacts(flags);
-    if (n > max) {
-        select_spread(m->raw, n, max);
-        n = max;
-    }
+    dxGeom *g = &q->mesh->g;
     for (int i = 0; i < n; i++) {
-        const dxTriMeshRaw *r = &m->raw[i];
+        const dxTriMeshRaw *r = &q->mesh->raw[i];
         dReal pos[3], nw[3];
         dx_point_to_world(g->R, g->pos, r->pos, pos);
         dx_to_world(g->R, r->n, nw);
@@ -270,6 +261,24 @@ int dxTriMeshFinish(dxTriQuery *q, int flags, dContactGeom *c, int skip)
         dxContactAt(c, i, skip)->side1 = r->tri;
         dxContactAt(c, i, skip)->side2 = r->tri2;
     }
+}
+
+int dxTriMeshSpread(dxTriQuery *q, int n, int flags)
+{
+    int max = dx_max_contacts(flags);
+    if (n <= max) return n;
+    select_spread(q->mesh->raw, n, max);
+    return max;
+}
+
+int dxTriMeshFinish(dxTriQuery *q, int flags, dContactGeom *c, int skip)
+{
+    dxTriMesh *m = q->mesh;
+    dReal tol = q->scale * (dReal)1e-5;
+    int n = merge_duplicates(m, q->other, tol);
+    n = prune_flat_groups(m, n, tol);
+    n = dxTriMeshSpread(q, n, flags);
+    dxTriMeshWrite(q, n, c, skip);
     return n;
 }
 
@@ -309,16 +318,15 @@ static void pose_other(dxTriQuery *q, dReal lo[3], dReal hi[3])
     }
 }
 
-int dxTriMeshCollide(dxGeom *mesh, dxGeom *other, int flags, dContactGeom *c, int skip,
-                     dxTriTest *test)
+int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dxTriTest *test)
 {
     dxTriMesh *m = (dxTriMesh *)mesh;
-    if (!m->data || m->data->tri_count == 0) return 0;
-    dxTriQuery q = { .mesh = m, .data = m->data, .other = other };
-    dReal lo[3], hi[3];
-    pose_other(&q, lo, hi);
-    int count = dxTriMeshQueryBox(m->data, lo, hi, &m->candidates, &m->candidates_cap);
+    *q = (dxTriQuery){ .mesh = m, .data = m->data, .other = other };
     m->raw_count = 0;
+    if (!m->data || m->data->tri_count == 0) return 0;
+    dReal lo[3], hi[3];
+    pose_other(q, lo, hi);
+    int count = dxTriMeshQueryBox(m->data, lo, hi, &m->candidates, &m->candidates_cap);
     int hits = 0;
     for (int i = 0; i < count; i++) {
         int t = m->candidates[i];
@@ -326,12 +334,19 @@ int dxTriMeshCollide(dxGeom *mesh, dxGeom *other, int flags, dContactGeom *c, in
         if (m->callback && !m->callback(mesh, other, t)) continue;
         dxTri tri;
         dxTriLoad(m->data, t, &tri);
-        if (!test(&q, &tri)) continue;
+        if (!test(q, &tri)) continue;
         dxTriMeshReserveInts(&m->hits, &m->hits_cap, hits + 1);
         m->hits[hits++] = t;
     }
     if (hits > 0 && m->array_callback) m->array_callback(mesh, other, m->hits, hits);
-    return m->raw_count ? dxTriMeshFinish(&q, flags, c, skip) : 0;
+    return m->raw_count;
+}
+
+int dxTriMeshCollide(dxGeom *mesh, dxGeom *other, int flags, dContactGeom *c, int skip,
+                     dxTriTest *test)
+{
+    dxTriQuery q;
+    return dxTriMeshGather(&q, mesh, other, test) ? dxTriMeshFinish(&q, flags, c, skip) : 0;
 }
 
 // ---- triangle geometry --------------------------------------------------------

@@ -60,6 +60,16 @@ int dxTriMeshCollide(dxGeom *mesh, dxGeom *other, int flags, dContactGeom *c, in
 // then the spread) and write them in world coordinates; returns the count.
 int dxTriMeshFinish(dxTriQuery *q, int flags, dContactGeom *c, int skip);
 
+// The walk of dxTriMeshCollide alone: sets q up for the pair, gathers the
+// triangles' contacts into q->mesh->raw (callbacks honoured) and returns
+// their count.
+int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dxTriTest *test);
+// Keep at most flags & 0xffff of the first n gathered contacts (the deepest
+// first, then the spread) at the front; returns the count kept.
+int dxTriMeshSpread(dxTriQuery *q, int n, int flags);
+// Write the first n gathered contacts in world coordinates as they are.
+void dxTriMeshWrite(dxTriQuery *q, int n, dContactGeom *c, int skip);
+
 // Load triangle t (dxTri) from the data.
 void dxTriLoad(const dxTriMeshData *d, int t, dxTri *out);
 
