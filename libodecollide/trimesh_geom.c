@@ -76,9 +76,6 @@ static void trimesh_destroy(dxGeom *g)
 {
     dxTriMesh *m = (dxTriMesh *)g;
     detach_data(m);
-    dFree(m->candidates, (size_t)m->candidates_cap * sizeof(int));
-    dFree(m->hits, (size_t)m->hits_cap * sizeof(int));
-    dFree(m->raw, (size_t)m->raw_cap * sizeof(dxTriMeshRaw));
 }
 
 const dxGeomClassOps dx_trimesh_ops = { dTriMeshClass, "trimesh", trimesh_aabb, trimesh_destroy };

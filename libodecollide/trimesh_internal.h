@@ -63,7 +63,7 @@ struct dxTriMeshData {
 };
 typedef struct dxTriMeshData dxTriMeshData;
 
-// Scratch memory of a geom's collisions, grown when needed and reused.
+// A contact of a triangle before the reduction (mesh frame).
 typedef struct dxTriMeshRaw {
     dReal pos[3], n[3], depth;   // n: the direction the other geom leaves along
     int tri, tri2;               // the triangle, and the other's (a trimesh) or -1
@@ -83,10 +83,6 @@ typedef struct dxTriMesh {
     unsigned tc_classes;                  // bit per class: temporal coherence on
     dMatrix4 last_transform;
     int last_set;                         // SetLastTransform was called
-    int *candidates, *hits;               // triangle lists of one query
-    int candidates_cap, hits_cap;
-    dxTriMeshRaw *raw;                    // contacts before reduction
-    int raw_count, raw_cap;
 } dxTriMesh;
 
 extern const dxGeomClassOps dx_trimesh_ops;

@@ -115,9 +115,8 @@ static int mean_normal(const dxTriMeshRaw *r, int n, dReal N[3])
 // the deepest of them needs along N (depth / cos, the cosine at least 1/2);
 // its triangle as the merge callback names it. 0 (nothing changed) if a
 // contact is at right angles to N or beyond.
-static int merge_fully(dxTriMesh *m, int n, const dReal N[3])
+static int merge_fully(dxTriMesh *m, dxTriMeshRaw *r, int n, const dReal N[3])
 {
-    dxTriMeshRaw *r = m->raw;
     dReal depth = 0, pos[3] = { 0, 0, 0 };
     for (int i = 0; i < n; i++) {
         dReal cosine = dx_dot(N, r[i].n);
@@ -144,22 +143,29 @@ static int merge_fully(dxTriMesh *m, int n, const dReal N[3])
 // any shape's.
 int dxCollideTriMeshSphere(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
 {
-    dxTriQuery q;
+    dxTriQuery q = { .s = dxTriScratchAcquire() };
+    if (!q.s) return 0;
     int n = dxTriMeshGather(&q, o1, o2, sphere_test);
-    if (n == 0) return 0;
     dxTriMesh *m = q.mesh;
-    if (m->sphere_merge == 0) return dxTriMeshFinish(&q, flags, c, skip);
+    dxTriMeshRaw *r = q.s->raw;
     int important = !(flags & CONTACTS_UNIMPORTANT);
     dReal N[3];
-    if (m->sphere_merge == dGeomColliderMergeContactsValue_Full) {
-        if (!important || (n > 1 && mean_normal(m->raw, n, N) && merge_fully(m, n, N))) n = 1;
-    } else if (m->sphere_merge == dGeomColliderMergeContactsValue_Normals && important && n > 1 &&
-               mean_normal(m->raw, n, N)) {
-        for (int i = 0; i < n; i++)
-            for (int k = 0; k < 3; k++) m->raw[i].n[k] = N[k];
+    if (n == 0) {
+        // nothing touches
+    } else if (m->sphere_merge == 0) {
+        n = dxTriMeshFinish(&q, flags, c, skip);
+    } else {
+        if (m->sphere_merge == dGeomColliderMergeContactsValue_Full) {
+            if (!important || (n > 1 && mean_normal(r, n, N) && merge_fully(m, r, n, N))) n = 1;
+        } else if (m->sphere_merge == dGeomColliderMergeContactsValue_Normals && important &&
+                   n > 1 && mean_normal(r, n, N)) {
+            for (int i = 0; i < n; i++)
+                for (int k = 0; k < 3; k++) r[i].n[k] = N[k];
+        }
+        n = dxTriMeshSpread(&q, n, flags);
+        dxTriMeshWrite(&q, n, c, skip);
     }
-    n = dxTriMeshSpread(&q, n, flags);
-    dxTriMeshWrite(&q, n, c, skip);
+    dxTriScratchRelease(q.s);
     return n;
 }
 

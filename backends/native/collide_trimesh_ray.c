@@ -74,9 +74,9 @@ static int ray_enters(const dReal s[3], const dReal v[3], const dReal inv[3],
     return 1;
 }
 
-// Keep the nearest `max` hits in m->raw sorted by distance (then triangle):
+// Keep the nearest `max` hits in m->raw (a scratch set) sorted by distance (then triangle):
 // insert this one at its place, the farthest dropping out when full.
-static void keep_hit(dxTriMesh *m, int max, dReal dist, int tri, const dReal n[3])
+static void keep_hit(dxTriScratch *m, int max, dReal dist, int tri, const dReal n[3])
 {
     int k = m->raw_count;
     if (k == max) {
@@ -112,17 +112,14 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
     for (int i = 0; i < 3; i++) inv[i] = v[i] != 0 ? 1 / v[i] : 0;
     int single = ray->closest_hit || ray->first_contact;
     int max = single ? 1 : dx_max_contacts(flags);
-    m->raw_count = 0;
-    if (m->raw_cap < max) {
-        m->raw = (dxTriMeshRaw *)dRealloc(m->raw, (size_t)m->raw_cap * sizeof *m->raw,
-                                          (size_t)max * sizeof *m->raw);
-        m->raw_cap = max;
-    }
+    dxTriScratch *h = dxTriScratchAcquire();
+    if (!h) return 0;
+    dxTriScratchAddRaw(h, max);
     int stack[64], top = 0;
     stack[top++] = 0;
     while (top > 0) {
         const dxTriMeshNode *node = &d->nodes[stack[--top]];
-        dReal limit = m->raw_count == max ? m->raw[max - 1].depth : ray->length, enter;
+        dReal limit = h->raw_count == max ? h->raw[max - 1].depth : ray->length, enter;
         if (!ray_enters(s, v, inv, node, limit, &enter)) continue;
         if (node->count == 0) {
             // Push the farther child first: the nearer is walked first.
@@ -149,11 +146,12 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
                 continue;
             if (m->ray_callback && !m->ray_callback(o1, o2, ti, bu, bv)) continue;
             if (m->callback && !m->callback(o1, o2, ti)) continue;
-            keep_hit(m, max, dist, ti, t.n);
+            keep_hit(h, max, dist, ti, t.n);
         }
     }
-    for (int i = 0; i < m->raw_count; i++) {
-        const dxTriMeshRaw *r = &m->raw[i];
+    int n = h->raw_count;
+    for (int i = 0; i < n; i++) {
+        const dxTriMeshRaw *r = &h->raw[i];
         dReal pos[3], n[3];
         for (int j = 0; j < 3; j++) pos[j] = o2->pos[j] + dir[j] * r->depth;
         dx_to_world(o1->R, r->n, n);
@@ -161,5 +159,6 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
         dx_put_contact(c, i, skip, pos, n, r->depth, o1, o2);
         dxContactAt(c, i, skip)->side1 = r->tri;
     }
-    return m->raw_count;
+    dxTriScratchRelease(h);
+    return n;
 }
