@@ -115,24 +115,30 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
     dxTriScratch *h = dxTriScratchAcquire();
     if (!h) return 0;
     dxTriScratchAddRaw(h, max);
+    // Each node on the stack with the distance at which the ray enters it:
+    // popped beyond the farthest hit kept, it is skipped untested.
     int stack[64], top = 0;
-    stack[top++] = 0;
+    dReal entry[64];
+    if (ray_enters(s, v, inv, &d->nodes[0], ray->length, &entry[0])) stack[top++] = 0;
     while (top > 0) {
-        const dxTriMeshNode *node = &d->nodes[stack[--top]];
-        dReal limit = h->raw_count == max ? h->raw[max - 1].depth : ray->length, enter;
-        if (!ray_enters(s, v, inv, node, limit, &enter)) continue;
+        top--;
+        dReal limit = h->raw_count == max ? h->raw[max - 1].depth : ray->length;
+        if (entry[top] > limit) continue;
+        const dxTriMeshNode *node = &d->nodes[stack[top]];
         if (node->count == 0) {
             // Push the farther child first: the nearer is walked first.
-            int a = (int)(node - d->nodes) + 1, b = node->first;
+            int a = stack[top] + 1, b = node->first;
             dReal ea, eb;
             int ha = ray_enters(s, v, inv, &d->nodes[a], limit, &ea);
             int hb = ray_enters(s, v, inv, &d->nodes[b], limit, &eb);
             if (ha && hb && ea < eb) {
+                entry[top] = eb;
                 stack[top++] = b;
+                entry[top] = ea;
                 stack[top++] = a;
             } else {
-                if (ha) stack[top++] = a;
-                if (hb) stack[top++] = b;
+                if (ha) entry[top] = ea, stack[top++] = a;
+                if (hb) entry[top] = eb, stack[top++] = b;
             }
             continue;
         }
@@ -149,8 +155,8 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
             keep_hit(h, max, dist, ti, t.n);
         }
     }
-    int n = h->raw_count;
-    for (int i = 0; i < n; i++) {
+    int count = h->raw_count;
+    for (int i = 0; i < count; i++) {
         const dxTriMeshRaw *r = &h->raw[i];
         dReal pos[3], n[3];
         for (int j = 0; j < 3; j++) pos[j] = o2->pos[j] + dir[j] * r->depth;
@@ -160,5 +166,5 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
         dxContactAt(c, i, skip)->side1 = r->tri;
     }
     dxTriScratchRelease(h);
-    return n;
+    return count;
 }
