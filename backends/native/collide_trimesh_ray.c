@@ -13,17 +13,17 @@
 
 #include <ode/memory.h>
 
-// The ray (start s, unit direction v, mesh frame) against triangle t
-// (Moller-Trumbore): 1 with the distance and the barycentric u (of v1) and
+// The ray (start s, unit direction v, mesh frame) against the triangle of
+// vertices tri (Moller-Trumbore): 1 with the distance and the barycentric u (of v1) and
 // v (of v2) if it crosses within [0, len].
-static int ray_triangle(const dReal s[3], const dReal v[3], dReal len, const dxTri *t,
+static int ray_triangle(const dReal s[3], const dReal v[3], dReal len, dReal tri[3][3],
                         int cull, dReal *dist, dReal *bu, dReal *bv)
 {
-    const dReal *a = t->v[0];
+    const dReal *a = tri[0];
     dReal e1[3], e2[3], p[3], tv[3], qv[3];
     for (int i = 0; i < 3; i++) {
-        e1[i] = t->v[1][i] - a[i];
-        e2[i] = t->v[2][i] - a[i];
+        e1[i] = tri[1][i] - a[i];
+        e2[i] = tri[2][i] - a[i];
         tv[i] = s[i] - a[i];
     }
     p[0] = v[1] * e2[2] - v[2] * e2[1];
@@ -127,7 +127,7 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
         const dxTriMeshNode *node = &d->nodes[stack[top]];
         if (node->count == 0) {
             // Push the farther child first: the nearer is walked first.
-            int a = stack[top] + 1, b = node->first;
+            int a = node->first, b = node->first + 1;
             dReal ea, eb;
             int ha = ray_enters(s, v, inv, &d->nodes[a], limit, &ea);
             int hb = ray_enters(s, v, inv, &d->nodes[b], limit, &eb);
@@ -142,17 +142,18 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
             }
             continue;
         }
+        // Only the vertices are read until a hit (memory traffic is what a
+        // ray costs): the degenerate check, reading the normal, after.
         for (int j = node->first; j < node->first + node->count; j++) {
             int ti = d->order[j];
-            if (dxTriMeshIsDegenerate(d, ti)) continue;
-            dxTri t;
-            dxTriLoad(d, ti, &t);
-            dReal dist, bu, bv;
-            if (!ray_triangle(s, v, ray->length, &t, ray->backface_cull, &dist, &bu, &bv))
+            dReal tv[3][3], dist, bu, bv;
+            dxTriMeshTriangle(d, ti, tv);
+            if (!ray_triangle(s, v, ray->length, tv, ray->backface_cull, &dist, &bu, &bv))
                 continue;
+            if (dxTriMeshIsDegenerate(d, ti)) continue;
             if (m->ray_callback && !m->ray_callback(o1, o2, ti, bu, bv)) continue;
             if (m->callback && !m->callback(o1, o2, ti)) continue;
-            keep_hit(h, max, dist, ti, t.n);
+            keep_hit(h, max, dist, ti, d->normal + 3 * ti);
         }
     }
     int count = h->raw_count;
