@@ -68,10 +68,6 @@ static void heightfield_destroy(dxGeom *g)
     dFree(p->neighbour, 3 * nt * sizeof(int));
     dFree(p->features, nt);
     dFree(p->order, nt * sizeof(int));
-    dxTriMesh *m = &h->shadow;
-    dFree(m->candidates, (size_t)m->candidates_cap * sizeof(int));
-    dFree(m->hits, (size_t)m->hits_cap * sizeof(int));
-    dFree(m->raw, (size_t)m->raw_cap * sizeof(dxTriMeshRaw));
 }
 
 const dxGeomClassOps dx_heightfield_ops = { dHeightfieldClass, "heightfield", heightfield_aabb,

@@ -192,8 +192,8 @@ int dxHeightfieldBuildPatch(dxHeightfield *h, int x0, int x1, int z0, int z1)
     // One leaf: the asked cells' triangles, in the box of their vertices.
     dxTriMeshNode *node = p->nodes;
     for (int k = 0; k < 3; k++) {
-        node->lo[k] = dInfinity;
-        node->hi[k] = -dInfinity;
+        p->lo[k] = dInfinity;
+        p->hi[k] = -dInfinity;
     }
     int count = 0, ncx = nvx - 1;
     for (int j = z0 - vz0; j < z1 - vz0; j++)
@@ -203,11 +203,12 @@ int dxHeightfieldBuildPatch(dxHeightfield *h, int x0, int x1, int z0, int z1)
             for (int c = 0; c < 4; c++) {
                 const dReal *w = v + 3 * (i + (c & 1) + (j + (c >> 1)) * nvx);
                 for (int k = 0; k < 3; k++) {
-                    node->lo[k] = dMin(node->lo[k], w[k]);
-                    node->hi[k] = dMax(node->hi[k], w[k]);
+                    p->lo[k] = dMin(p->lo[k], w[k]);
+                    p->hi[k] = dMax(p->hi[k], w[k]);
                 }
             }
         }
+    dxTriMeshNodeSetBox(node, p->lo, p->hi);
     node->first = 0;
     node->count = count;
     p->node_count = count > 0;

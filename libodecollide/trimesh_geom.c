@@ -76,9 +76,6 @@ static void trimesh_destroy(dxGeom *g)
 {
     dxTriMesh *m = (dxTriMesh *)g;
     detach_data(m);
-    dFree(m->candidates, (size_t)m->candidates_cap * sizeof(int));
-    dFree(m->hits, (size_t)m->hits_cap * sizeof(int));
-    dFree(m->raw, (size_t)m->raw_cap * sizeof(dxTriMeshRaw));
 }
 
 const dxGeomClassOps dx_trimesh_ops = { dTriMeshClass, "trimesh", trimesh_aabb, trimesh_destroy };
@@ -86,6 +83,38 @@ const dxGeomClassOps dx_trimesh_ops = { dTriMeshClass, "trimesh", trimesh_aabb, 
 void dxTriMeshDataChanged(dxTriMeshData *d)
 {
     for (dxTriMesh *m = d->first_user; m; m = m->next_user) dxGeomShapeChanged(&m->g);
+}
+
+// The collider class's codes: how a sphere's contacts with several
+// triangles are merged (ODE 0.16's default: not at all).
+static int trimesh_control(dxGeom *g, int controlClass, int controlCode, void *dataValue,
+                           int *dataSize)
+{
+    dxTriMesh *m = (dxTriMesh *)g;
+    if (controlClass != dGeomColliderControlClass) {
+        *dataSize = 0;
+        DX_CHECK_ARG(0, return 0, "a trimesh has no codes in control class %d", controlClass);
+    }
+    if (controlCode == dGeomCommonAnyControlCode)
+        return dxGeomControlSizeValid(dataValue, dataSize, 0);
+    int set = controlCode == dGeomColliderSetMergeSphereContactsControlCode;
+    if (!set && controlCode != dGeomColliderGetMergeSphereContactsControlCode) {
+        *dataSize = 0;
+        DX_CHECK_ARG(0, return 0, "a trimesh has no control code %d", controlCode);
+    }
+    if (!dxGeomControlSizeValid(dataValue, dataSize, (int)sizeof(int))) return 0;
+    int *value = (int *)dataValue;
+    if (!set) {
+        *value = m->sphere_merge;
+        return 1;
+    }
+    DX_CHECK_ARG(*value >= dGeomColliderMergeContactsValue__Default &&
+                     *value <= dGeomColliderMergeContactsValue_Full,
+                 return 0, "%d is not a dGeomColliderMergeContactsValue", *value);
+    m->sphere_merge = *value == dGeomColliderMergeContactsValue__Default
+                          ? dGeomColliderMergeContactsValue_None
+                          : *value;
+    return 1;
 }
 
 dGeomID dCreateTriMesh(dSpaceID space, dTriMeshDataID Data, dTriCallback *Callback,
@@ -98,6 +127,8 @@ dGeomID dCreateTriMesh(dSpaceID space, dTriMeshDataID Data, dTriCallback *Callba
     m->callback = Callback;
     m->array_callback = ArrayCallback;
     m->ray_callback = RayCallback;
+    m->sphere_merge = dGeomColliderMergeContactsValue_None;
+    dxGeomRegisterControl(dTriMeshClass, trimesh_control);
     for (int i = 0; i < 4; i++) m->last_transform[5 * i] = 1;
     attach_data(m, Data);
     if (space) dSpaceAdd(space, &m->g);

@@ -25,12 +25,17 @@ enum {
 // bumps).
 enum { DX_TRI_EDGE_FEATURE = 0x01, DX_TRI_VERTEX_FEATURE = 0x08 };
 
-// A node of the box tree: a leaf holds count > 0 triangles order[first ..];
-// an inner node (count 0) has its children at index + 1 and at `first`.
+// A node of the box tree (32 bytes: two siblings share a cache line): a
+// leaf holds count > 0 triangles order[first ..]; an inner node (count 0)
+// has its children at `first` and `first + 1`, after it. The box is in
+// float, rounded outwards: it contains the exact one.
 typedef struct dxTriMeshNode {
-    dReal lo[3], hi[3];
+    float lo[3], hi[3];
     int first, count;
 } dxTriMeshNode;
+
+// Set a node's box to contain [lo, hi].
+void dxTriMeshNodeSetBox(dxTriMeshNode *node, const dReal lo[3], const dReal hi[3]);
 
 struct dxTriMesh;
 
@@ -53,6 +58,7 @@ struct dxTriMeshData {
     unsigned char *features;              // DX_TRI_*_FEATURE bits per triangle
     dxTriMeshNode *nodes;
     int node_count;
+    dReal lo[3], hi[3];                   // the exact box of the triangles (with nodes)
     int *order;                           // triangles in leaf order
     unsigned char *built_flags;           // Preprocess: use flags
     void *face_angles;                    // Preprocess: angles per edge
@@ -63,7 +69,7 @@ struct dxTriMeshData {
 };
 typedef struct dxTriMeshData dxTriMeshData;
 
-// Scratch memory of a geom's collisions, grown when needed and reused.
+// A contact of a triangle before the reduction (mesh frame).
 typedef struct dxTriMeshRaw {
     dReal pos[3], n[3], depth;   // n: the direction the other geom leaves along
     int tri, tri2;               // the triangle, and the other's (a trimesh) or -1
@@ -77,13 +83,12 @@ typedef struct dxTriMesh {
     dTriArrayCallback *array_callback;
     dTriRayCallback *ray_callback;
     dTriTriMergeCallback *merge_callback;
+    // How a sphere's contacts merge: dGeomColliderMergeContactsValue_None,
+    // _Normals or _Full; 0 (a heightfield's shadow mesh) as other shapes'.
+    int sphere_merge;
     unsigned tc_classes;                  // bit per class: temporal coherence on
     dMatrix4 last_transform;
     int last_set;                         // SetLastTransform was called
-    int *candidates, *hits;               // triangle lists of one query
-    int candidates_cap, hits_cap;
-    dxTriMeshRaw *raw;                    // contacts before reduction
-    int raw_count, raw_cap;
 } dxTriMesh;
 
 extern const dxGeomClassOps dx_trimesh_ops;

@@ -3,9 +3,11 @@
 // trimesh_tree.c -- the box tree of a mesh: built once per data object
 // (top-down, each node's triangles split at the median of their centres
 // along the longest side of the centres' box, leaves of at most LEAF
-// triangles), refitted bottom-up when the vertices move (same topology),
-// and walked with a fixed stack to list the triangles near a box.
+// triangles; siblings side by side, after their parent), refitted
+// bottom-up when the vertices move (same topology), and walked with a
+// fixed stack to list the triangles near a box.
 
+#include <math.h>
 #include <ode/memory.h>
 #include <string.h>
 
@@ -53,6 +55,17 @@ static void select_median(int *order, const dReal *centre, int axis, int lo, int
     }
 }
 
+void dxTriMeshNodeSetBox(dxTriMeshNode *node, const dReal lo[3], const dReal hi[3])
+{
+    for (int k = 0; k < 3; k++) {
+        float l = (float)lo[k], h = (float)hi[k];
+        if (l > lo[k]) l = nextafterf(l, -INFINITY);
+        if (h < hi[k]) h = nextafterf(h, INFINITY);
+        node->lo[k] = l;
+        node->hi[k] = h;
+    }
+}
+
 static void grow(dReal lo[3], dReal hi[3], const dReal blo[3], const dReal bhi[3])
 {
     for (int k = 0; k < 3; k++) {
@@ -61,22 +74,24 @@ static void grow(dReal lo[3], dReal hi[3], const dReal blo[3], const dReal bhi[3
     }
 }
 
-// The node over order[lo, hi), at index d->node_count (preorder: the left
-// child follows its parent); box holds 6 numbers per triangle (lo, hi).
-static void build_node(dxTriMeshData *d, const dReal *centre, const dReal *box, int lo, int hi)
+// Node i over order[lo, hi) (its slot taken); box holds 6 numbers per
+// triangle (lo, hi). Its children take the next two free slots.
+static void build_node(dxTriMeshData *d, int i, const dReal *centre, const dReal *box, int lo,
+                       int hi)
 {
-    dxTriMeshNode *node = &d->nodes[d->node_count++];
+    dReal blo[3] = { dInfinity, dInfinity, dInfinity };
+    dReal bhi[3] = { -dInfinity, -dInfinity, -dInfinity };
     dReal clo[3] = { dInfinity, dInfinity, dInfinity };
     dReal chi[3] = { -dInfinity, -dInfinity, -dInfinity };
-    for (int k = 0; k < 3; k++) {
-        node->lo[k] = dInfinity;
-        node->hi[k] = -dInfinity;
-    }
-    for (int i = lo; i < hi; i++) {
-        int t = d->order[i];
-        grow(node->lo, node->hi, box + 6 * t, box + 6 * t + 3);
+    for (int j = lo; j < hi; j++) {
+        int t = d->order[j];
+        grow(blo, bhi, box + 6 * t, box + 6 * t + 3);
         grow(clo, chi, centre + 3 * t, centre + 3 * t);
     }
+    dxTriMeshNode *node = &d->nodes[i];
+    dxTriMeshNodeSetBox(node, blo, bhi);
+    if (i == 0)
+        for (int k = 0; k < 3; k++) d->lo[k] = blo[k], d->hi[k] = bhi[k];
     if (hi - lo <= LEAF) {
         node->first = lo;
         node->count = hi - lo;
@@ -88,10 +103,10 @@ static void build_node(dxTriMeshData *d, const dReal *centre, const dReal *box, 
     int mid = (lo + hi) / 2;
     select_median(d->order, centre, axis, lo, hi, mid);
     node->count = 0;
-    build_node(d, centre, box, lo, mid);
-    // nodes holds 2 n from the start: `node` stays valid.
     node->first = d->node_count;
-    build_node(d, centre, box, mid, hi);
+    d->node_count += 2;
+    build_node(d, node->first, centre, box, lo, mid);
+    build_node(d, d->nodes[i].first + 1, centre, box, mid, hi);
 }
 
 void dxTriMeshBuildTree(dxTriMeshData *d)
@@ -99,7 +114,7 @@ void dxTriMeshBuildTree(dxTriMeshData *d)
     size_t n = (size_t)d->tri_count;
     d->order = (int *)dAlloc(n * sizeof(int));
     d->nodes = (dxTriMeshNode *)dAlloc(2 * n * sizeof(dxTriMeshNode));
-    d->node_count = 0;
+    d->node_count = 1;
     dReal *box = (dReal *)dAlloc(6 * n * sizeof(dReal));
     dReal *centre = (dReal *)dAlloc(3 * n * sizeof(dReal));
     for (int t = 0; t < d->tri_count; t++) {
@@ -107,7 +122,7 @@ void dxTriMeshBuildTree(dxTriMeshData *d)
         triangle_box(d, t, box + 6 * t, box + 6 * t + 3);
         for (int k = 0; k < 3; k++) centre[3 * t + k] = (box[6 * t + k] + box[6 * t + 3 + k]) / 2;
     }
-    build_node(d, centre, box, 0, d->tri_count);
+    build_node(d, 0, centre, box, 0, d->tri_count);
     // Fewer nodes than the 2 n reserved are used (about n / 2): give the rest back.
     d->nodes = (dxTriMeshNode *)dRealloc(d->nodes, 2 * n * sizeof(dxTriMeshNode),
                                          (size_t)d->node_count * sizeof(dxTriMeshNode));
@@ -118,23 +133,34 @@ void dxTriMeshBuildTree(dxTriMeshData *d)
 void dxTriMeshRefitTree(dxTriMeshData *d)
 {
     // Children come after their parent: going backwards meets them first.
+    // The exact boxes are kept beside the nodes' rounded ones while walking.
+    if (d->node_count == 0) return;
+    size_t size = (size_t)d->node_count * 6 * sizeof(dReal);
+    dReal *exact = (dReal *)dAlloc(size);
     for (int i = d->node_count - 1; i >= 0; i--) {
         dxTriMeshNode *node = &d->nodes[i];
+        dReal *lo = exact + 6 * i, *hi = lo + 3;
         for (int k = 0; k < 3; k++) {
-            node->lo[k] = dInfinity;
-            node->hi[k] = -dInfinity;
+            lo[k] = dInfinity;
+            hi[k] = -dInfinity;
         }
         if (node->count > 0) {
             for (int j = node->first; j < node->first + node->count; j++) {
-                dReal lo[3], hi[3];
-                triangle_box(d, d->order[j], lo, hi);
-                grow(node->lo, node->hi, lo, hi);
+                dReal tlo[3], thi[3];
+                triangle_box(d, d->order[j], tlo, thi);
+                grow(lo, hi, tlo, thi);
             }
         } else {
-            grow(node->lo, node->hi, d->nodes[i + 1].lo, d->nodes[i + 1].hi);
-            grow(node->lo, node->hi, d->nodes[node->first].lo, d->nodes[node->first].hi);
+            for (int c = node->first; c <= node->first + 1; c++)
+                grow(lo, hi, exact + 6 * c, exact + 6 * c + 3);
         }
+        dxTriMeshNodeSetBox(node, lo, hi);
     }
+    for (int k = 0; k < 3; k++) {
+        d->lo[k] = exact[k];
+        d->hi[k] = exact[3 + k];
+    }
+    dFree(exact, size);
 }
 
 static int overlaps(const dxTriMeshNode *node, const dReal lo[3], const dReal hi[3])
@@ -156,9 +182,9 @@ int dxTriMeshQueryBox(const dxTriMeshData *d, const dReal lo[3], const dReal hi[
         if (node->count > 0) {
             dxTriMeshReserveInts(out, cap, n + node->count);
             for (int j = 0; j < node->count; j++) (*out)[n++] = d->order[node->first + j];
-        } else {
+        } else {   // the first child is walked first
+            stack[top++] = node->first + 1;
             stack[top++] = node->first;
-            stack[top++] = i + 1;
         }
     }
     return n;
@@ -167,7 +193,7 @@ int dxTriMeshQueryBox(const dxTriMeshData *d, const dReal lo[3], const dReal hi[
 void dxTriMeshDataBounds(const dxTriMeshData *d, dReal lo[3], dReal hi[3])
 {
     for (int k = 0; k < 3; k++) {
-        lo[k] = d->node_count ? d->nodes[0].lo[k] : 0;
-        hi[k] = d->node_count ? d->nodes[0].hi[k] : 0;
+        lo[k] = d->node_count ? d->lo[k] : 0;
+        hi[k] = d->node_count ? d->hi[k] : 0;
     }
 }

@@ -152,7 +152,9 @@ static int test_contacts_match_a_trimesh_of_the_surface(void)
         CHECK(na < 512);
         // In single precision near-duplicates are merged in the order the
         // triangles come, which differs: about 1 pose in 80 differs there.
-        if (na != nb || !contacts_match(a, na, b, nb, TOL(1e-9, 2e-4)) ||
+        // A sphere's contacts on the mesh are not merged (ODE's default
+        // there): the same set, with repeats.
+        if ((k != 0 && na != nb) || !contacts_match(a, na, b, nb, TOL(1e-9, 2e-4)) ||
             !contacts_match(b, nb, a, na, TOL(1e-9, 2e-4)))
             differing++;
         for (int j = 0; j < na; j++) {

@@ -92,10 +92,12 @@ static int test_strides(void)
         dGeomSetPosition(s, -0.9 + 0.09 * i, 0.7 - 0.07 * i, 0.1 + 0.01 * i);
         dContactGeom ca[4], cb[4];
         int na = dCollide(a, s, 4, ca, sizeof ca[0]), nb = dCollide(b, s, 4, cb, sizeof cb[0]);
-        CHECK(na == nb && na == 1);
-        CHECK_NEAR(ca[0].depth, cb[0].depth, 1e-6);
-        CHECK_VEC(ca[0].normal, cb[0].normal[0], cb[0].normal[1], cb[0].normal[2], 1e-6);
-        CHECK(ca[0].side1 == cb[0].side1);
+        CHECK(na == nb && na >= 1);
+        for (int j = 0; j < na && j < nb; j++) {
+            CHECK_NEAR(ca[j].depth, cb[j].depth, 1e-6);
+            CHECK_VEC(ca[j].normal, cb[j].normal[0], cb[j].normal[1], cb[j].normal[2], 1e-6);
+            CHECK(ca[j].side1 == cb[j].side1);
+        }
     }
     dVector3 p0, p1, p2;
     dGeomTriMeshGetTriangle(a, 1, &p0, &p1, &p2);
@@ -308,9 +310,9 @@ static int test_destroy_data_first(void)
     dGeomID s = dCreateSphere(0, 0.5);
     dGeomSetPosition(s, 0.2, 0.2, 0.4);
     dContactGeom c[4];
-    CHECK(dCollide(a, s, 4, c, sizeof c[0]) == 1);
+    CHECK(dCollide(a, s, 4, c, sizeof c[0]) >= 1);
     dGeomDestroy(a);
-    CHECK(dCollide(b, s, 4, c, sizeof c[0]) == 1);
+    CHECK(dCollide(b, s, 4, c, sizeof c[0]) >= 1);
     // Destroyed is destroyed: it cannot be given to a geom or destroyed again.
     dTriMeshDataID gone = dGeomTriMeshGetData(b);
     test_capture_reports();

@@ -85,11 +85,16 @@ static int test_sphere_on_flat_grid(void)
         if (i % 4 == 0) x = 0.4 * floor(x / 0.4), y = 0.4 * floor(y / 0.4);
         if (i % 4 == 1) x = 0.4 * floor(x / 0.4);
         dGeomSetPosition(s, x, y, z);
+        // One contact per triangle touched (ODE's default: not merged),
+        // all the same: the plane's.
         int n = collide_both(g, s, 8, c);
-        CHECK(n == 1);
-        CHECK_VEC(c[0].normal, DOWN[0], DOWN[1], DOWN[2], EPS);
-        CHECK_NEAR(c[0].depth, 0.3 - z, EPS);
-        CHECK_VEC(c[0].pos, x, y, z - 0.3, EPS);
+        CHECK(n >= 1 && n <= 8);
+        for (int j = 0; j < n; j++) {
+            CHECK_VEC(c[j].normal, DOWN[0], DOWN[1], DOWN[2], EPS);
+            CHECK_NEAR(c[j].depth, 0.3 - z, EPS);
+            CHECK_VEC(c[j].pos, x, y, z - 0.3, EPS);
+        }
+        CHECK(i % 4 != 0 || n == 4 || n == 8);   // the triangles at the vertex
     }
     // Out of reach, and behind the (one-sided) surface.
     dGeomSetPosition(s, 0.1, 0.2, 0.31);
@@ -692,22 +697,25 @@ static int test_callbacks(void)
     CHECK(dGeomTriMeshGetCallback(g) == veto_odd && dGeomTriMeshGetArrayCallback(g) == array_cb);
     dGeomID s = dCreateSphere(0, 0.2);
     dContactGeom c[MAXC];
-    // Over the grid's centre vertex (0, 0): six triangles around it touch;
-    // the array callback sees the three even ones.
+    // Over the grid's centre vertex (0, 0): the triangles around it touch;
+    // the array callback sees the even ones, each with its contact.
     dGeomSetPosition(s, 0, 0, 0.1);
     array_calls = 0;
     int n = dCollide(g, s, 8, c, sizeof c[0]);
-    CHECK(n == 1 && array_calls == 1);
-    CHECK(array_count >= 1);
+    CHECK(n >= 1 && array_calls == 1);
+    CHECK(array_count == n);
     for (int i = 0; i < array_count; i++) CHECK(array_seen[i] % 2 == 0);
-    CHECK(c[0].side1 == -1 || c[0].side1 % 2 == 0);
-    // Without the veto: every triangle around the vertex, and the merge
-    // callback names the merged contact.
+    for (int i = 0; i < n; i++) CHECK(c[i].side1 % 2 == 0);
+    // Without the veto: every triangle around the vertex, and, merging
+    // fully, the merge callback names the merged contact.
     dGeomTriMeshSetCallback(g, NULL);
     dGeomTriMeshSetTriMergeCallback(g, merge_cb);
+    int full = dGeomColliderMergeContactsValue_Full, size = sizeof full;
+    CHECK(dGeomLowLevelControl(g, dGeomColliderControlClass,
+                               dGeomColliderSetMergeSphereContactsControlCode, &full, &size));
     merges = 0;
     n = dCollide(g, s, 8, c, sizeof c[0]);
-    CHECK(n == 1 && merges >= 1 && c[0].side1 >= 1000);
+    CHECK(n == 1 && merges == array_count - 1 && c[0].side1 >= 1000);
     int around = 0;
     for (int t = 0; t < m.nt; t++)
         for (int k = 0; k < 3; k++)
@@ -727,6 +735,143 @@ static int test_callbacks(void)
     dGeomDestroy(s);
     dGeomDestroy(g);
     mesh_free(&m);
+    return 0;
+}
+
+// ---- merging a sphere's contacts (dGeomLowLevelControl) ----------------------------
+
+static int merge_control(dGeomID g, int code, int *value)
+{
+    int size = sizeof *value;
+    return dGeomLowLevelControl(g, dGeomColliderControlClass, code, value, &size);
+}
+
+// ODE's own case: a sphere exactly touching the diagonal shared by the two
+// triangles of a square gets one contact from each, of depth 0, along the
+// face normal (the default: contacts not merged).
+static int test_sphere_on_a_shared_edge_touches_both_triangles(void)
+{
+    static const float v[4][3] = { { -1, -1, 0 }, { 1, -1, 0 }, { 1, 1, 0 }, { -1, 1, 0 } };
+    static const dTriIndex t[2][3] = { { 0, 1, 2 }, { 0, 2, 3 } };
+    dTriMeshDataID d = dGeomTriMeshDataCreate();
+    dGeomTriMeshDataBuildSingle(d, v, sizeof v[0], 4, t, 6, sizeof t[0]);
+    dGeomID g = dCreateTriMesh(0, d, NULL, NULL, NULL), s = dCreateSphere(0, 4);
+    dContactGeom c[4];
+    const dReal shift[3] = { 10, 30, 40 };
+
+    for (int pass = 0; pass < 2; pass++) {
+        const dReal *o = pass ? shift : (const dReal[3]){ 0, 0, 0 };
+        dGeomSetPosition(g, o[0], o[1], o[2]);
+        dGeomSetPosition(s, o[0], o[1], o[2] + 4);
+        int n = dCollide(g, s, 4, c, sizeof c[0]);
+
+        CHECK(n == 2);
+        for (int i = 0; i < n; i++) {
+            CHECK(c[i].depth == 0);
+            CHECK_VEC(c[i].normal, 0, 0, -1, 0);
+            CHECK(c[i].side1 == i || c[i].side1 == 1 - i);
+        }
+        CHECK(n == 2 && c[0].side1 != c[1].side1);
+    }
+    dGeomDestroy(s);
+    dGeomDestroy(g);
+    dGeomTriMeshDataDestroy(d);
+    return 0;
+}
+
+// A ball in a concave V (faces at 45 degrees either side of x = 0) touches
+// both faces: each setting as ODE defines it.
+static int test_sphere_merge_settings(void)
+{
+    static const double v[6][3] = { { 0, -2, 0 }, { 0, 2, 0 }, { -1, 0, 1 },
+                                    { 0, 2, 0 }, { 0, -2, 0 }, { 1, 0, 1 } };
+    static const dTriIndex t[2][3] = { { 0, 1, 2 }, { 3, 4, 5 } };
+    dTriMeshDataID d = dGeomTriMeshDataCreate();
+    dGeomTriMeshDataBuildDouble(d, v, sizeof v[0], 6, t, 6, sizeof t[0]);
+    dGeomID g = dCreateTriMesh(0, d, NULL, NULL, NULL), s = dCreateSphere(0, 0.5);
+    dGeomSetPosition(s, 0, 0, 0.6);
+    const double h = sqrt(0.5), depth = 0.5 - 0.6 * h;
+    dContactGeom c[4];
+    int value = -1;
+
+    // Default: not merged, each face's own normal.
+    CHECK(merge_control(g, dGeomColliderGetMergeSphereContactsControlCode, &value));
+    CHECK(value == dGeomColliderMergeContactsValue_None);
+    int n = dCollide(g, s, 4, c, sizeof c[0]);
+    CHECK(n == 2);
+    for (int i = 0; i < n; i++) {
+        double sx = c[i].pos[0] < 0 ? 1 : -1;   // the left face pushes +x
+        CHECK_VEC(c[i].normal, -sx * h, 0, -h, EPS);
+        CHECK_NEAR(c[i].depth, depth, EPS);
+        CHECK_VEC(c[i].pos, -sx * 0.5 * h, 0, 0.6 - 0.5 * h, EPS);   // the ball's deepest
+    }
+    // Normals: both take the mean normal, depths and points unchanged.
+    value = dGeomColliderMergeContactsValue_Normals;
+    CHECK(merge_control(g, dGeomColliderSetMergeSphereContactsControlCode, &value));
+    n = dCollide(g, s, 4, c, sizeof c[0]);
+    CHECK(n == 2);
+    for (int i = 0; i < n; i++) {
+        CHECK_VEC(c[i].normal, 0, 0, -1, EPS);
+        CHECK_NEAR(c[i].depth, depth, EPS);
+        CHECK_NEAR(fabs(c[i].pos[0]), 0.5 * h, EPS);
+    }
+    // Full: one contact at the mean point, deep enough along the mean
+    // normal (depth / cos 45); no merge callback: no triangle.
+    value = dGeomColliderMergeContactsValue_Full;
+    CHECK(merge_control(g, dGeomColliderSetMergeSphereContactsControlCode, &value));
+    n = dCollide(g, s, 4, c, sizeof c[0]);
+    CHECK(n == 1);
+    CHECK_VEC(c[0].normal, 0, 0, -1, EPS);
+    CHECK_NEAR(c[0].depth, depth / h, EPS);
+    CHECK_VEC(c[0].pos, 0, 0, 0.6 - 0.5 * h, EPS);
+    CHECK(c[0].side1 == -1);
+    // Unimportant contacts are not merged: the first one alone.
+    n = dCollide(g, s, 4 | CONTACTS_UNIMPORTANT, c, sizeof c[0]);
+    CHECK(n == 1);
+    CHECK_NEAR(fabs(c[0].normal[0]), h, EPS);
+    // __Default restores the default.
+    value = dGeomColliderMergeContactsValue__Default;
+    CHECK(merge_control(g, dGeomColliderSetMergeSphereContactsControlCode, &value));
+    CHECK(merge_control(g, dGeomColliderGetMergeSphereContactsControlCode, &value));
+    CHECK(value == dGeomColliderMergeContactsValue_None);
+    CHECK(dCollide(g, s, 4, c, sizeof c[0]) == 2);
+    dGeomDestroy(s);
+    dGeomDestroy(g);
+    dGeomTriMeshDataDestroy(d);
+    return 0;
+}
+
+static int test_merge_control_bad_input_is_reported(void)
+{
+    test_capture_reports();
+    test_mesh m;
+    mesh_sheet(&m, 1);
+    dGeomID g = dCreateTriMesh(0, m.data, NULL, NULL, NULL);
+    int value = 7, size = 2;
+
+    // A wrong size: refused, the size wanted given back, nothing reported.
+    CHECK(dGeomLowLevelControl(g, dGeomColliderControlClass,
+                               dGeomColliderSetMergeSphereContactsControlCode, &value,
+                               &size) == 0);
+    CHECK(size == (int)sizeof(int) && test_captured_count() == 0);
+    CHECK(dGeomLowLevelControl(g, dGeomColliderControlClass, dGeomCommonAnyControlCode, NULL,
+                               &(int){ 0 }) == 1);
+    // Not a merge value, another class, another code: refused and named.
+    CHECK(merge_control(g, dGeomColliderSetMergeSphereContactsControlCode, &value) == 0);
+    CHECK(test_captured_contains("7 is not a dGeomColliderMergeContactsValue"));
+    CHECK(merge_control(g, dGeomColliderGetMergeSphereContactsControlCode, &value) == 1);
+    CHECK(value == dGeomColliderMergeContactsValue_None);
+    size = sizeof value;
+    CHECK(dGeomLowLevelControl(g, dGeomCommonControlClass,
+                               dGeomColliderSetMergeSphereContactsControlCode, &value,
+                               &size) == 0);
+    CHECK(size == 0 && test_captured_contains("no codes in control class 0"));
+    CHECK(merge_control(g, 9, &value) == 0);
+    CHECK(test_captured_contains("no control code 9"));
+    CHECK(test_captured_count() == 3);
+    dGeomDestroy(g);
+    mesh_free(&m);
+    test_release_reports();
     return 0;
 }
 
@@ -815,6 +960,9 @@ const test_case test_cases[] = {
     TEST_CASE(test_trimesh_trimesh_last_transform),
     TEST_CASE(test_trimesh_trimesh_sdf),
     TEST_CASE(test_callbacks),
+    TEST_CASE(test_sphere_on_a_shared_edge_touches_both_triangles),
+    TEST_CASE(test_sphere_merge_settings),
+    TEST_CASE(test_merge_control_bad_input_is_reported),
     TEST_CASE(test_other_backends_fall_back),
     TEST_CASE(test_no_allocation_when_warm),
     TEST_END,

@@ -32,14 +32,9 @@ void dxTriAdd(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth, 
 void dxTriAdd2(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth, int tri,
                int tri2)
 {
-    dxTriMesh *m = q->mesh;
-    if (m->raw_count == m->raw_cap) {
-        int ncap = m->raw_cap ? 2 * m->raw_cap : 32;
-        m->raw = (dxTriMeshRaw *)dRealloc(m->raw, (size_t)m->raw_cap * sizeof *m->raw,
-                                          (size_t)ncap * sizeof *m->raw);
-        m->raw_cap = ncap;
-    }
-    dxTriMeshRaw *r = &m->raw[m->raw_count++];
+    dxTriScratch *s = q->s;
+    dxTriScratchAddRaw(s, 1);
+    dxTriMeshRaw *r = &s->raw[s->raw_count++];
     for (int k = 0; k < 3; k++) {
         r->pos[k] = pos[k];
         r->n[k] = n[k];
@@ -66,11 +61,11 @@ static int merged_side(dxGeom *g, int a, int b)
 
 // Merge contacts at (nearly) the same point with (nearly) the same normal,
 // keeping the deeper; returns the new count.
-static int merge_duplicates(dxTriMesh *m, dxGeom *other, dReal tol)
+static int merge_duplicates(dxTriScratch *s, dxTriMesh *m, dxGeom *other, dReal tol)
 {
-    dxTriMeshRaw *r = m->raw;
+    dxTriMeshRaw *r = s->raw;
     int n = 0;
-    for (int i = 0; i < m->raw_count; i++) {
+    for (int i = 0; i < s->raw_count; i++) {
         int j = 0;
         while (j < n && !(dist2(r[i].pos, r[j].pos) <= tol * tol &&
                           dx_dot(r[i].n, r[j].n) > 1 - (dReal)1e-6))
@@ -150,25 +145,25 @@ static void mark_hull(const dxTriMeshRaw *r, const int *members, int count, dRea
 
 // Keep only the hull corners (and an inner point deeper than them by more
 // than tol) of each flat group; returns the new count.
-static int prune_flat_groups(dxTriMesh *m, int n, dReal tol)
+static int prune_flat_groups(dxTriScratch *s, int n, dReal tol)
 {
-    dxTriMeshReserveInts(&m->candidates, &m->candidates_cap, n);
-    dxTriMeshReserveInts(&m->hits, &m->hits_cap, 2 * n);
-    int *members = m->candidates, *keep = m->hits, *done = m->hits + n;
+    dxTriMeshReserveInts(&s->cand[0], &s->cand_cap[0], n);
+    dxTriMeshReserveInts(&s->hits[0], &s->hits_cap[0], 2 * n);
+    int *members = s->cand[0], *keep = s->hits[0], *done = s->hits[0] + n;
     for (int i = 0; i < n; i++) keep[i] = done[i] = 0;
     for (int i = 0; i < n; i++) {
         if (done[i]) continue;
         int count = 0;
         for (int j = i; j < n; j++)
-            if (!done[j] && dx_dot(m->raw[i].n, m->raw[j].n) > SAME_NORMAL) {
+            if (!done[j] && dx_dot(s->raw[i].n, s->raw[j].n) > SAME_NORMAL) {
                 members[count++] = j;
                 done[j] = 1;
             }
-        mark_hull(m->raw, members, count, tol, keep);
+        mark_hull(s->raw, members, count, tol, keep);
     }
     int k = 0;
     for (int i = 0; i < n; i++)
-        if (keep[i]) m->raw[k++] = m->raw[i];
+        if (keep[i]) s->raw[k++] = s->raw[i];
     return k;
 }
 
@@ -248,20 +243,11 @@ static void select_spread(dxTriMeshRaw *r, int n, int keep)
     }
 }
 
-int dxTriMeshFinish(dxTriQuery *q, int flags, dContactGeom *c, int skip)
+void dxTriMeshWrite(dxTriQuery *q, int n, dContactGeom *c, int skip)
 {
-    dxTriMesh *m = q->mesh;
-    dxGeom *g = &m->g;
-    dReal tol = q->scale * (dReal)1e-5;
-    int n = merge_duplicates(m, q->other, tol);
-    n = prune_flat_groups(m, n, tol);
-    int max = dx_max_contacts(flags);
-    if (n > max) {
-        select_spread(m->raw, n, max);
-        n = max;
-    }
+    dxGeom *g = &q->mesh->g;
     for (int i = 0; i < n; i++) {
-        const dxTriMeshRaw *r = &m->raw[i];
+        const dxTriMeshRaw *r = &q->s->raw[i];
         dReal pos[3], nw[3];
         dx_point_to_world(g->R, g->pos, r->pos, pos);
         dx_to_world(g->R, r->n, nw);
@@ -270,6 +256,23 @@ int dxTriMeshFinish(dxTriQuery *q, int flags, dContactGeom *c, int skip)
         dxContactAt(c, i, skip)->side1 = r->tri;
         dxContactAt(c, i, skip)->side2 = r->tri2;
     }
+}
+
+int dxTriMeshSpread(dxTriQuery *q, int n, int flags)
+{
+    int max = dx_max_contacts(flags);
+    if (n <= max) return n;
+    select_spread(q->s->raw, n, max);
+    return max;
+}
+
+int dxTriMeshFinish(dxTriQuery *q, int flags, dContactGeom *c, int skip)
+{
+    dReal tol = q->scale * (dReal)1e-5;
+    int n = merge_duplicates(q->s, q->mesh, q->other, tol);
+    n = prune_flat_groups(q->s, n, tol);
+    n = dxTriMeshSpread(q, n, flags);
+    dxTriMeshWrite(q, n, c, skip);
     return n;
 }
 
@@ -309,29 +312,39 @@ static void pose_other(dxTriQuery *q, dReal lo[3], dReal hi[3])
     }
 }
 
-int dxTriMeshCollide(dxGeom *mesh, dxGeom *other, int flags, dContactGeom *c, int skip,
-                     dxTriTest *test)
+int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dxTriTest *test)
 {
     dxTriMesh *m = (dxTriMesh *)mesh;
+    dxTriScratch *s = q->s;
+    *q = (dxTriQuery){ .s = s, .mesh = m, .data = m->data, .other = other };
+    s->raw_count = 0;
     if (!m->data || m->data->tri_count == 0) return 0;
-    dxTriQuery q = { .mesh = m, .data = m->data, .other = other };
     dReal lo[3], hi[3];
-    pose_other(&q, lo, hi);
-    int count = dxTriMeshQueryBox(m->data, lo, hi, &m->candidates, &m->candidates_cap);
-    m->raw_count = 0;
+    pose_other(q, lo, hi);
+    int count = dxTriMeshQueryBox(m->data, lo, hi, &s->cand[0], &s->cand_cap[0]);
     int hits = 0;
     for (int i = 0; i < count; i++) {
-        int t = m->candidates[i];
+        int t = s->cand[0][i];
         if (dxTriMeshIsDegenerate(m->data, t)) continue;
         if (m->callback && !m->callback(mesh, other, t)) continue;
         dxTri tri;
         dxTriLoad(m->data, t, &tri);
-        if (!test(&q, &tri)) continue;
-        dxTriMeshReserveInts(&m->hits, &m->hits_cap, hits + 1);
-        m->hits[hits++] = t;
+        if (!test(q, &tri)) continue;
+        dxTriMeshReserveInts(&s->hits[0], &s->hits_cap[0], hits + 1);
+        s->hits[0][hits++] = t;
     }
-    if (hits > 0 && m->array_callback) m->array_callback(mesh, other, m->hits, hits);
-    return m->raw_count ? dxTriMeshFinish(&q, flags, c, skip) : 0;
+    if (hits > 0 && m->array_callback) m->array_callback(mesh, other, s->hits[0], hits);
+    return s->raw_count;
+}
+
+int dxTriMeshCollide(dxGeom *mesh, dxGeom *other, int flags, dContactGeom *c, int skip,
+                     dxTriTest *test)
+{
+    dxTriQuery q = { .s = dxTriScratchAcquire() };
+    if (!q.s) return 0;
+    int n = dxTriMeshGather(&q, mesh, other, test) ? dxTriMeshFinish(&q, flags, c, skip) : 0;
+    dxTriScratchRelease(q.s);
+    return n;
 }
 
 // ---- triangle geometry --------------------------------------------------------

@@ -12,8 +12,28 @@
 #include "../../libodecollide/trimesh_internal.h"
 #include "collide_math.h"
 
+// The scratch memory of one collision (collide_trimesh_scratch.c): up to
+// two triangle lists of each kind (candidates from the tree, triangles
+// hit; [1] for the second mesh of a trimesh pair) and the contacts before
+// the reduction.
+typedef struct dxTriScratch {
+    int *cand[2], *hits[2];
+    int cand_cap[2], hits_cap[2];
+    dxTriMeshRaw *raw;
+    int raw_count, raw_cap;
+} dxTriScratch;
+
+// A free set of the calling thread's (NULL, reported, if collisions nest
+// too deep through callbacks), its contacts emptied; give it back with
+// dxTriScratchRelease (NULL is ignored).
+dxTriScratch *dxTriScratchAcquire(void);
+void dxTriScratchRelease(dxTriScratch *s);
+// Room for `extra` more contacts in s->raw.
+void dxTriScratchAddRaw(dxTriScratch *s, int extra);
+
 // One pair's query, everything in the mesh frame.
 typedef struct dxTriQuery {
+    dxTriScratch *s;   // this collision's scratch memory
     dxTriMesh *mesh;
     const dxTriMeshData *data;   // the mesh's data (NULL: see dxTriClipToPrism)
     dxGeom *other;
@@ -54,11 +74,21 @@ void dxTriAdd2(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth,
 int dxTriMeshCollide(dxGeom *mesh, dxGeom *other, int flags, dContactGeom *c, int skip,
                      dxTriTest *test);
 
-// Reduce the contacts gathered in q->mesh->raw (near-duplicates merged, the
+// Reduce the contacts gathered in q->s->raw (near-duplicates merged, the
 // triangles of a merged one given to the merge callbacks, flat groups kept
 // to their hull corners, at most flags & 0xffff kept: the deepest first,
 // then the spread) and write them in world coordinates; returns the count.
 int dxTriMeshFinish(dxTriQuery *q, int flags, dContactGeom *c, int skip);
+
+// The walk of dxTriMeshCollide alone: sets q up for the pair (q->s, an
+// acquired scratch set, is kept), gathers the triangles' contacts into
+// q->s->raw (callbacks honoured) and returns their count.
+int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dxTriTest *test);
+// Keep at most flags & 0xffff of the first n gathered contacts (the deepest
+// first, then the spread) at the front; returns the count kept.
+int dxTriMeshSpread(dxTriQuery *q, int n, int flags);
+// Write the first n gathered contacts in world coordinates as they are.
+void dxTriMeshWrite(dxTriQuery *q, int n, dContactGeom *c, int skip);
 
 // Load triangle t (dxTri) from the data.
 void dxTriLoad(const dxTriMeshData *d, int t, dxTri *out);

@@ -98,9 +98,75 @@ static int sphere_test(dxTriQuery *q, const dxTri *t)
     return ball_contact(q, t, q->pos, r, on_tri, f);
 }
 
+// The mean of the n contacts' normals weighted by their depths, into N;
+// 0 if it has no direction.
+static int mean_normal(const dxTriMeshRaw *r, int n, dReal N[3])
+{
+    N[0] = N[1] = N[2] = 0;
+    for (int i = 0; i < n; i++)
+        for (int k = 0; k < 3; k++) N[k] += r[i].depth * r[i].n[k];
+    dReal len = dSqrt(dx_dot(N, N));
+    if (!(len > 0)) return 0;
+    for (int k = 0; k < 3; k++) N[k] /= len;
+    return 1;
+}
+
+// The n contacts merged into r[0]: at their mean point, along N, as deep as
+// the deepest of them needs along N (depth / cos, the cosine at least 1/2);
+// its triangle as the merge callback names it. 0 (nothing changed) if a
+// contact is at right angles to N or beyond.
+static int merge_fully(dxTriMesh *m, dxTriMeshRaw *r, int n, const dReal N[3])
+{
+    dReal depth = 0, pos[3] = { 0, 0, 0 };
+    for (int i = 0; i < n; i++) {
+        dReal cosine = dx_dot(N, r[i].n);
+        if (cosine < DX_COLLIDE_EPS) return 0;
+        depth = dMax(depth, r[i].depth / dMax(cosine, (dReal)0.5));
+        for (int k = 0; k < 3; k++) pos[k] += r[i].pos[k] / n;
+    }
+    int tri = r[0].tri;
+    for (int i = 1; i < n; i++) tri = m->merge_callback ? m->merge_callback(&m->g, tri, r[i].tri) : -1;
+    for (int k = 0; k < 3; k++) {
+        r[0].pos[k] = pos[k];
+        r[0].n[k] = N[k];
+    }
+    r[0].depth = depth;
+    r[0].tri = tri;
+    return 1;
+}
+
+// A sphere's contacts, one per triangle it touches, merged as the mesh's
+// setting says (dGeomColliderMergeContactsValue_*, ODE's semantics): not at
+// all (the default), the normals only (each takes the mean normal) or fully
+// (one contact). CONTACTS_UNIMPORTANT skips the merging (fully: the first
+// contact only). A heightfield's shadow mesh (setting 0) reduces them as
+// any shape's.
 int dxCollideTriMeshSphere(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
 {
-    return dxTriMeshCollide(o1, o2, flags, c, skip, sphere_test);
+    dxTriQuery q = { .s = dxTriScratchAcquire() };
+    if (!q.s) return 0;
+    int n = dxTriMeshGather(&q, o1, o2, sphere_test);
+    dxTriMesh *m = q.mesh;
+    dxTriMeshRaw *r = q.s->raw;
+    int important = !(flags & CONTACTS_UNIMPORTANT);
+    dReal N[3];
+    if (n == 0) {
+        // nothing touches
+    } else if (m->sphere_merge == 0) {
+        n = dxTriMeshFinish(&q, flags, c, skip);
+    } else {
+        if (m->sphere_merge == dGeomColliderMergeContactsValue_Full) {
+            if (!important || (n > 1 && mean_normal(r, n, N) && merge_fully(m, r, n, N))) n = 1;
+        } else if (m->sphere_merge == dGeomColliderMergeContactsValue_Normals && important &&
+                   n > 1 && mean_normal(r, n, N)) {
+            for (int i = 0; i < n; i++)
+                for (int k = 0; k < 3; k++) r[i].n[k] = N[k];
+        }
+        n = dxTriMeshSpread(&q, n, flags);
+        dxTriMeshWrite(&q, n, c, skip);
+    }
+    dxTriScratchRelease(q.s);
+    return n;
 }
 
 // ---- capsule --------------------------------------------------------------------

@@ -162,12 +162,13 @@ static int unique_ints(int *a, int n)
     return k;
 }
 
-static int collide_ordered(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
+static int collide_ordered(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip,
+                           dxTriScratch *s)
 {
     dxTriMesh *a = (dxTriMesh *)o1, *b = (dxTriMesh *)o2;
     const dxTriMeshData *da = a->data, *db = b->data;
     if (!da || !db || da->tri_count == 0 || db->tri_count == 0) return 0;
-    dxTriQuery q = { .mesh = a, .data = da, .other = o2 };
+    dxTriQuery q = { .s = s, .mesh = a, .data = da, .other = o2 };
     // b's pose in a's frame.
     dxTriMeshToLocal(o1, o2->pos, q.pos);
     for (int j = 0; j < 3; j++) {
@@ -191,7 +192,7 @@ static int collide_ordered(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, i
         lo[i] = cb[i] - e;
         hi[i] = cb[i] + e;
     }
-    int nb = dxTriMeshQueryBox(db, lo, hi, &b->candidates, &b->candidates_cap);
+    int nb = dxTriMeshQueryBox(db, lo, hi, &s->cand[1], &s->cand_cap[1]);
     dReal centre_b[3], half_b[3];   // b's box: centre in a's frame, half sides in b's
     {
         dReal blo[3], bhi[3], cbl[3];
@@ -203,10 +204,9 @@ static int collide_ordered(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, i
         }
         dx_point_to_world(q.R, q.pos, cbl, centre_b);
     }
-    a->raw_count = 0;
     int hits_a = 0, hits_b = 0;
     for (int i = 0; i < nb; i++) {
-        int ub = b->candidates[i];
+        int ub = s->cand[1][i];
         if (dxTriMeshIsDegenerate(db, ub)) continue;
         if (b->callback && !b->callback(o2, o1, ub)) continue;
         dxTri u;
@@ -225,38 +225,45 @@ static int collide_ordered(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, i
             lo[j] = dMin(u.v[0][j], dMin(u.v[1][j], u.v[2][j]));
             hi[j] = dMax(u.v[0][j], dMax(u.v[1][j], u.v[2][j]));
         }
-        int na = dxTriMeshQueryBox(da, lo, hi, &a->candidates, &a->candidates_cap);
+        int na = dxTriMeshQueryBox(da, lo, hi, &s->cand[0], &s->cand_cap[0]);
         int touched_b = 0;
         for (int j = 0; j < na; j++) {
-            int ta = a->candidates[j];
+            int ta = s->cand[0][j];
             if (dxTriMeshIsDegenerate(da, ta)) continue;
             if (a->callback && !a->callback(o1, o2, ta)) continue;
             dxTri t;
             dxTriLoad(da, ta, &t);
             if (!pair_contacts(&q, &t, &u, ca, ha, centre_b, reach_u)) continue;
             touched_b = 1;
-            dxTriMeshReserveInts(&a->hits, &a->hits_cap, hits_a + 1);
-            a->hits[hits_a++] = ta;
+            dxTriMeshReserveInts(&s->hits[0], &s->hits_cap[0], hits_a + 1);
+            s->hits[0][hits_a++] = ta;
         }
         if (touched_b) {
-            dxTriMeshReserveInts(&b->hits, &b->hits_cap, hits_b + 1);
-            b->hits[hits_b++] = ub;
+            dxTriMeshReserveInts(&s->hits[1], &s->hits_cap[1], hits_b + 1);
+            s->hits[1][hits_b++] = ub;
         }
     }
     if (hits_a > 0 && a->array_callback) {
-        hits_a = unique_ints(a->hits, hits_a);
-        a->array_callback(o1, o2, a->hits, hits_a);
+        hits_a = unique_ints(s->hits[0], hits_a);
+        a->array_callback(o1, o2, s->hits[0], hits_a);
     }
-    if (hits_b > 0 && b->array_callback) b->array_callback(o2, o1, b->hits, hits_b);
-    return a->raw_count ? dxTriMeshFinish(&q, flags, c, skip) : 0;
+    if (hits_b > 0 && b->array_callback) b->array_callback(o2, o1, s->hits[1], hits_b);
+    return s->raw_count ? dxTriMeshFinish(&q, flags, c, skip) : 0;
 }
 
 // The pair in one order whichever way it is asked (the lower address first),
 // so that dCollide(b, a) mirrors dCollide(a, b).
 int dxCollideTriMeshTriMesh(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
 {
-    if ((uintptr_t)o1 < (uintptr_t)o2) return collide_ordered(o1, o2, flags, c, skip);
-    int n = collide_ordered(o2, o1, flags, c, skip);
-    dxFlipContacts(c, n, skip);
+    dxTriScratch *s = dxTriScratchAcquire();
+    if (!s) return 0;
+    int n;
+    if ((uintptr_t)o1 < (uintptr_t)o2) {
+        n = collide_ordered(o1, o2, flags, c, skip, s);
+    } else {
+        n = collide_ordered(o2, o1, flags, c, skip, s);
+        dxFlipContacts(c, n, skip);
+    }
+    dxTriScratchRelease(s);
     return n;
 }

@@ -13,17 +13,17 @@
 
 #include <ode/memory.h>
 
-// The ray (start s, unit direction v, mesh frame) against triangle t
-// (Moller-Trumbore): 1 with the distance and the barycentric u (of v1) and
+// The ray (start s, unit direction v, mesh frame) against the triangle of
+// vertices tri (Moller-Trumbore): 1 with the distance and the barycentric u (of v1) and
 // v (of v2) if it crosses within [0, len].
-static int ray_triangle(const dReal s[3], const dReal v[3], dReal len, const dxTri *t,
+static int ray_triangle(const dReal s[3], const dReal v[3], dReal len, dReal tri[3][3],
                         int cull, dReal *dist, dReal *bu, dReal *bv)
 {
-    const dReal *a = t->v[0];
+    const dReal *a = tri[0];
     dReal e1[3], e2[3], p[3], tv[3], qv[3];
     for (int i = 0; i < 3; i++) {
-        e1[i] = t->v[1][i] - a[i];
-        e2[i] = t->v[2][i] - a[i];
+        e1[i] = tri[1][i] - a[i];
+        e2[i] = tri[2][i] - a[i];
         tv[i] = s[i] - a[i];
     }
     p[0] = v[1] * e2[2] - v[2] * e2[1];
@@ -74,9 +74,9 @@ static int ray_enters(const dReal s[3], const dReal v[3], const dReal inv[3],
     return 1;
 }
 
-// Keep the nearest `max` hits in m->raw sorted by distance (then triangle):
+// Keep the nearest `max` hits in m->raw (a scratch set) sorted by distance (then triangle):
 // insert this one at its place, the farthest dropping out when full.
-static void keep_hit(dxTriMesh *m, int max, dReal dist, int tri, const dReal n[3])
+static void keep_hit(dxTriScratch *m, int max, dReal dist, int tri, const dReal n[3])
 {
     int k = m->raw_count;
     if (k == max) {
@@ -112,48 +112,53 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
     for (int i = 0; i < 3; i++) inv[i] = v[i] != 0 ? 1 / v[i] : 0;
     int single = ray->closest_hit || ray->first_contact;
     int max = single ? 1 : dx_max_contacts(flags);
-    m->raw_count = 0;
-    if (m->raw_cap < max) {
-        m->raw = (dxTriMeshRaw *)dRealloc(m->raw, (size_t)m->raw_cap * sizeof *m->raw,
-                                          (size_t)max * sizeof *m->raw);
-        m->raw_cap = max;
-    }
+    dxTriScratch *h = dxTriScratchAcquire();
+    if (!h) return 0;
+    dxTriScratchAddRaw(h, max);
+    // Each node on the stack with the distance at which the ray enters it:
+    // popped beyond the farthest hit kept, it is skipped untested.
     int stack[64], top = 0;
-    stack[top++] = 0;
+    dReal entry[64];
+    if (ray_enters(s, v, inv, &d->nodes[0], ray->length, &entry[0])) stack[top++] = 0;
     while (top > 0) {
-        const dxTriMeshNode *node = &d->nodes[stack[--top]];
-        dReal limit = m->raw_count == max ? m->raw[max - 1].depth : ray->length, enter;
-        if (!ray_enters(s, v, inv, node, limit, &enter)) continue;
+        top--;
+        dReal limit = h->raw_count == max ? h->raw[max - 1].depth : ray->length;
+        if (entry[top] > limit) continue;
+        const dxTriMeshNode *node = &d->nodes[stack[top]];
         if (node->count == 0) {
             // Push the farther child first: the nearer is walked first.
-            int a = (int)(node - d->nodes) + 1, b = node->first;
+            int a = node->first, b = node->first + 1;
             dReal ea, eb;
             int ha = ray_enters(s, v, inv, &d->nodes[a], limit, &ea);
             int hb = ray_enters(s, v, inv, &d->nodes[b], limit, &eb);
             if (ha && hb && ea < eb) {
+                entry[top] = eb;
                 stack[top++] = b;
+                entry[top] = ea;
                 stack[top++] = a;
             } else {
-                if (ha) stack[top++] = a;
-                if (hb) stack[top++] = b;
+                if (ha) entry[top] = ea, stack[top++] = a;
+                if (hb) entry[top] = eb, stack[top++] = b;
             }
             continue;
         }
+        // Only the vertices are read until a hit (memory traffic is what a
+        // ray costs): the degenerate check, reading the normal, after.
         for (int j = node->first; j < node->first + node->count; j++) {
             int ti = d->order[j];
-            if (dxTriMeshIsDegenerate(d, ti)) continue;
-            dxTri t;
-            dxTriLoad(d, ti, &t);
-            dReal dist, bu, bv;
-            if (!ray_triangle(s, v, ray->length, &t, ray->backface_cull, &dist, &bu, &bv))
+            dReal tv[3][3], dist, bu, bv;
+            dxTriMeshTriangle(d, ti, tv);
+            if (!ray_triangle(s, v, ray->length, tv, ray->backface_cull, &dist, &bu, &bv))
                 continue;
+            if (dxTriMeshIsDegenerate(d, ti)) continue;
             if (m->ray_callback && !m->ray_callback(o1, o2, ti, bu, bv)) continue;
             if (m->callback && !m->callback(o1, o2, ti)) continue;
-            keep_hit(m, max, dist, ti, t.n);
+            keep_hit(h, max, dist, ti, d->normal + 3 * ti);
         }
     }
-    for (int i = 0; i < m->raw_count; i++) {
-        const dxTriMeshRaw *r = &m->raw[i];
+    int count = h->raw_count;
+    for (int i = 0; i < count; i++) {
+        const dxTriMeshRaw *r = &h->raw[i];
         dReal pos[3], n[3];
         for (int j = 0; j < 3; j++) pos[j] = o2->pos[j] + dir[j] * r->depth;
         dx_to_world(o1->R, r->n, n);
@@ -161,5 +166,6 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
         dx_put_contact(c, i, skip, pos, n, r->depth, o1, o2);
         dxContactAt(c, i, skip)->side1 = r->tri;
     }
-    return m->raw_count;
+    dxTriScratchRelease(h);
+    return count;
 }

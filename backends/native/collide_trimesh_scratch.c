@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// collide_trimesh_scratch.c -- the scratch memory of the native trimesh
+// colliders (triangle lists, contacts before the reduction), per thread:
+// two threads may collide one mesh with different geoms at once. Each
+// thread has a few sets, one per nested collision (a trimesh callback may
+// itself call dCollide); they grow when needed and are reused, so a warm
+// collision allocates nothing. A thread's sets are freed when it exits.
+
+#include "collide_trimesh.h"
+
+#include <ode/memory.h>
+#include <pthread.h>
+#include <string.h>
+
+enum { NESTING = 4 };
+
+typedef struct thread_scratch {
+    dxTriScratch set[NESTING];
+    int depth;   // sets in use
+} thread_scratch;
+
+static _Thread_local thread_scratch *mine;
+static pthread_key_t exit_key;
+static pthread_once_t exit_key_once = PTHREAD_ONCE_INIT;
+
+static void free_thread_scratch(void *p)
+{
+    thread_scratch *t = (thread_scratch *)p;
+    for (int i = 0; i < NESTING; i++) {
+        dxTriScratch *s = &t->set[i];
+        for (int k = 0; k < 2; k++) {
+            dFree(s->cand[k], (size_t)s->cand_cap[k] * sizeof(int));
+            dFree(s->hits[k], (size_t)s->hits_cap[k] * sizeof(int));
+        }
+        dFree(s->raw, (size_t)s->raw_cap * sizeof(dxTriMeshRaw));
+    }
+    dFree(t, sizeof *t);
+}
+
+static void make_exit_key(void)
+{
+    pthread_key_create(&exit_key, free_thread_scratch);
+}
+
+dxTriScratch *dxTriScratchAcquire(void)
+{
+    if (!mine) {
+        pthread_once(&exit_key_once, make_exit_key);
+        mine = (thread_scratch *)dAlloc(sizeof *mine);
+        memset(mine, 0, sizeof *mine);
+        pthread_setspecific(exit_key, mine);
+    }
+    DX_CHECK_ARG(mine->depth < NESTING, return NULL,
+                 "trimesh collisions nested more than %d deep (dCollide called from a trimesh "
+                 "callback): no contacts", NESTING);
+    dxTriScratch *s = &mine->set[mine->depth++];
+    s->raw_count = 0;
+    return s;
+}
+
+void dxTriScratchRelease(dxTriScratch *s)
+{
+    if (s) mine->depth--;
+}
+
+void dxTriScratchAddRaw(dxTriScratch *s, int extra)
+{
+    if (s->raw_count + extra <= s->raw_cap) return;
+    int ncap = s->raw_cap ? 2 * s->raw_cap : 32;
+    while (ncap < s->raw_count + extra) ncap *= 2;
+    s->raw = (dxTriMeshRaw *)dRealloc(s->raw, (size_t)s->raw_cap * sizeof *s->raw,
+                                      (size_t)ncap * sizeof *s->raw);
+    s->raw_cap = ncap;
+}
