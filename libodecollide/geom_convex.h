@@ -15,6 +15,17 @@ typedef struct dxHullEdge {
     unsigned a, b, f1, f2;
 } dxHullEdge;
 
+// A separating axis found against another geom (collide_convex_hull.c):
+// tried first the next time the pair meets, so a pair that stays apart is
+// rejected by one axis. Only a hint: `other` is never dereferenced (it may
+// be destroyed and its address reused), and an axis that no longer
+// separates is simply not used.
+enum { DX_CONVEX_AXIS_CACHE = 8 };
+typedef struct dxHullAxisHint {
+    const void *other;
+    double axis[3];               // in this hull's frame
+} dxHullAxisHint;
+
 typedef struct dxConvex {
     dxGeom g;
     const dReal *planes;          // planecount x (a, b, c, d): a x + b y + c z = d, outward
@@ -24,6 +35,8 @@ typedef struct dxConvex {
     dxHullEdge *edges;            // derived from the polygons, owned by the geom
     unsigned edgecount;
     size_t edgecap;               // the entries allocated (one per polygon side)
+    dxHullAxisHint hints[DX_CONVEX_AXIS_CACHE];
+    unsigned next_hint;           // the entry replaced next
 } dxConvex;
 
 extern const dxGeomClassOps dx_convex_ops;

@@ -523,7 +523,7 @@ static int test_cylinder_on_convex(void)
 }
 
 // A prism over a regular 40-gon (120 edges: more than the colliders keep
-// posed), radius 1 to the corners, height 1.
+// posed), radius 1 to the corners, height 1 (into p, which the geom keeps).
 enum { SIDES = 40 };
 typedef struct prism {
     dReal points[6 * SIDES], planes[4 * (SIDES + 2)];
@@ -684,6 +684,82 @@ static int test_cube_on_box_polygon(void)
     return 0;
 }
 
+// ---- remembered separating axes ---------------------------------------------------
+
+// Whether a pair's contacts are the same bit for bit.
+static int identical(const dContactGeom *a, int na, const dContactGeom *b, int nb)
+{
+    if (na != nb) return 0;
+    for (int i = 0; i < na; i++) {
+        if (a[i].depth != b[i].depth) return 0;
+        for (int k = 0; k < 3; k++)
+            if (a[i].pos[k] != b[i].pos[k] || a[i].normal[k] != b[i].normal[k]) return 0;
+    }
+    return 1;
+}
+
+// Partner k of the walk below, placed on a circle (the same calls for the
+// fresh copy, so the same bits).
+static void pose_other(dGeomID g, int k)
+{
+    dGeomSetPosition(g, (dReal)(1.2 * cos(k * M_PI / 6)), (dReal)(1.2 * sin(k * M_PI / 6)), 0);
+    set_rot(g, 1, 1, 0, (dReal)(0.3 * k));
+}
+
+// A hull remembers the axis that parted it from each of its last few
+// partners and tries it first. That is only a shortcut: a hull wandering
+// among 12 others (more than it remembers), in and out of contact, gets
+// exactly the contacts that fresh geoms at the same poses get.
+static int test_remembered_axis_never_hides_contacts(void)
+{
+    box_hull bh;
+    make_box_hull(&bh, (dReal)0.6, (dReal)0.4, (dReal)0.3);
+    prism pr;
+    dGeomID walker = dCreateConvex(0, bh.planes, 6, bh.points, 8, bh.polygons);
+    dGeomID others[12];
+    for (int k = 0; k < 12; k++) {
+        others[k] = k % 3 == 0 ? dCreateBox(0, (dReal)0.5, (dReal)0.5, (dReal)0.5)
+                  : k % 3 == 1 ? make_octahedron()
+                               : make_prism(&pr);
+        pose_other(others[k], k);
+    }
+    rng_state = 77;
+    double p[3] = { 0, 0, 0 };
+    int touching = 0, apart = 0;
+    for (int step = 0; step < 3000; step++) {
+        for (int k = 0; k < 3; k++) p[k] = fmax(-1.5, fmin(1.5, p[k] + rnd(-0.05, 0.05)));
+        p[2] = fmax(-0.4, fmin(0.4, p[2]));
+        dMatrix3 R;
+        random_rotation(R);
+        place(walker, (dReal[3]){ (dReal)p[0], (dReal)p[1], (dReal)p[2] }, R);
+        int k = step % 12;
+        dContactGeom a[MAXC], b[MAXC];
+        int na = dCollide(walker, others[k], MAXC, a, sizeof a[0]);
+        // Fresh geoms: nothing remembered.
+        dGeomID w2 = dCreateConvex(0, bh.planes, 6, bh.points, 8, bh.polygons);
+        dGeomID o2 = k % 3 == 0 ? dCreateBox(0, (dReal)0.5, (dReal)0.5, (dReal)0.5)
+                   : k % 3 == 1 ? make_octahedron()
+                                : dCreateConvex(0, pr.planes, SIDES + 2, pr.points, 2 * SIDES,
+                                                pr.polygons);
+        place(w2, (dReal[3]){ (dReal)p[0], (dReal)p[1], (dReal)p[2] }, R);
+        pose_other(o2, k);
+        int nb = dCollide(w2, o2, MAXC, b, sizeof b[0]);
+        CHECK(identical(a, na, b, nb));
+        // The other order, from the other's memory.
+        na = dCollide(others[k], walker, MAXC, a, sizeof a[0]);
+        nb = dCollide(o2, w2, MAXC, b, sizeof b[0]);
+        CHECK(identical(a, na, b, nb));
+        touching += na > 0;
+        apart += na == 0;
+        dGeomDestroy(w2);
+        dGeomDestroy(o2);
+    }
+    CHECK(touching > 200 && apart > 200);
+    for (int k = 0; k < 12; k++) dGeomDestroy(others[k]);
+    dGeomDestroy(walker);
+    return 0;
+}
+
 // ---- bad input ------------------------------------------------------------------
 
 static char last_error[512];
@@ -776,6 +852,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_cylinder_on_convex),
     TEST_CASE(test_large_prism),
     TEST_CASE(test_resting_on_plane),
+    TEST_CASE(test_remembered_axis_never_hides_contacts),
     TEST_CASE(test_bad_input),
     TEST_END,
 };

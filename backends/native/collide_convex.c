@@ -216,6 +216,7 @@ static unsigned facing_face(const dx_hull *h, const double n[3], double nf[3], d
 {
     unsigned best = 0;
     *cosine = -INFINITY;
+    *df = 0;   // set by the first face (a hull has one): for the compiler
     for (unsigned f = 0; f < h->nplanes; f++) {
         double m[3], d;
         dx_hull_plane(h, f, m, &d);
@@ -670,7 +671,7 @@ static void refine(const hull_cyl *p, double n[3], double *depth)
         cross3(n, e, u);
         normalize3(u);
         cross3(n, u, v);
-        double best = *depth, bn[3];
+        double best = *depth, bn[3] = { n[0], n[1], n[2] };
         for (int d = 0; d < 12; d++) {
             double a = turn + d * 0.52359877559829887, m[3];
             for (int i = 0; i < 3; i++) m[i] = n[i] + step * (cos(a) * u[i] + sin(a) * v[i]);

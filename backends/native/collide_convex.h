@@ -25,8 +25,9 @@ typedef struct dx_hull_edge {
     double u[3], n1[3], n2[3], n2xn1[3];
 } dx_hull_edge;
 
-// Hulls with at most this many edges (faces) keep them posed in the world.
-enum { DX_HULL_POSED_EDGES = 64, DX_HULL_POSED_FACES = 48 };
+// Hulls with at most this many edges (faces, points) keep them posed in
+// the world.
+enum { DX_HULL_POSED_EDGES = 64, DX_HULL_POSED_FACES = 48, DX_HULL_POSED_POINTS = 64 };
 
 typedef struct dx_hull {
     const dReal *pts;         // npts x (x, y, z), local
@@ -41,6 +42,9 @@ typedef struct dx_hull {
     dx_hull_edge posed_edges[DX_HULL_POSED_EDGES];
     int faces_posed;          // 1 if face_n, face_d hold the planes (nplanes <= ..._FACES)
     double face_n[DX_HULL_POSED_FACES][3], face_d[DX_HULL_POSED_FACES];
+    int points_posed;         // 1 once posed_pts holds the points (dx_hull_pose_points)
+    double posed_pts[DX_HULL_POSED_POINTS][3];
+    dxConvex *convex;         // the convex geom (its axis hints), NULL for a box
 } dx_hull;
 
 // The storage of a box made into a hull (dx_hull_of_geom's box case).
@@ -53,12 +57,17 @@ typedef struct dx_hull_box {
 // The hull of a convex geom or (into the storage bx) of a box geom.
 void dx_hull_of_geom(dx_hull *h, const dxGeom *g, dx_hull_box *bx);
 
+// Poses the points in the world (if they fit), for the many extents of a
+// separating axis test.
+void dx_hull_pose_points(dx_hull *h);
 // Point i in world coordinates.
 void dx_hull_vertex(const dx_hull *h, unsigned i, double out[3]);
 // Plane f in world coordinates: unit outward normal n and offset (n . x = d).
 void dx_hull_plane(const dx_hull *h, unsigned f, double n[3], double *d);
 // max over the points of m . x, and (if idx) which point.
 double dx_hull_extent(const dx_hull *h, const double m[3], unsigned *idx);
+// min and max over the points of m . x.
+void dx_hull_interval(const dx_hull *h, const double m[3], double *lo, double *hi);
 // The polygon of plane f: its count and indices (walks the polygon list).
 const unsigned *dx_hull_polygon(const dx_hull *h, unsigned f, unsigned *count);
 // Clips [*t0, *t1] to where o + t d (world) is inside h, with planes that d

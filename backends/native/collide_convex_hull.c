@@ -63,6 +63,7 @@ void dx_hull_of_geom(dx_hull *h, const dxGeom *g, dx_hull_box *bx)
         h->nplanes = c->planecount;
         h->edges = c->edges;
         h->nedges = c->edgecount;
+        h->convex = (dxConvex *)c;
     } else {   // a box: corners by bits (x, y, z), faces -x +x -y +y -z +z
         const dReal *side = ((const dxBox *)g)->side;
         static const unsigned faces[6][4] = { { 0, 4, 6, 2 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
@@ -95,6 +96,7 @@ void dx_hull_of_geom(dx_hull *h, const dxGeom *g, dx_hull_box *bx)
         h->npts = 8;
         h->nplanes = 6;
         h->nedges = 12;
+        h->convex = NULL;
     }
     h->size = 0;
     for (int i = 0; i < 3; i++) {
@@ -112,7 +114,15 @@ void dx_hull_of_geom(dx_hull *h, const dxGeom *g, dx_hull_box *bx)
         for (unsigned f = 0; f < h->nplanes; f++) dx_hull_plane(h, f, h->face_n[f], &h->face_d[f]);
         h->faces_posed = 1;
     }
-    h->posed = 0;   // dx_hull_pose_edges, when the edges are needed
+    h->posed = 0;   // pose_edges, when the edges are needed
+    h->points_posed = 0;
+}
+
+void dx_hull_pose_points(dx_hull *h)
+{
+    if (h->points_posed || h->npts > DX_HULL_POSED_POINTS) return;
+    for (unsigned v = 0; v < h->npts; v++) dx_hull_vertex(h, v, h->posed_pts[v]);
+    h->points_posed = 1;
 }
 
 // Poses the edges of h into posed_edges if they fit.
@@ -125,6 +135,10 @@ static void pose_edges(dx_hull *h)
 
 void dx_hull_vertex(const dx_hull *h, unsigned i, double out[3])
 {
+    if (h->points_posed) {
+        memcpy(out, h->posed_pts[i], sizeof h->posed_pts[i]);
+        return;
+    }
     const dReal *p = h->pts + 3 * i;
     for (int r = 0; r < 3; r++)
         out[r] = h->c[r] + h->R[3 * r] * p[0] + h->R[3 * r + 1] * p[1] + h->R[3 * r + 2] * p[2];
@@ -146,6 +160,19 @@ void dx_hull_plane(const dx_hull *h, unsigned f, double n[3], double *d)
 
 double dx_hull_extent(const dx_hull *h, const double m[3], unsigned *idx)
 {
+    if (h->points_posed) {
+        double best = -INFINITY;
+        unsigned bi = 0;
+        for (unsigned v = 0; v < h->npts; v++) {
+            double e = dot3(m, h->posed_pts[v]);
+            if (e > best) {
+                best = e;
+                bi = v;
+            }
+        }
+        if (idx) *idx = bi;
+        return best;
+    }
     double ml[3];   // m in the hull's frame
     for (int k = 0; k < 3; k++) ml[k] = h->R[k] * m[0] + h->R[3 + k] * m[1] + h->R[6 + k] * m[2];
     double best = -INFINITY;
@@ -160,6 +187,32 @@ double dx_hull_extent(const dx_hull *h, const double m[3], unsigned *idx)
     }
     if (idx) *idx = bi;
     return best + dot3(m, h->c);
+}
+
+void dx_hull_interval(const dx_hull *h, const double m[3], double *lo, double *hi)
+{
+    double mn = INFINITY, mx = -INFINITY;
+    if (h->points_posed) {
+        for (unsigned v = 0; v < h->npts; v++) {
+            double e = dot3(m, h->posed_pts[v]);
+            mn = e < mn ? e : mn;
+            mx = e > mx ? e : mx;
+        }
+        *lo = mn;
+        *hi = mx;
+        return;
+    }
+    double ml[3];   // m in the hull's frame
+    for (int k = 0; k < 3; k++) ml[k] = h->R[k] * m[0] + h->R[3 + k] * m[1] + h->R[6 + k] * m[2];
+    for (unsigned v = 0; v < h->npts; v++) {
+        const dReal *p = h->pts + 3 * v;
+        double e = ml[0] * p[0] + ml[1] * p[1] + ml[2] * p[2];
+        mn = e < mn ? e : mn;
+        mx = e > mx ? e : mx;
+    }
+    double c = dot3(m, h->c);
+    *lo = mn + c;
+    *hi = mx + c;
 }
 
 const unsigned *dx_hull_polygon(const dx_hull *h, unsigned f, unsigned *count)
@@ -201,6 +254,28 @@ static double depth_along(const dx_hull *a, const dx_hull *b, const double n[3])
     return dx_hull_extent(b, n, NULL) + dx_hull_extent(a, m, NULL);
 }
 
+// Whether a's arc (from n1 to n2) and b's negated arc (for the difference,
+// from -n1 to -n2) cross on the unit sphere: each arc's ends lie on
+// opposite sides of the other's great circle, on the same side. cba, dba:
+// b's -n1, -n2 against a's circle (n2 x n1); adc, bdc: a's n1, n2
+// against b's.
+static int arcs_cross(double cba, double dba, double adc, double bdc)
+{
+    return cba * dba < 0 && adc * bdc < 0 && cba * bdc > 0;
+}
+
+// The unit cross product of the posed edges' directions into m; 0 if they
+// are parallel.
+static int unit_cross(const dx_hull_edge *xa, const dx_hull_edge *xb, double m[3])
+{
+    cross3(xa->u, xb->u, m);
+    double l2 = dot3(m, m);
+    if (l2 <= DX_COLLIDE_EPS * dot3(xa->u, xa->u) * dot3(xb->u, xb->u)) return 0;   // parallel
+    double inv = 1 / sqrt(l2);
+    for (int k = 0; k < 3; k++) m[k] *= inv;
+    return 1;
+}
+
 // The unit axis of the edge pair (a's edge i, b's edge j), into m (either
 // sign); 0 if the pair can give no face of the Minkowski difference a - b
 // (the arcs of the two edges on the unit sphere, between their faces'
@@ -219,20 +294,47 @@ static int edge_axis(const dx_hull *a, unsigned i, const dx_hull *b, unsigned j,
         xb = &b->posed_edges[j];
     else
         pose_edge(b, eb, &pb);
-    if (ea->f1 != ea->f2 && eb->f1 != eb->f2) {
-        // a's arc runs from n1 to n2, b's (negated, for the difference)
-        // from -n1 to -n2: they cross when each arc's ends lie on
-        // opposite sides of the other's great circle, on the same side.
-        double cba = -dot3(xb->n1, xa->n2xn1), dba = -dot3(xb->n2, xa->n2xn1);
-        double adc = dot3(xa->n1, xb->n2xn1), bdc = dot3(xa->n2, xb->n2xn1);
-        if (!(cba * dba < 0 && adc * bdc < 0 && cba * bdc > 0)) return 0;
-    }
-    cross3(xa->u, xb->u, m);
-    double l2 = dot3(m, m);
-    if (l2 <= DX_COLLIDE_EPS * dot3(xa->u, xa->u) * dot3(xb->u, xb->u)) return 0;   // parallel
-    double inv = 1 / sqrt(l2);
-    for (int k = 0; k < 3; k++) m[k] *= inv;
+    if (ea->f1 != ea->f2 && eb->f1 != eb->f2 &&
+        !arcs_cross(-dot3(xb->n1, xa->n2xn1), -dot3(xb->n2, xa->n2xn1),
+                    dot3(xa->n1, xb->n2xn1), dot3(xa->n2, xb->n2xn1)))
+        return 0;
+    return unit_cross(xa, xb, m);
+}
+
+// The edge pair test of edge_axis for every pair at once: the products of
+// one hull's edge arcs' circle normals (n2 x n1) with the other's face
+// normals, each made once (rather than four per pair).
+enum { TABLE_EDGES = 32, TABLE_FACES = 24 };
+typedef struct arc_tables {
+    double ab[TABLE_EDGES][TABLE_FACES];   // a's edge i's n2 x n1 . b's face f
+    double ba[TABLE_EDGES][TABLE_FACES];   // b's edge j's n2 x n1 . a's face f
+} arc_tables;
+
+// Fills t if the hulls' posed edges and faces fit it; returns 1 if so.
+static int fill_arc_tables(const dx_hull *a, const dx_hull *b, arc_tables *t)
+{
+    if (!a->posed || !b->posed || !a->faces_posed || !b->faces_posed ||
+        a->nedges > TABLE_EDGES || b->nedges > TABLE_EDGES || a->nplanes > TABLE_FACES ||
+        b->nplanes > TABLE_FACES)
+        return 0;
+    for (unsigned i = 0; i < a->nedges; i++)
+        for (unsigned f = 0; f < b->nplanes; f++)
+            t->ab[i][f] = dot3(a->posed_edges[i].n2xn1, b->face_n[f]);
+    for (unsigned j = 0; j < b->nedges; j++)
+        for (unsigned f = 0; f < a->nplanes; f++)
+            t->ba[j][f] = dot3(b->posed_edges[j].n2xn1, a->face_n[f]);
     return 1;
+}
+
+// edge_axis from the tables.
+static int edge_axis_from_tables(const dx_hull *a, unsigned i, const dx_hull *b, unsigned j,
+                                 const arc_tables *t, double m[3])
+{
+    const dxHullEdge *ea = &a->edges[i], *eb = &b->edges[j];
+    if (ea->f1 != ea->f2 && eb->f1 != eb->f2 &&
+        !arcs_cross(-t->ab[i][eb->f1], -t->ab[i][eb->f2], t->ba[j][ea->f1], t->ba[j][ea->f2]))
+        return 0;
+    return unit_cross(&a->posed_edges[i], &b->posed_edges[j], m);
 }
 
 // The best axis found: its unit normal (into a), its depth, and what it is:
@@ -244,19 +346,66 @@ typedef struct sat_axis {
     unsigned ea, eb;    // the edges (indices into a's and b's edge lists)
 } sat_axis;
 
-// The edge pair axes sat found (for clearance), unless there were more.
+// What sat measured, for clearance: the depth along each face axis (if
+// both hulls' faces fit), and the edge pair axes with their depths along
+// +m and -m, unless there were more.
 enum { MAX_EDGE_AXES = 128 };
 typedef struct edge_axes {
-    double m[MAX_EDGE_AXES][3];
+    double face_s[2][DX_HULL_POSED_FACES];
+    int faces_kept;
+    double m[MAX_EDGE_AXES][3], s[MAX_EDGE_AXES][2];
     int n, overflow;
 } edge_axes;
 
-// 0 if a separating axis parts a and b; else the face axis and the edge
-// axis of least depth (edge->depth is infinite if no edge pair counts),
-// and the edge pair axes into found.
-static int sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axes *found)
+// The depths of a along +m (s[0]) and -m (s[1]) against b, from one pass
+// over each hull's points.
+static void depths_both_ways(const dx_hull *a, const dx_hull *b, const double m[3], double s[2])
+{
+    double alo, ahi, blo, bhi;
+    dx_hull_interval(a, m, &alo, &ahi);
+    dx_hull_interval(b, m, &blo, &bhi);
+    s[0] = bhi - alo;
+    s[1] = ahi - blo;
+}
+
+// The depths of a along +m (s[0]) and -m (s[1]) for the axis m of the
+// edge pair (a's edge i, b's edge j) that edge_axis accepted. With two
+// faces at each edge the pair is a face of the Minkowski difference, whose
+// outward normal d is the sign of m between a's faces' normals: the edges
+// are then the hulls' supports (a's along d, b's along -d), so a's depth
+// along -d is d . (pa - pb) for any points of them. The other sign is no
+// face: it bounds neither the depth nor the clearance (infinite).
+static void pair_depths(const dx_hull *a, unsigned i, const dx_hull *b, unsigned j,
+                        const double m[3], double s[2])
+{
+    const dxHullEdge *ea = &a->edges[i], *eb = &b->edges[j];
+    if (ea->f1 == ea->f2 || eb->f1 == eb->f2) {
+        depths_both_ways(a, b, m, s);
+        return;
+    }
+    double n1[3], n2[3], d, pa[3], pb[3];
+    dx_hull_plane(a, ea->f1, n1, &d);
+    dx_hull_plane(a, ea->f2, n2, &d);
+    dx_hull_vertex(a, ea->a, pa);
+    dx_hull_vertex(b, eb->a, pb);
+    double gap = m[0] * (pa[0] - pb[0]) + m[1] * (pa[1] - pb[1]) + m[2] * (pa[2] - pb[2]);
+    if (dot3(m, n1) + dot3(m, n2) > 0) {   // d = m
+        s[0] = INFINITY;
+        s[1] = gap;
+    } else {   // d = -m
+        s[0] = -gap;
+        s[1] = INFINITY;
+    }
+}
+
+// 0 if a separating axis parts a and b (into sep); else the face axis and
+// the edge axis of least depth (edge->depth is infinite if no edge pair
+// counts), and the axes' depths into found.
+static int sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axes *found,
+               double sep[3])
 {
     found->n = found->overflow = 0;
+    found->faces_kept = a->nplanes <= DX_HULL_POSED_FACES && b->nplanes <= DX_HULL_POSED_FACES;
     face->depth = edge->depth = INFINITY;
     for (int side = 0; side < 2; side++) {
         const dx_hull *h = side ? b : a;
@@ -266,7 +415,11 @@ static int sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axes
             if (!side)   // a's face pushes a back along -n
                 for (int i = 0; i < 3; i++) n[i] = -n[i];
             double s = depth_along(a, b, n);
-            if (s < 0) return 0;
+            if (s < 0) {
+                memcpy(sep, n, sizeof n);
+                return 0;
+            }
+            if (found->faces_kept) found->face_s[side][f] = s;
             if (s < face->depth) {
                 face->depth = s;
                 memcpy(face->n, n, sizeof face->n);
@@ -277,19 +430,29 @@ static int sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axes
     }
     pose_edges(a);
     pose_edges(b);
+    arc_tables tables;
+    int tabled = fill_arc_tables(a, b, &tables);
     for (unsigned i = 0; i < a->nedges; i++) {
         for (unsigned j = 0; j < b->nedges; j++) {
-            double n[3];
-            if (!edge_axis(a, i, b, j, n)) continue;
-            if (found->n < MAX_EDGE_AXES)
-                memcpy(found->m[found->n++], n, sizeof n);
-            else
+            double n[3], both[2];
+            if (tabled ? !edge_axis_from_tables(a, i, b, j, &tables, n) : !edge_axis(a, i, b, j, n))
+                continue;
+            pair_depths(a, i, b, j, n, both);
+            if (both[0] < 0 || both[1] < 0) {
+                memcpy(sep, n, sizeof n);
+                return 0;
+            }
+            if (found->n < MAX_EDGE_AXES) {
+                memcpy(found->m[found->n], n, sizeof n);
+                found->s[found->n][0] = both[0];
+                found->s[found->n++][1] = both[1];
+            } else {
                 found->overflow = 1;
+            }
             for (int sg = 0; sg < 2; sg++) {
                 if (sg)
                     for (int k = 0; k < 3; k++) n[k] = -n[k];
-                double s = depth_along(a, b, n);
-                if (s < 0) return 0;
+                double s = both[sg];
                 if (s < edge->depth) {
                     edge->depth = s;
                     memcpy(edge->n, n, sizeof edge->n);
@@ -303,18 +466,14 @@ static int sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axes
     return 1;
 }
 
-// What the edge pair axis m (either sign) allows a to move along n
-// before parting from b: s(m) / (m . n) with m turned to face n; infinite
-// if m is square to n.
-static double edge_clearance(const dx_hull *a, const dx_hull *b, const double n[3],
-                             const double m_in[3])
+// What the edge pair axis m (either sign; s its depths along +m and -m)
+// allows a to move along n before parting from b: s(m) / (m . n) with m
+// turned to face n; infinite if m is square to n.
+static double edge_clearance(const double n[3], const double m[3], const double s[2])
 {
-    double m[3] = { m_in[0], m_in[1], m_in[2] }, mn = dot3(m, n);
-    if (mn < 0) {
-        for (int k = 0; k < 3; k++) m[k] = -m[k];
-        mn = -mn;
-    }
-    return mn > 0 ? depth_along(a, b, m) / mn : INFINITY;
+    double mn = dot3(m, n);
+    if (mn == 0) return INFINITY;
+    return mn > 0 ? s[0] / mn : s[1] / -mn;
 }
 
 // The exact translation of a along the unit n that parts it from b (as
@@ -334,15 +493,20 @@ static double clearance(const dx_hull *a, const dx_hull *b, const double n[3],
             if (!side)
                 for (int i = 0; i < 3; i++) m[i] = -m[i];
             double mn = dot3(m, n);
-            if (mn > 0) best = fmin(best, depth_along(a, b, m) / mn);
+            if (mn > 0) {
+                double s = found->faces_kept ? found->face_s[side][f] : depth_along(a, b, m);
+                best = fmin(best, s / mn);
+            }
         }
     }
     for (int k = 0; !found->overflow && k < found->n; k++)
-        best = fmin(best, edge_clearance(a, b, n, found->m[k]));
+        best = fmin(best, edge_clearance(n, found->m[k], found->s[k]));
     for (unsigned i = 0; found->overflow && i < a->nedges; i++) {
         for (unsigned j = 0; j < b->nedges; j++) {
-            double m[3];
-            if (edge_axis(a, i, b, j, m)) best = fmin(best, edge_clearance(a, b, n, m));
+            double m[3], both[2];
+            if (!edge_axis(a, i, b, j, m)) continue;
+            pair_depths(a, i, b, j, m, both);
+            best = fmin(best, edge_clearance(n, m, both));
         }
     }
     return best;
@@ -573,12 +737,61 @@ static void put(dContactGeom *out, int i, int skip, const double p[3], const dou
     dx_put_contact(out, i, skip, pos, nn, (dReal)depth, o1, o2);
 }
 
+// The hint of the pair (h's convex against the geom other): h's entry for
+// other, or NULL.
+static dxHullAxisHint *find_hint(dx_hull *h, const void *other)
+{
+    for (int k = 0; k < DX_CONVEX_AXIS_CACHE; k++)
+        if (h->convex->hints[k].other == other) return &h->convex->hints[k];
+    return NULL;
+}
+
+// Whether the axis n (world) parts a and b.
+static int axis_separates(const dx_hull *a, const dx_hull *b, const double n[3])
+{
+    double s[2];
+    depths_both_ways(a, b, n, s);
+    return s[0] < 0 || s[1] < 0;
+}
+
+// Keeps the separating axis n (world) as h's hint against the geom other.
+static void keep_hint(dx_hull *h, const void *other, const double n[3])
+{
+    dxHullAxisHint *e = find_hint(h, other);
+    if (!e) {
+        e = &h->convex->hints[h->convex->next_hint];
+        h->convex->next_hint = (h->convex->next_hint + 1) % DX_CONVEX_AXIS_CACHE;
+        e->other = other;
+    }
+    for (int k = 0; k < 3; k++)
+        e->axis[k] = h->R[k] * n[0] + h->R[3 + k] * n[1] + h->R[6 + k] * n[2];
+}
+
 int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
                  dContactGeom *out, int skip)
 {
+    dx_hull_pose_points(a);
+    dx_hull_pose_points(b);
+    // The axis that parted the pair last time, if it still does.
+    dx_hull *holder = a->convex ? a : b->convex ? b : NULL;
+    const void *other = holder == a ? (const void *)o2 : (const void *)o1;
+    if (holder) {
+        const dxHullAxisHint *e = find_hint(holder, other);
+        if (e) {
+            double n[3];
+            for (int r = 0; r < 3; r++)
+                n[r] = holder->R[3 * r] * e->axis[0] + holder->R[3 * r + 1] * e->axis[1] +
+                       holder->R[3 * r + 2] * e->axis[2];
+            if (axis_separates(a, b, n)) return 0;
+        }
+    }
     sat_axis face, edge;
     edge_axes found;
-    if (!sat(a, b, &face, &edge, &found)) return 0;
+    double sep[3];
+    if (!sat(a, b, &face, &edge, &found, sep)) {
+        if (holder) keep_hint(holder, other, sep);
+        return 0;
+    }
     int max = dx_max_contacts(flags);
     if (edge.depth * EDGE_PREFERENCE < face.depth) {
         double pos[3];

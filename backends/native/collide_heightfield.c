@@ -8,6 +8,7 @@
 // surface (and above the field's lowest height minus its thickness) gets one
 // contact pushing it up along the normal of the triangle under its centre.
 
+#include "../../libodecollide/geom_convex.h"
 #include "../../libodecollide/heightfield_internal.h"
 #include "../../libodecollide/shapes.h"
 #include "collide_math.h"
@@ -74,6 +75,15 @@ static dReal support(const dxGeom *g, const dReal w[3])
     case dCylinderClass: {
         const dxCylinder *c = (const dxCylinder *)g;
         return c->radius * dSqrt(dMax(0, 1 - a[2] * a[2])) + dFabs(a[2]) * c->length / 2;
+    }
+    case dConvexClass: {
+        const dxConvex *h = (const dxConvex *)g;
+        dReal best = 0;   // the origin counts: the reach is from the centre
+        for (unsigned v = 0; v < h->pointcount; v++) {
+            const dReal *p = h->points + 3 * v;
+            best = dMax(best, a[0] * p[0] + a[1] * p[1] + a[2] * p[2]);
+        }
+        return best;
     }
     default: return 0;
     }
@@ -189,6 +199,11 @@ int dxCollideHeightfieldCapsule(dxGeom *o1, dxGeom *o2, int flags, dContactGeom 
 int dxCollideHeightfieldCylinder(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
 {
     return collide(o1, o2, flags, c, skip, dxCollideTriMeshCylinder);
+}
+
+int dxCollideHeightfieldConvex(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
+{
+    return collide(o1, o2, flags, c, skip, dxCollideTriMeshConvex);
 }
 
 int dxCollideHeightfieldTriMesh(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)

@@ -20,8 +20,12 @@
 //   plane, with the face normal and their depth below the plane (the
 //   corners of the part of the box behind the triangle, but for those on
 //   the plane itself).
+// - Convex hull (dCreateConvex): as the box, with the hull's face normals
+//   and edges for the box's axes and its polygons for the box's faces, so a
+//   convex box has exactly a box's contacts.
 
 #include "collide_trimesh.h"
+#include "../../libodecollide/geom_convex.h"
 
 // How far (relative to the other geom's size) a point may be off a
 // triangle's border and still count as over it (rounding at shared edges).
@@ -437,4 +441,107 @@ static int cylinder_test(dxTriQuery *q, const dxTri *t)
 int dxCollideTriMeshCylinder(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
 {
     return dxTriMeshCollide(o1, o2, flags, c, skip, cylinder_test);
+}
+
+// ---- convex hull ------------------------------------------------------------------
+
+// The interval of the hull h (its points at q->pos + q->R p) on the axis L.
+static void hull_interval(const dxTriQuery *q, const dxConvex *h, const dReal L[3], dReal *lo,
+                          dReal *hi)
+{
+    dReal l[3];   // L in the hull's frame
+    for (int k = 0; k < 3; k++) l[k] = q->R[k] * L[0] + q->R[4 + k] * L[1] + q->R[8 + k] * L[2];
+    dReal mn = dInfinity, mx = -dInfinity;
+    for (unsigned v = 0; v < h->pointcount; v++) {
+        const dReal *p = h->points + 3 * v;
+        dReal e = l[0] * p[0] + l[1] * p[1] + l[2] * p[2];
+        mn = dMin(mn, e);
+        mx = dMax(mx, e);
+    }
+    dReal c = dx_dot(L, q->pos);
+    *lo = c + mn;
+    *hi = c + mx;
+}
+
+// Whether the axis L (any length; len2 its squared length's scale, below
+// which L is the cross product of parallel edges) separates the triangle
+// from the hull.
+static int separates_hull(const dxTriQuery *q, const dxConvex *h, const dxTri *t,
+                          const dReal L[3], dReal len2)
+{
+    if (dx_dot(L, L) <= DX_COLLIDE_EPS * DX_COLLIDE_EPS * len2) return 0;
+    dReal lo, hi, tlo, thi;
+    hull_interval(q, h, L, &lo, &hi);
+    triangle_interval(t, L, &tlo, &thi);
+    return thi < lo || tlo > hi;
+}
+
+// Point i of the hull in the mesh frame.
+static void hull_point(const dxTriQuery *q, const dxConvex *h, unsigned i, dReal out[3])
+{
+    const dReal *p = h->points + 3 * i;
+    for (int r = 0; r < 3; r++)
+        out[r] = q->pos[r] + q->R[4 * r] * p[0] + q->R[4 * r + 1] * p[1] + q->R[4 * r + 2] * p[2];
+}
+
+// The hull's polygons clipped by face_contacts; a polygon with more
+// corners than a clip can take goes as a fan of pieces sharing its first
+// corner (each piece convex; their shared diagonals add no corners of the
+// hull's own, only prism crossings that lie in the face).
+enum { HULL_PIECE = POLY_MAX - 3 };
+
+static int convex_test(dxTriQuery *q, const dxTri *t)
+{
+    const dxConvex *h = (const dxConvex *)q->other;
+    if (h->pointcount == 0 || h->planecount == 0) return 0;
+    // The hull's centre: its points' mean (its origin need not be inside).
+    dReal centre[3] = { 0, 0, 0 }, local[3] = { 0, 0, 0 };
+    for (unsigned v = 0; v < h->pointcount; v++)
+        for (int k = 0; k < 3; k++) local[k] += h->points[3 * v + k] / (dReal)h->pointcount;
+    for (int r = 0; r < 3; r++)
+        centre[r] = q->pos[r] + q->R[4 * r] * local[0] + q->R[4 * r + 1] * local[1] +
+                    q->R[4 * r + 2] * local[2];
+    if (height(t, centre) < 0) return 0;
+    if (separates_hull(q, h, t, t->n, 1)) return 0;
+    for (unsigned f = 0; f < h->planecount; f++) {
+        const dReal *pl = h->planes + 4 * f;
+        dReal n[3];
+        for (int r = 0; r < 3; r++)
+            n[r] = q->R[4 * r] * pl[0] + q->R[4 * r + 1] * pl[1] + q->R[4 * r + 2] * pl[2];
+        if (separates_hull(q, h, t, n, 0)) return 0;
+    }
+    for (unsigned k = 0; k < h->edgecount; k++) {
+        dReal a[3], b[3], u[3];
+        hull_point(q, h, h->edges[k].a, a);
+        hull_point(q, h, h->edges[k].b, b);
+        sub3(u, b, a);
+        for (int j = 0; j < 3; j++) {
+            dReal e[3], L[3];
+            sub3(e, t->v[(j + 1) % 3], t->v[j]);
+            cross3(L, e, u);
+            if (separates_hull(q, h, t, L, dx_dot(e, e) * dx_dot(u, u))) return 0;
+        }
+    }
+    int added = 0;
+    const unsigned *poly = h->polygons;
+    for (unsigned f = 0; f < h->planecount; f++) {
+        unsigned count = *poly++;
+        // Piece: corner 0 and corners start .. start + HULL_PIECE - 2.
+        for (unsigned start = 1; count >= 3; start += HULL_PIECE - 2) {
+            dReal a[POLY_MAX][3];
+            int n = 0;
+            hull_point(q, h, poly[0], a[n++]);
+            for (unsigned i = start; i < count && n < HULL_PIECE; i++)
+                hull_point(q, h, poly[i], a[n++]);
+            added |= face_contacts(q, t, a, n);
+            if (start + (HULL_PIECE - 1) >= count) break;
+        }
+        poly += count;
+    }
+    return added;
+}
+
+int dxCollideTriMeshConvex(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
+{
+    return dxTriMeshCollide(o1, o2, flags, c, skip, convex_test);
 }

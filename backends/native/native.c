@@ -34,13 +34,15 @@ static dxCollider *const table[NATIVE_CLASSES][NATIVE_CLASSES] = {
                         [dCapsuleClass] = dxCollideTriMeshCapsule,
                         [dCylinderClass] = dxCollideTriMeshCylinder,
                         [dPlaneClass] = dxCollideTriMeshPlane, [dRayClass] = dxCollideTriMeshRay,
-                        [dTriMeshClass] = dxCollideTriMeshTriMesh },
+                        [dTriMeshClass] = dxCollideTriMeshTriMesh,
+                        [dConvexClass] = dxCollideTriMeshConvex },
     [dHeightfieldClass] = { [dSphereClass] = dxCollideHeightfieldSphere,
                             [dBoxClass] = dxCollideHeightfieldBox,
                             [dCapsuleClass] = dxCollideHeightfieldCapsule,
                             [dCylinderClass] = dxCollideHeightfieldCylinder,
                             [dRayClass] = dxCollideHeightfieldRay,
-                            [dTriMeshClass] = dxCollideHeightfieldTriMesh },
+                            [dTriMeshClass] = dxCollideHeightfieldTriMesh,
+                            [dConvexClass] = dxCollideHeightfieldConvex },
 };
 
 static int native_supports(int c1, int c2)

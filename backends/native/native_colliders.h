@@ -30,14 +30,16 @@ dxCollider dxCollideCylinderBox, dxCollideCylinderCapsule, dxCollideCylinderCyli
 // Trimeshes (collide_trimesh*.c): side1 is the triangle of each contact.
 dxCollider dxCollideTriMeshSphere, dxCollideTriMeshBox, dxCollideTriMeshCapsule,
     dxCollideTriMeshCylinder, dxCollideTriMeshPlane, dxCollideTriMeshRay,
-    dxCollideTriMeshTriMesh;
-// The convex hull (collide_convex.c); the triangle mesh pair is not here.
+    dxCollideTriMeshTriMesh, dxCollideTriMeshConvex;
+// The convex hull (collide_convex.c); its triangle mesh pair is
+// dxCollideTriMeshConvex (collide_trimesh_convex.c).
 dxCollider dxCollideConvexConvex, dxCollideConvexBox, dxCollideConvexPlane, dxCollideConvexSphere,
     dxCollideConvexCapsule, dxCollideConvexCylinder, dxCollideRayConvex;
 
 // Heightfields (collide_heightfield.c): the trimesh colliders on the cells
 // under the other geom; side1 is -1.
 dxCollider dxCollideHeightfieldSphere, dxCollideHeightfieldBox, dxCollideHeightfieldCapsule,
-    dxCollideHeightfieldCylinder, dxCollideHeightfieldRay, dxCollideHeightfieldTriMesh;
+    dxCollideHeightfieldCylinder, dxCollideHeightfieldRay, dxCollideHeightfieldTriMesh,
+    dxCollideHeightfieldConvex;
 
 #endif
