@@ -24,6 +24,7 @@
 #include <ode/threading_impl.h>
 #include <ode/cooperative.h>
 #include <ode/backend.h>
+#include <ode/snapshot.h>
 #include <ode/export-dif.h>
 #include <ode/version.h>
 
