@@ -323,6 +323,82 @@ static int test_snapshot_size_query(void)
     return 0;
 }
 
+// A space with a nested space: static geoms moved, resized, disabled and
+// re-categorised after the snapshot come back; a body's geom follows its body.
+static int test_space_round_trip(void)
+{
+    dWorldID w = dWorldCreate();
+    dSpaceID space = dHashSpaceCreate(0);
+    dSpaceID inner = dSimpleSpaceCreate(space);
+    dGeomID box = dCreateBox(space, 1, 2, 3);
+    dGeomSetPosition(box, 1, 2, 3);
+    dGeomID ray = dCreateRay(inner, 5);
+    dGeomRaySetClosestHit(ray, 1);
+    dGeomID plane = dCreatePlane(space, 0, 0, 1, 0);
+    dGeomID ball = dCreateSphere(inner, REAL(0.5));
+    dBodyID body = dBodyCreate(w);
+    dGeomSetBody(ball, body);
+    dBodySetPosition(body, 0, 0, 4);
+    dGeomSetCategoryBits(box, 6);
+    const size_t size = dSpaceSnapshot(space, NULL, 0);
+    unsigned char *snap = malloc(size);
+    CHECK(dSpaceSnapshot(space, snap, size) == size);
+    const size_t wsize = dWorldSnapshot(w, NULL, 0);
+    unsigned char *wsnap = malloc(wsize);
+    dWorldSnapshot(w, wsnap, wsize);
+
+    dGeomSetPosition(box, 9, 9, 9);
+    dGeomBoxSetLengths(box, 4, 4, 4);
+    dGeomSetCategoryBits(box, 1);
+    dGeomDisable(ray);
+    dGeomRaySetLength(ray, 1);
+    dGeomRaySetClosestHit(ray, 0);
+    dGeomPlaneSetParams(plane, 1, 0, 0, 2);
+    dGeomSphereSetRadius(ball, 2);
+    dBodySetPosition(body, 7, 7, 7);
+    CHECK(dSpaceRestore(space, snap, size) == 1);
+    CHECK(dWorldRestore(w, wsnap, wsize) == 1);
+
+    dVector3 l;
+    dVector4 p;
+    dGeomBoxGetLengths(box, l);
+    dGeomPlaneGetParams(plane, p);
+    CHECK(dGeomGetPosition(box)[0] == 1 && dGeomGetPosition(box)[2] == 3);
+    CHECK(l[0] == 1 && l[1] == 2 && l[2] == 3);
+    CHECK(dGeomGetCategoryBits(box) == 6);
+    CHECK(dGeomIsEnabled(ray) == 1);
+    CHECK(dGeomRayGetLength(ray) == 5 && dGeomRayGetClosestHit(ray) == 1);
+    CHECK(p[0] == 0 && p[2] == 1 && p[3] == 0);
+    CHECK(dGeomSphereGetRadius(ball) == REAL(0.5));
+    CHECK(dGeomGetPosition(ball)[2] == 4);   // with its body
+    dReal aabb[6];
+    dGeomGetAABB(box, aabb);
+    CHECK_NEAR(aabb[0], 0.5, 1e-6);   // the AABB follows the restored pose
+
+    // Bad input: named, nothing changed.
+    dGeomSetPosition(box, 9, 9, 9);
+    test_capture_reports();
+    CHECK(dSpaceRestore(space, snap, size - 3) == 0);
+    CHECK(test_captured_contains("dSpaceRestore: bad snapshot: it is truncated"));
+    CHECK(dSpaceRestore(space, wsnap, wsize) == 0);
+    CHECK(test_captured_contains("bad magic"));
+    CHECK(dSpaceRestore(inner, snap, size) == 0);
+    CHECK(test_captured_contains("geoms are not those"));
+    CHECK(dSpaceSnapshot((dSpaceID)box, NULL, 0) == 0);
+    CHECK(test_captured_contains("not a space"));
+    snap[size - 1] ^= 1;
+    CHECK(dSpaceRestore(space, snap, size) == 0);
+    CHECK(test_captured_contains("checksum"));
+    CHECK(test_captured_count() == 5);
+    test_release_reports();
+    CHECK(dGeomGetPosition(box)[0] == 9);
+    free(snap);
+    free(wsnap);
+    dSpaceDestroy(space);
+    dWorldDestroy(w);
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_restored_world_continues_bit_identically),
     TEST_CASE(test_settings_and_joint_parameters_are_restored),
@@ -331,5 +407,6 @@ const test_case test_cases[] = {
     TEST_CASE(test_bad_snapshots_are_reported_and_change_nothing),
     TEST_CASE(test_a_changed_world_is_refused),
     TEST_CASE(test_snapshot_size_query),
+    TEST_CASE(test_space_round_trip),
     TEST_END
 };

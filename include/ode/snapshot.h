@@ -16,13 +16,18 @@
  * they keep their current values), threading settings, and contact joints
  * (made anew from collision before every step; those alive at restore are
  * left as they are). Geoms follow their bodies: a restore moves every body's
- * geoms (dGeomMoved). Geoms not attached to a body and spaces are not part of
- * a snapshot.
+ * geoms (dGeomMoved). The geoms themselves are in a space's snapshot
+ * (dSpaceSnapshot, libodecollide): enabled or not, category and collide
+ * bits, the pose of geoms not on a body, the sizes of spheres, boxes,
+ * capsules, cylinders, planes and rays (and the rays' flags); not offsets,
+ * the geom inside a geometry transform, nor the data of triangle meshes,
+ * heightfields and convex hulls (user memory).
  *
  * A snapshot restores into the world it was taken from, whose bodies and
  * non-contact joints must still be the same objects in the same order (a
  * body or joint created or destroyed since makes dWorldRestore refuse).
- * Restoring into another world, or a fresh one, is not supported.
+ * Restoring into another world, or a fresh one, is not supported. The same
+ * holds for a space and its geoms (nested spaces included, in order).
  *
  * Format: a 32-byte header (magic "ODESNAP\0", format version, sizeof(dReal),
  * payload size, FNV-1a 64 checksum of the payload) and the payload, in this
@@ -50,6 +55,10 @@ ODE_API int dWorldRestore(dWorldID w, const void *buffer, size_t size);
 /** The same through a file (written whole, or reported). Return 1 or 0. */
 ODE_API int dWorldSnapshotToFile(dWorldID w, const char *path);
 ODE_API int dWorldRestoreFromFile(dWorldID w, const char *path);
+
+/** The same for the geoms of a space and the spaces in it (libodecollide). */
+ODE_API size_t dSpaceSnapshot(dSpaceID space, void *buffer, size_t capacity);
+ODE_API int dSpaceRestore(dSpaceID space, const void *buffer, size_t size);
 
 /* ---- watchdog ---------------------------------------------------------- */
 

@@ -3,8 +3,7 @@
 // snapshot.c -- dWorldSnapshot / dWorldRestore (ours, <ode/snapshot.h>): a
 // world's state to bytes and back, into the same world.
 //
-// Layout: header (magic, version, sizeof(dReal), payload size, FNV-1a 64 of
-// the payload), then the payload: the random seed, the world's parameters
+// Layout: header (snapshot_format.c), then the payload: the random seed, the world's parameters
 // and step counter, each body (handle, generation, then its state), each
 // non-contact joint (handle, generation, type, bodies, then the bytes of its
 // type-specific part: plain numbers and flags for every class but contacts,
@@ -22,18 +21,6 @@
 #include <stdio.h>
 
 #define SNAP_MAGIC "ODESNAP"   // with its terminating zero: 8 bytes
-#define SNAP_VERSION 1u
-#define SNAP_HEADER 32u
-
-static uint64_t fnv1a64(const unsigned char *p, size_t n)
-{
-    uint64_t h = 0xcbf29ce484222325u;
-    for (size_t i = 0; i < n; i++) {
-        h ^= p[i];
-        h *= 0x100000001b3u;
-    }
-    return h;
-}
 
 static void put_adis(dxSnapWriter *o, const dxAutoDisable *a)
 {
@@ -152,18 +139,13 @@ size_t dWorldSnapshot(dWorldID w, void *buffer, size_t capacity)
     DX_CHECK_ARG(dxWorldIsLive(w), return 0, "world is NULL or was destroyed");
     dxSnapWriter count = { NULL, 0, 0 };
     put_payload(&count, w);
-    const size_t total = SNAP_HEADER + count.n;
+    const size_t total = DX_SNAP_HEADER + count.n;
     if (!buffer || capacity < total) return total;
 
     unsigned char *out = buffer;
-    dxSnapWriter o = { out + SNAP_HEADER, 0, count.n };
+    dxSnapWriter o = { out + DX_SNAP_HEADER, 0, count.n };
     put_payload(&o, w);
-    dxSnapWriter h = { out, 0, SNAP_HEADER };
-    dxSnapPut(&h, SNAP_MAGIC, 8);
-    dxSnapPutU32(&h, SNAP_VERSION);
-    dxSnapPutU32(&h, (uint32_t)sizeof(dReal));
-    dxSnapPutU64(&h, count.n);
-    dxSnapPutU64(&h, fnv1a64(out + SNAP_HEADER, count.n));
+    dxSnapWriteHeader(out, SNAP_MAGIC, count.n);
     return total;
 }
 
@@ -335,35 +317,13 @@ static const char *get_payload(dxSnapReader *r, struct dxWorld *w, int apply)
     return NULL;
 }
 
-// Check the header; on success *payload and *n are the payload. Returns
-// NULL or what is wrong.
-static const char *check_header(const unsigned char *p, size_t size, const unsigned char **payload,
-                                size_t *n)
-{
-    if (size < SNAP_HEADER) return "it is truncated (shorter than its header)";
-    dxSnapReader h = { p, SNAP_HEADER, 0, 0 };
-    char magic[8];
-    dxSnapGet(&h, magic, 8);
-    if (memcmp(magic, SNAP_MAGIC, 8) != 0) return "it is not a snapshot (bad magic)";
-    if (dxSnapGetU32(&h) != SNAP_VERSION) return "its format version is not this library's";
-    if (dxSnapGetU32(&h) != sizeof(dReal)) return "it was taken with another precision";
-    const uint64_t len = dxSnapGetU64(&h), sum = dxSnapGetU64(&h);
-    if (len > size - SNAP_HEADER) return "it is truncated";
-    if (len < size - SNAP_HEADER) return "it has bytes after its end";
-    if (fnv1a64(p + SNAP_HEADER, (size_t)len) != sum)
-        return "its checksum does not match (corrupted)";
-    *payload = p + SNAP_HEADER;
-    *n = (size_t)len;
-    return NULL;
-}
-
 int dWorldRestore(dWorldID w, const void *buffer, size_t size)
 {
     DX_CHECK_ARG(dxWorldIsLive(w), return 0, "world is NULL or was destroyed");
     DX_CHECK_ARG(buffer != NULL, return 0, "buffer is NULL");
     const unsigned char *payload = NULL;
     size_t n = 0;
-    const char *e = check_header(buffer, size, &payload, &n);
+    const char *e = dxSnapCheckHeader(buffer, size, SNAP_MAGIC, &payload, &n);
     DX_CHECK_ARG(e == NULL, return 0, "bad snapshot: %s", e);
     dxSnapReader check = { payload, n, 0, 0 };
     e = get_payload(&check, w, 0);

@@ -72,6 +72,17 @@ static inline void dxSnapSkip(dxSnapReader *r, size_t size)
     else r->at += size;
 }
 
+// The header of every snapshot (snapshot_format.c, compiled into both
+// libraries): 8 bytes of magic (a name and its zero), the format version,
+// sizeof(dReal), the payload's size and its FNV-1a 64 checksum.
+#define DX_SNAP_HEADER 32u
+// Write the header of the payload that follows it at out + DX_SNAP_HEADER.
+void dxSnapWriteHeader(unsigned char *out, const char *magic, size_t payload_size);
+// Check a snapshot of size bytes; on success *payload and *n are its
+// payload. Returns NULL, or what is wrong (for a message).
+const char *dxSnapCheckHeader(const unsigned char *p, size_t size, const char *magic,
+                              const unsigned char **payload, size_t *n);
+
 // dWorldQuickStep's contact-force cache (quickstep_warm.c): write it; read
 // it back, changing the world only if apply (a first pass checks). Load
 // returns 0 if the data is inconsistent.
