@@ -25,6 +25,7 @@
 #include <ode/cooperative.h>
 #include <ode/backend.h>
 #include <ode/position_correction.h>
+#include <ode/snapshot.h>
 #include <ode/export-dif.h>
 #include <ode/version.h>
 

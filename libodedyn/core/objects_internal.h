@@ -225,10 +225,14 @@ struct dxWorld {
     uint32_t step_count;          // steps taken (any stepper), for the warm start
     struct dxWarmCache *qs_warm;  // dWorldQuickStep's contact forces of the last
                                   // step (quickstep_warm.c), NULL until one
+    struct dxWatchdog *watchdog;  // dWorldSetWatchdog's (watchdog.c), NULL when off
+    int watchdog_stepping;        // 1 while the watchdog runs the step it watches
 };
 
 // Free a world's warm-start cache (dWorldDestroy).
 void dxWarmCacheFree(struct dxWorld *w);
+// Free a world's watchdog (dWorldDestroy).
+void dxWatchdogFree(struct dxWorld *w);
 // Give back what the world holds of its threading implementation (dWorldDestroy).
 void dxWorldThreadingRelease(struct dxWorld *w);
 
@@ -247,6 +251,18 @@ static inline int dxJointIsLive(const struct dxJoint *j)
 {
     return j != NULL && j->hdr.magic == DX_MAGIC_JOINT;
 }
+
+// The steppers a watchdog runs (watchdog.c).
+typedef enum dxStepper { DX_STEP_WORLD, DX_STEP_QUICK, DX_STEP_FAST1 } dxStepper;
+// 1 if w is watched and not already inside the watched step: the public
+// steppers then hand the step to dxWatchdogStep.
+static inline int dxWatchdogWants(const struct dxWorld *w)
+{
+    return dxWorldIsLive(w) && w->watchdog && !w->watchdog_stepping;
+}
+// Run the step (iterations: StepFast1's) and check it; returns the step's
+// result, or 0 if it was rolled back.
+int dxWatchdogStep(struct dxWorld *w, dReal h, dxStepper stepper, int iterations);
 
 // Tell the collision library that a body moved (dGeomMoved for each geom).
 void dxBodyNotifyMoved(struct dxBody *b);

@@ -62,6 +62,7 @@ void dWorldDestroy(dWorldID w)
     dxStepMemoryRelease(w);
     dxWorldThreadingRelease(w);
     dxWarmCacheFree(w);
+    dxWatchdogFree(w);
     w->hdr.magic = DX_MAGIC_DEAD;
     dxPoolGive(&dx_world_pool, w);
 }

@@ -280,6 +280,7 @@ static void update_velocities(const dxIsland *is, const dxIslandBodies *bd, cons
 
 int dWorldQuickStep(dWorldID w, dReal stepsize)
 {
+    if (dxWatchdogWants(w)) return dxWatchdogStep(w, stepsize, DX_STEP_QUICK, 0);
     dxIsland *islands;
     int count;
     if (!dxStepBegin(w, stepsize, __func__, &islands, &count)) return 0;

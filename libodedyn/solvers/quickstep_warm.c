@@ -24,6 +24,7 @@
 // stepper in between, or none yet: a cold start).
 
 #include "quickstep.h"
+#include "snapshot_io.h"
 
 #include <ode/memory.h>
 #include <string.h>
@@ -210,4 +211,93 @@ void dxQuickWarmEnd(struct dxWorld *w, dxWarmCache *c, const dReal *lambda)
         e->next = c->heads[b];
         c->heads[b] = k;
     }
+}
+
+// ---- snapshots (io/snapshot.c) --------------------------------------------
+
+// The last step's entries as they are (body handles, generations, bucket
+// chains and heads): a restore into the same world finds them as the step
+// after the snapshot did. The entries are written field by field (no padding).
+void dxWarmCacheSave(const struct dxWorld *w, dxSnapWriter *out)
+{
+    const dxWarmCache *c = w->qs_warm;
+    dxSnapPutU32(out, c ? 1 : 0);
+    if (!c) return;
+    dxSnapPutU32(out, c->stamp);
+    dxSnapPutU32(out, (uint32_t)c->nold);
+    dxSnapPutU32(out, (uint32_t)(c->nold ? c->nheads : 0));
+    if (c->nold) dxSnapPut(out, c->heads, sizeof(int) * (size_t)c->nheads);
+    for (int k = 0; k < c->nold; k++) {
+        const qs_warm_entry *e = &c->old[k];
+        dxSnapPutU64(out, (uint64_t)(uintptr_t)e->b0);
+        dxSnapPutU64(out, (uint64_t)(uintptr_t)e->b1);
+        dxSnapPutU32(out, e->g0);
+        dxSnapPutU32(out, e->g1);
+        dxSnapPut(out, &e->next, sizeof e->next);
+        dxSnapPut(out, e->pos, sizeof e->pos);
+        dxSnapPutReals(out, e->p, 3);
+        dxSnapPutReals(out, e->n, 3);
+        dxSnapPutReals(out, e->t1, 3);
+        dxSnapPutReals(out, e->t2, 3);
+        dxSnapPutReals(out, &e->ln, 1);
+        dxSnapPutReals(out, e->f, 3);
+    }
+}
+
+int dxWarmCacheLoad(struct dxWorld *w, dxSnapReader *in, int apply)
+{
+    if (!dxSnapGetU32(in)) {   // none saved: none to use after the restore
+        if (apply && w->qs_warm) w->qs_warm->nold = 0;
+        return !in->bad;
+    }
+    const uint32_t stamp = dxSnapGetU32(in);
+    const uint32_t nold = dxSnapGetU32(in), nheads = dxSnapGetU32(in);
+    if (in->bad || nold > (1u << 28) || nheads > (1u << 29)) return 0;
+    if (nold && (nheads < 2 * nold || (nheads & (nheads - 1)))) return 0;
+    dxWarmCache *c = w->qs_warm;
+    if (apply) {
+        if (!c) {
+            c = dAlloc(sizeof *c);
+            memset(c, 0, sizeof *c);
+            w->qs_warm = c;
+        }
+        if ((uint32_t)c->cap_old < nold) {
+            dFree(c->old, sizeof(qs_warm_entry) * (size_t)c->cap_old);
+            c->old = dAlloc(sizeof(qs_warm_entry) * (size_t)nold);
+            c->cap_old = (int)nold;
+        }
+        if (nold && (uint32_t)c->nheads != nheads) {
+            dFree(c->heads, sizeof(int) * (size_t)c->nheads);
+            c->heads = dAlloc(sizeof(int) * (size_t)nheads);
+            c->nheads = (int)nheads;
+        }
+        c->stamp = stamp;
+        c->nold = (int)nold;
+        c->ncur = 0;
+        if (nold) dxSnapGet(in, c->heads, sizeof(int) * (size_t)nheads);
+    } else {
+        for (uint32_t b = 0; b < nheads; b++) {
+            int head;
+            dxSnapGet(in, &head, sizeof head);
+            if (head < -1 || head >= (int)nold) return 0;
+        }
+    }
+    for (uint32_t k = 0; k < nold; k++) {
+        qs_warm_entry e;
+        e.b0 = (const struct dxBody *)(uintptr_t)dxSnapGetU64(in);
+        e.b1 = (const struct dxBody *)(uintptr_t)dxSnapGetU64(in);
+        e.g0 = dxSnapGetU32(in);
+        e.g1 = dxSnapGetU32(in);
+        dxSnapGet(in, &e.next, sizeof e.next);
+        dxSnapGet(in, e.pos, sizeof e.pos);
+        dxSnapGetReals(in, e.p, 3);
+        dxSnapGetReals(in, e.n, 3);
+        dxSnapGetReals(in, e.t1, 3);
+        dxSnapGetReals(in, e.t2, 3);
+        dxSnapGetReals(in, &e.ln, 1);
+        dxSnapGetReals(in, e.f, 3);
+        if (e.next < -1 || e.next >= (int)nold) return 0;
+        if (apply) c->old[k] = e;
+    }
+    return !in->bad;
 }

@@ -187,5 +187,6 @@ static void solve_big_matrix(struct dxWorld *w, dxArena *a, const dxIsland *is,
 
 int dWorldStep(dWorldID w, dReal stepsize)
 {
+    if (dxWatchdogWants(w)) return dxWatchdogStep(w, stepsize, DX_STEP_WORLD, 0);
     return dxStepWorld(w, stepsize, __func__, solve_big_matrix);
 }

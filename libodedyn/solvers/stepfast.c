@@ -372,6 +372,10 @@ static void sf1_auto_disable(const dxIsland *all)
 
 void dWorldStepFast1(dWorldID w, dReal stepsize, int maxiterations)
 {
+    if (dxWatchdogWants(w)) {
+        dxWatchdogStep(w, stepsize, DX_STEP_FAST1, maxiterations);
+        return;
+    }
     DX_CHECK_ARG(dxWorldIsLive(w), return, "world is NULL or was destroyed");
     DX_CHECK_ARG(stepsize > 0 && dxIsFinite(stepsize), return,
                  "stepsize must be positive and finite, got %g", (double)stepsize);
