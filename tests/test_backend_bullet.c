@@ -454,7 +454,7 @@ static int test_argument_order_mirrors_exactly(void)
         CHECK(dCollide(a, b, MAXC, again, sizeof again[0]) == n);
         CHECK(memcmp(ab, again, n * sizeof ab[0]) == 0);
         for (int i = 0; i < n; i++) {
-            CHECK(memcmp(ab[i].pos, ba[i].pos, sizeof ab[i].pos) == 0);
+            CHECK(memcmp(ab[i].pos, ba[i].pos, 3 * sizeof(dReal)) == 0);
             CHECK(ab[i].depth == ba[i].depth && ba[i].g1 == b && ba[i].g2 == a);
             for (int j = 0; j < 3; j++) CHECK(ab[i].normal[j] == -ba[i].normal[j]);
         }
