@@ -17,8 +17,7 @@ static long parse_frames(const char *text, const char *where)
     char *end = NULL;
     long n = text ? strtol(text, &end, 10) : -1;
     if (!text || end == text || *end != '\0' || n < 0) {
-        dsPrint("drawstuff: %s: '%s' is not a frame count, ignored\n", where,
-                text ? text : "");
+        dxDsWarn("%s: '%s' is not a frame count, ignored", where, text ? text : "");
         return -1;
     }
     return n;
