@@ -48,6 +48,7 @@ typedef struct dxDsOptions {
     long frames;         // -frames / DS_FRAMES, or -1: not given
     const char *png;     // -png / DS_PNG: write the last frame there
     const char *record;  // -record / DS_RECORD: write every frame there
+    const char *keys;    // -keys / DS_KEYS: typed, one per frame, from frame 1
 } dxDsOptions;
 
 typedef struct dxDsState {

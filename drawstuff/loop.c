@@ -37,6 +37,8 @@ void dxDsPrintHelp(void)
 void dxDsFrame(int width, int height, dsFunctions *fn, const dxDsOptions *opt, long frame)
 {
     static long written;   // frames written by Ctrl-W so far
+    if (opt->keys && frame <= (long)strlen(opt->keys))
+        dxDsKey((unsigned char)opt->keys[frame - 1], 0, fn);
     dxDsFrameDraw(width, height, fn, dxDs.paused && !dxDs.single_step);
     dxDs.single_step = 0;
     if (opt->record) dxDsRecordFrame(opt->record, frame, width, height);

@@ -2,9 +2,10 @@
 //
 // options.c -- the viewer's options: ODE's (-notex, -noshadow, -noshadows,
 // -pause, -texturepath DIR) and ours for running without a display
-// (-headless, -frames N, -png FILE, -record DIR), the latter also read from
-// DS_HEADLESS, DS_FRAMES, DS_PNG, DS_RECORD so an unchanged program can be
-// run headless. The command line wins over the environment.
+// (-headless, -frames N, -png FILE, -record DIR, -keys KEYS), the latter
+// also read from DS_HEADLESS, DS_FRAMES, DS_PNG, DS_RECORD, DS_KEYS so an
+// unchanged program can be run headless and driven by its command keys.
+// The command line wins over the environment.
 
 #include "ds_internal.h"
 
@@ -39,6 +40,7 @@ void dxDsOptionsParse(dxDsOptions *opt, int argc, char **argv)
     opt->frames = env ? parse_frames(env, "DS_FRAMES") : -1;
     opt->png = nonempty(getenv("DS_PNG"));
     opt->record = nonempty(getenv("DS_RECORD"));
+    opt->keys = nonempty(getenv("DS_KEYS"));
 
     for (int i = 1; i < argc && argv; i++) {
         const char *a = argv[i];
@@ -57,6 +59,9 @@ void dxDsOptionsParse(dxDsOptions *opt, int argc, char **argv)
             i++;
         } else if (strcmp(a, "-record") == 0) {
             opt->record = nonempty(next);
+            i++;
+        } else if (strcmp(a, "-keys") == 0) {
+            opt->keys = nonempty(next);
             i++;
         }
     }

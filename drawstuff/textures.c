@@ -88,7 +88,7 @@ static void sky_texel(float u, float v, unsigned char *out)
 // Wood: rings around the tile's centre, wobbled by noise.
 static void wood_texel(float u, float v, unsigned char *out)
 {
-    static const float early[3] = { 0.80f, 0.60f, 0.36f }, late[3] = { 0.55f, 0.35f, 0.18f };
+    static const float early[3] = { 0.95f, 0.86f, 0.68f }, late[3] = { 0.72f, 0.58f, 0.40f };
     float du = u - 0.5f, dv = v - 0.5f;
     float r = 6.0f * sqrtf(du * du + dv * dv) + 0.6f * fractal(u, v, 4, 3, 40);
     float ring = 0.5f + 0.5f * sinf(2.0f * (float)DX_DS_PI * r);

@@ -58,7 +58,8 @@ DS_API void dsFinalizeConsole(void);
 
 /* Runs the simulation until the window is closed, Ctrl-X, dsStop() or the
  * frame count is reached. Options in argv: -notex, -noshadow(s), -pause,
- * -texturepath DIR, and ours: -headless, -frames N, -png FILE, -record DIR. */
+ * -texturepath DIR, and ours: -headless, -frames N, -png FILE, -record DIR,
+ * -keys KEYS (see README.md). */
 DS_API void dsSimulationLoop(int argc, char **argv, int window_width, int window_height,
                              struct dsFunctions *fn);
 

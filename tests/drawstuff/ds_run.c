@@ -28,6 +28,7 @@ void ds_clear_env(void)
     unsetenv("DS_FRAMES");
     unsetenv("DS_PNG");
     unsetenv("DS_RECORD");
+    unsetenv("DS_KEYS");
 }
 
 int ds_load_png(const char *path, ds_image *img)

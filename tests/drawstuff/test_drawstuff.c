@@ -26,6 +26,7 @@
 static float cam_xyz[3], cam_hpr[3];
 static int steps, starts, stops, stop_after, last_pause;
 static float got_xyz[3], got_hpr[3];   // dsGetViewpoint in the first step
+static char typed[16];   // keys the command function received, each with the steps before it
 static int draw_box, box_double, wireframe;
 static const float box_pos[3] = { 6.0f, 0.0f, 0.25f };
 static const float box_sides[3] = { 0.5f, 0.5f, 0.5f };
@@ -36,6 +37,7 @@ static void reset_scene(const float xyz[3], const float hpr[3])
     memcpy(cam_xyz, xyz, sizeof cam_xyz);
     memcpy(cam_hpr, hpr, sizeof cam_hpr);
     steps = starts = stops = stop_after = 0;
+    typed[0] = '\0';
     draw_box = box_double = wireframe = 0;
     // 30 degrees about z, row-major 3x4 as ODE stores it.
     float c = cosf(0.5235988f), s = sinf(0.5235988f);
@@ -73,7 +75,17 @@ static void stop(void)
     stops++;
 }
 
-static dsFunctions functions = { DS_VERSION, start, step, NULL, stop, NULL };
+
+static void command(int cmd)
+{
+    size_t n = strlen(typed);
+    if (n + 2 < sizeof typed) {
+        typed[n] = (char)cmd;
+        typed[n + 1] = (char)('0' + steps);
+    }
+}
+
+static dsFunctions functions = { DS_VERSION, start, step, command, stop, NULL };
 
 static int is_red(const unsigned char *p)
 {
@@ -275,6 +287,12 @@ static int test_frames_counted(void)
     char *argv2[] = { (char *)"test", (char *)"-frames", (char *)"3", (char *)"-pause", NULL };
     dsSimulationLoop(4, argv2, 64, 48, &functions);
     CHECK(steps == 3 && last_pause == 1);
+    // -keys: one key before each of the first frames' steps.
+    reset_scene(level_xyz, level_hpr);
+    char *argv3[] = { (char *)"test", (char *)"-frames", (char *)"4", (char *)"-keys",
+                      (char *)"ab", NULL };
+    dsSimulationLoop(5, argv3, 64, 48, &functions);
+    CHECK(steps == 4 && strcmp(typed, "a0b1") == 0);
     // dsStop ends the loop after the current frame.
     reset_scene(level_xyz, level_hpr);
     stop_after = 4;

@@ -20,6 +20,7 @@ static int test_options(void)
     unsetenv("DS_FRAMES");
     unsetenv("DS_PNG");
     unsetenv("DS_RECORD");
+    unsetenv("DS_KEYS");
     char *plain[] = { (char *)"demo", NULL };
     dxDsOptionsParse(&opt, 1, plain);
     CHECK(opt.textures && opt.shadows && !opt.pause && !opt.headless);
@@ -28,8 +29,9 @@ static int test_options(void)
     char *all[] = { (char *)"demo", (char *)"-notex", (char *)"-noshadows", (char *)"-pause",
                     (char *)"-texturepath", (char *)"/x", (char *)"-headless",
                     (char *)"-frames", (char *)"12", (char *)"-png", (char *)"a.png",
-                    (char *)"-record", (char *)"dir", NULL };
-    dxDsOptionsParse(&opt, 13, all);
+                    (char *)"-record", (char *)"dir", (char *)"-keys", (char *)"ab", NULL };
+    dxDsOptionsParse(&opt, 15, all);
+    CHECK(strcmp(opt.keys, "ab") == 0);
     CHECK(!opt.textures && !opt.shadows && opt.pause && opt.headless);
     CHECK(opt.frames == 12 && strcmp(opt.png, "a.png") == 0 && strcmp(opt.record, "dir") == 0);
     char *one[] = { (char *)"demo", (char *)"-noshadow", NULL };
@@ -41,7 +43,9 @@ static int test_options(void)
     setenv("DS_FRAMES", "40", 1);
     setenv("DS_PNG", "env.png", 1);
     setenv("DS_RECORD", "envdir", 1);
+    setenv("DS_KEYS", "xyz", 1);
     dxDsOptionsParse(&opt, 1, plain);
+    CHECK(strcmp(opt.keys, "xyz") == 0);
     CHECK(opt.headless && opt.frames == 40);
     CHECK(strcmp(opt.png, "env.png") == 0 && strcmp(opt.record, "envdir") == 0);
     char *over[] = { (char *)"demo", (char *)"-frames", (char *)"3", (char *)"-png",
@@ -60,6 +64,7 @@ static int test_options(void)
     unsetenv("DS_FRAMES");
     unsetenv("DS_PNG");
     unsetenv("DS_RECORD");
+    unsetenv("DS_KEYS");
     return 0;
 }
 
