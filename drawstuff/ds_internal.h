@@ -96,8 +96,12 @@ void dxDsShadowMode(void);
 void dxDsShadowModeEnd(void);
 void dxDsRequireDrawing(const char *function);
 
-// frames.c: writing frames as PNG.
+// frames.c: writing frames as PNG. dxDsPngWrite writes what GL's read
+// buffer holds; dxDsReadPixels reads it into rgb (reallocated, bottom row
+// first; NULL if out of memory) for dxDsPngWriteRgb to write later.
 int dxDsPngWrite(const char *path, int width, int height);
+unsigned char *dxDsReadPixels(unsigned char *rgb, int width, int height);
+int dxDsPngWriteRgb(const char *path, const unsigned char *rgb, int width, int height);
 int dxDsRecordFrame(const char *dir, long number, int width, int height);
 
 // window.c, headless.c: the two loops. window returns 0 when no window could

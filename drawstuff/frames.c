@@ -45,21 +45,31 @@ static int encode(FILE *f, const unsigned char *rgb, int width, int height)
     return 1;
 }
 
-// Writes what GL's read buffer holds (width x height) to path; a failure
-// is reported and returns 0.
-int dxDsPngWrite(const char *path, int width, int height)
+int dxDsPngWriteRgb(const char *path, const unsigned char *rgb, int width, int height)
 {
-    unsigned char *rgb = malloc((size_t)width * (size_t)height * 3);
-    if (!rgb) {
-        dxDsWarn("no memory for a %dx%d frame", width, height);
-        return 0;
-    }
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, rgb);
     FILE *f = fopen(path, "wb");
     int ok = f && encode(f, rgb, width, height);
     if (f && fclose(f) != 0) ok = 0;
     if (!ok) dxDsWarn("cannot write %s: %s", path, f ? "PNG encoding failed" : strerror(errno));
+    return ok;
+}
+
+unsigned char *dxDsReadPixels(unsigned char *rgb, int width, int height)
+{
+    rgb = realloc(rgb, (size_t)width * (size_t)height * 3);
+    if (!rgb) {
+        dxDsWarn("no memory for a %dx%d frame", width, height);
+        return NULL;
+    }
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, rgb);
+    return rgb;
+}
+
+int dxDsPngWrite(const char *path, int width, int height)
+{
+    unsigned char *rgb = dxDsReadPixels(NULL, width, height);
+    int ok = rgb && dxDsPngWriteRgb(path, rgb, width, height);
     free(rgb);
     return ok;
 }

@@ -10,6 +10,7 @@
 #include <GL/gl.h>
 #include <GLFW/glfw3.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 // What the event callbacks need.
 typedef struct window_state {
@@ -92,7 +93,8 @@ int dxDsWindowLoop(int width, int height, dsFunctions *fn, const dxDsOptions *op
     const double period = 1.0 / DX_DS_FPS;
     double next = glfwGetTime();
     long frame = 0;
-    int fw = 0, fh = 0;
+    int fw = 0, fh = 0, last_w = 0, last_h = 0;
+    unsigned char *last = NULL;   // the last frame, when -png asks for it
     while (dxDs.run && !glfwWindowShouldClose(w) && (opt->frames < 0 || frame < opt->frames)) {
         double now = glfwGetTime();
         if (now < next) {
@@ -105,13 +107,15 @@ int dxDsWindowLoop(int width, int height, dsFunctions *fn, const dxDsOptions *op
         glfwGetFramebufferSize(w, &fw, &fh);
         if (fw < 1 || fh < 1) continue;   // minimised
         dxDsFrame(fw, fh, fn, opt, ++frame);
+        // The front buffer cannot be read back reliably after the swap: keep
+        // each frame until the last is known.
+        if (opt->png) last = dxDsReadPixels(last, last_w = fw, last_h = fh);
         glfwSwapBuffers(w);
     }
     if (fn->stop) fn->stop();
-    if (opt->png && frame > 0) {
-        glReadBuffer(GL_FRONT);
-        if (dxDsPngWrite(opt->png, fw, fh)) fprintf(stderr, "drawstuff: wrote %s\n", opt->png);
-    }
+    if (last && dxDsPngWriteRgb(opt->png, last, last_w, last_h))
+        fprintf(stderr, "drawstuff: wrote %s\n", opt->png);
+    free(last);
     dxDsTexturesDestroy();
     glfwDestroyWindow(w);
     glfwTerminate();
