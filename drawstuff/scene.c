@@ -32,8 +32,6 @@ void dxDsSceneInit(void)
     glCullFace(GL_BACK);
     glFrontFace(GL_CCW);
     glClearColor(0.5f, 0.5f, 0.5f, 1.0f);
-    glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR);
-    glTexGeni(GL_T, GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR);
     dxDsTexturesCreate();
 }
 
