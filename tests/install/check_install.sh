@@ -17,7 +17,11 @@
 #   scripted scene compared with the reference, or, while it cannot load, a
 #   skip listing the functions we lack;
 # - the split: libodedyn carries no collision code, libodecollide no C++
-#   runtime, and each installed backend module loads when selected.
+#   runtime, and each installed backend module loads when selected;
+# - drawstuff (when installed): a program written as ODE's demos are builds
+#   as C and C++ through `pkg-config ode drawstuff` and runs headless (by
+#   option, by environment, and by falling back when there is no display),
+#   writing PNG files.
 set -u
 prefix=$(cd "$1" && pwd)
 here=$(cd "$(dirname "$0")" && pwd)
@@ -392,6 +396,55 @@ for m in $modules; do
 done
 if [ -z "$modules" ]; then
     skip "installed backend modules load" "no backend module was built"
+fi
+
+# is_png FILE: FILE starts with the PNG signature.
+is_png() {
+    [ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ] ||
+        { echo "$1 is not a PNG"; return 1; }
+}
+
+# drawstuff_program COMPILER: builds the demo-style program, runs it 200
+# frames headless; the box must rest on the ground (z = 0.5) and the PNG exist.
+drawstuff_program() {
+    local flags exe=$work/ds_$1
+    flags=$(ours_pc --cflags --libs ode drawstuff) || return 1
+    if [ "$1" = cc ]; then
+        cc -std=c99 -Wall -Wextra -Werror -o "$exe" "$here/drawstuff_program.c" $flags -lm ||
+            return 1
+    else
+        c++ -x c++ -Wall -Wextra -Werror -o "$exe" "$here/drawstuff_program.c" $flags -lm ||
+            return 1
+    fi
+    (cd "$work" && LD_LIBRARY_PATH=$libdir "$exe" -headless -frames 200 -png "$work/ds_$1.png") \
+        >"$work/ds_$1.out" || return 1
+    cat "$work/ds_$1.out"
+    grep -qE '^rest -?0\.[0-9]+ -?0\.[0-9]+ 0\.(4[5-9]|5[0-5])$' "$work/ds_$1.out" &&
+        is_png "$work/ds_$1.png"
+}
+
+# An unchanged program run headless through the environment, and without a
+# display at all (it says so and writes <program>.png).
+drawstuff_environment() {
+    rm -rf "$work/rec" "$work/ds_cc.png"
+    (cd "$work" && env -u DISPLAY -u WAYLAND_DISPLAY DS_HEADLESS=1 DS_FRAMES=3 \
+        DS_RECORD="$work/rec" DS_PNG="$work/env.png" LD_LIBRARY_PATH=$libdir "$work/ds_cc") &&
+        is_png "$work/env.png" && is_png "$work/rec/frame00003.png" &&
+        [ ! -e "$work/rec/frame00004.png" ] &&
+        (cd "$work" && env -u DISPLAY -u WAYLAND_DISPLAY DS_FRAMES=2 \
+            LD_LIBRARY_PATH=$libdir "$work/ds_cc" 2>"$work/fallback.err") &&
+        cat "$work/fallback.err" && grep -q 'no display; running headless' "$work/fallback.err" &&
+        is_png "$work/ds_cc.png"
+}
+
+if [ -n "$(find "$prefix" -name drawstuff.pc)" ]; then
+    check "a drawstuff program (C) builds through pkg-config ode drawstuff, runs headless, writes a PNG" \
+        drawstuff_program cc
+    check "... and as C++" drawstuff_program c++
+    check "... and runs headless from DS_* variables alone, and with no display at all" \
+        drawstuff_environment
+else
+    skip "a drawstuff program builds and runs headless" "drawstuff was not built"
 fi
 echo "1..$n"
 [ "$failed" -eq 0 ]
