@@ -78,6 +78,9 @@ static void put_body(dxSnapWriter *o, const struct dxBody *b)
     dxSnapPutReals(o, b->force, 4);
     dxSnapPutReals(o, b->torque, 4);
     dxSnapPutReals(o, b->finite_rot_axis, 4);
+    dxSnapPutReals(o, b->gyro_torque, 4);
+    dxSnapPutReals(o, &b->gyro_work, 1);
+    dxSnapPutReals(o, &b->gyro_pending, 1);
     put_adis(o, &b->adis);
     dxSnapPutU32(o, (uint32_t)b->adis_idle_steps);
     dxSnapPutReals(o, &b->adis_idle_time, 1);
@@ -176,6 +179,9 @@ static const char *get_body(dxSnapReader *r, struct dxBody *b, int apply)
     dxSnapGetReals(r, s.force, 4);
     dxSnapGetReals(r, s.torque, 4);
     dxSnapGetReals(r, s.finite_rot_axis, 4);
+    dxSnapGetReals(r, s.gyro_torque, 4);
+    dxSnapGetReals(r, &s.gyro_work, 1);
+    dxSnapGetReals(r, &s.gyro_pending, 1);
     get_adis(r, &s.adis);
     s.adis_idle_steps = (int)dxSnapGetU32(r);
     dxSnapGetReals(r, &s.adis_idle_time, 1);
@@ -221,6 +227,9 @@ static const char *get_body(dxSnapReader *r, struct dxBody *b, int apply)
     memcpy(b->force, s.force, sizeof s.force);
     memcpy(b->torque, s.torque, sizeof s.torque);
     memcpy(b->finite_rot_axis, s.finite_rot_axis, sizeof s.finite_rot_axis);
+    memcpy(b->gyro_torque, s.gyro_torque, sizeof s.gyro_torque);
+    b->gyro_work = s.gyro_work;
+    b->gyro_pending = s.gyro_pending;
     b->adis = s.adis;
     b->adis_idle_steps = s.adis_idle_steps;
     b->adis_idle_time = s.adis_idle_time;
