@@ -49,6 +49,7 @@ typedef struct dxDsOptions {
     const char *png;     // -png / DS_PNG: write the last frame there
     const char *record;  // -record / DS_RECORD: write every frame there
     const char *keys;    // -keys / DS_KEYS: typed, one per frame, from frame 1
+    int width, height;   // -size WxH / DS_SIZE: the window or image size, or 0: the program's
 } dxDsOptions;
 
 typedef struct dxDsState {

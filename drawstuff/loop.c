@@ -65,6 +65,10 @@ void dsSimulationLoop(int argc, char **argv, int window_width, int window_height
 
     dxDsOptions opt;
     dxDsOptionsParse(&opt, argc, argv);
+    if (opt.width > 0) {
+        window_width = opt.width;
+        window_height = opt.height;
+    }
     dxDs.textures = opt.textures;
     dxDs.shadows = opt.shadows;
     dxDs.paused = opt.pause;

@@ -2,13 +2,14 @@
 //
 // options.c -- the viewer's options: ODE's (-notex, -noshadow, -noshadows,
 // -pause, -texturepath DIR) and ours for running without a display
-// (-headless, -frames N, -png FILE, -record DIR, -keys KEYS), the latter
-// also read from DS_HEADLESS, DS_FRAMES, DS_PNG, DS_RECORD, DS_KEYS so an
+// (-headless, -frames N, -png FILE, -record DIR, -keys KEYS, -size WxH), the
+// latter also read from DS_HEADLESS, DS_FRAMES, DS_PNG, DS_RECORD, DS_KEYS, DS_SIZE so an
 // unchanged program can be run headless and driven by its command keys.
 // The command line wins over the environment.
 
 #include "ds_internal.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -22,6 +23,20 @@ static long parse_frames(const char *text, const char *where)
         return -1;
     }
     return n;
+}
+
+// A window or image size "WxH" (each 1 to 8192) into opt, else reported and ignored.
+static void parse_size(dxDsOptions *opt, const char *text, const char *where)
+{
+    int w = 0, h = 0;
+    char extra;
+    if (!text || sscanf(text, "%dx%d%c", &w, &h, &extra) != 2 || w < 1 || h < 1 || w > 8192 ||
+        h > 8192) {
+        dxDsWarn("%s: '%s' is not a size WxH, ignored", where, text ? text : "");
+        return;
+    }
+    opt->width = w;
+    opt->height = h;
 }
 
 static const char *nonempty(const char *s)
@@ -41,6 +56,9 @@ void dxDsOptionsParse(dxDsOptions *opt, int argc, char **argv)
     opt->png = nonempty(getenv("DS_PNG"));
     opt->record = nonempty(getenv("DS_RECORD"));
     opt->keys = nonempty(getenv("DS_KEYS"));
+    opt->width = opt->height = 0;
+    env = nonempty(getenv("DS_SIZE"));
+    if (env) parse_size(opt, env, "DS_SIZE");
 
     for (int i = 1; i < argc && argv; i++) {
         const char *a = argv[i];
@@ -62,6 +80,9 @@ void dxDsOptionsParse(dxDsOptions *opt, int argc, char **argv)
             i++;
         } else if (strcmp(a, "-keys") == 0) {
             opt->keys = nonempty(next);
+            i++;
+        } else if (strcmp(a, "-size") == 0) {
+            parse_size(opt, next, "-size");
             i++;
         }
     }

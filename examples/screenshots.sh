@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # examples/screenshots.sh BUILD_DIR -- run every drawstuff example headless for
-# 300 frames in BUILD_DIR and write its last frame to docs/images/NAME.png.
+# 300 frames in BUILD_DIR and write its last frame, 640 x 360, to docs/images/NAME.png.
 # Exit status: the number of examples that failed (their checks, or no image).
 set -u
 [ $# -eq 1 ] || { echo "usage: examples/screenshots.sh BUILD_DIR" >&2; exit 2; }
@@ -17,7 +17,7 @@ for name in falling stack chain buggy ragdoll joints friction terrain rays backe
         continue
     fi
     rm -f "$images/$name.png"
-    if ! "$program" -headless -frames 300 -png "$images/$name.png" >/dev/null; then
+    if ! "$program" -headless -frames 300 -size 640x360 -png "$images/$name.png" >/dev/null; then
         echo "$name: its checks failed (run $program -headless to see why)"
         failed=$((failed + 1))
     elif [ ! -s "$images/$name.png" ]; then

@@ -307,6 +307,18 @@ static int test_frames_counted(void)
     return 0;
 }
 
+// -size WxH overrides the size the program asks for (smaller screenshots).
+static int test_size_option_sets_the_image_size(void)
+{
+    reset_scene(level_xyz, level_hpr);
+    const char *size[] = { "-size", "40x30", NULL };
+    ds_image img;
+    CHECK(ds_render(&img, &functions, 64, 48, 2, size));
+    CHECK(img.width == 40 && img.height == 30);
+    ds_image_free(&img);
+    return 0;
+}
+
 static int test_record_writes_every_frame(void)
 {
     reset_scene(level_xyz, level_hpr);
@@ -407,6 +419,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_wireframe_differs),
     TEST_CASE(test_shadow_on_ground),
     TEST_CASE(test_frames_counted),
+    TEST_CASE(test_size_option_sets_the_image_size),
     TEST_CASE(test_record_writes_every_frame),
     TEST_CASE(test_viewpoint_round_trip),
     TEST_CASE(test_elapsed_time),

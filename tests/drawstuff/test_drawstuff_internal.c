@@ -60,6 +60,22 @@ static int test_options(void)
     char *cut[] = { (char *)"demo", (char *)"-frames", NULL };
     dxDsOptionsParse(&opt, 2, cut);
     CHECK(opt.frames == -1);
+
+    // The size: WxH from the environment, the command line over it, nonsense ignored.
+    CHECK(opt.width == 0 && opt.height == 0);
+    setenv("DS_SIZE", "320x200", 1);
+    dxDsOptionsParse(&opt, 1, plain);
+    CHECK(opt.width == 320 && opt.height == 200);
+    char *size[] = { (char *)"demo", (char *)"-size", (char *)"640x360", NULL };
+    dxDsOptionsParse(&opt, 3, size);
+    CHECK(opt.width == 640 && opt.height == 360);
+    char *bad[] = { (char *)"demo", (char *)"-size", (char *)"640x0", NULL };
+    unsetenv("DS_SIZE");
+    dxDsOptionsParse(&opt, 3, bad);
+    CHECK(opt.width == 0 && opt.height == 0);
+    char *junk[] = { (char *)"demo", (char *)"-size", (char *)"64x36px", NULL };
+    dxDsOptionsParse(&opt, 3, junk);
+    CHECK(opt.width == 0 && opt.height == 0);
     unsetenv("DS_HEADLESS");
     unsetenv("DS_FRAMES");
     unsetenv("DS_PNG");
