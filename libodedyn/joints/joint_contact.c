@@ -79,12 +79,22 @@ static void contact_count_rows(dxJoint *j, dxJointRowCount *count)
     count->nub = 0;   // row 0 is bounded, so no row may be declared unbounded up front
 }
 
-// An angular row about axis a (stored sense): J1a = a, J2a = -a.
+// The contact writes every entry of its rows, so dxJointRowsFill skips
+// setting the defaults first: the entries a row does not use get them here
+// (J 0, c 0, cfm the world's, findex -1).
+
+// An angular row about axis a (stored sense): J1a = a, J2a = -a (0 without
+// a second body), no linear part, no velocity target.
 static void angular_row(const dxJoint *j, dxJointRows *rows, int row, const dVector3 a)
 {
     const int o = row * rows->rowskip;
+    dZeroVector3(rows->J1l + o);
     dCopyVector3(rows->J1a + o, a);
+    dZeroVector3(rows->J2l + o);
     if (dxJointBody(j, 1)) dCopyNegatedVector3(rows->J2a + o, a);
+    else dZeroVector3(rows->J2a + o);
+    rows->c[row] = 0;
+    rows->cfm[row] = j->world->cfm;
 }
 
 // A linear row along d (stored sense) through the contact point:
@@ -99,6 +109,9 @@ static void linear_row(const dxJointContact *c, dxJointRows *rows, int row, cons
     if (dxJointBody(&c->base, 1)) {
         dCopyNegatedVector3(rows->J2l + o, d);
         dCalcVectorCross3(rows->J2a + o, d, c->arm[1]);
+    } else {
+        dZeroVector3(rows->J2l + o);
+        dZeroVector3(rows->J2a + o);
     }
 }
 
@@ -121,7 +134,7 @@ static void friction_bounds(dxJointRows *rows, int row, dReal k, int pyramid)
 {
     rows->lo[row] = -k;
     rows->hi[row] = k;
-    if (pyramid && k < dInfinity) rows->findex[row] = 0;
+    rows->findex[row] = pyramid && k < dInfinity ? 0 : -1;
 }
 
 // Does the anchor record belong to the bodies attached now?
@@ -216,9 +229,10 @@ static void normal_row(dxJointContact *c, dxJointRows *rows, const dVector3 n)
         }
     }
     rows->c[0] = target + motion;
-    if (s->mode & dContactSoftCFM) rows->cfm[0] = s->soft_cfm;
+    rows->cfm[0] = (s->mode & dContactSoftCFM) ? s->soft_cfm : w->cfm;
     rows->lo[0] = 0;
     rows->hi[0] = dInfinity;
+    rows->findex[0] = -1;
 }
 
 // Friction row along t (stored sense): target tangential velocity `motion`,
@@ -228,7 +242,7 @@ static void friction_row(dxJointContact *c, dxJointRows *rows, int row, const dV
 {
     linear_row(c, rows, row, t);
     rows->c[row] = motion;
-    if (has_slip) rows->cfm[row] = slip;
+    rows->cfm[row] = has_slip ? slip : c->base.world->cfm;
     friction_bounds(rows, row, k, pyramid);
 }
 

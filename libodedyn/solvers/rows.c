@@ -189,13 +189,15 @@ void dxJointRowsFill(struct dxWorld *w, dxJoint *j, dReal h, dReal *J, dReal *c,
     b[0] = island_index(j, 0);
     b[1] = island_index(j, 1);
     if (m == 0) return;
-    for (int i = 0; i < m * DX_ROW_SKIP; i++) J[i] = 0;
-    for (int i = 0; i < m; i++) {
-        c[i] = 0;
-        cfm[i] = w->cfm;
-        lo[i] = -dInfinity;
-        hi[i] = dInfinity;
-        findex[i] = -1;
+    if (j->cls->type != dJointTypeContact) {   // it writes every entry itself
+        for (int i = 0; i < m * DX_ROW_SKIP; i++) J[i] = 0;
+        for (int i = 0; i < m; i++) {
+            c[i] = 0;
+            cfm[i] = w->cfm;
+            lo[i] = -dInfinity;
+            hi[i] = dInfinity;
+            findex[i] = -1;
+        }
     }
     dxJointRows info;
     info.fps = dRecip(h);

@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// test_contact_rows.c -- the contact joint writes every entry of its rows
+// (dxJointRowsFill relies on it and sets no defaults for contacts): rows
+// filled into arrays of garbage must equal, bit for bit, the rows the joint
+// writes over the generic defaults (J 0, c 0, cfm the world's, lo -inf,
+// hi inf, findex -1), for every surface mode and with one or two bodies.
+
+#include "test.h"
+#include "objects_internal.h"
+#include "step_internal.h"
+
+#include <math.h>
+#include <string.h>
+
+#define MAX_M 6
+
+// The rows of joint j over the generic defaults, as the solvers set them.
+static void rows_over_defaults(dWorldID w, dxJoint *j, dReal h, dReal *J, dReal *c, dReal *cfm,
+                               dReal *lo, dReal *hi, int *findex)
+{
+    const int m = j->rows.m;
+    for (int i = 0; i < m * DX_ROW_SKIP; i++) J[i] = 0;
+    for (int i = 0; i < m; i++) {
+        c[i] = 0;
+        cfm[i] = w->cfm;
+        lo[i] = -dInfinity;
+        hi[i] = dInfinity;
+        findex[i] = -1;
+    }
+    dxJointRows info = { .fps = 1 / h, .erp = w->erp, .rowskip = DX_ROW_SKIP, .J1l = J,
+                         .J1a = J + 3, .J2l = J + 6, .J2a = J + 9, .c = c, .cfm = cfm,
+                         .lo = lo, .hi = hi, .findex = findex };
+    j->cls->fill_rows(j, &info);
+}
+
+// A contact between b1 and b2 (b2 may be 0) with the given surface mode.
+static dxJoint *make_contact(dWorldID w, dBodyID b1, dBodyID b2, int mode)
+{
+    dContact ct;
+    memset(&ct, 0, sizeof ct);
+    ct.geom.pos[0] = 0.1;
+    ct.geom.pos[1] = -0.2;
+    ct.geom.pos[2] = 0.05;
+    ct.geom.normal[0] = 0.3;
+    ct.geom.normal[2] = 1;
+    ct.geom.depth = 0.02;
+    ct.surface.mode = mode;
+    ct.surface.mu = (mode & dContactApprox1_N) ? dInfinity : 0.7;
+    ct.surface.mu2 = 0.4;
+    ct.surface.rho = 0.01;
+    ct.surface.rho2 = 0.02;
+    ct.surface.rhoN = 0.03;
+    ct.surface.bounce = 0.5;
+    ct.surface.bounce_vel = 0.01;
+    ct.surface.soft_erp = 0.4;
+    ct.surface.soft_cfm = 1e-3;
+    ct.surface.motion1 = 0.2;
+    ct.surface.motion2 = -0.1;
+    ct.surface.motionN = 0.05;
+    ct.surface.slip1 = 1e-3;
+    ct.surface.slip2 = 2e-3;
+    dJointID j = dJointCreateContact(w, 0, &ct);
+    dJointAttach(j, b1, b2);
+    return (dxJoint *)j;
+}
+
+static int test_contact_rows_need_no_defaults(void)
+{
+    static const int modes[] = {
+        0,
+        dContactBounce | dContactSoftCFM | dContactSoftERP,
+        dContactMu2 | dContactSlip1 | dContactSlip2 | dContactMotion1 | dContactMotion2,
+        dContactRolling | dContactApprox1,
+        dContactRolling | dContactAxisDep | dContactApprox1_1 | dContactMotionN,
+        dContactApprox1_N | dContactRolling,   // infinite mu: unbounded friction rows
+    };
+    dWorldID w = dWorldCreate();
+    dWorldSetCFM(w, 1e-6);
+    dBodyID a = dBodyCreate(w), b = dBodyCreate(w);
+    dBodySetPosition(b, 0.3, 0, -0.5);
+    dBodySetLinearVel(a, 0.1, 0.2, -0.4);
+    dBodySetAngularVel(b, 0.5, -0.3, 0.2);
+    const dReal h = 0.01;
+    int checked = 0;
+    for (size_t k = 0; k < sizeof modes / sizeof modes[0]; k++) {
+        for (int two = 0; two < 2; two++) {
+            for (int reversed = 0; reversed < 2; reversed++) {
+                dxJoint *j = reversed ? make_contact(w, two ? b : 0, a, modes[k])
+                                      : make_contact(w, a, two ? b : 0, modes[k]);
+                j->cls->count_rows(j, &j->rows);
+                const int m = j->rows.m;
+                CHECK(m >= 1 && m <= MAX_M);
+                dReal J[MAX_M * DX_ROW_SKIP], c[MAX_M], cfm[MAX_M], lo[MAX_M], hi[MAX_M];
+                dReal J0[MAX_M * DX_ROW_SKIP], c0[MAX_M], cfm0[MAX_M], lo0[MAX_M], hi0[MAX_M];
+                int f[MAX_M], f0[MAX_M], bi[2];
+                // The first fill records the contact's anchor; both compared fills follow it.
+                dxJointRowsFill(w, j, h, J, c, cfm, lo, hi, f, bi);
+                rows_over_defaults(w, j, h, J0, c0, cfm0, lo0, hi0, f0);
+                for (int i = 0; i < MAX_M * DX_ROW_SKIP; i++) J[i] = NAN;
+                for (int i = 0; i < MAX_M; i++) {
+                    c[i] = cfm[i] = lo[i] = hi[i] = NAN;
+                    f[i] = 12345;
+                }
+                dxJointRowsFill(w, j, h, J, c, cfm, lo, hi, f, bi);
+                CHECK(memcmp(J, J0, sizeof J[0] * DX_ROW_SKIP * (size_t)m) == 0);
+                CHECK(memcmp(c, c0, sizeof c[0] * (size_t)m) == 0);
+                CHECK(memcmp(cfm, cfm0, sizeof cfm[0] * (size_t)m) == 0);
+                CHECK(memcmp(lo, lo0, sizeof lo[0] * (size_t)m) == 0);
+                CHECK(memcmp(hi, hi0, sizeof hi[0] * (size_t)m) == 0);
+                CHECK(memcmp(f, f0, sizeof f[0] * (size_t)m) == 0);
+                checked += m;
+                dJointDestroy((dJointID)j);
+            }
+        }
+    }
+    CHECK(checked > 4 * 6 * 2);   // the modes give more than two rows on average
+    dWorldDestroy(w);
+    return 0;
+}
+
+const test_case test_cases[] = {
+    TEST_CASE(test_contact_rows_need_no_defaults),
+    TEST_END
+};
