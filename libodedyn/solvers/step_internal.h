@@ -94,7 +94,8 @@ void dxRowsBuild(struct dxWorld *w, dxArena *arena, const dxIsland *is, dReal h,
                  dxIslandRows *rows);
 // The rows of one joint (j->rows.m of them, counted this step) at J, c, cfm,
 // lo, hi, findex (row i at index i, J with DX_ROW_SKIP): J zeroed and filled,
-// cfm, lo, hi defaulted and filled, findex joint-local or -1, kinematic
+// cfm, lo, hi defaulted and filled (a contact joint writes every entry itself,
+// so its defaults are skipped), findex joint-local or -1, kinematic
 // bodies' motion folded into c. Island indices of its bodies in b[2] (-1:
 // static world or kinematic). What dxRowsBuild does for every joint.
 void dxJointRowsFill(struct dxWorld *w, dxJoint *j, dReal h, dReal *J, dReal *c, dReal *cfm,
