@@ -128,7 +128,7 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
         if (node->count == 0) {
             // Push the farther child first: the nearer is walked first.
             int a = node->first, b = node->first + 1;
-            dReal ea, eb;
+            dReal ea = 0, eb = 0;   // set by ray_enters when it returns 1
             int ha = ray_enters(s, v, inv, &d->nodes[a], limit, &ea);
             int hb = ray_enters(s, v, inv, &d->nodes[b], limit, &eb);
             if (ha && hb && ea < eb) {
