@@ -220,12 +220,6 @@ static int box_keep_overlapping(clip_point *a, int n, const dReal hr[3], int k,
     return kept;
 }
 
-// How far box 1 must move along the unit normal (nl, in box 1's frame) to
-// clear box 2: box 1 moved by t n meets box 2 while t n lies in the
-// Minkowski difference box 2 - box 1, whose faces are normal to the 15
-// axes m; the ray t n leaves it at the least h(m) / (m . n) over the axes
-// facing n, h(m) = m . (p2 - p1) + radius1(m) + radius2(m) its support. The
-// ratio does not depend on the length of m, so axes stay unnormalised.
 // What box_clearance needs: the contact normal in box 1's frame (nl), and
 // box_box's Rm, overlaps and projections.
 typedef struct box_axes {
@@ -250,6 +244,12 @@ static inline dReal face_dot(const box_axes *ax, int x)
     return x < 3 ? nl[x] : Rm[0][x - 3] * nl[0] + Rm[1][x - 3] * nl[1] + Rm[2][x - 3] * nl[2];
 }
 
+// How far box 1 must move along the unit normal (nl, in box 1's frame) to
+// clear box 2: box 1 moved by t n meets box 2 while t n lies in the
+// Minkowski difference box 2 - box 1, whose faces are normal to the 15
+// axes m; the ray t n leaves it at the least h(m) / (m . n) over the axes
+// facing n, h(m) = m . (p2 - p1) + radius1(m) + radius2(m) its support. The
+// ratio does not depend on the length of m, so axes stay unnormalised.
 static dReal box_clearance(const box_axes *ax)
 {
     const dReal *nl = ax->nl, (*Rm)[3] = ax->Rm;
