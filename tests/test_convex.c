@@ -760,6 +760,52 @@ static int test_remembered_axis_never_hides_contacts(void)
     return 0;
 }
 
+// Box 1 of a box pair remembers the axis that parted it from each of its
+// last few partners, as hulls do: a box wandering among 12 boxes of
+// different shapes (more than it remembers) gets exactly the contacts that
+// fresh boxes at the same poses get, in either order.
+static int test_box_remembered_axis_never_hides_contacts(void)
+{
+    dGeomID walker = dCreateBox(0, (dReal)0.6, (dReal)0.4, (dReal)0.3);
+    dGeomID others[12];
+    for (int k = 0; k < 12; k++) {
+        dReal s = (dReal)(0.3 + 0.05 * k);
+        others[k] = dCreateBox(0, s, (dReal)0.5, (dReal)(0.9 - 0.04 * k));
+        pose_other(others[k], k);
+    }
+    rng_state = 91;
+    double p[3] = { 0, 0, 0 };
+    int touching = 0, apart = 0;
+    for (int step = 0; step < 3000; step++) {
+        for (int k = 0; k < 3; k++) p[k] = fmax(-1.5, fmin(1.5, p[k] + rnd(-0.05, 0.05)));
+        p[2] = fmax(-0.4, fmin(0.4, p[2]));
+        dMatrix3 R;
+        random_rotation(R);
+        place(walker, (dReal[3]){ (dReal)p[0], (dReal)p[1], (dReal)p[2] }, R);
+        int k = step % 12;
+        dContactGeom a[MAXC], b[MAXC];
+        int na = dCollide(walker, others[k], MAXC, a, sizeof a[0]);
+        dGeomID w2 = dCreateBox(0, (dReal)0.6, (dReal)0.4, (dReal)0.3);
+        dReal s = (dReal)(0.3 + 0.05 * k);
+        dGeomID o2 = dCreateBox(0, s, (dReal)0.5, (dReal)(0.9 - 0.04 * k));
+        place(w2, (dReal[3]){ (dReal)p[0], (dReal)p[1], (dReal)p[2] }, R);
+        pose_other(o2, k);
+        int nb = dCollide(w2, o2, MAXC, b, sizeof b[0]);
+        CHECK(identical(a, na, b, nb));
+        na = dCollide(others[k], walker, MAXC, a, sizeof a[0]);
+        nb = dCollide(o2, w2, MAXC, b, sizeof b[0]);
+        CHECK(identical(a, na, b, nb));
+        touching += na > 0;
+        apart += na == 0;
+        dGeomDestroy(w2);
+        dGeomDestroy(o2);
+    }
+    CHECK(touching > 200 && apart > 200);
+    for (int k = 0; k < 12; k++) dGeomDestroy(others[k]);
+    dGeomDestroy(walker);
+    return 0;
+}
+
 // ---- bad input ------------------------------------------------------------------
 
 static char last_error[512];
@@ -853,6 +899,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_large_prism),
     TEST_CASE(test_resting_on_plane),
     TEST_CASE(test_remembered_axis_never_hides_contacts),
+    TEST_CASE(test_box_remembered_axis_never_hides_contacts),
     TEST_CASE(test_bad_input),
     TEST_END,
 };

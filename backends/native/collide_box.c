@@ -4,6 +4,8 @@
 // touching faces or the closest points of two edges) and box-plane (the
 // corners below the plane).
 
+#include <string.h>
+
 #include "collide_math.h"
 
 // The edge axes of (nearly) parallel edges are (nearly) zero vectors: their
@@ -13,6 +15,9 @@
 // axis' by this factor: face contacts give a stable polygon, so they are
 // preferred when the two are about as deep.
 #define BOX_EDGE_PREFERENCE ((dReal)1.05)
+// Boxes whose centres are farther apart than this times the sum of their
+// half diagonals are apart without a look at their axes.
+#define BOX_SPHERE_MARGIN ((dReal)1.001)
 
 // A point of the clipped contact polygon in the reference face's frame.
 typedef struct clip_point {
@@ -39,6 +44,15 @@ static int clip_half(const clip_point *poly, int n, int axis, dReal sg, dReal h,
         }
     }
     return m;
+}
+
+// Whether every point of poly (n points) has sg * coordinate(axis) <= h,
+// the test clip_half keeps a point by.
+static int all_inside(const clip_point *poly, int n, int axis, dReal sg, dReal h)
+{
+    for (int i = 0; i < n; i++)
+        if (!(sg * (axis ? poly[i].y : poly[i].x) - h <= 0)) return 0;
+    return 1;
 }
 
 // Choose max of the n points (n > max) to keep, in place: the deepest, then
@@ -151,12 +165,19 @@ static int box_clip_incident(const dReal hr[3], int k, const dReal nf[3], const 
         a[v].y = cy + s * uy + t * vy;
         a[v].depth = hr[k] - (cz + s * uz + t * vz);
     }
-    clip_point b[16];
-    int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
-    int n = clip_half(a, 4, 0, 1, hr[k1], b);
-    n = clip_half(b, n, 0, -1, hr[k1], a);
-    n = clip_half(a, n, 1, 1, hr[k2], b);
-    return clip_half(b, n, 1, -1, hr[k2], a);
+    clip_point b[16], *cur = a, *spare = b;
+    int n = 4;
+    for (int side = 0; side < 4; side++) {
+        int axis = side / 2;
+        dReal sg = side % 2 ? -1 : 1, h = hr[(k + 1 + axis) % 3];
+        if (all_inside(cur, n, axis, sg, h)) continue;   // clip_half would copy
+        n = clip_half(cur, n, axis, sg, h, spare);
+        clip_point *t = cur;
+        cur = spare;
+        spare = t;
+    }
+    if (cur != a) memcpy(a, cur, (size_t)n * sizeof *a);
+    return n;
 }
 
 // Keep (in place) the clipped points below the reference face whose line
@@ -199,18 +220,71 @@ static int box_keep_overlapping(clip_point *a, int n, const dReal hr[3], int k,
     return kept;
 }
 
+// What box_clearance needs: the contact normal in box 1's frame (nl), and
+// box_box's Rm, overlaps and projections.
+typedef struct box_axes {
+    dReal nl[3];
+    const dReal (*Rm)[3];
+    const dReal *over, *proj;
+} box_axes;
+
+// The ray's exit through the faces of axis x, whose direction has s = m . n
+// (dInfinity if it runs along them).
+static inline dReal exit_along(const box_axes *ax, int x, dReal s)
+{
+    if (s == 0) return dInfinity;
+    dReal radii = ax->over[x] + dFabs(ax->proj[x]);
+    return ((s > 0 ? ax->proj[x] : -ax->proj[x]) + radii) / dFabs(s);
+}
+
+// m . n for face axis x (0-5).
+static inline dReal face_dot(const box_axes *ax, int x)
+{
+    const dReal *nl = ax->nl, (*Rm)[3] = ax->Rm;
+    return x < 3 ? nl[x] : Rm[0][x - 3] * nl[0] + Rm[1][x - 3] * nl[1] + Rm[2][x - 3] * nl[2];
+}
+
+// How far box 1 must move along the unit normal (nl, in box 1's frame) to
+// clear box 2: box 1 moved by t n meets box 2 while t n lies in the
+// Minkowski difference box 2 - box 1, whose faces are normal to the 15
+// axes m; the ray t n leaves it at the least h(m) / (m . n) over the axes
+// facing n, h(m) = m . (p2 - p1) + radius1(m) + radius2(m) its support. The
+// ratio does not depend on the length of m, so axes stay unnormalised.
+static dReal box_clearance(const box_axes *ax)
+{
+    const dReal *nl = ax->nl, (*Rm)[3] = ax->Rm;
+    dReal best = dInfinity;
+    for (int x = 0; x < 6; x++) {
+        dReal t = exit_along(ax, x, face_dot(ax, x));
+        if (t < best) best = t;
+    }
+    for (int i = 0; i < 3; i++) {
+        int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+        for (int j = 0; j < 3; j++) {
+            if (Rm[i1][j] * Rm[i1][j] + Rm[i2][j] * Rm[i2][j] <= DX_COLLIDE_EPS) continue;
+            dReal s = Rm[i1][j] * nl[i2] - Rm[i2][j] * nl[i1];   // (e_i x Rm[.][j]) . n
+            dReal t = exit_along(ax, 6 + 3 * i + j, s);
+            if (t < best) best = t;
+        }
+    }
+    return best;
+}
+
 // The face case (see box_clip_incident): the kept points are the contacts,
 // each with its depth under the reference face, pos in the middle of the
 // stretch through it inside both boxes; at most max, spread (cull_points).
 // The deepest carries the translation along the normal that separates the
-// boxes (clear, box_clearance): the clipped points reach it unless the
-// incident box's highest part over the reference face is not on its
-// incident face (deep or crossed overlaps). normal is the contact normal
-// (into o1).
+// boxes (clear, box_clearance of ax): the clipped points reach it unless
+// the incident box's highest part over the reference face is not on its
+// incident face (deep or crossed overlaps). clear is at most the exit
+// through the faces of the contact's own axis (code), so when the deepest
+// point reaches that, the full clearance is not needed. normal is the
+// contact normal (into o1).
 static int box_face_contacts(const dReal *pr, const dReal *Rr, const dReal hr[3], int k,
                              const dReal nf[3], const dReal *pi, const dReal *Ri,
-                             const dReal hi[3], const dReal normal[3], dReal clear,
-                             dxGeom *o1, dxGeom *o2, int max, dContactGeom *out, int skip)
+                             const dReal hi[3], const dReal normal[3], const box_axes *ax,
+                             int code, dxGeom *o1, dxGeom *o2, int max, dContactGeom *out,
+                             int skip)
 {
     dReal U1[3], U2[3], dots[3], rel[3] = { pi[0] - pr[0], pi[1] - pr[1], pi[2] - pr[2] };
     dx_axis(Rr, (k + 1) % 3, U1);
@@ -222,9 +296,11 @@ static int box_face_contacts(const dReal *pr, const dReal *Rr, const dReal hr[3]
     if (kept == 0) {   // the separating axis says they overlap: find a point
         dReal pos[3];
         box_overlap_point(pr, Rr, hr, pi, Ri, hi, pos);
-        dx_put_contact(out, 0, skip, pos, normal, clear, o1, o2);
+        dx_put_contact(out, 0, skip, pos, normal, box_clearance(ax), o1, o2);
         return 1;
     }
+    dReal clear = a[0].depth < exit_along(ax, code, face_dot(ax, code)) ? box_clearance(ax)
+                                                                       : a[0].depth;
     if (kept > max) {
         cull_points(a, kept, max);
         kept = max;
@@ -286,35 +362,6 @@ static void box_edge_point(const dReal *p1, const dReal *R1, const dReal h1[3], 
     box_overlap_point(p1, R1, h1, p2, R2, h2, pos);
 }
 
-// How far box 1 must move along the unit normal (nl, in box 1's frame) to
-// clear box 2: box 1 moved by t n meets box 2 while t n lies in the
-// Minkowski difference box 2 - box 1, whose faces are normal to the 15
-// axes m; the ray t n leaves it at the least h(m) / (m . n) over the axes
-// facing n, h(m) = m . (p2 - p1) + radius1(m) + radius2(m) its support. The
-// ratio does not depend on the length of m, so axes stay unnormalised.
-static dReal box_clearance(const dReal nl[3], const dReal Rm[3][3], const dReal over[15],
-                           const dReal proj[15])
-{
-    dReal best = dInfinity;
-    for (int x = 0; x < 15; x++) {
-        dReal s;   // m . n
-        if (x < 3) {
-            s = nl[x];
-        } else if (x < 6) {
-            s = Rm[0][x - 3] * nl[0] + Rm[1][x - 3] * nl[1] + Rm[2][x - 3] * nl[2];
-        } else {
-            int i = (x - 6) / 3, j = (x - 6) % 3, i1 = (i + 1) % 3, i2 = (i + 2) % 3;
-            if (Rm[i1][j] * Rm[i1][j] + Rm[i2][j] * Rm[i2][j] <= DX_COLLIDE_EPS) continue;
-            s = Rm[i1][j] * nl[i2] - Rm[i2][j] * nl[i1];   // (e_i x Rm[.][j]) . n
-        }
-        if (s == 0) continue;
-        dReal radii = over[x] + dFabs(proj[x]);
-        dReal t = ((s > 0 ? proj[x] : -proj[x]) + radii) / dFabs(s);
-        if (t < best) best = t;
-    }
-    return best;
-}
-
 // The axis box_box chose, for its callers.
 static void report_axis(const dReal normal[3], dReal depth, int code, dReal normal_out[3],
                         dReal *depth_out, int *code_out)
@@ -322,6 +369,60 @@ static void report_axis(const dReal normal[3], dReal depth, int code, dReal norm
     for (int q = 0; q < 3; q++) normal_out[q] = normal[q];
     *depth_out = depth;
     *code_out = code;
+}
+
+// Overlap of the boxes along face axis x (0-2: A_x, 3-5: B_(x-3)), and
+// box 2's offset along it (proj); box_box's names.
+static inline dReal face_overlap(int x, const dReal a[3], const dReal b[3], const dReal T[3],
+                                 const dReal Rm[3][3], const dReal Q[3][3], dReal *proj)
+{
+    if (x < 3) {
+        *proj = T[x];
+        return a[x] + b[0] * Q[x][0] + b[1] * Q[x][1] + b[2] * Q[x][2] - dFabs(T[x]);
+    }
+    int j = x - 3;
+    *proj = T[0] * Rm[0][j] + T[1] * Rm[1][j] + T[2] * Rm[2][j];
+    return a[0] * Q[0][j] + a[1] * Q[1][j] + a[2] * Q[2][j] + b[j] - dFabs(*proj);
+}
+
+// The same, unnormalised, along edge axis 6 + 3 i + j (A_i x B_j, in box
+// 1's frame e_i x Rm[.][j]).
+static inline dReal edge_overlap(int i, int j, const dReal a[3], const dReal b[3],
+                                 const dReal T[3], const dReal Rm[3][3], const dReal Q[3][3],
+                                 dReal *proj)
+{
+    int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+    *proj = T[i2] * Rm[i1][j] - T[i1] * Rm[i2][j];
+    dReal radii = a[i1] * Q[i2][j] + a[i2] * Q[i1][j] + b[j1] * Q[i][j2] + b[j2] * Q[i][j1];
+    return radii - dFabs(*proj);
+}
+
+// An edge axis' length may vanish, so its overlap separates only below this
+// margin beyond rounding (or below 0 where the axis is well defined).
+static inline dReal edge_slack(int i, int j, const dReal a[3], const dReal b[3])
+{
+    return -BOX_AXIS_SLACK * (a[(i + 1) % 3] + a[(i + 2) % 3] + b[(j + 1) % 3] + b[(j + 2) % 3]);
+}
+
+// Whether axis x alone parts the boxes by box_box's own tests (for the
+// remembered axis: exactly when box_box would return 0 on reaching it).
+static int axis_parts(int x, const dReal a[3], const dReal b[3], const dReal T[3],
+                      const dReal Rm[3][3], const dReal Q[3][3])
+{
+    dReal proj;
+    if (x < 6) return face_overlap(x, a, b, T, Rm, Q, &proj) < 0;
+    int i = (x - 6) / 3, j = (x - 6) % 3, i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+    dReal over = edge_overlap(i, j, a, b, T, Rm, Q, &proj);
+    if (over < edge_slack(i, j, a, b)) return 1;
+    dReal len2 = Rm[i1][j] * Rm[i1][j] + Rm[i2][j] * Rm[i2][j];
+    return len2 > DX_COLLIDE_EPS && over / dSqrt(len2) < 0;
+}
+
+// box_box's return when axis x parts the boxes: 0, with x noted in *apart.
+static inline int apart_by(int x, int *apart)
+{
+    *apart = x;
+    return 0;
 }
 
 // Box-box. In box 1's frame (axes A_i, half sides a), with box 2's centre T
@@ -335,14 +436,21 @@ static void report_axis(const dReal normal[3], dReal depth, int code, dReal norm
 // may be NULL). The contact normal goes to normal_out, the depth along it to
 // *depth_out and the axis to *code_out, numbered as ODE 0.16's dBoxBox does:
 // 1-3 box 1's faces, 4-6 box 2's, 7 + 3 i + j the edge pair A_i x B_j.
+// Axis hint (0-14, or -1) is tried first; when an axis parts the boxes,
+// *apart gets it (left alone if the bounding spheres part them).
 static int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const dReal *p2,
                    const dReal *R2, const dReal *s2, dxGeom *o1, dxGeom *o2, int flags,
-                   dContactGeom *out, int skip, dReal normal_out[3], dReal *depth_out,
-                   int *code_out)
+                   dContactGeom *out, int skip, int hint, int *apart, dReal normal_out[3],
+                   dReal *depth_out, int *code_out)
 {
     const dReal a[3] = { s1[0] / 2, s1[1] / 2, s1[2] / 2 };
     const dReal b[3] = { s2[0] / 2, s2[1] / 2, s2[2] / 2 };
     dReal d[3] = { p2[0] - p1[0], p2[1] - p1[1], p2[2] - p1[2] }, T[3];
+    // Bounding spheres apart by more than the edge axes' slack: no axis can
+    // say the boxes touch.
+    dReal ra = dSqrt(dx_dot(a, a)), rb = dSqrt(dx_dot(b, b));
+    dReal reach = (ra + rb) * BOX_SPHERE_MARGIN;
+    if (dx_dot(d, d) > reach * reach) return 0;
     dx_to_local(R1, d, T);
     dReal Rm[3][3], Q[3][3];
     for (int i = 0; i < 3; i++) {
@@ -353,26 +461,16 @@ static int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const dRea
     }
     // Overlap along each axis (< 0: apart), unnormalised for the edges.
     dReal over[15], proj[15];
-    for (int i = 0; i < 3; i++) {
-        proj[i] = T[i];
-        over[i] = a[i] + b[0] * Q[i][0] + b[1] * Q[i][1] + b[2] * Q[i][2] - dFabs(T[i]);
-        if (over[i] < 0) return 0;
-    }
-    for (int j = 0; j < 3; j++) {
-        proj[3 + j] = T[0] * Rm[0][j] + T[1] * Rm[1][j] + T[2] * Rm[2][j];
-        over[3 + j] = a[0] * Q[0][j] + a[1] * Q[1][j] + a[2] * Q[2][j] + b[j] - dFabs(proj[3 + j]);
-        if (over[3 + j] < 0) return 0;
+    if (hint >= 0 && axis_parts(hint, a, b, T, Rm, Q)) return apart_by(hint, apart);
+    for (int x = 0; x < 6; x++) {
+        over[x] = face_overlap(x, a, b, T, Rm, Q, &proj[x]);
+        if (over[x] < 0) return apart_by(x, apart);
     }
     for (int i = 0; i < 3; i++) {
-        int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
         for (int j = 0; j < 3; j++) {
-            int j1 = (j + 1) % 3, j2 = (j + 2) % 3, x = 6 + 3 * i + j;
-            // A_i x B_j in box 1's frame is e_i x Rm[.][j]; its length may
-            // vanish, so separation needs a margin beyond rounding.
-            proj[x] = T[i2] * Rm[i1][j] - T[i1] * Rm[i2][j];
-            dReal radii = a[i1] * Q[i2][j] + a[i2] * Q[i1][j] + b[j1] * Q[i][j2] + b[j2] * Q[i][j1];
-            over[x] = radii - dFabs(proj[x]);
-            if (over[x] < -BOX_AXIS_SLACK * (a[i1] + a[i2] + b[j1] + b[j2])) return 0;
+            int x = 6 + 3 * i + j;
+            over[x] = edge_overlap(i, j, a, b, T, Rm, Q, &proj[x]);
+            if (over[x] < edge_slack(i, j, a, b)) return apart_by(x, apart);
         }
     }
 
@@ -385,7 +483,7 @@ static int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const dRea
         dReal len2 = Rm[i1][j] * Rm[i1][j] + Rm[i2][j] * Rm[i2][j];
         if (len2 <= DX_COLLIDE_EPS) continue;   // parallel edges: the faces cover them
         dReal len = dSqrt(len2), o = over[x] / len;
-        if (o < 0) return 0;   // apart after all, along a well-defined edge axis
+        if (o < 0) return apart_by(x, apart);   // apart after all, along a well-defined edge axis
         if (o < best_edge) {
             best_edge = o;
             edge = x;
@@ -398,28 +496,28 @@ static int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const dRea
         code = edge;
     }
     int max = dx_max_contacts(flags);
-    dReal normal[3], nf[3], nl[3];
+    dReal normal[3], nf[3];
     if (code < 3) {   // face of box 1: normal -sign(T_i) A_i
         dReal sg = proj[code] < 0 ? 1 : -1;
         for (int q = 0; q < 3; q++) {
             normal[q] = sg * R1[4 * q + code];
             nf[q] = -normal[q];
         }
-        dx_to_local(R1, normal, nl);
-        dReal clear = box_clearance(nl, Rm, over, proj);
+        box_axes ax = { .Rm = Rm, .over = over, .proj = proj };
+        dx_to_local(R1, normal, ax.nl);
         report_axis(normal, best, code, normal_out, depth_out, code_out);
-        return box_face_contacts(p1, R1, a, code, nf, p2, R2, b, normal, clear, o1, o2, max, out,
-                                 skip);
+        return box_face_contacts(p1, R1, a, code, nf, p2, R2, b, normal, &ax, code, o1, o2, max,
+                                 out, skip);
     }
     if (code < 6) {   // face of box 2
         int j = code - 3;
         dReal sg = proj[code] < 0 ? 1 : -1;
         for (int q = 0; q < 3; q++) normal[q] = nf[q] = sg * R2[4 * q + j];
-        dx_to_local(R1, normal, nl);
-        dReal clear = box_clearance(nl, Rm, over, proj);
+        box_axes ax = { .Rm = Rm, .over = over, .proj = proj };
+        dx_to_local(R1, normal, ax.nl);
         report_axis(normal, best, code, normal_out, depth_out, code_out);
-        return box_face_contacts(p2, R2, b, j, nf, p1, R1, a, normal, clear, o1, o2, max, out,
-                                 skip);
+        return box_face_contacts(p2, R2, b, j, nf, p1, R1, a, normal, &ax, code, o1, o2, max,
+                                 out, skip);
     }
     int i = (code - 6) / 3, j = (code - 6) % 3;
     dReal Ai[3], Bj[3];
@@ -436,12 +534,33 @@ static int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const dRea
     return 1;
 }
 
+// Box 1's remembered axis against the geom other, or NULL.
+static dxBoxAxisHint *find_hint(dxBox *box, const void *other)
+{
+    for (int k = 0; k < DX_BOX_AXIS_CACHE; k++)
+        if (box->hints[k].other == other) return &box->hints[k];
+    return NULL;
+}
+
+// Box-box of two geoms: box 1 remembers the axis that parted it from o2
+// (see dxBoxAxisHint) and tries it first; the result never depends on it.
 int dxCollideBoxBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)
 {
+    dxBox *b1 = (dxBox *)o1;
+    dxBoxAxisHint *e = find_hint(b1, o2);
     dReal normal[3], depth;
-    int code;
-    return box_box(o1->pos, o1->R, ((dxBox *)o1)->side, o2->pos, o2->R, ((dxBox *)o2)->side, o1,
-                   o2, flags, out, skip, normal, &depth, &code);
+    int code, apart = -1;
+    int n = box_box(o1->pos, o1->R, b1->side, o2->pos, o2->R, ((dxBox *)o2)->side, o1, o2, flags,
+                    out, skip, e ? e->axis : -1, &apart, normal, &depth, &code);
+    if (apart >= 0 && !(e && e->axis == apart)) {
+        if (!e) {
+            e = &b1->hints[b1->next_hint];
+            b1->next_hint = (b1->next_hint + 1) % DX_BOX_AXIS_CACHE;
+            e->other = o2;
+        }
+        e->axis = apart;
+    }
+    return n;
 }
 
 // ODE 0.16's public box-box test. As there, normal is the direction from box
@@ -459,8 +578,9 @@ int dBoxBox(const dVector3 p1, const dMatrix3 R1, const dVector3 side1, const dV
                  "skip %d is smaller than sizeof(dContactGeom)", skip);
     dReal n[3] = { 0, 0, 0 }, d = 0;
     int code = -1;
-    int count = box_box(p1, R1, side1, p2, R2, side2, NULL, NULL, flags, contact, skip, n, &d,
-                        &code);
+    int apart;
+    int count = box_box(p1, R1, side1, p2, R2, side2, NULL, NULL, flags, contact, skip, -1,
+                        &apart, n, &d, &code);
     *return_code = count > 0 ? code + 1 : 0;
     *depth = count > 0 ? d : 0;
     for (int q = 0; q < 3; q++) normal[q] = -n[q];
