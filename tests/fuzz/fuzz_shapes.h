@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// fuzz_shapes.h -- a geom of any class made from input bytes: its sizes, pose
+// and flags, a small random (valid-index) mesh, hull or heightfield. The data
+// objects live in an fz_shapes store, freed with it after the geoms.
+
+#ifndef FUZZ_SHAPES_H
+#define FUZZ_SHAPES_H
+
+#include "fuzz_input.h"
+
+#define FZ_MAX_DATA 16
+
+typedef struct fz_shapes {
+    dTriMeshDataID meshes[FZ_MAX_DATA];
+    dHeightfieldDataID fields[FZ_MAX_DATA];
+    void *buffers[4 * FZ_MAX_DATA];   // vertex, index, plane, point, polygon arrays
+    int nmeshes, nfields, nbuffers;
+} fz_shapes;
+
+// A new geom in space (0: none) of a class the input picks, posed by it when
+// placeable; a transform wraps a geom of another class. NULL when the library
+// refused the input (reported) or the store is full.
+dGeomID fz_make_geom(fz_input *in, dSpaceID space, fz_shapes *store);
+// Pose g from the input (position and rotation; a plane or a non-placeable
+// geom is left alone).
+void fz_pose_geom(fz_input *in, dGeomID g);
+// Free the data objects (after every geom using them is destroyed).
+void fz_shapes_free(fz_shapes *store);
+
+#endif
