@@ -75,6 +75,13 @@ static dGeomID make_convex(fz_input *in, dSpaceID space, fz_shapes *s)
     return dCreateConvex(space, planes, 6, points, 8, polys);
 }
 
+// A heightfield side: a special value, or at least 0.5.
+static dReal fz_field_size(fz_input *in)
+{
+    dReal v = fz_size(in, 8);
+    return isfinite(v) && v > 0 && v < (dReal)0.5 ? (dReal)0.5 : v;
+}
+
 // A heightfield of 2..7 samples a side, heights from the input.
 static dGeomID make_heightfield(fz_input *in, dSpaceID space, fz_shapes *s)
 {
@@ -84,7 +91,10 @@ static dGeomID make_heightfield(fz_input *in, dSpaceID space, fz_shapes *s)
     for (int i = 0; i < nw * nd; i++) heights[i] = (double)fz_real(in, 2);
     dHeightfieldDataID d = dGeomHeightfieldDataCreate();
     s->fields[s->nfields++] = d;
-    dReal width = fz_size(in, 8), depth = fz_size(in, 8);
+    // sides of at least 0.5 m: smaller cells let a few-metre geom cover nearly
+    // the collider's cap of 2^20 cells, whose contacts take minutes to merge
+    // (tests/fuzz/known)
+    dReal width = fz_field_size(in), depth = fz_field_size(in);
     dReal scale = fz_real(in, 2), offset = fz_real(in, 2), thickness = fz_size(in, 2);
     dGeomHeightfieldDataBuildDouble(d, heights, 1, width, depth, nw, nd, scale, offset,
                                     thickness, fz_u8(in) & 1);

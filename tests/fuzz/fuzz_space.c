@@ -135,7 +135,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     memset(&w, 0, sizeof w);
     w.in = &in;
     fz_shapes store = {0};
-    w.spaces[w.nspaces++] = make_space(&in, 0);
+    // a refused space (a bad axis order, reported) leaves a simple one
+    w.spaces[0] = make_space(&in, 0);
+    if (!w.spaces[0]) w.spaces[0] = dSimpleSpaceCreate(0);
+    w.nspaces = 1;
     for (int op = 0; op < 256 && in.left > 0; op++) {
         dSpaceID s = w.spaces[fz_pick(&in, (unsigned)w.nspaces)];
         unsigned k = fz_pick(&in, MAX_GEOMS);
@@ -182,8 +185,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         default:
             if (w.nspaces < MAX_SPACES) {
                 dSpaceID sub = make_space(&in, s);
-                dSpaceSetCleanup(sub, 1);
-                w.spaces[w.nspaces++] = sub;
+                if (sub) {
+                    dSpaceSetCleanup(sub, 1);
+                    w.spaces[w.nspaces++] = sub;
+                }
             }
             break;
         }
