@@ -55,6 +55,31 @@ static dGeomID named(dGeomID o)
     return o;
 }
 
+int fz_lenient;
+
+int fz_hull_consistent(const dReal *planes, unsigned planecount, const dReal *points,
+                       unsigned pointcount)
+{
+#ifdef dSINGLE
+    const double tol = 1e-3;
+#else
+    const double tol = 1e-7;
+#endif
+    for (unsigned f = 0; f < planecount; f++) {
+        const dReal *n = planes + 4 * f;
+        double len = sqrt((double)(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
+        if (!(fabs(len - 1) <= tol)) return 0;
+        for (unsigned i = 0; i < pointcount; i++) {
+            const dReal *p = points + 3 * i;
+            double out = (double)(n[0] * p[0] + n[1] * p[1] + n[2] * p[2]) - (double)n[3];
+            double scale = 1 + fabs((double)n[3]) + fabs((double)p[0]) + fabs((double)p[1]) +
+                           fabs((double)p[2]);
+            if (!(out <= tol * scale)) return 0;
+        }
+    }
+    return 1;
+}
+
 void fz_check_contacts(dGeomID o1, dGeomID o2, int flags, const dContactGeom *c,
                        int skip, int n)
 {
@@ -64,6 +89,11 @@ void fz_check_contacts(dGeomID o1, dGeomID o2, int flags, const dContactGeom *c,
                 dGeomGetClass(o2), n, asked);
     for (int i = 0; i < n; i++) {
         const dContactGeom *k = (const dContactGeom *)((const char *)c + (size_t)i * (size_t)skip);
+        if (k->g1 != named(o1) || k->g2 != named(o2))
+            fz_fail("classes %d, %d: contact %d names geoms %p, %p, not %p, %p",
+                    dGeomGetClass(o1), dGeomGetClass(o2), i, (void *)k->g1,
+                    (void *)k->g2, (void *)named(o1), (void *)named(o2));
+        if (fz_lenient) continue;
         double len = sqrt((double)(k->normal[0] * k->normal[0] + k->normal[1] * k->normal[1] +
                                    k->normal[2] * k->normal[2]));
         int finite = isfinite(k->pos[0]) && isfinite(k->pos[1]) && isfinite(k->pos[2]);
@@ -78,9 +108,5 @@ void fz_check_contacts(dGeomID o1, dGeomID o2, int flags, const dContactGeom *c,
                     (double)k->pos[0], (double)k->pos[1], (double)k->pos[2],
                     (double)k->normal[0], (double)k->normal[1], (double)k->normal[2],
                     (double)k->depth);
-        if (k->g1 != named(o1) || k->g2 != named(o2))
-            fz_fail("classes %d, %d: contact %d names geoms %p, %p, not %p, %p",
-                    dGeomGetClass(o1), dGeomGetClass(o2), i, (void *)k->g1,
-                    (void *)k->g2, (void *)named(o1), (void *)named(o2));
     }
 }

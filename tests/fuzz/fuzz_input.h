@@ -101,6 +101,14 @@ void fz_install_handlers(void);
 // A property broken: print it and abort (the fuzzer keeps the input).
 void fz_fail(const char *fmt, ...);
 
+// 1 if a hull's data keeps the documented contract: unit plane normals and
+// every point on or behind every plane (within rounding). Colliders may give
+// any contacts for a hull that breaks it: only the count and g1/g2 are then
+// checked (fz_lenient).
+int fz_hull_consistent(const dReal *planes, unsigned planecount, const dReal *points,
+                       unsigned pointcount);
+extern int fz_lenient;
+
 // Check n contacts of dCollide(o1, o2, flags, c, skip): at most the count
 // asked for, finite positions, unit normals, non-negative finite depths, and
 // g1/g2 naming the pair (a transform whose info is 0 names its geom).

@@ -72,14 +72,16 @@ static dGeomID make_convex(fz_input *in, dSpaceID space, fz_shapes *s)
         polys[5 * f] = 4;
         for (int k = 0; k < 4; k++) polys[5 * f + 1 + k] = faces[f][k];
     }
+    // a geom of an inconsistent hull makes every collision lenient
+    if (!fz_hull_consistent(planes, 6, points, 8)) fz_lenient = 1;
     return dCreateConvex(space, planes, 6, points, 8, polys);
 }
 
-// A heightfield side: a special value, or at least 0.5.
+// A heightfield side: a special value, or at least 2.
 static dReal fz_field_size(fz_input *in)
 {
     dReal v = fz_size(in, 8);
-    return isfinite(v) && v > 0 && v < (dReal)0.5 ? (dReal)0.5 : v;
+    return isfinite(v) && v > 0 && v < 2 ? 2 : v;
 }
 
 // A heightfield of 2..7 samples a side, heights from the input.
@@ -91,9 +93,9 @@ static dGeomID make_heightfield(fz_input *in, dSpaceID space, fz_shapes *s)
     for (int i = 0; i < nw * nd; i++) heights[i] = (double)fz_real(in, 2);
     dHeightfieldDataID d = dGeomHeightfieldDataCreate();
     s->fields[s->nfields++] = d;
-    // sides of at least 0.5 m: smaller cells let a few-metre geom cover nearly
-    // the collider's cap of 2^20 cells, whose contacts take minutes to merge
-    // (tests/fuzz/known)
+    // sides of at least 2 m (cells of 0.33 m or more): smaller cells let a
+    // few-metre geom or mesh cover thousands of cells, whose contacts take
+    // minutes to merge (tests/fuzz/known)
     dReal width = fz_field_size(in), depth = fz_field_size(in);
     dReal scale = fz_real(in, 2), offset = fz_real(in, 2), thickness = fz_size(in, 2);
     dGeomHeightfieldDataBuildDouble(d, heights, 1, width, depth, nw, nd, scale, offset,
@@ -157,6 +159,7 @@ dGeomID fz_make_geom(fz_input *in, dSpaceID space, fz_shapes *s)
 
 void fz_shapes_free(fz_shapes *s)
 {
+    fz_lenient = 0;
     for (int i = 0; i < s->nmeshes; i++) dGeomTriMeshDataDestroy(s->meshes[i]);
     for (int i = 0; i < s->nfields; i++) dGeomHeightfieldDataDestroy(s->fields[i]);
     for (int i = 0; i < s->nbuffers; i++) free(s->buffers[i]);
