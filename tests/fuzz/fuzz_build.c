@@ -25,14 +25,20 @@ static void *buffer(size_t bytes)
     return p;
 }
 
-// Collide g with a geom of each basic class posed from the input.
-static void collide_probes(fz_input *in, dGeomID g)
+// Collide g with a geom of each basic class posed from the input (a pair of
+// a heightfield of cells of side `cell` and a probe covering too many of them
+// is left out: fz_field_pair_cheap).
+static void collide_probes(fz_input *in, dGeomID g, dReal cell)
 {
     dGeomID probes[4] = {dCreateSphere(0, fz_size(in, 2)), dCreateBox(0, 1, 2, (dReal)0.5),
                          dCreateCapsule(0, (dReal)0.5, 1), dCreateRay(0, fz_size(in, 8))};
     for (int i = 0; i < 4; i++) {
         if (!probes[i]) continue;
         fz_pose_geom(in, probes[i]);
+        if (dGeomGetClass(g) == dHeightfieldClass && !fz_field_pair_cheap(cell, probes[i])) {
+            dGeomDestroy(probes[i]);
+            continue;
+        }
         dContactGeom c[32];
         int flags = 1 + (int)fz_pick(in, 32);
         int n = dCollide(g, probes[i], flags, c, sizeof c[0]);
@@ -106,10 +112,10 @@ static void fuzz_trimesh(fz_input *in)
         if (nt < 0 || (nt > 0 && nt != icount / 3)) fz_fail("triangle count %d for %d indices", nt, icount);
         dVector3 a, b, c;
         dGeomTriMeshGetTriangle(g, (int)fz_pick(in, 64) - 8, &a, &b, &c);
-        collide_probes(in, g);
+        collide_probes(in, g, 0);
         if (fz_u8(in) & 1) {
             dGeomTriMeshDataUpdate(d);
-            collide_probes(in, g);
+            collide_probes(in, g, 0);
         }
         dGeomDestroy(g);
     }
@@ -144,14 +150,7 @@ static void fuzz_heightfield(fz_input *in)
         }
     }
     seed = fz_u16(in);
-    // a side of a cell under 0.1 m is left out: a probe then covers up to the
-    // collider's cap of 2^20 cells, whose contacts take minutes to merge
-    // (tests/fuzz/known)
     dReal width = fz_real(in, 16), depth = fz_real(in, 16);
-    if (isfinite(width) && width > 0 && width < (dReal)0.1 * (dReal)(nw > 1 ? nw - 1 : 1))
-        width = (dReal)0.1 * (dReal)(nw > 1 ? nw - 1 : 1);
-    if (isfinite(depth) && depth > 0 && depth < (dReal)0.1 * (dReal)(nd > 1 ? nd - 1 : 1))
-        depth = (dReal)0.1 * (dReal)(nd > 1 ? nd - 1 : 1);
     dReal scale = fz_real(in, 2), offset = fz_real(in, 4), thickness = fz_real(in, 2);
     int copy = fz_u8(in) & 1, wrap = fz_u8(in) & 1;
     dHeightfieldDataID d = dGeomHeightfieldDataCreate();
@@ -166,7 +165,8 @@ static void fuzz_heightfield(fz_input *in)
     dGeomID g = dCreateHeightfield(0, d, fz_u8(in) & 1);
     if (g) {
         fz_pose_geom(in, g);
-        collide_probes(in, g);
+        collide_probes(in, g, dMin(width / (dReal)(nw > 1 ? nw - 1 : 1),
+                                   depth / (dReal)(nd > 1 ? nd - 1 : 1)));
         dGeomDestroy(g);
     }
     dGeomHeightfieldDataDestroy(d);
@@ -199,7 +199,7 @@ static void fuzz_convex(fz_input *in)
     if (g) {
         fz_lenient = !fz_hull_consistent(planes, np, points, nv);
         fz_pose_geom(in, g);
-        collide_probes(in, g);
+        collide_probes(in, g, 0);
         dGeomDestroy(g);
         fz_lenient = 0;
     }

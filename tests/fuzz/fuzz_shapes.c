@@ -77,13 +77,6 @@ static dGeomID make_convex(fz_input *in, dSpaceID space, fz_shapes *s)
     return dCreateConvex(space, planes, 6, points, 8, polys);
 }
 
-// A heightfield side: a special value, or at least 2.
-static dReal fz_field_size(fz_input *in)
-{
-    dReal v = fz_size(in, 8);
-    return isfinite(v) && v > 0 && v < 2 ? 2 : v;
-}
-
 // A heightfield of 2..7 samples a side, heights from the input.
 static dGeomID make_heightfield(fz_input *in, dSpaceID space, fz_shapes *s)
 {
@@ -93,13 +86,11 @@ static dGeomID make_heightfield(fz_input *in, dSpaceID space, fz_shapes *s)
     for (int i = 0; i < nw * nd; i++) heights[i] = (double)fz_real(in, 2);
     dHeightfieldDataID d = dGeomHeightfieldDataCreate();
     s->fields[s->nfields++] = d;
-    // sides of at least 2 m (cells of 0.33 m or more): smaller cells let a
-    // few-metre geom or mesh cover thousands of cells, whose contacts take
-    // minutes to merge (tests/fuzz/known)
-    dReal width = fz_field_size(in), depth = fz_field_size(in);
+    dReal width = fz_size(in, 8), depth = fz_size(in, 8);
     dReal scale = fz_real(in, 2), offset = fz_real(in, 2), thickness = fz_size(in, 2);
     dGeomHeightfieldDataBuildDouble(d, heights, 1, width, depth, nw, nd, scale, offset,
                                     thickness, fz_u8(in) & 1);
+    s->field_cell[s->nfields - 1] = dMin(width / (dReal)(nw - 1), depth / (dReal)(nd - 1));
     if (fz_u8(in) < 64) dGeomHeightfieldDataSetBounds(d, fz_real(in, 4), fz_real(in, 4));
     return dCreateHeightfield(space, d, fz_u8(in) & 1);
 }
@@ -155,6 +146,29 @@ dGeomID fz_make_geom(fz_input *in, dSpaceID space, fz_shapes *s)
     }
     if (g) fz_pose_geom(in, g);
     return g;
+}
+
+int fz_field_pair_cheap(dReal cell, dGeomID other)
+{
+    dReal b[6];
+    dGeomGetAABB(other, b);
+    double diag = sqrt((double)((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
+                                (b[5] - b[4]) * (b[5] - b[4])));
+    double side = diag / (double)cell + 2;
+    // NaN (a refused field's cell) or an infinite AABB: leave it to the library
+    return !(side * side > FZ_MAX_FIELD_CELLS) || !isfinite(side);
+}
+
+int fz_pair_cheap(const fz_shapes *s, dGeomID a, dGeomID b)
+{
+    for (int k = 0; k < 2; k++) {
+        dGeomID f = k ? b : a, other = k ? a : b;
+        if (dGeomGetClass(f) != dHeightfieldClass) continue;
+        dHeightfieldDataID d = dGeomHeightfieldGetHeightfieldData(f);
+        for (int i = 0; i < s->nfields; i++)
+            if (s->fields[i] == d && !fz_field_pair_cheap(s->field_cell[i], other)) return 0;
+    }
+    return 1;
 }
 
 void fz_shapes_free(fz_shapes *s)

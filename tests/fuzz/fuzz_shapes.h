@@ -14,6 +14,7 @@
 typedef struct fz_shapes {
     dTriMeshDataID meshes[FZ_MAX_DATA];
     dHeightfieldDataID fields[FZ_MAX_DATA];
+    dReal field_cell[FZ_MAX_DATA];   // the smaller cell side of each field
     void *buffers[4 * FZ_MAX_DATA];   // vertex, index, plane, point, polygon arrays
     int nmeshes, nfields, nbuffers;
 } fz_shapes;
@@ -25,6 +26,14 @@ dGeomID fz_make_geom(fz_input *in, dSpaceID space, fz_shapes *store);
 // Pose g from the input (position and rotation; a plane or a non-placeable
 // geom is left alone).
 void fz_pose_geom(fz_input *in, dGeomID g);
+// 0 if a or b is a heightfield of the store and the other geom's AABB may
+// cover more than FZ_MAX_FIELD_CELLS of its cells: such a pair is not
+// collided (the collider's cost grows with the cells, its contact merge
+// quadratically: tests/fuzz/known).
+#define FZ_MAX_FIELD_CELLS 4096
+int fz_pair_cheap(const fz_shapes *store, dGeomID a, dGeomID b);
+// The same for a field of cells of side `cell` (at least) against other.
+int fz_field_pair_cheap(dReal cell, dGeomID other);
 // Free the data objects (after every geom using them is destroyed).
 void fz_shapes_free(fz_shapes *store);
 
