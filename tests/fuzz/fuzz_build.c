@@ -197,7 +197,7 @@ static void fuzz_convex(fz_input *in)
     }
     dGeomID g = dCreateConvex(0, planes, np, points, nv, polys);
     if (g) {
-        fz_lenient = !fz_hull_consistent(planes, np, points, nv);
+        fz_lenient = !fz_hull_consistent(planes, np, points, nv, polys);
         fz_pose_geom(in, g);
         collide_probes(in, g, 0);
         dGeomDestroy(g);

@@ -57,25 +57,34 @@ static dGeomID named(dGeomID o)
 
 int fz_lenient;
 
+// How far p is outside plane n (n[3] the offset), over the size of the numbers.
+static double plane_excess(const dReal *n, const dReal *p)
+{
+    double out = (double)(n[0] * p[0] + n[1] * p[1] + n[2] * p[2]) - (double)n[3];
+    return out / (1 + fabs((double)n[3]) + fabs((double)p[0]) + fabs((double)p[1]) +
+                  fabs((double)p[2]));
+}
+
 int fz_hull_consistent(const dReal *planes, unsigned planecount, const dReal *points,
-                       unsigned pointcount)
+                       unsigned pointcount, const unsigned *polygons)
 {
 #ifdef dSINGLE
     const double tol = 1e-3;
 #else
     const double tol = 1e-7;
 #endif
+    if (planecount < 4) return 0;
+    const unsigned *poly = polygons;
     for (unsigned f = 0; f < planecount; f++) {
         const dReal *n = planes + 4 * f;
         double len = sqrt((double)(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
         if (!(fabs(len - 1) <= tol)) return 0;
-        for (unsigned i = 0; i < pointcount; i++) {
-            const dReal *p = points + 3 * i;
-            double out = (double)(n[0] * p[0] + n[1] * p[1] + n[2] * p[2]) - (double)n[3];
-            double scale = 1 + fabs((double)n[3]) + fabs((double)p[0]) + fabs((double)p[1]) +
-                           fabs((double)p[2]);
-            if (!(out <= tol * scale)) return 0;
-        }
+        for (unsigned i = 0; i < pointcount; i++)
+            if (!(plane_excess(n, points + 3 * i) <= tol)) return 0;
+        unsigned count = *poly++;
+        for (unsigned k = 0; k < count; k++, poly++)
+            if (*poly >= pointcount || !(fabs(plane_excess(n, points + 3 * *poly)) <= tol))
+                return 0;
     }
     return 1;
 }

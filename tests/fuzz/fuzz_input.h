@@ -101,12 +101,12 @@ void fz_install_handlers(void);
 // A property broken: print it and abort (the fuzzer keeps the input).
 void fz_fail(const char *fmt, ...);
 
-// 1 if a hull's data keeps the documented contract: unit plane normals and
-// every point on or behind every plane (within rounding). Colliders may give
-// any contacts for a hull that breaks it: only the count and g1/g2 are then
-// checked (fz_lenient).
+// 1 if a hull's data describes a closed convex polyhedron: at least 4 planes,
+// unit normals, every point on or behind every plane and every face's points
+// on its plane (within rounding). Colliders may give any contacts for a hull
+// that is not: only the count and g1/g2 are then checked (fz_lenient).
 int fz_hull_consistent(const dReal *planes, unsigned planecount, const dReal *points,
-                       unsigned pointcount);
+                       unsigned pointcount, const unsigned *polygons);
 extern int fz_lenient;
 
 // Check n contacts of dCollide(o1, o2, flags, c, skip): at most the count

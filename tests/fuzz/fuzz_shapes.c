@@ -73,7 +73,7 @@ static dGeomID make_convex(fz_input *in, dSpaceID space, fz_shapes *s)
         for (int k = 0; k < 4; k++) polys[5 * f + 1 + k] = faces[f][k];
     }
     // a geom of an inconsistent hull makes every collision lenient
-    if (!fz_hull_consistent(planes, 6, points, 8)) fz_lenient = 1;
+    if (!fz_hull_consistent(planes, 6, points, 8, polys)) fz_lenient = 1;
     return dCreateConvex(space, planes, 6, points, 8, polys);
 }
 
