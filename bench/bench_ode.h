@@ -228,4 +228,32 @@ static inline void bench_xform(dVector3 out, const dMatrix3 R, const dReal *t, d
         out[i] = (dReal)(R[4 * i] * x + R[4 * i + 1] * y + R[4 * i + 2] * z + (t ? t[i] : 0));
 }
 
+// A square terrain of side 2 half centred on the origin, z = height(x, y):
+// (cells + 1)^2 vertices in *v, 2 cells^2 upward-facing triangles in *tri
+// (both malloc'ed; the caller frees them). Returns 0 when out of memory.
+static inline int bench_grid_terrain(int cells, double half, double (*height)(double, double),
+                                     double (**v)[3], dTriIndex (**tri)[3])
+{
+    const int nv = (cells + 1) * (cells + 1), nt = 2 * cells * cells;
+    *v = (double(*)[3])malloc(sizeof **v * (size_t)nv);
+    *tri = (dTriIndex(*)[3])malloc(sizeof **tri * (size_t)nt);
+    if (!*v || !*tri) return 0;
+    for (int j = 0; j <= cells; j++)
+        for (int i = 0; i <= cells; i++) {
+            double *p = (*v)[j * (cells + 1) + i];
+            p[0] = -half + 2 * half * i / cells;
+            p[1] = -half + 2 * half * j / cells;
+            p[2] = height(p[0], p[1]);
+        }
+    int t = 0;
+    for (int j = 0; j < cells; j++)
+        for (int i = 0; i < cells; i++) {
+            dTriIndex a = (dTriIndex)(j * (cells + 1) + i), b = a + 1;
+            dTriIndex c = a + (dTriIndex)(cells + 1), d = c + 1;
+            (*tri)[t][0] = a, (*tri)[t][1] = b, (*tri)[t][2] = d, t++;
+            (*tri)[t][0] = a, (*tri)[t][1] = d, (*tri)[t][2] = c, t++;
+        }
+    return 1;
+}
+
 #endif

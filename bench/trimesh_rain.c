@@ -42,24 +42,10 @@ int main(int argc, char **argv)
 
     // The terrain: (cells + 1)^2 vertices, 2 cells^2 triangles facing up.
     const int nv = (cells + 1) * (cells + 1), nt = 2 * cells * cells;
-    double(*v)[3] = (double(*)[3])malloc(sizeof *v * (size_t)nv);
-    dTriIndex(*tri)[3] = (dTriIndex(*)[3])malloc(sizeof *tri * (size_t)nt);
-    if (!v || !tri) return 1;
-    for (int j = 0; j <= cells; j++)
-        for (int i = 0; i <= cells; i++) {
-            double *p = v[j * (cells + 1) + i];
-            p[0] = -HALF + 2 * HALF * i / cells;
-            p[1] = -HALF + 2 * HALF * j / cells;
-            p[2] = terrain_height(p[0], p[1]);
-        }
-    int t = 0;
-    for (int j = 0; j < cells; j++)
-        for (int i = 0; i < cells; i++) {
-            dTriIndex a = (dTriIndex)(j * (cells + 1) + i), b = a + 1;
-            dTriIndex c = a + (dTriIndex)(cells + 1), d = c + 1;
-            tri[t][0] = a, tri[t][1] = b, tri[t][2] = d, t++;
-            tri[t][0] = a, tri[t][1] = d, tri[t][2] = c, t++;
-        }
+    double(*v)[3] = NULL;
+    dTriIndex(*tri)[3] = NULL;
+    const int terrain_ok = bench_grid_terrain(cells, HALF, terrain_height, &v, &tri);
+    if (!terrain_ok) return 1;
     dTriMeshDataID data = dGeomTriMeshDataCreate();
     dGeomTriMeshDataBuildDouble(data, v, 3 * sizeof(double), nv, tri, 3 * nt,
                                 3 * sizeof(dTriIndex));
