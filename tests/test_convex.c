@@ -13,6 +13,7 @@
 
 #include "collide_check.h"
 #include "convex_depth.h"
+#include "convex_hulls.h"
 #include "test.h"
 
 #include <math.h>
@@ -25,28 +26,6 @@ enum { MAXC = 16 };
 #define EPS TOL(1e-9, 2e-4)
 
 // ---- hull data --------------------------------------------------------------------
-
-// A box as ODE's convex arrays: corners by bits (x, y, z), faces -x +x -y
-// +y -z +z wound counterclockwise seen from outside.
-typedef struct box_hull {
-    dReal planes[24], points[24];
-    unsigned polygons[30];
-} box_hull;
-
-static void make_box_hull(box_hull *b, dReal lx, dReal ly, dReal lz)
-{
-    const dReal h[3] = { lx / 2, ly / 2, lz / 2 };
-    static const unsigned faces[6][4] = { { 0, 4, 6, 2 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
-                                          { 2, 6, 7, 3 }, { 0, 2, 3, 1 }, { 4, 5, 7, 6 } };
-    for (unsigned v = 0; v < 8; v++)
-        for (int i = 0; i < 3; i++) b->points[3 * v + i] = (v >> i & 1) ? h[i] : -h[i];
-    for (int f = 0; f < 6; f++) {
-        for (int i = 0; i < 3; i++) b->planes[4 * f + i] = i == f / 2 ? (f & 1 ? 1 : -1) : 0;
-        b->planes[4 * f + 3] = h[f / 2];
-        b->polygons[5 * f] = 4;
-        for (int k = 0; k < 4; k++) b->polygons[5 * f + 1 + k] = faces[f][k];
-    }
-}
 
 // ---- poses and comparisons ----------------------------------------------------------
 
@@ -191,9 +170,9 @@ static int random_against(dGeomID other, int max, int deep_only, double tol, int
                           unsigned long long seed, int placeable_other, pair_stats *st)
 {
     rng_state = seed;
-    box_hull bh;
+    test_hull bh;
     dReal s[3] = { (dReal)rnd(0.3, 2), (dReal)rnd(0.3, 2), (dReal)rnd(0.3, 2) };
-    make_box_hull(&bh, s[0], s[1], s[2]);
+    test_hull_box(&bh, s[0], s[1], s[2]);
     dGeomID hull = dCreateConvex(0, bh.planes, 6, bh.points, 8, bh.polygons);
     dGeomID box = dCreateBox(0, s[0], s[1], s[2]);
     CHECK(hull && dGeomGetClass(hull) == dConvexClass);
@@ -285,14 +264,14 @@ static int test_convex_convex_equals_box_box(void)
     rng_state = 61;
     int touching = 0;
     for (int k = 0; k < 600; k++) {
-        box_hull ha, hb;
+        test_hull ha, hb;
         dReal sa[3], sb[3];
         for (int i = 0; i < 3; i++) {
             sa[i] = (dReal)rnd(0.3, 2);
             sb[i] = (dReal)rnd(0.3, 2);
         }
-        make_box_hull(&ha, sa[0], sa[1], sa[2]);
-        make_box_hull(&hb, sb[0], sb[1], sb[2]);
+        test_hull_box(&ha, sa[0], sa[1], sa[2]);
+        test_hull_box(&hb, sb[0], sb[1], sb[2]);
         dGeomID a = dCreateConvex(0, ha.planes, 6, ha.points, 8, ha.polygons);
         dGeomID b = dCreateConvex(0, hb.planes, 6, hb.points, 8, hb.polygons);
         dGeomID ba = dCreateBox(0, sa[0], sa[1], sa[2]), bb = dCreateBox(0, sb[0], sb[1], sb[2]);
@@ -337,8 +316,8 @@ static int test_convex_convex_equals_box_box(void)
 static int test_rays_as_box(void)
 {
     rng_state = 71;
-    box_hull bh;
-    make_box_hull(&bh, 1, (dReal)0.6, (dReal)1.4);
+    test_hull bh;
+    test_hull_box(&bh, 1, (dReal)0.6, (dReal)1.4);
     dGeomID hull = dCreateConvex(0, bh.planes, 6, bh.points, 8, bh.polygons);
     dGeomID box = dCreateBox(0, 1, (dReal)0.6, (dReal)1.4);
     dGeomID ray = dCreateRay(0, 3);
@@ -490,8 +469,8 @@ static int test_octahedron_capsule_plane(void)
 // (a polygon around the axis), all 0.02 deep; lying: its two line ends.
 static int test_cylinder_on_convex(void)
 {
-    box_hull bh;
-    make_box_hull(&bh, 4, 4, 1);
+    test_hull bh;
+    test_hull_box(&bh, 4, 4, 1);
     dGeomID hull = dCreateConvex(0, bh.planes, 6, bh.points, 8, bh.polygons);
     dGeomID cyl = dCreateCylinder(0, (dReal)0.5, 1);
     dGeomSetPosition(cyl, (dReal)0.2, (dReal)0.1, (dReal)0.98);
@@ -602,8 +581,8 @@ static int test_large_prism(void)
 // height after `steps`, and the contact count then.
 static int rest_on_plane(int as_convex, int quick, double *height, int *contacts)
 {
-    static box_hull bh;
-    make_box_hull(&bh, (dReal)0.5, (dReal)0.5, (dReal)0.5);
+    static test_hull bh;
+    test_hull_box(&bh, (dReal)0.5, (dReal)0.5, (dReal)0.5);
     dWorldID w = dWorldCreate();
     dSpaceID space = dSimpleSpaceCreate(0);
     dJointGroupID group = dJointGroupCreate(0);
@@ -662,8 +641,8 @@ static int test_resting_on_plane(void)
 // A convex cube lying on a larger box: the face polygon (its 4 corners).
 static int test_cube_on_box_polygon(void)
 {
-    box_hull bh;
-    make_box_hull(&bh, 1, 1, 1);
+    test_hull bh;
+    test_hull_box(&bh, 1, 1, 1);
     dGeomID hull = dCreateConvex(0, bh.planes, 6, bh.points, 8, bh.polygons);
     dGeomID box = dCreateBox(0, 4, 4, 1);
     dGeomSetPosition(hull, (dReal)0.3, (dReal)-0.2, (dReal)0.99);
@@ -712,8 +691,8 @@ static void pose_other(dGeomID g, int k)
 // exactly the contacts that fresh geoms at the same poses get.
 static int test_remembered_axis_never_hides_contacts(void)
 {
-    box_hull bh;
-    make_box_hull(&bh, (dReal)0.6, (dReal)0.4, (dReal)0.3);
+    test_hull bh;
+    test_hull_box(&bh, (dReal)0.6, (dReal)0.4, (dReal)0.3);
     prism pr;
     dGeomID walker = dCreateConvex(0, bh.planes, 6, bh.points, 8, bh.polygons);
     dGeomID others[12];
@@ -833,8 +812,8 @@ static int reported(const char *fn, const char *what)
 
 static int test_bad_input(void)
 {
-    box_hull bh;
-    make_box_hull(&bh, 1, 1, 1);
+    test_hull bh;
+    test_hull_box(&bh, 1, 1, 1);
     dSetDebugHandler(record);
     errors = 0;
     CHECK(dCreateConvex(0, NULL, 6, bh.points, 8, bh.polygons) == NULL);
@@ -847,7 +826,7 @@ static int test_bad_input(void)
     CHECK(reported("dCreateConvex", "pointcount"));
     CHECK(dCreateConvex(0, bh.planes, 6, bh.points, 8, NULL) == NULL);
     CHECK(reported("dCreateConvex", "polygons"));
-    box_hull bad = bh;
+    test_hull bad = bh;
     bad.points[5] = (dReal)NAN;
     CHECK(dCreateConvex(0, bad.planes, 6, bad.points, 8, bad.polygons) == NULL);
     CHECK(reported("dCreateConvex", "points[5]"));
@@ -873,8 +852,8 @@ static int test_bad_input(void)
     CHECK(dCollide(g, s, 4, c, sizeof c[0]) == 1);
     CHECK_NEAR(c[0].depth, 0.3, EPS);
     // dGeomSetConvex takes new data (not copied): a taller box.
-    box_hull tall;
-    make_box_hull(&tall, 1, 1, 3);
+    test_hull tall;
+    test_hull_box(&tall, 1, 1, 3);
     dGeomSetConvex(g, tall.planes, 6, tall.points, 8, tall.polygons);
     dGeomSetPosition(s, 0, 0, (dReal)2.2);
     CHECK(dCollide(g, s, 4, c, sizeof c[0]) == 1);

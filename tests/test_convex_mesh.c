@@ -14,6 +14,7 @@
 // equal those on a trimesh of the same surface.
 
 #include "collide_check.h"
+#include "convex_hulls.h"
 #include "test.h"
 #include "test_trimesh_meshes.h"
 
@@ -31,66 +32,14 @@ enum { MAXC = 64 };
 // faces do (collide_trimesh_convex.c), so that both give their raw contacts
 // in the same order: the reduction to a manifold is sensitive to the order
 // of nearly collinear points.
-typedef struct hull {
-    dReal planes[4 * 8], points[3 * 12];
-    unsigned polygons[2 * 7 + 6 * 5];
-    unsigned nplanes, npoints;
-} hull;
-
-static void make_box_hull(hull *b, dReal lx, dReal ly, dReal lz)
+static void make_box_hull(test_hull *b, dReal lx, dReal ly, dReal lz)
 {
-    const dReal h[3] = { lx / 2, ly / 2, lz / 2 };
     static const unsigned faces[6][4] = { { 0, 2, 6, 4 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
                                           { 2, 3, 7, 6 }, { 0, 1, 3, 2 }, { 4, 5, 7, 6 } };
-    for (unsigned v = 0; v < 8; v++)
-        for (int i = 0; i < 3; i++) b->points[3 * v + i] = (v >> i & 1) ? h[i] : -h[i];
-    for (int f = 0; f < 6; f++) {
-        for (int i = 0; i < 3; i++) b->planes[4 * f + i] = i == f / 2 ? (f & 1 ? 1 : -1) : 0;
-        b->planes[4 * f + 3] = h[f / 2];
-        b->polygons[5 * f] = 4;
-        for (int k = 0; k < 4; k++) b->polygons[5 * f + 1 + k] = faces[f][k];
-    }
-    b->nplanes = 6;
-    b->npoints = 8;
+    test_hull_box_faces(b, lx, ly, lz, faces);
 }
 
-// A hexagonal prism: corners at radius r about z, half height hh.
-static void make_prism(hull *p, double r, double hh)
-{
-    for (int i = 0; i < 6; i++) {
-        double a = M_PI / 3 * i, b = a + M_PI / 6;
-        for (int top = 0; top < 2; top++) {
-            dReal *q = p->points + 3 * (6 * top + i);
-            q[0] = (dReal)(r * cos(a));
-            q[1] = (dReal)(r * sin(a));
-            q[2] = (dReal)(top ? hh : -hh);
-        }
-        dReal *pl = p->planes + 4 * (2 + i);
-        pl[0] = (dReal)cos(b);
-        pl[1] = (dReal)sin(b);
-        pl[2] = 0;
-        pl[3] = (dReal)(r * cos(M_PI / 6));
-    }
-    const dReal caps[8] = { 0, 0, 1, (dReal)hh, 0, 0, -1, (dReal)hh };
-    memcpy(p->planes, caps, sizeof caps);
-    unsigned *q = p->polygons;
-    *q++ = 6;
-    for (unsigned i = 0; i < 6; i++) *q++ = 6 + i;
-    *q++ = 6;
-    for (int i = 5; i >= 0; i--) *q++ = (unsigned)i;
-    for (unsigned i = 0; i < 6; i++) {
-        unsigned j = (i + 1) % 6;
-        *q++ = 4;
-        *q++ = i;
-        *q++ = j;
-        *q++ = 6 + j;
-        *q++ = 6 + i;
-    }
-    p->nplanes = 8;
-    p->npoints = 12;
-}
-
-static dGeomID create_hull(dSpaceID space, hull *h)
+static dGeomID create_hull(dSpaceID space, test_hull *h)
 {
     return dCreateConvex(space, h->planes, h->nplanes, h->points, h->npoints, h->polygons);
 }
@@ -98,7 +47,7 @@ static dGeomID create_hull(dSpaceID space, hull *h)
 // Signed distance of world point p to the hull geom g of shape h (its
 // planes' largest excess: negative inside; exact inside, a lower bound of
 // the distance outside).
-static double hull_distance(dGeomID g, const hull *h, const dReal p[3])
+static double hull_distance(dGeomID g, const test_hull *h, const dReal p[3])
 {
     dVector3 l;
     dGeomGetPosRelPoint(g, p[0], p[1], p[2], l);
@@ -176,7 +125,7 @@ static int test_convex_box_has_the_box_contacts(void)
     mesh_grid(&meshes[0], 16, 2, wavy);
     mesh_icosphere(&meshes[1], 1.2, 3);
     mesh_box(&meshes[2], 2.0, 1.6, 1.2, 2);
-    hull bh;
+    test_hull bh;
     make_box_hull(&bh, (dReal)0.6, (dReal)0.4, (dReal)0.3);
     dGeomID hull_g = create_hull(0, &bh), box = dCreateBox(0, 0.6, 0.4, 0.3);
     rng_state = 21;
@@ -224,8 +173,8 @@ static int test_hull_in_flat_grid_gets_its_low_vertices(void)
     test_mesh m;
     mesh_grid(&m, 12, 3, NULL);
     dGeomID mesh = dCreateTriMesh(0, m.data, NULL, NULL, NULL);
-    hull pr;
-    make_prism(&pr, 0.3, 0.2);
+    test_hull pr;
+    test_hull_prism(&pr, 0.3, 0.2);
     dGeomID g = create_hull(0, &pr);
     rng_state = 22;
     for (int i = 0; i < 200; i++) {
@@ -352,8 +301,8 @@ static int test_hull_contacts_lie_in_both_solids(void)
     mesh_icosphere(&meshes[1], 1.2, 3);
     mesh_box(&meshes[2], 2.0, 1.6, 1.2, 2);
     const double tess[3] = { 0.3 * 0.25 * 0.25, 1.2 * 0.01, 0 };
-    hull pr;
-    make_prism(&pr, 0.3, 0.2);
+    test_hull pr;
+    test_hull_prism(&pr, 0.3, 0.2);
     dGeomID g = create_hull(0, &pr);
     rng_state = 23;
     for (int s = 0; s < 3; s++) {
@@ -415,7 +364,7 @@ static int test_trimesh_callbacks_are_honoured(void)
     test_mesh m;
     mesh_grid(&m, 12, 3, NULL);
     dGeomID mesh = dCreateTriMesh(0, m.data, NULL, NULL, NULL);
-    hull bh;
+    test_hull bh;
     make_box_hull(&bh, 1, 1, 1);
     dGeomID g = create_hull(0, &bh);
     dGeomSetPosition(g, (dReal)0.1, (dReal)0.2, (dReal)0.49);
@@ -474,7 +423,7 @@ static unsigned char flat_field[97 * 97];
 // `steps` steps of a body (a box of sides s, or a convex hull h) on a
 // floor at z = 0 (a plane, a flat 48 x 48 grid of 0.25 m cells, or a flat
 // heightfield of the same cells); starts at (-4, -2, z), velocity (vx, vy).
-static void run(int floor, hull *h, const dReal *s, dReal z, dReal vx, dReal vy, int steps,
+static void run(int floor, test_hull *h, const dReal *s, dReal z, dReal vx, dReal vy, int steps,
                 path *out)
 {
     world = dWorldCreate();
@@ -525,7 +474,7 @@ static void run(int floor, hull *h, const dReal *s, dReal z, dReal vx, dReal vy,
 static int test_convex_cube_rests_as_a_box(void)
 {
     const dReal s[3] = { (dReal)0.5, (dReal)0.5, (dReal)0.5 };
-    hull bh;
+    test_hull bh;
     make_box_hull(&bh, s[0], s[1], s[2]);
     friction = 1;
     for (int floor = FLOOR_MESH; floor <= FLOOR_FIELD; floor++) {
@@ -544,8 +493,8 @@ static int test_convex_cube_rests_as_a_box(void)
 // normal within 1 degree of vertical, and it ends where it ends on a plane.
 static int test_hull_slides_as_on_plane(void)
 {
-    hull pr;
-    make_prism(&pr, 0.3, 0.15);
+    test_hull pr;
+    test_hull_prism(&pr, 0.3, 0.15);
     const dReal s[3] = { (dReal)0.5, (dReal)0.5, (dReal)0.3 };   // its mass: close enough
     friction = (dReal)0.02;
     path plane;
@@ -620,8 +569,8 @@ static int test_heightfield_matches_a_trimesh(void)
     dGeomSetPosition(mesh, P[0], P[1], P[2]);
     dGeomSetRotation(hf, R);
     dGeomSetRotation(mesh, R);
-    hull pr;
-    make_prism(&pr, 0.3, 0.2);
+    test_hull pr;
+    test_hull_prism(&pr, 0.3, 0.2);
     dGeomID g = create_hull(0, &pr);
     rng_state = 24;
     int touching = 0, differing = 0;
@@ -664,7 +613,7 @@ static int test_hull_buried_in_heightfield_is_pushed_up(void)
     dGeomID f = dCreateHeightfield(0, hd, 1);
     const dMatrix3 R = { 1, 0, 0, 0, 0, 0, -1, 0, 0, 1, 0, 0 };
     dGeomSetRotation(f, R);
-    hull bh;
+    test_hull bh;
     make_box_hull(&bh, (dReal)0.4, (dReal)0.4, (dReal)0.4);
     dGeomID g = create_hull(0, &bh);
     dGeomSetPosition(g, (dReal)0.3, (dReal)0.1, (dReal)-0.5);

@@ -21,32 +21,12 @@
 
 #include "diff_print.h"
 #include "diff_random.h"
+#include "../convex_hulls.h"
 
 #include <math.h>
 #include <stdio.h>
 
 enum { SCENES = 120, MAXC = 16 };
-
-// A box as ODE's convex arrays (faces -x +x -y +y -z +z, counterclockwise
-// seen from outside).
-typedef struct box_hull {
-    dReal planes[24], points[24];
-    unsigned polygons[30];
-} box_hull;
-
-static void make_box_hull(box_hull *b, const dReal s[3])
-{
-    static const unsigned faces[6][4] = { { 0, 4, 6, 2 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
-                                          { 2, 6, 7, 3 }, { 0, 2, 3, 1 }, { 4, 5, 7, 6 } };
-    for (unsigned v = 0; v < 8; v++)
-        for (int i = 0; i < 3; i++) b->points[3 * v + i] = (v >> i & 1 ? 1 : -1) * s[i] / 2;
-    for (int f = 0; f < 6; f++) {
-        for (int i = 0; i < 3; i++) b->planes[4 * f + i] = i == f / 2 ? (f & 1 ? 1 : -1) : 0;
-        b->planes[4 * f + 3] = s[f / 2] / 2;
-        b->polygons[5 * f] = 4;
-        for (int k = 0; k < 4; k++) b->polygons[5 * f + 1 + k] = faces[f][k];
-    }
-}
 
 // Prints the pair's touching flag, deepest depth and its normal.
 static void print_pair(const char *tag, int s, dGeomID a, dGeomID b, double tol_touch,
@@ -72,8 +52,8 @@ int main(void)
     rng_state = 5;
     for (int s = 0; s < SCENES; s++) {
         dReal side[3] = { rnd(0.3, 2), rnd(0.3, 2), rnd(0.3, 2) };
-        box_hull bh;
-        make_box_hull(&bh, side);
+        test_hull bh;
+        test_hull_box(&bh, side[0], side[1], side[2]);
         dGeomID hull = dCreateConvex(0, bh.planes, 6, bh.points, 8, bh.polygons);
         dGeomID box = dCreateBox(0, side[0], side[1], side[2]);
         dMatrix3 R;

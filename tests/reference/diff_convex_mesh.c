@@ -18,70 +18,12 @@
 
 #include "diff_print.h"
 #include "diff_random.h"
+#include "../convex_hulls.h"
 
 #include <math.h>
 #include <string.h>
 
 enum { SCENES = 40 };
-
-typedef struct hull {
-    dReal planes[4 * 8], points[3 * 12];
-    unsigned polygons[2 * 7 + 6 * 5];
-    unsigned nplanes, npoints;
-} hull;
-
-static void make_box(hull *b, double lx, double ly, double lz)
-{
-    const double h[3] = { lx / 2, ly / 2, lz / 2 };
-    static const unsigned faces[6][4] = { { 0, 4, 6, 2 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
-                                          { 2, 6, 7, 3 }, { 0, 2, 3, 1 }, { 4, 5, 7, 6 } };
-    for (unsigned v = 0; v < 8; v++)
-        for (int i = 0; i < 3; i++) b->points[3 * v + i] = (dReal)((v >> i & 1) ? h[i] : -h[i]);
-    for (int f = 0; f < 6; f++) {
-        for (int i = 0; i < 3; i++) b->planes[4 * f + i] = i == f / 2 ? (f & 1 ? 1 : -1) : 0;
-        b->planes[4 * f + 3] = (dReal)h[f / 2];
-        b->polygons[5 * f] = 4;
-        for (int k = 0; k < 4; k++) b->polygons[5 * f + 1 + k] = faces[f][k];
-    }
-    b->nplanes = 6;
-    b->npoints = 8;
-}
-
-// A hexagonal prism: corners at radius r about z, half height hh.
-static void make_prism(hull *p, double r, double hh)
-{
-    for (int i = 0; i < 6; i++) {
-        double a = M_PI / 3 * i, b = a + M_PI / 6;
-        for (int top = 0; top < 2; top++) {
-            dReal *q = p->points + 3 * (6 * top + i);
-            q[0] = (dReal)(r * cos(a));
-            q[1] = (dReal)(r * sin(a));
-            q[2] = (dReal)(top ? hh : -hh);
-        }
-        dReal *pl = p->planes + 4 * (2 + i);
-        pl[0] = (dReal)cos(b);
-        pl[1] = (dReal)sin(b);
-        pl[2] = 0;
-        pl[3] = (dReal)(r * cos(M_PI / 6));
-    }
-    const dReal caps[8] = { 0, 0, 1, (dReal)hh, 0, 0, -1, (dReal)hh };
-    memcpy(p->planes, caps, sizeof caps);
-    unsigned *q = p->polygons;
-    *q++ = 6;
-    for (unsigned i = 0; i < 6; i++) *q++ = 6 + i;
-    *q++ = 6;
-    for (int i = 5; i >= 0; i--) *q++ = (unsigned)i;
-    for (unsigned i = 0; i < 6; i++) {
-        unsigned j = (i + 1) % 6;
-        *q++ = 4;
-        *q++ = i;
-        *q++ = j;
-        *q++ = 6 + j;
-        *q++ = 6 + i;
-    }
-    p->nplanes = 8;
-    p->npoints = 12;
-}
 
 // The deepest contact's depth and normal, and the count.
 static void print_deepest(const char *name, dGeomID a, dGeomID b)
@@ -100,7 +42,7 @@ static void print_deepest(const char *name, dGeomID a, dGeomID b)
 }
 
 // The lowest z of g's points (shape h) in the world.
-static double lowest(dGeomID g, const hull *h)
+static double lowest(dGeomID g, const test_hull *h)
 {
     double low = INFINITY;
     for (unsigned v = 0; v < h->npoints; v++) {
@@ -112,7 +54,7 @@ static double lowest(dGeomID g, const hull *h)
     return low;
 }
 
-static void hulls_on_flat_field(hull *shapes)
+static void hulls_on_flat_field(test_hull *shapes)
 {
     static double flat[33 * 33];
     dHeightfieldDataID d = dGeomHeightfieldDataCreate();
@@ -122,7 +64,7 @@ static void hulls_on_flat_field(hull *shapes)
     dGeomSetRotation(hf, Rf);
     rng_state = 302;
     for (int s = 0; s < 2; s++) {
-        hull *h = &shapes[s];
+        test_hull *h = &shapes[s];
         dGeomID g = dCreateConvex(0, h->planes, h->nplanes, h->points, h->npoints, h->polygons);
         for (int i = 0; i < SCENES; i++) {
             dMatrix3 R;
@@ -143,9 +85,9 @@ static void hulls_on_flat_field(hull *shapes)
 int main(void)
 {
     dInitODE();
-    static hull shapes[2];
-    make_box(&shapes[0], 0.6, 0.4, 0.3);
-    make_prism(&shapes[1], 0.3, 0.2);
+    static test_hull shapes[2];
+    test_hull_box(&shapes[0], 0.6, 0.4, 0.3);
+    test_hull_prism(&shapes[1], 0.3, 0.2);
     hulls_on_flat_field(shapes);
     dCloseODE();
     return 0;
