@@ -73,6 +73,7 @@ static void clear_derived(dxTriMeshData *d)
         dFree(d->neighbour, 3 * n * sizeof(int));
         dFree(d->features, n);
         dFree(d->order, n * sizeof(int));
+        dFree(d->leaf_vertices, 9 * n * sizeof(dReal));
         dFree(d->nodes, (size_t)d->node_count * sizeof(dxTriMeshNode));
         if (d->built_flags) dFree(d->built_flags, n);
         dFree(d->weld, (size_t)d->vertex_count * sizeof(int));
@@ -83,6 +84,8 @@ static void clear_derived(dxTriMeshData *d)
     d->neighbour = NULL;
     d->features = NULL;
     d->order = NULL;
+    d->leaf_vertices = NULL;
+    d->tree_stamp = 0;
     d->nodes = NULL;
     d->built_flags = NULL;
     d->weld = NULL;

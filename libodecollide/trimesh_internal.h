@@ -60,6 +60,10 @@ struct dxTriMeshData {
     int node_count;
     dReal lo[3], hi[3];                   // the exact box of the triangles (with nodes)
     int *order;                           // triangles in leaf order
+    dReal *leaf_vertices;                 // 9 per triangle in leaf order: the
+                                          // vertices of order[j] at 9 j (rays)
+    uint64_t tree_stamp;                  // unique per build and refit; 0: no
+                                          // temporal coherence (a heightfield patch)
     unsigned char *built_flags;           // Preprocess: use flags
     void *face_angles;                    // Preprocess: angles per edge
     size_t face_angles_size;

@@ -5,10 +5,13 @@
 // along the longest side of the centres' box, leaves of at most LEAF
 // triangles; siblings side by side, after their parent), refitted
 // bottom-up when the vertices move (same topology), and walked with a
-// fixed stack to list the triangles near a box.
+// fixed stack to list the triangles near a box. Beside the tree, a copy of
+// the triangles' vertices in leaf order, so that a ray reads contiguous
+// memory (the user's arrays are indexed twice over: triangle, vertex).
 
 #include <math.h>
 #include <ode/memory.h>
+#include <stdatomic.h>
 #include <string.h>
 
 #include "trimesh_internal.h"
@@ -19,6 +22,30 @@ enum { LEAF = 4, STACK = 64 };
 
 void dxTriMeshBuildTree(dxTriMeshData *d);
 void dxTriMeshRefitTree(dxTriMeshData *d);
+
+// The next tree stamp: unique in the process, never 0.
+static uint64_t new_stamp(void)
+{
+    static _Atomic uint64_t next = 1;
+    return atomic_fetch_add(&next, 1);
+}
+
+// (Re)write the leaf-order copy of the vertices from the user's arrays.
+static void copy_leaf_vertices(dxTriMeshData *d)
+{
+    for (int j = 0; j < d->tri_count; j++)
+        dxTriMeshTriangle(d, d->order[j], (dReal(*)[3])(d->leaf_vertices + 9 * j));
+}
+
+// The box of the triangle at leaf position j, from the copy.
+static void leaf_triangle_box(const dxTriMeshData *d, int j, dReal lo[3], dReal hi[3])
+{
+    const dReal *v = d->leaf_vertices + 9 * j;
+    for (int k = 0; k < 3; k++) {
+        lo[k] = dMin(v[k], dMin(v[3 + k], v[6 + k]));
+        hi[k] = dMax(v[k], dMax(v[3 + k], v[6 + k]));
+    }
+}
 
 static void triangle_box(const dxTriMeshData *d, int t, dReal lo[3], dReal hi[3])
 {
@@ -128,6 +155,9 @@ void dxTriMeshBuildTree(dxTriMeshData *d)
                                          (size_t)d->node_count * sizeof(dxTriMeshNode));
     dFree(box, 6 * n * sizeof(dReal));
     dFree(centre, 3 * n * sizeof(dReal));
+    d->leaf_vertices = (dReal *)dAlloc(9 * n * sizeof(dReal));
+    copy_leaf_vertices(d);
+    d->tree_stamp = new_stamp();
 }
 
 void dxTriMeshRefitTree(dxTriMeshData *d)
@@ -135,6 +165,8 @@ void dxTriMeshRefitTree(dxTriMeshData *d)
     // Children come after their parent: going backwards meets them first.
     // The exact boxes are kept beside the nodes' rounded ones while walking.
     if (d->node_count == 0) return;
+    copy_leaf_vertices(d);
+    d->tree_stamp = new_stamp();
     size_t size = (size_t)d->node_count * 6 * sizeof(dReal);
     dReal *exact = (dReal *)dAlloc(size);
     for (int i = d->node_count - 1; i >= 0; i--) {
@@ -147,7 +179,7 @@ void dxTriMeshRefitTree(dxTriMeshData *d)
         if (node->count > 0) {
             for (int j = node->first; j < node->first + node->count; j++) {
                 dReal tlo[3], thi[3];
-                triangle_box(d, d->order[j], tlo, thi);
+                leaf_triangle_box(d, j, tlo, thi);
                 grow(lo, hi, tlo, thi);
             }
         } else {

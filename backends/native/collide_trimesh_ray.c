@@ -16,7 +16,7 @@
 // The ray (start s, unit direction v, mesh frame) against the triangle of
 // vertices tri (Moller-Trumbore): 1 with the distance and the barycentric u (of v1) and
 // v (of v2) if it crosses within [0, len].
-static int ray_triangle(const dReal s[3], const dReal v[3], dReal len, dReal tri[3][3],
+static int ray_triangle(const dReal s[3], const dReal v[3], dReal len, const dReal tri[3][3],
                         int cull, dReal *dist, dReal *bu, dReal *bv)
 {
     const dReal *a = tri[0];
@@ -72,6 +72,20 @@ static int ray_enters(const dReal s[3], const dReal v[3], const dReal inv[3],
     }
     *enter = t0;
     return 1;
+}
+
+// Ask for what a node pushed on the stack will read when popped (its
+// children, or its triangles' vertices) while other nodes are tested.
+static void prefetch_below(const dxTriMeshData *d, int i)
+{
+    const dxTriMeshNode *node = &d->nodes[i];
+    if (node->count == 0) {
+        __builtin_prefetch(&d->nodes[node->first]);
+    } else if (d->leaf_vertices) {
+        const char *p = (const char *)(d->leaf_vertices + 9 * node->first);
+        size_t size = 9 * sizeof(dReal) * (size_t)node->count;
+        for (size_t k = 0; k < size; k += 64) __builtin_prefetch(p + k);
+    }
 }
 
 // Keep the nearest `max` hits in m->raw (a scratch set) sorted by distance (then triangle):
@@ -131,6 +145,8 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
             dReal ea = 0, eb = 0;   // set by ray_enters when it returns 1
             int ha = ray_enters(s, v, inv, &d->nodes[a], limit, &ea);
             int hb = ray_enters(s, v, inv, &d->nodes[b], limit, &eb);
+            if (ha) prefetch_below(d, a);
+            if (hb) prefetch_below(d, b);
             if (ha && hb && ea < eb) {
                 entry[top] = eb;
                 stack[top++] = b;
@@ -143,13 +159,16 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
             continue;
         }
         // Only the vertices are read until a hit (memory traffic is what a
-        // ray costs): the degenerate check, reading the normal, after.
+        // ray costs), from the leaf-order copy (a heightfield's patch has
+        // none: its arrays): the triangle's index and normal, after.
         for (int j = node->first; j < node->first + node->count; j++) {
-            int ti = d->order[j];
-            dReal tv[3][3], dist, bu, bv;
-            dxTriMeshTriangle(d, ti, tv);
+            dReal load[3][3], dist, bu, bv;
+            const dReal(*tv)[3] = (const dReal(*)[3])load;
+            if (d->leaf_vertices) tv = (const dReal(*)[3])(d->leaf_vertices + 9 * j);
+            else dxTriMeshTriangle(d, d->order[j], load);
             if (!ray_triangle(s, v, ray->length, tv, ray->backface_cull, &dist, &bu, &bv))
                 continue;
+            int ti = d->order[j];
             if (dxTriMeshIsDegenerate(d, ti)) continue;
             if (m->ray_callback && !m->ray_callback(o1, o2, ti, bu, bv)) continue;
             if (m->callback && !m->callback(o1, o2, ti)) continue;
