@@ -30,8 +30,9 @@ int main(int argc, char **argv)
     const int cells = (int)bench_arg_int(&args, "cells", 100);
     const int iterations = (int)bench_arg_int(&args, "iterations", 20);
     const bench_stepper stepper = bench_arg_stepper(&args, "quick");
+    const int tc = strcmp(bench_arg_str(&args, "tc", "off"), "on") == 0;
     bench_args_check(&args, "[spheres=N] [boxes=N] [steps=N] [cells=N] "
-                            "[stepper=quick|world|fast] [iterations=N]");
+                            "[stepper=quick|world|fast] [iterations=N] [tc=on|off]");
     const dReal dt = (dReal)(1.0 / 60.0);
 
     dInitODE2(0);
@@ -49,7 +50,11 @@ int main(int argc, char **argv)
     dTriMeshDataID data = dGeomTriMeshDataCreate();
     dGeomTriMeshDataBuildDouble(data, v, 3 * sizeof(double), nv, tri, 3 * nt,
                                 3 * sizeof(dTriIndex));
-    dCreateTriMesh(space, data, NULL, NULL, NULL);
+    dGeomID terrain = dCreateTriMesh(space, data, NULL, NULL, NULL);
+    // tc=on: temporal coherence on for the classes that have it (off by default, as in ODE).
+    dGeomTriMeshEnableTC(terrain, dSphereClass, tc);
+    dGeomTriMeshEnableTC(terrain, dBoxClass, tc);
+    dGeomTriMeshEnableTC(terrain, dCapsuleClass, tc);
 
     const int count = spheres + boxes;
     dBodyID *body = (dBodyID *)malloc(sizeof(dBodyID) * (size_t)count);

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
 // trimesh_geom.c -- the trimesh geom class (guide 10.7.6): creation on a
-// data object, the callbacks, temporal-coherence settings (kept, with no
-// effect on contacts), the last transform, triangles in world coordinates
-// and the bounding box.
+// data object, the callbacks, temporal-coherence settings (used by the
+// native colliders' queries, collide_trimesh_tc.c), the last transform,
+// triangles in world coordinates and the bounding box.
 
 #include <ode/memory.h>
 #include <string.h>
@@ -128,6 +128,7 @@ dGeomID dCreateTriMesh(dSpaceID space, dTriMeshDataID Data, dTriCallback *Callba
     m->array_callback = ArrayCallback;
     m->ray_callback = RayCallback;
     m->sphere_merge = dGeomColliderMergeContactsValue_None;
+    m->tc_id = dxTriMeshNewStamp();
     dxGeomRegisterControl(dTriMeshClass, trimesh_control);
     for (int i = 0; i < 4; i++) m->last_transform[5 * i] = 1;
     attach_data(m, Data);
@@ -175,11 +176,19 @@ CALLBACK_ACCESSORS(TriMergeCallback, dTriTriMergeCallback, merge_callback)
 #define CHECK_TC_CLASS(c, on_fail) \
     DX_CHECK_ARG((c) >= 0 && (c) < 32, on_fail, "geomClass %d is not a geometry class", (c))
 
+// Only spheres, boxes and capsules have a flag (cylinders follow the box's),
+// as in ODE 0.16: other classes are accepted and left off.
+static int has_tc_flag(int geomClass)
+{
+    return geomClass == dSphereClass || geomClass == dBoxClass || geomClass == dCapsuleClass;
+}
+
 void dGeomTriMeshEnableTC(dGeomID g, int geomClass, int enable)
 {
     CHECK_TRIMESH(g, return);
     CHECK_TC_CLASS(geomClass, return);
     dxTriMesh *m = (dxTriMesh *)g;
+    if (!has_tc_flag(geomClass)) return;
     if (enable) m->tc_classes |= 1u << geomClass;
     else m->tc_classes &= ~(1u << geomClass);
 }
@@ -191,10 +200,12 @@ int dGeomTriMeshIsTCEnabled(dGeomID g, int geomClass)
     return (((dxTriMesh *)g)->tc_classes >> geomClass) & 1;
 }
 
-// Nothing is cached between collisions, so there is nothing to clear.
+// The geom's entries in every thread's cache (collide_trimesh_tc.c) are
+// left behind: they carry the old tc_id and are never found again.
 void dGeomTriMeshClearTCCache(dGeomID g)
 {
     CHECK_TRIMESH(g, return);
+    ((dxTriMesh *)g)->tc_id = dxTriMeshNewStamp();
 }
 
 void dGeomTriMeshSetLastTransform(dGeomID g, const dMatrix4 last_trans)

@@ -23,8 +23,7 @@ enum { LEAF = 4, STACK = 64 };
 void dxTriMeshBuildTree(dxTriMeshData *d);
 void dxTriMeshRefitTree(dxTriMeshData *d);
 
-// The next tree stamp: unique in the process, never 0.
-static uint64_t new_stamp(void)
+uint64_t dxTriMeshNewStamp(void)
 {
     static _Atomic uint64_t next = 1;
     return atomic_fetch_add(&next, 1);
@@ -157,7 +156,7 @@ void dxTriMeshBuildTree(dxTriMeshData *d)
     dFree(centre, 3 * n * sizeof(dReal));
     d->leaf_vertices = (dReal *)dAlloc(9 * n * sizeof(dReal));
     copy_leaf_vertices(d);
-    d->tree_stamp = new_stamp();
+    d->tree_stamp = dxTriMeshNewStamp();
 }
 
 void dxTriMeshRefitTree(dxTriMeshData *d)
@@ -166,7 +165,7 @@ void dxTriMeshRefitTree(dxTriMeshData *d)
     // The exact boxes are kept beside the nodes' rounded ones while walking.
     if (d->node_count == 0) return;
     copy_leaf_vertices(d);
-    d->tree_stamp = new_stamp();
+    d->tree_stamp = dxTriMeshNewStamp();
     size_t size = (size_t)d->node_count * 6 * sizeof(dReal);
     dReal *exact = (dReal *)dAlloc(size);
     for (int i = d->node_count - 1; i >= 0; i--) {
@@ -212,7 +211,7 @@ int dxTriMeshQueryBox(const dxTriMeshData *d, const dReal lo[3], const dReal hi[
         const dxTriMeshNode *node = &d->nodes[i];
         if (!overlaps(node, lo, hi)) continue;
         if (node->count > 0) {
-            dxTriMeshReserveInts(out, cap, n + node->count);
+            if (n + node->count > *cap) dxTriMeshReserveInts(out, cap, n + node->count);
             for (int j = 0; j < node->count; j++) (*out)[n++] = d->order[node->first + j];
         } else {   // the first child is walked first
             stack[top++] = node->first + 1;
@@ -220,6 +219,40 @@ int dxTriMeshQueryBox(const dxTriMeshData *d, const dReal lo[3], const dReal hi[
         }
     }
     return n;
+}
+
+int dxTriMeshQueryLeaves(const dxTriMeshData *d, const dReal lo[3], const dReal hi[3], int *leaf,
+                         int max)
+{
+    if (d->node_count == 0) return 0;
+    int stack[STACK], top = 0, n = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        int i = stack[--top];
+        const dxTriMeshNode *node = &d->nodes[i];
+        if (!overlaps(node, lo, hi)) continue;
+        if (node->count > 0) {
+            if (n == max) return -1;
+            leaf[n++] = i;
+        } else {   // the first child is walked first, as in dxTriMeshQueryBox
+            stack[top++] = node->first + 1;
+            stack[top++] = node->first;
+        }
+    }
+    return n;
+}
+
+int dxTriMeshFilterLeaves(const dxTriMeshData *d, const int *leaf, int n, const dReal lo[3],
+                          const dReal hi[3], int **out, int *cap)
+{
+    int count = 0;
+    for (int i = 0; i < n; i++) {
+        const dxTriMeshNode *node = &d->nodes[leaf[i]];
+        if (!overlaps(node, lo, hi)) continue;
+        if (count + node->count > *cap) dxTriMeshReserveInts(out, cap, count + node->count);
+        for (int j = 0; j < node->count; j++) (*out)[count++] = d->order[node->first + j];
+    }
+    return count;
 }
 
 void dxTriMeshDataBounds(const dxTriMeshData *d, dReal lo[3], dReal hi[3])

@@ -321,7 +321,7 @@ int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dxTriTest *test)
     if (!m->data || m->data->tri_count == 0) return 0;
     dReal lo[3], hi[3];
     pose_other(q, lo, hi);
-    int count = dxTriMeshQueryBox(m->data, lo, hi, &s->cand[0], &s->cand_cap[0]);
+    int count = dxTriMeshQueryTC(s, m, other, lo, hi);
     int hits = 0;
     for (int i = 0; i < count; i++) {
         int t = s->cand[0][i];

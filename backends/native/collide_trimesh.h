@@ -30,6 +30,17 @@ dxTriScratch *dxTriScratchAcquire(void);
 void dxTriScratchRelease(dxTriScratch *s);
 // Room for `extra` more contacts in s->raw.
 void dxTriScratchAddRaw(dxTriScratch *s, int extra);
+// The calling thread's temporal-coherence memory: `size` bytes, zeroed when
+// first asked for (always asked for with the same size), freed when the
+// thread exits.
+void *dxTriScratchThreadTC(size_t size);
+
+// The triangles whose leaf boxes overlap [lo, hi] (mesh m's frame) into
+// s->cand[0], exactly as dxTriMeshQueryBox lists them; through the calling
+// thread's temporal-coherence cache for the pair (m, other) if m has it on
+// for other's class (collide_trimesh_tc.c). Returns the count.
+int dxTriMeshQueryTC(dxTriScratch *s, const dxTriMesh *m, const dxGeom *other,
+                     const dReal lo[3], const dReal hi[3]);
 
 // One pair's query, everything in the mesh frame.
 typedef struct dxTriQuery {

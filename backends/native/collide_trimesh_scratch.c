@@ -5,7 +5,9 @@
 // two threads may collide one mesh with different geoms at once. Each
 // thread has a few sets, one per nested collision (a trimesh callback may
 // itself call dCollide); they grow when needed and are reused, so a warm
-// collision allocates nothing. A thread's sets are freed when it exits.
+// collision allocates nothing. The thread's temporal-coherence cache
+// (collide_trimesh_tc.c) lives here too. A thread's memory is freed when it
+// exits.
 
 #include "collide_trimesh.h"
 
@@ -18,6 +20,8 @@ enum { NESTING = 4 };
 typedef struct thread_scratch {
     dxTriScratch set[NESTING];
     int depth;   // sets in use
+    void *tc;    // the temporal-coherence cache (tc_size bytes) or NULL
+    size_t tc_size;
 } thread_scratch;
 
 static _Thread_local thread_scratch *mine;
@@ -35,6 +39,7 @@ static void free_thread_scratch(void *p)
         }
         dFree(s->raw, (size_t)s->raw_cap * sizeof(dxTriMeshRaw));
     }
+    if (t->tc) dFree(t->tc, t->tc_size);
     dFree(t, sizeof *t);
 }
 
@@ -43,7 +48,8 @@ static void make_exit_key(void)
     pthread_key_create(&exit_key, free_thread_scratch);
 }
 
-dxTriScratch *dxTriScratchAcquire(void)
+// The calling thread's scratch, made on first use.
+static thread_scratch *thread_mine(void)
 {
     if (!mine) {
         pthread_once(&exit_key_once, make_exit_key);
@@ -51,6 +57,23 @@ dxTriScratch *dxTriScratchAcquire(void)
         memset(mine, 0, sizeof *mine);
         pthread_setspecific(exit_key, mine);
     }
+    return mine;
+}
+
+void *dxTriScratchThreadTC(size_t size)
+{
+    thread_scratch *t = thread_mine();
+    if (!t->tc) {
+        t->tc = dAlloc(size);
+        memset(t->tc, 0, size);
+        t->tc_size = size;
+    }
+    return t->tc;
+}
+
+dxTriScratch *dxTriScratchAcquire(void)
+{
+    thread_mine();
     DX_CHECK_ARG(mine->depth < NESTING, return NULL,
                  "trimesh collisions nested more than %d deep (dCollide called from a trimesh "
                  "callback): no contacts", NESTING);
