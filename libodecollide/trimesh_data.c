@@ -132,6 +132,38 @@ static int compare_edges(const void *pa, const void *pb)
     return a->tri < b->tri ? -1 : a->tri > b->tri;
 }
 
+// Sort the edges by (lo, hi, tri) as compare_edges orders them: counted
+// into buckets by lo (in their order), then each bucket sorted by insertion
+// (a vertex has a few edges) or, for a vertex shared by many, by qsort. e
+// is the input (n edges), out the result.
+static void sort_edges(const edge_key *e, size_t n, int vertex_count, edge_key *out)
+{
+    size_t *start = (size_t *)dAlloc(((size_t)vertex_count + 1) * sizeof(size_t));
+    memset(start, 0, ((size_t)vertex_count + 1) * sizeof(size_t));
+    for (size_t i = 0; i < n; i++) start[e[i].lo + 1]++;
+    for (int v = 0; v < vertex_count; v++) start[v + 1] += start[v];
+    for (size_t i = 0; i < n; i++) out[start[e[i].lo]++] = e[i];
+    // start[v] is now the end of bucket v.
+    for (int v = 0; v < vertex_count; v++) {
+        size_t lo = v > 0 ? start[v - 1] : 0, count = start[v] - lo;
+        edge_key *b = out + lo;
+        if (count > 32) {
+            qsort(b, count, sizeof *b, compare_edges);
+            continue;
+        }
+        for (size_t i = 1; i < count; i++) {
+            edge_key x = b[i];
+            size_t j = i;
+            while (j > 0 && compare_edges(&b[j - 1], &x) > 0) {
+                b[j] = b[j - 1];
+                j--;
+            }
+            b[j] = x;
+        }
+    }
+    dFree(start, ((size_t)vertex_count + 1) * sizeof(size_t));
+}
+
 typedef struct vertex_key {
     dReal p[3];
     int i;
@@ -208,17 +240,19 @@ static void compute_vertex_adjacency(dxTriMeshData *d, const edge_key *e, size_t
 static void compute_neighbours(dxTriMeshData *d)
 {
     size_t n = 3 * (size_t)d->tri_count;
-    edge_key *e = (edge_key *)dAlloc(n * sizeof *e);
+    edge_key *unsorted = (edge_key *)dAlloc(n * sizeof *unsorted);
     for (int t = 0; t < d->tri_count; t++) {
         int idx[3];
         welded_indices(d, t, idx);
         for (int k = 0; k < 3; k++) {
             int a = idx[k], b = idx[(k + 1) % 3];
-            e[3 * t + k] = (edge_key){ a < b ? a : b, a < b ? b : a, t, k };
+            unsorted[3 * t + k] = (edge_key){ a < b ? a : b, a < b ? b : a, t, k };
             d->neighbour[3 * t + k] = -1;
         }
     }
-    qsort(e, n, sizeof *e, compare_edges);
+    edge_key *e = (edge_key *)dAlloc(n * sizeof *e);
+    sort_edges(unsorted, n, d->vertex_count, e);
+    dFree(unsorted, n * sizeof *unsorted);
     for (size_t i = 0; i < n;) {
         size_t j = i + 1;
         while (j < n && e[j].lo == e[i].lo && e[j].hi == e[i].hi) j++;

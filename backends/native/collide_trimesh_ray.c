@@ -49,49 +49,22 @@ static int ray_triangle(const dReal s[3], const dReal v[3], dReal len, const dRe
     return 1;
 }
 
-// The ray in the mesh frame, set up for box tests: start s, direction v,
-// inv = 1 / v per axis, and which of a node's six floats (lo[3], hi[3]) each
-// axis meets first and last: near[k] = -1 for v[k] = 0 (the ray stays in
-// the slab or misses), -2 if 1 / v[k] is not finite (boxes ordered per box).
-typedef struct ray_slabs {
-    dReal s[3], v[3], inv[3];
-    int near[3], far[3];
-} ray_slabs;
-
-static void ray_slabs_set(ray_slabs *r)
+// Where the ray s + t v (inv: 1 / v per axis, infinite for 0) enters the
+// node's box within [0, limit]: 1 and *enter, or 0 if it misses it.
+static int ray_enters(const dReal s[3], const dReal v[3], const dReal inv[3],
+                      const dxTriMeshNode *node, dReal limit, dReal *enter)
 {
-    for (int k = 0; k < 3; k++) {
-        r->inv[k] = r->v[k] != 0 ? 1 / r->v[k] : 0;
-        r->near[k] = r->v[k] > 0 ? k : 3 + k;
-        r->far[k] = r->v[k] > 0 ? 3 + k : k;
-        if (r->v[k] == 0) r->near[k] = -1;
-        else if (!dxIsFinite(r->inv[k])) r->near[k] = -2;
-    }
-}
-
-// Where the ray enters the node's box within [0, limit]: 1 and *enter, or
-// 0 if it misses it. (With a finite 1 / v, the near side gives the smaller
-// distance, the far side the larger: the values of ordering the two.)
-static int ray_enters(const ray_slabs *r, const dxTriMeshNode *node, dReal limit, dReal *enter)
-{
-    const float *box = node->lo;   // lo[3] then hi[3]
     dReal t0 = 0, t1 = limit;
     for (int k = 0; k < 3; k++) {
-        dReal a, b;
-        if (r->near[k] >= 0) {
-            a = (box[r->near[k]] - r->s[k]) * r->inv[k];
-            b = (box[r->far[k]] - r->s[k]) * r->inv[k];
-        } else if (r->near[k] == -1) {
-            if (r->s[k] < node->lo[k] || r->s[k] > node->hi[k]) return 0;
+        if (v[k] == 0) {
+            if (s[k] < node->lo[k] || s[k] > node->hi[k]) return 0;
             continue;
-        } else {
-            a = (node->lo[k] - r->s[k]) * r->inv[k];
-            b = (node->hi[k] - r->s[k]) * r->inv[k];
-            if (a > b) {
-                dReal t = a;
-                a = b;
-                b = t;
-            }
+        }
+        dReal a = (node->lo[k] - s[k]) * inv[k], b = (node->hi[k] - s[k]) * inv[k];
+        if (a > b) {
+            dReal t = a;
+            a = b;
+            b = t;
         }
         if (a > t0) t0 = a;
         if (b < t1) t1 = b;
@@ -146,12 +119,11 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
     const dxRay *ray = (const dxRay *)o2;
     const dxTriMeshData *d = m->data;
     if (!d || d->node_count == 0) return 0;
-    ray_slabs r;
-    dReal dir[3];
+    dReal s[3], v[3], dir[3], inv[3];
     dx_axis(o2->R, 2, dir);
-    dxTriMeshToLocal(o1, o2->pos, r.s);
-    dxTriMeshDirToLocal(o1, dir, r.v);
-    ray_slabs_set(&r);
+    dxTriMeshToLocal(o1, o2->pos, s);
+    dxTriMeshDirToLocal(o1, dir, v);
+    for (int i = 0; i < 3; i++) inv[i] = v[i] != 0 ? 1 / v[i] : 0;
     int single = ray->closest_hit || ray->first_contact;
     int max = single ? 1 : dx_max_contacts(flags);
     dxTriScratch *h = dxTriScratchAcquire();
@@ -161,7 +133,7 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
     // popped beyond the farthest hit kept, it is skipped untested.
     int stack[64], top = 0;
     dReal entry[64];
-    if (ray_enters(&r, &d->nodes[0], ray->length, &entry[0])) stack[top++] = 0;
+    if (ray_enters(s, v, inv, &d->nodes[0], ray->length, &entry[0])) stack[top++] = 0;
     while (top > 0) {
         top--;
         dReal limit = h->raw_count == max ? h->raw[max - 1].depth : ray->length;
@@ -171,8 +143,8 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
             // Push the farther child first: the nearer is walked first.
             int a = node->first, b = node->first + 1;
             dReal ea = 0, eb = 0;   // set by ray_enters when it returns 1
-            int ha = ray_enters(&r, &d->nodes[a], limit, &ea);
-            int hb = ray_enters(&r, &d->nodes[b], limit, &eb);
+            int ha = ray_enters(s, v, inv, &d->nodes[a], limit, &ea);
+            int hb = ray_enters(s, v, inv, &d->nodes[b], limit, &eb);
             if (ha) prefetch_below(d, a);
             if (hb) prefetch_below(d, b);
             if (ha && hb && ea < eb) {
@@ -194,7 +166,7 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
             const dReal(*tv)[3] = (const dReal(*)[3])load;
             if (d->leaf_vertices) tv = (const dReal(*)[3])(d->leaf_vertices + 9 * j);
             else dxTriMeshTriangle(d, d->order[j], load);
-            if (!ray_triangle(r.s, r.v, ray->length, tv, ray->backface_cull, &dist, &bu, &bv))
+            if (!ray_triangle(s, v, ray->length, tv, ray->backface_cull, &dist, &bu, &bv))
                 continue;
             int ti = d->order[j];
             if (dxTriMeshIsDegenerate(d, ti)) continue;
