@@ -2,6 +2,9 @@
 //
 // diff_trimesh.c -- triangle meshes against the reference ODE 0.16 (OPCODE).
 //
+// Temporal coherence flags: off for every class at creation; after enabling
+// each class only sphere, box and capsule have one; then box off again.
+//
 // Getters: triangle count, triangles and barycentric points in world
 // coordinates of a posed mesh (1e-6: the reference transforms them in
 // float), and dMassSetTrimesh on a closed box mesh at a pose (mass, centre,
@@ -117,6 +120,27 @@ static void getters_and_mass(void)
     dGeomTriMeshDataDestroy(d);
 }
 
+static void print_tc(const char *name, dGeomID g)
+{
+    dReal on[dGeomNumClasses];
+    for (int c = 0; c < dGeomNumClasses; c++) on[c] = dGeomTriMeshIsTCEnabled(g, c);
+    diff_values(name, 0, on, dGeomNumClasses);
+}
+
+static void tc_flags(void)
+{
+    dTriMeshDataID d = build(box_v, 8, box_i, 12);
+    dGeomID g = dCreateTriMesh(0, d, NULL, NULL, NULL);
+    print_tc("trimesh_tc_default", g);
+    for (int c = 0; c < dGeomNumClasses; c++) dGeomTriMeshEnableTC(g, c, 1);
+    print_tc("trimesh_tc_all_enabled", g);
+    dGeomTriMeshEnableTC(g, dBoxClass, 0);
+    dGeomTriMeshClearTCCache(g);
+    print_tc("trimesh_tc_box_off", g);
+    dGeomDestroy(g);
+    dGeomTriMeshDataDestroy(d);
+}
+
 static void primitives_on_floor(void)
 {
     dTriMeshDataID d = build(floor_v, 4, floor_i, 2);
@@ -219,6 +243,7 @@ int main(void)
     make_box();
     make_terrain();
     getters_and_mass();
+    tc_flags();
     primitives_on_floor();
     box_mesh_on_plane();
     rays();
