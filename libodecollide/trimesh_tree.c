@@ -3,9 +3,10 @@
 // trimesh_tree.c -- the box tree of a mesh: built once per data object
 // (top-down, each node's triangles split at the median of their centres
 // along the longest side of the centres' box, leaves of at most LEAF
-// triangles; siblings side by side, after their parent), refitted
-// bottom-up when the vertices move (same topology), and walked with a
-// fixed stack to list the triangles near a box. Beside the tree, a copy of
+// triangles; siblings side by side, after their parent; then the boxes
+// bottom-up), refitted bottom-up when the vertices move (same topology),
+// and walked with a fixed stack to list the triangles near a box (or the
+// leaves, for temporal coherence). Beside the tree, a copy of
 // the triangles' vertices in leaf order, so that a ray reads contiguous
 // memory (the user's arrays are indexed twice over: triangle, vertex).
 
@@ -100,28 +101,23 @@ static void grow(dReal lo[3], dReal hi[3], const dReal blo[3], const dReal bhi[3
     }
 }
 
-// Node i over order[lo, hi) (its slot taken); box holds 6 numbers per
-// triangle (lo, hi). Its children take the next two free slots.
-static void build_node(dxTriMeshData *d, int i, const dReal *centre, const dReal *box, int lo,
-                       int hi)
+// Node i over order[lo, hi) (its slot taken): split at the median of the
+// triangles' centres (3 numbers per triangle) along the longest side of
+// their box. Its children take the next two free slots. The nodes' boxes
+// are set afterwards (fit_boxes).
+static void build_node(dxTriMeshData *d, int i, const dReal *centre, int lo, int hi)
 {
-    dReal blo[3] = { dInfinity, dInfinity, dInfinity };
-    dReal bhi[3] = { -dInfinity, -dInfinity, -dInfinity };
-    dReal clo[3] = { dInfinity, dInfinity, dInfinity };
-    dReal chi[3] = { -dInfinity, -dInfinity, -dInfinity };
-    for (int j = lo; j < hi; j++) {
-        int t = d->order[j];
-        grow(blo, bhi, box + 6 * t, box + 6 * t + 3);
-        grow(clo, chi, centre + 3 * t, centre + 3 * t);
-    }
     dxTriMeshNode *node = &d->nodes[i];
-    dxTriMeshNodeSetBox(node, blo, bhi);
-    if (i == 0)
-        for (int k = 0; k < 3; k++) d->lo[k] = blo[k], d->hi[k] = bhi[k];
     if (hi - lo <= LEAF) {
         node->first = lo;
         node->count = hi - lo;
         return;
+    }
+    dReal clo[3] = { dInfinity, dInfinity, dInfinity };
+    dReal chi[3] = { -dInfinity, -dInfinity, -dInfinity };
+    for (int j = lo; j < hi; j++) {
+        const dReal *c = centre + 3 * d->order[j];
+        grow(clo, chi, c, c);
     }
     int axis = 0;
     for (int k = 1; k < 3; k++)
@@ -131,41 +127,16 @@ static void build_node(dxTriMeshData *d, int i, const dReal *centre, const dReal
     node->count = 0;
     node->first = d->node_count;
     d->node_count += 2;
-    build_node(d, node->first, centre, box, lo, mid);
-    build_node(d, d->nodes[i].first + 1, centre, box, mid, hi);
+    build_node(d, node->first, centre, lo, mid);
+    build_node(d, d->nodes[i].first + 1, centre, mid, hi);
 }
 
-void dxTriMeshBuildTree(dxTriMeshData *d)
+// Every node's box from the leaf-order copy of the vertices, bottom-up
+// (children come after their parent: going backwards meets them first),
+// the exact boxes kept beside the nodes' rounded ones while walking; the
+// root's exact box into the data.
+static void fit_boxes(dxTriMeshData *d)
 {
-    size_t n = (size_t)d->tri_count;
-    d->order = (int *)dAlloc(n * sizeof(int));
-    d->nodes = (dxTriMeshNode *)dAlloc(2 * n * sizeof(dxTriMeshNode));
-    d->node_count = 1;
-    dReal *box = (dReal *)dAlloc(6 * n * sizeof(dReal));
-    dReal *centre = (dReal *)dAlloc(3 * n * sizeof(dReal));
-    for (int t = 0; t < d->tri_count; t++) {
-        d->order[t] = t;
-        triangle_box(d, t, box + 6 * t, box + 6 * t + 3);
-        for (int k = 0; k < 3; k++) centre[3 * t + k] = (box[6 * t + k] + box[6 * t + 3 + k]) / 2;
-    }
-    build_node(d, 0, centre, box, 0, d->tri_count);
-    // Fewer nodes than the 2 n reserved are used (about n / 2): give the rest back.
-    d->nodes = (dxTriMeshNode *)dRealloc(d->nodes, 2 * n * sizeof(dxTriMeshNode),
-                                         (size_t)d->node_count * sizeof(dxTriMeshNode));
-    dFree(box, 6 * n * sizeof(dReal));
-    dFree(centre, 3 * n * sizeof(dReal));
-    d->leaf_vertices = (dReal *)dAlloc(9 * n * sizeof(dReal));
-    copy_leaf_vertices(d);
-    d->tree_stamp = dxTriMeshNewStamp();
-}
-
-void dxTriMeshRefitTree(dxTriMeshData *d)
-{
-    // Children come after their parent: going backwards meets them first.
-    // The exact boxes are kept beside the nodes' rounded ones while walking.
-    if (d->node_count == 0) return;
-    copy_leaf_vertices(d);
-    d->tree_stamp = dxTriMeshNewStamp();
     size_t size = (size_t)d->node_count * 6 * sizeof(dReal);
     dReal *exact = (dReal *)dAlloc(size);
     for (int i = d->node_count - 1; i >= 0; i--) {
@@ -192,6 +163,38 @@ void dxTriMeshRefitTree(dxTriMeshData *d)
         d->hi[k] = exact[3 + k];
     }
     dFree(exact, size);
+}
+
+void dxTriMeshBuildTree(dxTriMeshData *d)
+{
+    size_t n = (size_t)d->tri_count;
+    d->order = (int *)dAlloc(n * sizeof(int));
+    d->nodes = (dxTriMeshNode *)dAlloc(2 * n * sizeof(dxTriMeshNode));
+    d->node_count = 1;
+    dReal *centre = (dReal *)dAlloc(3 * n * sizeof(dReal));
+    for (int t = 0; t < d->tri_count; t++) {
+        d->order[t] = t;
+        dReal lo[3], hi[3];
+        triangle_box(d, t, lo, hi);
+        for (int k = 0; k < 3; k++) centre[3 * t + k] = (lo[k] + hi[k]) / 2;
+    }
+    build_node(d, 0, centre, 0, d->tri_count);
+    dFree(centre, 3 * n * sizeof(dReal));
+    // Fewer nodes than the 2 n reserved are used (about n / 2): give the rest back.
+    d->nodes = (dxTriMeshNode *)dRealloc(d->nodes, 2 * n * sizeof(dxTriMeshNode),
+                                         (size_t)d->node_count * sizeof(dxTriMeshNode));
+    d->leaf_vertices = (dReal *)dAlloc(9 * n * sizeof(dReal));
+    copy_leaf_vertices(d);
+    fit_boxes(d);
+    d->tree_stamp = dxTriMeshNewStamp();
+}
+
+void dxTriMeshRefitTree(dxTriMeshData *d)
+{
+    if (d->node_count == 0) return;
+    copy_leaf_vertices(d);
+    fit_boxes(d);
+    d->tree_stamp = dxTriMeshNewStamp();
 }
 
 static int overlaps(const dxTriMeshNode *node, const dReal lo[3], const dReal hi[3])
