@@ -2,8 +2,9 @@
 //
 // test_nonfinite_rows.c -- a joint whose rows come out not finite (a pose or
 // parameters with no answer) acts with no force for the step, and every
-// stepper says so, instead of spreading NaN to its bodies. A ball joint is
-// given a class whose rows carry a NaN.
+// stepper says so, instead of spreading NaN to its bodies (nor do the
+// position sweeps move them). A ball joint is given a class whose rows carry
+// a NaN or an infinity.
 
 #include "test.h"
 #include "objects_internal.h"
@@ -26,12 +27,13 @@ static void broken_fill_rows(dxJoint *j, dxJointRows *rows)
     }
 }
 
-static int step_with_a_broken_joint(int stepper, int entry)
+static int step_with_a_broken_joint(int stepper, int entry, int position_iterations)
 {
     const dReal h = REAL(0.01);
     test_capture_reports();
     dWorldID w = dWorldCreate();
     dWorldSetGravity(w, 0, 0, REAL(-9.81));
+    dWorldSetPositionIterations(w, position_iterations);
     dBodyID a = dBodyCreate(w), b = dBodyCreate(w);
     dBodySetPosition(b, 0, 0, 1);
     dJointID j = dJointCreateBall(w, 0);
@@ -51,11 +53,15 @@ static int step_with_a_broken_joint(int stepper, int entry)
         else dWorldStepFast1(w, h, 4);
     }
 
-    // Both bodies fell freely: the joint gave no force.
+    // Both bodies fell freely: the joint gave no force (nor correction).
     for (int k = 0; k < 2; k++) {
         const dReal *v = dBodyGetLinearVel(k ? b : a), *w_ = dBodyGetAngularVel(k ? b : a);
+        const dReal *p = dBodyGetPosition(k ? b : a);
         CHECK_VEC(v, 0, 0, -9.81 * h * steps, TOL(1e-12, 1e-5));
         CHECK_VEC(w_, 0, 0, 0, 1e-12);
+        CHECK_NEAR(p[0], 0, 1e-12);
+        CHECK_NEAR(p[1], 0, 1e-12);
+        CHECK(isfinite(p[2]) && p[2] < k);
     }
     CHECK(test_captured_count() == steps);   // once per step
     CHECK(test_captured_contains(stepper == 2 ? "dWorldStepFast1: a broken joint's rows were "
@@ -70,21 +76,22 @@ static int step_with_a_broken_joint(int stepper, int entry)
 static int test_dWorldStep_leaves_out_a_joint_whose_rows_are_not_finite(void)
 {
     for (int entry = 0; entry < 4; entry++)
-        if (step_with_a_broken_joint(0, entry)) return 1;
+        if (step_with_a_broken_joint(0, entry, 0) || step_with_a_broken_joint(0, entry, 3))
+            return 1;
     return 0;
 }
 
 static int test_dWorldQuickStep_leaves_out_a_joint_whose_rows_are_not_finite(void)
 {
     for (int entry = 0; entry < 4; entry++)
-        if (step_with_a_broken_joint(1, entry)) return 1;
+        if (step_with_a_broken_joint(1, entry, 0)) return 1;
     return 0;
 }
 
 static int test_dWorldStepFast1_leaves_out_a_joint_whose_rows_are_not_finite(void)
 {
     for (int entry = 0; entry < 4; entry++)
-        if (step_with_a_broken_joint(2, entry)) return 1;
+        if (step_with_a_broken_joint(2, entry, 0)) return 1;
     return 0;
 }
 
