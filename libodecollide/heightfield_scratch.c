@@ -79,9 +79,12 @@ dxHeightfieldPatch *dxHeightfieldPatchAcquire(void)
         for (int i = 0; i < NESTING; i++) init_patch(&mine->level[i]);
         pthread_setspecific(exit_key, mine);
     }
-    DX_CHECK_ARG(mine->depth < NESTING, return NULL,
-                 "heightfield collisions nested more than %d deep (dCollide called from a "
-                 "height or trimesh callback): no contacts", NESTING);
+    if (mine->depth >= NESTING) {
+        dxReportBadArgument("dCollide", "heightfield collisions nested more than %d deep "
+                            "(dCollide called from a height or trimesh callback): no contacts",
+                            NESTING);
+        return NULL;
+    }
     return &mine->level[mine->depth++];
 }
 

@@ -202,7 +202,7 @@ static int test_a_height_callback_may_collide_heightfields(void)
     n = dCollide(fa, s, 4, outer, sizeof outer[0]);
     CHECK(n == n_alone);
     CHECK(test_captured_count() >= 1);
-    CHECK(test_captured_contains("nested more than 4 deep"));
+    CHECK(test_captured_contains("dCollide: heightfield collisions nested more than 4 deep"));
     test_release_reports();
     outer_field = NULL;
     dGeomDestroy(s);
