@@ -3,8 +3,6 @@
 // heightfield_geom.c -- the heightfield geom class: creation on a data
 // object (placeable or not), changing its data, and the bounding box.
 
-#include <ode/memory.h>
-
 #include "heightfield_internal.h"
 
 void dxHeightfieldDataFree(dxHeightfieldData *d);   // heightfield_data.c
@@ -55,19 +53,7 @@ static void detach_data(dxHeightfield *h)
 
 static void heightfield_destroy(dxGeom *g)
 {
-    dxHeightfield *h = (dxHeightfield *)g;
-    detach_data(h);
-    dxTriMeshData *p = &h->patch;
-    size_t nv = (size_t)h->vertex_cap, nt = (size_t)h->tri_cap;
-    dFree((void *)p->vertices, 3 * nv * sizeof(dReal));
-    dFree(p->weld, nv * sizeof(int));
-    dFree(p->vertex_first, (nv + 1) * sizeof(int));
-    dFree(p->vertex_adj, (size_t)h->adj_cap * sizeof(int));
-    dFree((void *)p->indices, 3 * nt * sizeof(dTriIndex));
-    dFree(p->normal, 3 * nt * sizeof(dReal));
-    dFree(p->neighbour, 3 * nt * sizeof(int));
-    dFree(p->features, nt);
-    dFree(p->order, nt * sizeof(int));
+    detach_data((dxHeightfield *)g);
 }
 
 const dxGeomClassOps dx_heightfield_ops = { dHeightfieldClass, "heightfield", heightfield_aabb,
@@ -87,21 +73,6 @@ dGeomID dCreateHeightfield(dSpaceID space, dHeightfieldDataID data, int bPlaceab
                  return NULL, "data was destroyed");
     dxHeightfield *h = (dxHeightfield *)dxGeomCreate(
         sizeof *h, &dx_heightfield_ops, bPlaceable ? DX_GEOM_PLACEABLE : 0, NULL);
-    // The trimesh the colliders see: the heightfield's pose, the patch as data.
-    dxGeom *s = &h->shadow.g;
-    s->magic = DX_MAGIC_GEOM;
-    s->ops = &dx_trimesh_ops;
-    s->flags = DX_GEOM_PLACEABLE | DX_GEOM_ENABLED;
-    s->pos = h->g.pos;
-    s->R = h->g.R;
-    s->category_bits = s->collide_bits = ~0ul;
-    s->space_index = -1;
-    h->shadow.data = &h->patch;
-    h->patch.magic = DX_MAGIC_TRIMESH_DATA;
-    h->patch.vertex_double = sizeof(dReal) == sizeof(double);
-    h->patch.vertex_stride = 3 * (int)sizeof(dReal);
-    h->patch.tri_stride = 3 * (int)sizeof(dTriIndex);
-    h->patch.nodes = &h->patch_node;
     attach_data(h, data);
     if (space) dSpaceAdd(space, &h->g);
     return &h->g;

@@ -6,14 +6,16 @@
 // <ode/collision_heightfield.h>.
 //
 // The colliders do not have a collider of their own per shape: for each
-// query the cells under the other geom become a small triangle mesh (the
-// geom's `patch`, with a ring of one cell around them so that every tested
-// triangle knows its neighbours), and the trimesh colliders run on it.
+// query the cells under the other geom become a small triangle mesh (a
+// patch, with a ring of one cell around them so that every tested triangle
+// knows its neighbours), and the trimesh colliders run on it.
 
 #ifndef DX_HEIGHTFIELD_INTERNAL_H
 #define DX_HEIGHTFIELD_INTERNAL_H
 
 #include "trimesh_internal.h"
+
+#include <stdatomic.h>
 
 enum {
     DX_MAGIC_HEIGHTFIELD_DATA = 0x48666c44u,   // "HflD"
@@ -41,17 +43,34 @@ struct dxHeightfieldData {
 };
 typedef struct dxHeightfieldData dxHeightfieldData;
 
+// The most cells one query takes: a geom whose box covers more of a field
+// (a geom thousands of cells wide, or a long ray across fine cells) gets no
+// contacts, and the first such query of a heightfield is reported through
+// dMessage. It bounds a query's work and its patch (at most twice as many
+// triangles, about 80 bytes each).
+enum { DX_HEIGHTFIELD_MAX_CELLS = 1 << 16 };
+
 typedef struct dxHeightfield {
     dxGeom g;
     dxHeightfieldData *data;
-    // The cells of one query as a mesh (heightfield frame) and the trimesh
-    // geom the colliders see it through (the heightfield's pose, scratch
-    // arrays that stay allocated between queries).
-    dxTriMesh shadow;
-    dxTriMeshData patch;
-    dxTriMeshNode patch_node;
-    int vertex_cap, tri_cap, adj_cap;
+    atomic_int cap_reported;          // a query over DX_HEIGHTFIELD_MAX_CELLS was reported
 } dxHeightfield;
+
+// The cells of one query as a mesh (heightfield frame) and the trimesh geom
+// the colliders see it through (posed by the collider); the arrays stay
+// allocated between queries (heightfield_scratch.c).
+typedef struct dxHeightfieldPatch {
+    dxTriMesh mesh;
+    dxTriMeshData data;
+    dxTriMeshNode node;
+    int vertex_cap, tri_cap, adj_cap;
+} dxHeightfieldPatch;
+
+// A free patch of the calling thread's (NULL, reported, if heightfield
+// collisions nest too deep through callbacks); give it back with
+// dxHeightfieldPatchRelease (NULL is ignored).
+dxHeightfieldPatch *dxHeightfieldPatchAcquire(void);
+void dxHeightfieldPatchRelease(dxHeightfieldPatch *p);
 
 extern const dxGeomClassOps dx_heightfield_ops;
 
@@ -74,11 +93,12 @@ static inline dReal dxHeightfieldCellDepth(const dxHeightfieldData *d)
     return d->depth / (dReal)(d->depth_samples - 1);
 }
 
-// The patch of cells [x0, x1) x [z0, z1) (sample coordinates, may lie
-// outside the field when it wraps) into h->patch, with a ring of one more
-// cell each way (clamped to the field unless it wraps); only the asked cells'
+// The patch of cells [x0, x1) x [z0, z1) of d (sample coordinates, may lie
+// outside the field when it wraps) into p, with a ring of one more cell each
+// way (clamped to the field unless it wraps); only the asked cells'
 // triangles are listed for testing. Returns 0 if a height is not finite
 // (reported), else 1.
-int dxHeightfieldBuildPatch(dxHeightfield *h, int x0, int x1, int z0, int z1);
+int dxHeightfieldBuildPatch(const dxHeightfieldData *d, dxHeightfieldPatch *p, int x0, int x1,
+                            int z0, int z1);
 
 #endif

@@ -4,7 +4,8 @@
 // (heightfield_internal.h): vertices, triangles, normals, neighbours, the
 // vertices' neighbours and the feature bits, everything the trimesh
 // colliders read, written directly from the grid (no sorting). The arrays
-// belong to the geom and only grow, so a warm query allocates nothing.
+// belong to the thread's patch (heightfield_scratch.c) and only grow, so a
+// warm query allocates nothing.
 
 #include <ode/memory.h>
 
@@ -18,24 +19,24 @@
 #endif
 
 // Make room for nv vertices and nt triangles (contents not kept).
-static void reserve(dxHeightfield *h, int nv, int nt)
+static void reserve(dxHeightfieldPatch *pt, int nv, int nt)
 {
-    dxTriMeshData *p = &h->patch;
-    if (nv > h->vertex_cap) {
-        size_t o = (size_t)h->vertex_cap, n = (size_t)nv + (size_t)nv / 2;
+    dxTriMeshData *p = &pt->data;
+    if (nv > pt->vertex_cap) {
+        size_t o = (size_t)pt->vertex_cap, n = (size_t)nv + (size_t)nv / 2;
         dFree((void *)p->vertices, 3 * o * sizeof(dReal));
         dFree(p->weld, o * sizeof(int));
         dFree(p->vertex_first, (o + 1) * sizeof(int));
-        dFree(p->vertex_adj, (size_t)h->adj_cap * sizeof(int));
+        dFree(p->vertex_adj, (size_t)pt->adj_cap * sizeof(int));
         p->vertices = dAlloc(3 * n * sizeof(dReal));
         p->weld = (int *)dAlloc(n * sizeof(int));
         p->vertex_first = (int *)dAlloc((n + 1) * sizeof(int));
-        h->adj_cap = 6 * (int)n;
-        p->vertex_adj = (int *)dAlloc((size_t)h->adj_cap * sizeof(int));
-        h->vertex_cap = (int)n;
+        pt->adj_cap = 6 * (int)n;
+        p->vertex_adj = (int *)dAlloc((size_t)pt->adj_cap * sizeof(int));
+        pt->vertex_cap = (int)n;
     }
-    if (nt > h->tri_cap) {
-        size_t o = (size_t)h->tri_cap, n = (size_t)nt + (size_t)nt / 2;
+    if (nt > pt->tri_cap) {
+        size_t o = (size_t)pt->tri_cap, n = (size_t)nt + (size_t)nt / 2;
         dFree((void *)p->indices, 3 * o * sizeof(dTriIndex));
         dFree(p->normal, 3 * o * sizeof(dReal));
         dFree(p->neighbour, 3 * o * sizeof(int));
@@ -46,7 +47,7 @@ static void reserve(dxHeightfield *h, int nv, int nt)
         p->neighbour = (int *)dAlloc(3 * n * sizeof(int));
         p->features = (unsigned char *)dAlloc(n);
         p->order = (int *)dAlloc(n * sizeof(int));
-        h->tri_cap = (int)n;
+        pt->tri_cap = (int)n;
     }
 }
 
@@ -151,9 +152,9 @@ static void adjacency(dxTriMeshData *p, int nvx, int nvz)
     p->vertex_adj_count = n;
 }
 
-int dxHeightfieldBuildPatch(dxHeightfield *h, int x0, int x1, int z0, int z1)
+int dxHeightfieldBuildPatch(const dxHeightfieldData *d, dxHeightfieldPatch *pt, int x0, int x1,
+                            int z0, int z1)
 {
-    const dxHeightfieldData *d = h->data;
     int vx0 = x0 - 1, vx1 = x1 + 1, vz0 = z0 - 1, vz1 = z1 + 1;
     if (!d->wrap) {
         vx0 = vx0 < 0 ? 0 : vx0;
@@ -163,8 +164,8 @@ int dxHeightfieldBuildPatch(dxHeightfield *h, int x0, int x1, int z0, int z1)
     }
     int nvx = vx1 - vx0 + 1, nvz = vz1 - vz0 + 1;
     int nv = nvx * nvz, nt = 2 * (nvx - 1) * (nvz - 1);
-    reserve(h, nv, nt);
-    dxTriMeshData *p = &h->patch;
+    reserve(pt, nv, nt);
+    dxTriMeshData *p = &pt->data;
     p->vertex_count = nv;
     p->tri_count = nt;
     dReal sw = dxHeightfieldCellWidth(d), sd = dxHeightfieldCellDepth(d);

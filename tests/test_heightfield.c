@@ -552,6 +552,75 @@ static int test_wrapped_field_repeats(void)
     return 0;
 }
 
+// A capsule lying along X over cells [x0, x0 + n) of row 0 of a field of
+// 4 m cells (its box 0.5 m inside the cells' ends), its lowest point at y.
+static void lay_capsule(dGeomID capsule, double x0, int n, double y)
+{
+    const double r = 1.5, length = 4.0 * n - 1 - 2 * r;
+    dGeomCapsuleSetParams(capsule, r, length);
+    dMatrix3 R;
+    dRFromAxisAndAngle(R, 0, 1, 0, M_PI / 2);
+    dGeomSetRotation(capsule, R);
+    dGeomSetPosition(capsule, x0 * 4 - 8 + 0.5 + (length + 2 * r) / 2, y + r, 2);
+}
+
+// A query takes at most 65536 cells (2^16): a geom whose box covers more
+// gets no contacts, reported once per heightfield (a 10^6 m capsule on a
+// wrapping field once built 1.2 million triangles for one dCollide).
+static int test_a_geom_over_too_many_cells_is_refused_and_reported_once(void)
+{
+    static double flat[5 * 5];
+    dHeightfieldDataID d = dGeomHeightfieldDataCreate();
+    dGeomHeightfieldDataBuildDouble(d, flat, 0, 16, 16, 5, 5, 1, 0, 1, 1);   // wraps
+    dGeomHeightfieldDataSetBounds(d, -1, 1);   // a geom up to 1 m above is a query
+    dGeomID hf = dCreateHeightfield(0, d, 1), hf2 = dCreateHeightfield(0, d, 1);
+    dGeomID capsule = dCreateCapsule(0, 1, 1);
+    dContactGeom c[8];
+    test_capture_reports();
+
+    // 10^6 m long, resting on the surface, far out along the wrap.
+    dGeomCapsuleSetParams(capsule, 1.5, 1e6);
+    dMatrix3 R;
+    dRFromAxisAndAngle(R, 0, 1, 0, M_PI / 2);
+    dGeomSetRotation(capsule, R);
+    dGeomSetPosition(capsule, 3e5, 1.4, 2);
+    CHECK(dCollide(hf, capsule, 8, c, sizeof c[0]) == 0);
+    CHECK(test_captured_count() == 1);
+    CHECK(test_captured_contains("a capsule covers more than 65536 cells of a heightfield"));
+    CHECK(dCollide(capsule, hf, 8, c, sizeof c[0]) == 0);
+    CHECK(test_captured_count() == 1);   // once per heightfield ...
+    CHECK(dCollide(hf2, capsule, 8, c, sizeof c[0]) == 0);
+    CHECK(test_captured_count() == 2);   // ... each
+
+    // The bound is exact: 65536 cells taken (no contacts: the capsule is
+    // above the surface, inside the bounds), 65537 refused.
+    test_release_reports();
+    test_capture_reports();
+    dGeomID hf3 = dCreateHeightfield(0, d, 1);
+    lay_capsule(capsule, 1000, 65536, 0.5);
+    CHECK(dCollide(hf3, capsule, 8, c, sizeof c[0]) == 0);
+    CHECK(test_captured_count() == 0);
+    lay_capsule(capsule, 1000, 65537, 0.5);
+    CHECK(dCollide(hf3, capsule, 8, c, sizeof c[0]) == 0);
+    CHECK(test_captured_count() == 1);
+    test_release_reports();
+    test_capture_reports();
+
+    // A capsule of 10 cells resting on the field still gets its contacts.
+    lay_capsule(capsule, 1000, 10, -0.1);
+    int n = dCollide(hf, capsule, 8, c, sizeof c[0]);
+    CHECK(n >= 2);
+    for (int i = 0; i < n; i++) CHECK_NEAR(c[i].depth, 0.1, TOL(1e-9, 1e-3));
+    CHECK(test_captured_count() == 0);
+    test_release_reports();
+    dGeomDestroy(capsule);
+    dGeomDestroy(hf);
+    dGeomDestroy(hf2);
+    dGeomDestroy(hf3);
+    dGeomHeightfieldDataDestroy(d);
+    return 0;
+}
+
 // Below the surface is solid: a ball whose centre is under it is pushed up
 // along the normal of the triangle under it (down to the lowest height
 // minus the thickness; below that, nothing).
@@ -713,6 +782,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_copy_flag_decides_whether_heights_are_read_in_place),
     TEST_CASE(test_bounds_make_the_bounding_box),
     TEST_CASE(test_wrapped_field_repeats),
+    TEST_CASE(test_a_geom_over_too_many_cells_is_refused_and_reported_once),
     TEST_CASE(test_solid_below_the_surface),
     TEST_CASE(test_placeable_and_non_placeable_agree_at_the_identity),
     TEST_CASE(test_warm_collisions_allocate_nothing),

@@ -14,10 +14,6 @@
 #include "collide_math.h"
 #include "native_colliders.h"
 
-// More cells than this under one geom is a geom far larger than the field's
-// cells (or a long ray across it): refused rather than run for seconds.
-#define MAX_CELLS (1 << 20)
-
 // The surface under local point p (inside the field, or wrapping): the
 // point on it straight above or below p, and the triangle's upward unit
 // normal n.
@@ -91,11 +87,12 @@ static dReal support(const dxGeom *g, const dReal w[3])
 
 // The one contact of a geom whose centre is inside the solid below the
 // surface; 0 if its centre is not there.
-static int buried_contact(dxHeightfield *h, dxGeom *o2, dContactGeom *c, int skip)
+static int buried_contact(dxHeightfield *h, const dxGeom *patch, dxGeom *o2, dContactGeom *c,
+                          int skip)
 {
     const dxHeightfieldData *d = h->data;
     dReal p[3], s[3], n[3];
-    dxTriMeshToLocal(&h->shadow.g, o2->pos, p);   // the patch's frame (wrap: shifted)
+    dxTriMeshToLocal(patch, o2->pos, p);   // the patch's frame (wrap: shifted)
     if (!d->wrap && (dFabs(p[0]) > d->width / 2 || dFabs(p[2]) > d->depth / 2)) return 0;
     if (p[1] < d->min_height) return 0;
     surface_at(d, p, s, n);
@@ -155,24 +152,30 @@ static int collide(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip,
         fz1 = dMin(fz1, (dReal)(d->depth_samples - 1));
     }
     if (!(fx0 < fx1 && fz0 < fz1)) return 0;   // outside the field (or NaN)
-    if ((fx1 - fx0) * (fz1 - fz0) > (dReal)MAX_CELLS) {
-        dxReportMessage("dCollide", "a %s covers more than %d heightfield cells: no contacts",
-                        o2->ops->name, MAX_CELLS);
+    if ((fx1 - fx0) * (fz1 - fz0) > (dReal)DX_HEIGHTFIELD_MAX_CELLS) {
+        if (!atomic_exchange(&h->cap_reported, 1))
+            dxReportMessage("dCollide", "a %s covers more than %d cells of a heightfield: no "
+                            "contacts (reported once per heightfield)", o2->ops->name,
+                            DX_HEIGHTFIELD_MAX_CELLS);
         return 0;
     }
-    if (!dxHeightfieldBuildPatch(h, (int)fx0, (int)fx1, (int)fz0, (int)fz1)) return 0;
-    // The patch's pose: the heightfield's (a body's, if it has one), moved by
-    // the whole periods taken out.
-    dxGeom *s = &h->shadow.g;
-    s->R = o1->R;
-    s->pos = o1->pos;
-    if (shift[0] != 0 || shift[2] != 0) {
-        dx_point_to_world(o1->R, o1->pos, shift, s->own_pos);
-        s->pos = s->own_pos;
+    dxHeightfieldPatch *patch = dxHeightfieldPatchAcquire();
+    if (!patch) return 0;
+    int n = 0;
+    if (dxHeightfieldBuildPatch(d, patch, (int)fx0, (int)fx1, (int)fz0, (int)fz1)) {
+        // The patch's pose: the heightfield's (a body's, if it has one), moved
+        // by the whole periods taken out.
+        dxGeom *s = &patch->mesh.g;
+        s->R = o1->R;
+        s->pos = o1->pos;
+        if (shift[0] != 0 || shift[2] != 0) {
+            dx_point_to_world(o1->R, o1->pos, shift, s->own_pos);
+            s->pos = s->own_pos;
+        }
+        int solid = o2->ops->cls != dRayClass && o2->ops->cls != dTriMeshClass;
+        n = solid && buried_contact(h, s, o2, c, skip) ? 1 : mesh(s, o2, flags, c, skip);
     }
-    int solid = o2->ops->cls != dRayClass && o2->ops->cls != dTriMeshClass;
-    if (solid && buried_contact(h, o2, c, skip)) return 1;
-    int n = mesh(s, o2, flags, c, skip);
+    dxHeightfieldPatchRelease(patch);
     for (int i = 0; i < n; i++) {
         dContactGeom *k = dxContactAt(c, i, skip);
         k->g1 = o1;
@@ -208,7 +211,9 @@ int dxCollideHeightfieldConvex(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *
 
 int dxCollideHeightfieldTriMesh(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
 {
-    return collide(o1, o2, flags, c, skip, dxCollideTriMeshTriMesh);
+    // The patch first whatever the addresses (the patch is the thread's), so
+    // every thread gets the same contacts.
+    return collide(o1, o2, flags, c, skip, dxCollideTriMeshTriMeshInOrder);
 }
 
 int dxCollideHeightfieldRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)

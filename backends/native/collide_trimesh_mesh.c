@@ -267,3 +267,12 @@ int dxCollideTriMeshTriMesh(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, 
     dxTriScratchRelease(s);
     return n;
 }
+
+int dxCollideTriMeshTriMeshInOrder(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
+{
+    dxTriScratch *s = dxTriScratchAcquire();
+    if (!s) return 0;
+    int n = collide_ordered(o1, o2, flags, c, skip, s);
+    dxTriScratchRelease(s);
+    return n;
+}

@@ -31,6 +31,9 @@ dxCollider dxCollideCylinderBox, dxCollideCylinderCapsule, dxCollideCylinderCyli
 dxCollider dxCollideTriMeshSphere, dxCollideTriMeshBox, dxCollideTriMeshCapsule,
     dxCollideTriMeshCylinder, dxCollideTriMeshPlane, dxCollideTriMeshRay,
     dxCollideTriMeshTriMesh, dxCollideTriMeshConvex;
+// Trimesh-trimesh computed with o1 as the first mesh, whatever the addresses
+// (dxCollideTriMeshTriMesh orders the pair by address so that it mirrors).
+dxCollider dxCollideTriMeshTriMeshInOrder;
 // The convex hull (collide_convex.c); its triangle mesh pair is
 // dxCollideTriMeshConvex (collide_trimesh_convex.c).
 dxCollider dxCollideConvexConvex, dxCollideConvexBox, dxCollideConvexPlane, dxCollideConvexSphere,

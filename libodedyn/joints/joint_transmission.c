@@ -105,14 +105,16 @@ static int mesh_points(const dxJointTransmission *t, mesh *g)
     }
     case dTransmissionIntersectingAxes: {
         // The planes n_i . x = n_i . a_i meet on the line O + s l, with O the
-        // point of that line in the plane spanned by the normals.
+        // point of that line in the plane spanned by the normals. Axes closer
+        // to parallel than MIN_LENGTH in sin^2 have no line within reach (den
+        // below would round to 0, the points to NaN): no row, as for parallel.
         dCalcVectorCross3(g->l[0], g->n[0], g->n[1]);
-        if (!dSafeNormalize3(g->l[0])) return 0;
+        const dReal den = dCalcVectorLengthSquare3(g->l[0]);   // 1 - (n0 . n1)^2
+        if (!(den >= MIN_LENGTH) || !dSafeNormalize3(g->l[0])) return 0;
         dCopyVector3(g->l[1], g->l[0]);
         const dReal nn = dCalcVectorDot3(g->n[0], g->n[1]);
         const dReal h0 = dCalcVectorDot3(g->n[0], g->a[0]);
         const dReal h1 = dCalcVectorDot3(g->n[1], g->a[1]);
-        const dReal den = 1 - nn * nn;
         dVector3 O;
         dAddScaledVectors3(O, g->n[0], g->n[1], (h0 - h1 * nn) / den, (h1 - h0 * nn) / den);
         for (int i = 0; i < 2; i++) {

@@ -112,6 +112,8 @@ static void correct_joint(const struct dxWorld *w, dxJoint *j, dReal h)
                          .J2l = J + 6, .J2a = J + 9, .c = c, .cfm = cfm, .lo = lo, .hi = hi,
                          .findex = findex };
     j->cls->fill_rows(j, &info);
+    // Rows that are not finite: no correction (the step's rows reported it).
+    if (!dxJointRowsKeepFinite(j, m, J, 12, c, cfm, lo, hi, findex)) return;
 
     // iMJ = M^-1 J^T row by row, zero for a side that does not move.
     struct dxBody *body[2];

@@ -10,6 +10,7 @@
 #include <ode/matrix.h>
 
 #include <float.h>
+#include <math.h>
 
 void dxBodyWorldInverseInertia(const struct dxBody *b, dReal *out)
 {
@@ -214,6 +215,27 @@ void dxJointRowsFill(struct dxWorld *w, dxJoint *j, dReal h, dReal *J, dReal *c,
     info.findex = findex;
     j->cls->fill_rows(j, &info);
     fold_kinematic(j, J, c, m);
+    if (!dxJointRowsKeepFinite(j, m, J, DX_ROW_SKIP, c, cfm, lo, hi, findex))
+        dxReportMessage("step", "a %s joint's rows are not finite (its pose or parameters have "
+                        "no answer): it acts with no force this step", j->cls->name);
+}
+
+int dxJointRowsKeepFinite(const dxJoint *j, int m, dReal *J, int skip, dReal *c, dReal *cfm,
+                          dReal *lo, dReal *hi, int *findex)
+{
+    int finite = 1;
+    for (int i = 0; i < m && finite; i++) {
+        finite = dxIsFinite(c[i]) && dxIsFinite(cfm[i]) && !isnan(lo[i]) && !isnan(hi[i]);
+        for (int e = 0; e < 12; e++) finite = finite && dxIsFinite(J[i * skip + e]);
+    }
+    if (finite) return 1;
+    for (int i = 0; i < m; i++) {
+        for (int e = 0; e < 12; e++) J[i * skip + e] = 0;
+        c[i] = lo[i] = hi[i] = 0;
+        cfm[i] = j->world->cfm;
+        findex[i] = -1;
+    }
+    return 0;
 }
 
 void dxRowsBuild(struct dxWorld *w, dxArena *a, const dxIsland *is, dReal h, dxIslandRows *r)

@@ -97,9 +97,19 @@ void dxRowsBuild(struct dxWorld *w, dxArena *arena, const dxIsland *is, dReal h,
 // cfm, lo, hi defaulted and filled (a contact joint writes every entry itself,
 // so its defaults are skipped), findex joint-local or -1, kinematic
 // bodies' motion folded into c. Island indices of its bodies in b[2] (-1:
-// static world or kinematic). What dxRowsBuild does for every joint.
+// static world or kinematic). What dxRowsBuild does for every joint. Rows
+// that are not finite are cleared and reported (dxJointRowsKeepFinite).
 void dxJointRowsFill(struct dxWorld *w, dxJoint *j, dReal h, dReal *J, dReal *c, dReal *cfm,
                      dReal *lo, dReal *hi, int *findex, int *b);
+// Whether the m rows of joint j just filled (J with row skip `skip`, c,
+// cfm, lo, hi) are numbers a solver can take: J, c and cfm finite, no bound
+// NaN. If not (a joint whose pose or parameters have no answer, such as
+// bevel gears turned parallel) they become rows with no force, J and c 0,
+// bounds 0, the world's cfm, no friction index, so the step goes on without
+// the joint instead of spreading NaN to its bodies; returns 0 then (the
+// caller reports it).
+int dxJointRowsKeepFinite(const dxJoint *j, int m, dReal *J, int skip, dReal *c, dReal *cfm,
+                          dReal *lo, dReal *hi, int *findex);
 // out[6*nb] += J^T lambda per body (force, torque); fills joint feedback.
 void dxRowsApplyForces(const dxIsland *is, const dxIslandRows *rows, const dReal *lambda,
                        dReal *body_forces);

@@ -65,6 +65,8 @@ typedef struct sf1_step {
     dReal rows_fps;               // 1 / h, for the joints' rows
     int last;                     // the sub-step is the last one of the step
     int lcp_failures;
+    int nonfinite_solves;          // joint solves whose rows were not finite ...
+    const dxJoint *nonfinite;      // ... the first such joint
     joint_system js;              // scratch for one joint's solve
 } sf1_step;
 
@@ -203,8 +205,9 @@ static void add_joint_impulse(const sf1_step *st, const dxJoint *j, const dReal 
 }
 
 // Ask the joint for its rows at the current poses (fps = 1/h), and move the
-// known velocity of a kinematic body into c, as dxRowsBuild does.
-static void fill_joint_rows(const sf1_step *st, dxJoint *j, joint_system *js)
+// known velocity of a kinematic body into c, as dxRowsBuild does. Rows that
+// are not finite are cleared (no force) and counted.
+static void fill_joint_rows(sf1_step *st, dxJoint *j, joint_system *js)
 {
     const int m = js->m;
     dSetZero(js->J, 12 * m);
@@ -229,6 +232,9 @@ static void fill_joint_rows(const sf1_step *st, dxJoint *j, joint_system *js)
             const dReal *Jk = js->J + 12 * i + 6 * k;
             js->c[i] -= dCalcVectorDot3(Jk, b->lvel) + dCalcVectorDot3(Jk + 3, b->avel);
         }
+    }
+    if (!dxJointRowsKeepFinite(j, m, js->J, 12, js->c, js->cfm, js->lo, js->hi, js->findex)) {
+        if (st->nonfinite_solves++ == 0) st->nonfinite = j;
     }
 }
 
@@ -391,6 +397,8 @@ void dWorldStepFast1(dWorldID w, dReal stepsize, int maxiterations)
     st.fps = dRecip(st.s);
     st.rows_fps = dRecip(stepsize);
     st.lcp_failures = 0;
+    st.nonfinite_solves = 0;
+    st.nonfinite = NULL;
     st.js.cap = 0;
     joint_system_reserve(w->arena, &st.js, JOINT_ROWS);
     collect(w, &st);
@@ -413,6 +421,10 @@ void dWorldStepFast1(dWorldID w, dReal stepsize, int maxiterations)
     if (st.lcp_failures > 0)
         dMessage(d_ERR_LCP, "dWorldStepFast1: the LCP solver did not converge for %d joint "
                  "solves; using its best approximation", st.lcp_failures);
+    if (st.nonfinite_solves > 0)
+        dxReportMessage(__func__, "a %s joint's rows were not finite (its pose or parameters "
+                        "have no answer) in %d joint solves: no force there",
+                        st.nonfinite->cls->name, st.nonfinite_solves);
     sf1_auto_disable(&st.all);
     dxStepEnd(&st.all, 1, stepsize);
 }
