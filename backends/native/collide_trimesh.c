@@ -8,6 +8,7 @@
 #include "collide_trimesh.h"
 
 #include <ode/memory.h>
+#include <stdlib.h>
 
 // ---- the walk and the reduction --------------------------------------------
 
@@ -59,23 +60,73 @@ static int merged_side(dxGeom *g, int a, int b)
     return m && m->merge_callback ? m->merge_callback(g, a, b) : -1;
 }
 
+// Below this many contacts the reduction compares them pair by pair; from
+// it on, it finds the candidates with the scratch's hash grid: the same
+// results, about a constant per contact instead of a pass over the others.
+enum { GRID_FROM = 48 };
+
+static int finite3(const dReal p[3])
+{
+    return dxIsFinite(p[0]) && dxIsFinite(p[1]) && dxIsFinite(p[2]);
+}
+
+// Whether contact a merges into kept contact b: (nearly) the same point,
+// (nearly) the same normal.
+static int duplicates(const dxTriMeshRaw *a, const dxTriMeshRaw *b, dReal tol)
+{
+    return dist2(a->pos, b->pos) <= tol * tol && dx_dot(a->n, b->n) > 1 - (dReal)1e-6;
+}
+
+// The lowest index among the n kept contacts that r[i] duplicates (n if
+// none), pair by pair or through the grid of the kept ones' positions.
+static int kept_duplicate(dxTriScratch *s, int n, int i, dReal tol, int grid)
+{
+    const dxTriMeshRaw *r = s->raw;
+    if (!grid) {
+        int j = 0;
+        while (j < n && !duplicates(&r[i], &r[j], tol)) j++;
+        return j;
+    }
+    int best = n, *heads[27];
+    if (!finite3(r[i].pos)) return n;   // a point that is not finite is near none
+    int cells = dxTriGridNear(&s->grid, r[i].pos, heads);
+    for (int c = 0; c < cells; c++)
+        for (int e = *heads[c]; e >= 0; e = s->grid.link[2 * e + 1]) {
+            int j = s->grid.link[2 * e];
+            if (j < best && duplicates(&r[i], &r[j], tol)) best = j;
+        }
+    return best;
+}
+
 // Merge contacts at (nearly) the same point with (nearly) the same normal,
-// keeping the deeper; returns the new count.
+// each into the first kept one it duplicates, keeping the deeper; returns
+// the new count. On the grid a kept contact that takes a deeper one's
+// place is entered again at its new point (the old entry is then stale:
+// harmless, as every candidate is tested at its current point).
 static int merge_duplicates(dxTriScratch *s, dxTriMesh *m, dxGeom *other, dReal tol)
 {
     dxTriMeshRaw *r = s->raw;
-    int n = 0;
+    int n = 0, grid = s->raw_count >= GRID_FROM;
+    if (grid) {
+        dReal extent = 0;
+        for (int i = 0; i < s->raw_count; i++)
+            if (finite3(r[i].pos))
+                for (int k = 0; k < 3; k++) extent = dMax(extent, dFabs(r[i].pos[k]));
+        dxTriGridStart(&s->grid, s->raw_count, tol, extent);
+    }
     for (int i = 0; i < s->raw_count; i++) {
-        int j = 0;
-        while (j < n && !(dist2(r[i].pos, r[j].pos) <= tol * tol &&
-                          dx_dot(r[i].n, r[j].n) > 1 - (dReal)1e-6))
-            j++;
+        int j = kept_duplicate(s, n, i, tol, grid);
         if (j == n) {
-            r[n++] = r[i];
+            r[n] = r[i];
+            if (grid && finite3(r[n].pos)) dxTriGridAdd(&s->grid, r[n].pos, n);
+            n++;
             continue;
         }
         int a = r[j].tri, b = r[i].tri, a2 = r[j].tri2, b2 = r[i].tri2;
-        if (r[i].depth > r[j].depth) r[j] = r[i];
+        if (r[i].depth > r[j].depth) {
+            r[j] = r[i];
+            if (grid && finite3(r[j].pos)) dxTriGridAdd(&s->grid, r[j].pos, j);
+        }
         r[j].tri = merged_side(&m->g, a, b);
         if (a2 >= 0 || b2 >= 0) r[j].tri2 = merged_side(other, a2, b2);
     }
@@ -86,6 +137,34 @@ static int merge_duplicates(dxTriScratch *s, dxTriMesh *m, dxGeom *other, dReal 
 // (sine of the angle) are on it.
 #define SAME_NORMAL ((dReal)1 - 10 * DX_COLLIDE_EPS)
 #define SAME_LINE (100 * DX_COLLIDE_EPS)
+
+// The gift wrap's step in the plane (e1, e2) of a flat group: from member
+// cur, the member that all the others are not clockwise of; among those in
+// line with it (within a relative sine of SAME_LINE) the farthest.
+// (U, V: member i's coordinates in that plane.)
+#define U(i) dx_dot(r[members[i]].pos, e1)
+#define V(i) dx_dot(r[members[i]].pos, e2)
+static int wrap_next(const dxTriMeshRaw *r, const int *members, int count, int cur,
+                     const dReal e1[3], const dReal e2[3])
+{
+    int next = -1;
+    dReal nu = 0, nv = 0;
+    for (int q = 0; q < count; q++) {
+        if (q == cur) continue;
+        dReal qu = U(q) - U(cur), qv = V(q) - V(cur);
+        if (next < 0) {
+            next = q, nu = qu, nv = qv;
+            continue;
+        }
+        // cross < 0: q is clockwise of next; collinear within a
+        // relative sine of SAME_LINE.
+        dReal cross = nu * qv - nv * qu, q2 = qu * qu + qv * qv, n2 = nu * nu + nv * nv;
+        dReal tol = SAME_LINE * dSqrt(q2 * n2);
+        if (cross < -tol || (cross <= tol && q2 > n2))
+            next = q, nu = qu, nv = qv;
+    }
+    return next;
+}
 
 // Within a group of contacts with one normal (one flat patch), the corners
 // of the patch's convex hull and its deepest point are what matters (with a
@@ -105,35 +184,23 @@ static void mark_hull(const dxTriMeshRaw *r, const int *members, int count, dRea
     e2[0] = n[1] * e1[2] - n[2] * e1[1];
     e2[1] = n[2] * e1[0] - n[0] * e1[2];
     e2[2] = n[0] * e1[1] - n[1] * e1[0];
-#define U(i) dx_dot(r[members[i]].pos, e1)
-#define V(i) dx_dot(r[members[i]].pos, e2)
     int start = 0;
     for (int i = 1; i < count; i++)
         if (U(i) < U(start) || (U(i) == U(start) && V(i) < V(start))) start = i;
-    int cur = start;
-    for (int steps = 0; steps <= count; steps++) {
-        keep[members[cur]] = 1;
-        int next = -1;
-        dReal nu = 0, nv = 0;
-        for (int q = 0; q < count; q++) {
-            if (q == cur) continue;
-            dReal qu = U(q) - U(cur), qv = V(q) - V(cur);
-            if (next < 0) {
-                next = q, nu = qu, nv = qv;
-                continue;
-            }
-            // cross < 0: q is clockwise of next; collinear within a
-            // relative sine of SAME_LINE.
-            dReal cross = nu * qv - nv * qu, q2 = qu * qu + qv * qv, n2 = nu * nu + nv * nv;
-            dReal tol = SAME_LINE * dSqrt(q2 * n2);
-            if (cross < -tol || (cross <= tol && q2 > n2))
-                next = q, nu = qu, nv = qv;
-        }
-        cur = next;
-        if (cur == start) break;
-    }
 #undef U
 #undef V
+    // Wrap until a member comes round again: the loop from it is the hull.
+    // The start, lowest in e1, is a corner but for rounding: it can lie on
+    // an edge between two corners, in line within SAME_LINE; then the wrap
+    // enters the loop at the next corner without coming back to it, and
+    // the members before the loop are unmarked.
+    int cur = start;
+    while (!keep[members[cur]]) {
+        keep[members[cur]] = 1;
+        cur = wrap_next(r, members, count, cur, e1, e2);
+    }
+    for (int entry = cur, p = start; p != entry; p = wrap_next(r, members, count, p, e1, e2))
+        keep[members[p]] = 0;
     int deepest = 0;
     dReal corner_depth = -dInfinity;
     for (int i = 0; i < count; i++) {
@@ -141,6 +208,58 @@ static void mark_hull(const dxTriMeshRaw *r, const int *members, int count, dRea
         if (keep[members[i]]) corner_depth = dMax(corner_depth, r[members[i]].depth);
     }
     if (r[members[deepest]].depth > corner_depth + depth_tol) keep[members[deepest]] = 1;
+}
+
+static int compare_ints(const void *a, const void *b)
+{
+    int x = *(const int *)a, y = *(const int *)b;
+    return (x > y) - (x < y);
+}
+
+// Whether every one of the n contacts' normals is a unit vector within
+// the flat groups' tolerance: then the normals of a group are within
+// sqrt(40 eps) of each other and the grid finds them.
+static int unit_normals(const dxTriMeshRaw *r, int n)
+{
+    for (int i = 0; i < n; i++) {
+        dReal l2 = dx_dot(r[i].n, r[i].n);
+        if (!(l2 > SAME_NORMAL && l2 < 2 - SAME_NORMAL)) return 0;
+    }
+    return 1;
+}
+
+// The flat group of contact i (those not yet in a group, from i on, whose
+// normal is within SAME_NORMAL of i's) into members in increasing order,
+// each marked done; returns its size. With the grid (of the normals, every
+// one unit), entries of contacts already in a group are unlinked as met.
+static int flat_group(dxTriScratch *s, int n, int i, int grid, int *members, int *done)
+{
+    const dxTriMeshRaw *r = s->raw;
+    int count = 0;
+    if (!grid) {
+        for (int j = i; j < n; j++)
+            if (!done[j] && dx_dot(r[i].n, r[j].n) > SAME_NORMAL) {
+                members[count++] = j;
+                done[j] = 1;
+            }
+        return count;
+    }
+    int *heads[27];
+    int cells = dxTriGridNear(&s->grid, r[i].n, heads);
+    for (int c = 0; c < cells; c++) {
+        int *link = heads[c];
+        while (*link >= 0) {
+            int e = *link, j = s->grid.link[2 * e];
+            if (!done[j] && dx_dot(r[i].n, r[j].n) > SAME_NORMAL) {
+                members[count++] = j;
+                done[j] = 1;
+            }
+            if (done[j]) *link = s->grid.link[2 * e + 1];
+            else link = &s->grid.link[2 * e + 1];
+        }
+    }
+    qsort(members, (size_t)count, sizeof *members, compare_ints);
+    return count;
 }
 
 // Keep only the hull corners (and an inner point deeper than them by more
@@ -151,14 +270,14 @@ static int prune_flat_groups(dxTriScratch *s, int n, dReal tol)
     dxTriMeshReserveInts(&s->hits[0], &s->hits_cap[0], 2 * n);
     int *members = s->cand[0], *keep = s->hits[0], *done = s->hits[0] + n;
     for (int i = 0; i < n; i++) keep[i] = done[i] = 0;
+    int grid = n >= GRID_FROM && unit_normals(s->raw, n);
+    if (grid) {
+        dxTriGridStart(&s->grid, n, dSqrt(64 * DX_COLLIDE_EPS), 1);
+        for (int i = 0; i < n; i++) dxTriGridAdd(&s->grid, s->raw[i].n, i);
+    }
     for (int i = 0; i < n; i++) {
         if (done[i]) continue;
-        int count = 0;
-        for (int j = i; j < n; j++)
-            if (!done[j] && dx_dot(s->raw[i].n, s->raw[j].n) > SAME_NORMAL) {
-                members[count++] = j;
-                done[j] = 1;
-            }
+        int count = flat_group(s, n, i, grid, members, done);
         mark_hull(s->raw, members, count, tol, keep);
     }
     int k = 0;
@@ -195,20 +314,33 @@ static dReal hull_growth(const dReal *a, const dReal *b, const dReal *c, const d
 
 // Move the `keep` contacts to keep to the front: the deepest, the farthest
 // from it, the farthest from the line of those two, the one that widens
-// their triangle most, then each the farthest from those kept.
-static void select_spread(dxTriMeshRaw *r, int n, int keep)
+// their triangle most, then each the farthest from those kept. near[i]
+// (room for n) carries contact i's squared distance to the nearest kept
+// one from the first step that needs it on, so each step is one pass.
+static void select_spread(dxTriMeshRaw *r, dReal *near, int n, int keep)
 {
     int best = 0;
     for (int i = 1; i < n; i++)
         if (r[i].depth > r[best].depth) best = i;
     swap_raw(r, 0, best);
     dReal N[3] = { 0, 0, 0 };
+    int have_near = 0;
     for (int k = 1; k < keep; k++) {
+        int by_near = k >= 3 && !(k == 3 && dx_dot(N, N) > 0);
+        if (by_near && !have_near) {
+            for (int i = k; i < n; i++) {
+                near[i] = dInfinity;
+                for (int j = 0; j < k; j++) near[i] = dMin(near[i], dist2(r[i].pos, r[j].pos));
+            }
+            have_near = 1;
+        }
         dReal score_best = -1;
         best = k;
         for (int i = k; i < n; i++) {
             dReal score;
-            if (k == 2) {
+            if (k == 1) {
+                score = dist2(r[i].pos, r[0].pos);
+            } else if (k == 2) {
                 dReal e[3], d[3], cr[3];
                 for (int j = 0; j < 3; j++) {
                     e[j] = r[1].pos[j] - r[0].pos[j];
@@ -218,11 +350,10 @@ static void select_spread(dxTriMeshRaw *r, int n, int keep)
                 cr[1] = e[2] * d[0] - e[0] * d[2];
                 cr[2] = e[0] * d[1] - e[1] * d[0];
                 score = dx_dot(cr, cr);
-            } else if (k == 3 && dx_dot(N, N) > 0) {
+            } else if (!by_near) {
                 score = hull_growth(r[0].pos, r[1].pos, r[2].pos, N, r[i].pos);
             } else {
-                score = dInfinity;
-                for (int j = 0; j < k; j++) score = dMin(score, dist2(r[i].pos, r[j].pos));
+                score = near[i];
             }
             if (score > score_best) {
                 score_best = score;
@@ -230,6 +361,12 @@ static void select_spread(dxTriMeshRaw *r, int n, int keep)
             }
         }
         swap_raw(r, k, best);
+        if (have_near) {
+            dReal t = near[k];
+            near[k] = near[best];
+            near[best] = t;
+            for (int i = k + 1; i < n; i++) near[i] = dMin(near[i], dist2(r[i].pos, r[k].pos));
+        }
         if (k == 2) {
             dReal e[3], d[3];
             for (int j = 0; j < 3; j++) {
@@ -262,7 +399,13 @@ int dxTriMeshSpread(dxTriQuery *q, int n, int flags)
 {
     int max = dx_max_contacts(flags);
     if (n <= max) return n;
-    select_spread(q->s->raw, n, max);
+    dxTriScratch *s = q->s;
+    if (n > s->score_cap) {
+        dFree(s->score, (size_t)s->score_cap * sizeof(dReal));
+        s->score = (dReal *)dAlloc((size_t)n * sizeof(dReal));
+        s->score_cap = n;
+    }
+    select_spread(s->raw, s->score, n, max);
     return max;
 }
 

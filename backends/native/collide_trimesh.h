@@ -12,15 +12,44 @@
 #include "../../libodecollide/trimesh_internal.h"
 #include "collide_math.h"
 
+// A hash grid of points for the reduction's neighbour searches
+// (collide_trimesh_grid.c). A cell's list: its first entry `head`; entry e
+// is the point link[2e], followed by entry link[2e + 1] (negative: none).
+typedef struct dxTriCell {
+    int key[3];
+    int head;
+} dxTriCell;
+typedef struct dxTriGrid {
+    dxTriCell *cell;
+    int cell_cap, mask;
+    int *link;
+    int link_cap, links;
+    double inv;     // 1 / the cells' side
+    double reach;   // the search radius (widened for rounding)
+} dxTriGrid;
+
+// Empty the grid for up to `entries` points searched within `reach` of
+// each other, every coordinate within `extent` of 0 (finite points only).
+void dxTriGridStart(dxTriGrid *g, int entries, dReal reach, dReal extent);
+// Add point number `point` at p.
+void dxTriGridAdd(dxTriGrid *g, const dReal p[3], int point);
+// The lists of the cells that may hold points within reach of p: pointers
+// to their heads (so a walk may unlink entries); returns their count.
+int dxTriGridNear(dxTriGrid *g, const dReal p[3], int *heads[27]);
+void dxTriGridFree(dxTriGrid *g);
+
 // The scratch memory of one collision (collide_trimesh_scratch.c): up to
 // two triangle lists of each kind (candidates from the tree, triangles
-// hit; [1] for the second mesh of a trimesh pair) and the contacts before
-// the reduction.
+// hit; [1] for the second mesh of a trimesh pair), the contacts before
+// the reduction, and the reduction's grid and per-contact numbers.
 typedef struct dxTriScratch {
     int *cand[2], *hits[2];
     int cand_cap[2], hits_cap[2];
     dxTriMeshRaw *raw;
     int raw_count, raw_cap;
+    dxTriGrid grid;
+    dReal *score;
+    int score_cap;
 } dxTriScratch;
 
 // A free set of the calling thread's (NULL, reported, if collisions nest
