@@ -9,16 +9,35 @@
 
 #include <ode/memory.h>
 #include <stdlib.h>
+#include <string.h>
 
 // ---- the walk and the reduction --------------------------------------------
 
+// Welded vertex w of d (dxTriMeshVertex, here inline: loading triangles
+// is the walk's hot path, and a call across the library goes through the
+// PLT).
+static inline void load_vertex(const dxTriMeshData *d, int w, dReal out[3])
+{
+    const char *p = (const char *)d->vertices + (size_t)w * (size_t)d->vertex_stride;
+    if (d->vertex_double) {
+        double v[3];
+        memcpy(v, p, sizeof v);
+        for (int k = 0; k < 3; k++) out[k] = (dReal)v[k];
+    } else {
+        float v[3];
+        memcpy(v, p, sizeof v);
+        for (int k = 0; k < 3; k++) out[k] = (dReal)v[k];
+    }
+}
+
 void dxTriLoad(const dxTriMeshData *d, int t, dxTri *out)
 {
+    dTriIndex idx[3];
+    memcpy(idx, (const char *)d->indices + (size_t)t * (size_t)d->tri_stride, sizeof idx);
     out->index = t;
-    dxTriMeshIndices(d, t, out->vi);
     for (int k = 0; k < 3; k++) {
-        out->vi[k] = d->weld[out->vi[k]];
-        dxTriMeshVertex(d, out->vi[k], out->v[k]);
+        out->vi[k] = d->weld[(int)idx[k]];
+        load_vertex(d, out->vi[k], out->v[k]);
     }
     for (int k = 0; k < 3; k++) out->n[k] = d->normal[3 * t + k];
     out->features = dxTriMeshFeatures(d, t);
@@ -587,16 +606,23 @@ void dxTriSideNormal(const dxTri *t, int k, dReal m[3])
 }
 
 // Keep the part of polygon p (n points, tags tp) where m . (x - o) >= -slack;
-// a point made on this boundary gets the tag `made`.
+// a point made on this boundary gets the tag `made`. Returns the new count,
+// or -1 (nothing written) if every point is kept as it is.
 static int clip_polygon(dReal p[][3], const int *tp, int n, const dReal m[3], const dReal o[3],
                         dReal slack, int made, dReal out[][3], int *tout)
 {
+    dReal f[DX_TRI_POLY_MAX];
+    int inside = 0;
+    for (int i = 0; i < n; i++) {
+        dReal d[3] = { p[i][0] - o[0], p[i][1] - o[1], p[i][2] - o[2] };
+        f[i] = dx_dot(m, d) + slack;
+        inside += f[i] >= 0;
+    }
+    if (inside == n) return -1;
     int k = 0;
     for (int i = 0; i < n; i++) {
         const dReal *a = p[i], *b = p[(i + 1) % n];
-        dReal da[3] = { a[0] - o[0], a[1] - o[1], a[2] - o[2] };
-        dReal db[3] = { b[0] - o[0], b[1] - o[1], b[2] - o[2] };
-        dReal fa = dx_dot(m, da) + slack, fb = dx_dot(m, db) + slack;
+        dReal fa = f[i], fb = f[(i + 1) % n];
         if (fa >= 0) {
             for (int j = 0; j < 3; j++) out[k][j] = a[j];
             tout[k++] = tp[i];
@@ -620,21 +646,43 @@ static int flat_edge(const dxTriQuery *q, const dxTri *t, int k)
     return u >= 0 && dx_dot(t->n, q->data->normal + 3 * u) > 1 - 10 * DX_COLLIDE_EPS;
 }
 
-int dxTriClipToPrism(const dxTriQuery *q, const dxTri *t, dReal a[][3], int n, int *made)
+void dxTriPrismInit(const dxTriQuery *q, const dxTri *t, dxTriPrism *p)
 {
-    dReal b[DX_TRI_POLY_MAX][3], m[3], eps = DX_COLLIDE_EPS * q->scale;
-    int tb[DX_TRI_POLY_MAX];
+    dReal eps = DX_COLLIDE_EPS * q->scale;
+    for (int k = 0; k < 3; k++) {
+        dxTriSideNormal(t, k, p->m[k]);
+        p->slack[k] = eps * dSqrt(dx_dot(p->m[k], p->m[k]));
+        p->made[k] = flat_edge(q, t, k) ? DX_TRI_MADE_AT_FLAT_EDGE : DX_TRI_MADE_AT_EDGE;
+    }
+}
+
+int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, dReal a[][3], int n, int *made)
+{
+    // Side by side from a into b and back (the last result copied to a if
+    // it ended in b).
+    dReal b[DX_TRI_POLY_MAX][3];
+    int tb[DX_TRI_POLY_MAX], in_a = 1;
     for (int i = 0; i < n; i++) made[i] = DX_TRI_MADE_NOT;
     for (int k = 0; k < 3 && n > 0; k++) {
-        dxTriSideNormal(t, k, m);
-        int tag = flat_edge(q, t, k) ? DX_TRI_MADE_AT_FLAT_EDGE : DX_TRI_MADE_AT_EDGE;
-        n = clip_polygon(a, made, n, m, t->v[k], eps * dSqrt(dx_dot(m, m)), tag, b, tb);
+        int c = in_a ? clip_polygon(a, made, n, p->m[k], t->v[k], p->slack[k], p->made[k], b, tb)
+                     : clip_polygon(b, tb, n, p->m[k], t->v[k], p->slack[k], p->made[k], a, made);
+        if (c < 0) continue;   // unchanged
+        n = c;
+        in_a = !in_a;
+    }
+    if (!in_a)
         for (int i = 0; i < n; i++) {
             for (int j = 0; j < 3; j++) a[i][j] = b[i][j];
             made[i] = tb[i];
         }
-    }
     return n;
+}
+
+int dxTriClipToPrism(const dxTriQuery *q, const dxTri *t, dReal a[][3], int n, int *made)
+{
+    dxTriPrism p;
+    dxTriPrismInit(q, t, &p);
+    return dxTriClipToPrismWith(&p, t, a, n, made);
 }
 
 // ---- trimesh-plane ----------------------------------------------------------------

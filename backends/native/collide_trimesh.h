@@ -50,6 +50,7 @@ typedef struct dxTriScratch {
     dxTriGrid grid;
     dReal *score;
     int score_cap;
+    dReal pair[48];   // a triangle test's per-pair values (dxTriQuery.prepared)
 } dxTriScratch;
 
 // A free set of the calling thread's (NULL, reported, if collisions nest
@@ -69,6 +70,9 @@ typedef struct dxTriQuery {
     dReal pos[3];      // the other geom's position ...
     dReal R[12];       // ... and rotation (row-major 3x4) in the mesh frame
     dReal scale;       // the other geom's size (tolerances)
+    // Whether the triangle test has worked out what it needs once per pair
+    // (into s->pair) on an earlier triangle: dxTriMeshGather clears it.
+    int prepared;
 } dxTriQuery;
 
 // One triangle: its vertices, unit normal, feature bits (DX_TRI_*_FEATURE)
@@ -146,5 +150,17 @@ void dxTriSideNormal(const dxTri *t, int k, dReal m[3]);
 enum { DX_TRI_POLY_MAX = 36 };
 enum { DX_TRI_MADE_NOT, DX_TRI_MADE_AT_EDGE, DX_TRI_MADE_AT_FLAT_EDGE };
 int dxTriClipToPrism(const dxTriQuery *q, const dxTri *t, dReal a[][3], int n, int *made);
+
+// The prism of a triangle made once for many clips: each side's inward
+// normal m (not unit), the rounding slack it is widened by (in units of
+// m) and the tag of the points made on it.
+typedef struct dxTriPrism {
+    dReal m[3][3];
+    dReal slack[3];
+    int made[3];
+} dxTriPrism;
+void dxTriPrismInit(const dxTriQuery *q, const dxTri *t, dxTriPrism *p);
+// dxTriClipToPrism with the prism made by dxTriPrismInit(q, t, p).
+int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, dReal a[][3], int n, int *made);
 
 #endif
