@@ -82,7 +82,7 @@ static int merged_side(dxGeom *g, int a, int b)
 // Below this many contacts the reduction compares them pair by pair; from
 // it on, it finds the candidates with the scratch's hash grid: the same
 // results, about a constant per contact instead of a pass over the others.
-enum { GRID_FROM = 48 };
+enum { GRID_FROM = 96 };
 
 static int finite3(const dReal p[3])
 {
@@ -157,20 +157,17 @@ static int merge_duplicates(dxTriScratch *s, dxTriMesh *m, dxGeom *other, dReal 
 #define SAME_NORMAL ((dReal)1 - 10 * DX_COLLIDE_EPS)
 #define SAME_LINE (100 * DX_COLLIDE_EPS)
 
-// The gift wrap's step in the plane (e1, e2) of a flat group: from member
-// cur, the member that all the others are not clockwise of; among those in
-// line with it (within a relative sine of SAME_LINE) the farthest.
-// (U, V: member i's coordinates in that plane.)
-#define U(i) dx_dot(r[members[i]].pos, e1)
-#define V(i) dx_dot(r[members[i]].pos, e2)
-static int wrap_next(const dxTriMeshRaw *r, const int *members, int count, int cur,
-                     const dReal e1[3], const dReal e2[3])
+// The gift wrap's step in the plane of a flat group (uv: member i's
+// coordinates there at 2i, 2i + 1): from member cur, the member that all
+// the others are not clockwise of; among those in line with it (within a
+// relative sine of SAME_LINE) the farthest.
+static int wrap_next(const dReal *uv, int count, int cur)
 {
     int next = -1;
     dReal nu = 0, nv = 0;
     for (int q = 0; q < count; q++) {
         if (q == cur) continue;
-        dReal qu = U(q) - U(cur), qv = V(q) - V(cur);
+        dReal qu = uv[2 * q] - uv[2 * cur], qv = uv[2 * q + 1] - uv[2 * cur + 1];
         if (next < 0) {
             next = q, nu = qu, nv = qv;
             continue;
@@ -189,9 +186,10 @@ static int wrap_next(const dxTriMeshRaw *r, const int *members, int count, int c
 // of the patch's convex hull and its deepest point are what matters (with a
 // flat solid on it, where depth varies linearly, the corners alone): mark
 // them in keep[] (gift wrapping in the plane; points on a hull edge between
-// two corners are left out). members lists the group.
+// two corners are left out). members lists the group; uv has room for
+// 2 count numbers.
 static void mark_hull(const dxTriMeshRaw *r, const int *members, int count, dReal depth_tol,
-                      int *keep)
+                      int *keep, dReal *uv)
 {
     if (count <= 2) {
         for (int i = 0; i < count; i++) keep[members[i]] = 1;
@@ -203,11 +201,15 @@ static void mark_hull(const dxTriMeshRaw *r, const int *members, int count, dRea
     e2[0] = n[1] * e1[2] - n[2] * e1[1];
     e2[1] = n[2] * e1[0] - n[0] * e1[2];
     e2[2] = n[0] * e1[1] - n[1] * e1[0];
+    for (int i = 0; i < count; i++) {
+        uv[2 * i] = dx_dot(r[members[i]].pos, e1);
+        uv[2 * i + 1] = dx_dot(r[members[i]].pos, e2);
+    }
     int start = 0;
     for (int i = 1; i < count; i++)
-        if (U(i) < U(start) || (U(i) == U(start) && V(i) < V(start))) start = i;
-#undef U
-#undef V
+        if (uv[2 * i] < uv[2 * start] ||
+            (uv[2 * i] == uv[2 * start] && uv[2 * i + 1] < uv[2 * start + 1]))
+            start = i;
     // Wrap until a member comes round again: the loop from it is the hull.
     // The start, lowest in e1, is a corner but for rounding: it can lie on
     // an edge between two corners, in line within SAME_LINE; then the wrap
@@ -216,9 +218,9 @@ static void mark_hull(const dxTriMeshRaw *r, const int *members, int count, dRea
     int cur = start;
     while (!keep[members[cur]]) {
         keep[members[cur]] = 1;
-        cur = wrap_next(r, members, count, cur, e1, e2);
+        cur = wrap_next(uv, count, cur);
     }
-    for (int entry = cur, p = start; p != entry; p = wrap_next(r, members, count, p, e1, e2))
+    for (int entry = cur, p = start; p != entry; p = wrap_next(uv, count, p))
         keep[members[p]] = 0;
     int deepest = 0;
     dReal corner_depth = -dInfinity;
@@ -227,6 +229,16 @@ static void mark_hull(const dxTriMeshRaw *r, const int *members, int count, dRea
         if (keep[members[i]]) corner_depth = dMax(corner_depth, r[members[i]].depth);
     }
     if (r[members[deepest]].depth > corner_depth + depth_tol) keep[members[deepest]] = 1;
+}
+
+// Room for n numbers in s->score (the flat groups' plane coordinates, the
+// spread's distances).
+static void reserve_reals(dxTriScratch *s, int n)
+{
+    if (n <= s->score_cap) return;
+    dFree(s->score, (size_t)s->score_cap * sizeof(dReal));
+    s->score = (dReal *)dAlloc((size_t)n * sizeof(dReal));
+    s->score_cap = n;
 }
 
 static int compare_ints(const void *a, const void *b)
@@ -287,6 +299,7 @@ static int prune_flat_groups(dxTriScratch *s, int n, dReal tol)
 {
     dxTriMeshReserveInts(&s->cand[0], &s->cand_cap[0], n);
     dxTriMeshReserveInts(&s->hits[0], &s->hits_cap[0], 2 * n);
+    reserve_reals(s, 2 * n);
     int *members = s->cand[0], *keep = s->hits[0], *done = s->hits[0] + n;
     for (int i = 0; i < n; i++) keep[i] = done[i] = 0;
     int grid = n >= GRID_FROM && unit_normals(s->raw, n);
@@ -297,7 +310,7 @@ static int prune_flat_groups(dxTriScratch *s, int n, dReal tol)
     for (int i = 0; i < n; i++) {
         if (done[i]) continue;
         int count = flat_group(s, n, i, grid, members, done);
-        mark_hull(s->raw, members, count, tol, keep);
+        mark_hull(s->raw, members, count, tol, keep, s->score);
     }
     int k = 0;
     for (int i = 0; i < n; i++)
@@ -418,13 +431,8 @@ int dxTriMeshSpread(dxTriQuery *q, int n, int flags)
 {
     int max = dx_max_contacts(flags);
     if (n <= max) return n;
-    dxTriScratch *s = q->s;
-    if (n > s->score_cap) {
-        dFree(s->score, (size_t)s->score_cap * sizeof(dReal));
-        s->score = (dReal *)dAlloc((size_t)n * sizeof(dReal));
-        s->score_cap = n;
-    }
-    select_spread(s->raw, s->score, n, max);
+    reserve_reals(q->s, n);
+    select_spread(q->s->raw, q->s->score, n, max);
     return max;
 }
 

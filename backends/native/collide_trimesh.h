@@ -48,7 +48,7 @@ typedef struct dxTriScratch {
     dxTriMeshRaw *raw;
     int raw_count, raw_cap;
     dxTriGrid grid;
-    dReal *score;
+    dReal *score;      // the reduction's numbers per contact
     int score_cap;
     dReal pair[48];   // a triangle test's per-pair values (dxTriQuery.prepared)
 } dxTriScratch;
