@@ -8,16 +8,36 @@
 #include "collide_trimesh.h"
 
 #include <ode/memory.h>
+#include <stdlib.h>
+#include <string.h>
 
 // ---- the walk and the reduction --------------------------------------------
 
+// Welded vertex w of d (dxTriMeshVertex, here inline: loading triangles
+// is the walk's hot path, and a call across the library goes through the
+// PLT).
+static inline void load_vertex(const dxTriMeshData *d, int w, dReal out[3])
+{
+    const char *p = (const char *)d->vertices + (size_t)w * (size_t)d->vertex_stride;
+    if (d->vertex_double) {
+        double v[3];
+        memcpy(v, p, sizeof v);
+        for (int k = 0; k < 3; k++) out[k] = (dReal)v[k];
+    } else {
+        float v[3];
+        memcpy(v, p, sizeof v);
+        for (int k = 0; k < 3; k++) out[k] = (dReal)v[k];
+    }
+}
+
 void dxTriLoad(const dxTriMeshData *d, int t, dxTri *out)
 {
+    dTriIndex idx[3];
+    memcpy(idx, (const char *)d->indices + (size_t)t * (size_t)d->tri_stride, sizeof idx);
     out->index = t;
-    dxTriMeshIndices(d, t, out->vi);
     for (int k = 0; k < 3; k++) {
-        out->vi[k] = d->weld[out->vi[k]];
-        dxTriMeshVertex(d, out->vi[k], out->v[k]);
+        out->vi[k] = d->weld[(int)idx[k]];
+        load_vertex(d, out->vi[k], out->v[k]);
     }
     for (int k = 0; k < 3; k++) out->n[k] = d->normal[3 * t + k];
     out->features = dxTriMeshFeatures(d, t);
@@ -59,23 +79,73 @@ static int merged_side(dxGeom *g, int a, int b)
     return m && m->merge_callback ? m->merge_callback(g, a, b) : -1;
 }
 
+// Below this many contacts the reduction compares them pair by pair; from
+// it on, it finds the candidates with the scratch's hash grid: the same
+// results, about a constant per contact instead of a pass over the others.
+enum { GRID_FROM = 96 };
+
+static int finite3(const dReal p[3])
+{
+    return dxIsFinite(p[0]) && dxIsFinite(p[1]) && dxIsFinite(p[2]);
+}
+
+// Whether contact a merges into kept contact b: (nearly) the same point,
+// (nearly) the same normal.
+static int duplicates(const dxTriMeshRaw *a, const dxTriMeshRaw *b, dReal tol)
+{
+    return dist2(a->pos, b->pos) <= tol * tol && dx_dot(a->n, b->n) > 1 - (dReal)1e-6;
+}
+
+// The lowest index among the n kept contacts that r[i] duplicates (n if
+// none), pair by pair or through the grid of the kept ones' positions.
+static int kept_duplicate(dxTriScratch *s, int n, int i, dReal tol, int grid)
+{
+    const dxTriMeshRaw *r = s->raw;
+    if (!grid) {
+        int j = 0;
+        while (j < n && !duplicates(&r[i], &r[j], tol)) j++;
+        return j;
+    }
+    int best = n, *heads[27];
+    if (!finite3(r[i].pos)) return n;   // a point that is not finite is near none
+    int cells = dxTriGridNear(&s->grid, r[i].pos, heads);
+    for (int c = 0; c < cells; c++)
+        for (int e = *heads[c]; e >= 0; e = s->grid.link[2 * e + 1]) {
+            int j = s->grid.link[2 * e];
+            if (j < best && duplicates(&r[i], &r[j], tol)) best = j;
+        }
+    return best;
+}
+
 // Merge contacts at (nearly) the same point with (nearly) the same normal,
-// keeping the deeper; returns the new count.
+// each into the first kept one it duplicates, keeping the deeper; returns
+// the new count. On the grid a kept contact that takes a deeper one's
+// place is entered again at its new point (the old entry is then stale:
+// harmless, as every candidate is tested at its current point).
 static int merge_duplicates(dxTriScratch *s, dxTriMesh *m, dxGeom *other, dReal tol)
 {
     dxTriMeshRaw *r = s->raw;
-    int n = 0;
+    int n = 0, grid = s->raw_count >= GRID_FROM;
+    if (grid) {
+        dReal extent = 0;
+        for (int i = 0; i < s->raw_count; i++)
+            if (finite3(r[i].pos))
+                for (int k = 0; k < 3; k++) extent = dMax(extent, dFabs(r[i].pos[k]));
+        dxTriGridStart(&s->grid, s->raw_count, tol, extent);
+    }
     for (int i = 0; i < s->raw_count; i++) {
-        int j = 0;
-        while (j < n && !(dist2(r[i].pos, r[j].pos) <= tol * tol &&
-                          dx_dot(r[i].n, r[j].n) > 1 - (dReal)1e-6))
-            j++;
+        int j = kept_duplicate(s, n, i, tol, grid);
         if (j == n) {
-            r[n++] = r[i];
+            r[n] = r[i];
+            if (grid && finite3(r[n].pos)) dxTriGridAdd(&s->grid, r[n].pos, n);
+            n++;
             continue;
         }
         int a = r[j].tri, b = r[i].tri, a2 = r[j].tri2, b2 = r[i].tri2;
-        if (r[i].depth > r[j].depth) r[j] = r[i];
+        if (r[i].depth > r[j].depth) {
+            r[j] = r[i];
+            if (grid && finite3(r[j].pos)) dxTriGridAdd(&s->grid, r[j].pos, j);
+        }
         r[j].tri = merged_side(&m->g, a, b);
         if (a2 >= 0 || b2 >= 0) r[j].tri2 = merged_side(other, a2, b2);
     }
@@ -87,13 +157,39 @@ static int merge_duplicates(dxTriScratch *s, dxTriMesh *m, dxGeom *other, dReal 
 #define SAME_NORMAL ((dReal)1 - 10 * DX_COLLIDE_EPS)
 #define SAME_LINE (100 * DX_COLLIDE_EPS)
 
+// The gift wrap's step in the plane of a flat group (uv: member i's
+// coordinates there at 2i, 2i + 1): from member cur, the member that all
+// the others are not clockwise of; among those in line with it (within a
+// relative sine of SAME_LINE) the farthest.
+static int wrap_next(const dReal *uv, int count, int cur)
+{
+    int next = -1;
+    dReal nu = 0, nv = 0;
+    for (int q = 0; q < count; q++) {
+        if (q == cur) continue;
+        dReal qu = uv[2 * q] - uv[2 * cur], qv = uv[2 * q + 1] - uv[2 * cur + 1];
+        if (next < 0) {
+            next = q, nu = qu, nv = qv;
+            continue;
+        }
+        // cross < 0: q is clockwise of next; collinear within a
+        // relative sine of SAME_LINE.
+        dReal cross = nu * qv - nv * qu, q2 = qu * qu + qv * qv, n2 = nu * nu + nv * nv;
+        dReal tol = SAME_LINE * dSqrt(q2 * n2);
+        if (cross < -tol || (cross <= tol && q2 > n2))
+            next = q, nu = qu, nv = qv;
+    }
+    return next;
+}
+
 // Within a group of contacts with one normal (one flat patch), the corners
 // of the patch's convex hull and its deepest point are what matters (with a
 // flat solid on it, where depth varies linearly, the corners alone): mark
 // them in keep[] (gift wrapping in the plane; points on a hull edge between
-// two corners are left out). members lists the group.
+// two corners are left out). members lists the group; uv has room for
+// 2 count numbers.
 static void mark_hull(const dxTriMeshRaw *r, const int *members, int count, dReal depth_tol,
-                      int *keep)
+                      int *keep, dReal *uv)
 {
     if (count <= 2) {
         for (int i = 0; i < count; i++) keep[members[i]] = 1;
@@ -105,35 +201,27 @@ static void mark_hull(const dxTriMeshRaw *r, const int *members, int count, dRea
     e2[0] = n[1] * e1[2] - n[2] * e1[1];
     e2[1] = n[2] * e1[0] - n[0] * e1[2];
     e2[2] = n[0] * e1[1] - n[1] * e1[0];
-#define U(i) dx_dot(r[members[i]].pos, e1)
-#define V(i) dx_dot(r[members[i]].pos, e2)
+    for (int i = 0; i < count; i++) {
+        uv[2 * i] = dx_dot(r[members[i]].pos, e1);
+        uv[2 * i + 1] = dx_dot(r[members[i]].pos, e2);
+    }
     int start = 0;
     for (int i = 1; i < count; i++)
-        if (U(i) < U(start) || (U(i) == U(start) && V(i) < V(start))) start = i;
+        if (uv[2 * i] < uv[2 * start] ||
+            (uv[2 * i] == uv[2 * start] && uv[2 * i + 1] < uv[2 * start + 1]))
+            start = i;
+    // Wrap until a member comes round again: the loop from it is the hull.
+    // The start, lowest in e1, is a corner but for rounding: it can lie on
+    // an edge between two corners, in line within SAME_LINE; then the wrap
+    // enters the loop at the next corner without coming back to it, and
+    // the members before the loop are unmarked.
     int cur = start;
-    for (int steps = 0; steps <= count; steps++) {
+    while (!keep[members[cur]]) {
         keep[members[cur]] = 1;
-        int next = -1;
-        dReal nu = 0, nv = 0;
-        for (int q = 0; q < count; q++) {
-            if (q == cur) continue;
-            dReal qu = U(q) - U(cur), qv = V(q) - V(cur);
-            if (next < 0) {
-                next = q, nu = qu, nv = qv;
-                continue;
-            }
-            // cross < 0: q is clockwise of next; collinear within a
-            // relative sine of SAME_LINE.
-            dReal cross = nu * qv - nv * qu, q2 = qu * qu + qv * qv, n2 = nu * nu + nv * nv;
-            dReal tol = SAME_LINE * dSqrt(q2 * n2);
-            if (cross < -tol || (cross <= tol && q2 > n2))
-                next = q, nu = qu, nv = qv;
-        }
-        cur = next;
-        if (cur == start) break;
+        cur = wrap_next(uv, count, cur);
     }
-#undef U
-#undef V
+    for (int entry = cur, p = start; p != entry; p = wrap_next(uv, count, p))
+        keep[members[p]] = 0;
     int deepest = 0;
     dReal corner_depth = -dInfinity;
     for (int i = 0; i < count; i++) {
@@ -143,23 +231,86 @@ static void mark_hull(const dxTriMeshRaw *r, const int *members, int count, dRea
     if (r[members[deepest]].depth > corner_depth + depth_tol) keep[members[deepest]] = 1;
 }
 
+// Room for n numbers in s->score (the flat groups' plane coordinates, the
+// spread's distances).
+static void reserve_reals(dxTriScratch *s, int n)
+{
+    if (n <= s->score_cap) return;
+    dFree(s->score, (size_t)s->score_cap * sizeof(dReal));
+    s->score = (dReal *)dAlloc((size_t)n * sizeof(dReal));
+    s->score_cap = n;
+}
+
+static int compare_ints(const void *a, const void *b)
+{
+    int x = *(const int *)a, y = *(const int *)b;
+    return (x > y) - (x < y);
+}
+
+// Whether every one of the n contacts' normals is a unit vector within
+// the flat groups' tolerance: then the normals of a group are within
+// sqrt(40 eps) of each other and the grid finds them.
+static int unit_normals(const dxTriMeshRaw *r, int n)
+{
+    for (int i = 0; i < n; i++) {
+        dReal l2 = dx_dot(r[i].n, r[i].n);
+        if (!(l2 > SAME_NORMAL && l2 < 2 - SAME_NORMAL)) return 0;
+    }
+    return 1;
+}
+
+// The flat group of contact i (those not yet in a group, from i on, whose
+// normal is within SAME_NORMAL of i's) into members in increasing order,
+// each marked done; returns its size. With the grid (of the normals, every
+// one unit), entries of contacts already in a group are unlinked as met.
+static int flat_group(dxTriScratch *s, int n, int i, int grid, int *members, int *done)
+{
+    const dxTriMeshRaw *r = s->raw;
+    int count = 0;
+    if (!grid) {
+        for (int j = i; j < n; j++)
+            if (!done[j] && dx_dot(r[i].n, r[j].n) > SAME_NORMAL) {
+                members[count++] = j;
+                done[j] = 1;
+            }
+        return count;
+    }
+    int *heads[27];
+    int cells = dxTriGridNear(&s->grid, r[i].n, heads);
+    for (int c = 0; c < cells; c++) {
+        int *link = heads[c];
+        while (*link >= 0) {
+            int e = *link, j = s->grid.link[2 * e];
+            if (!done[j] && dx_dot(r[i].n, r[j].n) > SAME_NORMAL) {
+                members[count++] = j;
+                done[j] = 1;
+            }
+            if (done[j]) *link = s->grid.link[2 * e + 1];
+            else link = &s->grid.link[2 * e + 1];
+        }
+    }
+    qsort(members, (size_t)count, sizeof *members, compare_ints);
+    return count;
+}
+
 // Keep only the hull corners (and an inner point deeper than them by more
 // than tol) of each flat group; returns the new count.
 static int prune_flat_groups(dxTriScratch *s, int n, dReal tol)
 {
     dxTriMeshReserveInts(&s->cand[0], &s->cand_cap[0], n);
     dxTriMeshReserveInts(&s->hits[0], &s->hits_cap[0], 2 * n);
+    reserve_reals(s, 2 * n);
     int *members = s->cand[0], *keep = s->hits[0], *done = s->hits[0] + n;
     for (int i = 0; i < n; i++) keep[i] = done[i] = 0;
+    int grid = n >= GRID_FROM && unit_normals(s->raw, n);
+    if (grid) {
+        dxTriGridStart(&s->grid, n, dSqrt(64 * DX_COLLIDE_EPS), 1);
+        for (int i = 0; i < n; i++) dxTriGridAdd(&s->grid, s->raw[i].n, i);
+    }
     for (int i = 0; i < n; i++) {
         if (done[i]) continue;
-        int count = 0;
-        for (int j = i; j < n; j++)
-            if (!done[j] && dx_dot(s->raw[i].n, s->raw[j].n) > SAME_NORMAL) {
-                members[count++] = j;
-                done[j] = 1;
-            }
-        mark_hull(s->raw, members, count, tol, keep);
+        int count = flat_group(s, n, i, grid, members, done);
+        mark_hull(s->raw, members, count, tol, keep, s->score);
     }
     int k = 0;
     for (int i = 0; i < n; i++)
@@ -195,20 +346,33 @@ static dReal hull_growth(const dReal *a, const dReal *b, const dReal *c, const d
 
 // Move the `keep` contacts to keep to the front: the deepest, the farthest
 // from it, the farthest from the line of those two, the one that widens
-// their triangle most, then each the farthest from those kept.
-static void select_spread(dxTriMeshRaw *r, int n, int keep)
+// their triangle most, then each the farthest from those kept. near[i]
+// (room for n) carries contact i's squared distance to the nearest kept
+// one from the first step that needs it on, so each step is one pass.
+static void select_spread(dxTriMeshRaw *r, dReal *near, int n, int keep)
 {
     int best = 0;
     for (int i = 1; i < n; i++)
         if (r[i].depth > r[best].depth) best = i;
     swap_raw(r, 0, best);
     dReal N[3] = { 0, 0, 0 };
+    int have_near = 0;
     for (int k = 1; k < keep; k++) {
+        int by_near = k >= 3 && !(k == 3 && dx_dot(N, N) > 0);
+        if (by_near && !have_near) {
+            for (int i = k; i < n; i++) {
+                near[i] = dInfinity;
+                for (int j = 0; j < k; j++) near[i] = dMin(near[i], dist2(r[i].pos, r[j].pos));
+            }
+            have_near = 1;
+        }
         dReal score_best = -1;
         best = k;
         for (int i = k; i < n; i++) {
             dReal score;
-            if (k == 2) {
+            if (k == 1) {
+                score = dist2(r[i].pos, r[0].pos);
+            } else if (k == 2) {
                 dReal e[3], d[3], cr[3];
                 for (int j = 0; j < 3; j++) {
                     e[j] = r[1].pos[j] - r[0].pos[j];
@@ -218,11 +382,10 @@ static void select_spread(dxTriMeshRaw *r, int n, int keep)
                 cr[1] = e[2] * d[0] - e[0] * d[2];
                 cr[2] = e[0] * d[1] - e[1] * d[0];
                 score = dx_dot(cr, cr);
-            } else if (k == 3 && dx_dot(N, N) > 0) {
+            } else if (!by_near) {
                 score = hull_growth(r[0].pos, r[1].pos, r[2].pos, N, r[i].pos);
             } else {
-                score = dInfinity;
-                for (int j = 0; j < k; j++) score = dMin(score, dist2(r[i].pos, r[j].pos));
+                score = near[i];
             }
             if (score > score_best) {
                 score_best = score;
@@ -230,6 +393,12 @@ static void select_spread(dxTriMeshRaw *r, int n, int keep)
             }
         }
         swap_raw(r, k, best);
+        if (have_near) {
+            dReal t = near[k];
+            near[k] = near[best];
+            near[best] = t;
+            for (int i = k + 1; i < n; i++) near[i] = dMin(near[i], dist2(r[i].pos, r[k].pos));
+        }
         if (k == 2) {
             dReal e[3], d[3];
             for (int j = 0; j < 3; j++) {
@@ -262,7 +431,8 @@ int dxTriMeshSpread(dxTriQuery *q, int n, int flags)
 {
     int max = dx_max_contacts(flags);
     if (n <= max) return n;
-    select_spread(q->s->raw, n, max);
+    reserve_reals(q->s, n);
+    select_spread(q->s->raw, q->s->score, n, max);
     return max;
 }
 
@@ -444,16 +614,23 @@ void dxTriSideNormal(const dxTri *t, int k, dReal m[3])
 }
 
 // Keep the part of polygon p (n points, tags tp) where m . (x - o) >= -slack;
-// a point made on this boundary gets the tag `made`.
+// a point made on this boundary gets the tag `made`. Returns the new count,
+// or -1 (nothing written) if every point is kept as it is.
 static int clip_polygon(dReal p[][3], const int *tp, int n, const dReal m[3], const dReal o[3],
                         dReal slack, int made, dReal out[][3], int *tout)
 {
+    dReal f[DX_TRI_POLY_MAX];
+    int inside = 0;
+    for (int i = 0; i < n; i++) {
+        dReal d[3] = { p[i][0] - o[0], p[i][1] - o[1], p[i][2] - o[2] };
+        f[i] = dx_dot(m, d) + slack;
+        inside += f[i] >= 0;
+    }
+    if (inside == n) return -1;
     int k = 0;
     for (int i = 0; i < n; i++) {
         const dReal *a = p[i], *b = p[(i + 1) % n];
-        dReal da[3] = { a[0] - o[0], a[1] - o[1], a[2] - o[2] };
-        dReal db[3] = { b[0] - o[0], b[1] - o[1], b[2] - o[2] };
-        dReal fa = dx_dot(m, da) + slack, fb = dx_dot(m, db) + slack;
+        dReal fa = f[i], fb = f[(i + 1) % n];
         if (fa >= 0) {
             for (int j = 0; j < 3; j++) out[k][j] = a[j];
             tout[k++] = tp[i];
@@ -477,21 +654,43 @@ static int flat_edge(const dxTriQuery *q, const dxTri *t, int k)
     return u >= 0 && dx_dot(t->n, q->data->normal + 3 * u) > 1 - 10 * DX_COLLIDE_EPS;
 }
 
-int dxTriClipToPrism(const dxTriQuery *q, const dxTri *t, dReal a[][3], int n, int *made)
+void dxTriPrismInit(const dxTriQuery *q, const dxTri *t, dxTriPrism *p)
 {
-    dReal b[DX_TRI_POLY_MAX][3], m[3], eps = DX_COLLIDE_EPS * q->scale;
-    int tb[DX_TRI_POLY_MAX];
+    dReal eps = DX_COLLIDE_EPS * q->scale;
+    for (int k = 0; k < 3; k++) {
+        dxTriSideNormal(t, k, p->m[k]);
+        p->slack[k] = eps * dSqrt(dx_dot(p->m[k], p->m[k]));
+        p->made[k] = flat_edge(q, t, k) ? DX_TRI_MADE_AT_FLAT_EDGE : DX_TRI_MADE_AT_EDGE;
+    }
+}
+
+int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, dReal a[][3], int n, int *made)
+{
+    // Side by side from a into b and back (the last result copied to a if
+    // it ended in b).
+    dReal b[DX_TRI_POLY_MAX][3];
+    int tb[DX_TRI_POLY_MAX], in_a = 1;
     for (int i = 0; i < n; i++) made[i] = DX_TRI_MADE_NOT;
     for (int k = 0; k < 3 && n > 0; k++) {
-        dxTriSideNormal(t, k, m);
-        int tag = flat_edge(q, t, k) ? DX_TRI_MADE_AT_FLAT_EDGE : DX_TRI_MADE_AT_EDGE;
-        n = clip_polygon(a, made, n, m, t->v[k], eps * dSqrt(dx_dot(m, m)), tag, b, tb);
+        int c = in_a ? clip_polygon(a, made, n, p->m[k], t->v[k], p->slack[k], p->made[k], b, tb)
+                     : clip_polygon(b, tb, n, p->m[k], t->v[k], p->slack[k], p->made[k], a, made);
+        if (c < 0) continue;   // unchanged
+        n = c;
+        in_a = !in_a;
+    }
+    if (!in_a)
         for (int i = 0; i < n; i++) {
             for (int j = 0; j < 3; j++) a[i][j] = b[i][j];
             made[i] = tb[i];
         }
-    }
     return n;
+}
+
+int dxTriClipToPrism(const dxTriQuery *q, const dxTri *t, dReal a[][3], int n, int *made)
+{
+    dxTriPrism p;
+    dxTriPrismInit(q, t, &p);
+    return dxTriClipToPrismWith(&p, t, a, n, made);
 }
 
 // ---- trimesh-plane ----------------------------------------------------------------

@@ -12,15 +12,45 @@
 #include "../../libodecollide/trimesh_internal.h"
 #include "collide_math.h"
 
+// A hash grid of points for the reduction's neighbour searches
+// (collide_trimesh_grid.c). A cell's list: its first entry `head`; entry e
+// is the point link[2e], followed by entry link[2e + 1] (negative: none).
+typedef struct dxTriCell {
+    int key[3];
+    int head;
+} dxTriCell;
+typedef struct dxTriGrid {
+    dxTriCell *cell;
+    int cell_cap, mask;
+    int *link;
+    int link_cap, links;
+    double inv;     // 1 / the cells' side
+    double reach;   // the search radius (widened for rounding)
+} dxTriGrid;
+
+// Empty the grid for up to `entries` points searched within `reach` of
+// each other, every coordinate within `extent` of 0 (finite points only).
+void dxTriGridStart(dxTriGrid *g, int entries, dReal reach, dReal extent);
+// Add point number `point` at p.
+void dxTriGridAdd(dxTriGrid *g, const dReal p[3], int point);
+// The lists of the cells that may hold points within reach of p: pointers
+// to their heads (so a walk may unlink entries); returns their count.
+int dxTriGridNear(dxTriGrid *g, const dReal p[3], int *heads[27]);
+void dxTriGridFree(dxTriGrid *g);
+
 // The scratch memory of one collision (collide_trimesh_scratch.c): up to
 // two triangle lists of each kind (candidates from the tree, triangles
-// hit; [1] for the second mesh of a trimesh pair) and the contacts before
-// the reduction.
+// hit; [1] for the second mesh of a trimesh pair), the contacts before
+// the reduction, and the reduction's grid and per-contact numbers.
 typedef struct dxTriScratch {
     int *cand[2], *hits[2];
     int cand_cap[2], hits_cap[2];
     dxTriMeshRaw *raw;
     int raw_count, raw_cap;
+    dxTriGrid grid;
+    dReal *score;      // the reduction's numbers per contact
+    int score_cap;
+    dReal pair[48];   // a triangle test's per-pair values (dxTriQuery.prepared)
 } dxTriScratch;
 
 // A free set of the calling thread's (NULL, reported, if collisions nest
@@ -51,6 +81,9 @@ typedef struct dxTriQuery {
     dReal pos[3];      // the other geom's position ...
     dReal R[12];       // ... and rotation (row-major 3x4) in the mesh frame
     dReal scale;       // the other geom's size (tolerances)
+    // Whether the triangle test has worked out what it needs once per pair
+    // (into s->pair) on an earlier triangle: dxTriMeshGather clears it.
+    int prepared;
 } dxTriQuery;
 
 // One triangle: its vertices, unit normal, feature bits (DX_TRI_*_FEATURE)
@@ -128,5 +161,17 @@ void dxTriSideNormal(const dxTri *t, int k, dReal m[3]);
 enum { DX_TRI_POLY_MAX = 36 };
 enum { DX_TRI_MADE_NOT, DX_TRI_MADE_AT_EDGE, DX_TRI_MADE_AT_FLAT_EDGE };
 int dxTriClipToPrism(const dxTriQuery *q, const dxTri *t, dReal a[][3], int n, int *made);
+
+// The prism of a triangle made once for many clips: each side's inward
+// normal m (not unit), the rounding slack it is widened by (in units of
+// m) and the tag of the points made on it.
+typedef struct dxTriPrism {
+    dReal m[3][3];
+    dReal slack[3];
+    int made[3];
+} dxTriPrism;
+void dxTriPrismInit(const dxTriQuery *q, const dxTri *t, dxTriPrism *p);
+// dxTriClipToPrism with the prism made by dxTriPrismInit(q, t, p).
+int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, dReal a[][3], int n, int *made);
 
 #endif

@@ -274,8 +274,8 @@ static void triangle_interval(const dxTri *t, const dReal L[3], dReal *lo, dReal
 
 // Whether the axis L separates the triangle from the box (centre c, unit
 // axes ax[j], half sides h[j]).
-static int separates_box(const dxTri *t, const dReal L[3], const dReal c[3], dReal ax[3][3],
-                         const dReal h[3])
+static int separates_box(const dxTri *t, const dReal L[3], const dReal c[3],
+                         const dReal ax[3][3], const dReal h[3])
 {
     if (dx_dot(L, L) <= DX_COLLIDE_EPS * DX_COLLIDE_EPS) return 0;   // parallel edges
     dReal lo, hi, bc = dx_dot(L, c), br = 0;
@@ -303,7 +303,8 @@ static int separates_cylinder(const dxTri *t, const dReal L[3], const dReal c[3]
 // gains at most three).
 enum { CYL_SIDES = 32, POLY_MAX = DX_TRI_POLY_MAX };
 
-// One face (polygon a, n corners) of a convex solid against triangle t:
+// One face (polygon a, n corners, at least one of them on or behind the
+// triangle's plane) of a convex solid against triangle t (prism p):
 // clipped to the triangle's prism (widened by rounding), its points on or
 // behind the triangle's plane are contacts with the face normal and their
 // depth below the plane (where the face crosses the plane the depth is zero
@@ -311,16 +312,12 @@ enum { CYL_SIDES = 32, POLY_MAX = DX_TRI_POLY_MAX };
 // left out: they are corners of the triangulation, not of the contact
 // patch (the corners of the solid over the neighbour come from it).
 // Returns 1 if any was added.
-static int face_contacts(dxTriQuery *q, const dxTri *t, dReal a[][3], int n)
+static int clipped_face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p,
+                                 dReal a[][3], int n)
 {
-    // A face wholly in front of the plane adds nothing (clipping keeps
-    // points within the polygon): skip the clipping.
     dReal eps = DX_COLLIDE_EPS * q->scale;
-    int behind = 0;
-    for (int i = 0; i < n && !behind; i++) behind = height(t, a[i]) <= eps;
-    if (!behind) return 0;
     int made[POLY_MAX];
-    n = dxTriClipToPrism(q, t, a, n, made);
+    n = dxTriClipToPrismWith(p, t, a, n, made);
     int added = 0;
     for (int i = 0; i < n; i++) {
         dReal depth = -height(t, a[i]);
@@ -331,38 +328,132 @@ static int face_contacts(dxTriQuery *q, const dxTri *t, dReal a[][3], int n)
     return added;
 }
 
+// The same for any face: one wholly in front of the plane adds nothing
+// (clipping keeps points within the polygon), so it is not clipped.
+static int face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p, dReal a[][3],
+                         int n)
+{
+    dReal eps = DX_COLLIDE_EPS * q->scale;
+    int behind = 0;
+    for (int i = 0; i < n && !behind; i++) behind = height(t, a[i]) <= eps;
+    return behind ? clipped_face_contacts(q, t, p, a, n) : 0;
+}
+
+// A box's values for a pair, worked out on its first triangle (in q->s->pair):
+// unit axes, half sides, corners (bit j of the index picks the sign of
+// axis j), and on each axis the centre's projection and the box's reach.
+typedef struct box_pair {
+    dReal ax[3][3], h[3], corner[8][3], centre_on[3], reach_on[3], lo[3], hi[3];
+} box_pair;
+_Static_assert(sizeof(box_pair) <= sizeof(((dxTriScratch *)0)->pair), "box_pair fits");
+
+static const box_pair *prepare_box(dxTriQuery *q)
+{
+    box_pair *b = (box_pair *)q->s->pair;
+    if (q->prepared) return b;
+    const dReal *side = ((const dxBox *)q->other)->side, *c = q->pos;
+    for (int j = 0; j < 3; j++) {
+        b->h[j] = side[j] / 2;
+        dx_axis(q->R, j, b->ax[j]);
+    }
+    for (int j = 0; j < 3; j++) {
+        b->centre_on[j] = dx_dot(b->ax[j], c);
+        b->reach_on[j] = 0;
+        for (int k = 0; k < 3; k++) b->reach_on[j] += b->h[k] * dFabs(dx_dot(b->ax[j], b->ax[k]));
+    }
+    const dReal *h = b->h;
+    for (int v = 0; v < 8; v++)
+        for (int i = 0; i < 3; i++)
+            b->corner[v][i] = c[i] + (v & 1 ? h[0] : -h[0]) * b->ax[0][i] +
+                              (v & 2 ? h[1] : -h[1]) * b->ax[1][i] +
+                              (v & 4 ? h[2] : -h[2]) * b->ax[2][i];
+    // The box's bounding box in the mesh frame, widened by rounding.
+    dReal eps = DX_COLLIDE_EPS * q->scale;
+    for (int i = 0; i < 3; i++) {
+        b->lo[i] = b->hi[i] = b->corner[0][i];
+        for (int v = 1; v < 8; v++) {
+            b->lo[i] = dMin(b->lo[i], b->corner[v][i]);
+            b->hi[i] = dMax(b->hi[i], b->corner[v][i]);
+        }
+        b->lo[i] -= eps;
+        b->hi[i] += eps;
+    }
+    q->prepared = 1;
+    return b;
+}
+
+// Whether the box's axis j separates it from the triangle.
+static int box_axis_separates(const box_pair *b, const dxTri *t, int j)
+{
+    dReal lo, hi;
+    triangle_interval(t, b->ax[j], &lo, &hi);
+    return hi < b->centre_on[j] - b->reach_on[j] || lo > b->centre_on[j] + b->reach_on[j];
+}
+
 static int box_test(dxTriQuery *q, const dxTri *t)
 {
-    const dReal *side = ((const dxBox *)q->other)->side;
     const dReal *c = q->pos;
     if (height(t, c) < 0) return 0;
-    dReal h[3] = { side[0] / 2, side[1] / 2, side[2] / 2 }, ax[3][3];
-    for (int j = 0; j < 3; j++) dx_axis(q->R, j, ax[j]);
-    if (separates_box(t, t->n, c, ax, h)) return 0;
+    const box_pair *b = prepare_box(q);
+    // Apart by more than rounding along a mesh axis (the tree's leaves hold
+    // four triangles): then one of the axes below separates them by as
+    // much, this is only quicker.
+    for (int i = 0; i < 3; i++)
+        if (dMax(t->v[0][i], dMax(t->v[1][i], t->v[2][i])) < b->lo[i] ||
+            dMin(t->v[0][i], dMin(t->v[1][i], t->v[2][i])) > b->hi[i])
+            return 0;
+    // The axes in the order of what they reject in a rain of boxes on
+    // terrain (of the triangles the tree gives: 30 %, 39 %, 7 %; 24 % touch):
+    // the triangle's normal, the box's axes, the edges' cross products.
+    if (separates_box(t, t->n, c, b->ax, b->h)) return 0;
     for (int j = 0; j < 3; j++)
-        if (separates_box(t, ax[j], c, ax, h)) return 0;
+        if (box_axis_separates(b, t, j)) return 0;
     for (int k = 0; k < 3; k++) {
         dReal e[3], L[3];
         sub3(e, t->v[(k + 1) % 3], t->v[k]);
         for (int j = 0; j < 3; j++) {
-            cross3(L, e, ax[j]);
-            if (separates_box(t, L, c, ax, h)) return 0;
+            cross3(L, e, b->ax[j]);
+            if (separates_box(t, L, c, b->ax, b->h)) return 0;
         }
     }
-    // Corners: bit j of the index picks the sign of axis j.
-    dReal corner[8][3];
-    for (int v = 0; v < 8; v++)
-        for (int i = 0; i < 3; i++)
-            corner[v][i] = c[i] + (v & 1 ? h[0] : -h[0]) * ax[0][i] +
-                           (v & 2 ? h[1] : -h[1]) * ax[1][i] + (v & 4 ? h[2] : -h[2]) * ax[2][i];
+    // A face is clipped if one of its corners is on or behind the plane.
     static const int faces[6][4] = { { 0, 2, 6, 4 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
                                      { 2, 3, 7, 6 }, { 0, 1, 3, 2 }, { 4, 5, 7, 6 } };
+    dReal eps = DX_COLLIDE_EPS * q->scale;
+    unsigned behind = 0;   // bit v: corner v
+    for (int v = 0; v < 8; v++)
+        if (height(t, b->corner[v]) <= eps) behind |= 1u << v;
+    dxTriPrism p;
+    dxTriPrismInit(q, t, &p);
+    // Bit v of outside[k]: corner v is beyond side k of the prism by more
+    // than rounding (the clip's measure m . (x - v_k) + slack below zero by
+    // one slack more, a margin for working it out from the centre and the
+    // axes instead). A face with its four corners beyond one side clips to
+    // nothing.
+    unsigned outside[3] = { 0, 0, 0 };
+    for (int k = 0; k < 3; k++) {
+        dReal d[3], off[3];
+        sub3(d, c, t->v[k]);
+        dReal f0 = dx_dot(p.m[k], d) + 2 * p.slack[k];
+        for (int j = 0; j < 3; j++) off[j] = b->h[j] * dx_dot(p.m[k], b->ax[j]);
+        for (int v = 0; v < 8; v++) {
+            dReal f = f0 + (v & 1 ? off[0] : -off[0]) + (v & 2 ? off[1] : -off[1]) +
+                      (v & 4 ? off[2] : -off[2]);
+            if (f < 0) outside[k] |= 1u << v;
+        }
+    }
     int added = 0;
     for (int f = 0; f < 6; f++) {
+        const int *fv = faces[f];
+        unsigned mask = 1u << fv[0] | 1u << fv[1] | 1u << fv[2] | 1u << fv[3];
+        if (!(behind & mask)) continue;
+        if ((outside[0] & mask) == mask || (outside[1] & mask) == mask ||
+            (outside[2] & mask) == mask)
+            continue;
         dReal a[POLY_MAX][3];
         for (int i = 0; i < 4; i++)
-            for (int j = 0; j < 3; j++) a[i][j] = corner[faces[f][i]][j];
-        added |= face_contacts(q, t, a, 4);
+            for (int j = 0; j < 3; j++) a[i][j] = b->corner[fv[i]][j];
+        added |= clipped_face_contacts(q, t, &p, a, 4);
     }
     return added;
 }
@@ -420,10 +511,12 @@ static int cylinder_test(dxTriQuery *q, const dxTri *t)
     }
     int added = 0;
     dReal poly[POLY_MAX][3];
+    dxTriPrism p;
+    dxTriPrismInit(q, t, &p);
     for (int cap = 0; cap < 2; cap++) {
         for (int s = 0; s < CYL_SIDES; s++)
             for (int i = 0; i < 3; i++) poly[s][i] = rim[cap][s][i];
-        added |= face_contacts(q, t, poly, CYL_SIDES);
+        added |= face_contacts(q, t, &p, poly, CYL_SIDES);
     }
     for (int s = 0; s < CYL_SIDES; s++) {
         int u = (s + 1) % CYL_SIDES;
@@ -433,7 +526,7 @@ static int cylinder_test(dxTriQuery *q, const dxTri *t)
             poly[2][i] = rim[1][u][i];
             poly[3][i] = rim[1][s][i];
         }
-        added |= face_contacts(q, t, poly, 4);
+        added |= face_contacts(q, t, &p, poly, 4);
     }
     return added;
 }
@@ -523,6 +616,8 @@ static int convex_test(dxTriQuery *q, const dxTri *t)
         }
     }
     int added = 0;
+    dxTriPrism p;
+    dxTriPrismInit(q, t, &p);
     const unsigned *poly = h->polygons;
     for (unsigned f = 0; f < h->planecount; f++) {
         unsigned count = *poly++;
@@ -533,7 +628,7 @@ static int convex_test(dxTriQuery *q, const dxTri *t)
             hull_point(q, h, poly[0], a[n++]);
             for (unsigned i = start; i < count && n < HULL_PIECE; i++)
                 hull_point(q, h, poly[i], a[n++]);
-            added |= face_contacts(q, t, a, n);
+            added |= face_contacts(q, t, &p, a, n);
             if (start + (HULL_PIECE - 1) >= count) break;
         }
         poly += count;

@@ -38,6 +38,8 @@ static void free_thread_scratch(void *p)
             dFree(s->hits[k], (size_t)s->hits_cap[k] * sizeof(int));
         }
         dFree(s->raw, (size_t)s->raw_cap * sizeof(dxTriMeshRaw));
+        dxTriGridFree(&s->grid);
+        dFree(s->score, (size_t)s->score_cap * sizeof(dReal));
     }
     if (t->tc) dFree(t->tc, t->tc_size);
     dFree(t, sizeof *t);
