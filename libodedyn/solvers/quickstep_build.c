@@ -22,19 +22,10 @@
 #define PIVOT_EPS (64 * DBL_EPSILON)
 #endif
 
-// What the build needs about the island.
-typedef struct qs_input {
-    const dxIslandBodies *bd;
-    const dReal *rates;    // v/h + M^-1 f per body, 6 each
-    dReal fps, sor_w;
-    int body0, nb;         // the island's first body in fc, its number of bodies
-    int warm;              // the joint is a contact that starts warm: its normal
-                           // row is relaxed with factor 1 (quickstep.c)
-} qs_input;
-
 // The rows of one joint (joint-local indices, as dxJointRowsFill makes them).
 typedef struct qs_jrows {
     int m;
+    int direct;            // a contact made straight into its rows (quickstep_contact.c)
     dReal *J, *c, *cfm, *lo, *hi;
     int *findex;
     int b[2];              // island indices of its bodies, -1: static or kinematic
@@ -316,14 +307,6 @@ static const dReal *couple_to_block(dxArena *a, const qs_jblock *jb, dReal *iMJ,
     return g;
 }
 
-// The largest finite number: a friction coefficient standing in for an
-// infinite one keeps 0 * coefficient at 0.
-#ifdef dSINGLE
-#define QS_BIG FLT_MAX
-#else
-#define QS_BIG DBL_MAX
-#endif
-
 // Row i of the joint (lambda positions of the joint's rows in pos, the
 // constant 1 at position one): D J and M^-1 J^T as pairs, the scaled rhs and
 // cfm, the bounds. blk, jb: the joint's block to couple to and its build
@@ -516,21 +499,27 @@ static void keep_feedback(dxArena *a, dxJoint *j, const qs_jrows *jr, const int 
 }
 
 // The rows of every joint of the island (count_rows done), in arena memory
-// that lives until the step ends.
+// that lives until the step ends; contacts that go straight to the solver's
+// rows are only marked (their rows are made in dxQuickBuild).
 static qs_jrows *fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h)
 {
     dxArena *a = w->arena;
-    size_t m = 0;
-    for (int k = 0; k < is->nj; k++) m += (size_t)is->joints[k]->rows.m;
     qs_jrows *jrows = DX_ARENA_ARRAY(a, qs_jrows, is->nj + 1);
+    size_t m = 0;
+    for (int k = 0; k < is->nj; k++) {
+        dxJoint *j = is->joints[k];
+        jrows[k].m = j->rows.m;
+        jrows[k].direct = j->rows.m > 0 && dxQuickContactIsDirect(j);
+        if (!jrows[k].direct) m += (size_t)j->rows.m;
+    }
     dReal *J = DX_ARENA_ARRAY(a, dReal, m * DX_ROW_SKIP + 1);
     dReal *num = DX_ARENA_ARRAY(a, dReal, 4 * m + 1);
     int *findex = DX_ARENA_ARRAY(a, int, m + 1);
     for (int k = 0; k < is->nj; k++) {
         dxJoint *j = is->joints[k];
         qs_jrows *jr = &jrows[k];
+        if (jr->direct) continue;
         const size_t jm = (size_t)j->rows.m;
-        jr->m = j->rows.m;
         jr->J = J;
         jr->c = num;
         jr->cfm = num + jm;
@@ -605,12 +594,16 @@ void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *b
     qs_jrows *jrows = fill_island_rows(w, is, h);
     dReal *rates = sys->rates + 6 * part->body0;
     dxIslandBodyRates(is, bd, fps, rates);
-    const qs_input in = { bd, rates, fps, w->qs_w, part->body0, is->nb, 0 };
-    const qs_input in_warm = { bd, rates, fps, w->qs_w, part->body0, is->nb, 1 };
+    const qs_input in = { bd, rates, fps, w->erp, w->qs_w, part->body0, is->nb, 0 };
+    const qs_input in_warm = { bd, rates, fps, w->erp, w->qs_w, part->body0, is->nb, 1 };
     for (int k = 0; k < is->nj; k++) {
         dxJoint *j = is->joints[k];
         qs_jrows *jr = &jrows[k];
         if (jr->m == 0) continue;
+        if (jr->direct) {
+            dxQuickContact(&in, j, sys);
+            continue;
+        }
         joint_sides(&in, jr);
         for (int i = 0; i < jr->m; i++) s->pos[i] = -1;
         qs_warm ws;
