@@ -156,6 +156,11 @@ static int islands_by_length(const qs_island *parts, int count, int block, int *
 static void interleave(const qs_system *sys, const qs_island *parts, const int *list, int n,
                        int block)
 {
+    if (n == 1 && !block) {   // one island (a heap): its order as it is
+        const qs_island *p = &parts[list[0]];
+        memcpy(sys->seq, sys->order + p->order0, sizeof(int) * (size_t)p->norder);
+        return;
+    }
     int out = 0;
     for (int t = 0; n > 0; t++) {
         while (n > 0 && island_length(&parts[list[n - 1]], block) <= t) n--;
