@@ -184,9 +184,9 @@ static void mode_build(mode_scene *s, int surface)
             g = dCreateBox(s->space, REAL(0.5), REAL(0.4), REAL(0.5));
         } else if (i < MODE_BOXES + MODE_SPHERES) {   // spheres rolling and falling
             const int k = i - MODE_BOXES;
-            dBodySetPosition(b, REAL(-1) + REAL(0.25) * k, REAL(0.8), REAL(0.2) + REAL(0.3) * k);
+            dBodySetPosition(b, -1 + REAL(0.25) * k, REAL(0.8), REAL(0.2) + REAL(0.3) * k);
             dBodySetLinearVel(b, REAL(0.8), REAL(-0.4) * k, -1);
-            dBodySetAngularVel(b, 3, 0, REAL(2) * k);
+            dBodySetAngularVel(b, 3, 0, 2 * (dReal)k);
             dMassSetSphere(&m, 1, REAL(0.15));
             g = dCreateSphere(s->space, REAL(0.15));
         } else if (i == MODE_BODIES - 2) {   // a capsule lying across, spinning

@@ -6,7 +6,8 @@
 // scaled by D = sor_w / A_ii with M^-1 J^T precomputed (quickstep.h); and
 // the warm start of contacts (quickstep.c): the forces of the same contact
 // in the last step (quickstep_warm.c) as the starting lambdas, fc to match,
-// and D = 1 / A_ii for a warm contact's normal row.
+// and D = 1 / A_ii for a warm contact's normal row. Plain contacts skip the
+// joint rows: quickstep_contact.c makes their rows, the same way.
 
 #include "quickstep.h"
 
