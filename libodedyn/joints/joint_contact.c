@@ -102,7 +102,10 @@ static void angular_row(const dxJoint *j, dxJointRows *rows, int row, const dVec
 }
 
 // A linear row along d (stored sense) through the contact point:
-// J1l = d, J1a = arm0 x d, J2l = -d, J2a = -(arm1 x d) (dxContactRows).
+// J1l = d, J1a = arm0 x d, J2l = -d, J2a = -(arm1 x d) (dxContactRows). The
+// arms are those of the first step, so the row stays the same over
+// StepFast1's sub-steps (a rolling ball's contact point does not travel with
+// its material).
 static void linear_row(const dxContactRows *r, dxJointRows *rows, int row, const dReal *d)
 {
     const int o = row * rows->rowskip;
