@@ -30,7 +30,10 @@
 //
 // dxJointContactWarmInfo gives dWorldQuickStep's warm start (quickstep_warm.c)
 // the contact point and which friction rows follow the normal row, so that it
-// can find the same contact in the last step's forces.
+// can find the same contact in the last step's forces; dxJointContactRows
+// gives it a plain contact's rows as numbers (directions, arms, targets,
+// bounds), which it turns into its own rows directly (quickstep_contact.c).
+// The joint's own rows (fill_rows) are made from the same numbers.
 //
 // Bad input at creation: a NULL world or contact or a destroyed group is
 // reported and no joint is made (returns 0). A non-finite position, normal
@@ -42,6 +45,7 @@
 
 #include "joint_kept.h"
 #include "joint_geometry.h"
+#include "step_internal.h"
 
 // The rows a contact contributes, by kind (bit set = row present).
 enum {
@@ -98,31 +102,38 @@ static void angular_row(const dxJoint *j, dxJointRows *rows, int row, const dVec
 }
 
 // A linear row along d (stored sense) through the contact point:
-// J1l = d, J1a = arm0 x d, J2l = -d, J2a = -(arm1 x d). The arms are those
-// of the first step, so the row stays the same over StepFast1's sub-steps
-// (a rolling ball's contact point does not travel with its material).
-static void linear_row(const dxJointContact *c, dxJointRows *rows, int row, const dVector3 d)
+// J1l = d, J1a = arm0 x d, J2l = -d, J2a = -(arm1 x d) (dxContactRows). The
+// arms are those of the first step, so the row stays the same over
+// StepFast1's sub-steps (a rolling ball's contact point does not travel with
+// its material).
+static void linear_row(const dxContactRows *r, dxJointRows *rows, int row, const dReal *d)
 {
     const int o = row * rows->rowskip;
     dCopyVector3(rows->J1l + o, d);
-    dCalcVectorCross3(rows->J1a + o, c->arm[0], d);
-    if (dxJointBody(&c->base, 1)) {
+    dCalcVectorCross3(rows->J1a + o, r->arm[0], d);
+    if (r->arm[1]) {
         dCopyNegatedVector3(rows->J2l + o, d);
-        dCalcVectorCross3(rows->J2a + o, d, c->arm[1]);
+        dCalcVectorCross3(rows->J2a + o, d, r->arm[1]);
     } else {
         dZeroVector3(rows->J2l + o);
         dZeroVector3(rows->J2a + o);
     }
 }
 
-// The current value of J v for row `row` (both bodies, kinematic included).
-static dReal row_velocity(const dxJoint *j, const dxJointRows *rows, int row)
+// The current relative velocity along n (stored sense) at the contact: J v
+// of the normal row (both bodies, kinematic included).
+static dReal normal_velocity(const dxJointContact *c, const dVector3 n)
 {
-    const struct dxBody *b0 = dxJointBody(j, 0), *b1 = dxJointBody(j, 1);
-    const int o = row * rows->rowskip;
-    dReal v = dCalcVectorDot3(rows->J1l + o, b0->lvel) + dCalcVectorDot3(rows->J1a + o, b0->avel);
-    if (b1)
-        v += dCalcVectorDot3(rows->J2l + o, b1->lvel) + dCalcVectorDot3(rows->J2a + o, b1->avel);
+    const struct dxBody *b0 = dxJointBody(&c->base, 0), *b1 = dxJointBody(&c->base, 1);
+    dVector3 a;
+    dCalcVectorCross3(a, c->arm[0], n);
+    dReal v = dCalcVectorDot3(n, b0->lvel) + dCalcVectorDot3(a, b0->avel);
+    if (b1) {
+        dVector3 l;
+        dCopyNegatedVector3(l, n);
+        dCalcVectorCross3(a, n, c->arm[1]);
+        v += dCalcVectorDot3(l, b1->lvel) + dCalcVectorDot3(a, b1->avel);
+    }
     return v;
 }
 
@@ -200,50 +211,75 @@ static dReal current_depth(dxJointContact *c, const dVector3 n)
     return c->contact.geom.depth - dCalcVectorDot3(n, d0);
 }
 
-// Row 0: the bodies may separate but not approach. Target relative normal
-// velocity: the penetration correction fps * erp * (depth - surface layer),
-// capped at the world's max correcting velocity; with Bounce, at least
-// -bounce times the incoming velocity (relative to the surface motion);
-// with MotionN, plus the surface's own normal velocity.
-static void normal_row(dxJointContact *c, dxJointRows *rows, const dVector3 n)
+// The normal row's target relative velocity: the penetration correction
+// fps * erp * (depth - surface layer), capped at the world's max correcting
+// velocity; with Bounce, at least -bounce times the incoming velocity
+// (relative to the surface motion); with MotionN, plus the surface's own
+// normal velocity. The bodies may separate but not approach.
+static dReal normal_target(dxJointContact *c, const dVector3 n, dReal fps, dReal world_erp)
 {
-    const dxJoint *j = &c->base;
     const dSurfaceParameters *s = &c->contact.surface;
-    const struct dxWorld *w = j->world;
+    const struct dxWorld *w = c->base.world;
     const dReal depth = current_depth(c, n);   // first: it may record the arms
-    linear_row(c, rows, 0, n);
-
-    const dReal erp = (s->mode & dContactSoftERP) ? s->soft_erp : rows->erp;
+    const dReal erp = (s->mode & dContactSoftERP) ? s->soft_erp : world_erp;
     const dReal excess = depth - w->contact_surface_layer;
     dReal target = 0;
     if (excess > 0) {
-        target = rows->fps * erp * excess;
+        target = fps * erp * excess;
         if (target > w->max_correcting_vel) target = w->max_correcting_vel;
     }
     const dReal motion = (s->mode & dContactMotionN) ? s->motionN : 0;
     if (s->mode & dContactBounce) {
-        const dReal incoming = row_velocity(j, rows, 0) - motion;   // < 0: approaching
+        const dReal incoming = normal_velocity(c, n) - motion;   // < 0: approaching
         if (-incoming > s->bounce_vel) {
             const dReal outgoing = -s->bounce * incoming;
             if (outgoing > target) target = outgoing;
         }
     }
-    rows->c[0] = target + motion;
-    rows->cfm[0] = (s->mode & dContactSoftCFM) ? s->soft_cfm : w->cfm;
-    rows->lo[0] = 0;
-    rows->hi[0] = dInfinity;
-    rows->findex[0] = -1;
+    return target + motion;
 }
 
-// Friction row along t (stored sense): target tangential velocity `motion`,
-// cfm `slip` (force-dependent slip: velocity = slip * force) if set.
-static void friction_row(dxJointContact *c, dxJointRows *rows, int row, const dVector3 t,
+// Friction row `row` of r along the stored direction t: coefficient k,
+// target tangential velocity `motion`, cfm `slip` (force-dependent slip:
+// velocity = slip * force) if set.
+static void friction_row(const dxJointContact *c, dxContactRows *r, int row, const dReal *t,
                          dReal k, int pyramid, dReal motion, int has_slip, dReal slip)
 {
-    linear_row(c, rows, row, t);
-    rows->c[row] = motion;
-    rows->cfm[row] = has_slip ? slip : c->base.world->cfm;
-    friction_bounds(rows, row, k, pyramid);
+    r->d[row] = t;
+    r->c[row] = motion;
+    r->cfm[row] = has_slip ? slip : c->base.world->cfm;
+    r->k[row] = k;
+    r->pyramid[row] = pyramid != 0;
+}
+
+// The contact's normal and sliding friction rows (a live contact).
+static void contact_rows(dxJointContact *c, dReal fps, dReal erp, dxContactRows *r)
+{
+    const dSurfaceParameters *s = &c->contact.surface;
+    const int mode = s->mode;
+    // Stored sense: the user's directions, negated when the joint is stored
+    // reversed (user body 2 as body 0).
+    const dReal sign = (c->base.flags & DX_JOINT_REVERSE) ? -1 : 1;
+    dCopyScaledVector3(r->n, c->n, sign);
+    dCopyScaledVector3(r->t1, c->t1, sign);
+    dCopyScaledVector3(r->t2, c->t2, sign);
+    r->d[0] = r->n;
+    r->c[0] = normal_target(c, r->n, fps, erp);   // first: it may record the arms
+    r->cfm[0] = (mode & dContactSoftCFM) ? s->soft_cfm : c->base.world->cfm;
+    r->k[0] = 0;
+    r->pyramid[0] = 0;
+    r->arm[0] = c->arm[0];
+    r->arm[1] = dxJointBody(&c->base, 1) ? c->arm[1] : NULL;
+    r->point = c->contact.geom.pos;
+    r->friction = (int)(c->rows_present & (ROW_T1 | ROW_T2));
+    int row = 1;
+    if (c->rows_present & ROW_T1)
+        friction_row(c, r, row++, r->t1, s->mu, mode & dContactApprox1_1,
+                     (mode & dContactMotion1) ? s->motion1 : 0, mode & dContactSlip1, s->slip1);
+    if (c->rows_present & ROW_T2)
+        friction_row(c, r, row++, r->t2, c->mu2, mode & dContactApprox1_2,
+                     (mode & dContactMotion2) ? s->motion2 : 0, mode & dContactSlip2, s->slip2);
+    r->m = row;
 }
 
 static void contact_fill_rows(dxJoint *j, dxJointRows *rows)
@@ -252,35 +288,50 @@ static void contact_fill_rows(dxJoint *j, dxJointRows *rows)
     if (c->inert) return;
     const dSurfaceParameters *s = &c->contact.surface;
     const int mode = s->mode;
-    // Stored sense: the user's directions, negated when the joint is stored
-    // reversed (user body 2 as body 0).
-    const dReal sign = (j->flags & DX_JOINT_REVERSE) ? -1 : 1;
-    dVector3 n, t1, t2;
-    dCopyScaledVector3(n, c->n, sign);
-    dCopyScaledVector3(t1, c->t1, sign);
-    dCopyScaledVector3(t2, c->t2, sign);
-
-    normal_row(c, rows, n);
-    int row = 1;
+    dxContactRows r;
+    contact_rows(c, rows->fps, rows->erp, &r);
+    for (int i = 0; i < r.m; i++) {
+        linear_row(&r, rows, i, r.d[i]);
+        rows->c[i] = r.c[i];
+        rows->cfm[i] = r.cfm[i];
+        if (i > 0) {
+            friction_bounds(rows, i, r.k[i], r.pyramid[i]);
+            continue;
+        }
+        rows->lo[0] = 0;
+        rows->hi[0] = dInfinity;
+        rows->findex[0] = -1;
+    }
+    int row = r.m;
     const unsigned present = c->rows_present;
-    if (present & ROW_T1)
-        friction_row(c, rows, row++, t1, s->mu, mode & dContactApprox1_1,
-                     (mode & dContactMotion1) ? s->motion1 : 0, mode & dContactSlip1, s->slip1);
-    if (present & ROW_T2)
-        friction_row(c, rows, row++, t2, c->mu2, mode & dContactApprox1_2,
-                     (mode & dContactMotion2) ? s->motion2 : 0, mode & dContactSlip2, s->slip2);
     if (present & ROW_R1) {
-        angular_row(j, rows, row, t1);
+        angular_row(j, rows, row, r.t1);
         friction_bounds(rows, row++, s->rho, mode & dContactApprox1_1);
     }
     if (present & ROW_R2) {
-        angular_row(j, rows, row, t2);
+        angular_row(j, rows, row, r.t2);
         friction_bounds(rows, row++, c->rho2, mode & dContactApprox1_2);
     }
     if (present & ROW_RN) {
-        angular_row(j, rows, row, n);
+        angular_row(j, rows, row, r.n);
         friction_bounds(rows, row, c->rhoN, mode & dContactApprox1_N);
     }
+}
+
+int dxJointContactIsPlain(const dxJoint *j)
+{
+    const dxJointContact *c = (const dxJointContact *)j;
+    if (j->cls->type != dJointTypeContact || c->inert) return 0;
+    if (c->rows_present & (ROW_R1 | ROW_R2 | ROW_RN)) return 0;
+    // Two unbounded friction rows would be solved as a block (quickstep_build.c).
+    const int t1 = (c->rows_present & ROW_T1) && c->contact.surface.mu == dInfinity;
+    const int t2 = (c->rows_present & ROW_T2) && c->mu2 == dInfinity;
+    return !(t1 && t2);
+}
+
+void dxJointContactRows(dxJoint *j, dReal fps, dReal erp, dxContactRows *r)
+{
+    contact_rows((dxJointContact *)j, fps, erp, r);
 }
 
 int dxJointContactWarmInfo(const dxJoint *j, dVector3 point)

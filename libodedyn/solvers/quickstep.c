@@ -151,19 +151,34 @@ static int islands_by_length(const qs_island *parts, int count, int block, int *
     return n;
 }
 
-// Round robin over the islands in list (longest first): the t-th block or
-// row of each island that has one, for t = 0, 1, ...
-static void interleave(const qs_system *sys, const qs_island *parts, const int *list, int n,
-                       int block)
+// Round robin over the islands in list (longest first): the t-th block of
+// each island that has one, for t = 0, 1, ...
+static void interleave_blocks(const qs_system *sys, const qs_island *parts, const int *list,
+                              int n)
 {
     int out = 0;
     for (int t = 0; n > 0; t++) {
-        while (n > 0 && island_length(&parts[list[n - 1]], block) <= t) n--;
-        for (int k = 0; k < n; k++) {
-            const qs_island *p = &parts[list[k]];
-            if (block) sys->bseq[out++] = &sys->blocks[p->block0 + t];
-            else sys->seq[out++] = sys->order[p->order0 + t];
-        }
+        while (n > 0 && parts[list[n - 1]].nblocks <= t) n--;
+        for (int k = 0; k < n; k++) sys->bseq[out++] = &sys->blocks[parts[list[k]].block0 + t];
+    }
+}
+
+// The same for the rows in order (after every reshuffle). first: scratch
+// for n numbers.
+static void interleave_rows(const qs_system *sys, const qs_island *parts, const int *list, int n,
+                            int *first)
+{
+    if (n == 1) {   // one island (a heap): its order as it is
+        const qs_island *p = &parts[list[0]];
+        memcpy(sys->seq, sys->order + p->order0, sizeof(int) * (size_t)p->norder);
+        return;
+    }
+    for (int k = 0; k < n; k++) first[k] = parts[list[k]].order0;
+    const int *order = sys->order;
+    int *seq = sys->seq, out = 0;
+    for (int t = 0; n > 0; t++) {
+        while (n > 0 && parts[list[n - 1]].norder <= t) n--;
+        for (int k = 0; k < n; k++) seq[out++] = order[first[k] + t];
     }
 }
 
@@ -196,7 +211,7 @@ static void normals_before_friction(qs_system *sys, const qs_island *p, int *at)
 static void solve(qs_system *sys, qs_island *parts, int count, int iterations, int *list,
                   int *tmp)
 {
-    interleave(sys, parts, list, islands_by_length(parts, count, 1, list, tmp), 1);
+    interleave_blocks(sys, parts, list, islands_by_length(parts, count, 1, list, tmp));
     const int n = islands_by_length(parts, count, 0, list, tmp);
     for (int it = 0; it < iterations; it++) {
         if (it % REORDER_PERIOD == 0) {
@@ -205,7 +220,7 @@ static void solve(qs_system *sys, qs_island *parts, int count, int iterations, i
                 shuffle(sys->order + p->order0, p->norder, &p->seed);
                 normals_before_friction(sys, p, sys->at);
             }
-            interleave(sys, parts, list, n, 0);
+            interleave_rows(sys, parts, list, n, tmp);
         }
         dxQuickSweep(sys, it & 1);
     }

@@ -25,6 +25,7 @@
 
 #include "step_internal.h"
 
+#include <float.h>
 #include <stdint.h>
 
 typedef struct qs_scratch qs_scratch;
@@ -166,6 +167,24 @@ typedef struct qs_system {
     dxWarmCache *warm;     // the world's contact cache (NULL: no contacts yet)
 } qs_system;
 
+// What the build needs about an island (quickstep_build.c).
+typedef struct qs_input {
+    const dxIslandBodies *bd;
+    const dReal *rates;    // v/h + M^-1 f per body, 6 each
+    dReal fps, erp, sor_w;
+    int body0, nb;         // the island's first body in fc, its number of bodies
+    int warm;              // the joint is a contact that starts warm: its normal
+                           // row is relaxed with factor 1 (quickstep.c)
+} qs_input;
+
+// The largest finite number: a friction coefficient standing in for an
+// infinite one keeps 0 * coefficient at 0.
+#ifdef dSINGLE
+#define QS_BIG FLT_MAX
+#else
+#define QS_BIG DBL_MAX
+#endif
+
 // Count the rows of the islands' joints (count_rows, once per step) and
 // allocate the system for all of them (world arena).
 void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_system *sys);
@@ -192,6 +211,20 @@ void dxQuickWarmPositions(qs_warm_entry *e, const int pos[3]);
 // After the solve: this step's contacts get their forces and become the last
 // step's.
 void dxQuickWarmEnd(struct dxWorld *w, dxWarmCache *c, const dReal *lambda);
+
+// Contacts whose rows go straight from the contact to the solver's rows
+// (quickstep_contact.c): 1 (the default) or 0, every contact through the
+// generic joint rows (for tests that compare the two: the same results).
+extern int dxQuickContactDirect;
+// Does contact joint j take the direct way: a plain contact
+// (dxJointContactIsPlain) without feedback between island bodies (no
+// kinematic body, whose motion the generic rows fold in)?
+int dxQuickContactIsDirect(const dxJoint *j);
+// Append the rows of such a contact to the system (lambda positions from
+// sys->next on), enter it in the warm-start cache and start it from the
+// last step's forces if it was there; the same rows, bit for bit, as the
+// generic build makes from its joint rows.
+void dxQuickContact(const qs_input *in, dxJoint *j, qs_system *sys);
 
 // One sweep over all blocks in bseq (each followed by its coupled rows) and
 // all rows in seq: the blocks first, or (rows_first) the rows.

@@ -6,7 +6,8 @@
 // scaled by D = sor_w / A_ii with M^-1 J^T precomputed (quickstep.h); and
 // the warm start of contacts (quickstep.c): the forces of the same contact
 // in the last step (quickstep_warm.c) as the starting lambdas, fc to match,
-// and D = 1 / A_ii for a warm contact's normal row.
+// and D = 1 / A_ii for a warm contact's normal row. Plain contacts skip the
+// joint rows: quickstep_contact.c makes their rows, the same way.
 
 #include "quickstep.h"
 
@@ -22,19 +23,10 @@
 #define PIVOT_EPS (64 * DBL_EPSILON)
 #endif
 
-// What the build needs about the island.
-typedef struct qs_input {
-    const dxIslandBodies *bd;
-    const dReal *rates;    // v/h + M^-1 f per body, 6 each
-    dReal fps, sor_w;
-    int body0, nb;         // the island's first body in fc, its number of bodies
-    int warm;              // the joint is a contact that starts warm: its normal
-                           // row is relaxed with factor 1 (quickstep.c)
-} qs_input;
-
 // The rows of one joint (joint-local indices, as dxJointRowsFill makes them).
 typedef struct qs_jrows {
     int m;
+    int direct;            // a contact made straight into its rows (quickstep_contact.c)
     dReal *J, *c, *cfm, *lo, *hi;
     int *findex;
     int b[2];              // island indices of its bodies, -1: static or kinematic
@@ -83,20 +75,17 @@ static dReal pair_dot(const qs_v2 *a, const qs_v2 *b)
 // The set-up of blocks and of the rows coupled to them is done in double
 // precision whatever dReal is: the Schur complement of a stiff block (a light
 // body far from its joint) is a small difference of large numbers.
-static double dot12(const dReal *a, const dReal *b)
+static double dot12(const qs_v2 *a, const qs_v2 *b)
 {
 #ifdef dSINGLE
     double s0 = 0, s1 = 0;
-    for (int e = 0; e < 12; e += 2) {
-        s0 += (double)a[e] * b[e];
-        s1 += (double)a[e + 1] * b[e + 1];
+    for (int e = 0; e < 6; e++) {
+        s0 += (double)qs_lane(a[e], 0) * qs_lane(b[e], 0);
+        s1 += (double)qs_lane(a[e], 1) * qs_lane(b[e], 1);
     }
     return s0 + s1;
 #else
-    qs_v2 x[6], y[6];
-    memcpy(x, a, sizeof x);
-    memcpy(y, b, sizeof y);
-    return pair_dot(x, y);
+    return pair_dot(a, b);
 #endif
 }
 
@@ -128,12 +117,12 @@ static void row_full(const qs_jrows *jr, int i, qs_v2 *Jo, qs_v2 *Mo, qs_v2 *Ro)
 // ---- blocks --------------------------------------------------------------------
 
 // The block's matrix B = J M^-1 J^T + cfm/h (n x n, row-major).
-QS_INLINE void block_matrix(const dReal *J, const dReal *iMJ, const dReal *cfm, int n,
+QS_INLINE void block_matrix(const qs_v2 *J, const qs_v2 *iMJ, const dReal *cfm, int n,
                              double *B)
 {
     for (int a = 0; a < n; a++) {
-        for (int c = 0; c < a; c++) B[a * n + c] = B[c * n + a] = dot12(J + 12 * a, iMJ + 12 * c);
-        B[a * n + a] = dot12(J + 12 * a, iMJ + 12 * a) + cfm[a];
+        for (int c = 0; c < a; c++) B[a * n + c] = B[c * n + a] = dot12(J + 6 * a, iMJ + 6 * c);
+        B[a * n + a] = dot12(J + 6 * a, iMJ + 6 * a) + cfm[a];
     }
 }
 
@@ -170,12 +159,12 @@ static void cholesky_solve(const double *L, int n, double *x)
     }
 }
 
-// A block being built, in double-precision-friendly scratch: its rows' J
-// and M^-1 J^T, and the Cholesky factor of its matrix (kept for coupling the
+// A block being built: its rows' J and M^-1 J^T (the block's own, n x 6
+// pairs) and the Cholesky factor of its matrix (kept for coupling the
 // joint's other rows to it).
 typedef struct qs_jblock {
     int n;
-    dReal J[QS_MAX_BLOCK * 12], iMJ[QS_MAX_BLOCK * 12];
+    const qs_v2 *J, *iMJ;
     double L[QS_MAX_BLOCK * QS_MAX_BLOCK];
 } qs_jblock;
 
@@ -208,7 +197,7 @@ QS_INLINE void scaled_inverse(const double *L, int n, dReal sor_w, dReal *Ainv)
 // The block's matrix B = J M^-1 J^T + cfm/h, its Cholesky factor L and
 // sor_w B^-1 (Ainv); n is a constant after inlining. Returns 0 if B is
 // singular.
-QS_INLINE int factor_n(const dReal *J, const dReal *iMJ, const dReal *cfm, int n, dReal sor_w,
+QS_INLINE int factor_n(const qs_v2 *J, const qs_v2 *iMJ, const dReal *cfm, int n, dReal sor_w,
                        double *L, dReal *Ainv)
 {
     double B[QS_MAX_BLOCK * QS_MAX_BLOCK];
@@ -218,7 +207,7 @@ QS_INLINE int factor_n(const dReal *J, const dReal *iMJ, const dReal *cfm, int n
     return 1;
 }
 
-static int factor(const dReal *J, const dReal *iMJ, const dReal *cfm, int n, dReal sor_w,
+static int factor(const qs_v2 *J, const qs_v2 *iMJ, const dReal *cfm, int n, dReal sor_w,
                   double *L, dReal *Ainv)
 {
     switch (n) {   // constant sizes let the compiler unroll
@@ -236,33 +225,33 @@ static int factor(const dReal *J, const dReal *iMJ, const dReal *cfm, int n, dRe
 static int fill_block(dxArena *a, const qs_input *in, const qs_jrows *jr, const int *idx, int n,
                       qs_block *blk, qs_jblock *jb)
 {
-    dReal rhs[QS_MAX_BLOCK], cfm[QS_MAX_BLOCK];
+    const dxArenaMark mark = dxArenaSave(a);
+    qs_v2 *J = DX_ARENA_ARRAY(a, qs_v2, 12 * n), *M = J + 6 * n;
+    dReal *Ainv = DX_ARENA_ARRAY(a, dReal, n * (QS_PAD(n) + 2));
+    dReal *rhs = Ainv + n * QS_PAD(n), *cfm = rhs + n;
     for (int k = 0; k < n; k++) {
         const int i = idx[k];
-        qs_v2 J[6], M[6], R[6];
-        row_full(jr, i, J, M, R);
-        memcpy(jb->J + 12 * k, J, sizeof J);
-        memcpy(jb->iMJ + 12 * k, M, sizeof M);
-        rhs[k] = jr->c[i] * in->fps - pair_dot(J, R);
+        qs_v2 R[6];
+        row_full(jr, i, J + 6 * k, M + 6 * k, R);
+        rhs[k] = jr->c[i] * in->fps - pair_dot(J + 6 * k, R);
         cfm[k] = jr->cfm[i] * in->fps;
     }
-    dReal Ainv[QS_MAX_BLOCK * QS_MAX_BLOCK];
-    if (!factor(jb->J, jb->iMJ, cfm, n, in->sor_w, jb->L, Ainv)) return 0;
+    if (!factor(J, M, cfm, n, in->sor_w, jb->L, Ainv)) {
+        dxArenaRestore(a, mark);
+        return 0;
+    }
     jb->n = n;
+    jb->J = J;
+    jb->iMJ = M;
     blk->n = n;
     blk->two = is_two_body(jr);
     blk->o0 = jr->o[0];
     blk->o1 = jr->o[1];
-    blk->J = DX_ARENA_ARRAY(a, qs_v2, 12 * n);
-    blk->M = blk->J + 6 * n;
-    blk->Ainv = DX_ARENA_ARRAY(a, dReal, n * (QS_PAD(n) + 2));
-    blk->rhs = blk->Ainv + n * QS_PAD(n);
-    blk->cfm = blk->rhs + n;
-    memcpy(blk->J, jb->J, sizeof(dReal) * 12 * (size_t)n);
-    memcpy(blk->M, jb->iMJ, sizeof(dReal) * 12 * (size_t)n);
-    memcpy(blk->rhs, rhs, sizeof rhs[0] * (size_t)n);
-    memcpy(blk->cfm, cfm, sizeof cfm[0] * (size_t)n);
-    memcpy(blk->Ainv, Ainv, sizeof Ainv[0] * (size_t)(n * QS_PAD(n)));
+    blk->J = J;
+    blk->M = M;
+    blk->Ainv = Ainv;
+    blk->rhs = rhs;
+    blk->cfm = cfm;
     return 1;
 }
 
@@ -298,11 +287,11 @@ static qs_block *make_blocks(dxArena *a, const qs_input *in, const qs_jrows *jr,
 // g = -B^-1 c, the diagonal becomes the Schur complement diag - c^T B^-1 c
 // and iMJ gains M^-1 J_B^T g. Returns g (arena), or NULL if the row depends
 // on the block's rows.
-static const dReal *couple_to_block(dxArena *a, const qs_jblock *jb, dReal *iMJ, double *diag)
+static const dReal *couple_to_block(dxArena *a, const qs_jblock *jb, qs_v2 *iMJ, double *diag)
 {
     const int n = jb->n;
     double c[QS_MAX_BLOCK], t[QS_MAX_BLOCK];
-    for (int k = 0; k < n; k++) t[k] = c[k] = dot12(jb->J + 12 * k, iMJ);
+    for (int k = 0; k < n; k++) t[k] = c[k] = dot12(jb->J + 6 * k, iMJ);
     cholesky_solve(jb->L, n, t);
     double schur = *diag;
     for (int k = 0; k < n; k++) schur -= c[k] * t[k];
@@ -310,19 +299,12 @@ static const dReal *couple_to_block(dxArena *a, const qs_jblock *jb, dReal *iMJ,
     dReal *g = DX_ARENA_ARRAY(a, dReal, n);
     for (int k = 0; k < n; k++) {
         g[k] = (dReal)-t[k];
-        for (int e = 0; e < 12; e++) iMJ[e] += g[k] * jb->iMJ[12 * k + e];
+        const qs_v2 gk = qs_splat(g[k]);
+        for (int e = 0; e < 6; e++) iMJ[e] = qs_add(iMJ[e], qs_mul(gk, jb->iMJ[6 * k + e]));
     }
     *diag = schur;
     return g;
 }
-
-// The largest finite number: a friction coefficient standing in for an
-// infinite one keeps 0 * coefficient at 0.
-#ifdef dSINGLE
-#define QS_BIG FLT_MAX
-#else
-#define QS_BIG DBL_MAX
-#endif
 
 // Row i of the joint (lambda positions of the joint's rows in pos, the
 // constant 1 at position one): D J and M^-1 J^T as pairs, the scaled rhs and
@@ -337,12 +319,8 @@ static void fill_row(dxArena *a, const qs_input *in, const qs_jrows *jr, int i, 
     double diag = (double)pair_dot(Jp, Mp) + cfm;
     q->g = NULL;
     if (jb && diag > 0) {
-        dReal J[12], M[12];
-        memcpy(J, Jp, sizeof J);
-        memcpy(M, Mp, sizeof M);
-        diag = dot12(J, M) + cfm;
-        q->g = couple_to_block(a, jb, M, &diag);
-        memcpy(Mp, M, sizeof M);
+        diag = dot12(Jp, Mp) + cfm;
+        q->g = couple_to_block(a, jb, Mp, &diag);
     }
     q->gn = (short)(q->g ? blk->n : 0);
     q->gfirst = q->g ? blk->first : 0;
@@ -516,21 +494,27 @@ static void keep_feedback(dxArena *a, dxJoint *j, const qs_jrows *jr, const int 
 }
 
 // The rows of every joint of the island (count_rows done), in arena memory
-// that lives until the step ends.
+// that lives until the step ends; contacts that go straight to the solver's
+// rows are only marked (their rows are made in dxQuickBuild).
 static qs_jrows *fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h)
 {
     dxArena *a = w->arena;
-    size_t m = 0;
-    for (int k = 0; k < is->nj; k++) m += (size_t)is->joints[k]->rows.m;
     qs_jrows *jrows = DX_ARENA_ARRAY(a, qs_jrows, is->nj + 1);
+    size_t m = 0;
+    for (int k = 0; k < is->nj; k++) {
+        dxJoint *j = is->joints[k];
+        jrows[k].m = j->rows.m;
+        jrows[k].direct = j->rows.m > 0 && dxQuickContactIsDirect(j);
+        if (!jrows[k].direct) m += (size_t)j->rows.m;
+    }
     dReal *J = DX_ARENA_ARRAY(a, dReal, m * DX_ROW_SKIP + 1);
     dReal *num = DX_ARENA_ARRAY(a, dReal, 4 * m + 1);
     int *findex = DX_ARENA_ARRAY(a, int, m + 1);
     for (int k = 0; k < is->nj; k++) {
         dxJoint *j = is->joints[k];
         qs_jrows *jr = &jrows[k];
+        if (jr->direct) continue;
         const size_t jm = (size_t)j->rows.m;
-        jr->m = j->rows.m;
         jr->J = J;
         jr->c = num;
         jr->cfm = num + jm;
@@ -605,12 +589,16 @@ void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *b
     qs_jrows *jrows = fill_island_rows(w, is, h);
     dReal *rates = sys->rates + 6 * part->body0;
     dxIslandBodyRates(is, bd, fps, rates);
-    const qs_input in = { bd, rates, fps, w->qs_w, part->body0, is->nb, 0 };
-    const qs_input in_warm = { bd, rates, fps, w->qs_w, part->body0, is->nb, 1 };
+    const qs_input in = { bd, rates, fps, w->erp, w->qs_w, part->body0, is->nb, 0 };
+    const qs_input in_warm = { bd, rates, fps, w->erp, w->qs_w, part->body0, is->nb, 1 };
     for (int k = 0; k < is->nj; k++) {
         dxJoint *j = is->joints[k];
         qs_jrows *jr = &jrows[k];
         if (jr->m == 0) continue;
+        if (jr->direct) {
+            dxQuickContact(&in, j, sys);
+            continue;
+        }
         joint_sides(&in, jr);
         for (int i = 0; i < jr->m; i++) s->pos[i] = -1;
         qs_warm ws;

@@ -125,10 +125,12 @@ static const qs_warm_entry *find(const dxWarmCache *c, const struct dxBody *b0,
     for (int k = c->heads[bucket_of(c, b0, b1)]; k >= 0; k = c->old[k].next) {
         const qs_warm_entry *e = &c->old[k];
         if (e->b0 != b0 || e->b1 != b1 || e->g0 != g0 || e->g1 != g1) continue;
-        if (e->n[0] * n[0] + e->n[1] * n[1] + e->n[2] * n[2] < WARM_COS) continue;
+        // The point first: most of a pair's other contacts are too far, and
+        // their normals the same.
         const dReal d[3] = { e->p[0] - p[0], e->p[1] - p[1], e->p[2] - p[2] };
         const dReal d2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
         if (d2 > best_d2 || (best && d2 == best_d2 && !(e->ln < best->ln))) continue;
+        if (e->n[0] * n[0] + e->n[1] * n[1] + e->n[2] * n[2] < WARM_COS) continue;
         best = e;
         best_d2 = d2;
     }

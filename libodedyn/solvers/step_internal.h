@@ -68,6 +68,30 @@ int dxStepBegin(struct dxWorld *w, dReal h, const char *function, dxIsland **isl
 // the normal row 0 in that order); -1 for any other joint or an inert
 // contact (joint_contact.c).
 int dxJointContactWarmInfo(const dxJoint *j, dVector3 point);
+// A contact's normal and sliding friction rows, in the order of its joint
+// rows (the normal, then t1 and t2 as present), as numbers: row i is linear
+// along d[i] through the contact point, J = [d, arm0 x d, -d, d x arm1]
+// (the second body's half zero without one), target velocity c[i], cfm[i];
+// a friction row's bounds are -k..k, or k times the normal force with
+// `pyramid` (and k finite). (joint_contact.c; d[] points into the struct.)
+typedef struct dxContactRows {
+    int m;                    // 1..3
+    int friction;             // as dxJointContactWarmInfo returns it
+    dVector3 n, t1, t2;       // stored sense (t1, t2 even where their rows are absent)
+    const dReal *d[3];
+    const dReal *arm[2];      // the lever arms (world frame); arm[1] NULL: no body 1
+    const dReal *point;       // the contact point (world frame)
+    dReal c[3], cfm[3], k[3]; // k[0] unused
+    int pyramid[3];
+} dxContactRows;
+// 1 if j is a live contact whose rows are all in dxContactRows: no rolling
+// friction, and not both friction rows unbounded (the generic path solves
+// those two as a block).
+int dxJointContactIsPlain(const dxJoint *j);
+// The rows of a plain contact for a step with 1/h = fps and the world's
+// erp (as its fill_rows makes them: the same numbers; it may record the
+// contact's anchor on its first step). Kinematic bodies are not folded in.
+void dxJointContactRows(dxJoint *j, dReal fps, dReal erp, dxContactRows *r);
 void dxStepEnd(const dxIsland *islands, int count, dReal h);
 
 // The island's body data (from arena), with gravity and, if gyro_h > 0, the
