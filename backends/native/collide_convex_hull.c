@@ -40,187 +40,153 @@ static void cross3(const double *a, const double *b, double out[3])
     out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-// Edge e of h in the world (dx_hull_edge).
-static void pose_edge(const dx_hull *h, const dxHullEdge *e, dx_hull_edge *out)
+// Points and planes of the local arrays posed by R, c into wp, wn, wd.
+static void pose_points_planes(const dx_hull *h, double (*wp)[3], double (*wn)[3], double *wd)
 {
-    double p0[3], p1[3], d;
-    dx_hull_vertex(h, e->a, p0);
-    dx_hull_vertex(h, e->b, p1);
-    for (int i = 0; i < 3; i++) out->u[i] = p1[i] - p0[i];
-    dx_hull_plane(h, e->f1, out->n1, &d);
-    dx_hull_plane(h, e->f2, out->n2, &d);
-    cross3(out->n2, out->n1, out->n2xn1);
+    for (unsigned v = 0; v < h->npts; v++) {
+        const dReal *p = h->pts + 3 * v;
+        for (int r = 0; r < 3; r++)
+            wp[v][r] = h->c[r] + h->R[3 * r] * p[0] + h->R[3 * r + 1] * p[1] +
+                       h->R[3 * r + 2] * p[2];
+    }
+    for (unsigned f = 0; f < h->nplanes; f++) {
+        const dReal *p = h->planes + 4 * f;
+        double l = sqrt((double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2]);
+        for (int r = 0; r < 3; r++)
+            wn[f][r] = (h->R[3 * r] * p[0] + h->R[3 * r + 1] * p[1] + h->R[3 * r + 2] * p[2]) / l;
+        wd[f] = p[3] / l + dot3(wn[f], h->c);
+    }
+}
+
+// A box as a hull in bx: corners by bits (x, y, z), faces -x +x -y +y -z +z.
+static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
+{
+    const dReal *side = box->side;
+    static const unsigned faces[6][4] = { { 0, 4, 6, 2 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
+                                          { 2, 6, 7, 3 }, { 0, 2, 3, 1 }, { 4, 5, 7, 6 } };
+    for (unsigned v = 0; v < 8; v++)
+        for (int i = 0; i < 3; i++) bx->pts[3 * v + i] = (v >> i & 1 ? 1 : -1) * side[i] / 2;
+    for (int f = 0; f < 6; f++) {
+        int axis = f / 2;
+        dReal sg = f & 1 ? 1 : -1;
+        for (int i = 0; i < 3; i++) bx->planes[4 * f + i] = i == axis ? sg : 0;
+        bx->planes[4 * f + 3] = side[axis] / 2;
+        bx->polys[5 * f] = 4;
+        bx->poly_start[f] = 5 * (unsigned)f;
+        for (int k = 0; k < 4; k++) bx->polys[5 * f + 1 + k] = faces[f][k];
+    }
+    // Edge along axis k from the corner with bit k clear to the one with it
+    // set, between the faces of the other two axes' bits.
+    int n = 0;
+    for (int k = 0; k < 3; k++) {
+        int i = (k + 1) % 3, j = (k + 2) % 3;
+        for (unsigned bits = 0; bits < 4; bits++) {
+            unsigned bi = bits & 1, bj = bits >> 1, a = bi << i | bj << j;
+            bx->edges[n++] = (dxHullEdge){ a, a | 1u << k, (unsigned)(2 * i) + bi,
+                                           (unsigned)(2 * j) + bj };
+        }
+    }
+    h->pts = bx->pts;
+    h->planes = bx->planes;
+    h->polys = bx->polys;
+    h->poly_start = bx->poly_start;
+    h->edges = bx->edges;
+    h->npts = 8;
+    h->nplanes = 6;
+    h->nedges = 12;
+    h->convex = NULL;
+    const dReal *p = bx->pts;   // every corner is as far from the centre
+    h->size = sqrt((double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2]);
+    pose_points_planes(h, bx->wp, bx->wn, bx->wd);
+    h->wp = (const double (*)[3])bx->wp;
+    h->wn = (const double (*)[3])bx->wn;
+    h->wd = bx->wd;
+    h->we = bx->we;
+    bx->edges_posed = 0;
+    h->edges_posed = &bx->edges_posed;
+}
+
+// A convex geom as a hull, posed from the geom's kept pose if the geom has
+// not moved since it was made.
+static void convex_hull(dx_hull *h, const dxGeom *g)
+{
+    dxConvex *c = (dxConvex *)g;
+    h->pts = c->points;
+    h->planes = c->planes;
+    h->polys = c->polygons;
+    h->poly_start = c->poly_start;
+    h->npts = c->pointcount;
+    h->nplanes = c->planecount;
+    h->edges = c->edges;
+    h->nedges = c->edgecount;
+    h->convex = c;
+    h->size = c->size;
+    dxHullPose *pose = &c->pose;
+    if (!pose->valid || memcmp(pose->pos, g->pos, sizeof pose->pos) != 0 ||
+        memcmp(pose->R, g->R, sizeof pose->R) != 0) {
+        pose_points_planes(h, pose->pts, pose->normals, pose->offsets);
+        memcpy(pose->pos, g->pos, sizeof pose->pos);
+        memcpy(pose->R, g->R, sizeof pose->R);
+        pose->valid = 1;
+        pose->edges_valid = 0;
+    }
+    h->wp = (const double (*)[3])pose->pts;
+    h->wn = (const double (*)[3])pose->normals;
+    h->wd = pose->offsets;
+    h->we = pose->edges;
+    h->edges_posed = &pose->edges_valid;
 }
 
 void dx_hull_of_geom(dx_hull *h, const dxGeom *g, dx_hull_box *bx)
 {
-    if (g->ops->cls == dConvexClass) {
-        const dxConvex *c = (const dxConvex *)g;
-        h->pts = c->points;
-        h->planes = c->planes;
-        h->polys = c->polygons;
-        h->npts = c->pointcount;
-        h->nplanes = c->planecount;
-        h->edges = c->edges;
-        h->nedges = c->edgecount;
-        h->convex = (dxConvex *)c;
-    } else {   // a box: corners by bits (x, y, z), faces -x +x -y +y -z +z
-        const dReal *side = ((const dxBox *)g)->side;
-        static const unsigned faces[6][4] = { { 0, 4, 6, 2 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
-                                              { 2, 6, 7, 3 }, { 0, 2, 3, 1 }, { 4, 5, 7, 6 } };
-        for (unsigned v = 0; v < 8; v++)
-            for (int i = 0; i < 3; i++) bx->pts[3 * v + i] = (v >> i & 1 ? 1 : -1) * side[i] / 2;
-        for (int f = 0; f < 6; f++) {
-            int axis = f / 2;
-            dReal sg = f & 1 ? 1 : -1;
-            for (int i = 0; i < 3; i++) bx->planes[4 * f + i] = i == axis ? sg : 0;
-            bx->planes[4 * f + 3] = side[axis] / 2;
-            bx->polys[5 * f] = 4;
-            for (int k = 0; k < 4; k++) bx->polys[5 * f + 1 + k] = faces[f][k];
-        }
-        // Edge along axis k from the corner with bit k clear to the one
-        // with it set, between the faces of the other two axes' bits.
-        int n = 0;
-        for (int k = 0; k < 3; k++) {
-            int i = (k + 1) % 3, j = (k + 2) % 3;
-            for (unsigned bits = 0; bits < 4; bits++) {
-                unsigned bi = bits & 1, bj = bits >> 1, a = bi << i | bj << j;
-                bx->edges[n++] = (dxHullEdge){ a, a | 1u << k, (unsigned)(2 * i) + bi,
-                                               (unsigned)(2 * j) + bj };
-            }
-        }
-        h->pts = bx->pts;
-        h->planes = bx->planes;
-        h->polys = bx->polys;
-        h->edges = bx->edges;
-        h->npts = 8;
-        h->nplanes = 6;
-        h->nedges = 12;
-        h->convex = NULL;
-    }
-    h->size = 0;
     for (int i = 0; i < 3; i++) {
         h->c[i] = g->pos[i];
         for (int k = 0; k < 3; k++) h->R[3 * i + k] = g->R[4 * i + k];
     }
-    for (unsigned v = 0; v < h->npts; v++) {
-        const dReal *p = h->pts + 3 * v;
-        double r2 = (double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2];
-        if (r2 > h->size) h->size = r2;
-    }
-    h->size = sqrt(h->size);
-    h->faces_posed = 0;
-    if (h->nplanes <= DX_HULL_POSED_FACES) {
-        for (unsigned f = 0; f < h->nplanes; f++) dx_hull_plane(h, f, h->face_n[f], &h->face_d[f]);
-        h->faces_posed = 1;
-    }
-    h->posed = 0;   // pose_edges, when the edges are needed
-    h->points_posed = 0;
+    if (g->ops->cls == dConvexClass)
+        convex_hull(h, g);
+    else
+        box_hull(h, (const dxBox *)g, bx);
 }
 
-void dx_hull_pose_points(dx_hull *h)
-{
-    if (h->points_posed || h->npts > DX_HULL_POSED_POINTS) return;
-    for (unsigned v = 0; v < h->npts; v++) dx_hull_vertex(h, v, h->posed_pts[v]);
-    h->points_posed = 1;
-}
-
-// Poses the edges of h into posed_edges if they fit.
+// Poses the edges of h (once per pose).
 static void pose_edges(dx_hull *h)
 {
-    if (h->posed || h->nedges > DX_HULL_POSED_EDGES) return;
-    for (unsigned k = 0; k < h->nedges; k++) pose_edge(h, &h->edges[k], &h->posed_edges[k]);
-    h->posed = 1;
-}
-
-void dx_hull_vertex(const dx_hull *h, unsigned i, double out[3])
-{
-    if (h->points_posed) {
-        memcpy(out, h->posed_pts[i], sizeof h->posed_pts[i]);
-        return;
+    if (*h->edges_posed) return;
+    for (unsigned k = 0; k < h->nedges; k++) {
+        const dxHullEdge *e = &h->edges[k];
+        dxHullPosedEdge *out = &h->we[k];
+        for (int i = 0; i < 3; i++) out->u[i] = h->wp[e->b][i] - h->wp[e->a][i];
+        cross3(h->wn[e->f2], h->wn[e->f1], out->n2xn1);
     }
-    const dReal *p = h->pts + 3 * i;
-    for (int r = 0; r < 3; r++)
-        out[r] = h->c[r] + h->R[3 * r] * p[0] + h->R[3 * r + 1] * p[1] + h->R[3 * r + 2] * p[2];
-}
-
-void dx_hull_plane(const dx_hull *h, unsigned f, double n[3], double *d)
-{
-    if (h->faces_posed) {
-        memcpy(n, h->face_n[f], sizeof h->face_n[f]);
-        *d = h->face_d[f];
-        return;
-    }
-    const dReal *p = h->planes + 4 * f;
-    double l = sqrt((double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2]);
-    for (int r = 0; r < 3; r++)
-        n[r] = (h->R[3 * r] * p[0] + h->R[3 * r + 1] * p[1] + h->R[3 * r + 2] * p[2]) / l;
-    *d = p[3] / l + dot3(n, h->c);
+    *h->edges_posed = 1;
 }
 
 double dx_hull_extent(const dx_hull *h, const double m[3], unsigned *idx)
 {
-    if (h->points_posed) {
-        double best = -INFINITY;
-        unsigned bi = 0;
-        for (unsigned v = 0; v < h->npts; v++) {
-            double e = dot3(m, h->posed_pts[v]);
-            if (e > best) {
-                best = e;
-                bi = v;
-            }
-        }
-        if (idx) *idx = bi;
-        return best;
-    }
-    double ml[3];   // m in the hull's frame
-    for (int k = 0; k < 3; k++) ml[k] = h->R[k] * m[0] + h->R[3 + k] * m[1] + h->R[6 + k] * m[2];
     double best = -INFINITY;
     unsigned bi = 0;
     for (unsigned v = 0; v < h->npts; v++) {
-        const dReal *p = h->pts + 3 * v;
-        double e = ml[0] * p[0] + ml[1] * p[1] + ml[2] * p[2];
+        double e = dot3(m, h->wp[v]);
         if (e > best) {
             best = e;
             bi = v;
         }
     }
     if (idx) *idx = bi;
-    return best + dot3(m, h->c);
+    return best;
 }
 
 void dx_hull_interval(const dx_hull *h, const double m[3], double *lo, double *hi)
 {
     double mn = INFINITY, mx = -INFINITY;
-    if (h->points_posed) {
-        for (unsigned v = 0; v < h->npts; v++) {
-            double e = dot3(m, h->posed_pts[v]);
-            mn = e < mn ? e : mn;
-            mx = e > mx ? e : mx;
-        }
-        *lo = mn;
-        *hi = mx;
-        return;
-    }
-    double ml[3];   // m in the hull's frame
-    for (int k = 0; k < 3; k++) ml[k] = h->R[k] * m[0] + h->R[3 + k] * m[1] + h->R[6 + k] * m[2];
     for (unsigned v = 0; v < h->npts; v++) {
-        const dReal *p = h->pts + 3 * v;
-        double e = ml[0] * p[0] + ml[1] * p[1] + ml[2] * p[2];
+        double e = dot3(m, h->wp[v]);
         mn = e < mn ? e : mn;
         mx = e > mx ? e : mx;
     }
-    double c = dot3(m, h->c);
-    *lo = mn + c;
-    *hi = mx + c;
-}
-
-const unsigned *dx_hull_polygon(const dx_hull *h, unsigned f, unsigned *count)
-{
-    const unsigned *p = h->polys;
-    for (unsigned k = 0; k < f; k++) p += 1 + *p;
-    *count = *p;
-    return p + 1;
+    *lo = mn;
+    *hi = mx;
 }
 
 int dx_hull_clip_line(const dx_hull *h, const double o[3], const double d[3], double tol,
@@ -266,7 +232,7 @@ static int arcs_cross(double cba, double dba, double adc, double bdc)
 
 // The unit cross product of the posed edges' directions into m; 0 if they
 // are parallel.
-static int unit_cross(const dx_hull_edge *xa, const dx_hull_edge *xb, double m[3])
+static int unit_cross(const dxHullPosedEdge *xa, const dxHullPosedEdge *xb, double m[3])
 {
     cross3(xa->u, xb->u, m);
     double l2 = dot3(m, m);
@@ -280,23 +246,15 @@ static int unit_cross(const dx_hull_edge *xa, const dx_hull_edge *xb, double m[3
 // sign); 0 if the pair can give no face of the Minkowski difference a - b
 // (the arcs of the two edges on the unit sphere, between their faces'
 // normals, do not cross: the least depth is never there) or the edges are
-// parallel. An edge without a second face is always tried.
+// parallel. An edge without a second face is always tried. The edges are
+// posed.
 static int edge_axis(const dx_hull *a, unsigned i, const dx_hull *b, unsigned j, double m[3])
 {
     const dxHullEdge *ea = &a->edges[i], *eb = &b->edges[j];
-    dx_hull_edge pa, pb;
-    const dx_hull_edge *xa = &pa, *xb = &pb;
-    if (a->posed)
-        xa = &a->posed_edges[i];
-    else
-        pose_edge(a, ea, &pa);
-    if (b->posed)
-        xb = &b->posed_edges[j];
-    else
-        pose_edge(b, eb, &pb);
+    const dxHullPosedEdge *xa = &a->we[i], *xb = &b->we[j];
     if (ea->f1 != ea->f2 && eb->f1 != eb->f2 &&
-        !arcs_cross(-dot3(xb->n1, xa->n2xn1), -dot3(xb->n2, xa->n2xn1),
-                    dot3(xa->n1, xb->n2xn1), dot3(xa->n2, xb->n2xn1)))
+        !arcs_cross(-dot3(b->wn[eb->f1], xa->n2xn1), -dot3(b->wn[eb->f2], xa->n2xn1),
+                    dot3(a->wn[ea->f1], xb->n2xn1), dot3(a->wn[ea->f2], xb->n2xn1)))
         return 0;
     return unit_cross(xa, xb, m);
 }
@@ -310,19 +268,18 @@ typedef struct arc_tables {
     double ba[TABLE_EDGES][TABLE_FACES];   // b's edge j's n2 x n1 . a's face f
 } arc_tables;
 
-// Fills t if the hulls' posed edges and faces fit it; returns 1 if so.
+// Fills t if the hulls' edges and faces fit it; returns 1 if so.
 static int fill_arc_tables(const dx_hull *a, const dx_hull *b, arc_tables *t)
 {
-    if (!a->posed || !b->posed || !a->faces_posed || !b->faces_posed ||
-        a->nedges > TABLE_EDGES || b->nedges > TABLE_EDGES || a->nplanes > TABLE_FACES ||
+    if (a->nedges > TABLE_EDGES || b->nedges > TABLE_EDGES || a->nplanes > TABLE_FACES ||
         b->nplanes > TABLE_FACES)
         return 0;
     for (unsigned i = 0; i < a->nedges; i++)
         for (unsigned f = 0; f < b->nplanes; f++)
-            t->ab[i][f] = dot3(a->posed_edges[i].n2xn1, b->face_n[f]);
+            t->ab[i][f] = dot3(a->we[i].n2xn1, b->wn[f]);
     for (unsigned j = 0; j < b->nedges; j++)
         for (unsigned f = 0; f < a->nplanes; f++)
-            t->ba[j][f] = dot3(b->posed_edges[j].n2xn1, a->face_n[f]);
+            t->ba[j][f] = dot3(b->we[j].n2xn1, a->wn[f]);
     return 1;
 }
 
@@ -334,7 +291,7 @@ static int edge_axis_from_tables(const dx_hull *a, unsigned i, const dx_hull *b,
     if (ea->f1 != ea->f2 && eb->f1 != eb->f2 &&
         !arcs_cross(-t->ab[i][eb->f1], -t->ab[i][eb->f2], t->ba[j][ea->f1], t->ba[j][ea->f2]))
         return 0;
-    return unit_cross(&a->posed_edges[i], &b->posed_edges[j], m);
+    return unit_cross(&a->we[i], &b->we[j], m);
 }
 
 // The best axis found: its unit normal (into a), its depth, and what it is:
@@ -349,9 +306,9 @@ typedef struct sat_axis {
 // What sat measured, for clearance: the depth along each face axis (if
 // both hulls' faces fit), and the edge pair axes with their depths along
 // +m and -m, unless there were more.
-enum { MAX_EDGE_AXES = 128 };
+enum { MAX_EDGE_AXES = 128, KEPT_FACES = 48 };
 typedef struct edge_axes {
-    double face_s[2][DX_HULL_POSED_FACES];
+    double face_s[2][KEPT_FACES];
     int faces_kept;
     double m[MAX_EDGE_AXES][3], s[MAX_EDGE_AXES][2];
     int n, overflow;
@@ -405,7 +362,7 @@ static int sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axes
                double sep[3])
 {
     found->n = found->overflow = 0;
-    found->faces_kept = a->nplanes <= DX_HULL_POSED_FACES && b->nplanes <= DX_HULL_POSED_FACES;
+    found->faces_kept = a->nplanes <= KEPT_FACES && b->nplanes <= KEPT_FACES;
     face->depth = edge->depth = INFINITY;
     for (int side = 0; side < 2; side++) {
         const dx_hull *h = side ? b : a;
@@ -770,8 +727,6 @@ static void keep_hint(dx_hull *h, const void *other, const double n[3])
 int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
                  dContactGeom *out, int skip)
 {
-    dx_hull_pose_points(a);
-    dx_hull_pose_points(b);
     // The axis that parted the pair last time, if it still does.
     dx_hull *holder = a->convex ? a : b->convex ? b : NULL;
     const void *other = holder == a ? (const void *)o2 : (const void *)o1;
