@@ -30,10 +30,10 @@ typedef struct dxHullAxisHint {
 // collide_convex_hull.c), kept while the geom's pose stays what it was
 // made for: a hull meets several partners a step and is posed once. The
 // geom's own arrays are assumed unchanged between dGeomSetConvex calls (as
-// the edge list already assumes). An edge's direction (b - a) and the
-// cross product of its faces' normals n2 x n1.
+// the edge list already assumes). An edge's direction u = b - a with u . u,
+// the cross product of its faces' normals n2 x n1 and their sum n1 + n2.
 typedef struct dxHullPosedEdge {
-    double u[3], n2xn1[3];
+    double u[3], n2xn1[3], sum[3], uu;
 } dxHullPosedEdge;
 
 typedef struct dxHullPose {

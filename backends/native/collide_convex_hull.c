@@ -21,6 +21,7 @@
 #include "collide_math.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #define EDGE_PREFERENCE 1.05
@@ -156,7 +157,11 @@ static void pose_edges(dx_hull *h)
     for (unsigned k = 0; k < h->nedges; k++) {
         const dxHullEdge *e = &h->edges[k];
         dxHullPosedEdge *out = &h->we[k];
-        for (int i = 0; i < 3; i++) out->u[i] = h->wp[e->b][i] - h->wp[e->a][i];
+        for (int i = 0; i < 3; i++) {
+            out->u[i] = h->wp[e->b][i] - h->wp[e->a][i];
+            out->sum[i] = h->wn[e->f1][i] + h->wn[e->f2][i];
+        }
+        out->uu = dot3(out->u, out->u);
         cross3(h->wn[e->f2], h->wn[e->f1], out->n2xn1);
     }
     *h->edges_posed = 1;
@@ -220,6 +225,31 @@ static double depth_along(const dx_hull *a, const dx_hull *b, const double n[3])
     return dx_hull_extent(b, n, NULL) + dx_hull_extent(a, m, NULL);
 }
 
+// max over the points of h's face f's polygon of m . x: the hull's extent
+// along that face's own normal m (its other points lie below the face).
+static double face_extent(const dx_hull *h, unsigned f, const double m[3])
+{
+    unsigned count;
+    const unsigned *idx = dx_hull_polygon(h, f, &count);
+    double best = -INFINITY;
+    for (unsigned k = 0; k < count; k++) {
+        double e = dot3(m, h->wp[idx[k]]);
+        best = e > best ? e : best;
+    }
+    return best;
+}
+
+// depth_along for the face axis n of a's face f (side 0: n its inward
+// normal) or b's (side 1: its outward normal), the face's own hull's
+// extent taken over the face's polygon.
+static double face_depth(const dx_hull *a, const dx_hull *b, int side, unsigned f,
+                         const double n[3])
+{
+    double m[3] = { -n[0], -n[1], -n[2] };
+    return side ? face_extent(b, f, n) + dx_hull_extent(a, m, NULL)
+                : dx_hull_extent(b, n, NULL) + face_extent(a, f, m);
+}
+
 // Whether a's arc (from n1 to n2) and b's negated arc (for the difference,
 // from -n1 to -n2) cross on the unit sphere: each arc's ends lie on
 // opposite sides of the other's great circle, on the same side. cba, dba:
@@ -236,7 +266,7 @@ static int unit_cross(const dxHullPosedEdge *xa, const dxHullPosedEdge *xb, doub
 {
     cross3(xa->u, xb->u, m);
     double l2 = dot3(m, m);
-    if (l2 <= DX_COLLIDE_EPS * dot3(xa->u, xa->u) * dot3(xb->u, xb->u)) return 0;   // parallel
+    if (l2 <= DX_COLLIDE_EPS * xa->uu * xb->uu) return 0;   // parallel
     double inv = 1 / sqrt(l2);
     for (int k = 0; k < 3; k++) m[k] *= inv;
     return 1;
@@ -259,41 +289,6 @@ static int edge_axis(const dx_hull *a, unsigned i, const dx_hull *b, unsigned j,
     return unit_cross(xa, xb, m);
 }
 
-// The edge pair test of edge_axis for every pair at once: the products of
-// one hull's edge arcs' circle normals (n2 x n1) with the other's face
-// normals, each made once (rather than four per pair).
-enum { TABLE_EDGES = 32, TABLE_FACES = 24 };
-typedef struct arc_tables {
-    double ab[TABLE_EDGES][TABLE_FACES];   // a's edge i's n2 x n1 . b's face f
-    double ba[TABLE_EDGES][TABLE_FACES];   // b's edge j's n2 x n1 . a's face f
-} arc_tables;
-
-// Fills t if the hulls' edges and faces fit it; returns 1 if so.
-static int fill_arc_tables(const dx_hull *a, const dx_hull *b, arc_tables *t)
-{
-    if (a->nedges > TABLE_EDGES || b->nedges > TABLE_EDGES || a->nplanes > TABLE_FACES ||
-        b->nplanes > TABLE_FACES)
-        return 0;
-    for (unsigned i = 0; i < a->nedges; i++)
-        for (unsigned f = 0; f < b->nplanes; f++)
-            t->ab[i][f] = dot3(a->we[i].n2xn1, b->wn[f]);
-    for (unsigned j = 0; j < b->nedges; j++)
-        for (unsigned f = 0; f < a->nplanes; f++)
-            t->ba[j][f] = dot3(b->we[j].n2xn1, a->wn[f]);
-    return 1;
-}
-
-// edge_axis from the tables.
-static int edge_axis_from_tables(const dx_hull *a, unsigned i, const dx_hull *b, unsigned j,
-                                 const arc_tables *t, double m[3])
-{
-    const dxHullEdge *ea = &a->edges[i], *eb = &b->edges[j];
-    if (ea->f1 != ea->f2 && eb->f1 != eb->f2 &&
-        !arcs_cross(-t->ab[i][eb->f1], -t->ab[i][eb->f2], t->ba[j][ea->f1], t->ba[j][ea->f2]))
-        return 0;
-    return unit_cross(&a->we[i], &b->we[j], m);
-}
-
 // The best axis found: its unit normal (into a), its depth, and what it is:
 // a face of a (ref 0) or of b (ref 1) with its index, or an edge pair.
 typedef struct sat_axis {
@@ -304,13 +299,13 @@ typedef struct sat_axis {
 } sat_axis;
 
 // What sat measured, for clearance: the depth along each face axis (if
-// both hulls' faces fit), and the edge pair axes with their depths along
-// +m and -m, unless there were more.
-enum { MAX_EDGE_AXES = 128, KEPT_FACES = 48 };
+// both hulls' faces fit), and the edge pairs whose axes count (their
+// edges' indices in a and b), unless there were more.
+enum { MAX_EDGE_AXES = 1024, KEPT_FACES = 48 };
 typedef struct edge_axes {
     double face_s[2][KEPT_FACES];
     int faces_kept;
-    double m[MAX_EDGE_AXES][3], s[MAX_EDGE_AXES][2];
+    unsigned pair[MAX_EDGE_AXES][2];
     int n, overflow;
 } edge_axes;
 
@@ -355,6 +350,156 @@ static void pair_depths(const dx_hull *a, unsigned i, const dx_hull *b, unsigned
     }
 }
 
+// Takes the axis n of the edge pair (a's edge i, b's edge j) that
+// edge_axis accepted: 0 (n into sep) if it parts the hulls, else the least
+// depth kept in edge.
+static int edge_pair(const dx_hull *a, unsigned i, const dx_hull *b, unsigned j, double n[3],
+                     sat_axis *edge, double sep[3])
+{
+    double both[2];
+    pair_depths(a, i, b, j, n, both);
+    if (both[0] < 0 || both[1] < 0) {
+        memcpy(sep, n, 3 * sizeof n[0]);
+        return 0;
+    }
+    for (int sg = 0; sg < 2; sg++) {
+        if (sg)
+            for (int k = 0; k < 3; k++) n[k] = -n[k];
+        double s = both[sg];
+        if (s < edge->depth) {
+            edge->depth = s;
+            memcpy(edge->n, n, sizeof edge->n);
+            edge->ref = 2;
+            edge->ea = i;
+            edge->eb = j;
+        }
+    }
+    return 1;
+}
+
+// The edge pair (a's edge i, b's edge j) whose arcs cross: 0 (the axis
+// into sep) if its axis parts the hulls; else kept in found (for
+// clearance), and its depth in edge if least. The exact test (edge_axis's
+// unit axis, pair_depths, edge_pair) runs only where it can matter: where
+// the pair's depth, from the unnormalised cross product c of the edges,
+// is not clearly positive or not clearly above bound (beyond which the
+// pair can be neither the least depth nor win over the best face); a
+// pair it skips would not have changed edge. Edges without a second face
+// always take the exact test.
+static int edge_candidate(const dx_hull *a, unsigned i, const dx_hull *b, unsigned j,
+                          double bound, sat_axis *edge, edge_axes *found, double sep[3])
+{
+    const dxHullPosedEdge *xa = &a->we[i], *xb = &b->we[j];
+    double c[3];
+    cross3(xa->u, xb->u, c);
+    double cc = dot3(c, c);
+    if (cc <= DX_COLLIDE_EPS * xa->uu * xb->uu) return 1;   // parallel: unit_cross's test
+    if (found->n < MAX_EDGE_AXES) {
+        found->pair[found->n][0] = i;
+        found->pair[found->n++][1] = j;
+    } else {
+        found->overflow = 1;
+    }
+    const dxHullEdge *ea = &a->edges[i], *eb = &b->edges[j];
+    if (ea->f1 != ea->f2 && eb->f1 != eb->f2) {
+        const double *pa = a->wp[ea->a], *pb = b->wp[eb->a];
+        double d[3] = { pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2] };
+        double facing = dot3(c, xa->sum), gap = dot3(c, d);
+        double depth = facing > 0 ? gap : -gap;   // times |c|
+        double least = edge->depth < bound ? edge->depth : bound;
+        double thr = least * (1 + 1e-9) + 1e-12 * (a->size + b->size);
+        if (facing * facing > 1e-12 * cc * dot3(xa->sum, xa->sum) && depth > 0 &&
+            depth * depth > thr * thr * cc)
+            return 1;
+    }
+    double n[3];
+    unit_cross(xa, xb, n);
+    return edge_pair(a, i, b, j, n, edge, sep);
+}
+
+// The sides of one hull's edge arc's great circle (its n2 x n1) the other
+// hull's face normals lie on, as bits by face: pos above, neg below (on it:
+// neither).
+enum { MASK_BITS = 64 };
+typedef struct arc_sides {
+    uint64_t pos, neg;
+} arc_sides;
+
+static void fill_arc_sides(const dx_hull *h, const dx_hull *o, arc_sides *out)
+{
+    for (unsigned k = 0; k < h->nedges; k++) {
+        uint64_t pos = 0, neg = 0;
+        for (unsigned f = 0; f < o->nplanes; f++) {
+            double d = dot3(h->we[k].n2xn1, o->wn[f]);
+            pos |= (uint64_t)(d > 0) << f;
+            neg |= (uint64_t)(d < 0) << f;
+        }
+        out[k] = (arc_sides){ pos, neg };
+    }
+}
+
+// Bit f of a mask.
+static int bit(uint64_t mask, unsigned f)
+{
+    return (int)(mask >> f & 1);
+}
+
+// The edge pairs of sat for hulls whose edges and faces fit 64-bit masks:
+// edge_axis's arc test from the signs of each edge's circle against the
+// other hull's face normals (the same products, made once per edge and
+// face), and for each of a's edges only b's edges whose faces lie on both
+// sides of its circle (from masks of b's edges by face) visited, in
+// edge_axis's order. An edge without a second face meets every edge.
+static int masked_edge_pairs(const dx_hull *a, const dx_hull *b, double bound, sat_axis *edge,
+                             edge_axes *found, double sep[3])
+{
+    arc_sides sa[MASK_BITS], sb[MASK_BITS];
+    fill_arc_sides(a, b, sa);
+    fill_arc_sides(b, a, sb);
+    uint64_t first[MASK_BITS] = { 0 }, second[MASK_BITS] = { 0 }, lone = 0;   // b's edges by face
+    for (unsigned j = 0; j < b->nedges; j++) {
+        const dxHullEdge *e = &b->edges[j];
+        first[e->f1] |= (uint64_t)1 << j;
+        second[e->f2] |= (uint64_t)1 << j;
+        if (e->f1 == e->f2) lone |= (uint64_t)1 << j;
+    }
+    uint64_t all = b->nedges == MASK_BITS ? ~(uint64_t)0 : ((uint64_t)1 << b->nedges) - 1;
+    for (unsigned i = 0; i < a->nedges; i++) {
+        const dxHullEdge *ea = &a->edges[i];
+        uint64_t cand = all;
+        if (ea->f1 != ea->f2) {
+            uint64_t first_pos = 0, first_neg = 0, second_pos = 0, second_neg = 0;
+            for (uint64_t m = sa[i].pos; m; m &= m - 1) {
+                unsigned f = (unsigned)__builtin_ctzll(m);
+                first_pos |= first[f];
+                second_pos |= second[f];
+            }
+            for (uint64_t m = sa[i].neg; m; m &= m - 1) {
+                unsigned f = (unsigned)__builtin_ctzll(m);
+                first_neg |= first[f];
+                second_neg |= second[f];
+            }
+            cand = (first_pos & second_neg) | (first_neg & second_pos) | lone;
+        }
+        for (; cand; cand &= cand - 1) {
+            unsigned j = (unsigned)__builtin_ctzll(cand);
+            const dxHullEdge *eb = &b->edges[j];
+            if (ea->f1 != ea->f2 && eb->f1 != eb->f2) {
+                // a's faces on both sides of b's circle; b's first face and
+                // a's second on the sides arcs_cross asks for.
+                uint64_t p = sb[j].pos, q = sb[j].neg;
+                if (!((bit(p, ea->f1) && bit(q, ea->f2)) || (bit(q, ea->f1) && bit(p, ea->f2))))
+                    continue;
+                if (!((bit(sa[i].neg, eb->f1) && bit(p, ea->f2)) ||
+                      (bit(sa[i].pos, eb->f1) && bit(q, ea->f2))))
+                    continue;
+            }
+            if (!edge_candidate(a, i, b, j, bound, edge, found, sep)) return 0;
+        }
+    }
+    return 1;
+}
+
 // 0 if a separating axis parts a and b (into sep); else the face axis and
 // the edge axis of least depth (edge->depth is infinite if no edge pair
 // counts), and the axes' depths into found.
@@ -371,7 +516,7 @@ static int sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axes
             dx_hull_plane(h, f, n, &d);
             if (!side)   // a's face pushes a back along -n
                 for (int i = 0; i < 3; i++) n[i] = -n[i];
-            double s = depth_along(a, b, n);
+            double s = face_depth(a, b, side, f, n);
             if (s < 0) {
                 memcpy(sep, n, sizeof n);
                 return 0;
@@ -387,37 +532,15 @@ static int sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axes
     }
     pose_edges(a);
     pose_edges(b);
-    arc_tables tables;
-    int tabled = fill_arc_tables(a, b, &tables);
+    double bound = face->depth / EDGE_PREFERENCE;   // an edge pair deeper never wins
+    if (a->nedges <= MASK_BITS && b->nedges <= MASK_BITS && a->nplanes <= MASK_BITS &&
+        b->nplanes <= MASK_BITS)
+        return masked_edge_pairs(a, b, bound, edge, found, sep);
     for (unsigned i = 0; i < a->nedges; i++) {
         for (unsigned j = 0; j < b->nedges; j++) {
-            double n[3], both[2];
-            if (tabled ? !edge_axis_from_tables(a, i, b, j, &tables, n) : !edge_axis(a, i, b, j, n))
-                continue;
-            pair_depths(a, i, b, j, n, both);
-            if (both[0] < 0 || both[1] < 0) {
-                memcpy(sep, n, sizeof n);
+            double n[3];
+            if (edge_axis(a, i, b, j, n) && !edge_candidate(a, i, b, j, bound, edge, found, sep))
                 return 0;
-            }
-            if (found->n < MAX_EDGE_AXES) {
-                memcpy(found->m[found->n], n, sizeof n);
-                found->s[found->n][0] = both[0];
-                found->s[found->n++][1] = both[1];
-            } else {
-                found->overflow = 1;
-            }
-            for (int sg = 0; sg < 2; sg++) {
-                if (sg)
-                    for (int k = 0; k < 3; k++) n[k] = -n[k];
-                double s = both[sg];
-                if (s < edge->depth) {
-                    edge->depth = s;
-                    memcpy(edge->n, n, sizeof edge->n);
-                    edge->ref = 2;
-                    edge->ea = i;
-                    edge->eb = j;
-                }
-            }
         }
     }
     return 1;
@@ -437,11 +560,11 @@ static double edge_clearance(const double n[3], const double m[3], const double 
 // box_clearance in collide_box.c): a moved by t n is clear of b along a
 // candidate axis m once t (m . n) > s(m); the least such t over the axes
 // facing n. The candidates hold every face normal of the Minkowski
-// difference, so this is exact; it is at most s(n).
-static double clearance(const dx_hull *a, const dx_hull *b, const double n[3],
+// difference, so this is exact; it is at most s_n, the depth along n.
+static double clearance(const dx_hull *a, const dx_hull *b, const double n[3], double s_n,
                         const edge_axes *found)
 {
-    double best = depth_along(a, b, n);
+    double best = s_n;
     for (int side = 0; side < 2; side++) {
         const dx_hull *h = side ? b : a;
         for (unsigned f = 0; f < h->nplanes; f++) {
@@ -456,8 +579,13 @@ static double clearance(const dx_hull *a, const dx_hull *b, const double n[3],
             }
         }
     }
-    for (int k = 0; !found->overflow && k < found->n; k++)
-        best = fmin(best, edge_clearance(n, found->m[k], found->s[k]));
+    for (int k = 0; !found->overflow && k < found->n; k++) {
+        unsigned i = found->pair[k][0], j = found->pair[k][1];
+        double m[3], both[2];
+        unit_cross(&a->we[i], &b->we[j], m);
+        pair_depths(a, i, b, j, m, both);
+        best = fmin(best, edge_clearance(n, m, both));
+    }
     for (unsigned i = 0; found->overflow && i < a->nedges; i++) {
         for (unsigned j = 0; j < b->nedges; j++) {
             double m[3], both[2];
@@ -759,7 +887,10 @@ int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
     dx_hull_plane(r, face.face, nf, &df);
     hull_point pts[MAXP];
     int n = face_points(r, face.face, nf, df, inc, max, pts);
-    double clear = clearance(a, b, face.n, &found);
+    // The exact translation that parts them, at most face.depth: needed
+    // only where the deepest point is short of that.
+    double clear = n > 0 && pts[0].depth >= face.depth ? face.depth
+                                                        : clearance(a, b, face.n, face.depth, &found);
     if (n == 0) {
         double pos[3];
         deepest_pair_point(a, b, face.n, pos);
