@@ -417,51 +417,36 @@ static int edge_candidate(const dx_hull *a, unsigned i, const dx_hull *b, unsign
     return edge_pair(a, i, b, j, n, edge, sep);
 }
 
-// The sides of one hull's edge arc's great circle (its n2 x n1) the other
-// hull's face normals lie on, as bits by face: pos above, neg below (on it:
-// neither).
+// The edge pairs of sat for hulls whose edges and faces fit 64-bit masks.
+// edge_axis's arc test asks, of a's edge i (faces f1, f2) and b's edge j
+// (faces g1, g2), for the signs of the products of each edge's circle
+// normal (n2 x n1) with the other hull's face normals: b's g1, g2 on
+// opposite sides of i's circle (S), a's f1, f2 on opposite sides of j's
+// (U), and g1 below i's circle where f2 is above j's or the reverse (W).
+// Each product is made once, into masks: for a's edge i the sets of b's
+// faces above and below its circle, turned into sets of b's edges by their
+// first and second face; for a's face f the sets of b's edges whose
+// circle it is above and below. Then the pairs that pass are, for each i,
+// the set bits of S & U & W, visited in edge_axis's order. An edge
+// without a second face meets every edge.
 enum { MASK_BITS = 64 };
-typedef struct arc_sides {
-    uint64_t pos, neg;
-} arc_sides;
 
-static void fill_arc_sides(const dx_hull *h, const dx_hull *o, arc_sides *out)
-{
-    for (unsigned k = 0; k < h->nedges; k++) {
-        uint64_t pos = 0, neg = 0;
-        for (unsigned f = 0; f < o->nplanes; f++) {
-            double d = dot3(h->we[k].n2xn1, o->wn[f]);
-            pos |= (uint64_t)(d > 0) << f;
-            neg |= (uint64_t)(d < 0) << f;
-        }
-        out[k] = (arc_sides){ pos, neg };
-    }
-}
-
-// Bit f of a mask.
-static int bit(uint64_t mask, unsigned f)
-{
-    return (int)(mask >> f & 1);
-}
-
-// The edge pairs of sat for hulls whose edges and faces fit 64-bit masks:
-// edge_axis's arc test from the signs of each edge's circle against the
-// other hull's face normals (the same products, made once per edge and
-// face), and for each of a's edges only b's edges whose faces lie on both
-// sides of its circle (from masks of b's edges by face) visited, in
-// edge_axis's order. An edge without a second face meets every edge.
 static int masked_edge_pairs(const dx_hull *a, const dx_hull *b, double bound, sat_axis *edge,
                              edge_axes *found, double sep[3])
 {
-    arc_sides sa[MASK_BITS], sb[MASK_BITS];
-    fill_arc_sides(a, b, sa);
-    fill_arc_sides(b, a, sb);
     uint64_t first[MASK_BITS] = { 0 }, second[MASK_BITS] = { 0 }, lone = 0;   // b's edges by face
+    uint64_t above[MASK_BITS] = { 0 }, below[MASK_BITS] = { 0 };   // by a's face: b's edges
     for (unsigned j = 0; j < b->nedges; j++) {
         const dxHullEdge *e = &b->edges[j];
-        first[e->f1] |= (uint64_t)1 << j;
-        second[e->f2] |= (uint64_t)1 << j;
-        if (e->f1 == e->f2) lone |= (uint64_t)1 << j;
+        uint64_t bit = (uint64_t)1 << j;
+        first[e->f1] |= bit;
+        second[e->f2] |= bit;
+        if (e->f1 == e->f2) lone |= bit;
+        for (unsigned f = 0; f < a->nplanes; f++) {
+            double d = dot3(b->we[j].n2xn1, a->wn[f]);
+            above[f] |= d > 0 ? bit : 0;
+            below[f] |= d < 0 ? bit : 0;
+        }
     }
     uint64_t all = b->nedges == MASK_BITS ? ~(uint64_t)0 : ((uint64_t)1 << b->nedges) - 1;
     for (unsigned i = 0; i < a->nedges; i++) {
@@ -469,31 +454,23 @@ static int masked_edge_pairs(const dx_hull *a, const dx_hull *b, double bound, s
         uint64_t cand = all;
         if (ea->f1 != ea->f2) {
             uint64_t first_pos = 0, first_neg = 0, second_pos = 0, second_neg = 0;
-            for (uint64_t m = sa[i].pos; m; m &= m - 1) {
-                unsigned f = (unsigned)__builtin_ctzll(m);
-                first_pos |= first[f];
-                second_pos |= second[f];
+            for (unsigned f = 0; f < b->nplanes; f++) {
+                double d = dot3(a->we[i].n2xn1, b->wn[f]);
+                if (d > 0) {
+                    first_pos |= first[f];
+                    second_pos |= second[f];
+                } else if (d < 0) {
+                    first_neg |= first[f];
+                    second_neg |= second[f];
+                }
             }
-            for (uint64_t m = sa[i].neg; m; m &= m - 1) {
-                unsigned f = (unsigned)__builtin_ctzll(m);
-                first_neg |= first[f];
-                second_neg |= second[f];
-            }
-            cand = (first_pos & second_neg) | (first_neg & second_pos) | lone;
+            uint64_t s = (first_pos & second_neg) | (first_neg & second_pos);
+            uint64_t u = (above[ea->f1] & below[ea->f2]) | (below[ea->f1] & above[ea->f2]);
+            uint64_t w = (first_neg & above[ea->f2]) | (first_pos & below[ea->f2]);
+            cand = (s & u & w) | lone;
         }
         for (; cand; cand &= cand - 1) {
             unsigned j = (unsigned)__builtin_ctzll(cand);
-            const dxHullEdge *eb = &b->edges[j];
-            if (ea->f1 != ea->f2 && eb->f1 != eb->f2) {
-                // a's faces on both sides of b's circle; b's first face and
-                // a's second on the sides arcs_cross asks for.
-                uint64_t p = sb[j].pos, q = sb[j].neg;
-                if (!((bit(p, ea->f1) && bit(q, ea->f2)) || (bit(q, ea->f1) && bit(p, ea->f2))))
-                    continue;
-                if (!((bit(sa[i].neg, eb->f1) && bit(p, ea->f2)) ||
-                      (bit(sa[i].pos, eb->f1) && bit(q, ea->f2))))
-                    continue;
-            }
             if (!edge_candidate(a, i, b, j, bound, edge, found, sep)) return 0;
         }
     }
