@@ -31,9 +31,10 @@ typedef struct dxHullAxisHint {
 // made for: a hull meets several partners a step and is posed once. The
 // geom's own arrays are assumed unchanged between dGeomSetConvex calls (as
 // the edge list already assumes). An edge's direction u = b - a with u . u,
-// the cross product of its faces' normals n2 x n1 and their sum n1 + n2.
+// the cross product of its faces' normals n2 x n1, and their sum n1 + n2
+// with its square.
 typedef struct dxHullPosedEdge {
-    double u[3], n2xn1[3], sum[3], uu;
+    double u[3], n2xn1[3], sum[3], uu, ss;
 } dxHullPosedEdge;
 
 typedef struct dxHullPose {

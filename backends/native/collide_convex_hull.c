@@ -162,6 +162,7 @@ static void pose_edges(dx_hull *h)
             out->sum[i] = h->wn[e->f1][i] + h->wn[e->f2][i];
         }
         out->uu = dot3(out->u, out->u);
+        out->ss = dot3(out->sum, out->sum);
         cross3(h->wn[e->f2], h->wn[e->f1], out->n2xn1);
     }
     *h->edges_posed = 1;
@@ -377,23 +378,48 @@ static int edge_pair(const dx_hull *a, unsigned i, const dx_hull *b, unsigned j,
     return 1;
 }
 
+// What the edge pairs of sat update: the least edge axis, the pairs kept
+// for clearance, the separating axis if one is found, and the depth
+// (times the cross product's length) beyond which a pair cannot matter.
+typedef struct edge_search {
+    sat_axis *edge;
+    edge_axes *found;
+    double *sep;
+    double bound;   // face depth / EDGE_PREFERENCE: an edge pair deeper never wins
+    double thr;     // the least of bound and edge->depth, with a margin for rounding
+} edge_search;
+
+static void update_threshold(const dx_hull *a, const dx_hull *b, edge_search *es)
+{
+    double least = es->edge->depth < es->bound ? es->edge->depth : es->bound;
+    es->thr = least * (1 + 1e-9) + 1e-12 * (a->size + b->size);
+}
+
+// Whether the sign of the unnormalised product x (of the cross product
+// c, with c . c = cc, and a vector of square vv) is clear of rounding.
+static int clear_sign(double x, double cc, double vv)
+{
+    return x * x > 1e-12 * cc * vv;
+}
+
 // The edge pair (a's edge i, b's edge j) whose arcs cross: 0 (the axis
 // into sep) if its axis parts the hulls; else kept in found (for
 // clearance), and its depth in edge if least. The exact test (edge_axis's
 // unit axis, pair_depths, edge_pair) runs only where it can matter: where
 // the pair's depth, from the unnormalised cross product c of the edges,
-// is not clearly positive or not clearly above bound (beyond which the
-// pair can be neither the least depth nor win over the best face); a
+// is not clearly positive or not clearly above the threshold (beyond which
+// the pair can be neither the least depth nor win over the best face); a
 // pair it skips would not have changed edge. Edges without a second face
 // always take the exact test.
 static int edge_candidate(const dx_hull *a, unsigned i, const dx_hull *b, unsigned j,
-                          double bound, sat_axis *edge, edge_axes *found, double sep[3])
+                          edge_search *es)
 {
     const dxHullPosedEdge *xa = &a->we[i], *xb = &b->we[j];
     double c[3];
     cross3(xa->u, xb->u, c);
     double cc = dot3(c, c);
     if (cc <= DX_COLLIDE_EPS * xa->uu * xb->uu) return 1;   // parallel: unit_cross's test
+    edge_axes *found = es->found;
     if (found->n < MAX_EDGE_AXES) {
         found->pair[found->n][0] = i;
         found->pair[found->n++][1] = j;
@@ -406,15 +432,14 @@ static int edge_candidate(const dx_hull *a, unsigned i, const dx_hull *b, unsign
         double d[3] = { pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2] };
         double facing = dot3(c, xa->sum), gap = dot3(c, d);
         double depth = facing > 0 ? gap : -gap;   // times |c|
-        double least = edge->depth < bound ? edge->depth : bound;
-        double thr = least * (1 + 1e-9) + 1e-12 * (a->size + b->size);
-        if (facing * facing > 1e-12 * cc * dot3(xa->sum, xa->sum) && depth > 0 &&
-            depth * depth > thr * thr * cc)
+        if (depth > 0 && depth * depth > es->thr * es->thr * cc && clear_sign(facing, cc, xa->ss))
             return 1;
     }
     double n[3];
     unit_cross(xa, xb, n);
-    return edge_pair(a, i, b, j, n, edge, sep);
+    if (!edge_pair(a, i, b, j, n, es->edge, es->sep)) return 0;
+    update_threshold(a, b, es);
+    return 1;
 }
 
 // The edge pairs of sat for hulls whose edges and faces fit 64-bit masks.
@@ -431,8 +456,7 @@ static int edge_candidate(const dx_hull *a, unsigned i, const dx_hull *b, unsign
 // without a second face meets every edge.
 enum { MASK_BITS = 64 };
 
-static int masked_edge_pairs(const dx_hull *a, const dx_hull *b, double bound, sat_axis *edge,
-                             edge_axes *found, double sep[3])
+static int masked_edge_pairs(const dx_hull *a, const dx_hull *b, edge_search *es)
 {
     uint64_t first[MASK_BITS] = { 0 }, second[MASK_BITS] = { 0 }, lone = 0;   // b's edges by face
     uint64_t above[MASK_BITS] = { 0 }, below[MASK_BITS] = { 0 };   // by a's face: b's edges
@@ -471,7 +495,7 @@ static int masked_edge_pairs(const dx_hull *a, const dx_hull *b, double bound, s
         }
         for (; cand; cand &= cand - 1) {
             unsigned j = (unsigned)__builtin_ctzll(cand);
-            if (!edge_candidate(a, i, b, j, bound, edge, found, sep)) return 0;
+            if (!edge_candidate(a, i, b, j, es)) return 0;
         }
     }
     return 1;
@@ -509,15 +533,15 @@ static int sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axes
     }
     pose_edges(a);
     pose_edges(b);
-    double bound = face->depth / EDGE_PREFERENCE;   // an edge pair deeper never wins
+    edge_search es = { edge, found, sep, face->depth / EDGE_PREFERENCE, 0 };
+    update_threshold(a, b, &es);
     if (a->nedges <= MASK_BITS && b->nedges <= MASK_BITS && a->nplanes <= MASK_BITS &&
         b->nplanes <= MASK_BITS)
-        return masked_edge_pairs(a, b, bound, edge, found, sep);
+        return masked_edge_pairs(a, b, &es);
     for (unsigned i = 0; i < a->nedges; i++) {
         for (unsigned j = 0; j < b->nedges; j++) {
             double n[3];
-            if (edge_axis(a, i, b, j, n) && !edge_candidate(a, i, b, j, bound, edge, found, sep))
-                return 0;
+            if (edge_axis(a, i, b, j, n) && !edge_candidate(a, i, b, j, &es)) return 0;
         }
     }
     return 1;
@@ -531,6 +555,28 @@ static double edge_clearance(const double n[3], const double m[3], const double 
     double mn = dot3(m, n);
     if (mn == 0) return INFINITY;
     return mn > 0 ? s[0] / mn : s[1] / -mn;
+}
+
+// 0 if the kept edge pair (a's edge i, b's edge j) clearly cannot lower
+// the clearance best along n: its face of the Minkowski difference faces
+// away from n (edge_clearance infinite), or its ratio, from the
+// unnormalised cross product, is clearly above best. Edges without a
+// second face always count.
+static int edge_may_clear(const dx_hull *a, unsigned i, const dx_hull *b, unsigned j,
+                          const double n[3], double best)
+{
+    const dxHullEdge *ea = &a->edges[i], *eb = &b->edges[j];
+    if (ea->f1 == ea->f2 || eb->f1 == eb->f2) return 1;
+    const dxHullPosedEdge *xa = &a->we[i], *xb = &b->we[j];
+    double c[3];
+    cross3(xa->u, xb->u, c);
+    double cc = dot3(c, c), facing = dot3(c, xa->sum), cn = dot3(c, n);
+    if (!clear_sign(facing, cc, xa->ss) || !clear_sign(cn, cc, 1)) return 1;
+    if ((facing > 0) == (cn > 0)) return 0;
+    const double *pa = a->wp[ea->a], *pb = b->wp[eb->a];
+    double d[3] = { pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2] };
+    double gap = dot3(c, d), depth = facing > 0 ? gap : -gap;
+    return depth <= (best * (1 + 1e-9) + 1e-12 * (a->size + b->size)) * fabs(cn);
 }
 
 // The exact translation of a along the unit n that parts it from b (as
@@ -558,6 +604,7 @@ static double clearance(const dx_hull *a, const dx_hull *b, const double n[3], d
     }
     for (int k = 0; !found->overflow && k < found->n; k++) {
         unsigned i = found->pair[k][0], j = found->pair[k][1];
+        if (!edge_may_clear(a, i, b, j, n, best)) continue;
         double m[3], both[2];
         unit_cross(&a->we[i], &b->we[j], m);
         pair_depths(a, i, b, j, m, both);
