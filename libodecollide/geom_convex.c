@@ -121,7 +121,7 @@ static void convex_set(dxConvex *c, const dReal *planes, unsigned planecount,
         sides += *poly;
         poly += 1 + *poly;
     }
-    size_t doubles = 3 * (size_t)pointcount + 4 * (size_t)planecount;
+    size_t doubles = 6 * (size_t)pointcount + 7 * (size_t)planecount + 3 * sides;
     c->derived_size = sizeof(double) * doubles + sizeof(dxHullPosedEdge) * sides +
                       sizeof(dxHullEdge) * sides + sizeof(unsigned) * planecount;
     char *block = dAlloc(c->derived_size);
@@ -130,7 +130,16 @@ static void convex_set(dxConvex *c, const dReal *planes, unsigned planecount,
     pose->pts = (double (*)[3])block;
     pose->normals = pose->pts + pointcount;
     pose->offsets = (double *)(pose->normals + planecount);
-    pose->edges = (dxHullPosedEdge *)(pose->offsets + planecount);
+    pose->px = pose->offsets + planecount;
+    pose->py = pose->px + pointcount;
+    pose->pz = pose->py + pointcount;
+    pose->nx = pose->pz + pointcount;
+    pose->ny = pose->nx + planecount;
+    pose->nz = pose->ny + planecount;
+    pose->ex = pose->nz + planecount;
+    pose->ey = pose->ex + sides;
+    pose->ez = pose->ey + sides;
+    pose->edges = (dxHullPosedEdge *)(pose->ez + sides);
     pose->valid = pose->edges_valid = 0;
     c->edges = (dxHullEdge *)(pose->edges + sides);
     c->poly_start = (unsigned *)(c->edges + sides);

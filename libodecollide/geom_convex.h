@@ -45,6 +45,9 @@ typedef struct dxHullPose {
     double (*normals)[3];         // planecount unit outward normals ...
     double *offsets;              // ... and offsets (n . x = d)
     dxHullPosedEdge *edges;       // edgecount
+    // The same by coordinate, for loops over many at once: the points'
+    // x, y, z, the normals' x, y, z, the edges' n2 x n1 x, y, z.
+    double *px, *py, *pz, *nx, *ny, *nz, *ex, *ey, *ez;
 } dxHullPose;
 
 typedef struct dxConvex {

@@ -38,6 +38,9 @@ typedef struct dx_hull {
     const double *wd;         // ... and offsets
     dxHullPosedEdge *we;      // the edges in the world, once *edges_posed
     int *edges_posed;
+    // The points, normals and edges' n2 x n1 by coordinate (dxHullPose).
+    const double *px, *py, *pz, *nx, *ny, *nz;
+    double *ex, *ey, *ez;
     dxConvex *convex;         // the convex geom (its axis hints), NULL for a box
 } dx_hull;
 
@@ -48,6 +51,7 @@ typedef struct dx_hull_box {
     dxHullEdge edges[12];
     double wp[8][3], wn[6][3], wd[6];
     dxHullPosedEdge we[12];
+    double p_soa[3][8], n_soa[3][6], e_soa[3][12];
     int edges_posed;
 } dx_hull_box;
 

@@ -24,6 +24,10 @@
 #include <stdint.h>
 #include <string.h>
 
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+
 #define EDGE_PREFERENCE 1.05
 // Polygon buffers: the clipped polygon has at most the incident polygon's
 // count plus one per reference edge; larger polygons give one contact.
@@ -41,8 +45,10 @@ static void cross3(const double *a, const double *b, double out[3])
     out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-// Points and planes of the local arrays posed by R, c into wp, wn, wd.
-static void pose_points_planes(const dx_hull *h, double (*wp)[3], double (*wn)[3], double *wd)
+// Points and planes of the local arrays posed by R, c into wp, wn, wd,
+// and by coordinate into p[3] (points) and n[3] (normals).
+static void pose_points_planes(const dx_hull *h, double (*wp)[3], double (*wn)[3], double *wd,
+                               double *const p3[3], double *const n3[3])
 {
     for (unsigned v = 0; v < h->npts; v++) {
         const dReal *p = h->pts + 3 * v;
@@ -56,6 +62,10 @@ static void pose_points_planes(const dx_hull *h, double (*wp)[3], double (*wn)[3
         for (int r = 0; r < 3; r++)
             wn[f][r] = (h->R[3 * r] * p[0] + h->R[3 * r + 1] * p[1] + h->R[3 * r + 2] * p[2]) / l;
         wd[f] = p[3] / l + dot3(wn[f], h->c);
+    }
+    for (int r = 0; r < 3; r++) {
+        for (unsigned v = 0; v < h->npts; v++) p3[r][v] = wp[v][r];
+        for (unsigned f = 0; f < h->nplanes; f++) n3[r][f] = wn[f][r];
     }
 }
 
@@ -98,7 +108,17 @@ static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
     h->convex = NULL;
     const dReal *p = bx->pts;   // every corner is as far from the centre
     h->size = sqrt((double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2]);
-    pose_points_planes(h, bx->wp, bx->wn, bx->wd);
+    pose_points_planes(h, bx->wp, bx->wn, bx->wd, (double *const[3]){ bx->p_soa[0], bx->p_soa[1], bx->p_soa[2] },
+                       (double *const[3]){ bx->n_soa[0], bx->n_soa[1], bx->n_soa[2] });
+    h->px = bx->p_soa[0];
+    h->py = bx->p_soa[1];
+    h->pz = bx->p_soa[2];
+    h->nx = bx->n_soa[0];
+    h->ny = bx->n_soa[1];
+    h->nz = bx->n_soa[2];
+    h->ex = bx->e_soa[0];
+    h->ey = bx->e_soa[1];
+    h->ez = bx->e_soa[2];
     h->wp = (const double (*)[3])bx->wp;
     h->wn = (const double (*)[3])bx->wn;
     h->wd = bx->wd;
@@ -125,7 +145,9 @@ static void convex_hull(dx_hull *h, const dxGeom *g)
     dxHullPose *pose = &c->pose;
     if (!pose->valid || memcmp(pose->pos, g->pos, sizeof pose->pos) != 0 ||
         memcmp(pose->R, g->R, sizeof pose->R) != 0) {
-        pose_points_planes(h, pose->pts, pose->normals, pose->offsets);
+        pose_points_planes(h, pose->pts, pose->normals, pose->offsets,
+                           (double *const[3]){ pose->px, pose->py, pose->pz },
+                           (double *const[3]){ pose->nx, pose->ny, pose->nz });
         memcpy(pose->pos, g->pos, sizeof pose->pos);
         memcpy(pose->R, g->R, sizeof pose->R);
         pose->valid = 1;
@@ -136,6 +158,15 @@ static void convex_hull(dx_hull *h, const dxGeom *g)
     h->wd = pose->offsets;
     h->we = pose->edges;
     h->edges_posed = &pose->edges_valid;
+    h->px = pose->px;
+    h->py = pose->py;
+    h->pz = pose->pz;
+    h->nx = pose->nx;
+    h->ny = pose->ny;
+    h->nz = pose->nz;
+    h->ex = pose->ex;
+    h->ey = pose->ey;
+    h->ez = pose->ez;
 }
 
 void dx_hull_of_geom(dx_hull *h, const dxGeom *g, dx_hull_box *bx)
@@ -164,12 +195,102 @@ static void pose_edges(dx_hull *h)
         out->uu = dot3(out->u, out->u);
         out->ss = dot3(out->sum, out->sum);
         cross3(h->wn[e->f2], h->wn[e->f1], out->n2xn1);
+        h->ex[k] = out->n2xn1[0];
+        h->ey[k] = out->n2xn1[1];
+        h->ez[k] = out->n2xn1[2];
     }
     *h->edges_posed = 1;
 }
 
+// The least and the largest of m . (x[k], y[k], z[k]) over k < n, each
+// product made as dot3 makes it (two at a time where SSE2 is there; the
+// same numbers either way).
+static void dot_range(const double m[3], const double *x, const double *y, const double *z,
+                      unsigned n, double *lo, double *hi)
+{
+    double mn = INFINITY, mx = -INFINITY;
+    unsigned k = 0;
+#ifdef __SSE2__
+    __m128d m0 = _mm_set1_pd(m[0]), m1 = _mm_set1_pd(m[1]), m2 = _mm_set1_pd(m[2]);
+    __m128d vlo = _mm_set1_pd(INFINITY), vhi = _mm_set1_pd(-INFINITY);
+    for (; k + 2 <= n; k += 2) {
+        __m128d e = _mm_add_pd(_mm_add_pd(_mm_mul_pd(m0, _mm_loadu_pd(x + k)),
+                                          _mm_mul_pd(m1, _mm_loadu_pd(y + k))),
+                               _mm_mul_pd(m2, _mm_loadu_pd(z + k)));
+        vlo = _mm_min_pd(e, vlo);   // a NaN product is skipped, as below
+        vhi = _mm_max_pd(e, vhi);
+    }
+    double l2[2], h2[2];
+    _mm_storeu_pd(l2, vlo);
+    _mm_storeu_pd(h2, vhi);
+    mn = l2[0] < l2[1] ? l2[0] : l2[1];
+    mx = h2[0] > h2[1] ? h2[0] : h2[1];
+#endif
+    for (; k < n; k++) {
+        double e = m[0] * x[k] + m[1] * y[k] + m[2] * z[k];
+        mn = e < mn ? e : mn;
+        mx = e > mx ? e : mx;
+    }
+    *lo = mn;
+    *hi = mx;
+}
+
+// The largest of m . (x[k], y[k], z[k]) over k < n (dot_range's way).
+static double dot_max(const double m[3], const double *x, const double *y, const double *z,
+                      unsigned n)
+{
+    double mx = -INFINITY;
+    unsigned k = 0;
+#ifdef __SSE2__
+    __m128d m0 = _mm_set1_pd(m[0]), m1 = _mm_set1_pd(m[1]), m2 = _mm_set1_pd(m[2]);
+    __m128d vhi = _mm_set1_pd(-INFINITY);
+    for (; k + 2 <= n; k += 2) {
+        __m128d e = _mm_add_pd(_mm_add_pd(_mm_mul_pd(m0, _mm_loadu_pd(x + k)),
+                                          _mm_mul_pd(m1, _mm_loadu_pd(y + k))),
+                               _mm_mul_pd(m2, _mm_loadu_pd(z + k)));
+        vhi = _mm_max_pd(e, vhi);
+    }
+    double h2[2];
+    _mm_storeu_pd(h2, vhi);
+    mx = h2[0] > h2[1] ? h2[0] : h2[1];
+#endif
+    for (; k < n; k++) {
+        double e = m[0] * x[k] + m[1] * y[k] + m[2] * z[k];
+        mx = e > mx ? e : mx;
+    }
+    return mx;
+}
+
+// The signs of c . (x[k], y[k], z[k]) for k < n (made as dot3 makes them):
+// bit k of *pos where above 0, of *neg where below.
+static void dot_signs(const double c[3], const double *x, const double *y, const double *z,
+                      unsigned n, uint64_t *pos, uint64_t *neg)
+{
+    uint64_t p = 0, q = 0;
+    unsigned k = 0;
+#ifdef __SSE2__
+    __m128d c0 = _mm_set1_pd(c[0]), c1 = _mm_set1_pd(c[1]), c2 = _mm_set1_pd(c[2]);
+    __m128d zero = _mm_setzero_pd();
+    for (; k + 2 <= n; k += 2) {
+        __m128d d = _mm_add_pd(_mm_add_pd(_mm_mul_pd(c0, _mm_loadu_pd(x + k)),
+                                          _mm_mul_pd(c1, _mm_loadu_pd(y + k))),
+                               _mm_mul_pd(c2, _mm_loadu_pd(z + k)));
+        p |= (uint64_t)_mm_movemask_pd(_mm_cmpgt_pd(d, zero)) << k;
+        q |= (uint64_t)_mm_movemask_pd(_mm_cmplt_pd(d, zero)) << k;
+    }
+#endif
+    for (; k < n; k++) {
+        double d = c[0] * x[k] + c[1] * y[k] + c[2] * z[k];
+        p |= (uint64_t)(d > 0) << k;
+        q |= (uint64_t)(d < 0) << k;
+    }
+    *pos = p;
+    *neg = q;
+}
+
 double dx_hull_extent(const dx_hull *h, const double m[3], unsigned *idx)
 {
+    if (!idx) return dot_max(m, h->px, h->py, h->pz, h->npts);
     double best = -INFINITY;
     unsigned bi = 0;
     for (unsigned v = 0; v < h->npts; v++) {
@@ -179,20 +300,13 @@ double dx_hull_extent(const dx_hull *h, const double m[3], unsigned *idx)
             bi = v;
         }
     }
-    if (idx) *idx = bi;
+    *idx = bi;
     return best;
 }
 
 void dx_hull_interval(const dx_hull *h, const double m[3], double *lo, double *hi)
 {
-    double mn = INFINITY, mx = -INFINITY;
-    for (unsigned v = 0; v < h->npts; v++) {
-        double e = dot3(m, h->wp[v]);
-        mn = e < mn ? e : mn;
-        mx = e > mx ? e : mx;
-    }
-    *lo = mn;
-    *hi = mx;
+    dot_range(m, h->px, h->py, h->pz, h->npts, lo, hi);
 }
 
 int dx_hull_clip_line(const dx_hull *h, const double o[3], const double d[3], double tol,
@@ -300,8 +414,9 @@ typedef struct sat_axis {
 } sat_axis;
 
 // What sat measured, for clearance: the depth along each face axis (if
-// both hulls' faces fit), and the edge pairs whose axes count (their
-// edges' indices in a and b), unless there were more.
+// both hulls' faces fit), and the edge pairs whose axes may lower the
+// clearance along the best face's normal (their edges' indices in a and
+// b), unless there were more.
 enum { MAX_EDGE_AXES = 1024, KEPT_FACES = 48 };
 typedef struct edge_axes {
     double face_s[2][KEPT_FACES];
@@ -385,14 +500,16 @@ typedef struct edge_search {
     sat_axis *edge;
     edge_axes *found;
     double *sep;
+    const sat_axis *face;   // the best face axis (final: the edge pairs come after)
     double bound;   // face depth / EDGE_PREFERENCE: an edge pair deeper never wins
     double thr;     // the least of bound and edge->depth, with a margin for rounding
+    double margin;  // a depth's margin for rounding: 1e-12 (a->size + b->size)
 } edge_search;
 
-static void update_threshold(const dx_hull *a, const dx_hull *b, edge_search *es)
+static void update_threshold(edge_search *es)
 {
     double least = es->edge->depth < es->bound ? es->edge->depth : es->bound;
-    es->thr = least * (1 + 1e-9) + 1e-12 * (a->size + b->size);
+    es->thr = least * (1 + 1e-9) + es->margin;
 }
 
 // Whether the sign of the unnormalised product x (of the cross product
@@ -402,9 +519,33 @@ static int clear_sign(double x, double cc, double vv)
     return x * x > 1e-12 * cc * vv;
 }
 
+// Keeps the pair (a's edge i, b's edge j) for clearance.
+static void keep_pair(edge_axes *found, unsigned i, unsigned j)
+{
+    if (found->n < MAX_EDGE_AXES) {
+        found->pair[found->n][0] = i;
+        found->pair[found->n++][1] = j;
+    } else {
+        found->overflow = 1;
+    }
+}
+
+// 0 if an edge pair (c its unnormalised cross product, c . c = cc, facing
+// = c . (n1 + n2) of a's edge, depth its positive depth times |c|) clearly
+// cannot lower the clearance along the best face's normal below the face's
+// own depth, where clearance starts (see edge_may_clear).
+static int may_clear(const edge_search *es, const double c[3], double cc, double facing,
+                     double depth)
+{
+    double cn = dot3(c, es->face->n);
+    if (!clear_sign(cn, cc, 1)) return 1;
+    if ((facing > 0) == (cn > 0)) return 0;
+    return depth <= (es->face->depth * (1 + 1e-9) + es->margin) * fabs(cn);
+}
+
 // The edge pair (a's edge i, b's edge j) whose arcs cross: 0 (the axis
-// into sep) if its axis parts the hulls; else kept in found (for
-// clearance), and its depth in edge if least. The exact test (edge_axis's
+// into sep) if its axis parts the hulls; else kept in found if it may
+// matter to clearance, and its depth in edge if least. The exact test (edge_axis's
 // unit axis, pair_depths, edge_pair) runs only where it can matter: where
 // the pair's depth, from the unnormalised cross product c of the edges,
 // is not clearly positive or not clearly above the threshold (beyond which
@@ -419,26 +560,22 @@ static int edge_candidate(const dx_hull *a, unsigned i, const dx_hull *b, unsign
     cross3(xa->u, xb->u, c);
     double cc = dot3(c, c);
     if (cc <= DX_COLLIDE_EPS * xa->uu * xb->uu) return 1;   // parallel: unit_cross's test
-    edge_axes *found = es->found;
-    if (found->n < MAX_EDGE_AXES) {
-        found->pair[found->n][0] = i;
-        found->pair[found->n++][1] = j;
-    } else {
-        found->overflow = 1;
-    }
     const dxHullEdge *ea = &a->edges[i], *eb = &b->edges[j];
     if (ea->f1 != ea->f2 && eb->f1 != eb->f2) {
         const double *pa = a->wp[ea->a], *pb = b->wp[eb->a];
         double d[3] = { pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2] };
         double facing = dot3(c, xa->sum), gap = dot3(c, d);
         double depth = facing > 0 ? gap : -gap;   // times |c|
-        if (depth > 0 && depth * depth > es->thr * es->thr * cc && clear_sign(facing, cc, xa->ss))
-            return 1;
+        int sure = clear_sign(facing, cc, xa->ss);
+        if (!sure || depth <= 0 || may_clear(es, c, cc, facing, depth)) keep_pair(es->found, i, j);
+        if (sure && depth > 0 && depth * depth > es->thr * es->thr * cc) return 1;
+    } else {
+        keep_pair(es->found, i, j);
     }
     double n[3];
     unit_cross(xa, xb, n);
     if (!edge_pair(a, i, b, j, n, es->edge, es->sep)) return 0;
-    update_threshold(a, b, es);
+    update_threshold(es);
     return 1;
 }
 
@@ -466,27 +603,25 @@ static int masked_edge_pairs(const dx_hull *a, const dx_hull *b, edge_search *es
         first[e->f1] |= bit;
         second[e->f2] |= bit;
         if (e->f1 == e->f2) lone |= bit;
-        for (unsigned f = 0; f < a->nplanes; f++) {
-            double d = dot3(b->we[j].n2xn1, a->wn[f]);
-            above[f] |= d > 0 ? bit : 0;
-            below[f] |= d < 0 ? bit : 0;
-        }
     }
+    for (unsigned f = 0; f < a->nplanes; f++)
+        dot_signs(a->wn[f], b->ex, b->ey, b->ez, b->nedges, &above[f], &below[f]);
     uint64_t all = b->nedges == MASK_BITS ? ~(uint64_t)0 : ((uint64_t)1 << b->nedges) - 1;
     for (unsigned i = 0; i < a->nedges; i++) {
         const dxHullEdge *ea = &a->edges[i];
         uint64_t cand = all;
         if (ea->f1 != ea->f2) {
-            uint64_t first_pos = 0, first_neg = 0, second_pos = 0, second_neg = 0;
-            for (unsigned f = 0; f < b->nplanes; f++) {
-                double d = dot3(a->we[i].n2xn1, b->wn[f]);
-                if (d > 0) {
-                    first_pos |= first[f];
-                    second_pos |= second[f];
-                } else if (d < 0) {
-                    first_neg |= first[f];
-                    second_neg |= second[f];
-                }
+            uint64_t first_pos = 0, first_neg = 0, second_pos = 0, second_neg = 0, pos, neg;
+            dot_signs(a->we[i].n2xn1, b->nx, b->ny, b->nz, b->nplanes, &pos, &neg);
+            for (; pos; pos &= pos - 1) {
+                unsigned f = (unsigned)__builtin_ctzll(pos);
+                first_pos |= first[f];
+                second_pos |= second[f];
+            }
+            for (; neg; neg &= neg - 1) {
+                unsigned f = (unsigned)__builtin_ctzll(neg);
+                first_neg |= first[f];
+                second_neg |= second[f];
             }
             uint64_t s = (first_pos & second_neg) | (first_neg & second_pos);
             uint64_t u = (above[ea->f1] & below[ea->f2]) | (below[ea->f1] & above[ea->f2]);
@@ -533,8 +668,9 @@ static int sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axes
     }
     pose_edges(a);
     pose_edges(b);
-    edge_search es = { edge, found, sep, face->depth / EDGE_PREFERENCE, 0 };
-    update_threshold(a, b, &es);
+    edge_search es = { edge, found, sep, face, face->depth / EDGE_PREFERENCE, 0,
+                       1e-12 * (a->size + b->size) };
+    update_threshold(&es);
     if (a->nedges <= MASK_BITS && b->nedges <= MASK_BITS && a->nplanes <= MASK_BITS &&
         b->nplanes <= MASK_BITS)
         return masked_edge_pairs(a, b, &es);
