@@ -108,7 +108,8 @@ static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
     h->convex = NULL;
     const dReal *p = bx->pts;   // every corner is as far from the centre
     h->size = sqrt((double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2]);
-    pose_points_planes(h, bx->wp, bx->wn, bx->wd, (double *const[3]){ bx->p_soa[0], bx->p_soa[1], bx->p_soa[2] },
+    pose_points_planes(h, bx->wp, bx->wn, bx->wd,
+                       (double *const[3]){ bx->p_soa[0], bx->p_soa[1], bx->p_soa[2] },
                        (double *const[3]){ bx->n_soa[0], bx->n_soa[1], bx->n_soa[2] });
     h->px = bx->p_soa[0];
     h->py = bx->p_soa[1];
@@ -263,8 +264,8 @@ static double dot_max(const double m[3], const double *x, const double *y, const
 
 // The signs of c . (x[k], y[k], z[k]) for k < n (made as dot3 makes them):
 // bit k of *pos where above 0, of *neg where below.
-static void dot_signs(const double c[3], const double *x, const double *y, const double *z,
-                      unsigned n, uint64_t *pos, uint64_t *neg)
+static inline void dot_signs(const double c[3], const double *x, const double *y,
+                             const double *z, unsigned n, uint64_t *pos, uint64_t *neg)
 {
     uint64_t p = 0, q = 0;
     unsigned k = 0;
@@ -552,8 +553,8 @@ static int may_clear(const edge_search *es, const double c[3], double cc, double
 // the pair can be neither the least depth nor win over the best face); a
 // pair it skips would not have changed edge. Edges without a second face
 // always take the exact test.
-static int edge_candidate(const dx_hull *a, unsigned i, const dx_hull *b, unsigned j,
-                          edge_search *es)
+static inline int edge_candidate(const dx_hull *a, unsigned i, const dx_hull *b, unsigned j,
+                                 edge_search *es)
 {
     const dxHullPosedEdge *xa = &a->we[i], *xb = &b->we[j];
     double c[3];
