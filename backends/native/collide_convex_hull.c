@@ -1050,8 +1050,8 @@ int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
     int n = face_points(r, face.face, nf, df, inc, max, pts);
     // The exact translation that parts them, at most face.depth: needed
     // only where the deepest point is short of that.
-    double clear = n > 0 && pts[0].depth >= face.depth ? face.depth
-                                                        : clearance(a, b, face.n, face.depth, &found);
+    double clear = face.depth;
+    if (n == 0 || pts[0].depth < face.depth) clear = clearance(a, b, face.n, face.depth, &found);
     if (n == 0) {
         double pos[3];
         deepest_pair_point(a, b, face.n, pos);
