@@ -48,6 +48,7 @@ typedef struct dxHullPose {
     // The same by coordinate, for loops over many at once: the points'
     // x, y, z, the normals' x, y, z, the edges' n2 x n1 x, y, z.
     double *px, *py, *pz, *nx, *ny, *nz, *ex, *ey, *ez;
+    double centre[3];             // the mean of the points: inside the hull
 } dxHullPose;
 
 typedef struct dxConvex {

@@ -33,6 +33,7 @@ typedef struct dx_hull {
     double R[9];              // world = R local + c (row-major)
     double c[3];
     double size;              // the largest distance of a point from the origin of the frame
+    double centre[3];         // a point inside, in the world
     const double (*wp)[3];    // the points in the world
     const double (*wn)[3];    // the planes in the world: unit outward normals ...
     const double *wd;         // ... and offsets

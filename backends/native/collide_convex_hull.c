@@ -120,6 +120,7 @@ static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
     h->ex = bx->e_soa[0];
     h->ey = bx->e_soa[1];
     h->ez = bx->e_soa[2];
+    memcpy(h->centre, h->c, sizeof h->centre);
     h->wp = (const double (*)[3])bx->wp;
     h->wn = (const double (*)[3])bx->wn;
     h->wd = bx->wd;
@@ -149,11 +150,16 @@ static void convex_hull(dx_hull *h, const dxGeom *g)
         pose_points_planes(h, pose->pts, pose->normals, pose->offsets,
                            (double *const[3]){ pose->px, pose->py, pose->pz },
                            (double *const[3]){ pose->nx, pose->ny, pose->nz });
+        double sum[3] = { 0, 0, 0 };
+        for (unsigned v = 0; v < h->npts; v++)
+            for (int i = 0; i < 3; i++) sum[i] += pose->pts[v][i];
+        for (int i = 0; i < 3; i++) pose->centre[i] = sum[i] / h->npts;
         memcpy(pose->pos, g->pos, sizeof pose->pos);
         memcpy(pose->R, g->R, sizeof pose->R);
         pose->valid = 1;
         pose->edges_valid = 0;
     }
+    memcpy(h->centre, pose->centre, sizeof h->centre);
     h->wp = (const double (*)[3])pose->pts;
     h->wn = (const double (*)[3])pose->normals;
     h->wd = pose->offsets;
@@ -580,6 +586,21 @@ static inline int edge_candidate(const dx_hull *a, unsigned i, const dx_hull *b,
     return 1;
 }
 
+// Whether every edge pair with h's edge k (two faces) is clearly deeper
+// than far, q being a point inside the other hull. Where such a pair is a
+// face of the Minkowski difference its normal d lies on k's arc (between
+// its faces' outward normals) and its depth is h's extent along d, d . p
+// for p on the edge, plus the other's along -d, at least -d . q: so at
+// least the least of d . (p - q) over the arc, which (the arc shorter than
+// a half circle) is at one of its ends when both are positive.
+static int edge_far(const dx_hull *h, unsigned k, const double q[3], double far)
+{
+    const dxHullEdge *e = &h->edges[k];
+    const double *p = h->wp[e->a];
+    double w[3] = { p[0] - q[0], p[1] - q[1], p[2] - q[2] };
+    return dot3(h->wn[e->f1], w) > far && dot3(h->wn[e->f2], w) > far;
+}
+
 // The edge pairs of sat for hulls whose edges and faces fit 64-bit masks.
 // edge_axis's arc test asks, of a's edge i (faces f1, f2) and b's edge j
 // (faces g1, g2), for the signs of the products of each edge's circle
@@ -591,7 +612,9 @@ static inline int edge_candidate(const dx_hull *a, unsigned i, const dx_hull *b,
 // first and second face; for a's face f the sets of b's edges whose
 // circle it is above and below. Then the pairs that pass are, for each i,
 // the set bits of S & U & W, visited in edge_axis's order. An edge
-// without a second face meets every edge.
+// without a second face meets every edge. Edges whose every pair is
+// clearly deeper than the best face (edge_far) are left out: such a pair
+// can neither part the hulls, nor win, nor lower the clearance.
 enum { MASK_BITS = 64 };
 
 static int masked_edge_pairs(const dx_hull *a, const dx_hull *b, edge_search *es)
@@ -608,10 +631,16 @@ static int masked_edge_pairs(const dx_hull *a, const dx_hull *b, edge_search *es
     for (unsigned f = 0; f < a->nplanes; f++)
         dot_signs(a->wn[f], b->ex, b->ey, b->ez, b->nedges, &above[f], &below[f]);
     uint64_t all = b->nedges == MASK_BITS ? ~(uint64_t)0 : ((uint64_t)1 << b->nedges) - 1;
+    double far = es->face->depth * (1 + 1e-9) + 2 * es->margin;
+    uint64_t near_b = all;
+    for (unsigned j = 0; j < b->nedges; j++)
+        if (!(lone >> j & 1) && edge_far(b, j, a->centre, far)) near_b &= ~((uint64_t)1 << j);
     for (unsigned i = 0; i < a->nedges; i++) {
         const dxHullEdge *ea = &a->edges[i];
         uint64_t cand = all;
-        if (ea->f1 != ea->f2) {
+        if (ea->f1 != ea->f2 && edge_far(a, i, b->centre, far)) {
+            cand = lone;
+        } else if (ea->f1 != ea->f2) {
             uint64_t first_pos = 0, first_neg = 0, second_pos = 0, second_neg = 0, pos, neg;
             dot_signs(a->we[i].n2xn1, b->nx, b->ny, b->nz, b->nplanes, &pos, &neg);
             for (; pos; pos &= pos - 1) {
@@ -627,7 +656,7 @@ static int masked_edge_pairs(const dx_hull *a, const dx_hull *b, edge_search *es
             uint64_t s = (first_pos & second_neg) | (first_neg & second_pos);
             uint64_t u = (above[ea->f1] & below[ea->f2]) | (below[ea->f1] & above[ea->f2]);
             uint64_t w = (first_neg & above[ea->f2]) | (first_pos & below[ea->f2]);
-            cand = (s & u & w) | lone;
+            cand = (s & u & w & near_b) | lone;
         }
         for (; cand; cand &= cand - 1) {
             unsigned j = (unsigned)__builtin_ctzll(cand);
