@@ -372,6 +372,25 @@ static double face_depth(const dx_hull *a, const dx_hull *b, int side, unsigned 
                 : dx_hull_extent(b, n, NULL) + face_extent(a, f, m);
 }
 
+// The axis of a's face f (side 0: its inward normal, along which a's face
+// pushes a back) or b's (side 1: its outward normal) into n.
+static void face_axis(const dx_hull *a, const dx_hull *b, int side, unsigned f, double n[3])
+{
+    const double *m = side ? b->wn[f] : a->wn[f];
+    for (int i = 0; i < 3; i++) n[i] = side ? m[i] : -m[i];
+}
+
+// A floor under face_depth for h's face f, q a point inside the other
+// hull: h's extent along the face's normal m is at least m . p for the
+// polygon's first point p, the other's along -m at least -m . q.
+static double face_floor(const dx_hull *h, unsigned f, const double q[3])
+{
+    unsigned count;
+    const double *p = h->wp[*dx_hull_polygon(h, f, &count)];
+    double w[3] = { p[0] - q[0], p[1] - q[1], p[2] - q[2] };
+    return dot3(h->wn[f], w);
+}
+
 // Whether a's arc (from n1 to n2) and b's negated arc (for the difference,
 // from -n1 to -n2) cross on the unit sphere: each arc's ends lie on
 // opposite sides of the other's great circle, on the same side. cba, dba:
@@ -426,8 +445,10 @@ typedef struct sat_axis {
 // b), unless there were more.
 enum { MAX_EDGE_AXES = 1024, KEPT_FACES = 48 };
 typedef struct edge_axes {
-    double face_s[2][KEPT_FACES];
+    double face_s[2][KEPT_FACES];   // infinite for a face clearly deeper than the best
     int faces_kept;
+    double margin;   // for rounding, in the screens of depths: 1e-12 times the scale
+                     // of the sizes and the coordinates
     unsigned pair[MAX_EDGE_AXES][2];
     int n, overflow;
 } edge_axes;
@@ -510,7 +531,7 @@ typedef struct edge_search {
     const sat_axis *face;   // the best face axis (final: the edge pairs come after)
     double bound;   // face depth / EDGE_PREFERENCE: an edge pair deeper never wins
     double thr;     // the least of bound and edge->depth, with a margin for rounding
-    double margin;  // a depth's margin for rounding: 1e-12 (a->size + b->size)
+    double margin;  // a depth's margin for rounding (edge_axes' margin)
 } edge_search;
 
 static void update_threshold(edge_search *es)
@@ -593,7 +614,7 @@ static inline int edge_candidate(const dx_hull *a, unsigned i, const dx_hull *b,
 // for p on the edge, plus the other's along -d, at least -d . q: so at
 // least the least of d . (p - q) over the arc, which (the arc shorter than
 // a half circle) is at one of its ends when both are positive.
-static int edge_far(const dx_hull *h, unsigned k, const double q[3], double far)
+static inline int edge_far(const dx_hull *h, unsigned k, const double q[3], double far)
 {
     const dxHullEdge *e = &h->edges[k];
     const double *p = h->wp[e->a];
@@ -674,15 +695,44 @@ static int sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axes
 {
     found->n = found->overflow = 0;
     found->faces_kept = a->nplanes <= KEPT_FACES && b->nplanes <= KEPT_FACES;
+    double scale = a->size + b->size;
+    for (int i = 0; i < 3; i++) scale += fabs(a->c[i]) + fabs(b->c[i]);
+    found->margin = 1e-12 * scale;
     face->depth = edge->depth = INFINITY;
+    // A face's depth is at least face_floor: faces clearly deeper than a
+    // first guess (the face of least floor) are skipped.
+    double floors[2][KEPT_FACES], guess = INFINITY, limit = INFINITY;
+    int gside = 0;
+    unsigned gface = 0;
+    if (found->faces_kept) {
+        for (int side = 0; side < 2; side++) {
+            const dx_hull *h = side ? b : a, *o = side ? a : b;
+            for (unsigned f = 0; f < h->nplanes; f++) {
+                floors[side][f] = face_floor(h, f, o->centre);
+                if (floors[side][f] < guess) {
+                    guess = floors[side][f];
+                    gside = side;
+                    gface = f;
+                }
+            }
+        }
+        double n[3];
+        face_axis(a, b, gside, gface, n);
+        guess = face_depth(a, b, gside, gface, n);
+        if (guess >= 0) limit = guess * (1 + 1e-9) + 2 * found->margin;
+    }
     for (int side = 0; side < 2; side++) {
         const dx_hull *h = side ? b : a;
         for (unsigned f = 0; f < h->nplanes; f++) {
-            double n[3], d;
-            dx_hull_plane(h, f, n, &d);
-            if (!side)   // a's face pushes a back along -n
-                for (int i = 0; i < 3; i++) n[i] = -n[i];
-            double s = face_depth(a, b, side, f, n);
+            if (limit < INFINITY && floors[side][f] > limit) {
+                found->face_s[side][f] = INFINITY;
+                continue;
+            }
+            double n[3];
+            face_axis(a, b, side, f, n);
+            double s = side == gside && f == gface && limit < INFINITY
+                           ? guess
+                           : face_depth(a, b, side, f, n);
             if (s < 0) {
                 memcpy(sep, n, sizeof n);
                 return 0;
@@ -699,7 +749,7 @@ static int sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axes
     pose_edges(a);
     pose_edges(b);
     edge_search es = { edge, found, sep, face, face->depth / EDGE_PREFERENCE, 0,
-                       1e-12 * (a->size + b->size) };
+                       found->margin };
     update_threshold(&es);
     if (a->nedges <= MASK_BITS && b->nedges <= MASK_BITS && a->nplanes <= MASK_BITS &&
         b->nplanes <= MASK_BITS)
@@ -729,7 +779,7 @@ static double edge_clearance(const double n[3], const double m[3], const double 
 // unnormalised cross product, is clearly above best. Edges without a
 // second face always count.
 static int edge_may_clear(const dx_hull *a, unsigned i, const dx_hull *b, unsigned j,
-                          const double n[3], double best)
+                          const double n[3], double best, double margin)
 {
     const dxHullEdge *ea = &a->edges[i], *eb = &b->edges[j];
     if (ea->f1 == ea->f2 || eb->f1 == eb->f2) return 1;
@@ -742,7 +792,7 @@ static int edge_may_clear(const dx_hull *a, unsigned i, const dx_hull *b, unsign
     const double *pa = a->wp[ea->a], *pb = b->wp[eb->a];
     double d[3] = { pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2] };
     double gap = dot3(c, d), depth = facing > 0 ? gap : -gap;
-    return depth <= (best * (1 + 1e-9) + 1e-12 * (a->size + b->size)) * fabs(cn);
+    return depth <= (best * (1 + 1e-9) + margin) * fabs(cn);
 }
 
 // The exact translation of a along the unit n that parts it from b (as
@@ -770,7 +820,7 @@ static double clearance(const dx_hull *a, const dx_hull *b, const double n[3], d
     }
     for (int k = 0; !found->overflow && k < found->n; k++) {
         unsigned i = found->pair[k][0], j = found->pair[k][1];
-        if (!edge_may_clear(a, i, b, j, n, best)) continue;
+        if (!edge_may_clear(a, i, b, j, n, best, found->margin)) continue;
         double m[3], both[2];
         unit_cross(&a->we[i], &b->we[j], m);
         pair_depths(a, i, b, j, m, both);
