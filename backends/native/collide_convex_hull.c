@@ -649,17 +649,26 @@ static int masked_edge_pairs(const dx_hull *a, const dx_hull *b, edge_search *es
         second[e->f2] |= bit;
         if (e->f1 == e->f2) lone |= bit;
     }
-    for (unsigned f = 0; f < a->nplanes; f++)
-        dot_signs(a->wn[f], b->ex, b->ey, b->ez, b->nedges, &above[f], &below[f]);
     uint64_t all = b->nedges == MASK_BITS ? ~(uint64_t)0 : ((uint64_t)1 << b->nedges) - 1;
     double far = es->face->depth * (1 + 1e-9) + 2 * es->margin;
-    uint64_t near_b = all;
+    uint64_t near_b = all, near_a = 0, faces = 0;   // a's near edges, and their faces
     for (unsigned j = 0; j < b->nedges; j++)
         if (!(lone >> j & 1) && edge_far(b, j, a->centre, far)) near_b &= ~((uint64_t)1 << j);
     for (unsigned i = 0; i < a->nedges; i++) {
         const dxHullEdge *ea = &a->edges[i];
+        if (ea->f1 == ea->f2 || !edge_far(a, i, b->centre, far)) {
+            near_a |= (uint64_t)1 << i;
+            faces |= (uint64_t)1 << ea->f1 | (uint64_t)1 << ea->f2;
+        }
+    }
+    for (; faces; faces &= faces - 1) {
+        unsigned f = (unsigned)__builtin_ctzll(faces);
+        dot_signs(a->wn[f], b->ex, b->ey, b->ez, b->nedges, &above[f], &below[f]);
+    }
+    for (unsigned i = 0; i < a->nedges; i++) {
+        const dxHullEdge *ea = &a->edges[i];
         uint64_t cand = all;
-        if (ea->f1 != ea->f2 && edge_far(a, i, b->centre, far)) {
+        if (!(near_a >> i & 1)) {
             cand = lone;
         } else if (ea->f1 != ea->f2) {
             uint64_t first_pos = 0, first_neg = 0, second_pos = 0, second_neg = 0, pos, neg;
