@@ -608,7 +608,7 @@ static inline int edge_candidate(const dx_hull *a, unsigned i, const dx_hull *b,
 }
 
 // Whether every edge pair with h's edge k (two faces) is clearly deeper
-// than far, q being a point inside the other hull. Where such a pair is a
+// than far, q being a point of the other hull. Where such a pair is a
 // face of the Minkowski difference its normal d lies on k's arc (between
 // its faces' outward normals) and its depth is h's extent along d, d . p
 // for p on the edge, plus the other's along -d, at least -d . q: so at
@@ -651,12 +651,21 @@ static int masked_edge_pairs(const dx_hull *a, const dx_hull *b, edge_search *es
     }
     uint64_t all = b->nedges == MASK_BITS ? ~(uint64_t)0 : ((uint64_t)1 << b->nedges) - 1;
     double far = es->face->depth * (1 + 1e-9) + 2 * es->margin;
+    // The point of each hull furthest towards the other's centre (points
+    // of the hulls, for edge_far: tighter there than the centres).
+    double ab[3] = { b->centre[0] - a->centre[0], b->centre[1] - a->centre[1],
+                     b->centre[2] - a->centre[2] };
+    double ba[3] = { -ab[0], -ab[1], -ab[2] };
+    unsigned va, vb;
+    dx_hull_extent(a, ab, &va);
+    dx_hull_extent(b, ba, &vb);
+    const double *qa = a->wp[va], *qb = b->wp[vb];
     uint64_t near_b = all, near_a = 0, faces = 0;   // a's near edges, and their faces
     for (unsigned j = 0; j < b->nedges; j++)
-        if (!(lone >> j & 1) && edge_far(b, j, a->centre, far)) near_b &= ~((uint64_t)1 << j);
+        if (!(lone >> j & 1) && edge_far(b, j, qa, far)) near_b &= ~((uint64_t)1 << j);
     for (unsigned i = 0; i < a->nedges; i++) {
         const dxHullEdge *ea = &a->edges[i];
-        if (ea->f1 == ea->f2 || !edge_far(a, i, b->centre, far)) {
+        if (ea->f1 == ea->f2 || !edge_far(a, i, qb, far)) {
             near_a |= (uint64_t)1 << i;
             faces |= (uint64_t)1 << ea->f1 | (uint64_t)1 << ea->f2;
         }
