@@ -640,8 +640,9 @@ enum { MASK_BITS = 64 };
 
 static int masked_edge_pairs(const dx_hull *a, const dx_hull *b, edge_search *es)
 {
-    uint64_t first[MASK_BITS] = { 0 }, second[MASK_BITS] = { 0 }, lone = 0;   // b's edges by face
-    uint64_t above[MASK_BITS] = { 0 }, below[MASK_BITS] = { 0 };   // by a's face: b's edges
+    uint64_t first[MASK_BITS], second[MASK_BITS], lone = 0;   // b's edges by face
+    uint64_t above[MASK_BITS], below[MASK_BITS];              // by a's face: b's edges
+    for (unsigned f = 0; f < b->nplanes; f++) first[f] = second[f] = 0;
     for (unsigned j = 0; j < b->nedges; j++) {
         const dxHullEdge *e = &b->edges[j];
         uint64_t bit = (uint64_t)1 << j;
@@ -874,6 +875,56 @@ static int middle_inside(const dx_hull *a, const dx_hull *b, const double q[3], 
     return 1;
 }
 
+// The lines along one direction d, clipped to a hull many times (each
+// point of a face contact): each plane's n . d, made once (dx_hull_clip_line
+// makes the same numbers per call), for hulls of at most LINE_PLANES planes.
+enum { LINE_PLANES = 64 };
+typedef struct line_planes {
+    double nd[LINE_PLANES], dl;
+} line_planes;
+
+static int line_planes_of(const dx_hull *h, const double d[3], line_planes *lp)
+{
+    if (h->nplanes > LINE_PLANES) return 0;
+    lp->dl = sqrt(dot3(d, d));
+    for (unsigned f = 0; f < h->nplanes; f++) lp->nd[f] = dot3(h->wn[f], d);
+    return 1;
+}
+
+// dx_hull_clip_line for the line o + t d whose planes' products lp holds.
+static int clip_line_along(const dx_hull *h, const line_planes *lp, const double o[3],
+                           double tol, double *t0, double *t1)
+{
+    for (unsigned f = 0; f < h->nplanes; f++) {
+        double nd = lp->nd[f], gap = h->wd[f] - dot3(h->wn[f], o);
+        if (fabs(nd) <= DX_HULL_EPS * lp->dl) {
+            if (gap < -tol) return 0;
+            continue;
+        }
+        double t = gap / nd;
+        if (nd > 0) {
+            if (t < *t1) *t1 = t;
+        } else if (t > *t0) {
+            *t0 = t;
+        }
+    }
+    return *t0 <= *t1 + tol / lp->dl;
+}
+
+// middle_inside for the line q + t n through the whole space, with both
+// hulls' plane products along n made (la for a, lb for b).
+static int middle_inside_along(const dx_hull *a, const line_planes *la, const dx_hull *b,
+                               const line_planes *lb, const double q[3], const double n[3],
+                               double pos[3])
+{
+    double tol = DX_HULL_EPS * (a->size + b->size), t0 = -INFINITY, t1 = INFINITY;
+    if (!clip_line_along(a, la, q, tol, &t0, &t1) || !clip_line_along(b, lb, q, tol, &t0, &t1))
+        return 0;
+    double t = (t0 + t1) / 2;
+    for (int i = 0; i < 3; i++) pos[i] = q[i] + t * n[i];
+    return 1;
+}
+
 // Keeps the part of poly (n points) with s . x <= off in out; the new count.
 static int clip_plane(const hull_point *poly, int n, const double s[3], double off,
                       hull_point *out)
@@ -961,12 +1012,16 @@ static int face_points(const dx_hull *r, unsigned f, const double nf[3], double 
     }
     // Points below the reference face, lying inside both hulls along nf.
     int kept = 0, deepest = 0;
+    line_planes lr, li;
+    int along = line_planes_of(r, nf, &lr) && line_planes_of(inc, nf, &li);
     for (int k = 0; k < n; k++) {
         hull_point *p = &buf[cur][k];
         double depth = df - dot3(nf, p->p);
         if (depth < 0) continue;
         hull_point q;
-        if (!middle_inside(r, inc, p->p, nf, -INFINITY, INFINITY, q.p)) continue;
+        if (along ? !middle_inside_along(r, &lr, inc, &li, p->p, nf, q.p)
+                  : !middle_inside(r, inc, p->p, nf, -INFINITY, INFINITY, q.p))
+            continue;
         q.depth = depth;
         if (kept == 0 || q.depth > pts[deepest].depth) deepest = kept;
         pts[kept++] = q;
