@@ -90,6 +90,44 @@ void dx_hull_interval(const dx_hull *h, const double m[3], double *lo, double *h
 int dx_hull_clip_line(const dx_hull *h, const double o[3], const double d[3], double tol,
                       double *t0, double *t1);
 
+// ---- the separating axis test (collide_convex_sat.c) ----
+
+// An edge pair's axis wins over the best face only if this many times shallower.
+#define DX_HULL_EDGE_PREFERENCE 1.05
+
+// The best axis found: its unit normal (into a), its depth, and what it is:
+// a face of a (ref 0) or of b (ref 1) with its index, or an edge pair.
+typedef struct sat_axis {
+    double n[3], depth;
+    int ref;            // 0: a's face, 1: b's face, 2: edges
+    unsigned face;
+    unsigned ea, eb;    // the edges (indices into a's and b's edge lists)
+} sat_axis;
+
+// What sat measured, for clearance: the depth along each face axis (if
+// both hulls' faces fit), and the edge pairs whose axes may lower the
+// clearance along the best face's normal (their edges' indices in a and
+// b), unless there were more.
+enum { MAX_EDGE_AXES = 1024, KEPT_FACES = 48 };
+typedef struct edge_axes {
+    double face_s[2][KEPT_FACES];   // infinite for a face clearly deeper than the best
+    int faces_kept;
+    double margin;   // for rounding, in the screens of depths: 1e-12 times the scale
+                     // of the sizes and the coordinates
+    unsigned pair[MAX_EDGE_AXES][2];
+    int n, overflow;
+} edge_axes;
+
+// 0 if a separating axis parts a and b (into sep); else the face axis and
+// the edge axis of least depth (edge->depth is infinite if no edge pair
+// counts), and what the clearance needs into found.
+int dx_hull_sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axes *found,
+                double sep[3]);
+// The exact translation of a along the unit n (the best face axis, of depth
+// s_n) that parts it from b, from what dx_hull_sat kept in found.
+double dx_hull_clearance(const dx_hull *a, const dx_hull *b, const double n[3], double s_n,
+                         const edge_axes *found);
+
 // Hull against hull (separating axes; face contacts clipped, or an edge
 // pair's point), as dxCollideBoxBox does for boxes. Contacts name o1, o2.
 int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
