@@ -3,12 +3,15 @@
 // geom_convex.c -- the convex hull class of ODE 0.16: creation and
 // dGeomSetConvex with their checks, and the bounding box of the points as
 // posed. The arrays belong to the caller (as in ODE): they are not copied.
-// The geom owns only the edge list it derives from the polygons (each edge
-// with its two faces), which the colliders use to skip edge pairs.
+// The geom owns only what it derives from them: the edge list (each edge
+// with its two faces), which the colliders use to skip edge pairs, where
+// each polygon starts, and room for the hull posed in the world.
 
 #include "geom_convex.h"
 
 #include <ode/memory.h>
+
+#include <math.h>
 
 // 1 if the hull data is usable by the colliders; else reports what is
 // wrong (naming the calling function) and returns 0.
@@ -64,21 +67,12 @@ static void convex_aabb(dxGeom *g)
     }
 }
 
-// The edges of the polygons, each once, with the faces on either side
-// (room for *cap). Made once per dGeomSetConvex.
-static dxHullEdge *convex_edges(const unsigned *polygons, unsigned planecount, unsigned *count,
-                                size_t *cap)
+// The edges of the polygons, each once, with the faces on either side,
+// into e (room for one per polygon side); returns their count.
+static unsigned convex_edges(const unsigned *polygons, unsigned planecount, dxHullEdge *e)
 {
-    size_t sides = 0;
-    const unsigned *poly = polygons;
-    for (unsigned f = 0; f < planecount; f++) {
-        sides += *poly;
-        poly += 1 + *poly;
-    }
-    dxHullEdge *e = dAlloc(sizeof *e * sides);
-    *cap = sides;
     unsigned n = 0;
-    poly = polygons;
+    const unsigned *poly = polygons;
     for (unsigned f = 0; f < planecount; f++, poly += 1 + *poly) {
         for (unsigned k = 0; k < poly[0]; k++) {
             unsigned i = poly[1 + k], j = poly[1 + (k + 1) % poly[0]];
@@ -91,33 +85,77 @@ static dxHullEdge *convex_edges(const unsigned *polygons, unsigned planecount, u
             e[n++] = (dxHullEdge){ a, b, f, f };
         }
     }
-    *count = n;
-    return e;
+    return n;
 }
 
-static void free_edges(dxConvex *c)
+static void free_derived(dxConvex *c)
 {
-    if (c->edges) dFree(c->edges, sizeof *c->edges * c->edgecap);
+    if (c->derived) dFree(c->derived, c->derived_size);
+    c->derived = NULL;
     c->edges = NULL;
+    c->poly_start = NULL;
 }
 
 static void convex_destroy(dxGeom *g)
 {
-    free_edges((dxConvex *)g);
+    free_derived((dxConvex *)g);
 }
 
 const dxGeomClassOps dx_convex_ops = { dConvexClass, "convex", convex_aabb, convex_destroy };
 
+// Takes the caller's arrays and derives, in one block made once per
+// dGeomSetConvex: the edge list, where each polygon starts, the size, and
+// room for the hull posed in the world (filled by the colliders).
 static void convex_set(dxConvex *c, const dReal *planes, unsigned planecount,
                        const dReal *points, unsigned pointcount, const unsigned *polygons)
 {
-    free_edges(c);
+    free_derived(c);
     c->planes = planes;
     c->planecount = planecount;
     c->points = points;
     c->pointcount = pointcount;
     c->polygons = polygons;
-    c->edges = convex_edges(polygons, planecount, &c->edgecount, &c->edgecap);
+    size_t sides = 0;
+    const unsigned *poly = polygons;
+    for (unsigned f = 0; f < planecount; f++) {
+        sides += *poly;
+        poly += 1 + *poly;
+    }
+    size_t doubles = 6 * (size_t)pointcount + 7 * (size_t)planecount + 3 * sides;
+    c->derived_size = sizeof(double) * doubles + sizeof(dxHullPosedEdge) * sides +
+                      sizeof(dxHullEdge) * sides + sizeof(unsigned) * planecount;
+    char *block = dAlloc(c->derived_size);
+    c->derived = block;
+    dxHullPose *pose = &c->pose;
+    pose->pts = (double (*)[3])block;
+    pose->normals = pose->pts + pointcount;
+    pose->offsets = (double *)(pose->normals + planecount);
+    pose->px = pose->offsets + planecount;
+    pose->py = pose->px + pointcount;
+    pose->pz = pose->py + pointcount;
+    pose->nx = pose->pz + pointcount;
+    pose->ny = pose->nx + planecount;
+    pose->nz = pose->ny + planecount;
+    pose->ex = pose->nz + planecount;
+    pose->ey = pose->ex + sides;
+    pose->ez = pose->ey + sides;
+    pose->edges = (dxHullPosedEdge *)(pose->ez + sides);
+    pose->valid = pose->edges_valid = 0;
+    c->edges = (dxHullEdge *)(pose->edges + sides);
+    c->poly_start = (unsigned *)(c->edges + sides);
+    c->edgecount = convex_edges(polygons, planecount, c->edges);
+    unsigned at = 0;
+    for (unsigned f = 0; f < planecount; f++) {
+        c->poly_start[f] = at;
+        at += 1 + polygons[at];
+    }
+    double r2 = 0;
+    for (unsigned v = 0; v < pointcount; v++) {
+        const dReal *p = points + 3 * v;
+        double d2 = (double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2];
+        if (d2 > r2) r2 = d2;
+    }
+    c->size = sqrt(r2);
 }
 
 dGeomID dCreateConvex(dSpaceID space, const dReal *planes, unsigned int planecount,

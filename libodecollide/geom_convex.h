@@ -26,6 +26,31 @@ typedef struct dxHullAxisHint {
     double axis[3];               // in this hull's frame
 } dxHullAxisHint;
 
+// The hull posed in the world (by the native colliders,
+// collide_convex_hull.c), kept while the geom's pose stays what it was
+// made for: a hull meets several partners a step and is posed once. The
+// geom's own arrays are assumed unchanged between dGeomSetConvex calls (as
+// the edge list already assumes). An edge's direction u = b - a with u . u,
+// the cross product of its faces' normals n2 x n1, and their sum n1 + n2
+// with its square.
+typedef struct dxHullPosedEdge {
+    double u[3], n2xn1[3], sum[3], uu, ss;
+} dxHullPosedEdge;
+
+typedef struct dxHullPose {
+    dReal pos[3], R[12];          // the pose the arrays were made for
+    int valid;                    // points and planes hold that pose
+    int edges_valid;              // edges too (posed only when needed)
+    double (*pts)[3];             // pointcount world points
+    double (*normals)[3];         // planecount unit outward normals ...
+    double *offsets;              // ... and offsets (n . x = d)
+    dxHullPosedEdge *edges;       // edgecount
+    // The same by coordinate, for loops over many at once: the points'
+    // x, y, z, the normals' x, y, z, the edges' n2 x n1 x, y, z.
+    double *px, *py, *pz, *nx, *ny, *nz, *ex, *ey, *ez;
+    double centre[3];             // the mean of the points: inside the hull
+} dxHullPose;
+
 typedef struct dxConvex {
     dxGeom g;
     const dReal *planes;          // planecount x (a, b, c, d): a x + b y + c z = d, outward
@@ -34,9 +59,13 @@ typedef struct dxConvex {
     unsigned planecount, pointcount;
     dxHullEdge *edges;            // derived from the polygons, owned by the geom
     unsigned edgecount;
-    size_t edgecap;               // the entries allocated (one per polygon side)
+    unsigned *poly_start;         // per plane: where its polygon starts in polygons
+    double size;                  // the largest distance of a point from the frame's origin
     dxHullAxisHint hints[DX_CONVEX_AXIS_CACHE];
     unsigned next_hint;           // the entry replaced next
+    dxHullPose pose;
+    void *derived;                // one block: edges, poly_start, the pose's arrays
+    size_t derived_size;
 } dxConvex;
 
 extern const dxGeomClassOps dx_convex_ops;

@@ -863,6 +863,148 @@ static int test_bad_input(void)
     return 0;
 }
 
+// ---- the least depth, by brute force ------------------------------------------------
+
+// A hull's arrays, for the brute-force test below.
+typedef struct hull_arrays {
+    const dReal *points;
+    const unsigned *polygons;
+    unsigned npoints, nplanes;
+} hull_arrays;
+
+// max over g's points (posed) of m . x.
+static double brute_support(dGeomID g, const hull_arrays *h, const double m[3])
+{
+    const dReal *c = dGeomGetPosition(g), *R = dGeomGetRotation(g);
+    double best = -INFINITY;
+    for (unsigned v = 0; v < h->npoints; v++) {
+        const dReal *p = h->points + 3 * v;
+        double e = 0;
+        for (int i = 0; i < 3; i++)
+            e += m[i] * (c[i] + R[4 * i] * p[0] + R[4 * i + 1] * p[1] + R[4 * i + 2] * p[2]);
+        best = fmax(best, e);
+    }
+    return best;
+}
+
+// The world directions of g's polygon sides (each edge twice) into d; their count.
+static int brute_edges(dGeomID g, const hull_arrays *h, double (*d)[3])
+{
+    const dReal *R = dGeomGetRotation(g);
+    const unsigned *poly = h->polygons;
+    int n = 0;
+    for (unsigned f = 0; f < h->nplanes; f++, poly += 1 + *poly) {
+        for (unsigned k = 0; k < poly[0]; k++) {
+            const dReal *p = h->points + 3 * poly[1 + k];
+            const dReal *q = h->points + 3 * poly[1 + (k + 1) % poly[0]];
+            double u[3] = { q[0] - p[0], q[1] - p[1], q[2] - p[2] };
+            for (int i = 0; i < 3; i++)
+                d[n][i] = R[4 * i] * u[0] + R[4 * i + 1] * u[1] + R[4 * i + 2] * u[2];
+            n++;
+        }
+    }
+    return n;
+}
+
+// The least translation of a, over every unit direction n, that parts it
+// from b (negative if they are apart): min over candidate axes of
+// h_b(n) + h_a(-n). The candidates (every face normal of either, computed
+// from the points, and the cross product of every pair of edges, both
+// signs) hold the faces of the Minkowski difference, where the least is.
+static double brute_least_depth(dGeomID a, const hull_arrays *ha, dGeomID b,
+                                const hull_arrays *hb)
+{
+    static double ea[64][3], eb[64][3];
+    int na = brute_edges(a, ha, ea), nb = brute_edges(b, hb, eb);
+    double least = INFINITY;
+    for (int i = 0; i < na + nb; i++) {
+        for (int j = 0; j < na + nb; j++) {
+            const double *u = i < na ? ea[i] : eb[i - na], *v = j < na ? ea[j] : eb[j - na];
+            double n[3] = { u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                            u[0] * v[1] - u[1] * v[0] };
+            double l = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+            if (l < 1e-6) continue;
+            for (int sg = -1; sg <= 1; sg += 2) {
+                double m[3], mm[3];
+                for (int k = 0; k < 3; k++) {
+                    m[k] = sg * n[k] / l;
+                    mm[k] = -m[k];
+                }
+                least = fmin(least, brute_support(b, hb, m) + brute_support(a, ha, mm));
+            }
+        }
+    }
+    return least;
+}
+
+// The pair test keeps only what can matter: edge pairs whose arcs cross,
+// and of those, faces and edges that are not clearly deeper than the best
+// face. Against a brute-force least depth over every face and edge pair
+// of random hull pairs near contact: the pair touches exactly when that
+// depth is positive, and the contact normal's depth is that least depth,
+// or (a face preferred over a shallower edge pair) at most 1.05 times it.
+static int test_least_depth_as_brute_force(void)
+{
+    static test_hull pr, bh;
+    test_hull_prism(&pr, 0.15, 0.1);
+    test_hull_box(&bh, 0.3, 0.2, 0.25);
+    make_octahedron();   // its arrays, shrunk to the others' size
+    static dReal small_points[18], small_planes[32];
+    const dReal k = (dReal)0.15;
+    for (int i = 0; i < 18; i++) small_points[i] = octa_points[i] * k;
+    for (int f = 0; f < 8; f++) {
+        for (int i = 0; i < 3; i++) small_planes[4 * f + i] = octa_planes[4 * f + i];
+        small_planes[4 * f + 3] = octa_planes[4 * f + 3] * k;
+    }
+    const hull_arrays shapes[3] = { { pr.points, pr.polygons, 12, 8 },
+                                    { bh.points, bh.polygons, 8, 6 },
+                                    { small_points, octa_polygons, 6, 8 } };
+    dGeomID g[4] = { dCreateConvex(0, pr.planes, 8, pr.points, 12, pr.polygons),
+                     dCreateConvex(0, pr.planes, 8, pr.points, 12, pr.polygons),
+                     dCreateConvex(0, bh.planes, 6, bh.points, 8, bh.polygons),
+                     dCreateConvex(0, small_planes, 8, small_points, 6, octa_polygons) };
+    const hull_arrays *of[4] = { &shapes[0], &shapes[0], &shapes[1], &shapes[2] };
+    static const int pairs[][2] = { { 0, 1 }, { 0, 2 }, { 2, 0 }, { 1, 3 }, { 3, 2 } };
+    rng_state = 4242;
+    int touching = 0, apart = 0;
+    for (int it = 0; it < 1500; it++) {
+        const int *pq = pairs[it % 5];
+        dGeomID a = g[pq[0]], b = g[pq[1]];
+        dMatrix3 R;
+        random_rotation(R);
+        place(a, (dReal[3]){ 0, 0, 0 }, R);
+        random_rotation(R);
+        double dir[3] = { rnd(-1, 1), rnd(-1, 1), rnd(-1, 1) }, r = rnd(0.1, 0.45);
+        double l = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+        place(b, (dReal[3]){ (dReal)(r * dir[0] / l), (dReal)(r * dir[1] / l),
+                             (dReal)(r * dir[2] / l) },
+              R);
+        double least = brute_least_depth(a, of[pq[0]], b, of[pq[1]]);
+        dContactGeom c[MAXC];
+        int n = dCollide(a, b, MAXC, c, sizeof c[0]);
+        double tol = TOL(1e-9, 1e-4);
+        if (least < -tol) {
+            CHECK(n == 0);
+            apart++;
+        } else if (least > tol) {
+            CHECK(n > 0);
+            if (n == 0) continue;
+            double m[3], mm[3];
+            for (int k = 0; k < 3; k++) {
+                m[k] = c[0].normal[k];
+                mm[k] = -m[k];
+            }
+            double along = brute_support(b, of[pq[1]], m) + brute_support(a, of[pq[0]], mm);
+            CHECK(along >= least - tol && along <= 1.05 * least + tol);
+            touching++;
+        }
+    }
+    printf("# least depth: %d touching, %d apart, as the brute force\n", touching, apart);
+    CHECK(touching > 300 && apart > 300);
+    for (int k = 0; k < 4; k++) dGeomDestroy(g[k]);
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_box_equals_box_box),
     TEST_CASE(test_convex_convex_equals_box_box),
@@ -878,6 +1020,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_large_prism),
     TEST_CASE(test_resting_on_plane),
     TEST_CASE(test_remembered_axis_never_hides_contacts),
+    TEST_CASE(test_least_depth_as_brute_force),
     TEST_CASE(test_box_remembered_axis_never_hides_contacts),
     TEST_CASE(test_bad_input),
     TEST_END,

@@ -19,62 +19,114 @@
 #define DX_HULL_EPS 1e-9
 #endif
 
-// An edge posed in the world: its direction (b - a), its faces' unit
-// normals, and their cross product n2 x n1 (the edge pair test's).
-typedef struct dx_hull_edge {
-    double u[3], n1[3], n2[3], n2xn1[3];
-} dx_hull_edge;
-
-// Hulls with at most this many edges (faces, points) keep them posed in
-// the world.
-enum { DX_HULL_POSED_EDGES = 64, DX_HULL_POSED_FACES = 48, DX_HULL_POSED_POINTS = 64 };
-
+// A hull: the geom's arrays, its pose, and the same posed in the world
+// (points, face planes, and the edges once the pair test needs them):
+// a convex geom's pose is kept on the geom between calls (dxHullPose), a
+// box's is made in the caller's dx_hull_box.
 typedef struct dx_hull {
     const dReal *pts;         // npts x (x, y, z), local
     const dReal *planes;      // nplanes x (a, b, c, d), local, outward
     const unsigned *polys;    // per plane: count, indices
+    const unsigned *poly_start;   // per plane: where its polygon starts in polys
     const dxHullEdge *edges;  // each edge once, with its two faces
     unsigned npts, nplanes, nedges;
     double R[9];              // world = R local + c (row-major)
     double c[3];
     double size;              // the largest distance of a point from the origin of the frame
-    int posed;                // 1 once posed_edges holds the edges (if nedges <= ..._EDGES)
-    dx_hull_edge posed_edges[DX_HULL_POSED_EDGES];
-    int faces_posed;          // 1 if face_n, face_d hold the planes (nplanes <= ..._FACES)
-    double face_n[DX_HULL_POSED_FACES][3], face_d[DX_HULL_POSED_FACES];
-    int points_posed;         // 1 once posed_pts holds the points (dx_hull_pose_points)
-    double posed_pts[DX_HULL_POSED_POINTS][3];
+    double centre[3];         // a point inside, in the world
+    const double (*wp)[3];    // the points in the world
+    const double (*wn)[3];    // the planes in the world: unit outward normals ...
+    const double *wd;         // ... and offsets
+    dxHullPosedEdge *we;      // the edges in the world, once *edges_posed
+    int *edges_posed;
+    // The points, normals and edges' n2 x n1 by coordinate (dxHullPose).
+    const double *px, *py, *pz, *nx, *ny, *nz;
+    double *ex, *ey, *ez;
     dxConvex *convex;         // the convex geom (its axis hints), NULL for a box
 } dx_hull;
 
 // The storage of a box made into a hull (dx_hull_of_geom's box case).
 typedef struct dx_hull_box {
     dReal pts[24], planes[24];
-    unsigned polys[30];
+    unsigned polys[30], poly_start[6];
     dxHullEdge edges[12];
+    double wp[8][3], wn[6][3], wd[6];
+    dxHullPosedEdge we[12];
+    double p_soa[3][8], n_soa[3][6], e_soa[3][12];
+    int edges_posed;
 } dx_hull_box;
 
-// The hull of a convex geom or (into the storage bx) of a box geom.
+// The hull of a convex geom or (into the storage bx) of a box geom, posed.
 void dx_hull_of_geom(dx_hull *h, const dxGeom *g, dx_hull_box *bx);
 
-// Poses the points in the world (if they fit), for the many extents of a
-// separating axis test.
-void dx_hull_pose_points(dx_hull *h);
 // Point i in world coordinates.
-void dx_hull_vertex(const dx_hull *h, unsigned i, double out[3]);
+static inline void dx_hull_vertex(const dx_hull *h, unsigned i, double out[3])
+{
+    for (int k = 0; k < 3; k++) out[k] = h->wp[i][k];
+}
+
 // Plane f in world coordinates: unit outward normal n and offset (n . x = d).
-void dx_hull_plane(const dx_hull *h, unsigned f, double n[3], double *d);
+static inline void dx_hull_plane(const dx_hull *h, unsigned f, double n[3], double *d)
+{
+    for (int k = 0; k < 3; k++) n[k] = h->wn[f][k];
+    *d = h->wd[f];
+}
+
+// The polygon of plane f: its count and indices.
+static inline const unsigned *dx_hull_polygon(const dx_hull *h, unsigned f, unsigned *count)
+{
+    const unsigned *p = h->polys + h->poly_start[f];
+    *count = *p;
+    return p + 1;
+}
+
 // max over the points of m . x, and (if idx) which point.
 double dx_hull_extent(const dx_hull *h, const double m[3], unsigned *idx);
 // min and max over the points of m . x.
 void dx_hull_interval(const dx_hull *h, const double m[3], double *lo, double *hi);
-// The polygon of plane f: its count and indices (walks the polygon list).
-const unsigned *dx_hull_polygon(const dx_hull *h, unsigned f, unsigned *count);
 // Clips [*t0, *t1] to where o + t d (world) is inside h, with planes that d
 // runs along (|n . d| below DX_HULL_EPS) kept if o is within tol of them; 0 if
 // empty by more than tol (rounding can leave a point's span crossed).
 int dx_hull_clip_line(const dx_hull *h, const double o[3], const double d[3], double tol,
                       double *t0, double *t1);
+
+// ---- the separating axis test (collide_convex_sat.c) ----
+
+// An edge pair's axis wins over the best face only if this many times shallower.
+#define DX_HULL_EDGE_PREFERENCE 1.05
+
+// The best axis found: its unit normal (into a), its depth, and what it is:
+// a face of a (ref 0) or of b (ref 1) with its index, or an edge pair.
+typedef struct sat_axis {
+    double n[3], depth;
+    int ref;            // 0: a's face, 1: b's face, 2: edges
+    unsigned face;
+    unsigned ea, eb;    // the edges (indices into a's and b's edge lists)
+} sat_axis;
+
+// What sat measured, for clearance: the depth along each face axis (if
+// both hulls' faces fit), and the edge pairs whose axes may lower the
+// clearance along the best face's normal (their edges' indices in a and
+// b), unless there were more.
+enum { MAX_EDGE_AXES = 1024, KEPT_FACES = 48 };
+typedef struct edge_axes {
+    double face_s[2][KEPT_FACES];   // infinite for a face clearly deeper than the best
+    int faces_kept;
+    double margin;   // for rounding, in the screens of depths: 1e-12 times the scale
+                     // of the sizes and the coordinates
+    unsigned pair[MAX_EDGE_AXES][2];
+    int n, overflow;
+} edge_axes;
+
+// 0 if a separating axis parts a and b (into sep); else the face axis and
+// the edge axis of least depth (edge->depth is infinite if no edge pair
+// counts), and what the clearance needs into found.
+int dx_hull_sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axes *found,
+                double sep[3]);
+// The exact translation of a along the unit n (the best face axis, of depth
+// s_n) that parts it from b, from what dx_hull_sat kept in found.
+double dx_hull_clearance(const dx_hull *a, const dx_hull *b, const double n[3], double s_n,
+                         const edge_axes *found);
 
 // Hull against hull (separating axes; face contacts clipped, or an edge
 // pair's point), as dxCollideBoxBox does for boxes. Contacts name o1, o2.

@@ -1,21 +1,17 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
 // collide_convex_hull.c -- convex hulls in the world, and hull against hull.
-// The pair test is the separating axis test of two polyhedra: the least
-// translation of o1 along a unit n that parts them, s(n) = h_b(n) + h_a(-n)
-// (h the support value), is least over the face normals of either and the
-// cross products of an edge of each whose arcs on the unit sphere cross
-// (the faces of the Minkowski difference); a negative value there
-// separates them.
-// As for box-box (collide_box.c), an edge axis wins only if 1.05 times
-// shallower than the best face. A face axis gives the contact polygon: the
-// other hull's face most against the reference face, clipped to the
-// reference face's side planes, each point below the reference face as
-// deep as it is under it, placed in the middle of its line along the
-// normal inside both hulls (the deepest carries the exact translation along
-// the normal that parts the hulls, as box-box's does). An edge axis gives
-// one point between the closest points of the two edges. Everything inside
-// is double.
+// A convex geom's hull is posed once per pose (kept on the geom); a box's
+// on each call. The pair test is the separating axis test of
+// collide_convex_sat.c. As for box-box (collide_box.c), an edge axis wins
+// only if 1.05 times shallower than the best face. A face axis gives the
+// contact polygon: the other hull's face most against the reference face,
+// clipped to the reference face's side planes, each point below the
+// reference face as deep as it is under it, placed in the middle of its
+// line along the normal inside both hulls (the deepest carries the exact
+// translation along the normal that parts the hulls, as box-box's does).
+// An edge axis gives one point between the closest points of the two
+// edges. Everything inside is double.
 
 #include "collide_convex.h"
 #include "collide_math.h"
@@ -23,7 +19,7 @@
 #include <math.h>
 #include <string.h>
 
-#define EDGE_PREFERENCE 1.05
+
 // Polygon buffers: the clipped polygon has at most the incident polygon's
 // count plus one per reference edge; larger polygons give one contact.
 enum { MAXP = 256, MAXP_INCIDENT = 128 };
@@ -40,187 +36,147 @@ static void cross3(const double *a, const double *b, double out[3])
     out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-// Edge e of h in the world (dx_hull_edge).
-static void pose_edge(const dx_hull *h, const dxHullEdge *e, dx_hull_edge *out)
+// Points and planes of the local arrays posed by R, c into wp, wn, wd,
+// and by coordinate into p[3] (points) and n[3] (normals).
+static void pose_points_planes(const dx_hull *h, double (*wp)[3], double (*wn)[3], double *wd,
+                               double *const p3[3], double *const n3[3])
 {
-    double p0[3], p1[3], d;
-    dx_hull_vertex(h, e->a, p0);
-    dx_hull_vertex(h, e->b, p1);
-    for (int i = 0; i < 3; i++) out->u[i] = p1[i] - p0[i];
-    dx_hull_plane(h, e->f1, out->n1, &d);
-    dx_hull_plane(h, e->f2, out->n2, &d);
-    cross3(out->n2, out->n1, out->n2xn1);
+    for (unsigned v = 0; v < h->npts; v++) {
+        const dReal *p = h->pts + 3 * v;
+        for (int r = 0; r < 3; r++)
+            wp[v][r] = h->c[r] + h->R[3 * r] * p[0] + h->R[3 * r + 1] * p[1] +
+                       h->R[3 * r + 2] * p[2];
+    }
+    for (unsigned f = 0; f < h->nplanes; f++) {
+        const dReal *p = h->planes + 4 * f;
+        double l = sqrt((double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2]);
+        for (int r = 0; r < 3; r++)
+            wn[f][r] = (h->R[3 * r] * p[0] + h->R[3 * r + 1] * p[1] + h->R[3 * r + 2] * p[2]) / l;
+        wd[f] = p[3] / l + dot3(wn[f], h->c);
+    }
+    for (int r = 0; r < 3; r++) {
+        for (unsigned v = 0; v < h->npts; v++) p3[r][v] = wp[v][r];
+        for (unsigned f = 0; f < h->nplanes; f++) n3[r][f] = wn[f][r];
+    }
+}
+
+// A box as a hull in bx: corners by bits (x, y, z), faces -x +x -y +y -z +z.
+static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
+{
+    const dReal *side = box->side;
+    static const unsigned faces[6][4] = { { 0, 4, 6, 2 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
+                                          { 2, 6, 7, 3 }, { 0, 2, 3, 1 }, { 4, 5, 7, 6 } };
+    for (unsigned v = 0; v < 8; v++)
+        for (int i = 0; i < 3; i++) bx->pts[3 * v + i] = (v >> i & 1 ? 1 : -1) * side[i] / 2;
+    for (int f = 0; f < 6; f++) {
+        int axis = f / 2;
+        dReal sg = f & 1 ? 1 : -1;
+        for (int i = 0; i < 3; i++) bx->planes[4 * f + i] = i == axis ? sg : 0;
+        bx->planes[4 * f + 3] = side[axis] / 2;
+        bx->polys[5 * f] = 4;
+        bx->poly_start[f] = 5 * (unsigned)f;
+        for (int k = 0; k < 4; k++) bx->polys[5 * f + 1 + k] = faces[f][k];
+    }
+    // Edge along axis k from the corner with bit k clear to the one with it
+    // set, between the faces of the other two axes' bits.
+    int n = 0;
+    for (int k = 0; k < 3; k++) {
+        int i = (k + 1) % 3, j = (k + 2) % 3;
+        for (unsigned bits = 0; bits < 4; bits++) {
+            unsigned bi = bits & 1, bj = bits >> 1, a = bi << i | bj << j;
+            bx->edges[n++] = (dxHullEdge){ a, a | 1u << k, (unsigned)(2 * i) + bi,
+                                           (unsigned)(2 * j) + bj };
+        }
+    }
+    h->pts = bx->pts;
+    h->planes = bx->planes;
+    h->polys = bx->polys;
+    h->poly_start = bx->poly_start;
+    h->edges = bx->edges;
+    h->npts = 8;
+    h->nplanes = 6;
+    h->nedges = 12;
+    h->convex = NULL;
+    const dReal *p = bx->pts;   // every corner is as far from the centre
+    h->size = sqrt((double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2]);
+    pose_points_planes(h, bx->wp, bx->wn, bx->wd,
+                       (double *const[3]){ bx->p_soa[0], bx->p_soa[1], bx->p_soa[2] },
+                       (double *const[3]){ bx->n_soa[0], bx->n_soa[1], bx->n_soa[2] });
+    h->px = bx->p_soa[0];
+    h->py = bx->p_soa[1];
+    h->pz = bx->p_soa[2];
+    h->nx = bx->n_soa[0];
+    h->ny = bx->n_soa[1];
+    h->nz = bx->n_soa[2];
+    h->ex = bx->e_soa[0];
+    h->ey = bx->e_soa[1];
+    h->ez = bx->e_soa[2];
+    memcpy(h->centre, h->c, sizeof h->centre);
+    h->wp = (const double (*)[3])bx->wp;
+    h->wn = (const double (*)[3])bx->wn;
+    h->wd = bx->wd;
+    h->we = bx->we;
+    bx->edges_posed = 0;
+    h->edges_posed = &bx->edges_posed;
+}
+
+// A convex geom as a hull, posed from the geom's kept pose if the geom has
+// not moved since it was made.
+static void convex_hull(dx_hull *h, const dxGeom *g)
+{
+    dxConvex *c = (dxConvex *)g;
+    h->pts = c->points;
+    h->planes = c->planes;
+    h->polys = c->polygons;
+    h->poly_start = c->poly_start;
+    h->npts = c->pointcount;
+    h->nplanes = c->planecount;
+    h->edges = c->edges;
+    h->nedges = c->edgecount;
+    h->convex = c;
+    h->size = c->size;
+    dxHullPose *pose = &c->pose;
+    if (!pose->valid || memcmp(pose->pos, g->pos, sizeof pose->pos) != 0 ||
+        memcmp(pose->R, g->R, sizeof pose->R) != 0) {
+        pose_points_planes(h, pose->pts, pose->normals, pose->offsets,
+                           (double *const[3]){ pose->px, pose->py, pose->pz },
+                           (double *const[3]){ pose->nx, pose->ny, pose->nz });
+        double sum[3] = { 0, 0, 0 };
+        for (unsigned v = 0; v < h->npts; v++)
+            for (int i = 0; i < 3; i++) sum[i] += pose->pts[v][i];
+        for (int i = 0; i < 3; i++) pose->centre[i] = sum[i] / h->npts;
+        memcpy(pose->pos, g->pos, sizeof pose->pos);
+        memcpy(pose->R, g->R, sizeof pose->R);
+        pose->valid = 1;
+        pose->edges_valid = 0;
+    }
+    memcpy(h->centre, pose->centre, sizeof h->centre);
+    h->wp = (const double (*)[3])pose->pts;
+    h->wn = (const double (*)[3])pose->normals;
+    h->wd = pose->offsets;
+    h->we = pose->edges;
+    h->edges_posed = &pose->edges_valid;
+    h->px = pose->px;
+    h->py = pose->py;
+    h->pz = pose->pz;
+    h->nx = pose->nx;
+    h->ny = pose->ny;
+    h->nz = pose->nz;
+    h->ex = pose->ex;
+    h->ey = pose->ey;
+    h->ez = pose->ez;
 }
 
 void dx_hull_of_geom(dx_hull *h, const dxGeom *g, dx_hull_box *bx)
 {
-    if (g->ops->cls == dConvexClass) {
-        const dxConvex *c = (const dxConvex *)g;
-        h->pts = c->points;
-        h->planes = c->planes;
-        h->polys = c->polygons;
-        h->npts = c->pointcount;
-        h->nplanes = c->planecount;
-        h->edges = c->edges;
-        h->nedges = c->edgecount;
-        h->convex = (dxConvex *)c;
-    } else {   // a box: corners by bits (x, y, z), faces -x +x -y +y -z +z
-        const dReal *side = ((const dxBox *)g)->side;
-        static const unsigned faces[6][4] = { { 0, 4, 6, 2 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
-                                              { 2, 6, 7, 3 }, { 0, 2, 3, 1 }, { 4, 5, 7, 6 } };
-        for (unsigned v = 0; v < 8; v++)
-            for (int i = 0; i < 3; i++) bx->pts[3 * v + i] = (v >> i & 1 ? 1 : -1) * side[i] / 2;
-        for (int f = 0; f < 6; f++) {
-            int axis = f / 2;
-            dReal sg = f & 1 ? 1 : -1;
-            for (int i = 0; i < 3; i++) bx->planes[4 * f + i] = i == axis ? sg : 0;
-            bx->planes[4 * f + 3] = side[axis] / 2;
-            bx->polys[5 * f] = 4;
-            for (int k = 0; k < 4; k++) bx->polys[5 * f + 1 + k] = faces[f][k];
-        }
-        // Edge along axis k from the corner with bit k clear to the one
-        // with it set, between the faces of the other two axes' bits.
-        int n = 0;
-        for (int k = 0; k < 3; k++) {
-            int i = (k + 1) % 3, j = (k + 2) % 3;
-            for (unsigned bits = 0; bits < 4; bits++) {
-                unsigned bi = bits & 1, bj = bits >> 1, a = bi << i | bj << j;
-                bx->edges[n++] = (dxHullEdge){ a, a | 1u << k, (unsigned)(2 * i) + bi,
-                                               (unsigned)(2 * j) + bj };
-            }
-        }
-        h->pts = bx->pts;
-        h->planes = bx->planes;
-        h->polys = bx->polys;
-        h->edges = bx->edges;
-        h->npts = 8;
-        h->nplanes = 6;
-        h->nedges = 12;
-        h->convex = NULL;
-    }
-    h->size = 0;
     for (int i = 0; i < 3; i++) {
         h->c[i] = g->pos[i];
         for (int k = 0; k < 3; k++) h->R[3 * i + k] = g->R[4 * i + k];
     }
-    for (unsigned v = 0; v < h->npts; v++) {
-        const dReal *p = h->pts + 3 * v;
-        double r2 = (double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2];
-        if (r2 > h->size) h->size = r2;
-    }
-    h->size = sqrt(h->size);
-    h->faces_posed = 0;
-    if (h->nplanes <= DX_HULL_POSED_FACES) {
-        for (unsigned f = 0; f < h->nplanes; f++) dx_hull_plane(h, f, h->face_n[f], &h->face_d[f]);
-        h->faces_posed = 1;
-    }
-    h->posed = 0;   // pose_edges, when the edges are needed
-    h->points_posed = 0;
-}
-
-void dx_hull_pose_points(dx_hull *h)
-{
-    if (h->points_posed || h->npts > DX_HULL_POSED_POINTS) return;
-    for (unsigned v = 0; v < h->npts; v++) dx_hull_vertex(h, v, h->posed_pts[v]);
-    h->points_posed = 1;
-}
-
-// Poses the edges of h into posed_edges if they fit.
-static void pose_edges(dx_hull *h)
-{
-    if (h->posed || h->nedges > DX_HULL_POSED_EDGES) return;
-    for (unsigned k = 0; k < h->nedges; k++) pose_edge(h, &h->edges[k], &h->posed_edges[k]);
-    h->posed = 1;
-}
-
-void dx_hull_vertex(const dx_hull *h, unsigned i, double out[3])
-{
-    if (h->points_posed) {
-        memcpy(out, h->posed_pts[i], sizeof h->posed_pts[i]);
-        return;
-    }
-    const dReal *p = h->pts + 3 * i;
-    for (int r = 0; r < 3; r++)
-        out[r] = h->c[r] + h->R[3 * r] * p[0] + h->R[3 * r + 1] * p[1] + h->R[3 * r + 2] * p[2];
-}
-
-void dx_hull_plane(const dx_hull *h, unsigned f, double n[3], double *d)
-{
-    if (h->faces_posed) {
-        memcpy(n, h->face_n[f], sizeof h->face_n[f]);
-        *d = h->face_d[f];
-        return;
-    }
-    const dReal *p = h->planes + 4 * f;
-    double l = sqrt((double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2]);
-    for (int r = 0; r < 3; r++)
-        n[r] = (h->R[3 * r] * p[0] + h->R[3 * r + 1] * p[1] + h->R[3 * r + 2] * p[2]) / l;
-    *d = p[3] / l + dot3(n, h->c);
-}
-
-double dx_hull_extent(const dx_hull *h, const double m[3], unsigned *idx)
-{
-    if (h->points_posed) {
-        double best = -INFINITY;
-        unsigned bi = 0;
-        for (unsigned v = 0; v < h->npts; v++) {
-            double e = dot3(m, h->posed_pts[v]);
-            if (e > best) {
-                best = e;
-                bi = v;
-            }
-        }
-        if (idx) *idx = bi;
-        return best;
-    }
-    double ml[3];   // m in the hull's frame
-    for (int k = 0; k < 3; k++) ml[k] = h->R[k] * m[0] + h->R[3 + k] * m[1] + h->R[6 + k] * m[2];
-    double best = -INFINITY;
-    unsigned bi = 0;
-    for (unsigned v = 0; v < h->npts; v++) {
-        const dReal *p = h->pts + 3 * v;
-        double e = ml[0] * p[0] + ml[1] * p[1] + ml[2] * p[2];
-        if (e > best) {
-            best = e;
-            bi = v;
-        }
-    }
-    if (idx) *idx = bi;
-    return best + dot3(m, h->c);
-}
-
-void dx_hull_interval(const dx_hull *h, const double m[3], double *lo, double *hi)
-{
-    double mn = INFINITY, mx = -INFINITY;
-    if (h->points_posed) {
-        for (unsigned v = 0; v < h->npts; v++) {
-            double e = dot3(m, h->posed_pts[v]);
-            mn = e < mn ? e : mn;
-            mx = e > mx ? e : mx;
-        }
-        *lo = mn;
-        *hi = mx;
-        return;
-    }
-    double ml[3];   // m in the hull's frame
-    for (int k = 0; k < 3; k++) ml[k] = h->R[k] * m[0] + h->R[3 + k] * m[1] + h->R[6 + k] * m[2];
-    for (unsigned v = 0; v < h->npts; v++) {
-        const dReal *p = h->pts + 3 * v;
-        double e = ml[0] * p[0] + ml[1] * p[1] + ml[2] * p[2];
-        mn = e < mn ? e : mn;
-        mx = e > mx ? e : mx;
-    }
-    double c = dot3(m, h->c);
-    *lo = mn + c;
-    *hi = mx + c;
-}
-
-const unsigned *dx_hull_polygon(const dx_hull *h, unsigned f, unsigned *count)
-{
-    const unsigned *p = h->polys;
-    for (unsigned k = 0; k < f; k++) p += 1 + *p;
-    *count = *p;
-    return p + 1;
+    if (g->ops->cls == dConvexClass)
+        convex_hull(h, g);
+    else
+        box_hull(h, (const dxBox *)g, bx);
 }
 
 int dx_hull_clip_line(const dx_hull *h, const double o[3], const double d[3], double tol,
@@ -245,273 +201,6 @@ int dx_hull_clip_line(const dx_hull *h, const double o[3], const double d[3], do
     return *t0 <= *t1 + tol / dl;
 }
 
-// ---- separating axes ---------------------------------------------------------
-
-// The translation of a along the unit n that parts it from b.
-static double depth_along(const dx_hull *a, const dx_hull *b, const double n[3])
-{
-    double m[3] = { -n[0], -n[1], -n[2] };
-    return dx_hull_extent(b, n, NULL) + dx_hull_extent(a, m, NULL);
-}
-
-// Whether a's arc (from n1 to n2) and b's negated arc (for the difference,
-// from -n1 to -n2) cross on the unit sphere: each arc's ends lie on
-// opposite sides of the other's great circle, on the same side. cba, dba:
-// b's -n1, -n2 against a's circle (n2 x n1); adc, bdc: a's n1, n2
-// against b's.
-static int arcs_cross(double cba, double dba, double adc, double bdc)
-{
-    return cba * dba < 0 && adc * bdc < 0 && cba * bdc > 0;
-}
-
-// The unit cross product of the posed edges' directions into m; 0 if they
-// are parallel.
-static int unit_cross(const dx_hull_edge *xa, const dx_hull_edge *xb, double m[3])
-{
-    cross3(xa->u, xb->u, m);
-    double l2 = dot3(m, m);
-    if (l2 <= DX_COLLIDE_EPS * dot3(xa->u, xa->u) * dot3(xb->u, xb->u)) return 0;   // parallel
-    double inv = 1 / sqrt(l2);
-    for (int k = 0; k < 3; k++) m[k] *= inv;
-    return 1;
-}
-
-// The unit axis of the edge pair (a's edge i, b's edge j), into m (either
-// sign); 0 if the pair can give no face of the Minkowski difference a - b
-// (the arcs of the two edges on the unit sphere, between their faces'
-// normals, do not cross: the least depth is never there) or the edges are
-// parallel. An edge without a second face is always tried.
-static int edge_axis(const dx_hull *a, unsigned i, const dx_hull *b, unsigned j, double m[3])
-{
-    const dxHullEdge *ea = &a->edges[i], *eb = &b->edges[j];
-    dx_hull_edge pa, pb;
-    const dx_hull_edge *xa = &pa, *xb = &pb;
-    if (a->posed)
-        xa = &a->posed_edges[i];
-    else
-        pose_edge(a, ea, &pa);
-    if (b->posed)
-        xb = &b->posed_edges[j];
-    else
-        pose_edge(b, eb, &pb);
-    if (ea->f1 != ea->f2 && eb->f1 != eb->f2 &&
-        !arcs_cross(-dot3(xb->n1, xa->n2xn1), -dot3(xb->n2, xa->n2xn1),
-                    dot3(xa->n1, xb->n2xn1), dot3(xa->n2, xb->n2xn1)))
-        return 0;
-    return unit_cross(xa, xb, m);
-}
-
-// The edge pair test of edge_axis for every pair at once: the products of
-// one hull's edge arcs' circle normals (n2 x n1) with the other's face
-// normals, each made once (rather than four per pair).
-enum { TABLE_EDGES = 32, TABLE_FACES = 24 };
-typedef struct arc_tables {
-    double ab[TABLE_EDGES][TABLE_FACES];   // a's edge i's n2 x n1 . b's face f
-    double ba[TABLE_EDGES][TABLE_FACES];   // b's edge j's n2 x n1 . a's face f
-} arc_tables;
-
-// Fills t if the hulls' posed edges and faces fit it; returns 1 if so.
-static int fill_arc_tables(const dx_hull *a, const dx_hull *b, arc_tables *t)
-{
-    if (!a->posed || !b->posed || !a->faces_posed || !b->faces_posed ||
-        a->nedges > TABLE_EDGES || b->nedges > TABLE_EDGES || a->nplanes > TABLE_FACES ||
-        b->nplanes > TABLE_FACES)
-        return 0;
-    for (unsigned i = 0; i < a->nedges; i++)
-        for (unsigned f = 0; f < b->nplanes; f++)
-            t->ab[i][f] = dot3(a->posed_edges[i].n2xn1, b->face_n[f]);
-    for (unsigned j = 0; j < b->nedges; j++)
-        for (unsigned f = 0; f < a->nplanes; f++)
-            t->ba[j][f] = dot3(b->posed_edges[j].n2xn1, a->face_n[f]);
-    return 1;
-}
-
-// edge_axis from the tables.
-static int edge_axis_from_tables(const dx_hull *a, unsigned i, const dx_hull *b, unsigned j,
-                                 const arc_tables *t, double m[3])
-{
-    const dxHullEdge *ea = &a->edges[i], *eb = &b->edges[j];
-    if (ea->f1 != ea->f2 && eb->f1 != eb->f2 &&
-        !arcs_cross(-t->ab[i][eb->f1], -t->ab[i][eb->f2], t->ba[j][ea->f1], t->ba[j][ea->f2]))
-        return 0;
-    return unit_cross(&a->posed_edges[i], &b->posed_edges[j], m);
-}
-
-// The best axis found: its unit normal (into a), its depth, and what it is:
-// a face of a (ref 0) or of b (ref 1) with its index, or an edge pair.
-typedef struct sat_axis {
-    double n[3], depth;
-    int ref;            // 0: a's face, 1: b's face, 2: edges
-    unsigned face;
-    unsigned ea, eb;    // the edges (indices into a's and b's edge lists)
-} sat_axis;
-
-// What sat measured, for clearance: the depth along each face axis (if
-// both hulls' faces fit), and the edge pair axes with their depths along
-// +m and -m, unless there were more.
-enum { MAX_EDGE_AXES = 128 };
-typedef struct edge_axes {
-    double face_s[2][DX_HULL_POSED_FACES];
-    int faces_kept;
-    double m[MAX_EDGE_AXES][3], s[MAX_EDGE_AXES][2];
-    int n, overflow;
-} edge_axes;
-
-// The depths of a along +m (s[0]) and -m (s[1]) against b, from one pass
-// over each hull's points.
-static void depths_both_ways(const dx_hull *a, const dx_hull *b, const double m[3], double s[2])
-{
-    double alo, ahi, blo, bhi;
-    dx_hull_interval(a, m, &alo, &ahi);
-    dx_hull_interval(b, m, &blo, &bhi);
-    s[0] = bhi - alo;
-    s[1] = ahi - blo;
-}
-
-// The depths of a along +m (s[0]) and -m (s[1]) for the axis m of the
-// edge pair (a's edge i, b's edge j) that edge_axis accepted. With two
-// faces at each edge the pair is a face of the Minkowski difference, whose
-// outward normal d is the sign of m between a's faces' normals: the edges
-// are then the hulls' supports (a's along d, b's along -d), so a's depth
-// along -d is d . (pa - pb) for any points of them. The other sign is no
-// face: it bounds neither the depth nor the clearance (infinite).
-static void pair_depths(const dx_hull *a, unsigned i, const dx_hull *b, unsigned j,
-                        const double m[3], double s[2])
-{
-    const dxHullEdge *ea = &a->edges[i], *eb = &b->edges[j];
-    if (ea->f1 == ea->f2 || eb->f1 == eb->f2) {
-        depths_both_ways(a, b, m, s);
-        return;
-    }
-    double n1[3], n2[3], d, pa[3], pb[3];
-    dx_hull_plane(a, ea->f1, n1, &d);
-    dx_hull_plane(a, ea->f2, n2, &d);
-    dx_hull_vertex(a, ea->a, pa);
-    dx_hull_vertex(b, eb->a, pb);
-    double gap = m[0] * (pa[0] - pb[0]) + m[1] * (pa[1] - pb[1]) + m[2] * (pa[2] - pb[2]);
-    if (dot3(m, n1) + dot3(m, n2) > 0) {   // d = m
-        s[0] = INFINITY;
-        s[1] = gap;
-    } else {   // d = -m
-        s[0] = -gap;
-        s[1] = INFINITY;
-    }
-}
-
-// 0 if a separating axis parts a and b (into sep); else the face axis and
-// the edge axis of least depth (edge->depth is infinite if no edge pair
-// counts), and the axes' depths into found.
-static int sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axes *found,
-               double sep[3])
-{
-    found->n = found->overflow = 0;
-    found->faces_kept = a->nplanes <= DX_HULL_POSED_FACES && b->nplanes <= DX_HULL_POSED_FACES;
-    face->depth = edge->depth = INFINITY;
-    for (int side = 0; side < 2; side++) {
-        const dx_hull *h = side ? b : a;
-        for (unsigned f = 0; f < h->nplanes; f++) {
-            double n[3], d;
-            dx_hull_plane(h, f, n, &d);
-            if (!side)   // a's face pushes a back along -n
-                for (int i = 0; i < 3; i++) n[i] = -n[i];
-            double s = depth_along(a, b, n);
-            if (s < 0) {
-                memcpy(sep, n, sizeof n);
-                return 0;
-            }
-            if (found->faces_kept) found->face_s[side][f] = s;
-            if (s < face->depth) {
-                face->depth = s;
-                memcpy(face->n, n, sizeof face->n);
-                face->ref = side;
-                face->face = f;
-            }
-        }
-    }
-    pose_edges(a);
-    pose_edges(b);
-    arc_tables tables;
-    int tabled = fill_arc_tables(a, b, &tables);
-    for (unsigned i = 0; i < a->nedges; i++) {
-        for (unsigned j = 0; j < b->nedges; j++) {
-            double n[3], both[2];
-            if (tabled ? !edge_axis_from_tables(a, i, b, j, &tables, n) : !edge_axis(a, i, b, j, n))
-                continue;
-            pair_depths(a, i, b, j, n, both);
-            if (both[0] < 0 || both[1] < 0) {
-                memcpy(sep, n, sizeof n);
-                return 0;
-            }
-            if (found->n < MAX_EDGE_AXES) {
-                memcpy(found->m[found->n], n, sizeof n);
-                found->s[found->n][0] = both[0];
-                found->s[found->n++][1] = both[1];
-            } else {
-                found->overflow = 1;
-            }
-            for (int sg = 0; sg < 2; sg++) {
-                if (sg)
-                    for (int k = 0; k < 3; k++) n[k] = -n[k];
-                double s = both[sg];
-                if (s < edge->depth) {
-                    edge->depth = s;
-                    memcpy(edge->n, n, sizeof edge->n);
-                    edge->ref = 2;
-                    edge->ea = i;
-                    edge->eb = j;
-                }
-            }
-        }
-    }
-    return 1;
-}
-
-// What the edge pair axis m (either sign; s its depths along +m and -m)
-// allows a to move along n before parting from b: s(m) / (m . n) with m
-// turned to face n; infinite if m is square to n.
-static double edge_clearance(const double n[3], const double m[3], const double s[2])
-{
-    double mn = dot3(m, n);
-    if (mn == 0) return INFINITY;
-    return mn > 0 ? s[0] / mn : s[1] / -mn;
-}
-
-// The exact translation of a along the unit n that parts it from b (as
-// box_clearance in collide_box.c): a moved by t n is clear of b along a
-// candidate axis m once t (m . n) > s(m); the least such t over the axes
-// facing n. The candidates hold every face normal of the Minkowski
-// difference, so this is exact; it is at most s(n).
-static double clearance(const dx_hull *a, const dx_hull *b, const double n[3],
-                        const edge_axes *found)
-{
-    double best = depth_along(a, b, n);
-    for (int side = 0; side < 2; side++) {
-        const dx_hull *h = side ? b : a;
-        for (unsigned f = 0; f < h->nplanes; f++) {
-            double m[3], d;
-            dx_hull_plane(h, f, m, &d);
-            if (!side)
-                for (int i = 0; i < 3; i++) m[i] = -m[i];
-            double mn = dot3(m, n);
-            if (mn > 0) {
-                double s = found->faces_kept ? found->face_s[side][f] : depth_along(a, b, m);
-                best = fmin(best, s / mn);
-            }
-        }
-    }
-    for (int k = 0; !found->overflow && k < found->n; k++)
-        best = fmin(best, edge_clearance(n, found->m[k], found->s[k]));
-    for (unsigned i = 0; found->overflow && i < a->nedges; i++) {
-        for (unsigned j = 0; j < b->nedges; j++) {
-            double m[3], both[2];
-            if (!edge_axis(a, i, b, j, m)) continue;
-            pair_depths(a, i, b, j, m, both);
-            best = fmin(best, edge_clearance(n, m, both));
-        }
-    }
-    return best;
-}
-
 // ---- contact points --------------------------------------------------------------
 
 typedef struct hull_point {
@@ -525,6 +214,56 @@ static int middle_inside(const dx_hull *a, const dx_hull *b, const double q[3], 
 {
     double tol = DX_HULL_EPS * (a->size + b->size);
     if (!dx_hull_clip_line(a, q, n, tol, &t0, &t1) || !dx_hull_clip_line(b, q, n, tol, &t0, &t1))
+        return 0;
+    double t = (t0 + t1) / 2;
+    for (int i = 0; i < 3; i++) pos[i] = q[i] + t * n[i];
+    return 1;
+}
+
+// The lines along one direction d, clipped to a hull many times (each
+// point of a face contact): each plane's n . d, made once (dx_hull_clip_line
+// makes the same numbers per call), for hulls of at most LINE_PLANES planes.
+enum { LINE_PLANES = 64 };
+typedef struct line_planes {
+    double nd[LINE_PLANES], dl;
+} line_planes;
+
+static int line_planes_of(const dx_hull *h, const double d[3], line_planes *lp)
+{
+    if (h->nplanes > LINE_PLANES) return 0;
+    lp->dl = sqrt(dot3(d, d));
+    for (unsigned f = 0; f < h->nplanes; f++) lp->nd[f] = dot3(h->wn[f], d);
+    return 1;
+}
+
+// dx_hull_clip_line for the line o + t d whose planes' products lp holds.
+static int clip_line_along(const dx_hull *h, const line_planes *lp, const double o[3],
+                           double tol, double *t0, double *t1)
+{
+    for (unsigned f = 0; f < h->nplanes; f++) {
+        double nd = lp->nd[f], gap = h->wd[f] - dot3(h->wn[f], o);
+        if (fabs(nd) <= DX_HULL_EPS * lp->dl) {
+            if (gap < -tol) return 0;
+            continue;
+        }
+        double t = gap / nd;
+        if (nd > 0) {
+            if (t < *t1) *t1 = t;
+        } else if (t > *t0) {
+            *t0 = t;
+        }
+    }
+    return *t0 <= *t1 + tol / lp->dl;
+}
+
+// middle_inside for the line q + t n through the whole space, with both
+// hulls' plane products along n made (la for a, lb for b).
+static int middle_inside_along(const dx_hull *a, const line_planes *la, const dx_hull *b,
+                               const line_planes *lb, const double q[3], const double n[3],
+                               double pos[3])
+{
+    double tol = DX_HULL_EPS * (a->size + b->size), t0 = -INFINITY, t1 = INFINITY;
+    if (!clip_line_along(a, la, q, tol, &t0, &t1) || !clip_line_along(b, lb, q, tol, &t0, &t1))
         return 0;
     double t = (t0 + t1) / 2;
     for (int i = 0; i < 3; i++) pos[i] = q[i] + t * n[i];
@@ -618,12 +357,16 @@ static int face_points(const dx_hull *r, unsigned f, const double nf[3], double 
     }
     // Points below the reference face, lying inside both hulls along nf.
     int kept = 0, deepest = 0;
+    line_planes lr, li;
+    int along = line_planes_of(r, nf, &lr) && line_planes_of(inc, nf, &li);
     for (int k = 0; k < n; k++) {
         hull_point *p = &buf[cur][k];
         double depth = df - dot3(nf, p->p);
         if (depth < 0) continue;
         hull_point q;
-        if (!middle_inside(r, inc, p->p, nf, -INFINITY, INFINITY, q.p)) continue;
+        if (along ? !middle_inside_along(r, &lr, inc, &li, p->p, nf, q.p)
+                  : !middle_inside(r, inc, p->p, nf, -INFINITY, INFINITY, q.p))
+            continue;
         q.depth = depth;
         if (kept == 0 || q.depth > pts[deepest].depth) deepest = kept;
         pts[kept++] = q;
@@ -749,9 +492,10 @@ static dxHullAxisHint *find_hint(dx_hull *h, const void *other)
 // Whether the axis n (world) parts a and b.
 static int axis_separates(const dx_hull *a, const dx_hull *b, const double n[3])
 {
-    double s[2];
-    depths_both_ways(a, b, n, s);
-    return s[0] < 0 || s[1] < 0;
+    double alo, ahi, blo, bhi;
+    dx_hull_interval(a, n, &alo, &ahi);
+    dx_hull_interval(b, n, &blo, &bhi);
+    return bhi - alo < 0 || ahi - blo < 0;
 }
 
 // Keeps the separating axis n (world) as h's hint against the geom other.
@@ -770,8 +514,6 @@ static void keep_hint(dx_hull *h, const void *other, const double n[3])
 int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
                  dContactGeom *out, int skip)
 {
-    dx_hull_pose_points(a);
-    dx_hull_pose_points(b);
     // The axis that parted the pair last time, if it still does.
     dx_hull *holder = a->convex ? a : b->convex ? b : NULL;
     const void *other = holder == a ? (const void *)o2 : (const void *)o1;
@@ -788,12 +530,12 @@ int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
     sat_axis face, edge;
     edge_axes found;
     double sep[3];
-    if (!sat(a, b, &face, &edge, &found, sep)) {
+    if (!dx_hull_sat(a, b, &face, &edge, &found, sep)) {
         if (holder) keep_hint(holder, other, sep);
         return 0;
     }
     int max = dx_max_contacts(flags);
-    if (edge.depth * EDGE_PREFERENCE < face.depth) {
+    if (edge.depth * DX_HULL_EDGE_PREFERENCE < face.depth) {
         double pos[3];
         edge_point(a, b, &edge, pos);
         put(out, 0, skip, pos, edge.n, edge.depth, o1, o2);
@@ -804,7 +546,11 @@ int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
     dx_hull_plane(r, face.face, nf, &df);
     hull_point pts[MAXP];
     int n = face_points(r, face.face, nf, df, inc, max, pts);
-    double clear = clearance(a, b, face.n, &found);
+    // The exact translation that parts them, at most face.depth: needed
+    // only where the deepest point is short of that.
+    double clear = face.depth;
+    if (n == 0 || pts[0].depth < face.depth)
+        clear = dx_hull_clearance(a, b, face.n, face.depth, &found);
     if (n == 0) {
         double pos[3];
         deepest_pair_point(a, b, face.n, pos);

@@ -1,0 +1,656 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// collide_convex_sat.c -- the separating axis test of two convex hulls
+// (for dx_hull_hull, collide_convex_hull.c): the least translation of a
+// along a unit n that parts it from b, s(n) = h_b(n) + h_a(-n) (h the
+// support value), is least over the face normals of either and the cross
+// products of an edge of each whose arcs on the unit sphere cross (the
+// faces of the Minkowski difference); a negative value there separates
+// them. Axes that cheap lower bounds show clearly deeper than the best
+// face are skipped (see docs/perf.md); the result is that of testing them
+// all. Also the exact clearance along the chosen face's normal, and the
+// hulls' support queries (extents) that all of it rests on.
+
+#include "collide_convex.h"
+#include "collide_math.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+
+static double dot3(const double *a, const double *b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static void cross3(const double *a, const double *b, double out[3])
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+// The least and the largest of m . (x[k], y[k], z[k]) over k < n, each
+// product made as dot3 makes it (two at a time where SSE2 is there; the
+// same numbers either way).
+static void dot_range(const double m[3], const double *x, const double *y, const double *z,
+                      unsigned n, double *lo, double *hi)
+{
+    double mn = INFINITY, mx = -INFINITY;
+    unsigned k = 0;
+#ifdef __SSE2__
+    __m128d m0 = _mm_set1_pd(m[0]), m1 = _mm_set1_pd(m[1]), m2 = _mm_set1_pd(m[2]);
+    __m128d vlo = _mm_set1_pd(INFINITY), vhi = _mm_set1_pd(-INFINITY);
+    for (; k + 2 <= n; k += 2) {
+        __m128d e = _mm_add_pd(_mm_add_pd(_mm_mul_pd(m0, _mm_loadu_pd(x + k)),
+                                          _mm_mul_pd(m1, _mm_loadu_pd(y + k))),
+                               _mm_mul_pd(m2, _mm_loadu_pd(z + k)));
+        vlo = _mm_min_pd(e, vlo);   // a NaN product is skipped, as below
+        vhi = _mm_max_pd(e, vhi);
+    }
+    double l2[2], h2[2];
+    _mm_storeu_pd(l2, vlo);
+    _mm_storeu_pd(h2, vhi);
+    mn = l2[0] < l2[1] ? l2[0] : l2[1];
+    mx = h2[0] > h2[1] ? h2[0] : h2[1];
+#endif
+    for (; k < n; k++) {
+        double e = m[0] * x[k] + m[1] * y[k] + m[2] * z[k];
+        mn = e < mn ? e : mn;
+        mx = e > mx ? e : mx;
+    }
+    *lo = mn;
+    *hi = mx;
+}
+
+// The largest of m . (x[k], y[k], z[k]) over k < n (dot_range's way).
+static double dot_max(const double m[3], const double *x, const double *y, const double *z,
+                      unsigned n)
+{
+    double mx = -INFINITY;
+    unsigned k = 0;
+#ifdef __SSE2__
+    __m128d m0 = _mm_set1_pd(m[0]), m1 = _mm_set1_pd(m[1]), m2 = _mm_set1_pd(m[2]);
+    __m128d vhi = _mm_set1_pd(-INFINITY);
+    for (; k + 2 <= n; k += 2) {
+        __m128d e = _mm_add_pd(_mm_add_pd(_mm_mul_pd(m0, _mm_loadu_pd(x + k)),
+                                          _mm_mul_pd(m1, _mm_loadu_pd(y + k))),
+                               _mm_mul_pd(m2, _mm_loadu_pd(z + k)));
+        vhi = _mm_max_pd(e, vhi);
+    }
+    double h2[2];
+    _mm_storeu_pd(h2, vhi);
+    mx = h2[0] > h2[1] ? h2[0] : h2[1];
+#endif
+    for (; k < n; k++) {
+        double e = m[0] * x[k] + m[1] * y[k] + m[2] * z[k];
+        mx = e > mx ? e : mx;
+    }
+    return mx;
+}
+
+double dx_hull_extent(const dx_hull *h, const double m[3], unsigned *idx)
+{
+    if (!idx) return dot_max(m, h->px, h->py, h->pz, h->npts);
+    double best = -INFINITY;
+    unsigned bi = 0;
+    for (unsigned v = 0; v < h->npts; v++) {
+        double e = dot3(m, h->wp[v]);
+        if (e > best) {
+            best = e;
+            bi = v;
+        }
+    }
+    *idx = bi;
+    return best;
+}
+
+void dx_hull_interval(const dx_hull *h, const double m[3], double *lo, double *hi)
+{
+    dot_range(m, h->px, h->py, h->pz, h->npts, lo, hi);
+}
+
+// Poses the edges of h (once per pose).
+static void pose_edges(dx_hull *h)
+{
+    if (*h->edges_posed) return;
+    for (unsigned k = 0; k < h->nedges; k++) {
+        const dxHullEdge *e = &h->edges[k];
+        dxHullPosedEdge *out = &h->we[k];
+        for (int i = 0; i < 3; i++) {
+            out->u[i] = h->wp[e->b][i] - h->wp[e->a][i];
+            out->sum[i] = h->wn[e->f1][i] + h->wn[e->f2][i];
+        }
+        out->uu = dot3(out->u, out->u);
+        out->ss = dot3(out->sum, out->sum);
+        cross3(h->wn[e->f2], h->wn[e->f1], out->n2xn1);
+        h->ex[k] = out->n2xn1[0];
+        h->ey[k] = out->n2xn1[1];
+        h->ez[k] = out->n2xn1[2];
+    }
+    *h->edges_posed = 1;
+}
+
+// The signs of c . (x[k], y[k], z[k]) for k < n (made as dot3 makes them):
+// bit k of *pos where above 0, of *neg where below.
+static inline void dot_signs(const double c[3], const double *x, const double *y,
+                             const double *z, unsigned n, uint64_t *pos, uint64_t *neg)
+{
+    uint64_t p = 0, q = 0;
+    unsigned k = 0;
+#ifdef __SSE2__
+    __m128d c0 = _mm_set1_pd(c[0]), c1 = _mm_set1_pd(c[1]), c2 = _mm_set1_pd(c[2]);
+    __m128d zero = _mm_setzero_pd();
+    for (; k + 2 <= n; k += 2) {
+        __m128d d = _mm_add_pd(_mm_add_pd(_mm_mul_pd(c0, _mm_loadu_pd(x + k)),
+                                          _mm_mul_pd(c1, _mm_loadu_pd(y + k))),
+                               _mm_mul_pd(c2, _mm_loadu_pd(z + k)));
+        p |= (uint64_t)_mm_movemask_pd(_mm_cmpgt_pd(d, zero)) << k;
+        q |= (uint64_t)_mm_movemask_pd(_mm_cmplt_pd(d, zero)) << k;
+    }
+#endif
+    for (; k < n; k++) {
+        double d = c[0] * x[k] + c[1] * y[k] + c[2] * z[k];
+        p |= (uint64_t)(d > 0) << k;
+        q |= (uint64_t)(d < 0) << k;
+    }
+    *pos = p;
+    *neg = q;
+}
+
+// The translation of a along the unit n that parts it from b.
+static double depth_along(const dx_hull *a, const dx_hull *b, const double n[3])
+{
+    double m[3] = { -n[0], -n[1], -n[2] };
+    return dx_hull_extent(b, n, NULL) + dx_hull_extent(a, m, NULL);
+}
+
+// max over the points of h's face f's polygon of m . x: the hull's extent
+// along that face's own normal m (its other points lie below the face).
+static double face_extent(const dx_hull *h, unsigned f, const double m[3])
+{
+    unsigned count;
+    const unsigned *idx = dx_hull_polygon(h, f, &count);
+    double best = -INFINITY;
+    for (unsigned k = 0; k < count; k++) {
+        double e = dot3(m, h->wp[idx[k]]);
+        best = e > best ? e : best;
+    }
+    return best;
+}
+
+// depth_along for the face axis n of a's face f (side 0: n its inward
+// normal) or b's (side 1: its outward normal), the face's own hull's
+// extent taken over the face's polygon.
+static double face_depth(const dx_hull *a, const dx_hull *b, int side, unsigned f,
+                         const double n[3])
+{
+    double m[3] = { -n[0], -n[1], -n[2] };
+    return side ? face_extent(b, f, n) + dx_hull_extent(a, m, NULL)
+                : dx_hull_extent(b, n, NULL) + face_extent(a, f, m);
+}
+
+// The axis of a's face f (side 0: its inward normal, along which a's face
+// pushes a back) or b's (side 1: its outward normal) into n.
+static void face_axis(const dx_hull *a, const dx_hull *b, int side, unsigned f, double n[3])
+{
+    const double *m = side ? b->wn[f] : a->wn[f];
+    for (int i = 0; i < 3; i++) n[i] = side ? m[i] : -m[i];
+}
+
+// A floor under face_depth for h's face f, q a point inside the other
+// hull: h's extent along the face's normal m is at least m . p for the
+// polygon's first point p, the other's along -m at least -m . q.
+static double face_floor(const dx_hull *h, unsigned f, const double q[3])
+{
+    unsigned count;
+    const double *p = h->wp[*dx_hull_polygon(h, f, &count)];
+    double w[3] = { p[0] - q[0], p[1] - q[1], p[2] - q[2] };
+    return dot3(h->wn[f], w);
+}
+
+// Whether a's arc (from n1 to n2) and b's negated arc (for the difference,
+// from -n1 to -n2) cross on the unit sphere: each arc's ends lie on
+// opposite sides of the other's great circle, on the same side. cba, dba:
+// b's -n1, -n2 against a's circle (n2 x n1); adc, bdc: a's n1, n2
+// against b's.
+static int arcs_cross(double cba, double dba, double adc, double bdc)
+{
+    return cba * dba < 0 && adc * bdc < 0 && cba * bdc > 0;
+}
+
+// The unit cross product of the posed edges' directions into m; 0 if they
+// are parallel.
+static int unit_cross(const dxHullPosedEdge *xa, const dxHullPosedEdge *xb, double m[3])
+{
+    cross3(xa->u, xb->u, m);
+    double l2 = dot3(m, m);
+    if (l2 <= DX_COLLIDE_EPS * xa->uu * xb->uu) return 0;   // parallel
+    double inv = 1 / sqrt(l2);
+    for (int k = 0; k < 3; k++) m[k] *= inv;
+    return 1;
+}
+
+// The unit axis of the edge pair (a's edge i, b's edge j), into m (either
+// sign); 0 if the pair can give no face of the Minkowski difference a - b
+// (the arcs of the two edges on the unit sphere, between their faces'
+// normals, do not cross: the least depth is never there) or the edges are
+// parallel. An edge without a second face is always tried. The edges are
+// posed.
+static int edge_axis(const dx_hull *a, unsigned i, const dx_hull *b, unsigned j, double m[3])
+{
+    const dxHullEdge *ea = &a->edges[i], *eb = &b->edges[j];
+    const dxHullPosedEdge *xa = &a->we[i], *xb = &b->we[j];
+    if (ea->f1 != ea->f2 && eb->f1 != eb->f2 &&
+        !arcs_cross(-dot3(b->wn[eb->f1], xa->n2xn1), -dot3(b->wn[eb->f2], xa->n2xn1),
+                    dot3(a->wn[ea->f1], xb->n2xn1), dot3(a->wn[ea->f2], xb->n2xn1)))
+        return 0;
+    return unit_cross(xa, xb, m);
+}
+
+// The depths of a along +m (s[0]) and -m (s[1]) against b, from one pass
+// over each hull's points.
+static void depths_both_ways(const dx_hull *a, const dx_hull *b, const double m[3], double s[2])
+{
+    double alo, ahi, blo, bhi;
+    dx_hull_interval(a, m, &alo, &ahi);
+    dx_hull_interval(b, m, &blo, &bhi);
+    s[0] = bhi - alo;
+    s[1] = ahi - blo;
+}
+
+// The depths of a along +m (s[0]) and -m (s[1]) for the axis m of the
+// edge pair (a's edge i, b's edge j) that edge_axis accepted. With two
+// faces at each edge the pair is a face of the Minkowski difference, whose
+// outward normal d is the sign of m between a's faces' normals: the edges
+// are then the hulls' supports (a's along d, b's along -d), so a's depth
+// along -d is d . (pa - pb) for any points of them. The other sign is no
+// face: it bounds neither the depth nor the clearance (infinite).
+static void pair_depths(const dx_hull *a, unsigned i, const dx_hull *b, unsigned j,
+                        const double m[3], double s[2])
+{
+    const dxHullEdge *ea = &a->edges[i], *eb = &b->edges[j];
+    if (ea->f1 == ea->f2 || eb->f1 == eb->f2) {
+        depths_both_ways(a, b, m, s);
+        return;
+    }
+    double n1[3], n2[3], d, pa[3], pb[3];
+    dx_hull_plane(a, ea->f1, n1, &d);
+    dx_hull_plane(a, ea->f2, n2, &d);
+    dx_hull_vertex(a, ea->a, pa);
+    dx_hull_vertex(b, eb->a, pb);
+    double gap = m[0] * (pa[0] - pb[0]) + m[1] * (pa[1] - pb[1]) + m[2] * (pa[2] - pb[2]);
+    if (dot3(m, n1) + dot3(m, n2) > 0) {   // d = m
+        s[0] = INFINITY;
+        s[1] = gap;
+    } else {   // d = -m
+        s[0] = -gap;
+        s[1] = INFINITY;
+    }
+}
+
+// Takes the axis n of the edge pair (a's edge i, b's edge j) that
+// edge_axis accepted: 0 (n into sep) if it parts the hulls, else the least
+// depth kept in edge.
+static int edge_pair(const dx_hull *a, unsigned i, const dx_hull *b, unsigned j, double n[3],
+                     sat_axis *edge, double sep[3])
+{
+    double both[2];
+    pair_depths(a, i, b, j, n, both);
+    if (both[0] < 0 || both[1] < 0) {
+        memcpy(sep, n, 3 * sizeof n[0]);
+        return 0;
+    }
+    for (int sg = 0; sg < 2; sg++) {
+        if (sg)
+            for (int k = 0; k < 3; k++) n[k] = -n[k];
+        double s = both[sg];
+        if (s < edge->depth) {
+            edge->depth = s;
+            memcpy(edge->n, n, sizeof edge->n);
+            edge->ref = 2;
+            edge->ea = i;
+            edge->eb = j;
+        }
+    }
+    return 1;
+}
+
+// What the edge pairs of sat update: the least edge axis, the pairs kept
+// for clearance, the separating axis if one is found, and the depth
+// (times the cross product's length) beyond which a pair cannot matter.
+typedef struct edge_search {
+    sat_axis *edge;
+    edge_axes *found;
+    double *sep;
+    const sat_axis *face;   // the best face axis (final: the edge pairs come after)
+    double bound;   // face depth / DX_HULL_EDGE_PREFERENCE: an edge pair deeper never wins
+    double thr;     // the least of bound and edge->depth, with a margin for rounding
+    double margin;  // a depth's margin for rounding (edge_axes' margin)
+} edge_search;
+
+static void update_threshold(edge_search *es)
+{
+    double least = es->edge->depth < es->bound ? es->edge->depth : es->bound;
+    es->thr = least * (1 + 1e-9) + es->margin;
+}
+
+// Whether the sign of the unnormalised product x (of the cross product
+// c, with c . c = cc, and a vector of square vv) is clear of rounding.
+static int clear_sign(double x, double cc, double vv)
+{
+    return x * x > 1e-12 * cc * vv;
+}
+
+// Keeps the pair (a's edge i, b's edge j) for clearance.
+static void keep_pair(edge_axes *found, unsigned i, unsigned j)
+{
+    if (found->n < MAX_EDGE_AXES) {
+        found->pair[found->n][0] = i;
+        found->pair[found->n++][1] = j;
+    } else {
+        found->overflow = 1;
+    }
+}
+
+// 0 if an edge pair (c its unnormalised cross product, c . c = cc, facing
+// = c . (n1 + n2) of a's edge, depth its positive depth times |c|) clearly
+// cannot lower the clearance along the best face's normal below the face's
+// own depth, where clearance starts (see edge_may_clear).
+static int may_clear(const edge_search *es, const double c[3], double cc, double facing,
+                     double depth)
+{
+    double cn = dot3(c, es->face->n);
+    if (!clear_sign(cn, cc, 1)) return 1;
+    if ((facing > 0) == (cn > 0)) return 0;
+    return depth <= (es->face->depth * (1 + 1e-9) + es->margin) * fabs(cn);
+}
+
+// The edge pair (a's edge i, b's edge j) whose arcs cross: 0 (the axis
+// into sep) if its axis parts the hulls; else kept in found if it may
+// matter to clearance, and its depth in edge if least. The exact test (edge_axis's
+// unit axis, pair_depths, edge_pair) runs only where it can matter: where
+// the pair's depth, from the unnormalised cross product c of the edges,
+// is not clearly positive or not clearly above the threshold (beyond which
+// the pair can be neither the least depth nor win over the best face); a
+// pair it skips would not have changed edge. Edges without a second face
+// always take the exact test.
+static inline int edge_candidate(const dx_hull *a, unsigned i, const dx_hull *b, unsigned j,
+                                 edge_search *es)
+{
+    const dxHullPosedEdge *xa = &a->we[i], *xb = &b->we[j];
+    double c[3];
+    cross3(xa->u, xb->u, c);
+    double cc = dot3(c, c);
+    if (cc <= DX_COLLIDE_EPS * xa->uu * xb->uu) return 1;   // parallel: unit_cross's test
+    const dxHullEdge *ea = &a->edges[i], *eb = &b->edges[j];
+    if (ea->f1 != ea->f2 && eb->f1 != eb->f2) {
+        const double *pa = a->wp[ea->a], *pb = b->wp[eb->a];
+        double d[3] = { pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2] };
+        double facing = dot3(c, xa->sum), gap = dot3(c, d);
+        double depth = facing > 0 ? gap : -gap;   // times |c|
+        int sure = clear_sign(facing, cc, xa->ss);
+        if (!sure || depth <= 0 || may_clear(es, c, cc, facing, depth)) keep_pair(es->found, i, j);
+        if (sure && depth > 0 && depth * depth > es->thr * es->thr * cc) return 1;
+    } else {
+        keep_pair(es->found, i, j);
+    }
+    double n[3];
+    unit_cross(xa, xb, n);
+    if (!edge_pair(a, i, b, j, n, es->edge, es->sep)) return 0;
+    update_threshold(es);
+    return 1;
+}
+
+// Whether every edge pair with h's edge k (two faces) is clearly deeper
+// than far, q being a point of the other hull. Where such a pair is a
+// face of the Minkowski difference its normal d lies on k's arc (between
+// its faces' outward normals) and its depth is h's extent along d, d . p
+// for p on the edge, plus the other's along -d, at least -d . q: so at
+// least the least of d . (p - q) over the arc, which (the arc shorter than
+// a half circle) is at one of its ends when both are positive.
+static inline int edge_far(const dx_hull *h, unsigned k, const double q[3], double far)
+{
+    const dxHullEdge *e = &h->edges[k];
+    const double *p = h->wp[e->a];
+    double w[3] = { p[0] - q[0], p[1] - q[1], p[2] - q[2] };
+    return dot3(h->wn[e->f1], w) > far && dot3(h->wn[e->f2], w) > far;
+}
+
+// The edge pairs of sat for hulls whose edges and faces fit 64-bit masks.
+// edge_axis's arc test asks, of a's edge i (faces f1, f2) and b's edge j
+// (faces g1, g2), for the signs of the products of each edge's circle
+// normal (n2 x n1) with the other hull's face normals: b's g1, g2 on
+// opposite sides of i's circle (S), a's f1, f2 on opposite sides of j's
+// (U), and g1 below i's circle where f2 is above j's or the reverse (W).
+// Each product is made once, into masks: for a's edge i the sets of b's
+// faces above and below its circle, turned into sets of b's edges by their
+// first and second face; for a's face f the sets of b's edges whose
+// circle it is above and below. Then the pairs that pass are, for each i,
+// the set bits of S & U & W, visited in edge_axis's order. An edge
+// without a second face meets every edge. Edges whose every pair is
+// clearly deeper than the best face (edge_far) are left out: such a pair
+// can neither part the hulls, nor win, nor lower the clearance.
+enum { MASK_BITS = 64 };
+
+static int masked_edge_pairs(const dx_hull *a, const dx_hull *b, edge_search *es)
+{
+    uint64_t first[MASK_BITS], second[MASK_BITS], lone = 0;   // b's edges by face
+    uint64_t above[MASK_BITS], below[MASK_BITS];              // by a's face: b's edges
+    for (unsigned f = 0; f < b->nplanes; f++) first[f] = second[f] = 0;
+    for (unsigned j = 0; j < b->nedges; j++) {
+        const dxHullEdge *e = &b->edges[j];
+        uint64_t bit = (uint64_t)1 << j;
+        first[e->f1] |= bit;
+        second[e->f2] |= bit;
+        if (e->f1 == e->f2) lone |= bit;
+    }
+    uint64_t all = b->nedges == MASK_BITS ? ~(uint64_t)0 : ((uint64_t)1 << b->nedges) - 1;
+    double far = es->face->depth * (1 + 1e-9) + 2 * es->margin;
+    // The point of each hull furthest towards the other's centre (points
+    // of the hulls, for edge_far: tighter there than the centres).
+    double ab[3] = { b->centre[0] - a->centre[0], b->centre[1] - a->centre[1],
+                     b->centre[2] - a->centre[2] };
+    double ba[3] = { -ab[0], -ab[1], -ab[2] };
+    unsigned va, vb;
+    dx_hull_extent(a, ab, &va);
+    dx_hull_extent(b, ba, &vb);
+    const double *qa = a->wp[va], *qb = b->wp[vb];
+    uint64_t near_b = all, near_a = 0, faces = 0;   // a's near edges, and their faces
+    for (unsigned j = 0; j < b->nedges; j++)
+        if (!(lone >> j & 1) && edge_far(b, j, qa, far)) near_b &= ~((uint64_t)1 << j);
+    for (unsigned i = 0; i < a->nedges; i++) {
+        const dxHullEdge *ea = &a->edges[i];
+        if (ea->f1 == ea->f2 || !edge_far(a, i, qb, far)) {
+            near_a |= (uint64_t)1 << i;
+            faces |= (uint64_t)1 << ea->f1 | (uint64_t)1 << ea->f2;
+        }
+    }
+    for (; faces; faces &= faces - 1) {
+        unsigned f = (unsigned)__builtin_ctzll(faces);
+        dot_signs(a->wn[f], b->ex, b->ey, b->ez, b->nedges, &above[f], &below[f]);
+    }
+    for (unsigned i = 0; i < a->nedges; i++) {
+        const dxHullEdge *ea = &a->edges[i];
+        uint64_t cand = all;
+        if (!(near_a >> i & 1)) {
+            cand = lone;
+        } else if (ea->f1 != ea->f2) {
+            uint64_t first_pos = 0, first_neg = 0, second_pos = 0, second_neg = 0, pos, neg;
+            dot_signs(a->we[i].n2xn1, b->nx, b->ny, b->nz, b->nplanes, &pos, &neg);
+            for (; pos; pos &= pos - 1) {
+                unsigned f = (unsigned)__builtin_ctzll(pos);
+                first_pos |= first[f];
+                second_pos |= second[f];
+            }
+            for (; neg; neg &= neg - 1) {
+                unsigned f = (unsigned)__builtin_ctzll(neg);
+                first_neg |= first[f];
+                second_neg |= second[f];
+            }
+            uint64_t s = (first_pos & second_neg) | (first_neg & second_pos);
+            uint64_t u = (above[ea->f1] & below[ea->f2]) | (below[ea->f1] & above[ea->f2]);
+            uint64_t w = (first_neg & above[ea->f2]) | (first_pos & below[ea->f2]);
+            cand = (s & u & w & near_b) | lone;
+        }
+        for (; cand; cand &= cand - 1) {
+            unsigned j = (unsigned)__builtin_ctzll(cand);
+            if (!edge_candidate(a, i, b, j, es)) return 0;
+        }
+    }
+    return 1;
+}
+
+// 0 if a separating axis parts a and b (into sep); else the face axis and
+// the edge axis of least depth (edge->depth is infinite if no edge pair
+// counts), and the axes' depths into found.
+int dx_hull_sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axes *found,
+                double sep[3])
+{
+    found->n = found->overflow = 0;
+    found->faces_kept = a->nplanes <= KEPT_FACES && b->nplanes <= KEPT_FACES;
+    double scale = a->size + b->size;
+    for (int i = 0; i < 3; i++) scale += fabs(a->c[i]) + fabs(b->c[i]);
+    found->margin = 1e-12 * scale;
+    face->depth = edge->depth = INFINITY;
+    // A face's depth is at least face_floor: faces clearly deeper than a
+    // first guess (the face of least floor) are skipped.
+    double floors[2][KEPT_FACES], guess = INFINITY, limit = INFINITY;
+    int gside = 0;
+    unsigned gface = 0;
+    if (found->faces_kept) {
+        for (int side = 0; side < 2; side++) {
+            const dx_hull *h = side ? b : a, *o = side ? a : b;
+            for (unsigned f = 0; f < h->nplanes; f++) {
+                floors[side][f] = face_floor(h, f, o->centre);
+                if (floors[side][f] < guess) {
+                    guess = floors[side][f];
+                    gside = side;
+                    gface = f;
+                }
+            }
+        }
+        double n[3];
+        face_axis(a, b, gside, gface, n);
+        guess = face_depth(a, b, gside, gface, n);
+        if (guess >= 0) limit = guess * (1 + 1e-9) + 2 * found->margin;
+    }
+    for (int side = 0; side < 2; side++) {
+        const dx_hull *h = side ? b : a;
+        for (unsigned f = 0; f < h->nplanes; f++) {
+            if (limit < INFINITY && floors[side][f] > limit) {
+                found->face_s[side][f] = INFINITY;
+                continue;
+            }
+            double n[3];
+            face_axis(a, b, side, f, n);
+            double s = side == gside && f == gface && limit < INFINITY
+                           ? guess
+                           : face_depth(a, b, side, f, n);
+            if (s < 0) {
+                memcpy(sep, n, sizeof n);
+                return 0;
+            }
+            if (found->faces_kept) found->face_s[side][f] = s;
+            if (s < face->depth) {
+                face->depth = s;
+                memcpy(face->n, n, sizeof face->n);
+                face->ref = side;
+                face->face = f;
+            }
+        }
+    }
+    pose_edges(a);
+    pose_edges(b);
+    edge_search es = { edge, found, sep, face, face->depth / DX_HULL_EDGE_PREFERENCE, 0,
+                       found->margin };
+    update_threshold(&es);
+    if (a->nedges <= MASK_BITS && b->nedges <= MASK_BITS && a->nplanes <= MASK_BITS &&
+        b->nplanes <= MASK_BITS)
+        return masked_edge_pairs(a, b, &es);
+    for (unsigned i = 0; i < a->nedges; i++) {
+        for (unsigned j = 0; j < b->nedges; j++) {
+            double n[3];
+            if (edge_axis(a, i, b, j, n) && !edge_candidate(a, i, b, j, &es)) return 0;
+        }
+    }
+    return 1;
+}
+
+// What the edge pair axis m (either sign; s its depths along +m and -m)
+// allows a to move along n before parting from b: s(m) / (m . n) with m
+// turned to face n; infinite if m is square to n.
+static double edge_clearance(const double n[3], const double m[3], const double s[2])
+{
+    double mn = dot3(m, n);
+    if (mn == 0) return INFINITY;
+    return mn > 0 ? s[0] / mn : s[1] / -mn;
+}
+
+// 0 if the kept edge pair (a's edge i, b's edge j) clearly cannot lower
+// the clearance best along n: its face of the Minkowski difference faces
+// away from n (edge_clearance infinite), or its ratio, from the
+// unnormalised cross product, is clearly above best. Edges without a
+// second face always count.
+static int edge_may_clear(const dx_hull *a, unsigned i, const dx_hull *b, unsigned j,
+                          const double n[3], double best, double margin)
+{
+    const dxHullEdge *ea = &a->edges[i], *eb = &b->edges[j];
+    if (ea->f1 == ea->f2 || eb->f1 == eb->f2) return 1;
+    const dxHullPosedEdge *xa = &a->we[i], *xb = &b->we[j];
+    double c[3];
+    cross3(xa->u, xb->u, c);
+    double cc = dot3(c, c), facing = dot3(c, xa->sum), cn = dot3(c, n);
+    if (!clear_sign(facing, cc, xa->ss) || !clear_sign(cn, cc, 1)) return 1;
+    if ((facing > 0) == (cn > 0)) return 0;
+    const double *pa = a->wp[ea->a], *pb = b->wp[eb->a];
+    double d[3] = { pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2] };
+    double gap = dot3(c, d), depth = facing > 0 ? gap : -gap;
+    return depth <= (best * (1 + 1e-9) + margin) * fabs(cn);
+}
+
+// The exact translation of a along the unit n that parts it from b (as
+// box_clearance in collide_box.c): a moved by t n is clear of b along a
+// candidate axis m once t (m . n) > s(m); the least such t over the axes
+// facing n. The candidates hold every face normal of the Minkowski
+// difference, so this is exact; it is at most s_n, the depth along n.
+double dx_hull_clearance(const dx_hull *a, const dx_hull *b, const double n[3], double s_n,
+                         const edge_axes *found)
+{
+    double best = s_n;
+    for (int side = 0; side < 2; side++) {
+        const dx_hull *h = side ? b : a;
+        for (unsigned f = 0; f < h->nplanes; f++) {
+            double m[3], d;
+            dx_hull_plane(h, f, m, &d);
+            if (!side)
+                for (int i = 0; i < 3; i++) m[i] = -m[i];
+            double mn = dot3(m, n);
+            if (mn > 0) {
+                double s = found->faces_kept ? found->face_s[side][f] : depth_along(a, b, m);
+                best = fmin(best, s / mn);
+            }
+        }
+    }
+    for (int k = 0; !found->overflow && k < found->n; k++) {
+        unsigned i = found->pair[k][0], j = found->pair[k][1];
+        if (!edge_may_clear(a, i, b, j, n, best, found->margin)) continue;
+        double m[3], both[2];
+        unit_cross(&a->we[i], &b->we[j], m);
+        pair_depths(a, i, b, j, m, both);
+        best = fmin(best, edge_clearance(n, m, both));
+    }
+    for (unsigned i = 0; found->overflow && i < a->nedges; i++) {
+        for (unsigned j = 0; j < b->nedges; j++) {
+            double m[3], both[2];
+            if (!edge_axis(a, i, b, j, m)) continue;
+            pair_depths(a, i, b, j, m, both);
+            best = fmin(best, edge_clearance(n, m, both));
+        }
+    }
+    return best;
+}
