@@ -424,9 +424,340 @@ static int test_bullet_meets_the_contract(void)
     return check_backend("bullet");
 }
 
+// ---- callbacks, sides, Update, empty meshes -----------------------------------------
+
+static dGeomID seen_mesh, seen_other;
+static int filter_calls, vetoed = -1;
+
+// The per-triangle callback: vetoes `vetoed` (every triangle if -2).
+static int veto(dGeomID mesh, dGeomID other, int tri)
+{
+    seen_mesh = mesh;
+    seen_other = other;
+    filter_calls++;
+    return vetoed != -2 && tri != vetoed;
+}
+
+static int array_calls;
+
+static void array_cb(dGeomID mesh, dGeomID other, const int *tris, int count)
+{
+    (void)mesh, (void)other, (void)tris, (void)count;
+    array_calls++;
+}
+
+static int merge_cb(dGeomID mesh, int a, int b)
+{
+    (void)mesh, (void)b;
+    return a;
+}
+
+// Distance from p to triangle t of mesh g (world), sampled on its plane
+// through barycentric clamping: the exact closest point is not needed, a
+// contact on the triangle gives 0.
+static double distance_to_triangle(dGeomID g, int t, const dReal p[3])
+{
+    dVector3 v[3];
+    dGeomTriMeshGetTriangle(g, t, &v[0], &v[1], &v[2]);
+    double best = INFINITY;
+    for (int i = 0; i <= 200; i++)
+        for (int j = 0; i + j <= 200; j++) {
+            double u = i / 200.0, w = j / 200.0, d2 = 0;
+            for (int k = 0; k < 3; k++) {
+                double q = (1 - u - w) * v[0][k] + u * v[1][k] + w * v[2][k] - p[k];
+                d2 += q * q;
+            }
+            best = fmin(best, sqrt(d2));
+        }
+    return best;
+}
+
+// Both orders give the same contacts, the mesh's side the triangle.
+static int same_contacts(const dContactGeom *a, int na, const dContactGeom *b, int nb)
+{
+    if (na != nb) return 0;
+    for (int i = 0; i < na; i++) {
+        if (a[i].depth != b[i].depth || a[i].side1 != b[i].side1 || a[i].side2 != b[i].side2)
+            return 0;
+        for (int k = 0; k < 3; k++)
+            if (a[i].pos[k] != b[i].pos[k] || a[i].normal[k] != b[i].normal[k]) return 0;
+    }
+    return 1;
+}
+
+static int check_callbacks(const char *backend)
+{
+    if (!backend_built(backend)) return test_skip("backend not built");
+    test_mesh m;
+    mesh_grid(&m, 8, 2, NULL);   // cells of 0.5
+    dGeomID g = dCreateTriMesh(0, m.data, NULL, NULL, NULL), s = dCreateSphere(0, 0.4);
+    // Near a vertex of the grid: several triangles touch.
+    dGeomSetPosition(s, 0.02, 0.03, 0.35);
+    dContactGeom c[MAXC], r[MAXC], want[MAXC];
+    dCollisionSetBackend(backend);
+    CHECK(backend_answers(backend, g, s));
+    dCollisionSetBackend(backend);
+    int n = dCollide(g, s, MAXC, c, sizeof c[0]);
+    CHECK(n >= 2);
+    CHECK_NEAR(c[deepest(c, n)].depth, 0.05, TOL(1e-6, 1e-4));
+    // side1 names a triangle the contact lies on; reversed, side2 does.
+    int m2 = dCollide(s, g, MAXC, r, sizeof r[0]);
+    CHECK(m2 == n);
+    for (int i = 0; i < n; i++) {
+        CHECK(c[i].side1 >= 0 && c[i].side1 < m.nt && c[i].side2 == -1);
+        CHECK(r[i].side2 == c[i].side1 && r[i].side1 == -1);
+        CHECK(distance_to_triangle(g, c[i].side1, c[i].pos) < 0.012);   // the sampling's step
+    }
+    // The per-triangle callback: its arguments, vetoing one triangle, all.
+    int deep = c[deepest(c, n)].side1;
+    dGeomTriMeshSetCallback(g, veto);
+    vetoed = deep;
+    filter_calls = 0;
+    int nv = dCollide(g, s, MAXC, c, sizeof c[0]);
+    CHECK(filter_calls > 0 && seen_mesh == g && seen_other == s);
+    CHECK(nv >= 1 && nv < n);
+    for (int i = 0; i < nv; i++) CHECK(c[i].side1 != deep);
+    nv = dCollide(s, g, MAXC, c, sizeof c[0]);
+    for (int i = 0; i < nv; i++) CHECK(c[i].side2 != deep);
+    vetoed = -2;
+    CHECK(dCollide(g, s, MAXC, c, sizeof c[0]) == 0);
+    CHECK(dCollide(s, g, MAXC, c, sizeof c[0]) == 0);
+    dGeomTriMeshSetCallback(g, NULL);
+    // An array callback, a merge callback, a merge setting: native answers
+    // (its contacts exactly), which is said once per reason.
+    for (int reason = 0; reason < 3; reason++) {
+        if (reason == 0) dGeomTriMeshSetArrayCallback(g, array_cb);
+        if (reason == 1) dGeomTriMeshSetTriMergeCallback(g, merge_cb);
+        int value = reason == 2 ? dGeomColliderMergeContactsValue_Normals
+                                : dGeomColliderMergeContactsValue_None;
+        int size = sizeof value;
+        dGeomLowLevelControl(g, dGeomColliderControlClass,
+                             dGeomColliderSetMergeSphereContactsControlCode, &value, &size);
+        dCollisionSetBackend("native");
+        array_calls = 0;
+        int nw = dCollide(g, s, MAXC, want, sizeof want[0]);
+        CHECK(reason != 0 || array_calls == 1);
+        dCollisionSetBackend(backend);
+        test_capture_reports();
+        array_calls = 0;
+        int got = dCollide(g, s, MAXC, c, sizeof c[0]);
+        CHECK(reason != 0 || array_calls == 1);
+        CHECK(same_contacts(c, got, want, nw));
+        dCollide(s, g, MAXC, c, sizeof c[0]);
+        static const char *const why[3] = { "array callback", "merge callback", "merge setting" };
+        CHECK(test_captured_count() == 1 && test_captured_contains(why[reason]));
+        test_release_reports();
+        // Strict mode makes it an error.
+        test_capture_reports();
+        dCollisionSetStrict(1);
+        CHECK(dCollide(g, s, MAXC, c, sizeof c[0]) == 0);
+        dCollisionSetStrict(0);
+        CHECK(test_captured_contains("cannot collide") && test_captured_contains(why[reason]));
+        test_release_reports();
+        dGeomTriMeshSetArrayCallback(g, NULL);
+        dGeomTriMeshSetTriMergeCallback(g, NULL);
+        value = dGeomColliderMergeContactsValue__Default;
+        dGeomLowLevelControl(g, dGeomColliderControlClass,
+                             dGeomColliderSetMergeSphereContactsControlCode, &value, &size);
+    }
+    dCollisionSetBackend("native");
+    dGeomDestroy(s);
+    dGeomDestroy(g);
+    mesh_free(&m);
+    return 0;
+}
+
+static int test_fcl_callbacks(void)
+{
+    return check_callbacks("fcl");
+}
+
+static int test_bullet_callbacks(void)
+{
+    return check_callbacks("bullet");
+}
+
+// Update after moving the vertices, SetData to other data, two geoms on one
+// data, a mesh without data or triangles: the adapter's model follows.
+static int check_data_changes(const char *backend)
+{
+    if (!backend_built(backend)) return test_skip("backend not built");
+    test_mesh a, b;
+    mesh_grid(&a, 8, 2, NULL);
+    mesh_grid(&b, 8, 2, NULL);
+    for (int i = 0; i < b.nv; i++) b.v[i][2] = 0.2;   // b: 0.2 higher
+    dGeomTriMeshDataUpdate(b.data);
+    dGeomID g1 = dCreateTriMesh(0, a.data, NULL, NULL, NULL);
+    dGeomID g2 = dCreateTriMesh(0, a.data, NULL, NULL, NULL);
+    dGeomSetPosition(g2, 10, 0, 0);
+    dGeomID s = dCreateSphere(0, 0.4);
+    dContactGeom c[MAXC];
+    const double tol = TOL(1e-6, 1e-4);
+    dCollisionSetBackend(backend);
+    dGeomSetPosition(s, 0.1, 0.2, 0.35);
+    int n = dCollide(g1, s, MAXC, c, sizeof c[0]);
+    CHECK(n >= 1);
+    CHECK_NEAR(c[deepest(c, n)].depth, 0.05, tol);
+    dGeomSetPosition(s, 10.1, 0.2, 0.35);
+    n = dCollide(g2, s, MAXC, c, sizeof c[0]);
+    CHECK(n >= 1);
+    CHECK_NEAR(c[deepest(c, n)].depth, 0.05, tol);
+    // The vertices move up 0.1: both geoms see it.
+    for (int i = 0; i < a.nv; i++) a.v[i][2] = 0.1;
+    dGeomTriMeshDataUpdate(a.data);
+    n = dCollide(g2, s, MAXC, c, sizeof c[0]);
+    CHECK(n >= 1);
+    CHECK_NEAR(c[deepest(c, n)].depth, 0.15, tol);
+    dGeomSetPosition(s, 0.1, 0.2, 0.35);
+    n = dCollide(g1, s, MAXC, c, sizeof c[0]);
+    CHECK(n >= 1);
+    CHECK_NEAR(c[deepest(c, n)].depth, 0.15, tol);
+    // g1 onto b (0.2 high), g2 stays on a.
+    dGeomTriMeshSetData(g1, b.data);
+    n = dCollide(g1, s, MAXC, c, sizeof c[0]);
+    CHECK(n >= 1);
+    CHECK_NEAR(c[deepest(c, n)].depth, 0.25, tol);
+    dGeomSetPosition(s, 10.1, 0.2, 0.35);
+    n = dCollide(g2, s, MAXC, c, sizeof c[0]);
+    CHECK(n >= 1);
+    CHECK_NEAR(c[deepest(c, n)].depth, 0.15, tol);
+    // A rebuild with no triangles, and a mesh without data: no contact.
+    test_capture_reports();   // (the build warns of the empty mesh)
+    dGeomTriMeshDataBuildDouble(a.data, a.v, 3 * sizeof(double), a.nv, a.tri, 0,
+                                3 * sizeof(dTriIndex));
+    CHECK(test_captured_contains("no triangles"));
+    test_release_reports();
+    CHECK(dCollide(g2, s, MAXC, c, sizeof c[0]) == 0);
+    dGeomID none = dCreateTriMesh(0, NULL, NULL, NULL, NULL);
+    CHECK(dCollide(none, s, MAXC, c, sizeof c[0]) == 0);
+    dCollisionSetBackend("native");
+    dGeomDestroy(none);
+    dGeomDestroy(s);
+    dGeomDestroy(g1);
+    dGeomDestroy(g2);
+    mesh_free(&a);
+    mesh_free(&b);
+    return 0;
+}
+
+static int test_fcl_data_changes(void)
+{
+    return check_data_changes("fcl");
+}
+
+static int test_bullet_data_changes(void)
+{
+    return check_data_changes("bullet");
+}
+
+// ---- resting on a grid mesh ----------------------------------------------------------
+
+typedef struct rest_scene {
+    dWorldID world;
+    dJointGroupID contacts;
+    dGeomID mesh, ball, box;
+} rest_scene;
+
+static void near_cb(void *data, dGeomID a, dGeomID b)
+{
+    rest_scene *sc = (rest_scene *)data;
+    dContact c[8];
+    int n = dCollide(a, b, 8, &c[0].geom, sizeof c[0]);
+    for (int i = 0; i < n; i++) {
+        c[i].surface.mode = dContactSoftERP | dContactSoftCFM;
+        c[i].surface.mu = 1;
+        c[i].surface.soft_erp = 0.2;
+        c[i].surface.soft_cfm = 1e-5;
+        dJointAttach(dJointCreateContact(sc->world, sc->contacts, &c[i]), dGeomGetBody(a),
+                     dGeomGetBody(b));
+    }
+}
+
+// A ball (r 0.3) and a box (0.5 x 0.4 x 0.3) dropped on a flat grid mesh
+// (cells of 0.5) under the backend: their heights after 2 s, and the
+// largest speed left.
+static void rest(const char *backend, const test_mesh *m, double z[2], double *speed)
+{
+    rest_scene sc;
+    dCollisionSetBackend(backend);
+    sc.world = dWorldCreate();
+    dWorldSetGravity(sc.world, 0, 0, -9.81);
+    sc.contacts = dJointGroupCreate(0);
+    dSpaceID space = dHashSpaceCreate(0);
+    sc.mesh = dCreateTriMesh(space, m->data, NULL, NULL, NULL);
+    sc.ball = dCreateSphere(space, 0.3);
+    sc.box = dCreateBox(space, 0.5, 0.4, 0.3);
+    dGeomID geoms[2] = { sc.ball, sc.box };
+    const dReal at[2][3] = { { 0.13, -0.27, 0.6 }, { 1.1, 0.6, 0.5 } };
+    for (int i = 0; i < 2; i++) {
+        dBodyID body = dBodyCreate(sc.world);
+        dMass mass;
+        if (i == 0) dMassSetSphereTotal(&mass, 1, 0.3);
+        else dMassSetBoxTotal(&mass, 1, 0.5, 0.4, 0.3);
+        dBodySetMass(body, &mass);
+        dGeomSetBody(geoms[i], body);
+        dBodySetPosition(body, at[i][0], at[i][1], at[i][2]);
+    }
+    for (int step = 0; step < 200; step++) {
+        dSpaceCollide(space, &sc, near_cb);
+        dWorldQuickStep(sc.world, 0.01);
+        dJointGroupEmpty(sc.contacts);
+    }
+    *speed = 0;
+    for (int i = 0; i < 2; i++) {
+        dBodyID body = dGeomGetBody(geoms[i]);
+        z[i] = dBodyGetPosition(body)[2];
+        const dReal *v = dBodyGetLinearVel(body);
+        *speed = fmax(*speed, sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+    }
+    dJointGroupDestroy(sc.contacts);
+    dSpaceDestroy(space);   // (destroys the geoms)
+    dWorldDestroy(sc.world);
+    dCollisionSetBackend("native");
+}
+
+// Resting heights within 1 mm of native's (the ball rests on the backend's
+// contacts, the box on native's), both at rest.
+static int check_resting(const char *backend)
+{
+    if (!backend_built(backend)) return test_skip("backend not built");
+    test_mesh m;
+    mesh_grid(&m, 16, 4, NULL);
+    double zn[2], zb[2], vn, vb;
+    rest("native", &m, zn, &vn);
+    test_capture_reports();   // (box-trimesh: native, said once)
+    rest(backend, &m, zb, &vb);
+    test_release_reports();
+    printf("# %s: ball at %.6f (native %.6f), box at %.6f (native %.6f), speeds %.2g %.2g\n",
+           backend, zb[0], zn[0], zb[1], zn[1], vb, vn);
+    CHECK_NEAR(zn[0], 0.3, 0.002);
+    CHECK_NEAR(zn[1], 0.15, 0.002);
+    CHECK_NEAR(zb[0], zn[0], 0.001);
+    CHECK_NEAR(zb[1], zn[1], 0.001);
+    CHECK(vb < 0.01 && vn < 0.01);
+    mesh_free(&m);
+    return 0;
+}
+
+static int test_fcl_resting(void)
+{
+    return check_resting("fcl");
+}
+
+static int test_bullet_resting(void)
+{
+    return check_resting("bullet");
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_native_table),
     TEST_CASE(test_fcl_meets_the_contract),
     TEST_CASE(test_bullet_meets_the_contract),
+    TEST_CASE(test_fcl_callbacks),
+    TEST_CASE(test_bullet_callbacks),
+    TEST_CASE(test_fcl_data_changes),
+    TEST_CASE(test_bullet_data_changes),
+    TEST_CASE(test_fcl_resting),
+    TEST_CASE(test_bullet_resting),
     TEST_END
 };
