@@ -33,6 +33,7 @@ inline bool measuring_every_mesh_pair()
 class TriangleFilter {
 public:
     TriangleFilter(dGeomID mesh, dGeomID other) : mesh_(mesh), other_(other) {}
+    dGeomID mesh() const { return mesh_; }
     bool allowed(int t)
     {
         for (int i = 0; i < count_; i++)

@@ -208,6 +208,16 @@ int dxTriMeshTriangleAllowed(dGeomID g, dGeomID other, int t)
     return !m->callback || m->callback(g, other, t);
 }
 
+int dxTriMeshFrontSide(dGeomID g, int t, const dReal leave[3])
+{
+    const dxTriMesh *m = as_trimesh(g);
+    if (!m || !m->data || t < 0 || t >= m->data->tri_count) return 0;
+    dReal local[3];
+    dxTriMeshDirToLocal(g, leave, local);
+    const dReal *n = m->data->normal + 3 * t;
+    return n[0] * local[0] + n[1] * local[1] + n[2] * local[2] >= 0;
+}
+
 const char *dxTriMeshNeedsNative(dGeomID g)
 {
     const dxTriMesh *m = as_trimesh(g);

@@ -111,6 +111,10 @@ DX_INTERNAL_EXPORT void dxTriMeshGetTriangle(dGeomID g, int t, int idx[3]);
 // (native skips degenerate ones) and the per-triangle callback, if set,
 // accepts it (dGeomTriMeshSetCallback).
 DX_INTERNAL_EXPORT int dxTriMeshTriangleAllowed(dGeomID g, dGeomID other, int t);
+// 1 if `leave`, the world direction in which the other geom of a contact
+// leaves the mesh, does not point behind triangle t (into the solid:
+// triangles are one-sided, as native's).
+DX_INTERNAL_EXPORT int dxTriMeshFrontSide(dGeomID g, int t, const dReal leave[3]);
 // Why an adapter cannot answer mesh g as native would, or NULL: an array
 // callback (it must see every intersecting triangle), a merge callback or a
 // contact merge setting other than the default (dGeomLowLevelControl).

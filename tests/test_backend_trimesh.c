@@ -650,6 +650,52 @@ static int test_bullet_data_changes(void)
     return check_data_changes("bullet");
 }
 
+// Triangles are one-sided under every backend, as native's: a ball behind
+// the sheet, or sunk past its centre into the terrain, has no contact (FCL
+// and Bullet would face each triangle towards its centre and push it
+// through); in front, it has.
+static int check_one_sided(const char *backend)
+{
+    if (!backend_built(backend)) return test_skip("backend not built");
+    test_mesh sheet, grid;
+    mesh_sheet(&sheet, 1.5);
+    mesh_grid(&grid, 8, 2, NULL);
+    dGeomID gs = dCreateTriMesh(0, sheet.data, NULL, NULL, NULL);
+    dGeomID gg = dCreateTriMesh(0, grid.data, NULL, NULL, NULL);
+    dGeomID s = dCreateSphere(0, 0.35);
+    dContactGeom c[MAXC];
+    const dReal z[3] = { -0.2, -0.05, 0.3 };   // behind, past the centre, in front
+    for (int k = 0; k < 3; k++) {
+        dGeomSetPosition(s, 0.1, 0.2, z[k]);
+        for (int m = 0; m < 2; m++) {
+            dGeomID g = m ? gg : gs;
+            dCollisionSetBackend("native");
+            int nn = dCollide(g, s, MAXC, c, sizeof c[0]);
+            dCollisionSetBackend(backend);
+            int nb = dCollide(g, s, MAXC, c, sizeof c[0]), nr = dCollide(s, g, MAXC, c, sizeof c[0]);
+            CHECK(nb == nr);
+            CHECK((nb > 0) == (k == 2) && (nn > 0) == (k == 2));
+        }
+    }
+    dCollisionSetBackend("native");
+    dGeomDestroy(s);
+    dGeomDestroy(gs);
+    dGeomDestroy(gg);
+    mesh_free(&sheet);
+    mesh_free(&grid);
+    return 0;
+}
+
+static int test_fcl_one_sided(void)
+{
+    return check_one_sided("fcl");
+}
+
+static int test_bullet_one_sided(void)
+{
+    return check_one_sided("bullet");
+}
+
 // ---- resting on a grid mesh ----------------------------------------------------------
 
 typedef struct rest_scene {
@@ -757,6 +803,8 @@ const test_case test_cases[] = {
     TEST_CASE(test_bullet_callbacks),
     TEST_CASE(test_fcl_data_changes),
     TEST_CASE(test_bullet_data_changes),
+    TEST_CASE(test_fcl_one_sided),
+    TEST_CASE(test_bullet_one_sided),
     TEST_CASE(test_fcl_resting),
     TEST_CASE(test_bullet_resting),
     TEST_END

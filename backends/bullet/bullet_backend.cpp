@@ -180,6 +180,11 @@ public:
         btVector3 p = point_on_b + normal_on_b * (distance * a_fraction_);
         dxRawContact r = { { p.x(), p.y(), p.z() }, { n.x(), n.y(), n.z() }, -distance,
                            mesh_is_o1_ ? triangle : -1, mesh_is_o1_ ? -1 : triangle };
+        // Triangles are one-sided (as native's): Bullet's sphere-triangle
+        // test faces each triangle towards the sphere's centre, even behind it.
+        const dReal s = mesh_is_o1_ ? -1 : 1;   // the other leaves along -n if the mesh is o1
+        const dReal leave[3] = { s * r.normal[0], s * r.normal[1], s * r.normal[2] };
+        if (mesh_ && !dxTriMeshFrontSide(mesh_->mesh(), triangle, leave)) return;
         out_.push_back(r);
     }
 

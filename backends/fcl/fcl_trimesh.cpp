@@ -157,6 +157,13 @@ int collide_mesh_pair(dGeomID o1, dGeomID o2, int flags, dContactGeom *out, int 
         r.depth = static_cast<dReal>(sphere ? std::fabs(c.penetration_depth)
                                             : c.penetration_depth);
         if (!(r.depth >= 0)) continue;
+        // Triangles are one-sided (as native's): FCL's sphere-triangle test
+        // faces each triangle towards the sphere's centre, even behind it.
+        const dReal leave2[3] = { r.normal[0], r.normal[1], r.normal[2] },
+                    leave1[3] = { -r.normal[0], -r.normal[1], -r.normal[2] };
+        if ((mesh1 && !dxTriMeshFrontSide(o1, side1, leave1)) ||
+            (mesh2 && !dxTriMeshFrontSide(o2, side2, leave2)))
+            continue;
         r.side1 = side1;
         r.side2 = side2;
         raw.push_back(r);
