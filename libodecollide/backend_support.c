@@ -123,6 +123,8 @@ static void sink_merge(dxContactSink *s, dReal tol)
     s->count = n;
 }
 
+// The deepest, then repeatedly the one farthest from those already kept
+// (spreading the support polygon).
 int dxContactsSelect(dxRawContact *c, int n, int max)
 {
     if (n <= max) return n;

@@ -61,6 +61,12 @@ typedef struct dxContactSink {
     dxRawContact c[DX_SINK_CAPACITY];
 } dxContactSink;
 
+// For a backend with more raw contacts than a sink holds (a mesh's
+// triangles): moves the `keep` of c[0 .. n) to keep to the front (the
+// deepest, then each the farthest from those kept, as dxSinkFinish selects)
+// and returns how many that is (n if n <= keep).
+DX_INTERNAL_EXPORT int dxContactsSelect(dxRawContact *c, int n, int keep);
+
 DX_INTERNAL_EXPORT void dxSinkInit(dxContactSink *s);
 // Add one contact: the normal points into o1 (need not be unit length).
 DX_INTERNAL_EXPORT void dxSinkAdd(dxContactSink *s, const dReal pos[3], const dReal normal[3],
@@ -70,11 +76,6 @@ DX_INTERNAL_EXPORT void dxSinkAdd(dxContactSink *s, const dReal pos[3], const dR
 // most flags & 0xffff (the deepest first, then each farthest from those kept);
 // write them with stride skip, g1 = o1, g2 = o2. Returns the number written;
 // with 0, `out` is untouched.
-// For a backend with more raw contacts than a sink holds (a mesh's
-// triangles): moves the `keep` of c[0 .. n) to keep to the front (the
-// deepest, then each the farthest from those kept, as dxSinkFinish selects)
-// and returns how many that is (n if n <= keep).
-DX_INTERNAL_EXPORT int dxContactsSelect(dxRawContact *c, int n, int keep);
 DX_INTERNAL_EXPORT int dxSinkFinish(dxContactSink *s, dGeomID o1, dGeomID o2, int flags,
                                     dContactGeom *out, int skip);
 
