@@ -315,6 +315,39 @@ int dxBackendCollide(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *contact, i
     return b->collide(o1, o2, flags, contact, skip);
 }
 
+// The reasons already said by dxBackendNativeFallback (backend, why).
+static struct {
+    const char *backend, *why;
+} fallbacks_said[16];
+static int fallbacks_said_count;
+
+static int fallback_said(const char *backend, const char *why)
+{
+    for (int i = 0; i < fallbacks_said_count; i++)
+        if (strcmp(fallbacks_said[i].backend, backend) == 0 &&
+            strcmp(fallbacks_said[i].why, why) == 0)
+            return 1;
+    if (fallbacks_said_count < (int)(sizeof fallbacks_said / sizeof fallbacks_said[0])) {
+        fallbacks_said[fallbacks_said_count].backend = backend;
+        fallbacks_said[fallbacks_said_count++].why = why;
+    }
+    return 0;
+}
+
+int dxBackendNativeFallback(const char *backend, dGeomID o1, dGeomID o2, int flags,
+                            dContactGeom *out, int skip, const char *why)
+{
+    if (strict) {
+        dxReportBadArgument("dCollide", "backend \"%s\" cannot collide a %s with a %s: %s "
+                            "(strict mode)", backend, o1->ops->name, o2->ops->name, why);
+        return 0;
+    }
+    if (!fallback_said(backend, why))
+        dMessage(d_ERR_UNKNOWN, "dCollide: backend \"%s\" cannot honour %s; using native "
+                 "for such geoms", backend, why);
+    return backends[0].table->collide(o1, o2, flags, out, skip);
+}
+
 static void notify_changed(dxGeom *g)
 {
     for (int i = 0; i < backend_count; i++)

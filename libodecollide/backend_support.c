@@ -10,6 +10,7 @@
 
 #include "backend_internal.h"
 #include "shapes.h"
+#include "trimesh_internal.h"
 
 void dxGeomDescribe(dGeomID g, dxShapeDesc *out)
 {
@@ -122,33 +123,33 @@ static void sink_merge(dxContactSink *s, dReal tol)
     s->count = n;
 }
 
-// Move the `max` contacts to keep to the front: the deepest, then repeatedly
-// the one farthest from those already kept (spreading the support polygon).
-static void sink_select(dxContactSink *s, int max)
+// The deepest, then repeatedly the one farthest from those already kept
+// (spreading the support polygon).
+int dxContactsSelect(dxRawContact *c, int n, int max)
 {
-    if (s->count <= max) return;
+    if (n <= max) return n;
     int deepest = 0;
-    for (int i = 1; i < s->count; i++)
-        if (s->c[i].depth > s->c[deepest].depth) deepest = i;
-    struct dxRawContact t = s->c[0];
-    s->c[0] = s->c[deepest];
-    s->c[deepest] = t;
+    for (int i = 1; i < n; i++)
+        if (c[i].depth > c[deepest].depth) deepest = i;
+    dxRawContact t = c[0];
+    c[0] = c[deepest];
+    c[deepest] = t;
     for (int k = 1; k < max; k++) {
         int best = k;
         dReal best_d = -1;
-        for (int i = k; i < s->count; i++) {
+        for (int i = k; i < n; i++) {
             dReal d = INFINITY;
             for (int j = 0; j < k; j++) {
-                dReal dj = dist2(s->c[i].pos, s->c[j].pos);
+                dReal dj = dist2(c[i].pos, c[j].pos);
                 if (dj < d) d = dj;
             }
             if (d > best_d) best_d = d, best = i;
         }
-        t = s->c[k];
-        s->c[k] = s->c[best];
-        s->c[best] = t;
+        t = c[k];
+        c[k] = c[best];
+        c[best] = t;
     }
-    s->count = max;
+    return max;
 }
 
 int dxSinkFinish(dxContactSink *s, dGeomID o1, dGeomID o2, int flags, dContactGeom *out,
@@ -158,7 +159,7 @@ int dxSinkFinish(dxContactSink *s, dGeomID o1, dGeomID o2, int flags, dContactGe
     if (max < 1) max = 1;
     dReal scale = sink_clean(s);
     sink_merge(s, (dReal)1e-6 * scale);
-    sink_select(s, max);
+    s->count = dxContactsSelect(s->c, s->count, max);
     for (int i = 0; i < s->count; i++) {
         const struct dxRawContact *c = &s->c[i];
         dContactGeom *k = dxContactAt(out, i, skip);
@@ -173,4 +174,59 @@ int dxSinkFinish(dxContactSink *s, dGeomID o1, dGeomID o2, int flags, dContactGe
         k->side2 = c->side2;
     }
     return s->count;
+}
+
+// ---- triangle meshes ----------------------------------------------------------
+
+static const dxTriMesh *as_trimesh(dGeomID g)
+{
+    return g->ops->cls == dTriMeshClass ? (const dxTriMesh *)g : NULL;
+}
+
+void dxTriMeshGetInfo(dGeomID g, dxTriMeshInfo *out)
+{
+    const dxTriMesh *m = as_trimesh(g);
+    const dxTriMeshData *d = m ? m->data : NULL;
+    out->data = d;
+    out->vertex_count = d ? d->vertex_count : 0;
+    out->tri_count = d ? d->tri_count : 0;
+}
+
+void dxTriMeshGetVertex(dGeomID g, int i, dReal out[3])
+{
+    dxTriMeshVertex(as_trimesh(g)->data, i, out);
+}
+
+void dxTriMeshGetTriangle(dGeomID g, int t, int idx[3])
+{
+    dxTriMeshIndices(as_trimesh(g)->data, t, idx);
+}
+
+int dxTriMeshTriangleAllowed(dGeomID g, dGeomID other, int t)
+{
+    const dxTriMesh *m = as_trimesh(g);
+    if (!m || !m->data || t < 0 || t >= m->data->tri_count) return 0;
+    if (dxTriMeshIsDegenerate(m->data, t)) return 0;
+    return !m->callback || m->callback(g, other, t);
+}
+
+int dxTriMeshFrontSide(dGeomID g, int t, const dReal leave[3])
+{
+    const dxTriMesh *m = as_trimesh(g);
+    if (!m || !m->data || t < 0 || t >= m->data->tri_count) return 0;
+    dReal local[3];
+    dxTriMeshDirToLocal(g, leave, local);
+    const dReal *n = m->data->normal + 3 * t;
+    return n[0] * local[0] + n[1] * local[1] + n[2] * local[2] >= 0;
+}
+
+const char *dxTriMeshNeedsNative(dGeomID g)
+{
+    const dxTriMesh *m = as_trimesh(g);
+    if (!m) return NULL;
+    if (m->array_callback) return "a trimesh's array callback";
+    if (m->merge_callback) return "a trimesh's merge callback";
+    if (m->sphere_merge != dGeomColliderMergeContactsValue_None)
+        return "a trimesh's contact merge setting";
+    return NULL;
 }

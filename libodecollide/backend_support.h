@@ -52,13 +52,20 @@ DX_INTERNAL_EXPORT void dxGeomSetCache(dGeomID g, const void *owner, void *cache
 
 // Raw contacts from a backend, in ODE's sense for (o1, o2) as passed to it.
 enum { DX_SINK_CAPACITY = 64 };   // raw contacts kept; more are ignored
+typedef struct dxRawContact {
+    dReal pos[3], normal[3], depth;
+    int side1, side2;
+} dxRawContact;
 typedef struct dxContactSink {
     int count;
-    struct dxRawContact {
-        dReal pos[3], normal[3], depth;
-        int side1, side2;
-    } c[DX_SINK_CAPACITY];
+    dxRawContact c[DX_SINK_CAPACITY];
 } dxContactSink;
+
+// For a backend with more raw contacts than a sink holds (a mesh's
+// triangles): moves the `keep` of c[0 .. n) to keep to the front (the
+// deepest, then each the farthest from those kept, as dxSinkFinish selects)
+// and returns how many that is (n if n <= keep).
+DX_INTERNAL_EXPORT int dxContactsSelect(dxRawContact *c, int n, int keep);
 
 DX_INTERNAL_EXPORT void dxSinkInit(dxContactSink *s);
 // Add one contact: the normal points into o1 (need not be unit length).
@@ -85,6 +92,40 @@ DX_INTERNAL_EXPORT void dxSinkPlaneManifold(dxContactSink *s, dGeomID shape, int
 // end of that segment, whichever lies deepest in both (sphere, box, capsule,
 // cylinder, plane).
 DX_INTERNAL_EXPORT void dxSinkPointsInBoth(dxContactSink *s, dGeomID o1, dGeomID o2);
+
+// Triangle meshes, for adapters that build their own model of a mesh's
+// data (once per data object: geoms may share one).
+typedef struct dxTriMeshInfo {
+    const void *data;   // the data object (its identity; NULL: no data)
+    int vertex_count, tri_count;
+} dxTriMeshInfo;
+// The data of trimesh geom g (zero / NULL when it has none). A data object
+// whose triangles or vertices change (Build, Update, SetData) tells each
+// geom on it through geom_changed, so a model shared through the geoms'
+// caches is never older than its data while any geom still holds it.
+DX_INTERNAL_EXPORT void dxTriMeshGetInfo(dGeomID g, dxTriMeshInfo *out);
+// Vertex i of the data (mesh frame), as the native colliders read it.
+DX_INTERNAL_EXPORT void dxTriMeshGetVertex(dGeomID g, int i, dReal out[3]);
+// The three vertex indices of triangle t.
+DX_INTERNAL_EXPORT void dxTriMeshGetTriangle(dGeomID g, int t, int idx[3]);
+// 1 if triangle t of mesh g may give contacts with `other`: it has an area
+// (native skips degenerate ones) and the per-triangle callback, if set,
+// accepts it (dGeomTriMeshSetCallback).
+DX_INTERNAL_EXPORT int dxTriMeshTriangleAllowed(dGeomID g, dGeomID other, int t);
+// 1 if `leave`, the world direction in which the other geom of a contact
+// leaves the mesh, does not point behind triangle t (into the solid:
+// triangles are one-sided, as native's).
+DX_INTERNAL_EXPORT int dxTriMeshFrontSide(dGeomID g, int t, const dReal leave[3]);
+// Why an adapter cannot answer mesh g as native would, or NULL: an array
+// callback (it must see every intersecting triangle), a merge callback or a
+// contact merge setting other than the default (dGeomLowLevelControl).
+DX_INTERNAL_EXPORT const char *dxTriMeshNeedsNative(dGeomID g);
+// The pair through native instead, for a reason only the geoms (not their
+// classes) show: `why` is said once per backend and reason string through
+// dMessage, or, in strict mode, reported as an error (returning 0).
+DX_INTERNAL_EXPORT int dxBackendNativeFallback(const char *backend, dGeomID o1, dGeomID o2,
+                                               int flags, dContactGeom *out, int skip,
+                                               const char *why);
 
 // A backend module (libodecollide-NAME.so: backends/fcl, backends/bullet)
 // defines this entry point, which libodecollide calls once after dlopen: it

@@ -875,8 +875,9 @@ static int test_merge_control_bad_input_is_reported(void)
     return 0;
 }
 
-// The FCL and Bullet adapters do not take trimesh pairs: selected, they
-// leave them to native (the same contacts), saying so once.
+// The FCL and Bullet adapters take only trimesh-sphere pairs
+// (tests/test_backend_trimesh.c): selected, they leave the others to native
+// (the same contacts), saying so once.
 static int test_other_backends_fall_back(void)
 {
     const char *const *names = dCollisionListBackends();
@@ -884,7 +885,7 @@ static int test_other_backends_fall_back(void)
     test_mesh m;
     mesh_grid(&m, 6, 2, wavy);
     dGeomID g = dCreateTriMesh(0, m.data, NULL, NULL, NULL);
-    dGeomID prims[2] = { dCreateSphere(0, 0.4), dCreateBox(0, 0.5, 0.6, 0.7) };
+    dGeomID prims[2] = { dCreateCapsule(0, 0.4, 0.3), dCreateBox(0, 0.5, 0.6, 0.7) };
     dGeomSetPosition(prims[0], 0.3, 0.2, 0.2);
     dGeomSetPosition(prims[1], -0.4, 0.5, 0.1);
     dContactGeom want[2][MAXC], got[MAXC];

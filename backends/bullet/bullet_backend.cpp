@@ -11,7 +11,7 @@
 // normals up to 7e-3 rad off, capsules up to 2.5 off, and report nothing for
 // a ray starting inside a shape.
 
-#include "../../libodecollide/backend_support.h"
+#include "bullet_trimesh.h"
 
 #include <btBulletCollisionCommon.h>
 #include <ode/collision.h>
@@ -21,6 +21,7 @@
 #include <exception>
 #include <functional>
 #include <memory>
+#include <vector>
 
 namespace {
 
@@ -57,32 +58,35 @@ World &the_world()
     return w;
 }
 
-// A geom's Bullet object, its shape as of the geom's shape `version`.
+// A geom's Bullet object, its shape as of the geom's shape `version` (a
+// mesh's is shared with the other geoms on its data).
 struct GeomObject {
     unsigned version = 0;
-    std::unique_ptr<btCollisionShape> shape;
+    std::shared_ptr<btCollisionShape> shape;
     btCollisionObject object;
 };
 
 // The Bullet shape of an ODE shape (BACKENDS.md section 5 table). Boxes and
 // cylinders get margin 0: Bullet's default margin would round their edges.
-std::unique_ptr<btCollisionShape> make_shape(const dxShapeDesc &d)
+// A mesh's shape is its data's (bullet_trimesh.cpp).
+std::shared_ptr<btCollisionShape> make_shape(dGeomID g, const dxShapeDesc &d)
 {
     switch (d.cls) {
-    case dSphereClass: return std::make_unique<btSphereShape>(d.p[0]);
+    case dSphereClass: return std::make_shared<btSphereShape>(d.p[0]);
     case dBoxClass: {
-        auto box = std::make_unique<btBoxShape>(btVector3(d.p[0], d.p[1], d.p[2]) / 2);
+        auto box = std::make_shared<btBoxShape>(btVector3(d.p[0], d.p[1], d.p[2]) / 2);
         box->setMargin(0);
         return box;
     }
-    case dCapsuleClass: return std::make_unique<btCapsuleShapeZ>(d.p[0], d.p[1]);
+    case dCapsuleClass: return std::make_shared<btCapsuleShapeZ>(d.p[0], d.p[1]);
     case dCylinderClass: {
-        auto cyl = std::make_unique<btCylinderShapeZ>(btVector3(d.p[0], d.p[0], d.p[1] / 2));
+        auto cyl = std::make_shared<btCylinderShapeZ>(btVector3(d.p[0], d.p[0], d.p[1] / 2));
         cyl->setMargin(0);
         return cyl;
     }
+    case dTriMeshClass: return dxbullet::mesh_shape(g);
     default:   // dPlaneClass (supports() admits nothing else): solid where n.x < d, as ODE
-        return std::make_unique<btStaticPlaneShape>(btVector3(d.p[0], d.p[1], d.p[2]), d.p[3]);
+        return std::make_shared<btStaticPlaneShape>(btVector3(d.p[0], d.p[1], d.p[2]), d.p[3]);
     }
 }
 
@@ -99,7 +103,8 @@ extern const dCollisionBackend bullet_backend;
 const void *const OWNER = &bullet_backend;   // marks the cache slots this backend fills
 
 // The geom's object, made on first use, its shape rebuilt if the geom's size
-// changed, posed where the geom is now.
+// changed, posed where the geom is now. Its shape is NULL for a mesh
+// without triangles.
 GeomObject &posed_object(dGeomID g)
 {
     dxShapeDesc d;
@@ -107,13 +112,13 @@ GeomObject &posed_object(dGeomID g)
     auto *obj = static_cast<GeomObject *>(dxGeomCache(g, OWNER));
     if (!obj) {
         auto fresh = std::make_unique<GeomObject>();
-        fresh->shape = make_shape(d);
+        fresh->shape = make_shape(g, d);
         obj = fresh.release();
         obj->object.setCollisionShape(obj->shape.get());
         obj->version = d.version;
         dxGeomSetCache(g, OWNER, obj);
     } else if (obj->version != d.version) {
-        obj->shape = make_shape(d);
+        obj->shape = make_shape(g, d);
         obj->object.setCollisionShape(obj->shape.get());
         obj->version = d.version;
     }
@@ -128,7 +133,8 @@ GeomObject &posed_object(dGeomID g)
 // a box against a cylinder 0.057 deep) and can be deeper than the pair.
 enum class Points {
     ALL,       // exact algorithms: box-box (ODE's), convex-plane (depths recomputed)
-    FIRST      // GJK/EPA pairs: the first point only (a reduced manifold)
+    FIRST,     // GJK/EPA pairs: the first point only (a reduced manifold)
+    PER_TRIANGLE   // a shape against a mesh: the first point of each triangle
 };
 
 // Takes the points of Bullet's pair algorithm (instead of keeping them in a
@@ -139,26 +145,47 @@ enum class Points {
 // normal from it (negative: they overlap). The contact position is the middle
 // of the two, except against a plane (always B): there B's point is on the
 // plane's surface, outside an A sunk deeper than its height, so A's point
-// (its deepest, as native puts it) is used.
+// (its deepest, as native puts it) is used. Against a mesh B is the
+// triangle, and B's point (on it, inside the shape) is used: the middle can
+// leave a curved mesh's solid. A mesh is always the second of the pair
+// (w2, classes in order): its triangle is the result's m_index1, the
+// contact's side on the mesh's side, and `mesh` (the mesh's filter, else
+// NULL) drops the triangles the per-triangle callback vetoes.
 class SinkResult : public btManifoldResult {
 public:
     SinkResult(const btCollisionObjectWrapper *w1, const btCollisionObjectWrapper *w2,
-               const btCollisionObject *o1, Points keep, bool plane_pair, dxContactSink *sink)
-        : btManifoldResult(w1, w2), o1_(o1), keep_(keep), a_fraction_(plane_pair ? 1 : 0.5),
-          sink_(sink)
+               const btCollisionObject *o1, Points keep, bool plane_pair,
+               dxadapter::TriangleFilter *mesh, bool mesh_is_o1,
+               std::vector<dxRawContact> &out)
+        : btManifoldResult(w1, w2), o1_(o1), keep_(keep),
+          a_fraction_(plane_pair ? 1 : mesh ? 0 : 0.5), mesh_(mesh), mesh_is_o1_(mesh_is_o1),
+          out_(out)
     {
     }
 
     void addContactPoint(const btVector3 &normal_on_b, const btVector3 &point_on_b,
                          btScalar distance) override
     {
-        if (points_++ > 0 && keep_ == Points::FIRST) return;
+        if (keep_ == Points::PER_TRIANGLE) {
+            if (points_++ > 0 && m_index1 == last_triangle_) return;
+            last_triangle_ = m_index1;
+        } else if (points_++ > 0 && keep_ == Points::FIRST) {
+            return;
+        }
         if (distance > 0) return;   // a near miss, not a contact
+        const int triangle = mesh_ ? m_index1 : -1;
+        if (mesh_ && !mesh_->allowed(triangle)) return;
         bool o1_is_a = !m_manifoldPtr || m_manifoldPtr->getBody0() == o1_;
         btVector3 n = o1_is_a ? normal_on_b : -normal_on_b;
         btVector3 p = point_on_b + normal_on_b * (distance * a_fraction_);
-        const dReal pos[3] = { p.x(), p.y(), p.z() }, nrm[3] = { n.x(), n.y(), n.z() };
-        dxSinkAdd(sink_, pos, nrm, -distance, -1, -1);
+        dxRawContact r = { { p.x(), p.y(), p.z() }, { n.x(), n.y(), n.z() }, -distance,
+                           mesh_is_o1_ ? triangle : -1, mesh_is_o1_ ? -1 : triangle };
+        // Triangles are one-sided (as native's): Bullet's sphere-triangle
+        // test faces each triangle towards the sphere's centre, even behind it.
+        const dReal s = mesh_is_o1_ ? -1 : 1;   // the other leaves along -n if the mesh is o1
+        const dReal leave[3] = { s * r.normal[0], s * r.normal[1], s * r.normal[2] };
+        if (mesh_ && !dxTriMeshFrontSide(mesh_->mesh(), triangle, leave)) return;
+        out_.push_back(r);
     }
 
 private:
@@ -166,7 +193,10 @@ private:
     Points keep_;
     btScalar a_fraction_;           // where pos lies from B's point (0) to A's (1)
     int points_ = 0;
-    dxContactSink *sink_;
+    int last_triangle_ = -1;        // the triangle of the last point (PER_TRIANGLE)
+    dxadapter::TriangleFilter *mesh_;
+    bool mesh_is_o1_;
+    std::vector<dxRawContact> &out_;
 };
 
 // A pair's algorithm from the dispatcher's pool, given back on scope exit.
@@ -224,9 +254,12 @@ bool epa_cylinder_pair(int c1, int c2)
 }
 
 // Every pair of solids except two planes (never in contact: native's answer)
-// and the cylinder pairs Bullet's EPA gets wrong (native does them).
+// and the cylinder pairs Bullet's EPA gets wrong (native does them); the
+// trimesh pairs of bullet_trimesh.cpp (dxbullet::mesh_pair_supported).
 int bullet_supports(int c1, int c2) noexcept
 {
+    if (c1 == dTriMeshClass) return dxbullet::mesh_pair_supported(c2);
+    if (c2 == dTriMeshClass) return dxbullet::mesh_pair_supported(c1);
     return is_solid(c1) && is_solid(c2) && !(c1 == dPlaneClass && c2 == dPlaneClass) &&
            !epa_cylinder_pair(c1, c2);
 }
@@ -269,27 +302,37 @@ void complete_contacts(dGeomID o1, dGeomID o2, dxContactSink *sink)
     if (c1 != dPlaneClass && c2 != dPlaneClass) dxSinkPointsInBoth(sink, o1, o2);
 }
 
-// The contacts of two solids, Bullet seeing them as (first, second).
+// The contacts of two solids, Bullet seeing them as (first, second). A mesh
+// that needs what only native does (dxTriMeshNeedsNative) goes there.
 int collide_pair(dGeomID o1, dGeomID o2, int flags, dContactGeom *out, int skip)
 {
     if (!bullet_supports(dGeomGetClass(o1), dGeomGetClass(o2))) return 0;
+    for (dGeomID g : { o1, o2 })
+        if (const char *why = dxTriMeshNeedsNative(g))
+            return dxBackendNativeFallback("bullet", o1, o2, flags, out, skip, why);
     bool keep_order = in_order(o1, o2);
     dGeomID first = keep_order ? o1 : o2, second = keep_order ? o2 : o1;
     int c1 = dGeomGetClass(first), c2 = dGeomGetClass(second);
     World &w = the_world();
     GeomObject &a = posed_object(first), &b = posed_object(second);
+    if (!a.shape || !b.shape) return 0;   // a mesh without triangles
     btCollisionObjectWrapper wa(nullptr, a.shape.get(), &a.object, a.object.getWorldTransform(),
                                 -1, -1);
     btCollisionObjectWrapper wb(nullptr, b.shape.get(), &b.object, b.object.getWorldTransform(),
                                 -1, -1);
     PairAlgorithm algorithm(w.dispatcher, &wa, &wb);
     if (!algorithm.get()) return 0;
+    const bool mesh = c2 == dTriMeshClass;   // (a mesh comes last in class order)
+    dxadapter::TriangleFilter filter(second, first);
+    dxadapter::RawContacts raw;
+    SinkResult result(&wa, &wb, keep_order ? &a.object : &b.object,
+                      mesh ? Points::PER_TRIANGLE : points_to_keep(c1, c2), c2 == dPlaneClass,
+                      mesh ? &filter : nullptr, second == o1, raw.get());
+    algorithm.get()->processCollision(&wa, &wb, w.world.getDispatchInfo(), &result);
     dxContactSink sink;
     dxSinkInit(&sink);
-    SinkResult result(&wa, &wb, keep_order ? &a.object : &b.object, points_to_keep(c1, c2),
-                      c2 == dPlaneClass, &sink);
-    algorithm.get()->processCollision(&wa, &wb, w.world.getDispatchInfo(), &result);
-    complete_contacts(o1, o2, &sink);
+    dxadapter::fill_sink(raw.get(), &sink);
+    if (!mesh) complete_contacts(o1, o2, &sink);
     return dxSinkFinish(&sink, o1, o2, flags, out, skip);
 }
 

@@ -5,7 +5,7 @@
 // and rebuilt when the geom's size changes; poses read on every call; FCL's
 // contacts turned into ODE's convention through the contact sink.
 
-#include "../../libodecollide/backend_support.h"
+#include "fcl_trimesh.h"
 
 #include <ode/collision.h>
 #include <ode/error.h>
@@ -22,13 +22,17 @@
 #include <fcl/geometry/shape/sphere.h>
 #include <fcl/narrowphase/collision.h>
 
+using dxfcl::Geometry;
+using dxfcl::in_fcl_order;
+using dxfcl::pose_of;
+using dxfcl::shape_of;
+
 namespace {
 
-using Geometry = fcl::CollisionGeometryd;
-
-// FCL's shape for one geom, and the shape version it was built from.
+// FCL's shape for one geom, and the shape version it was built from (a
+// mesh's model is shared by the geoms on its data: fcl_trimesh.cpp).
 struct ShapeCache {
-    std::unique_ptr<Geometry> shape;
+    std::shared_ptr<Geometry> shape;
     unsigned version;
 };
 
@@ -64,9 +68,12 @@ bool is_primitive(int cls)
 //   GST_INDEP, reports no contact for these pairs, a smaller GJK tolerance
 //   changes nothing, and the signed distance (GJK then EPA) aborts inside
 //   libfcl on an assertion (isOutsidePolytopeFace) on some poses.
+// Trimesh pairs: fcl_trimesh.cpp (dxfcl::mesh_pair_supported).
 // (Nothing here can throw, hence no try/catch.)
 int fcl_supports(int c1, int c2) noexcept
 {
+    if (c1 == dTriMeshClass) return dxfcl::mesh_pair_supported(c2);
+    if (c2 == dTriMeshClass) return dxfcl::mesh_pair_supported(c1);
     if (!is_primitive(c1) || !is_primitive(c2)) return 0;
     const int lo = c1 < c2 ? c1 : c2, hi = c1 < c2 ? c2 : c1;
     if (lo == dPlaneClass && hi == dPlaneClass) return 0;
@@ -77,17 +84,22 @@ int fcl_supports(int c1, int c2) noexcept
 // The FCL shape of a description (sizes mean the same in both libraries,
 // section 4: full box sides, capsule length without caps, z axes). An ODE
 // plane is a half-space, solid where n.x < d, which is FCL's Halfspace.
-std::unique_ptr<Geometry> make_shape(const dxShapeDesc &d)
+std::shared_ptr<Geometry> make_shape(dGeomID g, const dxShapeDesc &d)
 {
     switch (d.cls) {
-    case dSphereClass: return std::make_unique<fcl::Sphered>(d.p[0]);
-    case dBoxClass: return std::make_unique<fcl::Boxd>(d.p[0], d.p[1], d.p[2]);
-    case dCapsuleClass: return std::make_unique<fcl::Capsuled>(d.p[0], d.p[1]);
-    case dCylinderClass: return std::make_unique<fcl::Cylinderd>(d.p[0], d.p[1]);
+    case dSphereClass: return std::make_shared<fcl::Sphered>(d.p[0]);
+    case dBoxClass: return std::make_shared<fcl::Boxd>(d.p[0], d.p[1], d.p[2]);
+    case dCapsuleClass: return std::make_shared<fcl::Capsuled>(d.p[0], d.p[1]);
+    case dCylinderClass: return std::make_shared<fcl::Cylinderd>(d.p[0], d.p[1]);
+    case dTriMeshClass: return dxfcl::mesh_model(g);
     default:
-        return std::make_unique<fcl::Halfspaced>(fcl::Vector3d(d.p[0], d.p[1], d.p[2]), d.p[3]);
+        return std::make_shared<fcl::Halfspaced>(fcl::Vector3d(d.p[0], d.p[1], d.p[2]), d.p[3]);
     }
 }
+
+} // namespace
+
+namespace dxfcl {
 
 // The geom's FCL shape: the cached one, or a new one when there is none or
 // the geom's size changed since it was built.
@@ -97,7 +109,7 @@ const Geometry *shape_of(dGeomID g)
     dxGeomDescribe(g, &d);
     auto *c = static_cast<ShapeCache *>(dxGeomCache(g, &table));
     if (c && c->version == d.version) return c->shape.get();
-    std::unique_ptr<Geometry> shape = make_shape(d);
+    std::shared_ptr<Geometry> shape = make_shape(g, d);
     if (!c) {
         c = new ShapeCache;
         dxGeomSetCache(g, &table, c);
@@ -119,6 +131,10 @@ fcl::Transform3d pose_of(dGeomID g)
     }
     return tf;
 }
+
+} // namespace dxfcl
+
+namespace {
 
 const fcl::CollisionRequestd &request()
 {
@@ -163,6 +179,10 @@ void report(const char *what, const char *why)
     dMessage(d_ERR_UNKNOWN, "fcl backend: %s failed: %s", what, why);
 }
 
+} // namespace
+
+namespace dxfcl {
+
 // Whether FCL should see the pair as (g1, g2) rather than (g2, g1): by
 // class, then by pose and size, then by address. FCL's iterative answers
 // depend a little on the order: a fixed one makes dCollide(b, a) exactly
@@ -184,13 +204,19 @@ bool in_fcl_order(dGeomID g1, dGeomID g2)
     return std::less<dGeomID>()(g1, g2);
 }
 
-// Contacts of two primitive geoms through fcl::collide on the cached shapes
+} // namespace dxfcl
+
+namespace {
+
+// Contacts of two geoms through fcl::collide on the cached shapes
 // (the geometry-and-transform form: no CollisionObject is needed), the pair
 // in FCL's order. The result's contact vector is reused from call to call.
 int fcl_collide(dGeomID o1, dGeomID o2, int flags, dContactGeom *out, int skip)
 {
     try {
         if (!fcl_supports(dGeomGetClass(o1), dGeomGetClass(o2))) return 0;
+        if (dGeomGetClass(o1) == dTriMeshClass || dGeomGetClass(o2) == dTriMeshClass)
+            return dxfcl::collide_mesh_pair(o1, o2, flags, out, skip);
         const bool keep = in_fcl_order(o1, o2);
         const dGeomID f1 = keep ? o1 : o2, f2 = keep ? o2 : o1;
         const Geometry *s1 = shape_of(o1), *s2 = shape_of(o2);
