@@ -15,6 +15,13 @@
 // axis' by this factor: face contacts give a stable polygon, so they are
 // preferred when the two are about as deep.
 #define BOX_EDGE_PREFERENCE ((dReal)1.05)
+// box_keep_overlapping's shortcut trusts its test of the exit against the
+// depth when it clears the rounding by this much, relative to the sizes.
+#ifdef dSINGLE
+#define BOX_EXIT_MARGIN ((dReal)1e-4)
+#else
+#define BOX_EXIT_MARGIN ((dReal)1e-10)
+#endif
 // Boxes whose centres are farther apart than this times the sum of their
 // half diagonals are apart without a look at their axes.
 #define BOX_SPHERE_MARGIN ((dReal)1.001)
@@ -25,15 +32,31 @@ typedef struct clip_point {
     dReal t;   // pos is this far from the incident point along nf
 } clip_point;
 
-// Keep the part of poly (n points) with sg * coordinate(axis) <= h in out;
-// returns the new count (at most n + 1 for a convex polygon, capped at 16).
-// Points on the line are kept once and not duplicated by the crossing test.
-static int clip_half(const clip_point *poly, int n, int axis, dReal sg, dReal h, clip_point *out)
+// Functions of the clipper and the axes, inlined with their constant
+// arguments (a side, an axis pair) so that their indices fold away.
+#define BOX_INLINE static inline __attribute__((always_inline))
+
+// Clip poly (n points) to sg * coordinate(axis) <= h, into out; returns the
+// new count (at most n + 1 for a convex polygon, capped at 16), or -1 when
+// every point is inside already (out untouched). Points on the line are
+// kept once and not duplicated by the crossing test. sg is +-1, so sg * c
+// is exactly +-c.
+BOX_INLINE int clip_side(const clip_point *poly, int n, int axis, int sg, dReal h,
+                         clip_point *out)
 {
+    dReal off[16];
+    int outside = 0;
+    for (int i = 0; i < n; i++) {
+        dReal c = axis ? poly[i].y : poly[i].x;
+        off[i] = (sg > 0 ? c : -c) - h;
+        outside |= !(off[i] <= 0);
+    }
+    if (!outside) return -1;
     int m = 0;
     for (int i = 0; i < n && m < 16; i++) {
-        const clip_point *p = &poly[i], *q = &poly[(i + 1) % n];
-        dReal dp = sg * (axis ? p->y : p->x) - h, dq = sg * (axis ? q->y : q->x) - h;
+        int k = i + 1 < n ? i + 1 : 0;
+        const clip_point *p = &poly[i], *q = &poly[k];
+        dReal dp = off[i], dq = off[k];
         if (dp <= 0) out[m++] = *p;
         if (m < 16 && ((dp < 0 && dq > 0) || (dp > 0 && dq < 0))) {
             dReal f = dp / (dp - dq);
@@ -46,13 +69,17 @@ static int clip_half(const clip_point *poly, int n, int axis, dReal sg, dReal h,
     return m;
 }
 
-// Whether every point of poly (n points) has sg * coordinate(axis) <= h,
-// the test clip_half keeps a point by.
-static int all_inside(const clip_point *poly, int n, int axis, dReal sg, dReal h)
+// clip_side on *cur (*n points), the result left in *cur (swapped with
+// *spare when the side cut anything).
+BOX_INLINE void clip_step(clip_point **cur, clip_point **spare, int *n, int axis, int sg,
+                          dReal h)
 {
-    for (int i = 0; i < n; i++)
-        if (!(sg * (axis ? poly[i].y : poly[i].x) - h <= 0)) return 0;
-    return 1;
+    int m = clip_side(*cur, *n, axis, sg, h, *spare);
+    if (m < 0) return;
+    clip_point *t = *cur;
+    *cur = *spare;
+    *spare = t;
+    *n = m;
 }
 
 // Choose max of the n points (n > max) to keep, in place: the deepest, then
@@ -134,48 +161,49 @@ static void box_overlap_point(const dReal *p1, const dReal *R1, const dReal h1[3
 
 // The face case: the reference box (pr, Rr, half sides hr) touches with its
 // face of axis k whose outward normal nf points at the incident box (pi, Ri,
-// hi). The incident box's face most against nf is clipped to the reference
-// face's rectangle (in the frame U1, U2 of that face, relative to pr); the
-// clipped polygon is written to a (at most 16 points), its count returned.
-// dots gets the incident axes' cosines with nf.
-static int box_clip_incident(const dReal hr[3], int k, const dReal nf[3], const dReal U1[3],
-                             const dReal U2[3], const dReal rel[3], const dReal *Ri,
-                             const dReal hi[3], dReal dots[3], clip_point a[16])
+// hi, axes B_m); U1, U2 are the reference box's other axes, the frame of
+// that face. box_box has most of the dot products already (its Rm and T):
+// C[m] = (B_m . U1, B_m . U2, B_m . nf), c = (pi - pr) . (U1, U2, nf), and
+// e[m], an estimate of B_m . (pr - pi) for box_keep_overlapping's test.
+typedef struct box_face {
+    const dReal *pr, *Rr, *hr, *pi, *Ri, *hi;
+    int k;
+    dReal nf[3], U1[3], U2[3], C[3][3], c[3], e[3];
+} box_face;
+
+// The incident box's face most against nf, clipped to the reference face's
+// rectangle (in the frame U1, U2, relative to pr): the clipped polygon is
+// written to a (at most 16 points), its count returned.
+static int box_clip_incident(const box_face *f, clip_point a[16])
 {
-    dReal B[3][3];
+    const dReal *hi = f->hi, (*C)[3] = f->C;
     int j = 0;
-    for (int m = 0; m < 3; m++) {
-        dx_axis(Ri, m, B[m]);
-        dots[m] = dx_dot(B[m], nf);
-        if (dFabs(dots[m]) > dFabs(dots[j])) j = m;
-    }
+    for (int m = 1; m < 3; m++)
+        if (dFabs(C[m][2]) > dFabs(C[j][2])) j = m;
     int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
     // The incident face's centre (rel + sgn hi_j B_j) and half edges
     // (hi B_j1, hi B_j2) in the reference face's frame (x, y, height).
-    dReal sgn = dots[j] > 0 ? -hi[j] : hi[j];
-    dReal cx = dx_dot(rel, U1) + sgn * dx_dot(B[j], U1);
-    dReal cy = dx_dot(rel, U2) + sgn * dx_dot(B[j], U2);
-    dReal cz = dx_dot(rel, nf) + sgn * dots[j];
-    dReal ux = hi[j1] * dx_dot(B[j1], U1), uy = hi[j1] * dx_dot(B[j1], U2), uz = hi[j1] * dots[j1];
-    dReal vx = hi[j2] * dx_dot(B[j2], U1), vy = hi[j2] * dx_dot(B[j2], U2), vz = hi[j2] * dots[j2];
+    dReal sgn = C[j][2] > 0 ? -hi[j] : hi[j];
+    dReal cx = f->c[0] + sgn * C[j][0];
+    dReal cy = f->c[1] + sgn * C[j][1];
+    dReal cz = f->c[2] + sgn * C[j][2];
+    dReal ux = hi[j1] * C[j1][0], uy = hi[j1] * C[j1][1], uz = hi[j1] * C[j1][2];
+    dReal vx = hi[j2] * C[j2][0], vy = hi[j2] * C[j2][1], vz = hi[j2] * C[j2][2];
+    dReal hk = f->hr[f->k];
     static const dReal corner[4][2] = { { 1, 1 }, { -1, 1 }, { -1, -1 }, { 1, -1 } };
     for (int v = 0; v < 4; v++) {
         dReal s = corner[v][0], t = corner[v][1];
         a[v].x = cx + s * ux + t * vx;
         a[v].y = cy + s * uy + t * vy;
-        a[v].depth = hr[k] - (cz + s * uz + t * vz);
+        a[v].depth = hk - (cz + s * uz + t * vz);
     }
     clip_point b[16], *cur = a, *spare = b;
     int n = 4;
-    for (int side = 0; side < 4; side++) {
-        int axis = side / 2;
-        dReal sg = side % 2 ? -1 : 1, h = hr[(k + 1 + axis) % 3];
-        if (all_inside(cur, n, axis, sg, h)) continue;   // clip_half would copy
-        n = clip_half(cur, n, axis, sg, h, spare);
-        clip_point *t = cur;
-        cur = spare;
-        spare = t;
-    }
+    dReal h1 = f->hr[(f->k + 1) % 3], h2 = f->hr[(f->k + 2) % 3];
+    clip_step(&cur, &spare, &n, 0, 1, h1);
+    clip_step(&cur, &spare, &n, 0, -1, h1);
+    clip_step(&cur, &spare, &n, 1, 1, h2);
+    clip_step(&cur, &spare, &n, 1, -1, h2);
     if (cur != a) memcpy(a, cur, (size_t)n * sizeof *a);
     return n;
 }
@@ -186,22 +214,49 @@ static int box_clip_incident(const dReal hr[3], int k, const dReal nf[3], const 
 // one (rel = pr - pi); pos will be the middle of that stretch (t). Deep
 // overlaps can clip points past the far side of a thin reference box: they
 // are in neither box and dropped. The deepest is moved first.
-static int box_keep_overlapping(clip_point *a, int n, const dReal hr[3], int k,
-                                const dReal nf[3], const dReal U1[3], const dReal U2[3],
-                                const dReal rel[3], const dReal *Ri, const dReal hi[3],
-                                const dReal dots[3])
+static int box_keep_overlapping(const box_face *f, clip_point *a, int n, const dReal rel[3])
 {
+    const dReal *hr = f->hr, *hi = f->hi, *nf = f->nf, *U1 = f->U1, *U2 = f->U2, *Ri = f->Ri;
+    const dReal (*C)[3] = f->C;
+    int k = f->k;
+    // The exit through the incident box's faces of axis m (t_m, where
+    // B_m . (q + t nf) = +-hi_m) is >= depth exactly when the point over P
+    // on the reference face lies inside them: g_m = hi_m - sg_m B_m . (rel
+    // + x U1 + y U2 + hr_k nf) >= 0 (sg_m the sign of B_m . nf; the depth
+    // cancels), linear in x, y. Where every g_m clears the rounding of both
+    // computations (margin, relative to the sizes involved) top is the depth
+    // and the exit is not needed; other points compute it as it is defined.
+    dReal g0[3], gx[3], gy[3];
+    dReal scale = dFabs(rel[0]) + dFabs(rel[1]) + dFabs(rel[2]) + hr[0] + hr[1] + hr[2]
+                  + 2 * (hi[0] + hi[1] + hi[2]);
+    dReal margin = BOX_EXIT_MARGIN * scale;
+    for (int m = 0; m < 3; m++) {
+        dReal sg = C[m][2] > 0 ? 1 : -1;
+        if (C[m][2] == 0) {   // runs along those faces: no exit through them
+            g0[m] = dInfinity;
+            gx[m] = gy[m] = 0;
+            continue;
+        }
+        g0[m] = hi[m] - sg * (f->e[m] + hr[k] * C[m][2]);
+        gx[m] = -sg * C[m][0];
+        gy[m] = -sg * C[m][1];
+    }
     int kept = 0, deepest = 0;
     for (int i = 0; i < n; i++) {
         dReal depth = a[i].depth;
         if (depth < 0) continue;
-        dReal q[3], up = hr[k] - depth, exit = dInfinity;
-        for (int m = 0; m < 3; m++) q[m] = rel[m] + a[i].x * U1[m] + a[i].y * U2[m] + up * nf[m];
-        for (int m = 0; m < 3; m++) {
-            if (dots[m] == 0) continue;
-            dReal from = Ri[m] * q[0] + Ri[4 + m] * q[1] + Ri[8 + m] * q[2];
-            dReal t = ((dots[m] > 0 ? hi[m] : -hi[m]) - from) / dots[m];
-            if (t < exit) exit = t;
+        dReal x = a[i].x, y = a[i].y, exit = dInfinity;
+        if (!(g0[0] + x * gx[0] + y * gy[0] > margin && g0[1] + x * gx[1] + y * gy[1] > margin
+              && g0[2] + x * gx[2] + y * gy[2] > margin)) {
+            dReal q[3], up = hr[k] - depth;
+            for (int m = 0; m < 3; m++) q[m] = rel[m] + x * U1[m] + y * U2[m] + up * nf[m];
+            for (int m = 0; m < 3; m++) {
+                dReal dot = C[m][2];
+                if (dot == 0) continue;
+                dReal from = Ri[m] * q[0] + Ri[4 + m] * q[1] + Ri[8 + m] * q[2];
+                dReal t = ((dot > 0 ? hi[m] : -hi[m]) - from) / dot;
+                if (t < exit) exit = t;
+            }
         }
         if (exit < 0) exit = 0;   // clipped points lie on the incident face: rounding
         dReal lo = depth - 2 * hr[k] > 0 ? depth - 2 * hr[k] : 0;
@@ -230,7 +285,7 @@ typedef struct box_axes {
 
 // The ray's exit through the faces of axis x, whose direction has s = m . n
 // (dInfinity if it runs along them).
-static inline dReal exit_along(const box_axes *ax, int x, dReal s)
+BOX_INLINE dReal exit_along(const box_axes *ax, int x, dReal s)
 {
     if (s == 0) return dInfinity;
     dReal radii = ax->over[x] + dFabs(ax->proj[x]);
@@ -238,7 +293,7 @@ static inline dReal exit_along(const box_axes *ax, int x, dReal s)
 }
 
 // m . n for face axis x (0-5).
-static inline dReal face_dot(const box_axes *ax, int x)
+BOX_INLINE dReal face_dot(const box_axes *ax, int x)
 {
     const dReal *nl = ax->nl, (*Rm)[3] = ax->Rm;
     return x < 3 ? nl[x] : Rm[0][x - 3] * nl[0] + Rm[1][x - 3] * nl[1] + Rm[2][x - 3] * nl[2];
@@ -254,12 +309,15 @@ static dReal box_clearance(const box_axes *ax)
 {
     const dReal *nl = ax->nl, (*Rm)[3] = ax->Rm;
     dReal best = dInfinity;
+#pragma GCC unroll 6
     for (int x = 0; x < 6; x++) {
         dReal t = exit_along(ax, x, face_dot(ax, x));
         if (t < best) best = t;
     }
+#pragma GCC unroll 3
     for (int i = 0; i < 3; i++) {
         int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+#pragma GCC unroll 3
         for (int j = 0; j < 3; j++) {
             if (Rm[i1][j] * Rm[i1][j] + Rm[i2][j] * Rm[i2][j] <= DX_COLLIDE_EPS) continue;
             dReal s = Rm[i1][j] * nl[i2] - Rm[i2][j] * nl[i1];   // (e_i x Rm[.][j]) . n
@@ -280,22 +338,18 @@ static dReal box_clearance(const box_axes *ax)
 // through the faces of the contact's own axis (code), so when the deepest
 // point reaches that, the full clearance is not needed. normal is the
 // contact normal (into o1).
-static int box_face_contacts(const dReal *pr, const dReal *Rr, const dReal hr[3], int k,
-                             const dReal nf[3], const dReal *pi, const dReal *Ri,
-                             const dReal hi[3], const dReal normal[3], const box_axes *ax,
+static int box_face_contacts(const box_face *f, const dReal normal[3], const box_axes *ax,
                              int code, dxGeom *o1, dxGeom *o2, int max, dContactGeom *out,
                              int skip)
 {
-    dReal U1[3], U2[3], dots[3], rel[3] = { pi[0] - pr[0], pi[1] - pr[1], pi[2] - pr[2] };
-    dx_axis(Rr, (k + 1) % 3, U1);
-    dx_axis(Rr, (k + 2) % 3, U2);
+    const dReal *pr = f->pr, *pi = f->pi, *U1 = f->U1, *U2 = f->U2, *nf = f->nf;
     clip_point a[16];
-    int n = box_clip_incident(hr, k, nf, U1, U2, rel, Ri, hi, dots, a);
-    for (int i = 0; i < 3; i++) rel[i] = -rel[i];
-    int kept = box_keep_overlapping(a, n, hr, k, nf, U1, U2, rel, Ri, hi, dots);
+    int n = box_clip_incident(f, a);
+    dReal rel[3] = { pr[0] - pi[0], pr[1] - pi[1], pr[2] - pi[2] };
+    int kept = box_keep_overlapping(f, a, n, rel);
     if (kept == 0) {   // the separating axis says they overlap: find a point
         dReal pos[3];
-        box_overlap_point(pr, Rr, hr, pi, Ri, hi, pos);
+        box_overlap_point(pr, f->Rr, f->hr, pi, f->Ri, f->hi, pos);
         dx_put_contact(out, 0, skip, pos, normal, box_clearance(ax), o1, o2);
         return 1;
     }
@@ -305,8 +359,9 @@ static int box_face_contacts(const dReal *pr, const dReal *Rr, const dReal hr[3]
         cull_points(a, kept, max);
         kept = max;
     }
+    dReal hk = f->hr[f->k];
     for (int c = 0; c < kept; c++) {
-        dReal pos[3], up = hr[k] - a[c].depth + a[c].t;
+        dReal pos[3], up = hk - a[c].depth + a[c].t;
         for (int i = 0; i < 3; i++) pos[i] = pr[i] + a[c].x * U1[i] + a[c].y * U2[i] + up * nf[i];
         dReal depth = c == 0 && a[0].depth < clear ? clear : a[c].depth;
         dx_put_contact(out, c, skip, pos, normal, depth, o1, o2);
@@ -373,7 +428,7 @@ static void report_axis(const dReal normal[3], dReal depth, int code, dReal norm
 
 // Overlap of the boxes along face axis x (0-2: A_x, 3-5: B_(x-3)), and
 // box 2's offset along it (proj); box_box's names.
-static inline dReal face_overlap(int x, const dReal a[3], const dReal b[3], const dReal T[3],
+BOX_INLINE dReal face_overlap(int x, const dReal a[3], const dReal b[3], const dReal T[3],
                                  const dReal Rm[3][3], const dReal Q[3][3], dReal *proj)
 {
     if (x < 3) {
@@ -387,9 +442,8 @@ static inline dReal face_overlap(int x, const dReal a[3], const dReal b[3], cons
 
 // The same, unnormalised, along edge axis 6 + 3 i + j (A_i x B_j, in box
 // 1's frame e_i x Rm[.][j]).
-static inline dReal edge_overlap(int i, int j, const dReal a[3], const dReal b[3],
-                                 const dReal T[3], const dReal Rm[3][3], const dReal Q[3][3],
-                                 dReal *proj)
+BOX_INLINE dReal edge_overlap(int i, int j, const dReal a[3], const dReal b[3], const dReal T[3],
+                              const dReal Rm[3][3], const dReal Q[3][3], dReal *proj)
 {
     int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
     *proj = T[i2] * Rm[i1][j] - T[i1] * Rm[i2][j];
@@ -399,7 +453,7 @@ static inline dReal edge_overlap(int i, int j, const dReal a[3], const dReal b[3
 
 // An edge axis' length may vanish, so its overlap separates only below this
 // margin beyond rounding (or below 0 where the axis is well defined).
-static inline dReal edge_slack(int i, int j, const dReal a[3], const dReal b[3])
+BOX_INLINE dReal edge_slack(int i, int j, const dReal a[3], const dReal b[3])
 {
     return -BOX_AXIS_SLACK * (a[(i + 1) % 3] + a[(i + 2) % 3] + b[(j + 1) % 3] + b[(j + 2) % 3]);
 }
@@ -459,35 +513,58 @@ static int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const dRea
             Q[i][j] = dFabs(Rm[i][j]);
         }
     }
-    // Overlap along each axis (< 0: apart), unnormalised for the edges.
+    // Overlap along each axis (< 0: apart), unnormalised for the edges. The
+    // loops are unrolled, so that the axes' indices are constants. An edge
+    // axis' slack is <= 0 for boxes of sides >= 0: a pair apart along it has
+    // over < 0 first.
     dReal over[15], proj[15];
     if (hint >= 0 && axis_parts(hint, a, b, T, Rm, Q)) return apart_by(hint, apart);
+#pragma GCC unroll 6
     for (int x = 0; x < 6; x++) {
         over[x] = face_overlap(x, a, b, T, Rm, Q, &proj[x]);
         if (over[x] < 0) return apart_by(x, apart);
     }
+    int odd_sides = !(a[0] >= 0 && a[1] >= 0 && a[2] >= 0 && b[0] >= 0 && b[1] >= 0 && b[2] >= 0);
+#pragma GCC unroll 3
     for (int i = 0; i < 3; i++) {
+#pragma GCC unroll 3
         for (int j = 0; j < 3; j++) {
             int x = 6 + 3 * i + j;
             over[x] = edge_overlap(i, j, a, b, T, Rm, Q, &proj[x]);
-            if (over[x] < edge_slack(i, j, a, b)) return apart_by(x, apart);
+            if ((over[x] < 0 || odd_sides) && over[x] < edge_slack(i, j, a, b))
+                return apart_by(x, apart);
         }
     }
 
     int code = 0, edge = -1;
     for (int x = 1; x < 6; x++)
         if (over[x] < over[code]) code = x;
+    // An edge axis of overlap o (>= 0) and length len <= sqrt(2 * 1.25^2)
+    // (when every |Rm_ij| <= 1.25, as for rotations) has
+    // o / len >= o / 1.77 (to rounding), so with o >= 2 over[code] it
+    // cannot win against the faces (its o / len * BOX_EDGE_PREFERENCE stays
+    // >= over[code]), nor be apart: it is left out unnormalised.
     dReal best_edge = dInfinity, edge_len = 1;
-    for (int x = 6; x < 15; x++) {
-        int i = (x - 6) / 3, j = (x - 6) % 3, i1 = (i + 1) % 3, i2 = (i + 2) % 3;
-        dReal len2 = Rm[i1][j] * Rm[i1][j] + Rm[i2][j] * Rm[i2][j];
-        if (len2 <= DX_COLLIDE_EPS) continue;   // parallel edges: the faces cover them
-        dReal len = dSqrt(len2), o = over[x] / len;
-        if (o < 0) return apart_by(x, apart);   // apart after all, along a well-defined edge axis
-        if (o < best_edge) {
-            best_edge = o;
-            edge = x;
-            edge_len = len;
+    dReal bound = Q[0][0] <= 1.25 && Q[0][1] <= 1.25 && Q[0][2] <= 1.25 && Q[1][0] <= 1.25
+                          && Q[1][1] <= 1.25 && Q[1][2] <= 1.25 && Q[2][0] <= 1.25
+                          && Q[2][1] <= 1.25 && Q[2][2] <= 1.25
+                      ? 2 * over[code]
+                      : dInfinity;
+#pragma GCC unroll 3
+    for (int i = 0; i < 3; i++) {
+#pragma GCC unroll 3
+        for (int j = 0; j < 3; j++) {
+            int x = 6 + 3 * i + j, i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+            if (over[x] >= bound) continue;
+            dReal len2 = Rm[i1][j] * Rm[i1][j] + Rm[i2][j] * Rm[i2][j];
+            if (len2 <= DX_COLLIDE_EPS) continue;   // parallel edges: the faces cover them
+            dReal len = dSqrt(len2), o = over[x] / len;
+            if (o < 0) return apart_by(x, apart);   // apart after all, along a well-defined edge axis
+            if (o < best_edge) {
+                best_edge = o;
+                edge = x;
+                edge_len = len;
+            }
         }
     }
     dReal best = over[code];
@@ -496,28 +573,48 @@ static int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const dRea
         code = edge;
     }
     int max = dx_max_contacts(flags);
-    dReal normal[3], nf[3];
-    if (code < 3) {   // face of box 1: normal -sign(T_i) A_i
+    dReal normal[3];
+    if (code < 6) {
+        box_face f;
+        box_axes ax = { .Rm = Rm, .over = over, .proj = proj };
         dReal sg = proj[code] < 0 ? 1 : -1;
-        for (int q = 0; q < 3; q++) {
-            normal[q] = sg * R1[4 * q + code];
-            nf[q] = -normal[q];
+        if (code < 3) {   // face of box 1: normal -sign(T_k) A_k; C, c from Rm and T
+            int k = code, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+            f = (box_face){ .pr = p1, .Rr = R1, .hr = a, .pi = p2, .Ri = R2, .hi = b, .k = k };
+            for (int q = 0; q < 3; q++) {
+                normal[q] = sg * R1[4 * q + k];
+                f.nf[q] = -normal[q];
+            }
+            dx_axis(R1, k1, f.U1);
+            dx_axis(R1, k2, f.U2);
+            for (int m = 0; m < 3; m++) {
+                f.C[m][0] = Rm[k1][m];
+                f.C[m][1] = Rm[k2][m];
+                f.C[m][2] = -sg * Rm[k][m];
+                f.e[m] = -proj[3 + m];
+            }
+            f.c[0] = T[k1];
+            f.c[1] = T[k2];
+            f.c[2] = -sg * T[k];
+        } else {   // face of box 2: normal sign(B_k . T) B_k; C from Rm
+            int k = code - 3, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+            f = (box_face){ .pr = p2, .Rr = R2, .hr = b, .pi = p1, .Ri = R1, .hi = a, .k = k };
+            for (int q = 0; q < 3; q++) normal[q] = f.nf[q] = sg * R2[4 * q + k];
+            dx_axis(R2, k1, f.U1);
+            dx_axis(R2, k2, f.U2);
+            for (int m = 0; m < 3; m++) {
+                f.C[m][0] = Rm[m][k1];
+                f.C[m][1] = Rm[m][k2];
+                f.C[m][2] = sg * Rm[m][k];
+                f.e[m] = T[m];
+            }
+            f.c[0] = -dx_dot(d, f.U1);
+            f.c[1] = -dx_dot(d, f.U2);
+            f.c[2] = -dx_dot(d, f.nf);
         }
-        box_axes ax = { .Rm = Rm, .over = over, .proj = proj };
         dx_to_local(R1, normal, ax.nl);
         report_axis(normal, best, code, normal_out, depth_out, code_out);
-        return box_face_contacts(p1, R1, a, code, nf, p2, R2, b, normal, &ax, code, o1, o2, max,
-                                 out, skip);
-    }
-    if (code < 6) {   // face of box 2
-        int j = code - 3;
-        dReal sg = proj[code] < 0 ? 1 : -1;
-        for (int q = 0; q < 3; q++) normal[q] = nf[q] = sg * R2[4 * q + j];
-        box_axes ax = { .Rm = Rm, .over = over, .proj = proj };
-        dx_to_local(R1, normal, ax.nl);
-        report_axis(normal, best, code, normal_out, depth_out, code_out);
-        return box_face_contacts(p2, R2, b, j, nf, p1, R1, a, normal, &ax, code, o1, o2, max,
-                                 out, skip);
+        return box_face_contacts(&f, normal, &ax, code, o1, o2, max, out, skip);
     }
     int i = (code - 6) / 3, j = (code - 6) % 3;
     dReal Ai[3], Bj[3];
