@@ -164,10 +164,11 @@ static void box_overlap_point(const dReal *p1, const dReal *R1, const dReal h1[3
 // hi, axes B_m); U1, U2 are the reference box's other axes, the frame of
 // that face. box_box has most of the dot products already (its Rm and T):
 // C[m] = (B_m . U1, B_m . U2, B_m . nf), c = (pi - pr) . (U1, U2, nf), and
-// e[m], an estimate of B_m . (pr - pi) for box_keep_overlapping's test.
+// e[m], an estimate of B_m . (pr - pi) for box_keep_overlapping's test;
+// hk, h1, h2 are hr along nf, U1, U2.
 typedef struct box_face {
     const dReal *pr, *Rr, *hr, *pi, *Ri, *hi;
-    int k;
+    dReal hk, h1, h2;
     dReal nf[3], U1[3], U2[3], C[3][3], c[3], e[3];
 } box_face;
 
@@ -189,7 +190,7 @@ static int box_clip_incident(const box_face *f, clip_point a[16])
     dReal cz = f->c[2] + sgn * C[j][2];
     dReal ux = hi[j1] * C[j1][0], uy = hi[j1] * C[j1][1], uz = hi[j1] * C[j1][2];
     dReal vx = hi[j2] * C[j2][0], vy = hi[j2] * C[j2][1], vz = hi[j2] * C[j2][2];
-    dReal hk = f->hr[f->k];
+    dReal hk = f->hk;
     static const dReal corner[4][2] = { { 1, 1 }, { -1, 1 }, { -1, -1 }, { 1, -1 } };
     for (int v = 0; v < 4; v++) {
         dReal s = corner[v][0], t = corner[v][1];
@@ -199,7 +200,7 @@ static int box_clip_incident(const box_face *f, clip_point a[16])
     }
     clip_point b[16], *cur = a, *spare = b;
     int n = 4;
-    dReal h1 = f->hr[(f->k + 1) % 3], h2 = f->hr[(f->k + 2) % 3];
+    dReal h1 = f->h1, h2 = f->h2;
     clip_step(&cur, &spare, &n, 0, 1, h1);
     clip_step(&cur, &spare, &n, 0, -1, h1);
     clip_step(&cur, &spare, &n, 1, 1, h2);
@@ -217,49 +218,52 @@ static int box_clip_incident(const box_face *f, clip_point a[16])
 static int box_keep_overlapping(const box_face *f, clip_point *a, int n, const dReal rel[3])
 {
     const dReal *hr = f->hr, *hi = f->hi, *nf = f->nf, *U1 = f->U1, *U2 = f->U2, *Ri = f->Ri;
-    const dReal (*C)[3] = f->C;
-    int k = f->k;
+    const dReal (*C)[3] = f->C, hk = f->hk;
     // The exit through the incident box's faces of axis m (t_m, where
     // B_m . (q + t nf) = +-hi_m) is >= depth exactly when the point over P
     // on the reference face lies inside them: g_m = hi_m - sg_m B_m . (rel
-    // + x U1 + y U2 + hr_k nf) >= 0 (sg_m the sign of B_m . nf; the depth
-    // cancels), linear in x, y. Where every g_m clears the rounding of both
-    // computations (margin, relative to the sizes involved) top is the depth
-    // and the exit is not needed; other points compute it as it is defined.
-    dReal g0[3], gx[3], gy[3];
+    // + x U1 + y U2 + hk nf) >= 0 (sg_m the sign of B_m . nf; the depth
+    // cancels), linear in x, y. Where g_m clears the rounding of both
+    // computations (margin, relative to the sizes involved) t_m cannot be
+    // the least exit short of the depth and is not needed; the others are
+    // computed as defined. Axes whose g_m clears twice the margin over the
+    // whole reference face (|x| <= h1, |y| <= h2, with the margin for the
+    // clipped points' rounding) are not looked at again (nor those
+    // parallel to nf: no exit through their faces).
     dReal scale = dFabs(rel[0]) + dFabs(rel[1]) + dFabs(rel[2]) + hr[0] + hr[1] + hr[2]
                   + 2 * (hi[0] + hi[1] + hi[2]);
-    dReal margin = BOX_EXIT_MARGIN * scale;
+    dReal margin = BOX_EXIT_MARGIN * scale, X = f->h1 + margin, Y = f->h2 + margin;
+    dReal g0[3], gx[3], gy[3];
+    int act[3], na = 0;
     for (int m = 0; m < 3; m++) {
+        if (C[m][2] == 0) continue;
         dReal sg = C[m][2] > 0 ? 1 : -1;
-        if (C[m][2] == 0) {   // runs along those faces: no exit through them
-            g0[m] = dInfinity;
-            gx[m] = gy[m] = 0;
-            continue;
-        }
-        g0[m] = hi[m] - sg * (f->e[m] + hr[k] * C[m][2]);
-        gx[m] = -sg * C[m][0];
-        gy[m] = -sg * C[m][1];
+        g0[na] = hi[m] - sg * (f->e[m] + hk * C[m][2]);
+        gx[na] = -sg * C[m][0];
+        gy[na] = -sg * C[m][1];
+        if (g0[na] - dFabs(gx[na]) * X - dFabs(gy[na]) * Y > 2 * margin) continue;
+        act[na++] = m;
     }
     int kept = 0, deepest = 0;
     for (int i = 0; i < n; i++) {
         dReal depth = a[i].depth;
         if (depth < 0) continue;
-        dReal x = a[i].x, y = a[i].y, exit = dInfinity;
-        if (!(g0[0] + x * gx[0] + y * gy[0] > margin && g0[1] + x * gx[1] + y * gy[1] > margin
-              && g0[2] + x * gx[2] + y * gy[2] > margin)) {
-            dReal q[3], up = hr[k] - depth;
-            for (int m = 0; m < 3; m++) q[m] = rel[m] + x * U1[m] + y * U2[m] + up * nf[m];
-            for (int m = 0; m < 3; m++) {
-                dReal dot = C[m][2];
-                if (dot == 0) continue;
-                dReal from = Ri[m] * q[0] + Ri[4 + m] * q[1] + Ri[8 + m] * q[2];
-                dReal t = ((dot > 0 ? hi[m] : -hi[m]) - from) / dot;
-                if (t < exit) exit = t;
+        dReal x = a[i].x, y = a[i].y, exit = dInfinity, q[3];
+        int have_q = 0;
+        for (int r = 0; r < na; r++) {
+            if (g0[r] + x * gx[r] + y * gy[r] > margin) continue;
+            if (!have_q) {
+                dReal up = hk - depth;
+                for (int c = 0; c < 3; c++) q[c] = rel[c] + x * U1[c] + y * U2[c] + up * nf[c];
+                have_q = 1;
             }
+            int m = act[r];
+            dReal dot = C[m][2], from = Ri[m] * q[0] + Ri[4 + m] * q[1] + Ri[8 + m] * q[2];
+            dReal t = ((dot > 0 ? hi[m] : -hi[m]) - from) / dot;
+            if (t < exit) exit = t;
         }
         if (exit < 0) exit = 0;   // clipped points lie on the incident face: rounding
-        dReal lo = depth - 2 * hr[k] > 0 ? depth - 2 * hr[k] : 0;
+        dReal lo = depth - 2 * hk > 0 ? depth - 2 * hk : 0;
         dReal top = exit < depth ? exit : depth;
         if (top < lo) continue;
         a[kept] = a[i];
@@ -359,7 +363,7 @@ static int box_face_contacts(const box_face *f, const dReal normal[3], const box
         cull_points(a, kept, max);
         kept = max;
     }
-    dReal hk = f->hr[f->k];
+    dReal hk = f->hk;
     for (int c = 0; c < kept; c++) {
         dReal pos[3], up = hk - a[c].depth + a[c].t;
         for (int i = 0; i < 3; i++) pos[i] = pr[i] + a[c].x * U1[i] + a[c].y * U2[i] + up * nf[i];
@@ -580,7 +584,8 @@ static int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const dRea
         dReal sg = proj[code] < 0 ? 1 : -1;
         if (code < 3) {   // face of box 1: normal -sign(T_k) A_k; C, c from Rm and T
             int k = code, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
-            f = (box_face){ .pr = p1, .Rr = R1, .hr = a, .pi = p2, .Ri = R2, .hi = b, .k = k };
+            f.pr = p1, f.Rr = R1, f.hr = a, f.pi = p2, f.Ri = R2, f.hi = b;
+            f.hk = a[k], f.h1 = a[k1], f.h2 = a[k2];
             for (int q = 0; q < 3; q++) {
                 normal[q] = sg * R1[4 * q + k];
                 f.nf[q] = -normal[q];
@@ -598,7 +603,8 @@ static int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const dRea
             f.c[2] = -sg * T[k];
         } else {   // face of box 2: normal sign(B_k . T) B_k; C from Rm
             int k = code - 3, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
-            f = (box_face){ .pr = p2, .Rr = R2, .hr = b, .pi = p1, .Ri = R1, .hi = a, .k = k };
+            f.pr = p2, f.Rr = R2, f.hr = b, f.pi = p1, f.Ri = R1, f.hi = a;
+            f.hk = b[k], f.h1 = b[k1], f.h2 = b[k2];
             for (int q = 0; q < 3; q++) normal[q] = f.nf[q] = sg * R2[4 * q + k];
             dx_axis(R2, k1, f.U1);
             dx_axis(R2, k2, f.U2);
