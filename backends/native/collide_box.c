@@ -280,11 +280,13 @@ static int box_keep_overlapping(const box_face *f, clip_point *a, int n, const d
 }
 
 // What box_clearance needs: the contact normal in box 1's frame (nl), and
-// box_box's Rm, overlaps and projections.
+// box_box's Rm, overlaps and projections, T and half sides a, b; rotations
+// whether every |Rm_ij| <= 1.25 (as for rotations).
 typedef struct box_axes {
     dReal nl[3];
     const dReal (*Rm)[3];
-    const dReal *over, *proj;
+    const dReal *over, *proj, *T, *a, *b;
+    int rotations;
 } box_axes;
 
 // The ray's exit through the faces of axis x, whose direction has s = m . n
@@ -309,12 +311,27 @@ BOX_INLINE dReal face_dot(const box_axes *ax, int x)
 // axes m; the ray t n leaves it at the least h(m) / (m . n) over the axes
 // facing n, h(m) = m . (p2 - p1) + radius1(m) + radius2(m) its support. The
 // ratio does not depend on the length of m, so axes stay unnormalised.
-static dReal box_clearance(const box_axes *ax)
+//
+// known is one of those exits (dInfinity if none). h(m) is the overlap
+// along m plus 0 or 2 |m . (p2 - p1)|, and |m . n| <= 4 max|nl_i| for
+// every axis when the |Rm_ij| are at most 1.25: an axis whose overlap
+// exceeds 4 known max|nl_i| (plus the rounding of h, cut) exits later than
+// known and is not looked at. The least exit is the same.
+static dReal box_clearance(const box_axes *ax, dReal known)
 {
-    const dReal *nl = ax->nl, (*Rm)[3] = ax->Rm;
-    dReal best = dInfinity;
+    const dReal *nl = ax->nl, (*Rm)[3] = ax->Rm, *over = ax->over;
+    dReal best = known, cut = dInfinity;
+    if (ax->rotations && known < dInfinity) {
+        const dReal *T = ax->T, *a = ax->a, *b = ax->b;
+        dReal N = dFabs(nl[0]) > dFabs(nl[1]) ? dFabs(nl[0]) : dFabs(nl[1]);
+        if (dFabs(nl[2]) > N) N = dFabs(nl[2]);
+        dReal size = dFabs(T[0]) + dFabs(T[1]) + dFabs(T[2]) + a[0] + a[1] + a[2] + b[0] + b[1]
+                     + b[2];
+        cut = 4 * N * known + 4 * BOX_EXIT_MARGIN * size;
+    }
 #pragma GCC unroll 6
     for (int x = 0; x < 6; x++) {
+        if (over[x] > cut) continue;
         dReal t = exit_along(ax, x, face_dot(ax, x));
         if (t < best) best = t;
     }
@@ -323,6 +340,7 @@ static dReal box_clearance(const box_axes *ax)
         int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
 #pragma GCC unroll 3
         for (int j = 0; j < 3; j++) {
+            if (over[6 + 3 * i + j] > cut) continue;
             if (Rm[i1][j] * Rm[i1][j] + Rm[i2][j] * Rm[i2][j] <= DX_COLLIDE_EPS) continue;
             dReal s = Rm[i1][j] * nl[i2] - Rm[i2][j] * nl[i1];   // (e_i x Rm[.][j]) . n
             dReal t = exit_along(ax, 6 + 3 * i + j, s);
@@ -354,11 +372,11 @@ static int box_face_contacts(const box_face *f, const dReal normal[3], const box
     if (kept == 0) {   // the separating axis says they overlap: find a point
         dReal pos[3];
         box_overlap_point(pr, f->Rr, f->hr, pi, f->Ri, f->hi, pos);
-        dx_put_contact(out, 0, skip, pos, normal, box_clearance(ax), o1, o2);
+        dx_put_contact(out, 0, skip, pos, normal, box_clearance(ax, dInfinity), o1, o2);
         return 1;
     }
-    dReal clear = a[0].depth < exit_along(ax, code, face_dot(ax, code)) ? box_clearance(ax)
-                                                                       : a[0].depth;
+    dReal own = exit_along(ax, code, face_dot(ax, code));
+    dReal clear = a[0].depth < own ? box_clearance(ax, own) : a[0].depth;
     if (kept > max) {
         cull_points(a, kept, max);
         kept = max;
@@ -549,11 +567,10 @@ static int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const dRea
     // cannot win against the faces (its o / len * BOX_EDGE_PREFERENCE stays
     // >= over[code]), nor be apart: it is left out unnormalised.
     dReal best_edge = dInfinity, edge_len = 1;
-    dReal bound = Q[0][0] <= 1.25 && Q[0][1] <= 1.25 && Q[0][2] <= 1.25 && Q[1][0] <= 1.25
-                          && Q[1][1] <= 1.25 && Q[1][2] <= 1.25 && Q[2][0] <= 1.25
-                          && Q[2][1] <= 1.25 && Q[2][2] <= 1.25
-                      ? 2 * over[code]
-                      : dInfinity;
+    int rotations = Q[0][0] <= 1.25 && Q[0][1] <= 1.25 && Q[0][2] <= 1.25 && Q[1][0] <= 1.25
+                    && Q[1][1] <= 1.25 && Q[1][2] <= 1.25 && Q[2][0] <= 1.25 && Q[2][1] <= 1.25
+                    && Q[2][2] <= 1.25;
+    dReal bound = rotations ? 2 * over[code] : dInfinity;
 #pragma GCC unroll 3
     for (int i = 0; i < 3; i++) {
 #pragma GCC unroll 3
@@ -580,7 +597,8 @@ static int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const dRea
     dReal normal[3];
     if (code < 6) {
         box_face f;
-        box_axes ax = { .Rm = Rm, .over = over, .proj = proj };
+        box_axes ax = { .Rm = Rm, .over = over, .proj = proj, .T = T, .a = a, .b = b,
+                        .rotations = rotations };
         dReal sg = proj[code] < 0 ? 1 : -1;
         if (code < 3) {   // face of box 1: normal -sign(T_k) A_k; C, c from Rm and T
             int k = code, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
