@@ -36,15 +36,30 @@ typedef struct clip_point {
 // arguments (a side, an axis pair) so that their indices fold away.
 #define BOX_INLINE static inline __attribute__((always_inline))
 
-// Clip poly (n points) to sg * coordinate(axis) <= h, into out; returns the
-// new count (at most n + 1 for a convex polygon, capped at 16), or -1 when
-// every point is inside already (out untouched). Points on the line are
-// kept once and not duplicated by the crossing test. sg is +-1, so sg * c
-// is exactly +-c.
-BOX_INLINE int clip_side(const clip_point *poly, int n, int axis, int sg, dReal h,
-                         clip_point *out)
+// The part of edge p-q (offsets dp, dq from the clipping line) clip_side
+// keeps: p if inside, then the crossing if the edge crosses the line.
+BOX_INLINE void clip_edge(const clip_point *p, const clip_point *q, dReal dp, dReal dq,
+                          clip_point *out, int *m, int capped)
 {
-    dReal off[16];
+    if (dp <= 0) out[(*m)++] = *p;
+    if ((!capped || *m < 16) && ((dp < 0 && dq > 0) || (dp > 0 && dq < 0))) {
+        dReal f = dp / (dp - dq);
+        clip_point *o = &out[(*m)++];
+        o->x = p->x + f * (q->x - p->x);
+        o->y = p->y + f * (q->y - p->y);
+        o->depth = p->depth + f * (q->depth - p->depth);
+    }
+}
+
+// Clip poly (n points, room for n + 1) to sg * coordinate(axis) <= h, into
+// out; returns the new count (at most n + 1 for a convex polygon, capped at
+// 16), or -1 when every point is inside already (out untouched). Points on
+// the line are kept once and not duplicated by the crossing test. sg is
+// +-1, so sg * c is exactly +-c. Each point adds at most two, so up to 8
+// points need no cap.
+BOX_INLINE int clip_side(clip_point *poly, int n, int axis, int sg, dReal h, clip_point *out)
+{
+    dReal off[17];
     int outside = 0;
     for (int i = 0; i < n; i++) {
         dReal c = axis ? poly[i].y : poly[i].x;
@@ -52,19 +67,14 @@ BOX_INLINE int clip_side(const clip_point *poly, int n, int axis, int sg, dReal 
         outside |= !(off[i] <= 0);
     }
     if (!outside) return -1;
+    poly[n] = poly[0];   // the closing edge without a wrap-around index
+    off[n] = off[0];
     int m = 0;
-    for (int i = 0; i < n && m < 16; i++) {
-        int k = i + 1 < n ? i + 1 : 0;
-        const clip_point *p = &poly[i], *q = &poly[k];
-        dReal dp = off[i], dq = off[k];
-        if (dp <= 0) out[m++] = *p;
-        if (m < 16 && ((dp < 0 && dq > 0) || (dp > 0 && dq < 0))) {
-            dReal f = dp / (dp - dq);
-            out[m].x = p->x + f * (q->x - p->x);
-            out[m].y = p->y + f * (q->y - p->y);
-            out[m].depth = p->depth + f * (q->depth - p->depth);
-            m++;
-        }
+    if (n <= 8) {
+        for (int i = 0; i < n; i++) clip_edge(&poly[i], &poly[i + 1], off[i], off[i + 1], out, &m, 0);
+    } else {
+        for (int i = 0; i < n && m < 16; i++)
+            clip_edge(&poly[i], &poly[i + 1], off[i], off[i + 1], out, &m, 1);
     }
     return m;
 }
@@ -174,13 +184,13 @@ typedef struct box_face {
 
 // The incident box's face most against nf, clipped to the reference face's
 // rectangle (in the frame U1, U2, relative to pr): the clipped polygon is
-// written to a (at most 16 points), its count returned.
-static int box_clip_incident(const box_face *f, clip_point a[16])
+// written to a (at most 16 points, room for 17), its count returned.
+static int box_clip_incident(const box_face *f, clip_point a[17])
 {
     const dReal *hi = f->hi, (*C)[3] = f->C;
-    int j = 0;
-    for (int m = 1; m < 3; m++)
-        if (dFabs(C[m][2]) > dFabs(C[j][2])) j = m;
+    dReal d0 = dFabs(C[0][2]), d1 = dFabs(C[1][2]), d2 = dFabs(C[2][2]);
+    int j = d1 > d0 ? 1 : 0;
+    if (d2 > (j ? d1 : d0)) j = 2;
     int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
     // The incident face's centre (rel + sgn hi_j B_j) and half edges
     // (hi B_j1, hi B_j2) in the reference face's frame (x, y, height).
@@ -198,7 +208,7 @@ static int box_clip_incident(const box_face *f, clip_point a[16])
         a[v].y = cy + s * uy + t * vy;
         a[v].depth = hk - (cz + s * uz + t * vz);
     }
-    clip_point b[16], *cur = a, *spare = b;
+    clip_point b[17], *cur = a, *spare = b;
     int n = 4;
     dReal h1 = f->h1, h2 = f->h2;
     clip_step(&cur, &spare, &n, 0, 1, h1);
@@ -365,7 +375,7 @@ static int box_face_contacts(const box_face *f, const dReal normal[3], const box
                              int skip)
 {
     const dReal *pr = f->pr, *pi = f->pi, *U1 = f->U1, *U2 = f->U2, *nf = f->nf;
-    clip_point a[16];
+    clip_point a[17];
     int n = box_clip_incident(f, a);
     dReal rel[3] = { pr[0] - pi[0], pr[1] - pi[1], pr[2] - pi[2] };
     int kept = box_keep_overlapping(f, a, n, rel);
