@@ -276,7 +276,7 @@ static int box_keep_overlapping(const box_face *f, clip_point *a, int n, const d
         dReal lo = depth - 2 * hk > 0 ? depth - 2 * hk : 0;
         dReal top = exit < depth ? exit : depth;
         if (top < lo) continue;
-        a[kept] = a[i];
+        if (kept != i) a[kept] = a[i];
         a[kept].t = (lo + top) / 2;
         if (a[kept].depth > a[deepest].depth) deepest = kept;
         kept++;
@@ -322,12 +322,13 @@ BOX_INLINE dReal face_dot(const box_axes *ax, int x)
 // facing n, h(m) = m . (p2 - p1) + radius1(m) + radius2(m) its support. The
 // ratio does not depend on the length of m, so axes stay unnormalised.
 //
-// known is one of those exits (dInfinity if none). h(m) is the overlap
+// known is the exit along axis known_axis (dInfinity and -1 if none): that
+// axis is not looked at again. h(m) is the overlap
 // along m plus 0 or 2 |m . (p2 - p1)|, and |m . n| <= 4 max|nl_i| for
 // every axis when the |Rm_ij| are at most 1.25: an axis whose overlap
 // exceeds 4 known max|nl_i| (plus the rounding of h, cut) exits later than
 // known and is not looked at. The least exit is the same.
-static dReal box_clearance(const box_axes *ax, dReal known)
+static dReal box_clearance(const box_axes *ax, dReal known, int known_axis)
 {
     const dReal *nl = ax->nl, (*Rm)[3] = ax->Rm, *over = ax->over;
     dReal best = known, cut = dInfinity;
@@ -341,7 +342,7 @@ static dReal box_clearance(const box_axes *ax, dReal known)
     }
 #pragma GCC unroll 6
     for (int x = 0; x < 6; x++) {
-        if (over[x] > cut) continue;
+        if (x == known_axis || over[x] > cut) continue;
         dReal t = exit_along(ax, x, face_dot(ax, x));
         if (t < best) best = t;
     }
@@ -350,10 +351,11 @@ static dReal box_clearance(const box_axes *ax, dReal known)
         int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
 #pragma GCC unroll 3
         for (int j = 0; j < 3; j++) {
-            if (over[6 + 3 * i + j] > cut) continue;
+            int x = 6 + 3 * i + j;
+            if (x == known_axis || over[x] > cut) continue;
             if (Rm[i1][j] * Rm[i1][j] + Rm[i2][j] * Rm[i2][j] <= DX_COLLIDE_EPS) continue;
             dReal s = Rm[i1][j] * nl[i2] - Rm[i2][j] * nl[i1];   // (e_i x Rm[.][j]) . n
-            dReal t = exit_along(ax, 6 + 3 * i + j, s);
+            dReal t = exit_along(ax, x, s);
             if (t < best) best = t;
         }
     }
@@ -382,11 +384,11 @@ static int box_face_contacts(const box_face *f, const dReal normal[3], const box
     if (kept == 0) {   // the separating axis says they overlap: find a point
         dReal pos[3];
         box_overlap_point(pr, f->Rr, f->hr, pi, f->Ri, f->hi, pos);
-        dx_put_contact(out, 0, skip, pos, normal, box_clearance(ax, dInfinity), o1, o2);
+        dx_put_contact(out, 0, skip, pos, normal, box_clearance(ax, dInfinity, -1), o1, o2);
         return 1;
     }
     dReal own = exit_along(ax, code, face_dot(ax, code));
-    dReal clear = a[0].depth < own ? box_clearance(ax, own) : a[0].depth;
+    dReal clear = a[0].depth < own ? box_clearance(ax, own, code) : a[0].depth;
     if (kept > max) {
         cull_points(a, kept, max);
         kept = max;
@@ -523,11 +525,13 @@ static inline int apart_by(int x, int *apart)
 // *depth_out and the axis to *code_out, numbered as ODE 0.16's dBoxBox does:
 // 1-3 box 1's faces, 4-6 box 2's, 7 + 3 i + j the edge pair A_i x B_j.
 // Axis hint (0-14, or -1) is tried first; when an axis parts the boxes,
-// *apart gets it (left alone if the bounding spheres part them).
+// *apart gets it (left alone if the bounding spheres part them). odd_sides
+// says that a side may be negative (or NaN): dBoxBox's callers may pass
+// any, box geoms have none.
 static int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const dReal *p2,
-                   const dReal *R2, const dReal *s2, dxGeom *o1, dxGeom *o2, int flags,
-                   dContactGeom *out, int skip, int hint, int *apart, dReal normal_out[3],
-                   dReal *depth_out, int *code_out)
+                   const dReal *R2, const dReal *s2, int odd_sides, dxGeom *o1, dxGeom *o2,
+                   int flags, dContactGeom *out, int skip, int hint, int *apart,
+                   dReal normal_out[3], dReal *depth_out, int *code_out)
 {
     const dReal a[3] = { s1[0] / 2, s1[1] / 2, s1[2] / 2 };
     const dReal b[3] = { s2[0] / 2, s2[1] / 2, s2[2] / 2 };
@@ -548,7 +552,7 @@ static int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const dRea
     // Overlap along each axis (< 0: apart), unnormalised for the edges. The
     // loops are unrolled, so that the axes' indices are constants. An edge
     // axis' slack is <= 0 for boxes of sides >= 0: a pair apart along it has
-    // over < 0 first.
+    // an edge overlap < 0, and only then are the edges tested in turn.
     dReal over[15], proj[15];
     if (hint >= 0 && axis_parts(hint, a, b, T, Rm, Q)) return apart_by(hint, apart);
 #pragma GCC unroll 6
@@ -556,15 +560,22 @@ static int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const dRea
         over[x] = face_overlap(x, a, b, T, Rm, Q, &proj[x]);
         if (over[x] < 0) return apart_by(x, apart);
     }
-    int odd_sides = !(a[0] >= 0 && a[1] >= 0 && a[2] >= 0 && b[0] >= 0 && b[1] >= 0 && b[2] >= 0);
+    dReal lowest = 0;
 #pragma GCC unroll 3
     for (int i = 0; i < 3; i++) {
 #pragma GCC unroll 3
         for (int j = 0; j < 3; j++) {
             int x = 6 + 3 * i + j;
             over[x] = edge_overlap(i, j, a, b, T, Rm, Q, &proj[x]);
-            if ((over[x] < 0 || odd_sides) && over[x] < edge_slack(i, j, a, b))
-                return apart_by(x, apart);
+            if (over[x] < lowest) lowest = over[x];
+        }
+    }
+    if (lowest < 0 || odd_sides) {
+        for (int i = 0; i < 3; i++) {
+            for (int j = 0; j < 3; j++) {
+                int x = 6 + 3 * i + j;
+                if (over[x] < edge_slack(i, j, a, b)) return apart_by(x, apart);
+            }
         }
     }
 
@@ -681,7 +692,7 @@ int dxCollideBoxBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int sk
     dxBoxAxisHint *e = find_hint(b1, o2);
     dReal normal[3], depth;
     int code, apart = -1;
-    int n = box_box(o1->pos, o1->R, b1->side, o2->pos, o2->R, ((dxBox *)o2)->side, o1, o2, flags,
+    int n = box_box(o1->pos, o1->R, b1->side, o2->pos, o2->R, ((dxBox *)o2)->side, 0, o1, o2, flags,
                     out, skip, e ? e->axis : -1, &apart, normal, &depth, &code);
     if (apart >= 0 && !(e && e->axis == apart)) {
         if (!e) {
@@ -710,7 +721,9 @@ int dBoxBox(const dVector3 p1, const dMatrix3 R1, const dVector3 side1, const dV
     dReal n[3] = { 0, 0, 0 }, d = 0;
     int code = -1;
     int apart;
-    int count = box_box(p1, R1, side1, p2, R2, side2, NULL, NULL, flags, contact, skip, -1,
+    int odd_sides = 0;
+    for (int i = 0; i < 3; i++) odd_sides |= !(side1[i] >= 0 && side2[i] >= 0);
+    int count = box_box(p1, R1, side1, p2, R2, side2, odd_sides, NULL, NULL, flags, contact, skip, -1,
                         &apart, n, &d, &code);
     *return_code = count > 0 ? code + 1 : 0;
     *depth = count > 0 ? d : 0;
