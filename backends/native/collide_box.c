@@ -92,29 +92,32 @@ BOX_INLINE void clip_step(clip_point **cur, clip_point **spare, int *n, int axis
     *n = m;
 }
 
-// Choose max of the n points (n > max) to keep, in place: the deepest, then
-// each time the point farthest from those already chosen, so the kept
-// points spread over the polygon.
+// Choose max of the n points (n > max, n <= 16) to keep, in place: the
+// deepest, then each time the point farthest from those already chosen, so
+// the kept points spread over the polygon. near[i] is point i's squared
+// distance to the nearest chosen one, brought up to date with each choice.
 static void cull_points(clip_point *pts, int n, int max)
 {
+    dReal near[16];
+    for (int i = 1; i < n; i++) near[i] = dInfinity;
     for (int k = 1; k < max; k++) {
         int best = k;
         dReal best_d = -1;
         for (int i = k; i < n; i++) {
-            dReal nearest = dInfinity;
-            for (int j = 0; j < k; j++) {
-                dReal dx = pts[i].x - pts[j].x, dy = pts[i].y - pts[j].y;
-                dReal d2 = dx * dx + dy * dy;
-                if (d2 < nearest) nearest = d2;
-            }
-            if (nearest > best_d) {
-                best_d = nearest;
+            dReal dx = pts[i].x - pts[k - 1].x, dy = pts[i].y - pts[k - 1].y;
+            dReal d2 = dx * dx + dy * dy;
+            if (d2 < near[i]) near[i] = d2;
+            if (near[i] > best_d) {
+                best_d = near[i];
                 best = i;
             }
         }
         clip_point t = pts[k];
         pts[k] = pts[best];
         pts[best] = t;
+        dReal u = near[k];
+        near[k] = near[best];
+        near[best] = u;
     }
 }
 
