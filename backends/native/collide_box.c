@@ -325,23 +325,28 @@ BOX_INLINE dReal face_dot(const box_axes *ax, int x)
 // facing n, h(m) = m . (p2 - p1) + radius1(m) + radius2(m) its support. The
 // ratio does not depend on the length of m, so axes stay unnormalised.
 //
-// known is the exit along axis known_axis (dInfinity and -1 if none): that
-// axis is not looked at again. h(m) is the overlap
+// known is the exit along face axis known_axis (dInfinity and -1 if none):
+// that axis is not looked at again. h(m) is the overlap
 // along m plus 0 or 2 |m . (p2 - p1)|, and |m . n| <= 4 max|nl_i| for
 // every axis when the |Rm_ij| are at most 1.25: an axis whose overlap
 // exceeds 4 known max|nl_i| (plus the rounding of h, cut) exits later than
-// known and is not looked at. The least exit is the same.
+// known and is not looked at. So is an edge axis e_i x Rm[.][j] whose
+// overlap exceeds 2 known max|nl_i| (|Rm_i1j| + |Rm_i2j|) (plus rounding),
+// a bound on its |m . n| that is small for (nearly) parallel edges. The
+// least exit is the same.
 static dReal box_clearance(const box_axes *ax, dReal known, int known_axis)
 {
     const dReal *nl = ax->nl, (*Rm)[3] = ax->Rm, *over = ax->over;
-    dReal best = known, cut = dInfinity;
+    dReal best = known, cut = dInfinity, rounding = 0, per_q = dInfinity;
     if (ax->rotations && known < dInfinity) {
         const dReal *T = ax->T, *a = ax->a, *b = ax->b;
         dReal N = dFabs(nl[0]) > dFabs(nl[1]) ? dFabs(nl[0]) : dFabs(nl[1]);
         if (dFabs(nl[2]) > N) N = dFabs(nl[2]);
         dReal size = dFabs(T[0]) + dFabs(T[1]) + dFabs(T[2]) + a[0] + a[1] + a[2] + b[0] + b[1]
                      + b[2];
-        cut = 4 * N * known + 4 * BOX_EXIT_MARGIN * size;
+        rounding = 4 * BOX_EXIT_MARGIN * size;
+        cut = 4 * N * known + rounding;
+        per_q = 2 * N * known;
     }
 #pragma GCC unroll 6
     for (int x = 0; x < 6; x++) {
@@ -355,7 +360,8 @@ static dReal box_clearance(const box_axes *ax, dReal known, int known_axis)
 #pragma GCC unroll 3
         for (int j = 0; j < 3; j++) {
             int x = 6 + 3 * i + j;
-            if (x == known_axis || over[x] > cut) continue;
+            if (over[x] > cut) continue;
+            if (over[x] - rounding > per_q * (dFabs(Rm[i1][j]) + dFabs(Rm[i2][j]))) continue;
             if (Rm[i1][j] * Rm[i1][j] + Rm[i2][j] * Rm[i2][j] <= DX_COLLIDE_EPS) continue;
             dReal s = Rm[i1][j] * nl[i2] - Rm[i2][j] * nl[i1];   // (e_i x Rm[.][j]) . n
             dReal t = exit_along(ax, x, s);
