@@ -536,11 +536,12 @@ static inline int apart_by(int x, int *apart)
 // Axis hint (0-14, or -1) is tried first; when an axis parts the boxes,
 // *apart gets it (left alone if the bounding spheres part them). odd_sides
 // says that a side may be negative (or NaN): dBoxBox's callers may pass
-// any, box geoms have none.
-static int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const dReal *p2,
-                   const dReal *R2, const dReal *s2, int odd_sides, dxGeom *o1, dxGeom *o2,
-                   int flags, dContactGeom *out, int skip, int hint, int *apart,
-                   dReal normal_out[3], dReal *depth_out, int *code_out)
+// any, box geoms have none. Inlined in its two callers (no 17 arguments to
+// pass per pair).
+BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const dReal *p2,
+                       const dReal *R2, const dReal *s2, int odd_sides, dxGeom *o1, dxGeom *o2,
+                       int flags, dContactGeom *out, int skip, int hint, int *apart,
+                       dReal normal_out[3], dReal *depth_out, int *code_out)
 {
     const dReal a[3] = { s1[0] / 2, s1[1] / 2, s1[2] / 2 };
     const dReal b[3] = { s2[0] / 2, s2[1] / 2, s2[2] / 2 };
