@@ -206,8 +206,10 @@ static int box_clip_incident(const dReal hr[3], int k, const dReal nf[3], const 
     dReal cx = slow_dot(rel, U1) + sgn * slow_dot(B[j], U1);
     dReal cy = slow_dot(rel, U2) + sgn * slow_dot(B[j], U2);
     dReal cz = slow_dot(rel, nf) + sgn * dots[j];
-    dReal ux = hi[j1] * slow_dot(B[j1], U1), uy = hi[j1] * slow_dot(B[j1], U2), uz = hi[j1] * dots[j1];
-    dReal vx = hi[j2] * slow_dot(B[j2], U1), vy = hi[j2] * slow_dot(B[j2], U2), vz = hi[j2] * dots[j2];
+    dReal ux = hi[j1] * slow_dot(B[j1], U1), uy = hi[j1] * slow_dot(B[j1], U2);
+    dReal uz = hi[j1] * dots[j1];
+    dReal vx = hi[j2] * slow_dot(B[j2], U1), vy = hi[j2] * slow_dot(B[j2], U2);
+    dReal vz = hi[j2] * dots[j2];
     static const dReal corner[4][2] = { { 1, 1 }, { -1, 1 }, { -1, -1 }, { 1, -1 } };
     for (int v = 0; v < 4; v++) {
         dReal s = corner[v][0], t = corner[v][1];

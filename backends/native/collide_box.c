@@ -15,8 +15,9 @@
 // axis' by this factor: face contacts give a stable polygon, so they are
 // preferred when the two are about as deep.
 #define BOX_EDGE_PREFERENCE ((dReal)1.05)
-// box_keep_overlapping's shortcut trusts its test of the exit against the
-// depth when it clears the rounding by this much, relative to the sizes.
+// The shortcuts of box_keep_overlapping and box_clearance trust a bound
+// when it clears the rounding by this much, relative to the sizes (for
+// rotations: matrix entries of at most 1.25).
 #ifdef dSINGLE
 #define BOX_EXIT_MARGIN ((dReal)1e-4)
 #else
@@ -71,7 +72,8 @@ BOX_INLINE int clip_side(clip_point *poly, int n, int axis, int sg, dReal h, cli
     off[n] = off[0];
     int m = 0;
     if (n <= 8) {
-        for (int i = 0; i < n; i++) clip_edge(&poly[i], &poly[i + 1], off[i], off[i + 1], out, &m, 0);
+        for (int i = 0; i < n; i++)
+            clip_edge(&poly[i], &poly[i + 1], off[i], off[i + 1], out, &m, 0);
     } else {
         for (int i = 0; i < n && m < 16; i++)
             clip_edge(&poly[i], &poly[i + 1], off[i], off[i + 1], out, &m, 1);
@@ -177,10 +179,11 @@ static void box_overlap_point(const dReal *p1, const dReal *R1, const dReal h1[3
 // hi, axes B_m); U1, U2 are the reference box's other axes, the frame of
 // that face. box_box has most of the dot products already (its Rm and T):
 // C[m] = (B_m . U1, B_m . U2, B_m . nf), c = (pi - pr) . (U1, U2, nf), and
-// e[m], an estimate of B_m . (pr - pi) for box_keep_overlapping's test;
-// hk, h1, h2 are hr along nf, U1, U2.
+// e[m], an estimate of B_m . (pr - pi) for box_keep_overlapping's test
+// (made only for rotations); hk, h1, h2 are hr along nf, U1, U2.
 typedef struct box_face {
     const dReal *pr, *Rr, *hr, *pi, *Ri, *hi;
+    int rotations;
     dReal hk, h1, h2;
     dReal nf[3], U1[3], U2[3], C[3][3], c[3], e[3];
 } box_face;
@@ -245,7 +248,8 @@ static int box_keep_overlapping(const box_face *f, clip_point *a, int n, const d
     // parallel to nf: no exit through their faces).
     dReal scale = dFabs(rel[0]) + dFabs(rel[1]) + dFabs(rel[2]) + hr[0] + hr[1] + hr[2]
                   + 2 * (hi[0] + hi[1] + hi[2]);
-    dReal margin = BOX_EXIT_MARGIN * scale, X = f->h1 + margin, Y = f->h2 + margin;
+    dReal margin = f->rotations ? BOX_EXIT_MARGIN * scale : dInfinity;   // else: as defined
+    dReal X = f->h1 + margin, Y = f->h2 + margin;
     dReal g0[3], gx[3], gy[3];
     int act[3], na = 0;
     for (int m = 0; m < 3; m++) {
@@ -515,6 +519,19 @@ static int axis_parts(int x, const dReal a[3], const dReal b[3], const dReal T[3
     return len2 > DX_COLLIDE_EPS && over / dSqrt(len2) < 0;
 }
 
+// Whether box_box's shortcuts may take R1 and R2 for rotations: every entry
+// of theirs and of Rm (its absolute values Q) at most 1.25 in magnitude.
+static int rotation_like(const dReal *R1, const dReal *R2, const dReal Q[3][3])
+{
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++) {
+            if (!(Q[i][j] <= 1.25 && dFabs(R1[4 * i + j]) <= 1.25 && dFabs(R2[4 * i + j]) <= 1.25))
+                return 0;
+        }
+    }
+    return 1;
+}
+
 // box_box's return when axis x parts the boxes: 0, with x noted in *apart.
 static inline int apart_by(int x, int *apart)
 {
@@ -534,12 +551,13 @@ static inline int apart_by(int x, int *apart)
 // *depth_out and the axis to *code_out, numbered as ODE 0.16's dBoxBox does:
 // 1-3 box 1's faces, 4-6 box 2's, 7 + 3 i + j the edge pair A_i x B_j.
 // Axis hint (0-14, or -1) is tried first; when an axis parts the boxes,
-// *apart gets it (left alone if the bounding spheres part them). odd_sides
-// says that a side may be negative (or NaN): dBoxBox's callers may pass
-// any, box geoms have none. Inlined in its two callers (no 17 arguments to
-// pass per pair).
+// *apart gets it (left alone if the bounding spheres part them). trusted
+// says that the sides are >= 0 and R1, R2 rotations (orthonormal to
+// rounding), as box geoms keep them; dBoxBox's callers may pass anything,
+// and its shortcuts check what they need. Inlined in its two callers (no 17
+// arguments to pass per pair).
 BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const dReal *p2,
-                       const dReal *R2, const dReal *s2, int odd_sides, dxGeom *o1, dxGeom *o2,
+                       const dReal *R2, const dReal *s2, int trusted, dxGeom *o1, dxGeom *o2,
                        int flags, dContactGeom *out, int skip, int hint, int *apart,
                        dReal normal_out[3], dReal *depth_out, int *code_out)
 {
@@ -580,7 +598,8 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
             if (over[x] < lowest) lowest = over[x];
         }
     }
-    if (lowest < 0 || odd_sides) {
+    if (lowest < 0 || (!trusted && !(a[0] >= 0 && a[1] >= 0 && a[2] >= 0 && b[0] >= 0
+                                       && b[1] >= 0 && b[2] >= 0))) {
         for (int i = 0; i < 3; i++) {
             for (int j = 0; j < 3; j++) {
                 int x = 6 + 3 * i + j;
@@ -598,9 +617,7 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
     // cannot win against the faces (its o / len * BOX_EDGE_PREFERENCE stays
     // >= over[code]), nor be apart: it is left out unnormalised.
     dReal best_edge = dInfinity, edge_len = 1;
-    int rotations = Q[0][0] <= 1.25 && Q[0][1] <= 1.25 && Q[0][2] <= 1.25 && Q[1][0] <= 1.25
-                    && Q[1][1] <= 1.25 && Q[1][2] <= 1.25 && Q[2][0] <= 1.25 && Q[2][1] <= 1.25
-                    && Q[2][2] <= 1.25;
+    int rotations = trusted || rotation_like(R1, R2, Q);
     dReal bound = rotations ? 2 * over[code] : dInfinity;
 #pragma GCC unroll 3
     for (int i = 0; i < 3; i++) {
@@ -611,7 +628,7 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
             dReal len2 = Rm[i1][j] * Rm[i1][j] + Rm[i2][j] * Rm[i2][j];
             if (len2 <= DX_COLLIDE_EPS) continue;   // parallel edges: the faces cover them
             dReal len = dSqrt(len2), o = over[x] / len;
-            if (o < 0) return apart_by(x, apart);   // apart after all, along a well-defined edge axis
+            if (o < 0) return apart_by(x, apart);   // apart after all: a well-defined edge axis
             if (o < best_edge) {
                 best_edge = o;
                 edge = x;
@@ -634,6 +651,7 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
         if (code < 3) {   // face of box 1: normal -sign(T_k) A_k; C, c from Rm and T
             int k = code, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
             f.pr = p1, f.Rr = R1, f.hr = a, f.pi = p2, f.Ri = R2, f.hi = b;
+            f.rotations = rotations;
             f.hk = a[k], f.h1 = a[k1], f.h2 = a[k2];
             for (int q = 0; q < 3; q++) {
                 normal[q] = sg * R1[4 * q + k];
@@ -645,7 +663,9 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
                 f.C[m][0] = Rm[k1][m];
                 f.C[m][1] = Rm[k2][m];
                 f.C[m][2] = -sg * Rm[k][m];
-                f.e[m] = -proj[3 + m];
+                // B_m . (p1 - p2): T . Rm[.][m] is it for orthonormal R1
+                f.e[m] = trusted ? -proj[3 + m]
+                                 : -(R2[m] * d[0] + R2[4 + m] * d[1] + R2[8 + m] * d[2]);
             }
             f.c[0] = T[k1];
             f.c[1] = T[k2];
@@ -653,6 +673,7 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
         } else {   // face of box 2: normal sign(B_k . T) B_k; C from Rm
             int k = code - 3, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
             f.pr = p2, f.Rr = R2, f.hr = b, f.pi = p1, f.Ri = R1, f.hi = a;
+            f.rotations = rotations;
             f.hk = b[k], f.h1 = b[k1], f.h2 = b[k2];
             for (int q = 0; q < 3; q++) normal[q] = f.nf[q] = sg * R2[4 * q + k];
             dx_axis(R2, k1, f.U1);
@@ -702,7 +723,7 @@ int dxCollideBoxBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int sk
     dxBoxAxisHint *e = find_hint(b1, o2);
     dReal normal[3], depth;
     int code, apart = -1;
-    int n = box_box(o1->pos, o1->R, b1->side, o2->pos, o2->R, ((dxBox *)o2)->side, 0, o1, o2, flags,
+    int n = box_box(o1->pos, o1->R, b1->side, o2->pos, o2->R, ((dxBox *)o2)->side, 1, o1, o2, flags,
                     out, skip, e ? e->axis : -1, &apart, normal, &depth, &code);
     if (apart >= 0 && !(e && e->axis == apart)) {
         if (!e) {
@@ -731,9 +752,7 @@ int dBoxBox(const dVector3 p1, const dMatrix3 R1, const dVector3 side1, const dV
     dReal n[3] = { 0, 0, 0 }, d = 0;
     int code = -1;
     int apart;
-    int odd_sides = 0;
-    for (int i = 0; i < 3; i++) odd_sides |= !(side1[i] >= 0 && side2[i] >= 0);
-    int count = box_box(p1, R1, side1, p2, R2, side2, odd_sides, NULL, NULL, flags, contact, skip, -1,
+    int count = box_box(p1, R1, side1, p2, R2, side2, 0, NULL, NULL, flags, contact, skip, -1,
                         &apart, n, &d, &code);
     *return_code = count > 0 ? code + 1 : 0;
     *depth = count > 0 ? d : 0;
