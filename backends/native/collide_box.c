@@ -15,6 +15,14 @@
 // axis' by this factor: face contacts give a stable polygon, so they are
 // preferred when the two are about as deep.
 #define BOX_EDGE_PREFERENCE ((dReal)1.05)
+// The shortcuts of box_keep_overlapping and box_clearance trust a bound
+// when it clears the rounding by this much, relative to the sizes (for
+// rotations: matrix entries of at most 1.25).
+#ifdef dSINGLE
+#define BOX_EXIT_MARGIN ((dReal)1e-4)
+#else
+#define BOX_EXIT_MARGIN ((dReal)1e-10)
+#endif
 // Boxes whose centres are farther apart than this times the sum of their
 // half diagonals are apart without a look at their axes.
 #define BOX_SPHERE_MARGIN ((dReal)1.001)
@@ -25,59 +33,93 @@ typedef struct clip_point {
     dReal t;   // pos is this far from the incident point along nf
 } clip_point;
 
-// Keep the part of poly (n points) with sg * coordinate(axis) <= h in out;
-// returns the new count (at most n + 1 for a convex polygon, capped at 16).
-// Points on the line are kept once and not duplicated by the crossing test.
-static int clip_half(const clip_point *poly, int n, int axis, dReal sg, dReal h, clip_point *out)
+// Functions of the clipper and the axes, inlined with their constant
+// arguments (a side, an axis pair) so that their indices fold away.
+#define BOX_INLINE static inline __attribute__((always_inline))
+
+// The part of edge p-q (offsets dp, dq from the clipping line) clip_side
+// keeps: p if inside, then the crossing if the edge crosses the line.
+BOX_INLINE void clip_edge(const clip_point *p, const clip_point *q, dReal dp, dReal dq,
+                          clip_point *out, int *m, int capped)
 {
+    if (dp <= 0) out[(*m)++] = *p;
+    if ((!capped || *m < 16) && ((dp < 0 && dq > 0) || (dp > 0 && dq < 0))) {
+        dReal f = dp / (dp - dq);
+        clip_point *o = &out[(*m)++];
+        o->x = p->x + f * (q->x - p->x);
+        o->y = p->y + f * (q->y - p->y);
+        o->depth = p->depth + f * (q->depth - p->depth);
+    }
+}
+
+// Clip poly (n points, room for n + 1) to sg * coordinate(axis) <= h, into
+// out; returns the new count (at most n + 1 for a convex polygon, capped at
+// 16), or -1 when every point is inside already (out untouched). Points on
+// the line are kept once and not duplicated by the crossing test. sg is
+// +-1, so sg * c is exactly +-c. Each point adds at most two, so up to 8
+// points need no cap.
+BOX_INLINE int clip_side(clip_point *poly, int n, int axis, int sg, dReal h, clip_point *out)
+{
+    dReal off[17];
+    int outside = 0;
+    for (int i = 0; i < n; i++) {
+        dReal c = axis ? poly[i].y : poly[i].x;
+        off[i] = (sg > 0 ? c : -c) - h;
+        outside |= !(off[i] <= 0);
+    }
+    if (!outside) return -1;
+    poly[n] = poly[0];   // the closing edge without a wrap-around index
+    off[n] = off[0];
     int m = 0;
-    for (int i = 0; i < n && m < 16; i++) {
-        const clip_point *p = &poly[i], *q = &poly[(i + 1) % n];
-        dReal dp = sg * (axis ? p->y : p->x) - h, dq = sg * (axis ? q->y : q->x) - h;
-        if (dp <= 0) out[m++] = *p;
-        if (m < 16 && ((dp < 0 && dq > 0) || (dp > 0 && dq < 0))) {
-            dReal f = dp / (dp - dq);
-            out[m].x = p->x + f * (q->x - p->x);
-            out[m].y = p->y + f * (q->y - p->y);
-            out[m].depth = p->depth + f * (q->depth - p->depth);
-            m++;
-        }
+    if (n <= 8) {
+        for (int i = 0; i < n; i++)
+            clip_edge(&poly[i], &poly[i + 1], off[i], off[i + 1], out, &m, 0);
+    } else {
+        for (int i = 0; i < n && m < 16; i++)
+            clip_edge(&poly[i], &poly[i + 1], off[i], off[i + 1], out, &m, 1);
     }
     return m;
 }
 
-// Whether every point of poly (n points) has sg * coordinate(axis) <= h,
-// the test clip_half keeps a point by.
-static int all_inside(const clip_point *poly, int n, int axis, dReal sg, dReal h)
+// clip_side on *cur (*n points), the result left in *cur (swapped with
+// *spare when the side cut anything).
+BOX_INLINE void clip_step(clip_point **cur, clip_point **spare, int *n, int axis, int sg,
+                          dReal h)
 {
-    for (int i = 0; i < n; i++)
-        if (!(sg * (axis ? poly[i].y : poly[i].x) - h <= 0)) return 0;
-    return 1;
+    int m = clip_side(*cur, *n, axis, sg, h, *spare);
+    if (m < 0) return;
+    clip_point *t = *cur;
+    *cur = *spare;
+    *spare = t;
+    *n = m;
 }
 
-// Choose max of the n points (n > max) to keep, in place: the deepest, then
-// each time the point farthest from those already chosen, so the kept
-// points spread over the polygon.
+// Choose max of the n points (n > max, n <= 16) to keep, in place: the
+// deepest, then each time the point farthest from those already chosen, so
+// the kept points spread over the polygon. near[i] is point i's squared
+// distance to the nearest chosen one, brought up to date with each choice.
 static void cull_points(clip_point *pts, int n, int max)
 {
+    dReal near[16];
+    for (int i = 1; i < n; i++) near[i] = dInfinity;
     for (int k = 1; k < max; k++) {
         int best = k;
         dReal best_d = -1;
         for (int i = k; i < n; i++) {
-            dReal nearest = dInfinity;
-            for (int j = 0; j < k; j++) {
-                dReal dx = pts[i].x - pts[j].x, dy = pts[i].y - pts[j].y;
-                dReal d2 = dx * dx + dy * dy;
-                if (d2 < nearest) nearest = d2;
-            }
-            if (nearest > best_d) {
-                best_d = nearest;
+            dReal dx = pts[i].x - pts[k - 1].x, dy = pts[i].y - pts[k - 1].y;
+            dReal d2 = dx * dx + dy * dy;
+            if (d2 < near[i]) near[i] = d2;
+            if (near[i] > best_d) {
+                best_d = near[i];
                 best = i;
             }
         }
         clip_point t = pts[k];
         pts[k] = pts[best];
         pts[best] = t;
+        dReal u = near[k];
+        near[k] = near[best];
+        near[best] = u;
     }
 }
 
@@ -134,48 +176,51 @@ static void box_overlap_point(const dReal *p1, const dReal *R1, const dReal h1[3
 
 // The face case: the reference box (pr, Rr, half sides hr) touches with its
 // face of axis k whose outward normal nf points at the incident box (pi, Ri,
-// hi). The incident box's face most against nf is clipped to the reference
-// face's rectangle (in the frame U1, U2 of that face, relative to pr); the
-// clipped polygon is written to a (at most 16 points), its count returned.
-// dots gets the incident axes' cosines with nf.
-static int box_clip_incident(const dReal hr[3], int k, const dReal nf[3], const dReal U1[3],
-                             const dReal U2[3], const dReal rel[3], const dReal *Ri,
-                             const dReal hi[3], dReal dots[3], clip_point a[16])
+// hi, axes B_m); U1, U2 are the reference box's other axes, the frame of
+// that face. box_box has most of the dot products already (its Rm and T):
+// C[m] = (B_m . U1, B_m . U2, B_m . nf), c = (pi - pr) . (U1, U2, nf), and
+// e[m], an estimate of B_m . (pr - pi) for box_keep_overlapping's test
+// (made only for rotations); hk, h1, h2 are hr along nf, U1, U2.
+typedef struct box_face {
+    const dReal *pr, *Rr, *hr, *pi, *Ri, *hi;
+    int rotations;
+    dReal hk, h1, h2;
+    dReal nf[3], U1[3], U2[3], C[3][3], c[3], e[3];
+} box_face;
+
+// The incident box's face most against nf, clipped to the reference face's
+// rectangle (in the frame U1, U2, relative to pr): the clipped polygon is
+// written to a (at most 16 points, room for 17), its count returned.
+static int box_clip_incident(const box_face *f, clip_point a[17])
 {
-    dReal B[3][3];
-    int j = 0;
-    for (int m = 0; m < 3; m++) {
-        dx_axis(Ri, m, B[m]);
-        dots[m] = dx_dot(B[m], nf);
-        if (dFabs(dots[m]) > dFabs(dots[j])) j = m;
-    }
+    const dReal *hi = f->hi, (*C)[3] = f->C;
+    dReal d0 = dFabs(C[0][2]), d1 = dFabs(C[1][2]), d2 = dFabs(C[2][2]);
+    int j = d1 > d0 ? 1 : 0;
+    if (d2 > (j ? d1 : d0)) j = 2;
     int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
     // The incident face's centre (rel + sgn hi_j B_j) and half edges
     // (hi B_j1, hi B_j2) in the reference face's frame (x, y, height).
-    dReal sgn = dots[j] > 0 ? -hi[j] : hi[j];
-    dReal cx = dx_dot(rel, U1) + sgn * dx_dot(B[j], U1);
-    dReal cy = dx_dot(rel, U2) + sgn * dx_dot(B[j], U2);
-    dReal cz = dx_dot(rel, nf) + sgn * dots[j];
-    dReal ux = hi[j1] * dx_dot(B[j1], U1), uy = hi[j1] * dx_dot(B[j1], U2), uz = hi[j1] * dots[j1];
-    dReal vx = hi[j2] * dx_dot(B[j2], U1), vy = hi[j2] * dx_dot(B[j2], U2), vz = hi[j2] * dots[j2];
+    dReal sgn = C[j][2] > 0 ? -hi[j] : hi[j];
+    dReal cx = f->c[0] + sgn * C[j][0];
+    dReal cy = f->c[1] + sgn * C[j][1];
+    dReal cz = f->c[2] + sgn * C[j][2];
+    dReal ux = hi[j1] * C[j1][0], uy = hi[j1] * C[j1][1], uz = hi[j1] * C[j1][2];
+    dReal vx = hi[j2] * C[j2][0], vy = hi[j2] * C[j2][1], vz = hi[j2] * C[j2][2];
+    dReal hk = f->hk;
     static const dReal corner[4][2] = { { 1, 1 }, { -1, 1 }, { -1, -1 }, { 1, -1 } };
     for (int v = 0; v < 4; v++) {
         dReal s = corner[v][0], t = corner[v][1];
         a[v].x = cx + s * ux + t * vx;
         a[v].y = cy + s * uy + t * vy;
-        a[v].depth = hr[k] - (cz + s * uz + t * vz);
+        a[v].depth = hk - (cz + s * uz + t * vz);
     }
-    clip_point b[16], *cur = a, *spare = b;
+    clip_point b[17], *cur = a, *spare = b;
     int n = 4;
-    for (int side = 0; side < 4; side++) {
-        int axis = side / 2;
-        dReal sg = side % 2 ? -1 : 1, h = hr[(k + 1 + axis) % 3];
-        if (all_inside(cur, n, axis, sg, h)) continue;   // clip_half would copy
-        n = clip_half(cur, n, axis, sg, h, spare);
-        clip_point *t = cur;
-        cur = spare;
-        spare = t;
-    }
+    dReal h1 = f->h1, h2 = f->h2;
+    clip_step(&cur, &spare, &n, 0, 1, h1);
+    clip_step(&cur, &spare, &n, 0, -1, h1);
+    clip_step(&cur, &spare, &n, 1, 1, h2);
+    clip_step(&cur, &spare, &n, 1, -1, h2);
     if (cur != a) memcpy(a, cur, (size_t)n * sizeof *a);
     return n;
 }
@@ -186,28 +231,59 @@ static int box_clip_incident(const dReal hr[3], int k, const dReal nf[3], const 
 // one (rel = pr - pi); pos will be the middle of that stretch (t). Deep
 // overlaps can clip points past the far side of a thin reference box: they
 // are in neither box and dropped. The deepest is moved first.
-static int box_keep_overlapping(clip_point *a, int n, const dReal hr[3], int k,
-                                const dReal nf[3], const dReal U1[3], const dReal U2[3],
-                                const dReal rel[3], const dReal *Ri, const dReal hi[3],
-                                const dReal dots[3])
+static int box_keep_overlapping(const box_face *f, clip_point *a, int n, const dReal rel[3])
 {
+    const dReal *hr = f->hr, *hi = f->hi, *nf = f->nf, *U1 = f->U1, *U2 = f->U2, *Ri = f->Ri;
+    const dReal (*C)[3] = f->C, hk = f->hk;
+    // The exit through the incident box's faces of axis m (t_m, where
+    // B_m . (q + t nf) = +-hi_m) is >= depth exactly when the point over P
+    // on the reference face lies inside them: g_m = hi_m - sg_m B_m . (rel
+    // + x U1 + y U2 + hk nf) >= 0 (sg_m the sign of B_m . nf; the depth
+    // cancels), linear in x, y. Where g_m clears the rounding of both
+    // computations (margin, relative to the sizes involved) t_m cannot be
+    // the least exit short of the depth and is not needed; the others are
+    // computed as defined. Axes whose g_m clears twice the margin over the
+    // whole reference face (|x| <= h1, |y| <= h2, with the margin for the
+    // clipped points' rounding) are not looked at again (nor those
+    // parallel to nf: no exit through their faces).
+    dReal scale = dFabs(rel[0]) + dFabs(rel[1]) + dFabs(rel[2]) + hr[0] + hr[1] + hr[2]
+                  + 2 * (hi[0] + hi[1] + hi[2]);
+    dReal margin = f->rotations ? BOX_EXIT_MARGIN * scale : dInfinity;   // else: as defined
+    dReal X = f->h1 + margin, Y = f->h2 + margin;
+    dReal g0[3], gx[3], gy[3];
+    int act[3], na = 0;
+    for (int m = 0; m < 3; m++) {
+        if (C[m][2] == 0) continue;
+        dReal sg = C[m][2] > 0 ? 1 : -1;
+        g0[na] = hi[m] - sg * (f->e[m] + hk * C[m][2]);
+        gx[na] = -sg * C[m][0];
+        gy[na] = -sg * C[m][1];
+        if (g0[na] - dFabs(gx[na]) * X - dFabs(gy[na]) * Y > 2 * margin) continue;
+        act[na++] = m;
+    }
     int kept = 0, deepest = 0;
     for (int i = 0; i < n; i++) {
         dReal depth = a[i].depth;
         if (depth < 0) continue;
-        dReal q[3], up = hr[k] - depth, exit = dInfinity;
-        for (int m = 0; m < 3; m++) q[m] = rel[m] + a[i].x * U1[m] + a[i].y * U2[m] + up * nf[m];
-        for (int m = 0; m < 3; m++) {
-            if (dots[m] == 0) continue;
-            dReal from = Ri[m] * q[0] + Ri[4 + m] * q[1] + Ri[8 + m] * q[2];
-            dReal t = ((dots[m] > 0 ? hi[m] : -hi[m]) - from) / dots[m];
+        dReal x = a[i].x, y = a[i].y, exit = dInfinity, q[3];
+        int have_q = 0;
+        for (int r = 0; r < na; r++) {
+            if (g0[r] + x * gx[r] + y * gy[r] > margin) continue;
+            if (!have_q) {
+                dReal up = hk - depth;
+                for (int c = 0; c < 3; c++) q[c] = rel[c] + x * U1[c] + y * U2[c] + up * nf[c];
+                have_q = 1;
+            }
+            int m = act[r];
+            dReal dot = C[m][2], from = Ri[m] * q[0] + Ri[4 + m] * q[1] + Ri[8 + m] * q[2];
+            dReal t = ((dot > 0 ? hi[m] : -hi[m]) - from) / dot;
             if (t < exit) exit = t;
         }
         if (exit < 0) exit = 0;   // clipped points lie on the incident face: rounding
-        dReal lo = depth - 2 * hr[k] > 0 ? depth - 2 * hr[k] : 0;
+        dReal lo = depth - 2 * hk > 0 ? depth - 2 * hk : 0;
         dReal top = exit < depth ? exit : depth;
         if (top < lo) continue;
-        a[kept] = a[i];
+        if (kept != i) a[kept] = a[i];
         a[kept].t = (lo + top) / 2;
         if (a[kept].depth > a[deepest].depth) deepest = kept;
         kept++;
@@ -221,16 +297,18 @@ static int box_keep_overlapping(clip_point *a, int n, const dReal hr[3], int k,
 }
 
 // What box_clearance needs: the contact normal in box 1's frame (nl), and
-// box_box's Rm, overlaps and projections.
+// box_box's Rm, overlaps and projections, T and half sides a, b; rotations
+// whether every |Rm_ij| <= 1.25 (as for rotations).
 typedef struct box_axes {
     dReal nl[3];
     const dReal (*Rm)[3];
-    const dReal *over, *proj;
+    const dReal *over, *proj, *T, *a, *b;
+    int rotations;
 } box_axes;
 
 // The ray's exit through the faces of axis x, whose direction has s = m . n
 // (dInfinity if it runs along them).
-static inline dReal exit_along(const box_axes *ax, int x, dReal s)
+BOX_INLINE dReal exit_along(const box_axes *ax, int x, dReal s)
 {
     if (s == 0) return dInfinity;
     dReal radii = ax->over[x] + dFabs(ax->proj[x]);
@@ -238,7 +316,7 @@ static inline dReal exit_along(const box_axes *ax, int x, dReal s)
 }
 
 // m . n for face axis x (0-5).
-static inline dReal face_dot(const box_axes *ax, int x)
+BOX_INLINE dReal face_dot(const box_axes *ax, int x)
 {
     const dReal *nl = ax->nl, (*Rm)[3] = ax->Rm;
     return x < 3 ? nl[x] : Rm[0][x - 3] * nl[0] + Rm[1][x - 3] * nl[1] + Rm[2][x - 3] * nl[2];
@@ -250,20 +328,47 @@ static inline dReal face_dot(const box_axes *ax, int x)
 // axes m; the ray t n leaves it at the least h(m) / (m . n) over the axes
 // facing n, h(m) = m . (p2 - p1) + radius1(m) + radius2(m) its support. The
 // ratio does not depend on the length of m, so axes stay unnormalised.
-static dReal box_clearance(const box_axes *ax)
+//
+// known is the exit along face axis known_axis (dInfinity and -1 if none):
+// that axis is not looked at again. h(m) is the overlap
+// along m plus 0 or 2 |m . (p2 - p1)|, and |m . n| <= 4 max|nl_i| for
+// every axis when the |Rm_ij| are at most 1.25: an axis whose overlap
+// exceeds 4 known max|nl_i| (plus the rounding of h, cut) exits later than
+// known and is not looked at. So is an edge axis e_i x Rm[.][j] whose
+// overlap exceeds 2 known max|nl_i| (|Rm_i1j| + |Rm_i2j|) (plus rounding),
+// a bound on its |m . n| that is small for (nearly) parallel edges. The
+// least exit is the same.
+static dReal box_clearance(const box_axes *ax, dReal known, int known_axis)
 {
-    const dReal *nl = ax->nl, (*Rm)[3] = ax->Rm;
-    dReal best = dInfinity;
+    const dReal *nl = ax->nl, (*Rm)[3] = ax->Rm, *over = ax->over;
+    dReal best = known, cut = dInfinity, rounding = 0, per_q = dInfinity;
+    if (ax->rotations && known < dInfinity) {
+        const dReal *T = ax->T, *a = ax->a, *b = ax->b;
+        dReal N = dFabs(nl[0]) > dFabs(nl[1]) ? dFabs(nl[0]) : dFabs(nl[1]);
+        if (dFabs(nl[2]) > N) N = dFabs(nl[2]);
+        dReal size = dFabs(T[0]) + dFabs(T[1]) + dFabs(T[2]) + a[0] + a[1] + a[2] + b[0] + b[1]
+                     + b[2];
+        rounding = 4 * BOX_EXIT_MARGIN * size;
+        cut = 4 * N * known + rounding;
+        per_q = 2 * N * known;
+    }
+#pragma GCC unroll 6
     for (int x = 0; x < 6; x++) {
+        if (x == known_axis || over[x] > cut) continue;
         dReal t = exit_along(ax, x, face_dot(ax, x));
         if (t < best) best = t;
     }
+#pragma GCC unroll 3
     for (int i = 0; i < 3; i++) {
         int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+#pragma GCC unroll 3
         for (int j = 0; j < 3; j++) {
+            int x = 6 + 3 * i + j;
+            if (over[x] > cut) continue;
+            if (over[x] - rounding > per_q * (dFabs(Rm[i1][j]) + dFabs(Rm[i2][j]))) continue;
             if (Rm[i1][j] * Rm[i1][j] + Rm[i2][j] * Rm[i2][j] <= DX_COLLIDE_EPS) continue;
             dReal s = Rm[i1][j] * nl[i2] - Rm[i2][j] * nl[i1];   // (e_i x Rm[.][j]) . n
-            dReal t = exit_along(ax, 6 + 3 * i + j, s);
+            dReal t = exit_along(ax, x, s);
             if (t < best) best = t;
         }
     }
@@ -280,33 +385,30 @@ static dReal box_clearance(const box_axes *ax)
 // through the faces of the contact's own axis (code), so when the deepest
 // point reaches that, the full clearance is not needed. normal is the
 // contact normal (into o1).
-static int box_face_contacts(const dReal *pr, const dReal *Rr, const dReal hr[3], int k,
-                             const dReal nf[3], const dReal *pi, const dReal *Ri,
-                             const dReal hi[3], const dReal normal[3], const box_axes *ax,
+static int box_face_contacts(const box_face *f, const dReal normal[3], const box_axes *ax,
                              int code, dxGeom *o1, dxGeom *o2, int max, dContactGeom *out,
                              int skip)
 {
-    dReal U1[3], U2[3], dots[3], rel[3] = { pi[0] - pr[0], pi[1] - pr[1], pi[2] - pr[2] };
-    dx_axis(Rr, (k + 1) % 3, U1);
-    dx_axis(Rr, (k + 2) % 3, U2);
-    clip_point a[16];
-    int n = box_clip_incident(hr, k, nf, U1, U2, rel, Ri, hi, dots, a);
-    for (int i = 0; i < 3; i++) rel[i] = -rel[i];
-    int kept = box_keep_overlapping(a, n, hr, k, nf, U1, U2, rel, Ri, hi, dots);
+    const dReal *pr = f->pr, *pi = f->pi, *U1 = f->U1, *U2 = f->U2, *nf = f->nf;
+    clip_point a[17];
+    int n = box_clip_incident(f, a);
+    dReal rel[3] = { pr[0] - pi[0], pr[1] - pi[1], pr[2] - pi[2] };
+    int kept = box_keep_overlapping(f, a, n, rel);
     if (kept == 0) {   // the separating axis says they overlap: find a point
         dReal pos[3];
-        box_overlap_point(pr, Rr, hr, pi, Ri, hi, pos);
-        dx_put_contact(out, 0, skip, pos, normal, box_clearance(ax), o1, o2);
+        box_overlap_point(pr, f->Rr, f->hr, pi, f->Ri, f->hi, pos);
+        dx_put_contact(out, 0, skip, pos, normal, box_clearance(ax, dInfinity, -1), o1, o2);
         return 1;
     }
-    dReal clear = a[0].depth < exit_along(ax, code, face_dot(ax, code)) ? box_clearance(ax)
-                                                                       : a[0].depth;
+    dReal own = exit_along(ax, code, face_dot(ax, code));
+    dReal clear = a[0].depth < own ? box_clearance(ax, own, code) : a[0].depth;
     if (kept > max) {
         cull_points(a, kept, max);
         kept = max;
     }
+    dReal hk = f->hk;
     for (int c = 0; c < kept; c++) {
-        dReal pos[3], up = hr[k] - a[c].depth + a[c].t;
+        dReal pos[3], up = hk - a[c].depth + a[c].t;
         for (int i = 0; i < 3; i++) pos[i] = pr[i] + a[c].x * U1[i] + a[c].y * U2[i] + up * nf[i];
         dReal depth = c == 0 && a[0].depth < clear ? clear : a[c].depth;
         dx_put_contact(out, c, skip, pos, normal, depth, o1, o2);
@@ -373,7 +475,7 @@ static void report_axis(const dReal normal[3], dReal depth, int code, dReal norm
 
 // Overlap of the boxes along face axis x (0-2: A_x, 3-5: B_(x-3)), and
 // box 2's offset along it (proj); box_box's names.
-static inline dReal face_overlap(int x, const dReal a[3], const dReal b[3], const dReal T[3],
+BOX_INLINE dReal face_overlap(int x, const dReal a[3], const dReal b[3], const dReal T[3],
                                  const dReal Rm[3][3], const dReal Q[3][3], dReal *proj)
 {
     if (x < 3) {
@@ -387,9 +489,8 @@ static inline dReal face_overlap(int x, const dReal a[3], const dReal b[3], cons
 
 // The same, unnormalised, along edge axis 6 + 3 i + j (A_i x B_j, in box
 // 1's frame e_i x Rm[.][j]).
-static inline dReal edge_overlap(int i, int j, const dReal a[3], const dReal b[3],
-                                 const dReal T[3], const dReal Rm[3][3], const dReal Q[3][3],
-                                 dReal *proj)
+BOX_INLINE dReal edge_overlap(int i, int j, const dReal a[3], const dReal b[3], const dReal T[3],
+                              const dReal Rm[3][3], const dReal Q[3][3], dReal *proj)
 {
     int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
     *proj = T[i2] * Rm[i1][j] - T[i1] * Rm[i2][j];
@@ -399,7 +500,7 @@ static inline dReal edge_overlap(int i, int j, const dReal a[3], const dReal b[3
 
 // An edge axis' length may vanish, so its overlap separates only below this
 // margin beyond rounding (or below 0 where the axis is well defined).
-static inline dReal edge_slack(int i, int j, const dReal a[3], const dReal b[3])
+BOX_INLINE dReal edge_slack(int i, int j, const dReal a[3], const dReal b[3])
 {
     return -BOX_AXIS_SLACK * (a[(i + 1) % 3] + a[(i + 2) % 3] + b[(j + 1) % 3] + b[(j + 2) % 3]);
 }
@@ -416,6 +517,19 @@ static int axis_parts(int x, const dReal a[3], const dReal b[3], const dReal T[3
     if (over < edge_slack(i, j, a, b)) return 1;
     dReal len2 = Rm[i1][j] * Rm[i1][j] + Rm[i2][j] * Rm[i2][j];
     return len2 > DX_COLLIDE_EPS && over / dSqrt(len2) < 0;
+}
+
+// Whether box_box's shortcuts may take R1 and R2 for rotations: every entry
+// of theirs and of Rm (its absolute values Q) at most 1.25 in magnitude.
+static int rotation_like(const dReal *R1, const dReal *R2, const dReal Q[3][3])
+{
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++) {
+            if (!(Q[i][j] <= 1.25 && dFabs(R1[4 * i + j]) <= 1.25 && dFabs(R2[4 * i + j]) <= 1.25))
+                return 0;
+        }
+    }
+    return 1;
 }
 
 // box_box's return when axis x parts the boxes: 0, with x noted in *apart.
@@ -437,11 +551,15 @@ static inline int apart_by(int x, int *apart)
 // *depth_out and the axis to *code_out, numbered as ODE 0.16's dBoxBox does:
 // 1-3 box 1's faces, 4-6 box 2's, 7 + 3 i + j the edge pair A_i x B_j.
 // Axis hint (0-14, or -1) is tried first; when an axis parts the boxes,
-// *apart gets it (left alone if the bounding spheres part them).
-static int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const dReal *p2,
-                   const dReal *R2, const dReal *s2, dxGeom *o1, dxGeom *o2, int flags,
-                   dContactGeom *out, int skip, int hint, int *apart, dReal normal_out[3],
-                   dReal *depth_out, int *code_out)
+// *apart gets it (left alone if the bounding spheres part them). trusted
+// says that the sides are >= 0 and R1, R2 rotations (orthonormal to
+// rounding), as box geoms keep them; dBoxBox's callers may pass anything,
+// and its shortcuts check what they need. Inlined in its two callers (no 17
+// arguments to pass per pair).
+BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const dReal *p2,
+                       const dReal *R2, const dReal *s2, int trusted, dxGeom *o1, dxGeom *o2,
+                       int flags, dContactGeom *out, int skip, int hint, int *apart,
+                       dReal normal_out[3], dReal *depth_out, int *code_out)
 {
     const dReal a[3] = { s1[0] / 2, s1[1] / 2, s1[2] / 2 };
     const dReal b[3] = { s2[0] / 2, s2[1] / 2, s2[2] / 2 };
@@ -459,35 +577,63 @@ static int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const dRea
             Q[i][j] = dFabs(Rm[i][j]);
         }
     }
-    // Overlap along each axis (< 0: apart), unnormalised for the edges.
+    // Overlap along each axis (< 0: apart), unnormalised for the edges. The
+    // loops are unrolled, so that the axes' indices are constants. An edge
+    // axis' slack is <= 0 for boxes of sides >= 0: a pair apart along it has
+    // an edge overlap < 0, and only then are the edges tested in turn.
     dReal over[15], proj[15];
     if (hint >= 0 && axis_parts(hint, a, b, T, Rm, Q)) return apart_by(hint, apart);
+#pragma GCC unroll 6
     for (int x = 0; x < 6; x++) {
         over[x] = face_overlap(x, a, b, T, Rm, Q, &proj[x]);
         if (over[x] < 0) return apart_by(x, apart);
     }
+    dReal lowest = 0;
+#pragma GCC unroll 3
     for (int i = 0; i < 3; i++) {
+#pragma GCC unroll 3
         for (int j = 0; j < 3; j++) {
             int x = 6 + 3 * i + j;
             over[x] = edge_overlap(i, j, a, b, T, Rm, Q, &proj[x]);
-            if (over[x] < edge_slack(i, j, a, b)) return apart_by(x, apart);
+            if (over[x] < lowest) lowest = over[x];
+        }
+    }
+    if (lowest < 0 || (!trusted && !(a[0] >= 0 && a[1] >= 0 && a[2] >= 0 && b[0] >= 0
+                                       && b[1] >= 0 && b[2] >= 0))) {
+        for (int i = 0; i < 3; i++) {
+            for (int j = 0; j < 3; j++) {
+                int x = 6 + 3 * i + j;
+                if (over[x] < edge_slack(i, j, a, b)) return apart_by(x, apart);
+            }
         }
     }
 
     int code = 0, edge = -1;
     for (int x = 1; x < 6; x++)
         if (over[x] < over[code]) code = x;
+    // An edge axis of overlap o (>= 0) and length len <= sqrt(2 * 1.25^2)
+    // (when every |Rm_ij| <= 1.25, as for rotations) has
+    // o / len >= o / 1.77 (to rounding), so with o >= 2 over[code] it
+    // cannot win against the faces (its o / len * BOX_EDGE_PREFERENCE stays
+    // >= over[code]), nor be apart: it is left out unnormalised.
     dReal best_edge = dInfinity, edge_len = 1;
-    for (int x = 6; x < 15; x++) {
-        int i = (x - 6) / 3, j = (x - 6) % 3, i1 = (i + 1) % 3, i2 = (i + 2) % 3;
-        dReal len2 = Rm[i1][j] * Rm[i1][j] + Rm[i2][j] * Rm[i2][j];
-        if (len2 <= DX_COLLIDE_EPS) continue;   // parallel edges: the faces cover them
-        dReal len = dSqrt(len2), o = over[x] / len;
-        if (o < 0) return apart_by(x, apart);   // apart after all, along a well-defined edge axis
-        if (o < best_edge) {
-            best_edge = o;
-            edge = x;
-            edge_len = len;
+    int rotations = trusted || rotation_like(R1, R2, Q);
+    dReal bound = rotations ? 2 * over[code] : dInfinity;
+#pragma GCC unroll 3
+    for (int i = 0; i < 3; i++) {
+#pragma GCC unroll 3
+        for (int j = 0; j < 3; j++) {
+            int x = 6 + 3 * i + j, i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+            if (over[x] >= bound) continue;
+            dReal len2 = Rm[i1][j] * Rm[i1][j] + Rm[i2][j] * Rm[i2][j];
+            if (len2 <= DX_COLLIDE_EPS) continue;   // parallel edges: the faces cover them
+            dReal len = dSqrt(len2), o = over[x] / len;
+            if (o < 0) return apart_by(x, apart);   // apart after all: a well-defined edge axis
+            if (o < best_edge) {
+                best_edge = o;
+                edge = x;
+                edge_len = len;
+            }
         }
     }
     dReal best = over[code];
@@ -496,28 +642,55 @@ static int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const dRea
         code = edge;
     }
     int max = dx_max_contacts(flags);
-    dReal normal[3], nf[3];
-    if (code < 3) {   // face of box 1: normal -sign(T_i) A_i
+    dReal normal[3];
+    if (code < 6) {
+        box_face f;
+        box_axes ax = { .Rm = Rm, .over = over, .proj = proj, .T = T, .a = a, .b = b,
+                        .rotations = rotations };
         dReal sg = proj[code] < 0 ? 1 : -1;
-        for (int q = 0; q < 3; q++) {
-            normal[q] = sg * R1[4 * q + code];
-            nf[q] = -normal[q];
+        if (code < 3) {   // face of box 1: normal -sign(T_k) A_k; C, c from Rm and T
+            int k = code, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+            f.pr = p1, f.Rr = R1, f.hr = a, f.pi = p2, f.Ri = R2, f.hi = b;
+            f.rotations = rotations;
+            f.hk = a[k], f.h1 = a[k1], f.h2 = a[k2];
+            for (int q = 0; q < 3; q++) {
+                normal[q] = sg * R1[4 * q + k];
+                f.nf[q] = -normal[q];
+            }
+            dx_axis(R1, k1, f.U1);
+            dx_axis(R1, k2, f.U2);
+            for (int m = 0; m < 3; m++) {
+                f.C[m][0] = Rm[k1][m];
+                f.C[m][1] = Rm[k2][m];
+                f.C[m][2] = -sg * Rm[k][m];
+                // B_m . (p1 - p2): T . Rm[.][m] is it for orthonormal R1
+                f.e[m] = trusted ? -proj[3 + m]
+                                 : -(R2[m] * d[0] + R2[4 + m] * d[1] + R2[8 + m] * d[2]);
+            }
+            f.c[0] = T[k1];
+            f.c[1] = T[k2];
+            f.c[2] = -sg * T[k];
+        } else {   // face of box 2: normal sign(B_k . T) B_k; C from Rm
+            int k = code - 3, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+            f.pr = p2, f.Rr = R2, f.hr = b, f.pi = p1, f.Ri = R1, f.hi = a;
+            f.rotations = rotations;
+            f.hk = b[k], f.h1 = b[k1], f.h2 = b[k2];
+            for (int q = 0; q < 3; q++) normal[q] = f.nf[q] = sg * R2[4 * q + k];
+            dx_axis(R2, k1, f.U1);
+            dx_axis(R2, k2, f.U2);
+            for (int m = 0; m < 3; m++) {
+                f.C[m][0] = Rm[m][k1];
+                f.C[m][1] = Rm[m][k2];
+                f.C[m][2] = sg * Rm[m][k];
+                f.e[m] = T[m];
+            }
+            f.c[0] = -dx_dot(d, f.U1);
+            f.c[1] = -dx_dot(d, f.U2);
+            f.c[2] = -dx_dot(d, f.nf);
         }
-        box_axes ax = { .Rm = Rm, .over = over, .proj = proj };
         dx_to_local(R1, normal, ax.nl);
         report_axis(normal, best, code, normal_out, depth_out, code_out);
-        return box_face_contacts(p1, R1, a, code, nf, p2, R2, b, normal, &ax, code, o1, o2, max,
-                                 out, skip);
-    }
-    if (code < 6) {   // face of box 2
-        int j = code - 3;
-        dReal sg = proj[code] < 0 ? 1 : -1;
-        for (int q = 0; q < 3; q++) normal[q] = nf[q] = sg * R2[4 * q + j];
-        box_axes ax = { .Rm = Rm, .over = over, .proj = proj };
-        dx_to_local(R1, normal, ax.nl);
-        report_axis(normal, best, code, normal_out, depth_out, code_out);
-        return box_face_contacts(p2, R2, b, j, nf, p1, R1, a, normal, &ax, code, o1, o2, max,
-                                 out, skip);
+        return box_face_contacts(&f, normal, &ax, code, o1, o2, max, out, skip);
     }
     int i = (code - 6) / 3, j = (code - 6) % 3;
     dReal Ai[3], Bj[3];
@@ -550,7 +723,7 @@ int dxCollideBoxBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int sk
     dxBoxAxisHint *e = find_hint(b1, o2);
     dReal normal[3], depth;
     int code, apart = -1;
-    int n = box_box(o1->pos, o1->R, b1->side, o2->pos, o2->R, ((dxBox *)o2)->side, o1, o2, flags,
+    int n = box_box(o1->pos, o1->R, b1->side, o2->pos, o2->R, ((dxBox *)o2)->side, 1, o1, o2, flags,
                     out, skip, e ? e->axis : -1, &apart, normal, &depth, &code);
     if (apart >= 0 && !(e && e->axis == apart)) {
         if (!e) {
@@ -579,7 +752,7 @@ int dBoxBox(const dVector3 p1, const dMatrix3 R1, const dVector3 side1, const dV
     dReal n[3] = { 0, 0, 0 }, d = 0;
     int code = -1;
     int apart;
-    int count = box_box(p1, R1, side1, p2, R2, side2, NULL, NULL, flags, contact, skip, -1,
+    int count = box_box(p1, R1, side1, p2, R2, side2, 0, NULL, NULL, flags, contact, skip, -1,
                         &apart, n, &d, &code);
     *return_code = count > 0 ? code + 1 : 0;
     *depth = count > 0 ? d : 0;
