@@ -81,7 +81,6 @@ typedef struct dxHashSpace {
     dxSpace s;
     int minlevel, maxlevel;
     int stale;                    // the cells may no longer describe the geoms
-    int relevel;                  // the levels changed: place every geom afresh
     int walking;                  // > 0 while a collision walks the cells
     hash_slot *slots;
     int slots_cap, n_slots, free_slot;   // allocated, ever used, first free (-1 if none)
@@ -265,15 +264,6 @@ static void sort_nodes(dxHashSpace *hs)
 static void hash_update(dxHashSpace *hs)
 {
     const dxSpace *s = &hs->s;
-    if (hs->relevel) {
-        dxHashCellsClear(&hs->cells);
-        for (int si = 0; si < hs->n_slots; si++) {
-            if (hs->slots[si].state == SLOT_FREE) continue;
-            hs->slots[si].state = SLOT_NEW;
-            hs->slots[si].n = 0;
-        }
-        hs->relevel = 0;
-    }
     hs->placed = grow(hs->placed, &hs->placed_cap, s->count, sizeof *hs->placed);
     hs->big = grow(hs->big, &hs->big_cap, s->count, sizeof *hs->big);
     hs->n_nodes = hs->n_big = hs->n_levels = 0;
@@ -505,7 +495,6 @@ void dHashSpaceSetLevels(dSpaceID s, int minlevel, int maxlevel)
     dxHashSpace *hs = (dxHashSpace *)s;
     hs->minlevel = minlevel;
     hs->maxlevel = maxlevel;
-    hs->relevel = 1;
     hs->stale = 1;
 }
 

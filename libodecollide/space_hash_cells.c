@@ -126,13 +126,6 @@ void dxHashCellsUnlink(dxHashCells *hc, int e)
     hc->live--;
 }
 
-void dxHashCellsClear(dxHashCells *hc)
-{
-    hc->cells_used = hc->live = 0;
-    hc->free_cell = -1;
-    for (int b = 0; hc->mask && b <= hc->mask; b++) hc->buckets[b] = -1;
-}
-
 void dxHashCellsFree(dxHashCells *hc)
 {
     dFree(hc->entries, (size_t)hc->entries_cap * sizeof *hc->entries);

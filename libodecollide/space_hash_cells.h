@@ -54,8 +54,6 @@ int dxHashCellsFind(const dxHashCells *hc, int level, const int64_t c[3]);
 void dxHashCellsLink(dxHashCells *hc, int e, int level, const int64_t c[3]);
 // Take entry e out of its cell (freeing the cell if it empties).
 void dxHashCellsUnlink(dxHashCells *hc, int e);
-// Forget every cell (the entries' memory is kept).
-void dxHashCellsClear(dxHashCells *hc);
 void dxHashCellsFree(dxHashCells *hc);
 
 #endif
