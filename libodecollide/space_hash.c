@@ -77,15 +77,26 @@ typedef struct hash_slot {
     int64_t lo[3], hi[3];
 } hash_slot;
 
+// Where a geom goes at the next update: its level and cells, unless big;
+// whether that differs from where it is, and whether its level does.
+typedef struct hash_place {
+    int placed, level;
+    int moved, relevelled;
+    int64_t lo[3], hi[3];
+} hash_place;
+
 typedef struct dxHashSpace {
     dxSpace s;
     int minlevel, maxlevel;
     int stale;                    // the cells may no longer describe the geoms
+    int members_changed;          // geoms came or went since the last update
     int walking;                  // > 0 while a collision walks the cells
     hash_slot *slots;
     int slots_cap, n_slots, free_slot;   // allocated, ever used, first free (-1 if none)
     int *slot_of;                 // the slot of s->geoms[i]
     int slot_of_cap;
+    hash_place *next;             // where s->geoms[i] goes (scratch of hash_update)
+    int next_cap;
     dxHashCells cells;
     hash_node *nodes, *placed;    // placed geoms by level / in space order
     int nodes_cap, placed_cap, n_nodes;
@@ -214,8 +225,10 @@ static void unplace(dxHashSpace *hs, int si)
 }
 
 // Record the geom of slot si in the cells lo..hi of `level` (at most two per
-// axis: its AABB is no longer than the cells' side).
-static void place(dxHashSpace *hs, int si, int level, const int64_t lo[3], const int64_t hi[3])
+// axis: its AABB is no longer than the cells' side); `latest`: the cells are
+// being filled in space order, so it goes first in each.
+static void place(dxHashSpace *hs, int si, int level, const int64_t lo[3], const int64_t hi[3],
+                  int latest)
 {
     unplace(hs, si);
     hash_slot *sl = &hs->slots[si];
@@ -230,15 +243,16 @@ static void place(dxHashSpace *hs, int si, int level, const int64_t lo[3], const
                 const int e = si * PER_GEOM + sl->n++;
                 hs->cells.entries[e].g = sl->g;
                 hs->cells.entries[e].lowest = lowest_bits(c, lo);
-                dxHashCellsLink(&hs->cells, e, level, c);
+                if (latest) dxHashCellsPushFresh(&hs->cells, e, level, c);
+                else dxHashCellsLink(&hs->cells, e, level, c);
             }
 }
 
-static int same_place(const hash_slot *sl, int level, const int64_t lo[3], const int64_t hi[3])
+static int same_place(const hash_slot *sl, const hash_place *p)
 {
-    return sl->state == SLOT_PLACED && sl->level == level && sl->lo[0] == lo[0] &&
-           sl->lo[1] == lo[1] && sl->lo[2] == lo[2] && sl->hi[0] == hi[0] &&
-           sl->hi[1] == hi[1] && sl->hi[2] == hi[2];
+    return sl->state == SLOT_PLACED && sl->level == p->level && sl->lo[0] == p->lo[0] &&
+           sl->lo[1] == p->lo[1] && sl->lo[2] == p->lo[2] && sl->hi[0] == p->hi[0] &&
+           sl->hi[1] == p->hi[1] && sl->hi[2] == p->hi[2];
 }
 
 // Sort the placed geoms into nodes by level (counting sort over the levels).
@@ -259,9 +273,8 @@ static void sort_nodes(dxHashSpace *hs)
     }
 }
 
-// Bring the cells up to date with the geoms' boxes: move the geoms whose
-// level or cells changed, and list the big geoms and the placed ones by level.
-static void hash_update(dxHashSpace *hs)
+// List the big geoms in space order, and the placed ones by level.
+static void list_geoms(dxHashSpace *hs)
 {
     const dxSpace *s = &hs->s;
     hs->placed = grow(hs->placed, &hs->placed_cap, s->count, sizeof *hs->placed);
@@ -269,23 +282,64 @@ static void hash_update(dxHashSpace *hs)
     hs->n_nodes = hs->n_big = hs->n_levels = 0;
     int last = 0;
     for (int i = 0; i < s->count; i++) {
-        const int si = hs->slot_of[i];
-        hash_slot *sl = &hs->slots[si];
-        int level;
-        int64_t lo[3], hi[3];
-        if (!geom_level(hs, sl->g->aabb, &level, lo, hi)) {
-            unplace(hs, si);
-            sl->state = SLOT_BIG;
+        const hash_slot *sl = &hs->slots[hs->slot_of[i]];
+        if (sl->state == SLOT_BIG) {
             hs->big[hs->n_big++] = sl->g;
             continue;
         }
-        if (!same_place(sl, level, lo, hi)) place(hs, si, level, lo, hi);
-        hs->placed[hs->n_nodes++] = (hash_node){ sl->g, level };
-        const int li = level_index_near(hs, level, &last);   // may move hs->levels
+        hs->placed[hs->n_nodes++] = (hash_node){ sl->g, sl->level };
+        const int li = level_index_near(hs, sl->level, &last);   // may move hs->levels
         hs->levels[li].count++;
     }
     sort_nodes(hs);
+}
+
+// Bring the cells up to date with the geoms' boxes. Only geoms whose level
+// or cells changed are moved (an unlink and a link per cell: a hash lookup
+// each); when that is more than a third of them (a scene in motion), the
+// cells are emptied and every geom is linked afresh in space order instead
+// (each entry first in its cell: nothing to unlink, no list to walk).
+// Either way the cells list the same geoms in the same order. The lists of
+// geoms by level change only when a level or the membership did.
+static void hash_update(dxHashSpace *hs)
+{
+    const dxSpace *s = &hs->s;
+    hs->next = grow(hs->next, &hs->next_cap, s->count, sizeof *hs->next);
+    int n_placed = 0, n_entries = 0, moved = 0, relevelled = hs->members_changed;
+    for (int i = 0; i < s->count; i++) {
+        hash_place *p = &hs->next[i];
+        const hash_slot *sl = &hs->slots[hs->slot_of[i]];
+        p->placed = geom_level(hs, sl->g->aabb, &p->level, p->lo, p->hi);
+        if (p->placed) {
+            n_placed++;
+            n_entries += (int)cell_count(p->lo, p->hi);
+            p->moved = !same_place(sl, p);
+            p->relevelled = sl->state != SLOT_PLACED || sl->level != p->level;
+        } else {
+            p->moved = p->relevelled = sl->state != SLOT_BIG;
+        }
+        moved += p->moved;
+        relevelled += p->relevelled;
+    }
     hs->stale = 0;
+    if (!moved && !relevelled) return;
+    const int afresh = 3 * moved > n_placed;
+    if (afresh) dxHashCellsRestart(&hs->cells, n_entries);
+    for (int i = 0; i < s->count; i++) {
+        const hash_place *p = &hs->next[i];
+        if (!afresh && !p->moved) continue;
+        const int si = hs->slot_of[i];
+        hash_slot *sl = &hs->slots[si];
+        if (afresh) sl->n = 0;   // (the cells forgot its entries)
+        if (p->placed) {
+            place(hs, si, p->level, p->lo, p->hi, afresh);
+        } else {
+            unplace(hs, si);
+            sl->state = SLOT_BIG;
+        }
+    }
+    if (relevelled) list_geoms(hs);
+    hs->members_changed = 0;
 }
 
 // Make the cells current; 0 if they are stale but an outer collision of
@@ -419,7 +473,7 @@ static void hash_added(dxSpace *s, dxGeom *g)
     hs->slots[si] = (hash_slot){ .g = g, .state = SLOT_NEW, .next_free = -1 };
     hs->slot_of = grow(hs->slot_of, &hs->slot_of_cap, s->count, sizeof *hs->slot_of);
     hs->slot_of[g->space_index] = si;
-    hs->stale = 1;
+    hs->stale = hs->members_changed = 1;
 }
 
 // A geom is leaving the space: out of its cells, its slot freed, the later
@@ -433,7 +487,7 @@ static void hash_removed(dxSpace *s, dxGeom *g)
     hs->free_slot = si;
     memmove(&hs->slot_of[at], &hs->slot_of[at + 1],
             (size_t)(s->count - 1 - at) * sizeof *hs->slot_of);
-    hs->stale = 1;
+    hs->stale = hs->members_changed = 1;
 }
 
 static void hash_destroy(dxSpace *s)
@@ -441,6 +495,7 @@ static void hash_destroy(dxSpace *s)
     dxHashSpace *hs = (dxHashSpace *)s;
     dFree(hs->slots, (size_t)hs->slots_cap * sizeof *hs->slots);
     dFree(hs->slot_of, (size_t)hs->slot_of_cap * sizeof *hs->slot_of);
+    dFree(hs->next, (size_t)hs->next_cap * sizeof *hs->next);
     dxHashCellsFree(&hs->cells);
     dFree(hs->nodes, (size_t)hs->nodes_cap * sizeof *hs->nodes);
     dFree(hs->placed, (size_t)hs->placed_cap * sizeof *hs->placed);

@@ -21,23 +21,6 @@ static void *grow(void *p, int *cap, int need, size_t size)
     return p;
 }
 
-// Multiply-xor hash of a cell, mixed so that neighbouring cells spread.
-static unsigned cell_bucket(int level, const int64_t c[3], int mask)
-{
-    uint64_t h = (uint64_t)c[0] * 0x9E3779B97F4A7C15u ^ (uint64_t)c[1] * 0xC2B2AE3D27D4EB4Fu ^
-                 (uint64_t)c[2] * 0x165667B19E3779F9u ^
-                 (uint64_t)(int64_t)level * 0x27D4EB2F165667C5u;
-    h ^= h >> 31;
-    h *= 0xBF58476D1CE4E5B9u;
-    h ^= h >> 29;
-    return (unsigned)h & (unsigned)mask;
-}
-
-static int same_cell(const dxHashCell *cell, int level, const int64_t c[3])
-{
-    return cell->level == level && cell->c[0] == c[0] && cell->c[1] == c[1] && cell->c[2] == c[2];
-}
-
 // Spread the cells in use over `n` buckets (a power of two).
 static void rebucket(dxHashCells *hc, int n)
 {
@@ -46,11 +29,11 @@ static void rebucket(dxHashCells *hc, int n)
         hc->buckets = dRealloc(hc->buckets, old, (size_t)n * sizeof *hc->buckets);
         hc->mask = n - 1;
     }
-    for (int b = 0; b <= hc->mask; b++) hc->buckets[b] = -1;
+    memset(hc->buckets, 0xff, (size_t)n * sizeof *hc->buckets);   // all -1
     for (int i = 0; i < hc->cells_used; i++) {
         dxHashCell *cell = &hc->cells[i];
         if (cell->head < 0) continue;
-        unsigned b = cell_bucket(cell->level, cell->c, hc->mask);
+        unsigned b = dxHashCellBucket(cell->level, cell->c, hc->mask);
         cell->next = hc->buckets[b];
         hc->buckets[b] = i;
     }
@@ -68,21 +51,9 @@ void dxHashCellsReserve(dxHashCells *hc, int slots)
                        sizeof *hc->entries);
 }
 
-int dxHashCellsFind(const dxHashCells *hc, int level, const int64_t c[3])
+int dxHashCellsAdd(dxHashCells *hc, int level, const int64_t c[3])
 {
-    if (!hc->mask) return -1;
-    for (int i = hc->buckets[cell_bucket(level, c, hc->mask)]; i >= 0; i = hc->cells[i].next)
-        if (same_cell(&hc->cells[i], level, c)) return hc->cells[i].head;
-    return -1;
-}
-
-// The record of cell (level, c), made (empty) if there is none.
-static int cell_record(dxHashCells *hc, int level, const int64_t c[3])
-{
-    if (!hc->mask) rebucket(hc, 64);
-    unsigned b = cell_bucket(level, c, hc->mask);
-    for (int i = hc->buckets[b]; i >= 0; i = hc->cells[i].next)
-        if (same_cell(&hc->cells[i], level, c)) return i;
+    if (2 * (hc->live + 1) > hc->mask + 1) rebucket(hc, hc->mask ? 2 * (hc->mask + 1) : 64);
     int i = hc->free_cell;
     if (i >= 0) {
         hc->free_cell = hc->cells[i].next;
@@ -90,6 +61,7 @@ static int cell_record(dxHashCells *hc, int level, const int64_t c[3])
         hc->cells = grow(hc->cells, &hc->cells_cap, hc->cells_used + 1, sizeof *hc->cells);
         i = hc->cells_used++;
     }
+    const unsigned b = dxHashCellBucket(level, c, hc->mask);
     hc->cells[i] = (dxHashCell){ { c[0], c[1], c[2] }, level, -1, hc->buckets[b] };
     hc->buckets[b] = i;
     hc->live++;
@@ -98,7 +70,8 @@ static int cell_record(dxHashCells *hc, int level, const int64_t c[3])
 
 void dxHashCellsLink(dxHashCells *hc, int e, int level, const int64_t c[3])
 {
-    int ci = cell_record(hc, level, c);
+    int ci = dxHashCellsLookup(hc, level, c);
+    if (ci < 0) ci = dxHashCellsAdd(hc, level, c);
     dxHashEntry *en = hc->entries;
     const int order = en[e].g->space_index;
     int *p = &hc->cells[ci].head;
@@ -106,7 +79,6 @@ void dxHashCellsLink(dxHashCells *hc, int e, int level, const int64_t c[3])
     en[e].next = *p;
     en[e].cell = ci;
     *p = e;
-    if (2 * hc->live > hc->mask + 1) rebucket(hc, 2 * (hc->mask + 1));
 }
 
 void dxHashCellsUnlink(dxHashCells *hc, int e)
@@ -118,12 +90,22 @@ void dxHashCellsUnlink(dxHashCells *hc, int e)
     while (*p != e) p = &en[*p].next;
     *p = en[e].next;
     if (cell->head >= 0) return;
-    int *q = &hc->buckets[cell_bucket(cell->level, cell->c, hc->mask)];
+    int *q = &hc->buckets[dxHashCellBucket(cell->level, cell->c, hc->mask)];
     while (*q != ci) q = &hc->cells[*q].next;
     *q = cell->next;
     cell->next = hc->free_cell;
     hc->free_cell = ci;
     hc->live--;
+}
+
+void dxHashCellsRestart(dxHashCells *hc, int entries)
+{
+    hc->cells_used = hc->live = 0;
+    hc->free_cell = -1;
+    hc->cells = grow(hc->cells, &hc->cells_cap, entries, sizeof *hc->cells);
+    int n = hc->mask ? hc->mask + 1 : 64;
+    while (n < 2 * entries) n *= 2;
+    rebucket(hc, n);   // (no cell in use: all buckets empty)
 }
 
 void dxHashCellsFree(dxHashCells *hc)
