@@ -69,12 +69,16 @@ enum { SLOT_FREE, SLOT_NEW, SLOT_BIG, SLOT_PLACED };
 
 // A geom of the space: its cells lo..hi at `level` (PLACED), recorded in
 // its entries cells.entries[slot * PER_GEOM ..][0 .. n).
+// What keeps it there without computing its cells afresh: the scale
+// 2^-level, lo and hi as doubles, and the bounds of the longest side of its
+// box at this level, (side_lo, side_hi] (NaN: never kept).
 typedef struct hash_slot {
     dxGeom *g;
     int state;
     int level, n;
     int next_free;                // the next free slot (FREE)
     int64_t lo[3], hi[3];
+    double scale, lo_d[3], hi_d[3], side_lo, side_hi;
 } hash_slot;
 
 // Where a geom goes at the next update: its level and cells, unless big;
@@ -90,6 +94,7 @@ typedef struct dxHashSpace {
     int minlevel, maxlevel;
     int stale;                    // the cells may no longer describe the geoms
     int members_changed;          // geoms came or went since the last update
+    int levels_changed;           // dHashSpaceSetLevels since the last update
     int walking;                  // > 0 while a collision walks the cells
     hash_slot *slots;
     int slots_cap, n_slots, free_slot;   // allocated, ever used, first free (-1 if none)
@@ -236,6 +241,14 @@ static void place(dxHashSpace *hs, int si, int level, const int64_t lo[3], const
     sl->level = level;
     memcpy(sl->lo, lo, sizeof sl->lo);
     memcpy(sl->hi, hi, sizeof sl->hi);
+    sl->scale = level_scale(level);
+    for (int k = 0; k < 3; k++) {
+        sl->lo_d[k] = (double)lo[k];
+        sl->hi_d[k] = (double)hi[k];
+    }
+    const int exact = level > -1000 && level < 1000;   // 2^level, 2^(level-1) are doubles
+    sl->side_lo = level == hs->minlevel ? -1.0 : ldexp(1.0, level - 1);
+    sl->side_hi = exact ? ldexp(1.0, level) : NAN;
     for (int64_t i = lo[0]; i <= hi[0]; i++)
         for (int64_t j = lo[1]; j <= hi[1]; j++)
             for (int64_t k = lo[2]; k <= hi[2]; k++) {
@@ -246,6 +259,23 @@ static void place(dxHashSpace *hs, int si, int level, const int64_t lo[3], const
                 if (latest) dxHashCellsPushFresh(&hs->cells, e, level, c);
                 else dxHashCellsLink(&hs->cells, e, level, c);
             }
+}
+
+// 1 if the box b gives the placed geom of slot sl the level and cells it
+// has: what geom_level would find (the same products, compared with the
+// cells' bounds instead of floored), at less cost.
+static int keeps_place(const hash_slot *sl, const dReal *b)
+{
+    double side = 0;
+    for (int k = 0; k < 3; k++) {
+        const double d = (double)b[2 * k + 1] - (double)b[2 * k];
+        if (!(d >= 0)) return 0;
+        if (d > side) side = d;
+        const double lo = b[2 * k] * sl->scale, hi = b[2 * k + 1] * sl->scale;
+        if (!(lo >= sl->lo_d[k] && lo < sl->lo_d[k] + 1)) return 0;
+        if (!(hi >= sl->hi_d[k] && hi < sl->hi_d[k] + 1)) return 0;
+    }
+    return side > sl->side_lo && side <= sl->side_hi;
 }
 
 static int same_place(const hash_slot *sl, const hash_place *p)
@@ -309,6 +339,13 @@ static void hash_update(dxHashSpace *hs)
     for (int i = 0; i < s->count; i++) {
         hash_place *p = &hs->next[i];
         const hash_slot *sl = &hs->slots[hs->slot_of[i]];
+        if (sl->state == SLOT_PLACED && !hs->levels_changed && keeps_place(sl, sl->g->aabb)) {
+            *p = (hash_place){ 1, sl->level, 0, 0, { sl->lo[0], sl->lo[1], sl->lo[2] },
+                               { sl->hi[0], sl->hi[1], sl->hi[2] } };
+            n_placed++;
+            n_entries += sl->n;
+            continue;
+        }
         p->placed = geom_level(hs, sl->g->aabb, &p->level, p->lo, p->hi);
         if (p->placed) {
             n_placed++;
@@ -321,7 +358,7 @@ static void hash_update(dxHashSpace *hs)
         moved += p->moved;
         relevelled += p->relevelled;
     }
-    hs->stale = 0;
+    hs->stale = hs->levels_changed = 0;
     if (!moved && !relevelled) return;
     const int afresh = 3 * moved > n_placed;
     if (afresh) dxHashCellsRestart(&hs->cells, n_entries);
@@ -550,7 +587,7 @@ void dHashSpaceSetLevels(dSpaceID s, int minlevel, int maxlevel)
     dxHashSpace *hs = (dxHashSpace *)s;
     hs->minlevel = minlevel;
     hs->maxlevel = maxlevel;
-    hs->stale = 1;
+    hs->stale = hs->levels_changed = 1;
 }
 
 void dHashSpaceGetLevels(dSpaceID s, int *minlevel, int *maxlevel)
