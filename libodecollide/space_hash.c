@@ -95,6 +95,8 @@ typedef struct dxHashSpace {
     int stale;                    // the cells may no longer describe the geoms
     int members_changed;          // geoms came or went since the last update
     int levels_changed;           // dHashSpaceSetLevels since the last update
+    int afresh;                   // the last update linked every geom afresh (most moved:
+                                  // the next checks no geom's cell bounds first)
     int walking;                  // > 0 while a collision walks the cells
     hash_slot *slots;
     int slots_cap, n_slots, free_slot;   // allocated, ever used, first free (-1 if none)
@@ -247,8 +249,8 @@ static void place(dxHashSpace *hs, int si, int level, const int64_t lo[3], const
         sl->hi_d[k] = (double)hi[k];
     }
     const int exact = level > -1000 && level < 1000;   // 2^level, 2^(level-1) are doubles
-    sl->side_lo = level == hs->minlevel ? -1.0 : ldexp(1.0, level - 1);
-    sl->side_hi = exact ? ldexp(1.0, level) : NAN;
+    sl->side_lo = level == hs->minlevel ? -1.0 : level_scale(1 - level);
+    sl->side_hi = exact ? level_scale(-level) : NAN;
     for (int64_t i = lo[0]; i <= hi[0]; i++)
         for (int64_t j = lo[1]; j <= hi[1]; j++)
             for (int64_t k = lo[2]; k <= hi[2]; k++) {
@@ -339,7 +341,8 @@ static void hash_update(dxHashSpace *hs)
     for (int i = 0; i < s->count; i++) {
         hash_place *p = &hs->next[i];
         const hash_slot *sl = &hs->slots[hs->slot_of[i]];
-        if (sl->state == SLOT_PLACED && !hs->levels_changed && keeps_place(sl, sl->g->aabb)) {
+        if (sl->state == SLOT_PLACED && !hs->levels_changed && !hs->afresh &&
+            keeps_place(sl, sl->g->aabb)) {
             *p = (hash_place){ 1, sl->level, 0, 0, { sl->lo[0], sl->lo[1], sl->lo[2] },
                                { sl->hi[0], sl->hi[1], sl->hi[2] } };
             n_placed++;
@@ -358,9 +361,9 @@ static void hash_update(dxHashSpace *hs)
         moved += p->moved;
         relevelled += p->relevelled;
     }
-    hs->stale = hs->levels_changed = 0;
+    hs->stale = hs->levels_changed = hs->afresh = 0;
     if (!moved && !relevelled) return;
-    const int afresh = 3 * moved > n_placed;
+    const int afresh = hs->afresh = 3 * moved > n_placed;
     if (afresh) dxHashCellsRestart(&hs->cells, n_entries);
     for (int i = 0; i < s->count; i++) {
         const hash_place *p = &hs->next[i];

@@ -33,9 +33,9 @@ static void rebucket(dxHashCells *hc, int n)
     for (int i = 0; i < hc->cells_used; i++) {
         dxHashCell *cell = &hc->cells[i];
         if (cell->head < 0) continue;
-        unsigned b = dxHashCellBucket(cell->level, cell->c, hc->mask);
-        cell->next = hc->buckets[b];
-        hc->buckets[b] = i;
+        cell->bucket = (int)dxHashCellBucket(cell->level, cell->c, hc->mask);
+        cell->next = hc->buckets[cell->bucket];
+        hc->buckets[cell->bucket] = i;
     }
 }
 
@@ -62,7 +62,7 @@ int dxHashCellsAdd(dxHashCells *hc, int level, const int64_t c[3])
         i = hc->cells_used++;
     }
     const unsigned b = dxHashCellBucket(level, c, hc->mask);
-    hc->cells[i] = (dxHashCell){ { c[0], c[1], c[2] }, level, -1, hc->buckets[b] };
+    hc->cells[i] = (dxHashCell){ { c[0], c[1], c[2] }, level, -1, hc->buckets[b], (int)b };
     hc->buckets[b] = i;
     hc->live++;
     return i;
@@ -90,7 +90,7 @@ void dxHashCellsUnlink(dxHashCells *hc, int e)
     while (*p != e) p = &en[*p].next;
     *p = en[e].next;
     if (cell->head >= 0) return;
-    int *q = &hc->buckets[dxHashCellBucket(cell->level, cell->c, hc->mask)];
+    int *q = &hc->buckets[cell->bucket];
     while (*q != ci) q = &hc->cells[*q].next;
     *q = cell->next;
     cell->next = hc->free_cell;
@@ -100,12 +100,20 @@ void dxHashCellsUnlink(dxHashCells *hc, int e)
 
 void dxHashCellsRestart(dxHashCells *hc, int entries)
 {
-    hc->cells_used = hc->live = 0;
-    hc->free_cell = -1;
-    hc->cells = grow(hc->cells, &hc->cells_cap, entries, sizeof *hc->cells);
     int n = hc->mask ? hc->mask + 1 : 64;
     while (n < 2 * entries) n *= 2;
-    rebucket(hc, n);   // (no cell in use: all buckets empty)
+    if (n > hc->mask + 1) {
+        hc->cells_used = 0;
+        rebucket(hc, n);   // (no cell in use: all buckets empty)
+    } else {
+        // Empty only the buckets in use.
+        for (int i = 0; i < hc->cells_used; i++)
+            if (hc->cells[i].head >= 0) hc->buckets[hc->cells[i].bucket] = -1;
+        hc->cells_used = 0;
+    }
+    hc->live = 0;
+    hc->free_cell = -1;
+    hc->cells = grow(hc->cells, &hc->cells_cap, entries, sizeof *hc->cells);
 }
 
 void dxHashCellsFree(dxHashCells *hc)

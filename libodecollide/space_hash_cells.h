@@ -31,6 +31,7 @@ typedef struct dxHashCell {
     int level;
     int head;          // first entry (latest in space order); -1 for a free record
     int next;          // next cell of the same bucket, or next free record
+    int bucket;        // its bucket
 } dxHashCell;
 
 typedef struct dxHashCells {
@@ -107,7 +108,7 @@ static inline void dxHashCellsPushFresh(dxHashCells *hc, int e, int level, const
         ci = hc->cells_used++;
         hc->live++;
         cell = &hc->cells[ci];
-        *cell = (dxHashCell){ { c[0], c[1], c[2] }, level, -1, hc->buckets[b] };
+        *cell = (dxHashCell){ { c[0], c[1], c[2] }, level, -1, hc->buckets[b], (int)b };
         hc->buckets[b] = ci;
     }
     hc->entries[e].next = cell->head;
