@@ -244,7 +244,9 @@ int dxGeomsMayTouch(dxGeom *a, dxGeom *b)
     if (!(a->flags & b->flags & DX_GEOM_ENABLED)) return 0;
     if (a != b && a->body && a->body == b->body) return 0;
     if (!(a->category_bits & b->collide_bits) && !(b->category_bits & a->collide_bits)) return 0;
-    return aabbs_overlap(a->aabb, b->aabb) && dxUserAABBTest(a, b);
+    if (!aabbs_overlap(a->aabb, b->aabb)) return 0;
+    // Only user classes have a box test of their own.
+    return (a->ops->cls < dFirstUserClass && b->ops->cls < dFirstUserClass) || dxUserAABBTest(a, b);
 }
 
 void dxSpaceTestPair(dxGeom *a, dxGeom *b, void *data, dNearCallback *cb)

@@ -21,12 +21,19 @@
 // arithmetic on the boxes.) Spread-out geoms meet only
 // their neighbours: time near-linear in their number.
 //
-// The table is rebuilt when the space's bounding boxes were recomputed
-// (something in it moved, came or went), so dSpaceCollide2 against the space
-// reuses it geom after geom. Its arrays live in the space and grow
-// geometrically: a steady state allocates nothing.
+// The cells are kept from one collision to the next (space_hash_cells.c):
+// when the space's bounding boxes were recomputed (something in it moved,
+// came or went), each geom's level and cell range are compared with those it
+// is recorded under, and only a geom whose range changed is moved to its new
+// cells. A cell lists its geoms latest in space order first, so the pairs
+// come in the same order as from a table built afresh from the geoms in space
+// order: the order is a function of the geoms and their boxes, never of how
+// they got there. The update is skipped while a collision of the space walks
+// the cells; dSpaceCollide2 against the space reuses them geom after geom.
+// Arrays grow geometrically: a steady state allocates nothing.
 
 #include "geom_internal.h"
+#include "space_hash_cells.h"
 
 #include <float.h>
 #include <math.h>
@@ -37,15 +44,8 @@
 // |cell index| below this is exact in a double and fits an int64_t.
 #define CELL_LIMIT 4503599627370496.0   // 2^52
 
-typedef struct hash_entry {
-    int64_t cell[3];
-    int level;
-    int next;          // next entry of the same bucket, -1 at the end
-    dxGeom *g;
-    unsigned lowest;   // bit k: cell[k] is the geom's lowest cell on axis k
-} hash_entry;
-
 #define ALL_AXES 7u
+#define PER_GEOM DX_HASH_CELLS_PER_GEOM
 
 // Bit k set where cell c is the lowest of the range lo on axis k.
 static unsigned lowest_bits(const int64_t c[3], const int64_t lo[3])
@@ -64,19 +64,51 @@ typedef struct hash_level {
     int level, start, count;
 } hash_level;
 
+// What a geom of the space is recorded as.
+enum { SLOT_FREE, SLOT_NEW, SLOT_BIG, SLOT_PLACED };
+
+// A geom of the space: its cells lo..hi at `level` (PLACED), recorded in
+// its entries cells.entries[slot * PER_GEOM ..][0 .. n).
+// What keeps it there without computing its cells afresh: the scale
+// 2^-level, lo and hi as doubles, and the bounds of the longest side of its
+// box at this level, (side_lo, side_hi] (NaN: never kept).
+typedef struct hash_slot {
+    dxGeom *g;
+    int state;
+    int level, n;
+    int next_free;                // the next free slot (FREE)
+    int64_t lo[3], hi[3];
+    double scale, lo_d[3], hi_d[3], side_lo, side_hi;
+} hash_slot;
+
+// Where a geom goes at the next update: its level and cells, unless big;
+// whether that differs from where it is, and whether its level does.
+typedef struct hash_place {
+    int placed, level;
+    int moved, relevelled;
+    int64_t lo[3], hi[3];
+} hash_place;
+
 typedef struct dxHashSpace {
     dxSpace s;
     int minlevel, maxlevel;
-    int stale;                    // the table no longer describes the geoms
-    int walking;                  // > 0 while a collision walks the table
+    int stale;                    // the cells may no longer describe the geoms
+    int members_changed;          // geoms came or went since the last update
+    int levels_changed;           // dHashSpaceSetLevels since the last update
+    int afresh;                   // the last update linked every geom afresh (most moved:
+                                  // the next checks no geom's cell bounds first)
+    int walking;                  // > 0 while a collision walks the cells
+    hash_slot *slots;
+    int slots_cap, n_slots, free_slot;   // allocated, ever used, first free (-1 if none)
+    int *slot_of;                 // the slot of s->geoms[i]
+    int slot_of_cap;
+    hash_place *next;             // where s->geoms[i] goes (scratch of hash_update)
+    int next_cap;
+    dxHashCells cells;
     hash_node *nodes, *placed;    // placed geoms by level / in space order
     int nodes_cap, placed_cap, n_nodes;
     dxGeom **big;
     int big_cap, n_big;
-    hash_entry *entries;
-    int entries_cap, n_entries;
-    int *buckets;                 // first entry of each bucket, -1 if none
-    int buckets_cap, mask;        // mask + 1 buckets in use (a power of two)
     hash_level *levels;           // in increasing level
     int levels_cap, n_levels;
 } dxHashSpace;
@@ -92,10 +124,24 @@ static void *grow(void *p, int *cap, int need, size_t size)
     return p;
 }
 
-// 1 / (cell size) = 2^-level (clamped: beyond 2^+-2000 a double is 0 or inf).
+// 1 / (cell size) = 2^-level (clamped: beyond 2^+-2000 a double is 0 or inf),
+// made from its bits where 2^-level is a normal double.
 static double level_scale(int level)
 {
+    if (level >= -1022 && level <= 1022) {
+        const uint64_t bits = (uint64_t)(1023 - level) << 52;
+        double d;
+        memcpy(&d, &bits, sizeof d);
+        return d;
+    }
     return ldexp(1.0, level < -2000 ? 2000 : level > 2000 ? -2000 : -level);
+}
+
+// floor(a) for |a| <= 2^52 (the conversion truncates toward zero).
+static int64_t floor_index(double a)
+{
+    const int64_t t = (int64_t)a;
+    return t - (a < (double)t);
 }
 
 // The cells at 1 / (cell size) = scale that the AABB touches, lo..hi per
@@ -105,8 +151,8 @@ static int cell_range(const dReal *aabb, double scale, int64_t lo[3], int64_t hi
     for (int k = 0; k < 3; k++) {
         double a = aabb[2 * k] * scale, b = aabb[2 * k + 1] * scale;
         if (!(a >= -CELL_LIMIT && b <= CELL_LIMIT && a <= b)) return 0;
-        lo[k] = (int64_t)floor(a);
-        hi[k] = (int64_t)floor(b);
+        lo[k] = floor_index(a);
+        hi[k] = floor_index(b);
     }
     return 1;
 }
@@ -115,6 +161,21 @@ static int cell_range(const dReal *aabb, double scale, int64_t lo[3], int64_t hi
 static double cell_count(const int64_t lo[3], const int64_t hi[3])
 {
     return (double)(hi[0] - lo[0] + 1) * (double)(hi[1] - lo[1] + 1) * (double)(hi[2] - lo[2] + 1);
+}
+
+// The smallest L with 2^L >= side > 0 (side finite): from the exponent's
+// bits, one more when the mantissa is not exactly 1 (frexp for subnormals).
+static int side_level(double side)
+{
+    uint64_t bits;
+    memcpy(&bits, &side, sizeof bits);
+    const int e = (int)(bits >> 52 & 0x7ff);
+    if (e == 0) {
+        int x;
+        const double m = frexp(side, &x);   // side = m 2^x, 1/2 <= m < 1
+        return m == 0.5 ? x - 1 : x;
+    }
+    return e - 1023 + ((bits & 0xfffffffffffffu) != 0);
 }
 
 // The level of an AABB and its cells there; 0 if the geom is big.
@@ -129,31 +190,12 @@ static int geom_level(const dxHashSpace *hs, const dReal *aabb, int *level, int6
     }
     int L = hs->minlevel;
     if (side > 0) {
-        int e;
-        double m = frexp(side, &e);   // side = m 2^e, 1/2 <= m < 1
-        int need = m == 0.5 ? e - 1 : e;
+        int need = side_level(side);
         if (need > L) L = need;
     }
     if (L > hs->maxlevel) return 0;
     *level = L;
     return cell_range(aabb, level_scale(L), lo, hi);
-}
-
-// Multiply-xor hash of a cell, mixed so that neighbouring cells spread.
-static unsigned cell_bucket(int level, const int64_t c[3], int mask)
-{
-    uint64_t h = (uint64_t)c[0] * 0x9E3779B97F4A7C15u ^ (uint64_t)c[1] * 0xC2B2AE3D27D4EB4Fu ^
-                 (uint64_t)c[2] * 0x165667B19E3779F9u ^
-                 (uint64_t)(int64_t)level * 0x27D4EB2F165667C5u;
-    h ^= h >> 31;
-    h *= 0xBF58476D1CE4E5B9u;
-    h ^= h >> 29;
-    return (unsigned)h & (unsigned)mask;
-}
-
-static int same_cell(const hash_entry *e, int level, const int64_t c[3])
-{
-    return e->level == level && e->cell[0] == c[0] && e->cell[1] == c[1] && e->cell[2] == c[2];
 }
 
 // The index of `level` in the sorted level list, inserted if new.
@@ -173,34 +215,76 @@ static int level_index(dxHashSpace *hs, int level)
     return lo;
 }
 
-// Record geom g in the cells lo..hi of `level`.
-static void add_entries(dxHashSpace *hs, dxGeom *g, int level, const int64_t lo[3],
-                        const int64_t hi[3])
+// level_index, trying the last answer first (neighbours in space order
+// mostly share a level).
+static int level_index_near(dxHashSpace *hs, int level, int *last)
 {
-    int n = (int)cell_count(lo, hi);
-    hs->entries = grow(hs->entries, &hs->entries_cap, hs->n_entries + n, sizeof *hs->entries);
-    for (int64_t i = lo[0]; i <= hi[0]; i++)
-        for (int64_t j = lo[1]; j <= hi[1]; j++)
-            for (int64_t k = lo[2]; k <= hi[2]; k++)
-                hs->entries[hs->n_entries++] = (hash_entry){
-                    { i, j, k }, level, -1, g, lowest_bits((const int64_t[3]){ i, j, k }, lo)
-                };
+    if (*last < hs->n_levels && hs->levels[*last].level == level) return *last;
+    return *last = level_index(hs, level);
 }
 
-// Chain the entries into mask + 1 buckets, at least twice as many as entries.
-static void fill_buckets(dxHashSpace *hs)
+// Take the geom of slot si out of its cells.
+static void unplace(dxHashSpace *hs, int si)
 {
-    int n = 16;
-    while (n < 2 * hs->n_entries) n *= 2;
-    hs->buckets = grow(hs->buckets, &hs->buckets_cap, n, sizeof *hs->buckets);
-    hs->mask = n - 1;
-    for (int b = 0; b < n; b++) hs->buckets[b] = -1;
-    for (int e = 0; e < hs->n_entries; e++) {
-        hash_entry *h = &hs->entries[e];
-        unsigned b = cell_bucket(h->level, h->cell, hs->mask);
-        h->next = hs->buckets[b];
-        hs->buckets[b] = e;
+    hash_slot *sl = &hs->slots[si];
+    for (int k = 0; k < sl->n; k++) dxHashCellsUnlink(&hs->cells, si * PER_GEOM + k);
+    sl->n = 0;
+}
+
+// Record the geom of slot si in the cells lo..hi of `level` (at most two per
+// axis: its AABB is no longer than the cells' side); `latest`: the cells are
+// being filled in space order, so it goes first in each.
+static void place(dxHashSpace *hs, int si, int level, const int64_t lo[3], const int64_t hi[3],
+                  int latest)
+{
+    unplace(hs, si);
+    hash_slot *sl = &hs->slots[si];
+    sl->state = SLOT_PLACED;
+    sl->level = level;
+    memcpy(sl->lo, lo, sizeof sl->lo);
+    memcpy(sl->hi, hi, sizeof sl->hi);
+    sl->scale = level_scale(level);
+    for (int k = 0; k < 3; k++) {
+        sl->lo_d[k] = (double)lo[k];
+        sl->hi_d[k] = (double)hi[k];
     }
+    const int exact = level > -1000 && level < 1000;   // 2^level, 2^(level-1) are doubles
+    sl->side_lo = level == hs->minlevel ? -1.0 : level_scale(1 - level);
+    sl->side_hi = exact ? level_scale(-level) : NAN;
+    for (int64_t i = lo[0]; i <= hi[0]; i++)
+        for (int64_t j = lo[1]; j <= hi[1]; j++)
+            for (int64_t k = lo[2]; k <= hi[2]; k++) {
+                const int64_t c[3] = { i, j, k };
+                const int e = si * PER_GEOM + sl->n++;
+                hs->cells.entries[e].g = sl->g;
+                hs->cells.entries[e].lowest = lowest_bits(c, lo);
+                if (latest) dxHashCellsPushFresh(&hs->cells, e, level, c);
+                else dxHashCellsLink(&hs->cells, e, level, c);
+            }
+}
+
+// 1 if the box b gives the placed geom of slot sl the level and cells it
+// has: what geom_level would find (the same products, compared with the
+// cells' bounds instead of floored), at less cost.
+static int keeps_place(const hash_slot *sl, const dReal *b)
+{
+    double side = 0;
+    for (int k = 0; k < 3; k++) {
+        const double d = (double)b[2 * k + 1] - (double)b[2 * k];
+        if (!(d >= 0)) return 0;
+        if (d > side) side = d;
+        const double lo = b[2 * k] * sl->scale, hi = b[2 * k + 1] * sl->scale;
+        if (!(lo >= sl->lo_d[k] && lo < sl->lo_d[k] + 1)) return 0;
+        if (!(hi >= sl->hi_d[k] && hi < sl->hi_d[k] + 1)) return 0;
+    }
+    return side > sl->side_lo && side <= sl->side_hi;
+}
+
+static int same_place(const hash_slot *sl, const hash_place *p)
+{
+    return sl->state == SLOT_PLACED && sl->level == p->level && sl->lo[0] == p->lo[0] &&
+           sl->lo[1] == p->lo[1] && sl->lo[2] == p->lo[2] && sl->hi[0] == p->hi[0] &&
+           sl->hi[1] == p->hi[1] && sl->hi[2] == p->hi[2];
 }
 
 // Sort the placed geoms into nodes by level (counting sort over the levels).
@@ -213,46 +297,113 @@ static void sort_nodes(dxHashSpace *hs)
         hs->levels[li].count = 0;
     }
     hs->nodes = grow(hs->nodes, &hs->nodes_cap, hs->n_nodes, sizeof *hs->nodes);
+    int last = 0;
     for (int i = 0; i < hs->n_nodes; i++) {
-        int li = level_index(hs, hs->placed[i].level);
+        const int li = level_index_near(hs, hs->placed[i].level, &last);
         hash_level *lv = &hs->levels[li];
         hs->nodes[lv->start + lv->count++] = hs->placed[i];
     }
 }
 
-static void hash_rebuild(dxHashSpace *hs)
+// List the big geoms in space order, and the placed ones by level.
+static void list_geoms(dxHashSpace *hs)
 {
     const dxSpace *s = &hs->s;
     hs->placed = grow(hs->placed, &hs->placed_cap, s->count, sizeof *hs->placed);
     hs->big = grow(hs->big, &hs->big_cap, s->count, sizeof *hs->big);
-    hs->n_nodes = hs->n_big = hs->n_entries = hs->n_levels = 0;
+    hs->n_nodes = hs->n_big = hs->n_levels = 0;
+    int last = 0;
     for (int i = 0; i < s->count; i++) {
-        dxGeom *g = s->geoms[i];
-        int level;
-        int64_t lo[3], hi[3];
-        if (!geom_level(hs, g->aabb, &level, lo, hi)) {
-            hs->big[hs->n_big++] = g;
+        const hash_slot *sl = &hs->slots[hs->slot_of[i]];
+        if (sl->state == SLOT_BIG) {
+            hs->big[hs->n_big++] = sl->g;
             continue;
         }
-        hs->placed[hs->n_nodes++] = (hash_node){ g, level };
-        int li = level_index(hs, level);   // may move hs->levels
+        hs->placed[hs->n_nodes++] = (hash_node){ sl->g, sl->level };
+        const int li = level_index_near(hs, sl->level, &last);   // may move hs->levels
         hs->levels[li].count++;
-        add_entries(hs, g, level, lo, hi);
     }
     sort_nodes(hs);
-    fill_buckets(hs);
-    hs->stale = 0;
 }
 
-// Make the table current; 0 if it is stale but an outer collision of this
-// space still walks it (a callback moved a geom): the caller then tests
-// geoms one by one.
+// Bring the cells up to date with the geoms' boxes. Only geoms whose level
+// or cells changed are moved (an unlink and a link per cell: a hash lookup
+// each); when that is more than a third of them (a scene in motion), the
+// cells are emptied and every geom is linked afresh in space order instead
+// (each entry first in its cell: nothing to unlink, no list to walk).
+// Either way the cells list the same geoms in the same order. The lists of
+// geoms by level change only when a level or the membership did.
+static void hash_update(dxHashSpace *hs)
+{
+    const dxSpace *s = &hs->s;
+    hs->next = grow(hs->next, &hs->next_cap, s->count, sizeof *hs->next);
+    int n_placed = 0, n_entries = 0, moved = 0, relevelled = hs->members_changed;
+    for (int i = 0; i < s->count; i++) {
+        hash_place *p = &hs->next[i];
+        const hash_slot *sl = &hs->slots[hs->slot_of[i]];
+        if (sl->state == SLOT_PLACED && !hs->levels_changed && !hs->afresh &&
+            keeps_place(sl, sl->g->aabb)) {
+            *p = (hash_place){ 1, sl->level, 0, 0, { sl->lo[0], sl->lo[1], sl->lo[2] },
+                               { sl->hi[0], sl->hi[1], sl->hi[2] } };
+            n_placed++;
+            n_entries += sl->n;
+            continue;
+        }
+        p->placed = geom_level(hs, sl->g->aabb, &p->level, p->lo, p->hi);
+        if (p->placed) {
+            n_placed++;
+            n_entries += (int)cell_count(p->lo, p->hi);
+            p->moved = !same_place(sl, p);
+            p->relevelled = sl->state != SLOT_PLACED || sl->level != p->level;
+        } else {
+            p->moved = p->relevelled = sl->state != SLOT_BIG;
+        }
+        moved += p->moved;
+        relevelled += p->relevelled;
+    }
+    hs->stale = hs->levels_changed = hs->afresh = 0;
+    if (!moved && !relevelled) return;
+    const int afresh = hs->afresh = 3 * moved > n_placed;
+    if (afresh) dxHashCellsRestart(&hs->cells, n_entries);
+    for (int i = 0; i < s->count; i++) {
+        const hash_place *p = &hs->next[i];
+        if (!afresh && !p->moved) continue;
+        const int si = hs->slot_of[i];
+        hash_slot *sl = &hs->slots[si];
+        if (afresh) sl->n = 0;   // (the cells forgot its entries)
+        if (p->placed) {
+            place(hs, si, p->level, p->lo, p->hi, afresh);
+        } else {
+            unplace(hs, si);
+            sl->state = SLOT_BIG;
+        }
+    }
+    if (relevelled) list_geoms(hs);
+    hs->members_changed = 0;
+}
+
+// Make the cells current; 0 if they are stale but an outer collision of
+// this space still walks them (a callback moved a geom): the caller then
+// tests geoms one by one.
 static int hash_ready(dxHashSpace *hs)
 {
     if (!hs->stale) return 1;
     if (hs->walking > 0) return 0;
-    hash_rebuild(hs);
+    hash_update(hs);
     return 1;
+}
+
+// dxSpaceTestPair, with its most common answer -- the boxes are apart --
+// found here without the call (and counted the same).
+static inline void test_pair(dxGeom *a, dxGeom *b, void *data, dNearCallback *cb)
+{
+    const dReal *p = a->aabb, *q = b->aabb;
+    if (p[0] <= q[1] && q[0] <= p[1] && p[2] <= q[3] && q[2] <= p[3] && p[4] <= q[5] &&
+        q[4] <= p[5]) {
+        dxSpaceTestPair(a, b, data, cb);
+    } else {
+        dx_aabb_tests++;
+    }
 }
 
 // g against the geoms of `level` recorded in cell c (g's lowest-cell bits
@@ -260,11 +411,9 @@ static int hash_ready(dxHashSpace *hs)
 static void query_cell(const dxHashSpace *hs, dxGeom *g, int level, const int64_t c[3],
                        unsigned lowest, void *data, dNearCallback *cb)
 {
-    for (int e = hs->buckets[cell_bucket(level, c, hs->mask)]; e >= 0; e = hs->entries[e].next) {
-        const hash_entry *h = &hs->entries[e];
-        if ((h->lowest | lowest) == ALL_AXES && same_cell(h, level, c))
-            dxSpaceTestPair(g, h->g, data, cb);
-    }
+    const dxHashEntry *en = hs->cells.entries;
+    for (int e = dxHashCellsFind(&hs->cells, level, c); e >= 0; e = en[e].next)
+        if ((en[e].lowest | lowest) == ALL_AXES) test_pair(g, en[e].g, data, cb);
 }
 
 // g against the placed geoms of levels[first ..]: through the cells of each
@@ -286,7 +435,7 @@ static void query_levels(const dxHashSpace *hs, dxGeom *g, int first, void *data
                     }
         } else {
             for (int n = lv->start; n < lv->start + lv->count; n++)
-                dxSpaceTestPair(g, hs->nodes[n].g, data, cb);
+                test_pair(g, hs->nodes[n].g, data, cb);
         }
     }
 }
@@ -311,19 +460,19 @@ static void hash_collide(dxSpace *s, void *data, dNearCallback *cb)
     for (int i = 0; i < hs->n_big; i++) {
         dxGeom *a = hs->big[i];
         if (!enabled(a)) continue;
-        for (int j = i + 1; j < hs->n_big; j++) dxSpaceTestPair(a, hs->big[j], data, cb);
-        for (int j = 0; j < hs->n_nodes; j++) dxSpaceTestPair(a, hs->nodes[j].g, data, cb);
+        for (int j = i + 1; j < hs->n_big; j++) test_pair(a, hs->big[j], data, cb);
+        for (int j = 0; j < hs->n_nodes; j++) test_pair(a, hs->nodes[j].g, data, cb);
     }
-    // Geoms of one level that share a cell: the entries of a bucket after
-    // this one in its chain.
-    for (int e = 0; e < hs->n_entries; e++) {
-        const hash_entry *h = &hs->entries[e];
-        if (!enabled(h->g)) continue;
-        for (int f = h->next; f >= 0; f = hs->entries[f].next) {
-            const hash_entry *o = &hs->entries[f];
-            if ((o->lowest | h->lowest) == ALL_AXES && same_cell(o, h->level, h->cell))
-                dxSpaceTestPair(h->g, o->g, data, cb);
-        }
+    // Geoms of one level that share a cell: each geom's entries in space
+    // order, against the entries after it in the cell's list (earlier geoms).
+    const dxHashEntry *en = hs->cells.entries;
+    for (int i = 0; i < s->count; i++) {
+        const int si = hs->slot_of[i];
+        const hash_slot *sl = &hs->slots[si];
+        if (!enabled(sl->g)) continue;
+        for (int e = si * PER_GEOM; e < si * PER_GEOM + sl->n; e++)
+            for (int f = en[e].next; f >= 0; f = en[f].next)
+                if ((en[f].lowest | en[e].lowest) == ALL_AXES) test_pair(sl->g, en[f].g, data, cb);
     }
     // Each geom against the coarser levels.
     for (int li = 0; li < hs->n_levels; li++) {
@@ -343,27 +492,63 @@ static void hash_collide_geom(dxSpace *s, dxGeom *g, void *data, dNearCallback *
         return;
     }
     hs->walking++;
-    for (int i = 0; i < hs->n_big; i++) dxSpaceTestPair(g, hs->big[i], data, cb);
+    for (int i = 0; i < hs->n_big; i++) test_pair(g, hs->big[i], data, cb);
     query_levels(hs, g, 0, data, cb);
     hs->walking--;
+}
+
+// A geom joined the space (last in space order): it gets a slot, placed at
+// the next update.
+static void hash_added(dxSpace *s, dxGeom *g)
+{
+    dxHashSpace *hs = (dxHashSpace *)s;
+    int si = hs->free_slot;
+    if (si >= 0) {
+        hs->free_slot = hs->slots[si].next_free;
+    } else {
+        hs->slots = grow(hs->slots, &hs->slots_cap, hs->n_slots + 1, sizeof *hs->slots);
+        si = hs->n_slots++;
+        dxHashCellsReserve(&hs->cells, hs->n_slots);
+    }
+    hs->slots[si] = (hash_slot){ .g = g, .state = SLOT_NEW, .next_free = -1 };
+    hs->slot_of = grow(hs->slot_of, &hs->slot_of_cap, s->count, sizeof *hs->slot_of);
+    hs->slot_of[g->space_index] = si;
+    hs->stale = hs->members_changed = 1;
+}
+
+// A geom is leaving the space: out of its cells, its slot freed, the later
+// geoms' slots moved down with them in space order.
+static void hash_removed(dxSpace *s, dxGeom *g)
+{
+    dxHashSpace *hs = (dxHashSpace *)s;
+    const int at = g->space_index, si = hs->slot_of[at];
+    unplace(hs, si);
+    hs->slots[si] = (hash_slot){ .state = SLOT_FREE, .next_free = hs->free_slot };
+    hs->free_slot = si;
+    memmove(&hs->slot_of[at], &hs->slot_of[at + 1],
+            (size_t)(s->count - 1 - at) * sizeof *hs->slot_of);
+    hs->stale = hs->members_changed = 1;
 }
 
 static void hash_destroy(dxSpace *s)
 {
     dxHashSpace *hs = (dxHashSpace *)s;
+    dFree(hs->slots, (size_t)hs->slots_cap * sizeof *hs->slots);
+    dFree(hs->slot_of, (size_t)hs->slot_of_cap * sizeof *hs->slot_of);
+    dFree(hs->next, (size_t)hs->next_cap * sizeof *hs->next);
+    dxHashCellsFree(&hs->cells);
     dFree(hs->nodes, (size_t)hs->nodes_cap * sizeof *hs->nodes);
     dFree(hs->placed, (size_t)hs->placed_cap * sizeof *hs->placed);
     dFree(hs->big, (size_t)hs->big_cap * sizeof *hs->big);
-    dFree(hs->entries, (size_t)hs->entries_cap * sizeof *hs->entries);
-    dFree(hs->buckets, (size_t)hs->buckets_cap * sizeof *hs->buckets);
     dFree(hs->levels, (size_t)hs->levels_cap * sizeof *hs->levels);
 }
 
-static const dxSpaceOps hash_ops = { NULL, NULL, hash_collide, hash_collide_geom, hash_destroy };
+static const dxSpaceOps hash_ops = { hash_added, hash_removed, hash_collide, hash_collide_geom,
+                                     hash_destroy };
 
 // The class operations of all spaces, with compute_aabb wrapped: the space's
 // box is recomputed exactly when something in it changed, which makes the
-// table stale.
+// cells stale.
 static dxGeomClassOps hash_class_ops;
 static void (*union_aabb)(dxGeom *g);
 
@@ -387,6 +572,8 @@ dSpaceID dHashSpaceCreate(dSpaceID parent)
     hs->minlevel = -3;
     hs->maxlevel = 10;
     hs->stale = 1;
+    hs->free_slot = -1;
+    dxHashCellsInit(&hs->cells);
     return s;
 }
 
@@ -403,7 +590,7 @@ void dHashSpaceSetLevels(dSpaceID s, int minlevel, int maxlevel)
     dxHashSpace *hs = (dxHashSpace *)s;
     hs->minlevel = minlevel;
     hs->maxlevel = maxlevel;
-    hs->stale = 1;
+    hs->stale = hs->levels_changed = 1;
 }
 
 void dHashSpaceGetLevels(dSpaceID s, int *minlevel, int *maxlevel)

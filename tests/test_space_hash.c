@@ -1,0 +1,446 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// test_space_hash.c -- the hash space keeps its cells from one collision to
+// the next (space_hash.c): through long random sequences of moves, resizes,
+// adds, removes, destroys, enables and disables, level changes, planes,
+// nested spaces and geoms sharing a body, every dSpaceCollide reports the
+// pairs of a brute-force AABB test, each once, and dSpaceCollide2 (a geom, a
+// space) too; the order of the pairs depends only on the geoms and their
+// boxes (a space built afresh with the same geoms in the same order calls
+// back in the same order), which is what replays and snapshots rely on; and
+// geoms changing cells every step allocate nothing once the space is warm.
+
+#include "test.h"
+
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+// ---- recorded pairs -------------------------------------------------------------
+
+// Geoms are numbered through their user data (1, 2, ...).
+static int idx(dGeomID g) { return (int)(intptr_t)dGeomGetData(g); }
+static void number(dGeomID g, int i) { dGeomSetData(g, (void *)(intptr_t)i); }
+
+typedef struct pairs {
+    int n, cap;
+    int (*p)[2];   // (number of o1, number of o2) in callback order
+} pairs;
+
+static void pairs_add(pairs *l, int a, int b)
+{
+    if (l->n == l->cap) {
+        l->cap = l->cap ? 2 * l->cap : 256;
+        l->p = realloc(l->p, (size_t)l->cap * sizeof *l->p);
+    }
+    l->p[l->n][0] = a;
+    l->p[l->n][1] = b;
+    l->n++;
+}
+
+static void record(void *data, dGeomID a, dGeomID b) { pairs_add(data, idx(a), idx(b)); }
+
+static int cmp_u64(const void *a, const void *b)
+{
+    uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
+    return x < y ? -1 : x > y;
+}
+
+// The pairs as sorted unordered keys; caller frees.
+static uint64_t *pair_keys(const pairs *l)
+{
+    uint64_t *k = malloc((size_t)(l->n + 1) * sizeof *k);
+    for (int i = 0; i < l->n; i++) {
+        uint64_t a = (uint64_t)l->p[i][0], b = (uint64_t)l->p[i][1];
+        k[i] = a < b ? a << 32 | b : b << 32 | a;
+    }
+    qsort(k, (size_t)l->n, sizeof *k, cmp_u64);
+    return k;
+}
+
+// 1 if both lists hold the same unordered pairs and neither holds one twice.
+static int same_pair_set(const pairs *x, const pairs *y)
+{
+    if (x->n != y->n) return 0;
+    uint64_t *a = pair_keys(x), *b = pair_keys(y);
+    int same = memcmp(a, b, (size_t)x->n * sizeof *a) == 0;
+    for (int i = 1; i < x->n; i++) same &= a[i] != a[i - 1];
+    free(a);
+    free(b);
+    return same;
+}
+
+// What a space must report for a and b (the guide, 10.5): both enabled, not
+// on one body, bits matching, AABBs overlapping as closed boxes.
+static int expect_touch(dGeomID a, dGeomID b)
+{
+    if (!dGeomIsEnabled(a) || !dGeomIsEnabled(b)) return 0;
+    if (dGeomGetBody(a) && dGeomGetBody(a) == dGeomGetBody(b)) return 0;
+    if (!(dGeomGetCategoryBits(a) & dGeomGetCollideBits(b)) &&
+        !(dGeomGetCategoryBits(b) & dGeomGetCollideBits(a)))
+        return 0;
+    dReal p[6], q[6];
+    dGeomGetAABB(a, p);
+    dGeomGetAABB(b, q);
+    for (int k = 0; k < 6; k += 2)
+        if (!(p[k] <= q[k + 1] && q[k] <= p[k + 1])) return 0;
+    return 1;
+}
+
+// The brute-force pairs among the geoms of s (nested spaces as geoms).
+static void brute_pairs(dSpaceID s, pairs *out)
+{
+    const int n = dSpaceGetNumGeoms(s);
+    for (int i = 0; i < n; i++)
+        for (int j = i + 1; j < n; j++) {
+            dGeomID a = dSpaceGetGeom(s, i), b = dSpaceGetGeom(s, j);
+            if (expect_touch(a, b)) pairs_add(out, idx(a), idx(b));
+        }
+}
+
+// dSpaceCollide of s reports the brute-force pairs, each once.
+static int check_collide(dSpaceID s)
+{
+    pairs want = { 0 }, got = { 0 };
+    brute_pairs(s, &want);
+    dSpaceCollide(s, &got, record);
+    CHECK(same_pair_set(&got, &want));
+    free(want.p);
+    free(got.p);
+    return 0;
+}
+
+// dSpaceCollide2(o, s) reports o against each geom of s it touches, o first.
+static int check_collide2(dGeomID o, dSpaceID s)
+{
+    pairs want = { 0 }, got = { 0 };
+    for (int i = 0; i < dSpaceGetNumGeoms(s); i++) {
+        dGeomID g = dSpaceGetGeom(s, i);
+        if (expect_touch(o, g)) pairs_add(&want, idx(o), idx(g));
+    }
+    dSpaceCollide2(o, (dGeomID)s, &got, record);
+    CHECK(same_pair_set(&got, &want));
+    for (int i = 0; i < got.n; i++) CHECK(got.p[i][0] == idx(o));
+    free(want.p);
+    free(got.p);
+    return 0;
+}
+
+// ---- random edits ---------------------------------------------------------------
+
+static uint64_t rng_state;
+
+static double rnd(double lo, double hi)
+{
+    rng_state ^= rng_state << 13;
+    rng_state ^= rng_state >> 7;
+    rng_state ^= rng_state << 17;
+    return lo + (hi - lo) * (double)(rng_state >> 11) * 0x1p-53;
+}
+
+static int next_number = 1;
+
+// A sphere, box or capsule of size 0.05 .. 6 (every 40th 60 long, a few
+// levels up) somewhere in +-20.
+static dGeomID random_geom(dSpaceID s)
+{
+    dGeomID g;
+    const double k = rnd(0, 3);
+    const double big = rnd(0, 40) < 1 ? 10 : 1;
+    if (k < 1) {
+        g = dCreateSphere(s, (dReal)(big * rnd(0.025, 3)));
+    } else if (k < 2) {
+        g = dCreateBox(s, (dReal)(big * rnd(0.05, 6)), (dReal)rnd(0.05, 6), (dReal)rnd(0.05, 6));
+    } else {
+        g = dCreateCapsule(s, (dReal)rnd(0.05, 1), (dReal)(big * rnd(0.1, 4)));
+        dMatrix3 R;
+        dRFromAxisAndAngle(R, (dReal)rnd(-1, 1), (dReal)rnd(-1, 1), 1, (dReal)rnd(0, 3));
+        dGeomSetRotation(g, R);
+    }
+    dGeomSetPosition(g, (dReal)rnd(-20, 20), (dReal)rnd(-20, 20), (dReal)rnd(-20, 20));
+    number(g, next_number++);
+    return g;
+}
+
+// A placeable geom of s other than the first `keep` (planes, the nested space).
+static dGeomID pick(dSpaceID s, int keep)
+{
+    const int n = dSpaceGetNumGeoms(s);
+    if (n <= keep) return NULL;
+    dGeomID g = dSpaceGetGeom(s, keep + (int)rnd(0, n - keep));
+    return dGeomGetClass(g) == dPlaneClass || dGeomIsSpace(g) ? NULL : g;
+}
+
+// One step of edits to s: moves (a little, far, onto the grid: boxes that
+// touch cell boundaries), resizes, destroys, adds, a geom taken out and put
+// back (last in space order), enables and disables, bits changed.
+static void edit(dSpaceID s, int keep, int moves)
+{
+    for (int m = 0; m < moves; m++) {
+        dGeomID g = pick(s, keep);
+        if (!g || dGeomGetBody(g)) continue;
+        const dReal *p = dGeomGetPosition(g);
+        const double r = rnd(0, 1);
+        if (r < 0.1) {
+            dGeomSetPosition(g, (dReal)rnd(-20, 20), (dReal)rnd(-20, 20), (dReal)rnd(-20, 20));
+        } else if (r < 0.2) {
+            dGeomSetPosition(g, (dReal)floor(p[0]), (dReal)floor(p[1]), (dReal)floor(p[2]));
+        } else if (r < 0.25 && dGeomGetClass(g) == dBoxClass) {
+            dGeomBoxSetLengths(g, (dReal)rnd(0.05, 6), (dReal)rnd(0.05, 6), (dReal)rnd(0.05, 6));
+        } else if (r < 0.3 && dGeomGetClass(g) == dSphereClass) {
+            dGeomSphereSetRadius(g, (dReal)rnd(0.025, 3));
+        } else {
+            dGeomSetPosition(g, p[0] + (dReal)rnd(-0.3, 0.3), p[1] + (dReal)rnd(-0.3, 0.3),
+                             p[2] + (dReal)rnd(-0.3, 0.3));
+        }
+    }
+    const double r = rnd(0, 1);
+    dGeomID g = pick(s, keep);
+    if (!g) {
+        random_geom(s);
+    } else if (r < 0.15) {
+        if (!dGeomGetBody(g)) dGeomDestroy(g);
+    } else if (r < 0.4) {
+        random_geom(s);
+    } else if (r < 0.55) {
+        dSpaceRemove(s, g);
+        dSpaceAdd(s, g);
+    } else if (r < 0.7) {
+        if (dGeomIsEnabled(g)) dGeomDisable(g);
+        else dGeomEnable(g);
+    } else if (r < 0.75) {
+        dGeomSetCategoryBits(g, (unsigned long)rnd(1, 4));
+        dGeomSetCollideBits(g, (unsigned long)rnd(1, 4));
+    }
+}
+
+static int test_random_edits_find_the_brute_force_pairs_every_step(void)
+{
+    // Two planes and a nested simple space first; three geoms on one body
+    // (never reported together) moved with it; 600 steps at different
+    // levels, the levels changed now and then.
+    static const int levels[][2] = { { -3, 10 }, { -1, 1 }, { 0, 0 }, { -6, 4 }, { 3, 8 } };
+    rng_state = 0x243F6A8885A308D3u;
+    dWorldID w = dWorldCreate();
+    dSpaceID s = dHashSpaceCreate(0), inner = dSimpleSpaceCreate(s);
+    dGeomID probe = dCreateSphere(0, 2);
+    dSpaceID outside = dSimpleSpaceCreate(0);
+    number(probe, 100000);
+    number((dGeomID)inner, next_number++);
+    dGeomID plane = dCreatePlane(s, 0, 0, 1, -15);
+    number(plane, next_number++);
+    number(dCreatePlane(s, 1, 0, 0, 18), next_number++);
+    const int keep = 3;
+    dBodyID body = dBodyCreate(w);
+    for (int i = 0; i < 3; i++) dGeomSetBody(random_geom(s), body);
+    for (int i = 0; i < 200; i++) random_geom(s);
+    for (int i = 0; i < 20; i++) random_geom(outside);
+    int max_pairs = 0, level_changes = 0;
+
+    for (int step = 0; step < 600; step++) {
+        edit(s, keep, 1 + (int)rnd(0, 30));
+        if (step % 50 == 49) {
+            const int *lv = levels[(step / 50) % 5];
+            dHashSpaceSetLevels(s, lv[0], lv[1]);
+            level_changes++;
+        }
+        if (step % 9 == 0) {   // the nested space fills and empties
+            if (dSpaceGetNumGeoms(inner) < 3) random_geom(inner);
+            else dGeomDestroy(dSpaceGetGeom(inner, 0));
+        }
+        dBodySetPosition(body, (dReal)rnd(-15, 15), (dReal)rnd(-15, 15), (dReal)rnd(-15, 15));
+        if (check_collide(s)) return 1;
+        dGeomSetPosition(probe, (dReal)rnd(-20, 20), (dReal)rnd(-20, 20), (dReal)rnd(-20, 20));
+        if (check_collide2(probe, s)) return 1;
+        if (check_collide2(plane, s)) return 1;   // a member: (plane, plane) too
+        if (step % 10 == 0) {   // space against space: the smaller one is walked
+            pairs want = { 0 }, got = { 0 };
+            for (int i = 0; i < dSpaceGetNumGeoms(outside); i++)
+                for (int j = 0; j < dSpaceGetNumGeoms(s); j++) {
+                    dGeomID a = dSpaceGetGeom(outside, i), b = dSpaceGetGeom(s, j);
+                    if (expect_touch(a, b)) pairs_add(&want, idx(a), idx(b));
+                }
+            dSpaceCollide2((dGeomID)outside, (dGeomID)s, &got, record);
+            CHECK(same_pair_set(&got, &want));
+            free(want.p);
+            free(got.p);
+            edit(outside, 0, 10);
+        }
+        pairs all = { 0 };
+        brute_pairs(s, &all);
+        if (all.n > max_pairs) max_pairs = all.n;
+        free(all.p);
+    }
+    // Not vacuous: the scene had many pairs and changed a lot.
+    CHECK(max_pairs > 100);
+    CHECK(dSpaceGetNumGeoms(s) > 100);
+    CHECK(level_changes == 12);
+    dGeomDestroy(probe);
+    dSpaceDestroy(outside);
+    dSpaceDestroy(s);
+    dWorldDestroy(w);
+    return 0;
+}
+
+// ---- the order depends only on the geoms ---------------------------------------
+
+// A geom like g (class, size, pose, enabled, bits, number) in s.
+static dGeomID twin(dSpaceID s, dGeomID g)
+{
+    dGeomID t;
+    switch (dGeomGetClass(g)) {
+    case dSphereClass: t = dCreateSphere(s, dGeomSphereGetRadius(g)); break;
+    case dBoxClass: {
+        dVector3 l;
+        dGeomBoxGetLengths(g, l);
+        t = dCreateBox(s, l[0], l[1], l[2]);
+        break;
+    }
+    case dCapsuleClass: {
+        dReal r, len;
+        dGeomCapsuleGetParams(g, &r, &len);
+        t = dCreateCapsule(s, r, len);
+        break;
+    }
+    default: {
+        dVector4 p;
+        dGeomPlaneGetParams(g, p);
+        t = dCreatePlane(s, p[0], p[1], p[2], p[3]);
+        break;
+    }
+    }
+    if (dGeomGetClass(g) != dPlaneClass) {
+        const dReal *p = dGeomGetPosition(g);
+        dGeomSetPosition(t, p[0], p[1], p[2]);
+        dGeomSetRotation(t, dGeomGetRotation(g));
+    }
+    if (!dGeomIsEnabled(g)) dGeomDisable(t);
+    dGeomSetCategoryBits(t, dGeomGetCategoryBits(g));
+    dGeomSetCollideBits(t, dGeomGetCollideBits(g));
+    number(t, idx(g));
+    return t;
+}
+
+// s calls back in the order of a hash space made afresh from its geoms.
+static int check_order_is_fresh(dSpaceID s, int minlevel, int maxlevel)
+{
+    dSpaceID fresh = dHashSpaceCreate(0);
+    dHashSpaceSetLevels(fresh, minlevel, maxlevel);
+    for (int i = 0; i < dSpaceGetNumGeoms(s); i++) twin(fresh, dSpaceGetGeom(s, i));
+    pairs a = { 0 }, b = { 0 };
+    dSpaceCollide(s, &a, record);
+    dSpaceCollide(fresh, &b, record);
+    CHECK(a.n == b.n && a.n > 0);
+    CHECK(memcmp(a.p, b.p, (size_t)a.n * sizeof *a.p) == 0);
+    free(a.p);
+    free(b.p);
+    dSpaceDestroy(fresh);
+    return 0;
+}
+
+static int test_pair_order_depends_only_on_the_geoms(void)
+{
+    // After every few steps of edits, the kept space and one made afresh
+    // with the same geoms in the same order give the same sequence of
+    // callbacks (the history of moves and edits leaves no trace).
+    rng_state = 0x13198A2E03707344u;
+    dSpaceID s = dHashSpaceCreate(0);
+    number(dCreatePlane(s, 0, 0, 1, -15), next_number++);
+    for (int i = 0; i < 300; i++) random_geom(s);
+    int lo = -3, hi = 10;
+    for (int step = 0; step < 200; step++) {
+        edit(s, 1, 1 + (int)rnd(0, 60));
+        if (step == 100) {
+            lo = -2;
+            hi = 5;
+            dHashSpaceSetLevels(s, lo, hi);
+        }
+        pairs scratch = { 0 };
+        dSpaceCollide(s, &scratch, record);   // the cells follow the edits
+        free(scratch.p);
+        if (step % 5 == 4 && check_order_is_fresh(s, lo, hi)) return 1;
+    }
+    dSpaceDestroy(s);
+    return 0;
+}
+
+// ---- no allocation once warm ----------------------------------------------------
+
+static int test_geoms_changing_cells_allocate_nothing_once_warm(void)
+{
+    // 400 spheres that every step jump between two places a cell apart
+    // (every geom changes cells every step), with collisions and queries.
+    dSpaceID s = dHashSpaceCreate(0);
+    dGeomID g[400];
+    rng_state = 77;
+    for (int i = 0; i < 400; i++) {
+        g[i] = dCreateSphere(s, (dReal)rnd(0.05, 0.5));
+        number(g[i], i + 1);
+    }
+    dGeomID probe = dCreateBox(0, 2, 2, 2);
+    number(probe, 1000);
+    pairs got = { 0 };
+    int moved_pairs = 0;
+    for (int step = 0; step < 8; step++) {
+        if (step == 4) test_count_allocations();
+        const dReal shift = (dReal)(step % 2);
+        for (int i = 0; i < 400; i++)
+            dGeomSetPosition(g[i], (dReal)(i % 20) * REAL(0.7) + shift,
+                             (dReal)(i / 20) * REAL(0.7) + shift, shift);
+        got.n = 0;
+        dSpaceCollide(s, &got, record);
+        moved_pairs += got.n;
+        dSpaceCollide2(probe, (dGeomID)s, &got, record);
+    }
+    CHECK(test_allocations_counted() == 0);
+    CHECK(moved_pairs > 0);
+    free(got.p);
+    dGeomDestroy(probe);
+    dSpaceDestroy(s);
+    return 0;
+}
+
+// ---- levels changed from the callback ---------------------------------------------
+
+typedef struct relevel_call {
+    dSpaceID s;
+    pairs got;
+} relevel_call;
+
+static void relevel_on_first(void *data, dGeomID a, dGeomID b)
+{
+    relevel_call *rc = data;
+    if (rc->got.n == 0) dHashSpaceSetLevels(rc->s, 0, 0);
+    pairs_add(&rc->got, idx(a), idx(b));
+}
+
+static int test_levels_changed_by_the_callback_take_effect_after_it(void)
+{
+    // The collision in progress finishes with the cells it started with
+    // (every pair still found once); the next one uses the new levels.
+    rng_state = 5;
+    dSpaceID s = dHashSpaceCreate(0);
+    for (int i = 0; i < 150; i++) random_geom(s);
+    pairs want = { 0 };
+    brute_pairs(s, &want);
+    relevel_call rc = { s, { 0 } };
+    dSpaceCollide(s, &rc, relevel_on_first);
+    CHECK(same_pair_set(&rc.got, &want));
+    int lo, hi;
+    dHashSpaceGetLevels(s, &lo, &hi);
+    CHECK(lo == 0 && hi == 0);
+    if (check_collide(s)) return 1;
+    if (check_order_is_fresh(s, 0, 0)) return 1;
+    free(want.p);
+    free(rc.got.p);
+    dSpaceDestroy(s);
+    return 0;
+}
+
+const test_case test_cases[] = {
+    TEST_CASE(test_random_edits_find_the_brute_force_pairs_every_step),
+    TEST_CASE(test_pair_order_depends_only_on_the_geoms),
+    TEST_CASE(test_geoms_changing_cells_allocate_nothing_once_warm),
+    TEST_CASE(test_levels_changed_by_the_callback_take_effect_after_it),
+    TEST_END
+};
