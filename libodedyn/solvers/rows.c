@@ -11,6 +11,8 @@
 
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 
 void dxBodyWorldInverseInertia(const struct dxBody *b, dReal *out)
 {
@@ -220,14 +222,51 @@ void dxJointRowsFill(struct dxWorld *w, dxJoint *j, dReal h, dReal *J, dReal *c,
                         "no answer): it acts with no force this step", j->cls->name);
 }
 
+// The top bit of the result is set when x is infinite or NaN (its exponent
+// bits all ones: adding one to the exponent field carries into the top bit).
+// Integer operations with no branch, so the loops below vectorise.
+#if defined(dDOUBLE)
+typedef uint64_t dxRealBits;
+#define DX_EXP_BITS UINT64_C(0x7ff0000000000000)
+#define DX_EXP_ONE UINT64_C(0x0010000000000000)
+#else
+typedef uint32_t dxRealBits;
+#define DX_EXP_BITS UINT32_C(0x7f800000)
+#define DX_EXP_ONE UINT32_C(0x00800000)
+#endif
+#define DX_TOP_BIT ((dxRealBits)1 << (sizeof(dxRealBits) * 8 - 1))
+
+static inline dxRealBits nonfinite_bit(dReal x)
+{
+    dxRealBits u;
+    memcpy(&u, &x, sizeof u);
+    return (u & DX_EXP_BITS) + DX_EXP_ONE;
+}
+
+// The same for two numbers at once (GCC/Clang vector extension: SSE2 and,
+// add, or), for the 12 numbers of a row's J.
+typedef dxRealBits dxRealBitsPair __attribute__((vector_size(2 * sizeof(dxRealBits))));
+
+static inline dxRealBitsPair nonfinite_bits2(const dReal *x)
+{
+    dxRealBitsPair u;
+    memcpy(&u, x, sizeof u);
+    return (u & DX_EXP_BITS) + DX_EXP_ONE;
+}
+
 int dxJointRowsKeepFinite(const dxJoint *j, int m, dReal *J, int skip, dReal *c, dReal *cfm,
                           dReal *lo, dReal *hi, int *findex)
 {
-    int finite = 1;
-    for (int i = 0; i < m && finite; i++) {
-        finite = dxIsFinite(c[i]) && dxIsFinite(cfm[i]) && !isnan(lo[i]) && !isnan(hi[i]);
-        for (int e = 0; e < 12; e++) finite = finite && dxIsFinite(J[i * skip + e]);
+    dxRealBitsPair pair = { 0, 0 };
+    dxRealBits bad = 0;
+    for (int i = 0; i < m; i++) {
+        const dReal *Ji = J + i * skip;
+        for (int e = 0; e < 12; e += 2) pair |= nonfinite_bits2(Ji + e);
+        bad |= nonfinite_bit(c[i]) | nonfinite_bit(cfm[i]);
+        if (isnan(lo[i]) || isnan(hi[i])) bad |= DX_TOP_BIT;   // infinite bounds are fine
     }
+    bad |= pair[0] | pair[1];
+    const int finite = !(bad & DX_TOP_BIT);
     if (finite) return 1;
     for (int i = 0; i < m; i++) {
         for (int e = 0; e < 12; e++) J[i * skip + e] = 0;
