@@ -6,13 +6,13 @@
 // callback may itself collide heightfields.
 
 #include "test.h"
+#include "collide_threads.h"
 #include "test_trimesh_meshes.h"
 
 #include <math.h>
-#include <pthread.h>
 #include <string.h>
 
-enum { NX = 33, NZ = 25, POSES = 40, MAXC = 8, ROUNDS = 40, KINDS = 6 };
+enum { NX = 33, NZ = 25, POSES = 40, ROUNDS = 40, KINDS = 6 };
 #define WIDTH 16.0
 #define DEPTH 12.0
 
@@ -35,78 +35,43 @@ static dHeightfieldDataID make_field(void)
 }
 
 // One thread's geoms (a sphere, a box, a capsule, a cylinder, a ray, a
-// closed trimesh) and poses, and the contacts each pose gave single-threaded.
+// closed trimesh on its own data) and poses.
 typedef struct worker {
-    dGeomID field, geom[KINDS];
+    ct_worker ct;
     test_mesh ball;
-    dReal pose[POSES][3];
-    dContactGeom expected[POSES][KINDS][MAXC];
-    int expected_n[POSES][KINDS];
-    int mismatches;
 } worker;
-
-static void place(worker *w, int p)
-{
-    for (int k = 0; k < KINDS; k++)
-        dGeomSetPosition(w->geom[k], w->pose[p][0], w->pose[p][1], w->pose[p][2]);
-}
-
-static int same(const dContactGeom *a, const dContactGeom *b, int n)
-{
-    for (int i = 0; i < n; i++)
-        if (memcmp(a[i].pos, b[i].pos, 3 * sizeof(dReal)) ||
-            memcmp(a[i].normal, b[i].normal, 3 * sizeof(dReal)) || a[i].depth != b[i].depth ||
-            a[i].side1 != b[i].side1 || a[i].side2 != b[i].side2 || a[i].g1 != b[i].g1 ||
-            a[i].g2 != b[i].g2)
-            return 0;
-    return 1;
-}
-
-static void *work(void *arg)
-{
-    worker *w = (worker *)arg;
-    dAllocateODEDataForThread(dAllocateMaskAll);
-    for (int r = 0; r < ROUNDS; r++)
-        for (int p = 0; p < POSES; p++) {
-            place(w, p);
-            for (int k = 0; k < KINDS; k++) {
-                dContactGeom c[MAXC];
-                int n = dCollide(w->field, w->geom[k], MAXC, c, sizeof c[0]);
-                if (n != w->expected_n[p][k] || !same(c, w->expected[p][k], n)) w->mismatches++;
-            }
-        }
-    dCleanupODEAllDataForThread();
-    return NULL;
-}
 
 static void make_worker(worker *w, dGeomID field, int i)
 {
-    w->field = field;
-    w->mismatches = 0;
-    w->geom[0] = dCreateSphere(0, 0.3);
-    w->geom[1] = dCreateBox(0, 0.5, 0.4, 0.3);
-    w->geom[2] = dCreateCapsule(0, 0.2, 0.6);
-    w->geom[3] = dCreateCylinder(0, 0.25, 0.5);
-    w->geom[4] = dCreateRay(0, 1);
+    ct_worker *c = &w->ct;
+    c->target = field;
+    c->kinds = KINDS;
+    c->poses = POSES;
+    c->rounds = ROUNDS;
+    c->geom[0] = dCreateSphere(0, 0.3);
+    c->geom[1] = dCreateBox(0, 0.5, 0.4, 0.3);
+    c->geom[2] = dCreateCapsule(0, 0.2, 0.6);
+    c->geom[3] = dCreateCylinder(0, 0.25, 0.5);
+    c->geom[4] = dCreateRay(0, 1);
     mesh_icosphere(&w->ball, 0.35, 1);
-    w->geom[5] = dCreateTriMesh(0, w->ball.data, NULL, NULL, NULL);
+    c->geom[5] = dCreateTriMesh(0, w->ball.data, NULL, NULL, NULL);
     dMatrix3 R;
     dRFromAxisAndAngle(R, 1, 0.5 * i, 0.3, 0.7 + i);
-    for (int k = 1; k < 4; k++) dGeomSetRotation(w->geom[k], R);
-    dGeomSetRotation(w->geom[5], R);
+    for (int k = 1; k < 4; k++) dGeomSetRotation(c->geom[k], R);
+    dGeomSetRotation(c->geom[5], R);
     dRFromAxisAndAngle(R, 1, 0, 0, M_PI / 2);   // the ray looks down (-Y)
-    dGeomSetRotation(w->geom[4], R);
+    dGeomSetRotation(c->geom[4], R);
     for (int p = 0; p < POSES; p++) {
         double x = -6 + 12.0 * ((p * 7 + 3 * i) % POSES) / POSES, z = 4 * sin(p + i);
-        w->pose[p][0] = x;
-        w->pose[p][1] = surface(x, z) + 0.1 + 0.03 * (p % 5);
-        w->pose[p][2] = z;
+        c->pose[p][0] = x;
+        c->pose[p][1] = surface(x, z) + 0.1 + 0.03 * (p % 5);
+        c->pose[p][2] = z;
     }
 }
 
 static void free_worker(worker *w)
 {
-    for (int k = 0; k < KINDS; k++) dGeomDestroy(w->geom[k]);
+    for (int k = 0; k < KINDS; k++) dGeomDestroy(w->ct.geom[k]);
     mesh_free(&w->ball);
 }
 
@@ -120,23 +85,11 @@ static int test_two_threads_collide_one_heightfield(void)
     static worker w[2];
     for (int i = 0; i < 2; i++) {
         make_worker(&w[i], field, i);
-        int touching[KINDS] = { 0 };
-        for (int p = 0; p < POSES; p++) {
-            place(&w[i], p);
-            for (int k = 0; k < KINDS; k++) {
-                w[i].expected_n[p][k] = dCollide(field, w[i].geom[k], MAXC, w[i].expected[p][k],
-                                                 sizeof(dContactGeom));
-                touching[k] += w[i].expected_n[p][k] > 0;
-            }
-        }
+        int touching[CT_KINDS];
+        ct_record(&w[i].ct, touching);
         for (int k = 0; k < KINDS; k++) CHECK(touching[k] > POSES / 2);   // the poses touch
     }
-
-    pthread_t t[2];
-    for (int i = 0; i < 2; i++) CHECK(pthread_create(&t[i], NULL, work, &w[i]) == 0);
-    for (int i = 0; i < 2; i++) pthread_join(t[i], NULL);
-
-    CHECK(w[0].mismatches == 0 && w[1].mismatches == 0);
+    CHECK(ct_run_pair(&w[0].ct, &w[1].ct) == 0);
     for (int i = 0; i < 2; i++) free_worker(&w[i]);
     dGeomDestroy(field);
     dGeomHeightfieldDataDestroy(d);

@@ -11,10 +11,10 @@
 // warm, and rays reading the leaf-order copy of the vertices.
 
 #include "test.h"
+#include "collide_threads.h"
 #include "test_trimesh_meshes.h"
 
 #include <math.h>
-#include <pthread.h>
 #include <string.h>
 
 static double wavy(double x, double y)
@@ -116,17 +116,6 @@ typedef struct rain {
     int pairs, touching, mismatches;
 } rain;
 
-static int same_contacts(const dContactGeom *a, const dContactGeom *b, int n)
-{
-    for (int i = 0; i < n; i++)
-        if (memcmp(a[i].pos, b[i].pos, 3 * sizeof(dReal)) ||
-            memcmp(a[i].normal, b[i].normal, 3 * sizeof(dReal)) ||
-            memcmp(&a[i].depth, &b[i].depth, sizeof(dReal)) || a[i].g1 != b[i].g1 ||
-            a[i].g2 != b[i].g2 || a[i].side1 != b[i].side1 || a[i].side2 != b[i].side2)
-            return 0;
-    return 1;
-}
-
 // A mesh pair collided with the cache off, then on (in either argument
 // order): the same contacts and the same callback sequence, or a mismatch.
 static int collide_both_ways(rain *r, dGeomID a, dGeomID b, dContactGeom *out)
@@ -143,7 +132,7 @@ static int collide_both_ways(rain *r, dGeomID a, dGeomID b, dContactGeom *out)
     int n = dCollide(a, b, MAXC, out, sizeof out[0]);
     r->pairs++;
     r->touching += n > 0;
-    if (n != n_off || !same_contacts(out, off, n) || on_log.n != off_log.n ||
+    if (n != n_off || !ct_same_contacts(out, off, n) || on_log.n != off_log.n ||
         memcmp(on_log.tri, off_log.tri, sizeof(int) * (size_t)(on_log.n < LOG ? on_log.n : LOG)))
         r->mismatches++;
     return n;
@@ -281,38 +270,6 @@ static int test_warm_queries_allocate_nothing(void)
 
 enum { POSES = 60, ROUNDS = 20, KINDS = 3 };
 
-typedef struct worker {
-    dGeomID mesh, geom[KINDS];
-    dReal pose[POSES][3];
-    dContactGeom expected[POSES][KINDS][MAXC];
-    int expected_n[POSES][KINDS];
-    int mismatches;
-} worker;
-
-static void place(worker *w, int p)
-{
-    for (int k = 0; k < KINDS; k++)
-        dGeomSetPosition(w->geom[k], w->pose[p][0], w->pose[p][1], w->pose[p][2]);
-}
-
-static void *work(void *arg)
-{
-    worker *w = (worker *)arg;
-    dAllocateODEDataForThread(dAllocateMaskAll);
-    for (int round = 0; round < ROUNDS; round++)
-        for (int p = 0; p < POSES; p++) {
-            place(w, p);
-            for (int k = 0; k < KINDS; k++) {
-                dContactGeom c[MAXC];
-                int n = dCollide(w->mesh, w->geom[k], MAXC, c, sizeof c[0]);
-                if (n != w->expected_n[p][k] || !same_contacts(c, w->expected[p][k], n))
-                    w->mismatches++;
-            }
-        }
-    dCleanupODEAllDataForThread();
-    return NULL;
-}
-
 static int test_two_threads(void)
 {
     dInitODE2(0);
@@ -321,10 +278,12 @@ static int test_two_threads(void)
     dGeomID mesh = dCreateTriMesh(0, m.data, NULL, NULL, NULL);
     dReal aabb[6];
     dGeomGetAABB(mesh, aabb);   // the mesh's pose settled before the threads read it
-    static worker w[2];
+    static ct_worker w[2];
     for (int i = 0; i < 2; i++) {
-        w[i].mesh = mesh;
-        w[i].mismatches = 0;
+        w[i].target = mesh;
+        w[i].kinds = KINDS;
+        w[i].poses = POSES;
+        w[i].rounds = ROUNDS;
         w[i].geom[0] = dCreateSphere(0, 0.25);
         w[i].geom[1] = dCreateBox(0, 0.5, 0.4, 0.3);
         w[i].geom[2] = dCreateCapsule(0, 0.2, 0.6);
@@ -339,22 +298,12 @@ static int test_two_threads(void)
             w[i].pose[p][1] = y;
             w[i].pose[p][2] = wavy(x, y) + 0.12 + 0.01 * (p % 3);
         }
-        int touching = 0;
-        for (int p = 0; p < POSES; p++) {   // expected: the cache off
-            place(&w[i], p);
-            for (int k = 0; k < KINDS; k++) {
-                w[i].expected_n[p][k] = dCollide(mesh, w[i].geom[k], MAXC, w[i].expected[p][k],
-                                                 sizeof(dContactGeom));
-                touching += w[i].expected_n[p][k] > 0;
-            }
-        }
-        CHECK(touching > POSES * KINDS / 2);
+        int touching[CT_KINDS];
+        ct_record(&w[i], touching);   // expected: the cache off
+        CHECK(touching[0] + touching[1] + touching[2] > POSES * KINDS / 2);
     }
     set_tc(mesh, 1);
-    pthread_t t[2];
-    for (int i = 0; i < 2; i++) CHECK(pthread_create(&t[i], NULL, work, &w[i]) == 0);
-    for (int i = 0; i < 2; i++) pthread_join(t[i], NULL);
-    CHECK(w[0].mismatches == 0 && w[1].mismatches == 0);
+    CHECK(ct_run_pair(&w[0], &w[1]) == 0);
     for (int i = 0; i < 2; i++)
         for (int k = 0; k < KINDS; k++) dGeomDestroy(w[i].geom[k]);
     dGeomDestroy(mesh);

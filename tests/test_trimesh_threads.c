@@ -6,62 +6,20 @@
 // callback may itself collide meshes.
 
 #include "test.h"
+#include "collide_threads.h"
 #include "test_trimesh_meshes.h"
 
 #include <math.h>
-#include <pthread.h>
 #include <string.h>
 
-enum { POSES = 40, MAXC = 8, ROUNDS = 60, KINDS = 4 };
+enum { POSES = 40, ROUNDS = 60, KINDS = 4 };
 
 static double wavy(double x, double y)
 {
     return 0.3 * sin(1.3 * x) * cos(0.9 * y);
 }
 
-// One thread's geoms (a sphere, a box, a capsule, a ray) and poses, and the
-// contacts each pose gave single-threaded.
-typedef struct worker {
-    dGeomID mesh, geom[KINDS];
-    dReal pose[POSES][3];
-    dContactGeom expected[POSES][KINDS][MAXC];
-    int expected_n[POSES][KINDS];
-    int mismatches;
-} worker;
-
-static void place(worker *w, int p)
-{
-    for (int k = 0; k < KINDS; k++)
-        dGeomSetPosition(w->geom[k], w->pose[p][0], w->pose[p][1], w->pose[p][2]);
-}
-
-static int same(const dContactGeom *a, const dContactGeom *b, int n)
-{
-    for (int i = 0; i < n; i++)
-        if (memcmp(a[i].pos, b[i].pos, 3 * sizeof(dReal)) ||
-            memcmp(a[i].normal, b[i].normal, 3 * sizeof(dReal)) || a[i].depth != b[i].depth ||
-            a[i].side1 != b[i].side1 || a[i].g1 != b[i].g1 || a[i].g2 != b[i].g2)
-            return 0;
-    return 1;
-}
-
-static void *work(void *arg)
-{
-    worker *w = (worker *)arg;
-    dAllocateODEDataForThread(dAllocateMaskAll);
-    for (int r = 0; r < ROUNDS; r++)
-        for (int p = 0; p < POSES; p++) {
-            place(w, p);
-            for (int k = 0; k < KINDS; k++) {
-                dContactGeom c[MAXC];
-                int n = dCollide(w->mesh, w->geom[k], MAXC, c, sizeof c[0]);
-                if (n != w->expected_n[p][k] || !same(c, w->expected[p][k], n)) w->mismatches++;
-            }
-        }
-    dCleanupODEAllDataForThread();
-    return NULL;
-}
-
+// Each thread has a sphere, a box, a capsule and a ray at its own poses.
 static int test_two_threads_collide_one_mesh(void)
 {
     dInitODE2(0);
@@ -70,10 +28,12 @@ static int test_two_threads_collide_one_mesh(void)
     dGeomID mesh = dCreateTriMesh(0, m.data, NULL, NULL, NULL);
     dReal aabb[6];
     dGeomGetAABB(mesh, aabb);   // the mesh's pose settled before the threads read it
-    static worker w[2];
+    static ct_worker w[2];
     for (int i = 0; i < 2; i++) {
-        w[i].mesh = mesh;
-        w[i].mismatches = 0;
+        w[i].target = mesh;
+        w[i].kinds = KINDS;
+        w[i].poses = POSES;
+        w[i].rounds = ROUNDS;
         w[i].geom[0] = dCreateSphere(0, 0.3);
         w[i].geom[1] = dCreateBox(0, 0.5, 0.4, 0.3);
         w[i].geom[2] = dCreateCapsule(0, 0.2, 0.6);
@@ -90,23 +50,13 @@ static int test_two_threads_collide_one_mesh(void)
             w[i].pose[p][1] = y;
             w[i].pose[p][2] = wavy(x, y) + 0.1 + 0.02 * (p % 5);
         }
-        int touching = 0;
-        for (int p = 0; p < POSES; p++) {
-            place(&w[i], p);
-            for (int k = 0; k < KINDS; k++) {
-                w[i].expected_n[p][k] = dCollide(mesh, w[i].geom[k], MAXC, w[i].expected[p][k],
-                                                 sizeof(dContactGeom));
-                touching += w[i].expected_n[p][k] > 0;
-            }
-        }
-        CHECK(touching > POSES * KINDS / 2);   // the poses do touch the mesh
+        int touching[CT_KINDS];
+        ct_record(&w[i], touching);
+        CHECK(touching[0] + touching[1] + touching[2] + touching[3] >
+              POSES * KINDS / 2);   // the poses do touch the mesh
     }
 
-    pthread_t t[2];
-    for (int i = 0; i < 2; i++) CHECK(pthread_create(&t[i], NULL, work, &w[i]) == 0);
-    for (int i = 0; i < 2; i++) pthread_join(t[i], NULL);
-
-    CHECK(w[0].mismatches == 0 && w[1].mismatches == 0);
+    CHECK(ct_run_pair(&w[0], &w[1]) == 0);
     for (int i = 0; i < 2; i++)
         for (int k = 0; k < KINDS; k++) dGeomDestroy(w[i].geom[k]);
     dGeomDestroy(mesh);
