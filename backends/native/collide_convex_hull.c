@@ -179,6 +179,22 @@ void dx_hull_of_geom(dx_hull *h, const dxGeom *g, dx_hull_box *bx)
         box_hull(h, (const dxBox *)g, bx);
 }
 
+// Narrows [t0, t1] to where the line o + t d is inside one plane, given
+// nd = n . d and gap = off - n . o (|d| = dl); 0 when a plane parallel to the
+// line has it outside by more than tol.
+static inline int narrow_to_plane(double nd, double gap, double dl, double tol, double *t0,
+                                  double *t1)
+{
+    if (fabs(nd) <= DX_HULL_EPS * dl) return !(gap < -tol);
+    double t = gap / nd;
+    if (nd > 0) {
+        if (t < *t1) *t1 = t;
+    } else if (t > *t0) {
+        *t0 = t;
+    }
+    return 1;
+}
+
 int dx_hull_clip_line(const dx_hull *h, const double o[3], const double d[3], double tol,
                       double *t0, double *t1)
 {
@@ -187,16 +203,7 @@ int dx_hull_clip_line(const dx_hull *h, const double o[3], const double d[3], do
         double n[3], off;
         dx_hull_plane(h, f, n, &off);
         double nd = dot3(n, d), gap = off - dot3(n, o);   // n . (o + t d) <= off
-        if (fabs(nd) <= DX_HULL_EPS * dl) {
-            if (gap < -tol) return 0;
-            continue;
-        }
-        double t = gap / nd;
-        if (nd > 0) {
-            if (t < *t1) *t1 = t;
-        } else if (t > *t0) {
-            *t0 = t;
-        }
+        if (!narrow_to_plane(nd, gap, dl, tol, t0, t1)) return 0;
     }
     return *t0 <= *t1 + tol / dl;
 }
@@ -242,16 +249,7 @@ static int clip_line_along(const dx_hull *h, const line_planes *lp, const double
 {
     for (unsigned f = 0; f < h->nplanes; f++) {
         double nd = lp->nd[f], gap = h->wd[f] - dot3(h->wn[f], o);
-        if (fabs(nd) <= DX_HULL_EPS * lp->dl) {
-            if (gap < -tol) return 0;
-            continue;
-        }
-        double t = gap / nd;
-        if (nd > 0) {
-            if (t < *t1) *t1 = t;
-        } else if (t > *t0) {
-            *t0 = t;
-        }
+        if (!narrow_to_plane(nd, gap, lp->dl, tol, t0, t1)) return 0;
     }
     return *t0 <= *t1 + tol / lp->dl;
 }
