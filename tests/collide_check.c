@@ -3,8 +3,10 @@
 // collide_check.c -- see collide_check.h.
 
 #include "collide_check.h"
+#include "test.h"
 
 #include <math.h>
+#include <string.h>
 
 void set_rot(dGeomID g, dReal ax, dReal ay, dReal az, dReal angle)
 {
@@ -67,4 +69,24 @@ double rnd(double lo, double hi)
 {
     rng_state = rng_state * 6364136223846793005ull + 1442695040888963407ull;
     return lo + (hi - lo) * (double)(rng_state >> 11) / 9007199254740992.0;
+}
+
+int backend_built(const char *name)
+{
+    for (const char *const *b = dCollisionListBackends(); *b; b++)
+        if (strcmp(*b, name) == 0) return 1;
+    return 0;
+}
+
+int backend_answers(const char *backend, dGeomID a, dGeomID b)
+{
+    dContactGeom c[16];
+    dCollisionSetBackend(backend);
+    test_capture_reports();
+    dCollisionSetStrict(1);
+    dCollide(a, b, 16, c, sizeof c[0]);
+    dCollisionSetStrict(0);
+    int answered = !test_captured_contains("cannot collide");
+    test_release_reports();
+    return answered;
 }

@@ -40,18 +40,11 @@ enum { MAXC = 16 };
 
 // ---- helpers ----------------------------------------------------------------
 
-static int have_backend(const char *name)
-{
-    for (const char *const *n = dCollisionListBackends(); *n; n++)
-        if (strcmp(*n, name) == 0) return 1;
-    return 0;
-}
-
 // Every case starts here: skip (pass with a TAP comment) without Bullet, else
 // select it.
 #define USE_BULLET() \
     do { \
-        if (!have_backend("bullet")) \
+        if (!backend_built("bullet")) \
             return test_skip("this library was built without the bullet backend"); \
         CHECK(dCollisionSetBackend("bullet") == 1); \
     } while (0)
@@ -144,7 +137,7 @@ static int test_environment_selects_bullet(void)
         CHECK(strcmp(dCollisionGetBackend(), "native") == 0);
         return 0;
     }
-    if (!have_backend("bullet"))
+    if (!backend_built("bullet"))
         return test_skip("this library was built without the bullet backend");
     CHECK(strcmp(dCollisionGetBackend(), "bullet") == 0);
     dGeomID ray = dCreateRay(0, 10), s = dCreateSphere(0, 1);
@@ -554,7 +547,7 @@ static int test_switching_backends(void)
     dContactGeom c[MAXC];
     for (int i = 0; i < 6; i++) {
         if (i == 4) dGeomSphereSetRadius(s, 0.6);   // 0.35 deep from now on
-        if (!have_backend(order[i])) continue;
+        if (!backend_built(order[i])) continue;
         CHECK(dCollisionSetBackend(order[i]) == 1);
         dReal want = i >= 4 ? 0.35 : 0.25;
         int n = dCollide(b, plane, MAXC, c, sizeof c[0]);

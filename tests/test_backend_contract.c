@@ -50,30 +50,6 @@ static double point_tol(double true_depth)
     return 0.01 + 0.1 * true_depth;
 }
 
-// ---- backends ---------------------------------------------------------------------
-
-static int backend_built(const char *name)
-{
-    for (const char *const *b = dCollisionListBackends(); *b; b++)
-        if (strcmp(*b, name) == 0) return 1;
-    return 0;
-}
-
-// Whether the backend answers the pair itself: in strict mode a pair it
-// leaves to native is reported instead of collided.
-static int backend_answers(const char *backend, dGeomID a, dGeomID b)
-{
-    dContactGeom c[MAXC];
-    dCollisionSetBackend(backend);
-    test_capture_reports();
-    dCollisionSetStrict(1);
-    dCollide(a, b, MAXC, c, sizeof c[0]);
-    dCollisionSetStrict(0);
-    int answered = !test_captured_contains("cannot collide");
-    test_release_reports();
-    return answered;
-}
-
 // ---- random poses -----------------------------------------------------------------
 
 static void random_unit(double v[3])

@@ -8,6 +8,7 @@
 // at the height native gives it (to 1 mm). The final heights and speeds are
 // printed.
 
+#include "collide_check.h"
 #include "test.h"
 
 #include <math.h>
@@ -127,13 +128,6 @@ static void run_drop(const char *backend, int quick, const drop *d, double *z, d
     *speed = top_speed(&s, d);
     scene_end(&s);
     dCollisionSetBackend("native");
-}
-
-static int backend_built(const char *name)
-{
-    for (const char *const *b = dCollisionListBackends(); *b; b++)
-        if (strcmp(*b, name) == 0) return 1;
-    return 0;
 }
 
 static int check_backend(const char *backend)

@@ -10,6 +10,7 @@
 // that backend gives one contact there; FCL and Bullet, both caching
 // shapes, keep their own under shadow mode; bad arguments are reported.
 
+#include "collide_check.h"
 #include "test.h"
 
 #include <math.h>
@@ -18,13 +19,6 @@
 #include <string.h>
 
 enum { MAXC = 8, NPAIRS = dGeomNumClasses * (dGeomNumClasses + 1) / 2 };
-
-static int backend_built(const char *name)
-{
-    for (const char *const *n = dCollisionListBackends(); *n; n++)
-        if (strcmp(*n, name) == 0) return 1;
-    return 0;
-}
 
 // The counts of one pair class (zeroed when it was never seen).
 static dCollisionShadowStats stats_of(int c1, int c2)
