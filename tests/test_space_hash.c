@@ -10,6 +10,7 @@
 // back in the same order), which is what replays and snapshots rely on; and
 // geoms changing cells every step allocate nothing once the space is warm.
 
+#include "space_pairs.h"
 #include "test.h"
 
 #include <stdint.h>
@@ -18,74 +19,7 @@
 
 // ---- recorded pairs -------------------------------------------------------------
 
-// Geoms are numbered through their user data (1, 2, ...).
-static int idx(dGeomID g) { return (int)(intptr_t)dGeomGetData(g); }
 static void number(dGeomID g, int i) { dGeomSetData(g, (void *)(intptr_t)i); }
-
-typedef struct pairs {
-    int n, cap;
-    int (*p)[2];   // (number of o1, number of o2) in callback order
-} pairs;
-
-static void pairs_add(pairs *l, int a, int b)
-{
-    if (l->n == l->cap) {
-        l->cap = l->cap ? 2 * l->cap : 256;
-        l->p = realloc(l->p, (size_t)l->cap * sizeof *l->p);
-    }
-    l->p[l->n][0] = a;
-    l->p[l->n][1] = b;
-    l->n++;
-}
-
-static void record(void *data, dGeomID a, dGeomID b) { pairs_add(data, idx(a), idx(b)); }
-
-static int cmp_u64(const void *a, const void *b)
-{
-    uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
-    return x < y ? -1 : x > y;
-}
-
-// The pairs as sorted unordered keys; caller frees.
-static uint64_t *pair_keys(const pairs *l)
-{
-    uint64_t *k = malloc((size_t)(l->n + 1) * sizeof *k);
-    for (int i = 0; i < l->n; i++) {
-        uint64_t a = (uint64_t)l->p[i][0], b = (uint64_t)l->p[i][1];
-        k[i] = a < b ? a << 32 | b : b << 32 | a;
-    }
-    qsort(k, (size_t)l->n, sizeof *k, cmp_u64);
-    return k;
-}
-
-// 1 if both lists hold the same unordered pairs and neither holds one twice.
-static int same_pair_set(const pairs *x, const pairs *y)
-{
-    if (x->n != y->n) return 0;
-    uint64_t *a = pair_keys(x), *b = pair_keys(y);
-    int same = memcmp(a, b, (size_t)x->n * sizeof *a) == 0;
-    for (int i = 1; i < x->n; i++) same &= a[i] != a[i - 1];
-    free(a);
-    free(b);
-    return same;
-}
-
-// What a space must report for a and b (the guide, 10.5): both enabled, not
-// on one body, bits matching, AABBs overlapping as closed boxes.
-static int expect_touch(dGeomID a, dGeomID b)
-{
-    if (!dGeomIsEnabled(a) || !dGeomIsEnabled(b)) return 0;
-    if (dGeomGetBody(a) && dGeomGetBody(a) == dGeomGetBody(b)) return 0;
-    if (!(dGeomGetCategoryBits(a) & dGeomGetCollideBits(b)) &&
-        !(dGeomGetCategoryBits(b) & dGeomGetCollideBits(a)))
-        return 0;
-    dReal p[6], q[6];
-    dGeomGetAABB(a, p);
-    dGeomGetAABB(b, q);
-    for (int k = 0; k < 6; k += 2)
-        if (!(p[k] <= q[k + 1] && q[k] <= p[k + 1])) return 0;
-    return 1;
-}
 
 // The brute-force pairs among the geoms of s (nested spaces as geoms).
 static void brute_pairs(dSpaceID s, pairs *out)
@@ -104,7 +38,7 @@ static int check_collide(dSpaceID s)
     pairs want = { 0 }, got = { 0 };
     brute_pairs(s, &want);
     dSpaceCollide(s, &got, record);
-    CHECK(same_pair_set(&got, &want));
+    CHECK(pairs_same(&got, &want) && pairs_unique(&got));
     free(want.p);
     free(got.p);
     return 0;
@@ -119,7 +53,7 @@ static int check_collide2(dGeomID o, dSpaceID s)
         if (expect_touch(o, g)) pairs_add(&want, idx(o), idx(g));
     }
     dSpaceCollide2(o, (dGeomID)s, &got, record);
-    CHECK(same_pair_set(&got, &want));
+    CHECK(pairs_same(&got, &want) && pairs_unique(&got));
     for (int i = 0; i < got.n; i++) CHECK(got.p[i][0] == idx(o));
     free(want.p);
     free(got.p);
@@ -261,7 +195,7 @@ static int test_random_edits_find_the_brute_force_pairs_every_step(void)
                     if (expect_touch(a, b)) pairs_add(&want, idx(a), idx(b));
                 }
             dSpaceCollide2((dGeomID)outside, (dGeomID)s, &got, record);
-            CHECK(same_pair_set(&got, &want));
+            CHECK(pairs_same(&got, &want) && pairs_unique(&got));
             free(want.p);
             free(got.p);
             edit(outside, 0, 10);
@@ -425,7 +359,7 @@ static int test_levels_changed_by_the_callback_take_effect_after_it(void)
     brute_pairs(s, &want);
     relevel_call rc = { s, { 0 } };
     dSpaceCollide(s, &rc, relevel_on_first);
-    CHECK(same_pair_set(&rc.got, &want));
+    CHECK(pairs_same(&rc.got, &want) && pairs_unique(&rc.got));
     int lo, hi;
     dHashSpaceGetLevels(s, &lo, &hi);
     CHECK(lo == 0 && hi == 0);
