@@ -685,24 +685,23 @@ static void pose_other(dGeomID g, int k)
     set_rot(g, 1, 1, 0, (dReal)(0.3 * k));
 }
 
-// A hull remembers the axis that parted it from each of its last few
-// partners and tries it first. That is only a shortcut: a hull wandering
-// among 12 others (more than it remembers), in and out of contact, gets
-// exactly the contacts that fresh geoms at the same poses get.
-static int test_remembered_axis_never_hides_contacts(void)
+// The geoms of a walk: the walker (k < 0) or partner k.
+typedef dGeomID (*walk_geom)(int k);
+
+// A walker wanders among 12 partners placed on a circle (more than a geom
+// remembers), in and out of contact, 3000 steps from the seed. At each step
+// its contacts with partner step % 12, in both orders, must be exactly those
+// of fresh geoms made by the same function at the same poses (nothing
+// remembered).
+static int wander_among_partners(walk_geom make, unsigned long long seed)
 {
-    test_hull bh;
-    test_hull_box(&bh, (dReal)0.6, (dReal)0.4, (dReal)0.3);
-    prism pr;
-    dGeomID walker = dCreateConvex(0, bh.planes, 6, bh.points, 8, bh.polygons);
+    dGeomID walker = make(-1);
     dGeomID others[12];
     for (int k = 0; k < 12; k++) {
-        others[k] = k % 3 == 0 ? dCreateBox(0, (dReal)0.5, (dReal)0.5, (dReal)0.5)
-                  : k % 3 == 1 ? make_octahedron()
-                               : make_prism(&pr);
+        others[k] = make(k);
         pose_other(others[k], k);
     }
-    rng_state = 77;
+    rng_state = seed;
     double p[3] = { 0, 0, 0 };
     int touching = 0, apart = 0;
     for (int step = 0; step < 3000; step++) {
@@ -714,12 +713,7 @@ static int test_remembered_axis_never_hides_contacts(void)
         int k = step % 12;
         dContactGeom a[MAXC], b[MAXC];
         int na = dCollide(walker, others[k], MAXC, a, sizeof a[0]);
-        // Fresh geoms: nothing remembered.
-        dGeomID w2 = dCreateConvex(0, bh.planes, 6, bh.points, 8, bh.polygons);
-        dGeomID o2 = k % 3 == 0 ? dCreateBox(0, (dReal)0.5, (dReal)0.5, (dReal)0.5)
-                   : k % 3 == 1 ? make_octahedron()
-                                : dCreateConvex(0, pr.planes, SIDES + 2, pr.points, 2 * SIDES,
-                                                pr.polygons);
+        dGeomID w2 = make(-1), o2 = make(k);
         place(w2, (dReal[3]){ (dReal)p[0], (dReal)p[1], (dReal)p[2] }, R);
         pose_other(o2, k);
         int nb = dCollide(w2, o2, MAXC, b, sizeof b[0]);
@@ -739,50 +733,43 @@ static int test_remembered_axis_never_hides_contacts(void)
     return 0;
 }
 
+// A hull walker among boxes, octahedra and prisms.
+static dGeomID hull_walk_geom(int k)
+{
+    static test_hull bh;
+    static prism pr;
+    if (k < 0) {
+        test_hull_box(&bh, (dReal)0.6, (dReal)0.4, (dReal)0.3);
+        return dCreateConvex(0, bh.planes, 6, bh.points, 8, bh.polygons);
+    }
+    return k % 3 == 0 ? dCreateBox(0, (dReal)0.5, (dReal)0.5, (dReal)0.5)
+         : k % 3 == 1 ? make_octahedron()
+                      : make_prism(&pr);
+}
+
+// A box walker among boxes of different shapes.
+static dGeomID box_walk_geom(int k)
+{
+    if (k < 0) return dCreateBox(0, (dReal)0.6, (dReal)0.4, (dReal)0.3);
+    return dCreateBox(0, (dReal)(0.3 + 0.05 * k), (dReal)0.5, (dReal)(0.9 - 0.04 * k));
+}
+
+// A hull remembers the axis that parted it from each of its last few
+// partners and tries it first. That is only a shortcut: a hull wandering
+// among 12 others gets exactly the contacts that fresh geoms at the same
+// poses get.
+static int test_remembered_axis_never_hides_contacts(void)
+{
+    return wander_among_partners(hull_walk_geom, 77);
+}
+
 // Box 1 of a box pair remembers the axis that parted it from each of its
 // last few partners, as hulls do: a box wandering among 12 boxes of
-// different shapes (more than it remembers) gets exactly the contacts that
-// fresh boxes at the same poses get, in either order.
+// different shapes gets exactly the contacts that fresh boxes at the same
+// poses get, in either order.
 static int test_box_remembered_axis_never_hides_contacts(void)
 {
-    dGeomID walker = dCreateBox(0, (dReal)0.6, (dReal)0.4, (dReal)0.3);
-    dGeomID others[12];
-    for (int k = 0; k < 12; k++) {
-        dReal s = (dReal)(0.3 + 0.05 * k);
-        others[k] = dCreateBox(0, s, (dReal)0.5, (dReal)(0.9 - 0.04 * k));
-        pose_other(others[k], k);
-    }
-    rng_state = 91;
-    double p[3] = { 0, 0, 0 };
-    int touching = 0, apart = 0;
-    for (int step = 0; step < 3000; step++) {
-        for (int k = 0; k < 3; k++) p[k] = fmax(-1.5, fmin(1.5, p[k] + rnd(-0.05, 0.05)));
-        p[2] = fmax(-0.4, fmin(0.4, p[2]));
-        dMatrix3 R;
-        random_rotation(R);
-        place(walker, (dReal[3]){ (dReal)p[0], (dReal)p[1], (dReal)p[2] }, R);
-        int k = step % 12;
-        dContactGeom a[MAXC], b[MAXC];
-        int na = dCollide(walker, others[k], MAXC, a, sizeof a[0]);
-        dGeomID w2 = dCreateBox(0, (dReal)0.6, (dReal)0.4, (dReal)0.3);
-        dReal s = (dReal)(0.3 + 0.05 * k);
-        dGeomID o2 = dCreateBox(0, s, (dReal)0.5, (dReal)(0.9 - 0.04 * k));
-        place(w2, (dReal[3]){ (dReal)p[0], (dReal)p[1], (dReal)p[2] }, R);
-        pose_other(o2, k);
-        int nb = dCollide(w2, o2, MAXC, b, sizeof b[0]);
-        CHECK(identical(a, na, b, nb));
-        na = dCollide(others[k], walker, MAXC, a, sizeof a[0]);
-        nb = dCollide(o2, w2, MAXC, b, sizeof b[0]);
-        CHECK(identical(a, na, b, nb));
-        touching += na > 0;
-        apart += na == 0;
-        dGeomDestroy(w2);
-        dGeomDestroy(o2);
-    }
-    CHECK(touching > 200 && apart > 200);
-    for (int k = 0; k < 12; k++) dGeomDestroy(others[k]);
-    dGeomDestroy(walker);
-    return 0;
+    return wander_among_partners(box_walk_geom, 91);
 }
 
 // ---- bad input ------------------------------------------------------------------
