@@ -256,4 +256,22 @@ static inline int bench_grid_terrain(int cells, double half, double (*height)(do
     return 1;
 }
 
+// The trimesh geom (in space) of a bench_grid_terrain of that many cells,
+// its data in *data built from v and tri in place (keep them until the data
+// is destroyed), temporal coherence set to tc for the classes that have it
+// (off by default, as in ODE).
+static inline dGeomID bench_terrain_geom(dSpaceID space, int cells, double (*v)[3],
+                                         dTriIndex (*tri)[3], int tc, dTriMeshDataID *data)
+{
+    const int nv = (cells + 1) * (cells + 1), nt = 2 * cells * cells;
+    *data = dGeomTriMeshDataCreate();
+    dGeomTriMeshDataBuildDouble(*data, v, 3 * sizeof(double), nv, tri, 3 * nt,
+                                3 * sizeof(dTriIndex));
+    dGeomID terrain = dCreateTriMesh(space, *data, NULL, NULL, NULL);
+    dGeomTriMeshEnableTC(terrain, dSphereClass, tc);
+    dGeomTriMeshEnableTC(terrain, dBoxClass, tc);
+    dGeomTriMeshEnableTC(terrain, dCapsuleClass, tc);
+    return terrain;
+}
+
 #endif

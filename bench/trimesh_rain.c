@@ -42,19 +42,13 @@ int main(int argc, char **argv)
     dSpaceID space = dHashSpaceCreate(0);
 
     // The terrain: (cells + 1)^2 vertices, 2 cells^2 triangles facing up.
-    const int nv = (cells + 1) * (cells + 1), nt = 2 * cells * cells;
+    const int nt = 2 * cells * cells;
     double(*v)[3] = NULL;
     dTriIndex(*tri)[3] = NULL;
     const int terrain_ok = bench_grid_terrain(cells, HALF, terrain_height, &v, &tri);
     if (!terrain_ok) return 1;
-    dTriMeshDataID data = dGeomTriMeshDataCreate();
-    dGeomTriMeshDataBuildDouble(data, v, 3 * sizeof(double), nv, tri, 3 * nt,
-                                3 * sizeof(dTriIndex));
-    dGeomID terrain = dCreateTriMesh(space, data, NULL, NULL, NULL);
-    // tc=on: temporal coherence on for the classes that have it (off by default, as in ODE).
-    dGeomTriMeshEnableTC(terrain, dSphereClass, tc);
-    dGeomTriMeshEnableTC(terrain, dBoxClass, tc);
-    dGeomTriMeshEnableTC(terrain, dCapsuleClass, tc);
+    dTriMeshDataID data;
+    bench_terrain_geom(space, cells, v, tri, tc, &data);
 
     const int count = spheres + boxes;
     dBodyID *body = (dBodyID *)malloc(sizeof(dBodyID) * (size_t)count);

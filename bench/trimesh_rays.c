@@ -27,7 +27,7 @@ int main(int argc, char **argv)
     bench_args_check(&args, "[rays=N] [cells=N] [rounds=N]");
 
     dInitODE2(0);
-    const int nv = (cells + 1) * (cells + 1), nt = 2 * cells * cells;
+    const int nt = 2 * cells * cells;
     double(*v)[3] = NULL;
     dTriIndex(*tri)[3] = NULL;
     const int terrain_ok = bench_grid_terrain(cells, HALF, terrain_height, &v, &tri);
@@ -35,10 +35,8 @@ int main(int argc, char **argv)
     if (!terrain_ok || !ray) return 1;
     bench_count_on();
     double t0 = bench_now();
-    dTriMeshDataID data = dGeomTriMeshDataCreate();
-    dGeomTriMeshDataBuildDouble(data, v, 3 * sizeof(double), nv, tri, 3 * nt,
-                                3 * sizeof(dTriIndex));
-    dGeomID mesh = dCreateTriMesh(0, data, NULL, NULL, NULL);
+    dTriMeshDataID data;
+    dGeomID mesh = bench_terrain_geom(0, cells, v, tri, 0, &data);
     dReal aabb[6];
     dGeomGetAABB(mesh, aabb);   // the tree is built by now in both engines
     double build_s = bench_now() - t0;
