@@ -465,6 +465,59 @@ static int test_separated_pairs(void)
     return 0;
 }
 
+// Shapes of no volume: a zero-radius capsule 1e6 long (a segment) through
+// a zero-radius cylinder 1e-30 long (a point), the fuzz finding
+// space-ccd-mpr-timeout with its exact poses. Their Minkowski difference is
+// a segment: libccd's MPR looped on it without end. They can only touch
+// (any depth is at most rounding), both ways round, and the call returns.
+// A zero-radius cylinder (a segment) deep in a box keeps its exact depth:
+// the difference has volume there, and MPR still decides.
+static int test_shapes_of_no_volume(void)
+{
+    dGeomID point = dCreateCylinder(0, 0, 1e-30), segment = dCreateCapsule(0, 0, 1e6);
+    const double pa[3][3] = { { 0.9999999999984881, 1.1514183095524424e-12, 1.7389486533892406e-06 },
+                              { -1.1514183095524424e-12, -0.99999999999912326, 1.3242694743251139e-06 },
+                              { 1.7389486533892408e-06, -1.3242694743251139e-06, -0.99999999999761124 } };
+    const double sa[3][3] = { { -0.74842466338056224, -0.51956771807627733, 0.41220129739813061 },
+                              { -0.31780724176236702, -0.26455504702051569, -0.91049941470567086 },
+                              { 0.58211603682349145, -0.81244077533625969, 0.032877138621369484 } };
+    dMatrix3 Rp, Rs;
+    for (int i = 0; i < 3; i++) {
+        for (int k = 0; k < 3; k++) {
+            Rp[4 * i + k] = (dReal)pa[k][i];   // column k: the shape's axis k
+            Rs[4 * i + k] = (dReal)sa[k][i];
+        }
+        Rp[4 * i + 3] = Rs[4 * i + 3] = 0;
+    }
+    dGeomSetRotation(point, Rp);
+    dGeomSetRotation(segment, Rs);
+    dGeomSetPosition(point, 1e-30, -1.6192263675898375, 3.4417639429312583);
+    dGeomSetPosition(segment, -0.28900587472343009, -2.4269779507133595, 0.64960708018616042);
+    dContactGeom c[MAXC];
+    for (int order = 0; order < 2; order++) {
+        int n = order ? dCollide(segment, point, MAXC, c, sizeof c[0])
+                      : dCollide(point, segment, MAXC, c, sizeof c[0]);
+        CHECK(n >= 0 && n <= MAXC);
+        for (int k = 0; k < n; k++) {
+            CHECK(isfinite(c[k].pos[0]) && isfinite(c[k].pos[1]) && isfinite(c[k].pos[2]));
+            CHECK_NEAR(dCalcVectorLength3(c[k].normal), 1, EPS);
+            CHECK(c[k].depth >= 0 && c[k].depth <= TOL(1e-6, 1e-2));
+        }
+    }
+    dGeomDestroy(point);
+    dGeomDestroy(segment);
+
+    dGeomID rod = dCreateCylinder(0, 0, 2), box = dCreateBox(0, 4, 4, 1);
+    dGeomSetPosition(box, 0, 0, -0.5);
+    dGeomSetPosition(rod, 0.3, 0.2, 0.7);   // its lower end 0.3 deep
+    CHECK(dCollide(rod, box, MAXC, c, sizeof c[0]) >= 1);
+    CHECK_NEAR(c[0].depth, 0.3, EPS);
+    CHECK_NEAR(c[0].normal[2], 1, EPS);
+    dGeomDestroy(rod);
+    dGeomDestroy(box);
+    return 0;
+}
+
 // The contacts written with a stride larger than dContactGeom (in
 // dContact), at most the max asked, the rest untouched.
 static int test_stride_and_max(void)
@@ -773,6 +826,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_capsule_across_cylinder_cap),
     TEST_CASE(test_capsule_along_and_across_cylinder_side),
     TEST_CASE(test_separated_pairs),
+    TEST_CASE(test_shapes_of_no_volume),
     TEST_CASE(test_stride_and_max),
     TEST_CASE(test_random_cylinder_box),
     TEST_CASE(test_random_cylinder_capsule),

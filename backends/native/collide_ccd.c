@@ -138,23 +138,50 @@ static double convex_size(const dx_convex *s)
 
 // ---- libccd ----------------------------------------------------------------
 
+// MPR's portal loops have no iteration bound of their own, and on a
+// Minkowski difference of (nearly) no volume (a zero-radius capsule
+// against a point-like cylinder, say) they may never end. A shape as libccd
+// sees it counts the support calls of the query; past MPR_MAX_SUPPORTS (the
+// tests' and the fuzz corpora's queries make at most ~100) every support
+// point is the shape's centre, so the Minkowski difference collapses to its
+// centre point and each of MPR's loops ends at its next test; the query is
+// then undecided.
+enum { MPR_MAX_SUPPORTS = 1000 };
+
+typedef struct mpr_shape {
+    const dx_convex *s;
+    int *supports;   // shared by the query's two shapes
+} mpr_shape;
+
 static void ccd_support(const void *obj, const ccd_vec3_t *dir, ccd_vec3_t *out)
 {
-    dx_convex_support(obj, dir->v, out->v);
+    const mpr_shape *m = obj;
+    if (++*m->supports > MPR_MAX_SUPPORTS) {
+        for (int i = 0; i < 3; i++) out->v[i] = m->s->c[i];
+        return;
+    }
+    dx_convex_support(m->s, dir->v, out->v);
 }
 
 static void ccd_center(const void *obj, ccd_vec3_t *out)
 {
-    const dx_convex *s = obj;
-    for (int i = 0; i < 3; i++) out->v[i] = s->c[i];
+    const mpr_shape *m = obj;
+    for (int i = 0; i < 3; i++) out->v[i] = m->s->c[i];
 }
 
-// MPR (no allocation, unlike libccd's EPA): 0 if a and b are apart, else 1
-// with n_out the unit normal it finds, pointing into a. libccd's direction
-// is the one to move its second object (b) along to part the pair, so the
-// normal into a is its opposite.
-static int mpr_normal(const dx_convex *a, const dx_convex *b, double scale, double n_out[3])
+// What MPR (no allocation, unlike libccd's EPA) says of a pair.
+typedef enum mpr_verdict {
+    MPR_APART,
+    MPR_OVERLAP,      // n_out: the unit normal it finds, into a
+    MPR_UNDECIDED     // it did not converge within MPR_MAX_SUPPORTS
+} mpr_verdict;
+
+// libccd's direction is the one to move its second object (b) along to
+// part the pair, so the normal into a is its opposite.
+static mpr_verdict mpr_normal(const dx_convex *a, const dx_convex *b, double scale, double n_out[3])
 {
+    int supports = 0;
+    const mpr_shape sa = { a, &supports }, sb = { b, &supports };
     ccd_t ccd;
     CCD_INIT(&ccd);
     ccd.support1 = ccd.support2 = ccd_support;
@@ -163,12 +190,14 @@ static int mpr_normal(const dx_convex *a, const dx_convex *b, double scale, doub
     ccd.mpr_tolerance = 1e-9 * scale;
     ccd_real_t depth;
     ccd_vec3_t dir, pos;
-    if (ccdMPRPenetration(a, b, &ccd, &depth, &dir, &pos) != 0) return 0;
+    const int apart = ccdMPRPenetration(&sa, &sb, &ccd, &depth, &dir, &pos) != 0;
+    if (supports > MPR_MAX_SUPPORTS) return MPR_UNDECIDED;
+    if (apart) return MPR_APART;
     for (int i = 0; i < 3; i++) n_out[i] = -dir.v[i];
     if (!normalize3(n_out)) {   // touching at the centre ray's end: any direction will do
         for (int i = 0; i < 3; i++) n_out[i] = b->ax[2][i];
     }
-    return 1;
+    return MPR_OVERLAP;
 }
 
 // ---- the least depth over directions -----------------------------------------
@@ -430,7 +459,12 @@ static void search_from_starts(const ccd_pair *p, ccd_candidates *list, double s
 static int penetration(const dx_convex *a, const dx_convex *b, double n[3], double *depth)
 {
     double scale = convex_size(a) + convex_size(b), mpr_n[3];
-    if (!mpr_normal(a, b, scale, mpr_n)) return 0;
+    const mpr_verdict v = mpr_normal(a, b, scale, mpr_n);
+    if (v == MPR_APART) return 0;
+    // Undecided: the search below decides alone (from the centre line and
+    // the features' directions); a negative least depth still means apart.
+    if (v == MPR_UNDECIDED)
+        for (int i = 0; i < 3; i++) mpr_n[i] = a->c[i] - b->c[i];
     ccd_pair p = { a, b, { { 0 } }, 0 };
     for (int i = 0; i < 3; i++) p.crease[p.ncrease][i] = a->ax[2][i];
     p.ncrease++;
