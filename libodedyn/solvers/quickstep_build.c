@@ -147,7 +147,7 @@ QS_INLINE int cholesky(const double *B, int n, double *L)
 }
 
 // x = B^-1 x with B = L L^T.
-static void cholesky_solve(const double *L, int n, double *x)
+QS_INLINE void cholesky_solve(const double *L, int n, double *x)
 {
     for (int i = 0; i < n; i++) {
         for (int k = 0; k < i; k++) x[i] -= L[i * n + k] * x[k];
@@ -168,11 +168,11 @@ typedef struct qs_jblock {
     double L[QS_MAX_BLOCK * QS_MAX_BLOCK];
 } qs_jblock;
 
-// sor_w B^-1 into Ainv (n rows of QS_PAD(n), the padding zero) from the
+// sor_w B^-1 into Ainv (n rows of QS_LANES(n), the padding zero) from the
 // Cholesky factor L of B.
 QS_INLINE void scaled_inverse(const double *L, int n, dReal sor_w, dReal *Ainv)
 {
-    const int w = QS_PAD(n);
+    const int w = QS_LANES(n);
     // Linv = L^-1 (lower).
     double Linv[QS_MAX_BLOCK * QS_MAX_BLOCK];
     for (int j = 0; j < n; j++) {
@@ -219,6 +219,18 @@ static int factor(const qs_v2 *J, const qs_v2 *iMJ, const dReal *cfm, int n, dRe
     }
 }
 
+// The first QS_BY_COLUMN(n) of a block's rows J (n x 12, n >= 3) by column
+// into Jt (12 columns of 4, the fourth row zero for n = 3).
+static void column_rows(const dReal *J, int n, dReal *Jt)
+{
+    for (int e = 0; e < 12; e++) {
+        Jt[4 * e] = J[e];
+        Jt[4 * e + 1] = J[12 + e];
+        Jt[4 * e + 2] = J[24 + e];
+        Jt[4 * e + 3] = n > 3 ? J[36 + e] : 0;
+    }
+}
+
 // Try to make rows idx[0..n) of a joint a block (its data from the arena,
 // its build data in *jb). Returns 0 if their matrix is singular (they are
 // then iterated one by one).
@@ -226,9 +238,10 @@ static int fill_block(dxArena *a, const qs_input *in, const qs_jrows *jr, const 
                       qs_block *blk, qs_jblock *jb)
 {
     const dxArenaMark mark = dxArenaSave(a);
+    const int w = QS_LANES(n);
     qs_v2 *J = DX_ARENA_ARRAY(a, qs_v2, 12 * n), *M = J + 6 * n;
-    dReal *Ainv = DX_ARENA_ARRAY(a, dReal, n * (QS_PAD(n) + 2));
-    dReal *rhs = Ainv + n * QS_PAD(n), *cfm = rhs + n;
+    dReal *Ainv = DX_ARENA_ARRAY(a, dReal, (n + 2) * w + (QS_BY_COLUMN(n) ? 48 : 0));
+    dReal *rhs = Ainv + n * w, *cfm = rhs + w, *Jt = cfm + w;
     for (int k = 0; k < n; k++) {
         const int i = idx[k];
         qs_v2 R[6];
@@ -240,6 +253,8 @@ static int fill_block(dxArena *a, const qs_input *in, const qs_jrows *jr, const 
         dxArenaRestore(a, mark);
         return 0;
     }
+    for (int k = n; k < w; k++) rhs[k] = cfm[k] = 0;
+    if (QS_BY_COLUMN(n)) column_rows((const dReal *)J, n, Jt);
     jb->n = n;
     jb->J = J;
     jb->iMJ = M;
@@ -249,6 +264,7 @@ static int fill_block(dxArena *a, const qs_input *in, const qs_jrows *jr, const 
     blk->o1 = jr->o[1];
     blk->J = J;
     blk->M = M;
+    blk->Jt = QS_BY_COLUMN(n) ? Jt : NULL;
     blk->Ainv = Ainv;
     blk->rhs = rhs;
     blk->cfm = cfm;
@@ -283,13 +299,13 @@ static qs_block *make_blocks(dxArena *a, const qs_input *in, const qs_jrows *jr,
 // ---- rows --------------------------------------------------------------------
 
 // Couple a row (J, iMJ, diagonal *diag) to the block of its joint (build
-// data jb): with the block's matrix B and its column c = J_B M^-1 J^T,
-// g = -B^-1 c, the diagonal becomes the Schur complement diag - c^T B^-1 c
-// and iMJ gains M^-1 J_B^T g. Returns g (arena), or NULL if the row depends
-// on the block's rows.
-static const dReal *couple_to_block(dxArena *a, const qs_jblock *jb, qs_v2 *iMJ, double *diag)
+// data jb, n its size: a constant after inlining): with the block's matrix B
+// and its column c = J_B M^-1 J^T, g = -B^-1 c, the diagonal becomes the
+// Schur complement diag - c^T B^-1 c and iMJ gains M^-1 J_B^T g. Returns g
+// (arena), or NULL if the row depends on the block's rows.
+QS_INLINE const dReal *couple_n(dxArena *a, const qs_jblock *jb, int n, qs_v2 *iMJ,
+                                double *diag)
 {
-    const int n = jb->n;
     double c[QS_MAX_BLOCK], t[QS_MAX_BLOCK];
     for (int k = 0; k < n; k++) t[k] = c[k] = dot12(jb->J + 6 * k, iMJ);
     cholesky_solve(jb->L, n, t);
@@ -306,6 +322,17 @@ static const dReal *couple_to_block(dxArena *a, const qs_jblock *jb, qs_v2 *iMJ,
     return g;
 }
 
+static const dReal *couple_to_block(dxArena *a, const qs_jblock *jb, qs_v2 *iMJ, double *diag)
+{
+    switch (jb->n) {   // constant sizes let the compiler unroll
+    case 2: return couple_n(a, jb, 2, iMJ, diag);
+    case 3: return couple_n(a, jb, 3, iMJ, diag);
+    case 4: return couple_n(a, jb, 4, iMJ, diag);
+    case 5: return couple_n(a, jb, 5, iMJ, diag);
+    default: return couple_n(a, jb, QS_MAX_BLOCK, iMJ, diag);
+    }
+}
+
 // Row i of the joint (lambda positions of the joint's rows in pos, the
 // constant 1 at position one): D J and M^-1 J^T as pairs, the scaled rhs and
 // cfm, the bounds. blk, jb: the joint's block to couple to and its build
@@ -316,12 +343,14 @@ static void fill_row(dxArena *a, const qs_input *in, const qs_jrows *jr, int i, 
     qs_v2 Jp[6], Mp[6], Rp[6];
     row_full(jr, i, Jp, Mp, Rp);
     const dReal rate = pair_dot(Jp, Rp), cfm = jr->cfm[i] * in->fps;
+#ifdef dSINGLE
     double diag = (double)pair_dot(Jp, Mp) + cfm;
+    if (jb && diag > 0) diag = dot12(Jp, Mp) + cfm;   // in double
+#else
+    double diag = pair_dot(Jp, Mp) + cfm;   // dot12 is pair_dot
+#endif
     q->g = NULL;
-    if (jb && diag > 0) {
-        diag = dot12(Jp, Mp) + cfm;
-        q->g = couple_to_block(a, jb, Mp, &diag);
-    }
+    if (jb && diag > 0) q->g = couple_to_block(a, jb, Mp, &diag);
     q->gn = (short)(q->g ? blk->n : 0);
     q->gfirst = q->g ? blk->first : 0;
     // A zero diagonal (an empty row without cfm) leaves the row's force at 0.

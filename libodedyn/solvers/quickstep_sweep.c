@@ -3,10 +3,11 @@
 // quickstep_sweep.c -- one sweep of dWorldQuickStep's projected SOR over
 // every block and every row of all islands (quickstep.h). This is where
 // QuickStep spends its time: the updates work on fours and pairs of numbers
-// (a body's 6 numbers as 4 + 2; a block's residuals, lambdas and Ainv res two
-// rows at a time), the block updates are
-// inlined once per size so that the loops have constant bounds, and the row
-// update branches only on one body or two.
+// (a body's 6 numbers as 4 + 2; a block's residuals, lambdas and Ainv res
+// four rows at a time), the block updates (with their coupled rows, on the
+// bodies' fc kept in registers) are inlined once per size and number of
+// bodies so that the loops have constant bounds, and the row update branches
+// only on one body or two.
 
 #include "quickstep.h"
 
@@ -68,7 +69,9 @@ QS_INLINE void store2(qs_v2 v, dReal *p)
 #if defined(__GNUC__)
 typedef dReal qs_v4 __attribute__((vector_size(4 * sizeof(dReal))));
 #define v4_add(x, y) ((x) + (y))
+#define v4_sub(x, y) ((x) - (y))
 #define v4_mul(x, y) ((x) * (y))
+#define v4_lane(v, i) ((v)[i])
 QS_INLINE qs_v4 v4_splat(dReal a)
 {
     qs_v4 v = { a, a, a, a };
@@ -89,6 +92,11 @@ static inline qs_v4 v4_add(qs_v4 x, qs_v4 y)
     qs_v4 v = { { x.e[0] + y.e[0], x.e[1] + y.e[1], x.e[2] + y.e[2], x.e[3] + y.e[3] } };
     return v;
 }
+static inline qs_v4 v4_sub(qs_v4 x, qs_v4 y)
+{
+    qs_v4 v = { { x.e[0] - y.e[0], x.e[1] - y.e[1], x.e[2] - y.e[2], x.e[3] - y.e[3] } };
+    return v;
+}
 static inline qs_v4 v4_mul(qs_v4 x, qs_v4 y)
 {
     qs_v4 v = { { x.e[0] * y.e[0], x.e[1] * y.e[1], x.e[2] * y.e[2], x.e[3] * y.e[3] } };
@@ -99,6 +107,7 @@ static inline qs_v4 v4_splat(dReal a)
     qs_v4 v = { { a, a, a, a } };
     return v;
 }
+#define v4_lane(v, i) ((v).e[i])
 static inline qs_v2 v4_fold(qs_v4 a, qs_v2 b)
 {
     qs_v2 v = { { (a.e[0] + a.e[2]) + b.e[0], (a.e[1] + a.e[3]) + b.e[1] } };
@@ -150,80 +159,131 @@ QS_INLINE qs_b6 b6_add(qs_b6 x, qs_v4 d4, qs_v2 d2, const dReal *M)
     return y;
 }
 
-// [sum of a's lanes, sum of b's lanes].
-QS_INLINE qs_v2 hadd2(qs_v2 a, qs_v2 b)
+// Four numbers from p[0..k) (k <= 4), the rest zero.
+QS_INLINE qs_v4 load_part(const dReal *p, int k)
 {
-#if defined(__GNUC__)
-    const qs_v2 lo = { a[0], b[0] }, hi = { a[1], b[1] };
-    return lo + hi;
-#else
-    qs_v2 v = { { a.e[0] + a.e[1], b.e[0] + b.e[1] } };
-    return v;
-#endif
+    if (k >= 4) return load4(p);
+    dReal t[4] = { 0, 0, 0, 0 };
+    for (int a = 0; a < k; a++) t[a] = p[a];
+    return load4(t);
 }
 
-// Row a's J . fc of a block (12 numbers a row: its first body's 6, then its
-// second's), the two lanes not yet summed; np 3: one body.
-QS_INLINE qs_v2 block_dot(const qs_v2 *J, int a, qs_b6 x0, qs_b6 x1, int np)
+// The n lambdas of a block from l, four at a time: group g (rows 4g..4g+3),
+// the rows past n zero.
+QS_INLINE qs_v4 lambda_load(const dReal *l, int n, int g)
 {
-    const dReal *Ja = (const dReal *)(J + 6 * a);
-    qs_v2 s = b6_dot(Ja, x0);
-    if (np == 6) s = qs_add(s, b6_dot(Ja + 6, x1));
-    return s;
+    return load_part(l + 4 * g, n - 4 * g);
 }
 
-// One block update; n and np (3: one body, 6: two) are constants after
-// inlining. The residuals, delta = Ainv res and the lambdas go two rows at a
-// time (each lane computing exactly what a row alone would).
-QS_INLINE void update_block(const qs_block *blk, int n, int np, dReal *lambda, dReal *fc)
+// l += d for group g's rows below n.
+QS_INLINE void lambda_add(dReal *l, qs_v4 d, int n, int g)
 {
-    const int w = QS_PAD(n);
-    const qs_v2 *J = blk->J, *M = blk->M;
-    const qs_v2 *Ainv = (const qs_v2 *)blk->Ainv;   // rows of w / 2 pairs
+    if (4 * g + 4 <= n) {
+        store4(v4_add(load4(l + 4 * g), d), l + 4 * g);
+        return;
+    }
+    for (int a = 4 * g; a < n; a++) l[a] += v4_lane(d, a - 4 * g);
+}
+
+// J . fc of a block's four rows by column (Jt: 12 columns of 4; np 3: one
+// body), each lane summed as a row's dot alone would be:
+// ((J0 x0 + J2 x2) + J4 x4) + ((J1 x1 + J3 x3) + J5 x5) for one body, the
+// second body's three terms added to each half first (b6_dot, then the two
+// lanes folded).
+QS_INLINE qs_v4 column_dot(const dReal *Jt, const dReal *f0, const dReal *f1, int np)
+{
+    qs_v4 e = v4_add(v4_add(v4_mul(load4(Jt), v4_splat(f0[0])),
+                            v4_mul(load4(Jt + 8), v4_splat(f0[2]))),
+                     v4_mul(load4(Jt + 16), v4_splat(f0[4])));
+    qs_v4 o = v4_add(v4_add(v4_mul(load4(Jt + 4), v4_splat(f0[1])),
+                            v4_mul(load4(Jt + 12), v4_splat(f0[3]))),
+                     v4_mul(load4(Jt + 20), v4_splat(f0[5])));
+    if (np == 6) {
+        e = v4_add(e, v4_add(v4_add(v4_mul(load4(Jt + 24), v4_splat(f1[0])),
+                                    v4_mul(load4(Jt + 32), v4_splat(f1[2]))),
+                             v4_mul(load4(Jt + 40), v4_splat(f1[4]))));
+        o = v4_add(o, v4_add(v4_add(v4_mul(load4(Jt + 28), v4_splat(f1[1])),
+                                    v4_mul(load4(Jt + 36), v4_splat(f1[3]))),
+                             v4_mul(load4(Jt + 44), v4_splat(f1[5]))));
+    }
+    return v4_add(e, o);
+}
+
+// One coupled row of a block of n rows (quickstep.h), its bodies' fc in x0
+// and x1 (np as for the block): the row update, and the block's lambdas
+// moved by g delta.
+QS_INLINE void coupled_row(const qs_row *q, int n, int np, dReal *lambda, qs_b6 *x0, qs_b6 *x1)
+{
+    const dReal s = dFabs(lambda[q->f]), old = lambda[q->pos];
+    qs_v2 dot = b6_dot((const dReal *)q->J, *x0);
+    if (np == 6) dot = qs_add(dot, b6_dot((const dReal *)q->J1, *x1));
+    const dReal now = clamp(old + q->rhs - q->cfm * old - (qs_lane(dot, 0) + qs_lane(dot, 1)),
+                            q->lo * s, q->hi * s);
+    lambda[q->pos] = now;
+    const dReal delta = now - old;
+    const qs_v4 d4 = v4_splat(delta);
+    const qs_v2 d2 = qs_splat(delta);
+    *x0 = b6_add(*x0, d4, d2, (const dReal *)q->M);
+    if (np == 6) *x1 = b6_add(*x1, d4, d2, (const dReal *)q->M1);
+    dReal *lb = lambda + q->gfirst;
+    int a = 0;
+    for (; a + 4 <= n; a += 4) store4(v4_add(load4(lb + a), v4_mul(d4, load4(q->g + a))), lb + a);
+    for (; a < n; a++) lb[a] += delta * q->g[a];
+}
+
+// One block update and its coupled rows; n and np (3: one body, 6: two) are
+// constants after inlining. The residuals, delta = Ainv res and the lambdas
+// are made four rows at a time (each lane computing exactly what its row
+// alone would); the fc of the bodies stays in registers until the coupled
+// rows are done.
+QS_INLINE void update_block(const qs_block *blk, const qs_row *coupled, int n, int np,
+                            dReal *lambda, dReal *fc)
+{
+    enum { G = 2 };   // at most QS_LANES(QS_MAX_BLOCK) / 4 groups of four rows
+    const int ng = (n + 3) / 4, w = 4 * ng, nc = QS_BY_COLUMN(n);
+    const dReal *Ainv = blk->Ainv;
     dReal *f0 = fc + blk->o0, *f1 = fc + blk->o1, *l = lambda + blk->first;
     qs_b6 x0 = b6_load(f0), x1 = x0;
     if (np == 6) x1 = b6_load(f1);
-    qs_v2 res[QS_MAX_BLOCK / 2];   // in pairs: res[a / 2] lane a % 2
-    for (int a = 0; a < QS_MAX_BLOCK / 2; a++) res[a] = qs_splat(0);   // (for the compiler)
-    for (int a = 0; a < n; a += 2) {
-        const qs_v2 sa = block_dot(J, a, x0, x1, np);
-        if (a + 1 < n) {
-            const qs_v2 sb = block_dot(J, a + 1, x0, x1, np);
-            const qs_v2 r = qs_sub(load2(blk->rhs + a), qs_mul(load2(blk->cfm + a), load2(l + a)));
-            res[a / 2] = qs_sub(r, hadd2(sa, sb));
-        } else {
-            res[a / 2] = qs_splat(blk->rhs[a] - blk->cfm[a] * l[a] -
-                                  (qs_lane(sa, 0) + qs_lane(sa, 1)));
-        }
+    dReal dots[4 * G] = { 0 };   // J . fc per row (the padding zero)
+    if (nc) store4(column_dot(blk->Jt, f0, f1, np), dots);
+    for (int a = nc; a < n; a++) {
+        const dReal *Ja = (const dReal *)(blk->J + 6 * a);
+        qs_v2 s = b6_dot(Ja, x0);
+        if (np == 6) s = qs_add(s, b6_dot(Ja + 6, x1));
+        dots[a] = qs_lane(s, 0) + qs_lane(s, 1);
     }
-    dReal delta[QS_MAX_BLOCK];
-    for (int a = 0; a < w; a += 2) {
-        qs_v2 d = qs_mul(Ainv[a / 2], qs_splat(qs_lane(res[0], 0)));
+    qs_v4 res[G], d[G];
+    for (int g = 0; g < ng; g++) {
+        const qs_v4 r = v4_sub(load4(blk->rhs + 4 * g),
+                               v4_mul(load4(blk->cfm + 4 * g), lambda_load(l, n, g)));
+        res[g] = v4_sub(r, load4(dots + 4 * g));
+    }
+    for (int g = 0; g < ng; g++) {
+        d[g] = v4_mul(load4(Ainv + 4 * g), v4_splat(v4_lane(res[0], 0)));
         for (int c = 1; c < n; c++)
-            d = qs_add(d, qs_mul(Ainv[(c * w + a) / 2], qs_splat(qs_lane(res[c / 2], c % 2))));
-        delta[a] = qs_lane(d, 0);
-        if (a + 1 < n) {
-            delta[a + 1] = qs_lane(d, 1);
-            store2(qs_add(load2(l + a), d), l + a);
-        } else {
-            l[a] += qs_lane(d, 0);
-        }
+            d[g] = v4_add(d[g], v4_mul(load4(Ainv + c * w + 4 * g),
+                                       v4_splat(v4_lane(res[c / 4], c % 4))));
+        lambda_add(l, d[g], n, g);
     }
     for (int a = 0; a < n; a++) {
-        const qs_v4 d4 = v4_splat(delta[a]);
-        const qs_v2 d2 = qs_splat(delta[a]);
-        const dReal *Ma = (const dReal *)(M + 6 * a);
+        const dReal da = v4_lane(d[a / 4], a % 4);
+        const qs_v4 d4 = v4_splat(da);
+        const qs_v2 d2 = qs_splat(da);
+        const dReal *Ma = (const dReal *)(blk->M + 6 * a);
         x0 = b6_add(x0, d4, d2, Ma);
         if (np == 6) x1 = b6_add(x1, d4, d2, Ma + 6);
     }
+    for (int c = 0; c < blk->ncoupled; c++) coupled_row(&coupled[c], n, np, lambda, &x0, &x1);
     b6_store(x0, f0);
     if (np == 6) b6_store(x1, f1);
 }
 
-QS_INLINE void update_block_n(const qs_block *blk, int n, dReal *lambda, dReal *fc)
+QS_INLINE void update_block_n(const qs_block *blk, const qs_row *coupled, int n, dReal *lambda,
+                              dReal *fc)
 {
-    if (blk->two) update_block(blk, n, 6, lambda, fc);
-    else update_block(blk, n, 3, lambda, fc);
+    if (blk->two) update_block(blk, coupled, n, 6, lambda, fc);
+    else update_block(blk, coupled, n, 3, lambda, fc);
 }
 
 // One row: J . fc of its bodies, the projected update of its lambda,
@@ -278,15 +338,14 @@ QS_SWEEP_CLONES static void sweep_blocks(const qs_system *sys)
     dReal *lambda = sys->lambda, *fc = sys->fc;
     for (int k = 0; k < sys->nblocks; k++) {
         const qs_block *blk = sys->bseq[k];
+        const qs_row *coupled = sys->rows + blk->coupled;
         switch (blk->n) {   // constant sizes let the compiler unroll
-        case 2: update_block_n(blk, 2, lambda, fc); break;
-        case 3: update_block_n(blk, 3, lambda, fc); break;
-        case 4: update_block_n(blk, 4, lambda, fc); break;
-        case 5: update_block_n(blk, 5, lambda, fc); break;
-        default: update_block_n(blk, QS_MAX_BLOCK, lambda, fc); break;
+        case 2: update_block_n(blk, coupled, 2, lambda, fc); break;
+        case 3: update_block_n(blk, coupled, 3, lambda, fc); break;
+        case 4: update_block_n(blk, coupled, 4, lambda, fc); break;
+        case 5: update_block_n(blk, coupled, 5, lambda, fc); break;
+        default: update_block_n(blk, coupled, QS_MAX_BLOCK, lambda, fc); break;
         }
-        for (int c = 0; c < blk->ncoupled; c++)
-            update_row(&sys->rows[blk->coupled + c], 1, 6, lambda, fc);
     }
 }
 
