@@ -78,30 +78,26 @@ static inline qs_v2 qs_splat(dReal a)
 }
 #endif
 
-// A block's rows go in fours (lanes): its numbers per row are padded with
-// zeros to QS_LANES(n) = 4 (n <= 4) or 8 rows.
-#define QS_LANES(n) (((n) + 3) & ~3)
-// The rows of a block of n whose J . fc the sweep makes four at a time, by
-// column: its first four (three and a padding row of zeros for n = 3). Made
-// one by one, the dots of a pair, or of the rows after the fourth, cost less.
-#define QS_BY_COLUMN(n) ((n) < 3 ? 0 : (n) < 4 ? 3 : 4)
+// The width of a block's rows of Ainv, rhs and cfm (the padding zero): a
+// block of up to 3 is updated two rows at a time (rows padded to pairs), a
+// larger one four rows at a time (padded to 4 or 8).
+#define QS_AINV_W(n) ((n) <= 3 ? ((n) + 1) & ~1 : ((n) + 3) & ~3)
 
 // n rows of one joint solved together: with the residuals res (unscaled)
 // delta = Ainv res (Ainv: the inverse of the block of A, times sor_w),
-// lambda += delta, fc += M^-1 J^T delta. The sweep makes the residuals,
-// delta and lambda four rows at a time: the first QS_BY_COLUMN(n) rows'
-// J is also stored by column (the 12 numbers of its bodies, the first body's
-// 6 then the second's, each a column of four rows), Ainv by column (n
-// columns of QS_LANES(n)), rhs and cfm padded to QS_LANES(n).
+// lambda += delta, fc += M^-1 J^T delta. A block of 4 or more also has the
+// J of its first four rows by column (the 12 numbers of its bodies, the
+// first body's 6 then the second's, each a column of four rows): the sweep
+// makes their four dots at once (quickstep_sweep.c).
 typedef struct qs_block {
     int n;
     int two;          // acts on two bodies (else on o0 only)
     int o0, o1;       // offsets of the bodies in fc
     int first;        // lambda position of its first row; the others follow
     const qs_v2 *J, *M; // n x 6 pairs: J and M^-1 J^T, by row
-    const dReal *Jt;  // 12 x 4: J of the first QS_BY_COLUMN(n) rows by column (or NULL)
-    const dReal *Ainv; // n x QS_LANES(n) (symmetric: its columns are its rows)
-    const dReal *rhs, *cfm; // QS_LANES(n) each: b and cfm/h, the padding zero
+    const dReal *Jt;  // n >= 4: 12 x 4, the first four rows' J by column; else NULL
+    const dReal *Ainv; // n rows of QS_AINV_W(n) (symmetric: its rows are its columns)
+    const dReal *rhs, *cfm; // QS_AINV_W(n) each: b and cfm/h
     int coupled, ncoupled;   // the joint's rows coupled to the block: rows[coupled...]
 } qs_block;
 

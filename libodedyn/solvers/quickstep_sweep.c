@@ -159,37 +159,66 @@ QS_INLINE qs_b6 b6_add(qs_b6 x, qs_v4 d4, qs_v2 d2, const dReal *M)
     return y;
 }
 
-// Four numbers from p[0..k) (k <= 4), the rest zero.
-QS_INLINE qs_v4 load_part(const dReal *p, int k)
+// [sum of a's lanes, sum of b's lanes].
+QS_INLINE qs_v2 hadd2(qs_v2 a, qs_v2 b)
 {
-    if (k >= 4) return load4(p);
-    dReal t[4] = { 0, 0, 0, 0 };
-    for (int a = 0; a < k; a++) t[a] = p[a];
-    return load4(t);
+#if defined(__GNUC__)
+    const qs_v2 lo = { a[0], b[0] }, hi = { a[1], b[1] };
+    return lo + hi;
+#else
+    qs_v2 v = { { a.e[0] + a.e[1], b.e[0] + b.e[1] } };
+    return v;
+#endif
 }
 
-// The n lambdas of a block from l, four at a time: group g (rows 4g..4g+3),
-// the rows past n zero.
-QS_INLINE qs_v4 lambda_load(const dReal *l, int n, int g)
+// Row a's J . fc of a block (12 numbers a row: its first body's 6, then its
+// second's), the two lanes not yet summed; np 3: one body.
+QS_INLINE qs_v2 block_dot(const qs_v2 *J, int a, qs_b6 x0, qs_b6 x1, int np)
 {
-    return load_part(l + 4 * g, n - 4 * g);
+    const dReal *Ja = (const dReal *)(J + 6 * a);
+    qs_v2 s = b6_dot(Ja, x0);
+    if (np == 6) s = qs_add(s, b6_dot(Ja + 6, x1));
+    return s;
 }
 
-// l += d for group g's rows below n.
-QS_INLINE void lambda_add(dReal *l, qs_v4 d, int n, int g)
+// A small block's delta (n <= 3: rows of Ainv in pairs, QS_AINV_W(n) wide):
+// the residuals, delta = Ainv res and the lambdas two rows at a time.
+QS_INLINE void block_delta_pairs(const qs_block *blk, int n, int np, qs_b6 x0, qs_b6 x1,
+                                 dReal *l, dReal *delta)
 {
-    if (4 * g + 4 <= n) {
-        store4(v4_add(load4(l + 4 * g), d), l + 4 * g);
-        return;
+    const int w = QS_AINV_W(n);
+    const qs_v2 *J = blk->J, *Ainv = (const qs_v2 *)blk->Ainv;
+    qs_v2 res[2];   // in pairs: res[a / 2] lane a % 2
+    for (int a = 0; a < n; a += 2) {
+        const qs_v2 sa = block_dot(J, a, x0, x1, np);
+        if (a + 1 < n) {
+            const qs_v2 sb = block_dot(J, a + 1, x0, x1, np);
+            const qs_v2 r = qs_sub(load2(blk->rhs + a), qs_mul(load2(blk->cfm + a), load2(l + a)));
+            res[a / 2] = qs_sub(r, hadd2(sa, sb));
+        } else {
+            res[a / 2] = qs_splat(blk->rhs[a] - blk->cfm[a] * l[a] -
+                                  (qs_lane(sa, 0) + qs_lane(sa, 1)));
+        }
     }
-    for (int a = 4 * g; a < n; a++) l[a] += v4_lane(d, a - 4 * g);
+    for (int a = 0; a < w; a += 2) {
+        qs_v2 d = qs_mul(Ainv[a / 2], qs_splat(qs_lane(res[0], 0)));
+        for (int c = 1; c < n; c++)
+            d = qs_add(d, qs_mul(Ainv[(c * w + a) / 2], qs_splat(qs_lane(res[c / 2], c % 2))));
+        delta[a] = qs_lane(d, 0);
+        if (a + 1 < n) {
+            delta[a + 1] = qs_lane(d, 1);
+            store2(qs_add(load2(l + a), d), l + a);
+        } else {
+            l[a] += qs_lane(d, 0);
+        }
+    }
 }
 
-// J . fc of a block's four rows by column (Jt: 12 columns of 4; np 3: one
-// body), each lane summed as a row's dot alone would be:
+// J . fc of a block's first four rows by column (Jt: 12 columns of 4; np 3:
+// one body), each lane summed as a row's dot alone would be:
 // ((J0 x0 + J2 x2) + J4 x4) + ((J1 x1 + J3 x3) + J5 x5) for one body, the
 // second body's three terms added to each half first (b6_dot, then the two
-// lanes folded).
+// lanes folded as in hadd2).
 QS_INLINE qs_v4 column_dot(const dReal *Jt, const dReal *f0, const dReal *f1, int np)
 {
     qs_v4 e = v4_add(v4_add(v4_mul(load4(Jt), v4_splat(f0[0])),
@@ -207,6 +236,40 @@ QS_INLINE qs_v4 column_dot(const dReal *Jt, const dReal *f0, const dReal *f1, in
                              v4_mul(load4(Jt + 44), v4_splat(f1[5]))));
     }
     return v4_add(e, o);
+}
+
+// A large block's delta (n >= 4: Ainv by column, QS_AINV_W(n) = 8 wide for
+// n > 4): the residuals, delta = Ainv res and the lambdas four rows at a
+// time, the first four rows' dots by column, the others' by row. Each lane
+// computes exactly what its row alone would.
+QS_INLINE void block_delta_fours(const qs_block *blk, int n, int np, const dReal *f0,
+                                 const dReal *f1, qs_b6 x0, qs_b6 x1, dReal *l, dReal *delta)
+{
+    const int ng = (n + 3) / 4, w = QS_AINV_W(n);
+    const dReal *Ainv = blk->Ainv;
+    dReal dots[8] = { 0 };   // J . fc per row (the padding zero)
+    store4(column_dot(blk->Jt, f0, f1, np), dots);
+    dReal lam[8] = { 0 };    // the lambdas (the padding zero)
+    store4(load4(l), lam);
+    for (int a = 4; a < n; a++) {
+        const qs_v2 s = block_dot(blk->J, a, x0, x1, np);
+        dots[a] = qs_lane(s, 0) + qs_lane(s, 1);
+        lam[a] = l[a];
+    }
+    qs_v4 res[2];
+    for (int g = 0; g < ng; g++) {
+        const qs_v4 r = v4_sub(load4(blk->rhs + 4 * g),
+                               v4_mul(load4(blk->cfm + 4 * g), load4(lam + 4 * g)));
+        res[g] = v4_sub(r, load4(dots + 4 * g));
+    }
+    for (int g = 0; g < ng; g++) {
+        qs_v4 d = v4_mul(load4(Ainv + 4 * g), v4_splat(v4_lane(res[0], 0)));
+        for (int c = 1; c < n; c++)
+            d = v4_add(d, v4_mul(load4(Ainv + c * w + 4 * g), v4_splat(v4_lane(res[c / 4], c % 4))));
+        store4(d, delta + 4 * g);
+    }
+    store4(v4_add(load4(l), load4(delta)), l);
+    for (int a = 4; a < n; a++) l[a] += delta[a];
 }
 
 // One coupled row of a block of n rows (quickstep.h), its bodies' fc in x0
@@ -232,44 +295,20 @@ QS_INLINE void coupled_row(const qs_row *q, int n, int np, dReal *lambda, qs_b6 
 }
 
 // One block update and its coupled rows; n and np (3: one body, 6: two) are
-// constants after inlining. The residuals, delta = Ainv res and the lambdas
-// are made four rows at a time (each lane computing exactly what its row
-// alone would); the fc of the bodies stays in registers until the coupled
-// rows are done.
+// constants after inlining. The fc of the bodies stays in registers until
+// the coupled rows are done.
 QS_INLINE void update_block(const qs_block *blk, const qs_row *coupled, int n, int np,
                             dReal *lambda, dReal *fc)
 {
-    enum { G = 2 };   // at most QS_LANES(QS_MAX_BLOCK) / 4 groups of four rows
-    const int ng = (n + 3) / 4, w = 4 * ng, nc = QS_BY_COLUMN(n);
-    const dReal *Ainv = blk->Ainv;
     dReal *f0 = fc + blk->o0, *f1 = fc + blk->o1, *l = lambda + blk->first;
     qs_b6 x0 = b6_load(f0), x1 = x0;
     if (np == 6) x1 = b6_load(f1);
-    dReal dots[4 * G] = { 0 };   // J . fc per row (the padding zero)
-    if (nc) store4(column_dot(blk->Jt, f0, f1, np), dots);
-    for (int a = nc; a < n; a++) {
-        const dReal *Ja = (const dReal *)(blk->J + 6 * a);
-        qs_v2 s = b6_dot(Ja, x0);
-        if (np == 6) s = qs_add(s, b6_dot(Ja + 6, x1));
-        dots[a] = qs_lane(s, 0) + qs_lane(s, 1);
-    }
-    qs_v4 res[G], d[G];
-    for (int g = 0; g < ng; g++) {
-        const qs_v4 r = v4_sub(load4(blk->rhs + 4 * g),
-                               v4_mul(load4(blk->cfm + 4 * g), lambda_load(l, n, g)));
-        res[g] = v4_sub(r, load4(dots + 4 * g));
-    }
-    for (int g = 0; g < ng; g++) {
-        d[g] = v4_mul(load4(Ainv + 4 * g), v4_splat(v4_lane(res[0], 0)));
-        for (int c = 1; c < n; c++)
-            d[g] = v4_add(d[g], v4_mul(load4(Ainv + c * w + 4 * g),
-                                       v4_splat(v4_lane(res[c / 4], c % 4))));
-        lambda_add(l, d[g], n, g);
-    }
+    dReal delta[8];
+    if (n <= 3) block_delta_pairs(blk, n, np, x0, x1, l, delta);
+    else block_delta_fours(blk, n, np, f0, f1, x0, x1, l, delta);
     for (int a = 0; a < n; a++) {
-        const dReal da = v4_lane(d[a / 4], a % 4);
-        const qs_v4 d4 = v4_splat(da);
-        const qs_v2 d2 = qs_splat(da);
+        const qs_v4 d4 = v4_splat(delta[a]);
+        const qs_v2 d2 = qs_splat(delta[a]);
         const dReal *Ma = (const dReal *)(blk->M + 6 * a);
         x0 = b6_add(x0, d4, d2, Ma);
         if (np == 6) x1 = b6_add(x1, d4, d2, Ma + 6);
