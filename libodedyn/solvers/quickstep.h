@@ -31,6 +31,7 @@
 typedef struct qs_scratch qs_scratch;
 
 #define QS_MAX_BLOCK 6
+#define QS_PAD(n) (((n) + 1) & ~1)   // n rounded up to pairs
 
 #if defined(__GNUC__)
 #define QS_INLINE static inline __attribute__((always_inline))
@@ -78,26 +79,19 @@ static inline qs_v2 qs_splat(dReal a)
 }
 #endif
 
-// The width of a block's rows of Ainv, rhs and cfm (the padding zero): a
-// block of up to 3 is updated two rows at a time (rows padded to pairs), a
-// larger one four rows at a time (padded to 4 or 8).
-#define QS_AINV_W(n) ((n) <= 3 ? ((n) + 1) & ~1 : ((n) + 3) & ~3)
-
 // n rows of one joint solved together: with the residuals res (unscaled)
-// delta = Ainv res (Ainv: the inverse of the block of A, times sor_w),
-// lambda += delta, fc += M^-1 J^T delta. A block of 4 or more also has the
-// J of its first four rows by column (the 12 numbers of its bodies, the
-// first body's 6 then the second's, each a column of four rows): the sweep
-// makes their four dots at once (quickstep_sweep.c).
+// delta = Ainv res (Ainv: the inverse of the block of A, times sor_w; its
+// rows padded to pairs, so that two numbers of delta are made at a time),
+// lambda += delta, fc += M^-1 J^T delta; then the joint's rows coupled to it
+// (quickstep_sweep.c: the bodies' fc stays in registers meanwhile).
 typedef struct qs_block {
     int n;
     int two;          // acts on two bodies (else on o0 only)
     int o0, o1;       // offsets of the bodies in fc
     int first;        // lambda position of its first row; the others follow
-    const qs_v2 *J, *M; // n x 6 pairs: J and M^-1 J^T, by row
-    const dReal *Jt;  // n >= 4: 12 x 4, the first four rows' J by column; else NULL
-    const dReal *Ainv; // n rows of QS_AINV_W(n) (symmetric: its rows are its columns)
-    const dReal *rhs, *cfm; // QS_AINV_W(n) each: b and cfm/h
+    qs_v2 *J, *M;     // n x 6 pairs: J and M^-1 J^T
+    dReal *Ainv;      // n x QS_PAD(n) (symmetric, the padding zero): rows as pairs
+    dReal *rhs, *cfm; // n: b and cfm/h
     int coupled, ncoupled;   // the joint's rows coupled to the block: rows[coupled...]
 } qs_block;
 

@@ -168,11 +168,11 @@ typedef struct qs_jblock {
     double L[QS_MAX_BLOCK * QS_MAX_BLOCK];
 } qs_jblock;
 
-// sor_w B^-1 into Ainv (n rows of QS_AINV_W(n), the padding zero) from the
+// sor_w B^-1 into Ainv (n rows of QS_PAD(n), the padding zero) from the
 // Cholesky factor L of B.
 QS_INLINE void scaled_inverse(const double *L, int n, dReal sor_w, dReal *Ainv)
 {
-    const int w = QS_AINV_W(n);
+    const int w = QS_PAD(n);
     // Linv = L^-1 (lower).
     double Linv[QS_MAX_BLOCK * QS_MAX_BLOCK];
     for (int j = 0; j < n; j++) {
@@ -219,18 +219,6 @@ static int factor(const qs_v2 *J, const qs_v2 *iMJ, const dReal *cfm, int n, dRe
     }
 }
 
-// The first four of a block's rows J (n x 12, n >= 4) by column into Jt
-// (12 columns of 4).
-static void column_rows(const dReal *J, dReal *Jt)
-{
-    for (int e = 0; e < 12; e++) {
-        Jt[4 * e] = J[e];
-        Jt[4 * e + 1] = J[12 + e];
-        Jt[4 * e + 2] = J[24 + e];
-        Jt[4 * e + 3] = J[36 + e];
-    }
-}
-
 // Try to make rows idx[0..n) of a joint a block (its data from the arena,
 // its build data in *jb). Returns 0 if their matrix is singular (they are
 // then iterated one by one).
@@ -238,10 +226,9 @@ static int fill_block(dxArena *a, const qs_input *in, const qs_jrows *jr, const 
                       qs_block *blk, qs_jblock *jb)
 {
     const dxArenaMark mark = dxArenaSave(a);
-    const int w = QS_AINV_W(n), by_column = n >= 4;
     qs_v2 *J = DX_ARENA_ARRAY(a, qs_v2, 12 * n), *M = J + 6 * n;
-    dReal *Ainv = DX_ARENA_ARRAY(a, dReal, (n + 2) * w + (by_column ? 48 : 0));
-    dReal *rhs = Ainv + n * w, *cfm = rhs + w, *Jt = cfm + w;
+    dReal *Ainv = DX_ARENA_ARRAY(a, dReal, n * (QS_PAD(n) + 2));
+    dReal *rhs = Ainv + n * QS_PAD(n), *cfm = rhs + n;
     for (int k = 0; k < n; k++) {
         const int i = idx[k];
         qs_v2 R[6];
@@ -253,8 +240,6 @@ static int fill_block(dxArena *a, const qs_input *in, const qs_jrows *jr, const 
         dxArenaRestore(a, mark);
         return 0;
     }
-    for (int k = n; k < w; k++) rhs[k] = cfm[k] = 0;
-    if (by_column) column_rows((const dReal *)J, Jt);
     jb->n = n;
     jb->J = J;
     jb->iMJ = M;
@@ -264,7 +249,6 @@ static int fill_block(dxArena *a, const qs_input *in, const qs_jrows *jr, const 
     blk->o1 = jr->o[1];
     blk->J = J;
     blk->M = M;
-    blk->Jt = by_column ? Jt : NULL;
     blk->Ainv = Ainv;
     blk->rhs = rhs;
     blk->cfm = cfm;

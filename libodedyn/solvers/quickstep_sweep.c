@@ -3,8 +3,8 @@
 // quickstep_sweep.c -- one sweep of dWorldQuickStep's projected SOR over
 // every block and every row of all islands (quickstep.h). This is where
 // QuickStep spends its time: the updates work on fours and pairs of numbers
-// (a body's 6 numbers as 4 + 2; a block's residuals, lambdas and Ainv res
-// four rows at a time), the block updates (with their coupled rows, on the
+// (a body's 6 numbers as 4 + 2; a block's residuals, lambdas and Ainv res two
+// rows at a time), the block updates (with their coupled rows, on the
 // bodies' fc kept in registers) are inlined once per size and number of
 // bodies so that the loops have constant bounds, and the row update branches
 // only on one body or two.
@@ -69,9 +69,7 @@ QS_INLINE void store2(qs_v2 v, dReal *p)
 #if defined(__GNUC__)
 typedef dReal qs_v4 __attribute__((vector_size(4 * sizeof(dReal))));
 #define v4_add(x, y) ((x) + (y))
-#define v4_sub(x, y) ((x) - (y))
 #define v4_mul(x, y) ((x) * (y))
-#define v4_lane(v, i) ((v)[i])
 QS_INLINE qs_v4 v4_splat(dReal a)
 {
     qs_v4 v = { a, a, a, a };
@@ -92,11 +90,6 @@ static inline qs_v4 v4_add(qs_v4 x, qs_v4 y)
     qs_v4 v = { { x.e[0] + y.e[0], x.e[1] + y.e[1], x.e[2] + y.e[2], x.e[3] + y.e[3] } };
     return v;
 }
-static inline qs_v4 v4_sub(qs_v4 x, qs_v4 y)
-{
-    qs_v4 v = { { x.e[0] - y.e[0], x.e[1] - y.e[1], x.e[2] - y.e[2], x.e[3] - y.e[3] } };
-    return v;
-}
 static inline qs_v4 v4_mul(qs_v4 x, qs_v4 y)
 {
     qs_v4 v = { { x.e[0] * y.e[0], x.e[1] * y.e[1], x.e[2] * y.e[2], x.e[3] * y.e[3] } };
@@ -107,7 +100,6 @@ static inline qs_v4 v4_splat(dReal a)
     qs_v4 v = { { a, a, a, a } };
     return v;
 }
-#define v4_lane(v, i) ((v).e[i])
 static inline qs_v2 v4_fold(qs_v4 a, qs_v2 b)
 {
     qs_v2 v = { { (a.e[0] + a.e[2]) + b.e[0], (a.e[1] + a.e[3]) + b.e[1] } };
@@ -181,14 +173,16 @@ QS_INLINE qs_v2 block_dot(const qs_v2 *J, int a, qs_b6 x0, qs_b6 x1, int np)
     return s;
 }
 
-// A small block's delta (n <= 3: rows of Ainv in pairs, QS_AINV_W(n) wide):
-// the residuals, delta = Ainv res and the lambdas two rows at a time.
-QS_INLINE void block_delta_pairs(const qs_block *blk, int n, int np, qs_b6 x0, qs_b6 x1,
-                                 dReal *l, dReal *delta)
+// A block's delta (rows of Ainv in pairs, QS_PAD(n) wide): the residuals,
+// delta = Ainv res and the lambdas two rows at a time, each lane computing
+// exactly what its row alone would.
+QS_INLINE void block_delta(const qs_block *blk, int n, int np, qs_b6 x0, qs_b6 x1, dReal *l,
+                           dReal *delta)
 {
-    const int w = QS_AINV_W(n);
+    const int w = QS_PAD(n);
     const qs_v2 *J = blk->J, *Ainv = (const qs_v2 *)blk->Ainv;
-    qs_v2 res[2];   // in pairs: res[a / 2] lane a % 2
+    qs_v2 res[QS_MAX_BLOCK / 2];   // in pairs: res[a / 2] lane a % 2
+    for (int a = 0; a < QS_MAX_BLOCK / 2; a++) res[a] = qs_splat(0);   // (for the compiler)
     for (int a = 0; a < n; a += 2) {
         const qs_v2 sa = block_dot(J, a, x0, x1, np);
         if (a + 1 < n) {
@@ -212,64 +206,6 @@ QS_INLINE void block_delta_pairs(const qs_block *blk, int n, int np, qs_b6 x0, q
             l[a] += qs_lane(d, 0);
         }
     }
-}
-
-// J . fc of a block's first four rows by column (Jt: 12 columns of 4; np 3:
-// one body), each lane summed as a row's dot alone would be:
-// ((J0 x0 + J2 x2) + J4 x4) + ((J1 x1 + J3 x3) + J5 x5) for one body, the
-// second body's three terms added to each half first (b6_dot, then the two
-// lanes folded as in hadd2).
-QS_INLINE qs_v4 column_dot(const dReal *Jt, const dReal *f0, const dReal *f1, int np)
-{
-    qs_v4 e = v4_add(v4_add(v4_mul(load4(Jt), v4_splat(f0[0])),
-                            v4_mul(load4(Jt + 8), v4_splat(f0[2]))),
-                     v4_mul(load4(Jt + 16), v4_splat(f0[4])));
-    qs_v4 o = v4_add(v4_add(v4_mul(load4(Jt + 4), v4_splat(f0[1])),
-                            v4_mul(load4(Jt + 12), v4_splat(f0[3]))),
-                     v4_mul(load4(Jt + 20), v4_splat(f0[5])));
-    if (np == 6) {
-        e = v4_add(e, v4_add(v4_add(v4_mul(load4(Jt + 24), v4_splat(f1[0])),
-                                    v4_mul(load4(Jt + 32), v4_splat(f1[2]))),
-                             v4_mul(load4(Jt + 40), v4_splat(f1[4]))));
-        o = v4_add(o, v4_add(v4_add(v4_mul(load4(Jt + 28), v4_splat(f1[1])),
-                                    v4_mul(load4(Jt + 36), v4_splat(f1[3]))),
-                             v4_mul(load4(Jt + 44), v4_splat(f1[5]))));
-    }
-    return v4_add(e, o);
-}
-
-// A large block's delta (n >= 4: Ainv by column, QS_AINV_W(n) = 8 wide for
-// n > 4): the residuals, delta = Ainv res and the lambdas four rows at a
-// time, the first four rows' dots by column, the others' by row. Each lane
-// computes exactly what its row alone would.
-QS_INLINE void block_delta_fours(const qs_block *blk, int n, int np, const dReal *f0,
-                                 const dReal *f1, qs_b6 x0, qs_b6 x1, dReal *l, dReal *delta)
-{
-    const int ng = (n + 3) / 4, w = QS_AINV_W(n);
-    const dReal *Ainv = blk->Ainv;
-    dReal dots[8] = { 0 };   // J . fc per row (the padding zero)
-    store4(column_dot(blk->Jt, f0, f1, np), dots);
-    dReal lam[8] = { 0 };    // the lambdas (the padding zero)
-    store4(load4(l), lam);
-    for (int a = 4; a < n; a++) {
-        const qs_v2 s = block_dot(blk->J, a, x0, x1, np);
-        dots[a] = qs_lane(s, 0) + qs_lane(s, 1);
-        lam[a] = l[a];
-    }
-    qs_v4 res[2];
-    for (int g = 0; g < ng; g++) {
-        const qs_v4 r = v4_sub(load4(blk->rhs + 4 * g),
-                               v4_mul(load4(blk->cfm + 4 * g), load4(lam + 4 * g)));
-        res[g] = v4_sub(r, load4(dots + 4 * g));
-    }
-    for (int g = 0; g < ng; g++) {
-        qs_v4 d = v4_mul(load4(Ainv + 4 * g), v4_splat(v4_lane(res[0], 0)));
-        for (int c = 1; c < n; c++)
-            d = v4_add(d, v4_mul(load4(Ainv + c * w + 4 * g), v4_splat(v4_lane(res[c / 4], c % 4))));
-        store4(d, delta + 4 * g);
-    }
-    store4(v4_add(load4(l), load4(delta)), l);
-    for (int a = 4; a < n; a++) l[a] += delta[a];
 }
 
 // One coupled row of a block of n rows (quickstep.h), its bodies' fc in x0
@@ -303,9 +239,8 @@ QS_INLINE void update_block(const qs_block *blk, const qs_row *coupled, int n, i
     dReal *f0 = fc + blk->o0, *f1 = fc + blk->o1, *l = lambda + blk->first;
     qs_b6 x0 = b6_load(f0), x1 = x0;
     if (np == 6) x1 = b6_load(f1);
-    dReal delta[8];
-    if (n <= 3) block_delta_pairs(blk, n, np, x0, x1, l, delta);
-    else block_delta_fours(blk, n, np, f0, f1, x0, x1, l, delta);
+    dReal delta[QS_MAX_BLOCK];
+    block_delta(blk, n, np, x0, x1, l, delta);
     for (int a = 0; a < n; a++) {
         const qs_v4 d4 = v4_splat(delta[a]);
         const qs_v2 d2 = qs_splat(delta[a]);
