@@ -385,6 +385,89 @@ static int test_feedback_of_static_pendulum(void)
     return 0;
 }
 
+// A wheel on a hinge-2 joint to a free chassis, no gravity (as in the vehicle
+// bench): the wheel motor (axis 2, vel2 -8 rad/s, FMax2 1 N m) is a row
+// coupled to the joint's block, and so is the steering motor of a front
+// wheel (stops at -+0.75 rad, vel 0.5 rad/s, FMax 0.2 N m); a rear wheel's
+// steering stops both at 0 make its steering row an equality, in a block of 5.
+// Only internal forces act: the total momentum stays zero (its angular part
+// up to the joint's position error, a lever of 0.1 mm, and the gyroscopic
+// term's split between bodies), the wheel turns at the motor's speed, a rear
+// wheel does not steer (the equality row is held to within 0.7 mrad while
+// the motor row coupled to its block pushes it), a front one steers at its
+// motor's speed until its stop holds it.
+static int hinge2_wheel(int front)
+{
+    dWorldID w = dWorldCreate();
+    dWorldSetGravity(w, 0, 0, 0);
+    dBodyID chassis = dBodyCreate(w), wheel = sphere_body(w, 0.35, 0.25, -0.1, 0.2, 0.18);
+    dMass m;
+    dMassSetBoxTotal(&m, 1, 0.7, 0.5, 0.2);
+    dBodySetMass(chassis, &m);
+    dJointID j = dJointCreateHinge2(w, 0);
+    dJointAttach(j, chassis, wheel);
+    dJointSetHinge2Anchor(j, 0.35, 0.25, -0.1);
+    const dReal up[3] = { 0, 0, 1 }, across[3] = { 0, 1, 0 };
+    dJointSetHinge2Axes(j, up, across);
+    dJointSetHinge2Param(j, dParamSuspensionERP, 0.4);
+    dJointSetHinge2Param(j, dParamSuspensionCFM, 0.01);
+    dJointSetHinge2Param(j, dParamLoStop, front ? -0.75 : 0);
+    dJointSetHinge2Param(j, dParamHiStop, front ? 0.75 : 0);
+    if (front) {
+        dJointSetHinge2Param(j, dParamVel, 0.5);
+        dJointSetHinge2Param(j, dParamFMax, 0.2);
+    }
+    dJointSetHinge2Param(j, dParamVel2, -8);
+    dJointSetHinge2Param(j, dParamFMax2, 1);
+    double worst_p = 0, worst_l = 0, worst_sep = 0, worst_steer = 0;
+    for (int s = 0; s < 120; s++) {
+        CHECK(dWorldQuickStep(w, 1.0 / 60) == 1);
+        double p[3] = { 0, 0, 0 }, l[3] = { 0, 0, 0 };
+        const dBodyID b[2] = { chassis, wheel };
+        for (int k = 0; k < 2; k++) {
+            dMass bm;
+            dBodyGetMass(b[k], &bm);
+            const dReal *x = dBodyGetPosition(b[k]), *v = dBodyGetLinearVel(b[k]);
+            const dReal *R = dBodyGetRotation(b[k]), *om = dBodyGetAngularVel(b[k]);
+            dVector3 wb, Lb, L;   // R I R^T omega
+            dMultiply1_331(wb, R, om);
+            dMultiply0_331(Lb, bm.I, wb);
+            dMultiply0_331(L, R, Lb);
+            for (int e = 0; e < 3; e++) p[e] += bm.mass * v[e];
+            // about the origin: total linear momentum is zero, so any point will do
+            l[0] += L[0] + bm.mass * (x[1] * v[2] - x[2] * v[1]);
+            l[1] += L[1] + bm.mass * (x[2] * v[0] - x[0] * v[2]);
+            l[2] += L[2] + bm.mass * (x[0] * v[1] - x[1] * v[0]);
+        }
+        worst_p = fmax(worst_p, sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]));
+        worst_l = fmax(worst_l, sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]));
+        dVector3 a1, a2;
+        dJointGetHinge2Anchor(j, a1);
+        dJointGetHinge2Anchor2(j, a2);
+        worst_sep = fmax(worst_sep, distance(a1, a2));
+        if (!front) worst_steer = fmax(worst_steer, fabs(dJointGetHinge2Angle1(j)));
+        if (front && s == 59) CHECK_NEAR(dJointGetHinge2Angle1(j), 0.5, 0.02);
+    }
+    printf("# %s wheel: |p| %.3g, |L| %.3g, anchor gap %.3g, steering %.3g, angle1 %.6g, "
+           "rate2 %.6g\n", front ? "front" : "rear", worst_p, worst_l, worst_sep, worst_steer,
+           (double)dJointGetHinge2Angle1(j), (double)dJointGetHinge2Angle2Rate(j));
+    CHECK(worst_p < 1e-5);
+    CHECK(worst_l < 2e-4);   // 1 % of the wheel's spin momentum, I w = 0.021 N m s
+    CHECK(worst_sep < 1e-3);
+    CHECK_NEAR(dJointGetHinge2Angle2Rate(j), -8, 0.08);
+    if (front) CHECK_NEAR(dJointGetHinge2Angle1(j), 0.75, 0.02);
+    else CHECK(worst_steer < 3e-3);
+    dWorldDestroy(w);
+    return 0;
+}
+
+static int test_hinge2_wheels_on_free_chassis(void)
+{
+    CHECK(hinge2_wheel(0) == 0);
+    CHECK(hinge2_wheel(1) == 0);
+    return 0;
+}
+
 // ---- against dWorldStep ----------------------------------------------------------
 
 // Four rods of unequal mass, all moving: a ball joint to the world, then
@@ -937,6 +1020,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_hinge_motor_reaches_speed),
     TEST_CASE(test_hinge_stop_holds),
     TEST_CASE(test_feedback_of_static_pendulum),
+    TEST_CASE(test_hinge2_wheels_on_free_chassis),
     TEST_CASE(test_converges_to_world_step),
     TEST_CASE(test_every_block_size_converges_to_world_step),
     TEST_CASE(test_box_rests_on_contacts),

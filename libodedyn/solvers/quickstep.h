@@ -82,7 +82,8 @@ static inline qs_v2 qs_splat(dReal a)
 // n rows of one joint solved together: with the residuals res (unscaled)
 // delta = Ainv res (Ainv: the inverse of the block of A, times sor_w; its
 // rows padded to pairs, so that two numbers of delta are made at a time),
-// lambda += delta, fc += M^-1 J^T delta.
+// lambda += delta, fc += M^-1 J^T delta; then the joint's rows coupled to it
+// (quickstep_sweep.c: the bodies' fc stays in registers meanwhile).
 typedef struct qs_block {
     int n;
     int two;          // acts on two bodies (else on o0 only)

@@ -147,7 +147,7 @@ QS_INLINE int cholesky(const double *B, int n, double *L)
 }
 
 // x = B^-1 x with B = L L^T.
-static void cholesky_solve(const double *L, int n, double *x)
+QS_INLINE void cholesky_solve(const double *L, int n, double *x)
 {
     for (int i = 0; i < n; i++) {
         for (int k = 0; k < i; k++) x[i] -= L[i * n + k] * x[k];
@@ -283,13 +283,13 @@ static qs_block *make_blocks(dxArena *a, const qs_input *in, const qs_jrows *jr,
 // ---- rows --------------------------------------------------------------------
 
 // Couple a row (J, iMJ, diagonal *diag) to the block of its joint (build
-// data jb): with the block's matrix B and its column c = J_B M^-1 J^T,
-// g = -B^-1 c, the diagonal becomes the Schur complement diag - c^T B^-1 c
-// and iMJ gains M^-1 J_B^T g. Returns g (arena), or NULL if the row depends
-// on the block's rows.
-static const dReal *couple_to_block(dxArena *a, const qs_jblock *jb, qs_v2 *iMJ, double *diag)
+// data jb, n its size: a constant after inlining): with the block's matrix B
+// and its column c = J_B M^-1 J^T, g = -B^-1 c, the diagonal becomes the
+// Schur complement diag - c^T B^-1 c and iMJ gains M^-1 J_B^T g. Returns g
+// (arena), or NULL if the row depends on the block's rows.
+QS_INLINE const dReal *couple_n(dxArena *a, const qs_jblock *jb, int n, qs_v2 *iMJ,
+                                double *diag)
 {
-    const int n = jb->n;
     double c[QS_MAX_BLOCK], t[QS_MAX_BLOCK];
     for (int k = 0; k < n; k++) t[k] = c[k] = dot12(jb->J + 6 * k, iMJ);
     cholesky_solve(jb->L, n, t);
@@ -306,6 +306,17 @@ static const dReal *couple_to_block(dxArena *a, const qs_jblock *jb, qs_v2 *iMJ,
     return g;
 }
 
+static const dReal *couple_to_block(dxArena *a, const qs_jblock *jb, qs_v2 *iMJ, double *diag)
+{
+    switch (jb->n) {   // constant sizes let the compiler unroll
+    case 2: return couple_n(a, jb, 2, iMJ, diag);
+    case 3: return couple_n(a, jb, 3, iMJ, diag);
+    case 4: return couple_n(a, jb, 4, iMJ, diag);
+    case 5: return couple_n(a, jb, 5, iMJ, diag);
+    default: return couple_n(a, jb, QS_MAX_BLOCK, iMJ, diag);
+    }
+}
+
 // Row i of the joint (lambda positions of the joint's rows in pos, the
 // constant 1 at position one): D J and M^-1 J^T as pairs, the scaled rhs and
 // cfm, the bounds. blk, jb: the joint's block to couple to and its build
@@ -316,12 +327,14 @@ static void fill_row(dxArena *a, const qs_input *in, const qs_jrows *jr, int i, 
     qs_v2 Jp[6], Mp[6], Rp[6];
     row_full(jr, i, Jp, Mp, Rp);
     const dReal rate = pair_dot(Jp, Rp), cfm = jr->cfm[i] * in->fps;
+#ifdef dSINGLE
     double diag = (double)pair_dot(Jp, Mp) + cfm;
+    if (jb && diag > 0) diag = dot12(Jp, Mp) + cfm;   // in double
+#else
+    double diag = pair_dot(Jp, Mp) + cfm;   // dot12 is pair_dot
+#endif
     q->g = NULL;
-    if (jb && diag > 0) {
-        diag = dot12(Jp, Mp) + cfm;
-        q->g = couple_to_block(a, jb, Mp, &diag);
-    }
+    if (jb && diag > 0) q->g = couple_to_block(a, jb, Mp, &diag);
     q->gn = (short)(q->g ? blk->n : 0);
     q->gfirst = q->g ? blk->first : 0;
     // A zero diagonal (an empty row without cfm) leaves the row's force at 0.

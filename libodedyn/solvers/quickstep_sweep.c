@@ -4,9 +4,10 @@
 // every block and every row of all islands (quickstep.h). This is where
 // QuickStep spends its time: the updates work on fours and pairs of numbers
 // (a body's 6 numbers as 4 + 2; a block's residuals, lambdas and Ainv res two
-// rows at a time), the block updates are
-// inlined once per size so that the loops have constant bounds, and the row
-// update branches only on one body or two.
+// rows at a time), the block updates (with their coupled rows, on the
+// bodies' fc kept in registers) are inlined once per size and number of
+// bodies so that the loops have constant bounds, and the row update branches
+// only on one body or two.
 
 #include "quickstep.h"
 
@@ -172,17 +173,14 @@ QS_INLINE qs_v2 block_dot(const qs_v2 *J, int a, qs_b6 x0, qs_b6 x1, int np)
     return s;
 }
 
-// One block update; n and np (3: one body, 6: two) are constants after
-// inlining. The residuals, delta = Ainv res and the lambdas go two rows at a
-// time (each lane computing exactly what a row alone would).
-QS_INLINE void update_block(const qs_block *blk, int n, int np, dReal *lambda, dReal *fc)
+// A block's delta (rows of Ainv in pairs, QS_PAD(n) wide): the residuals,
+// delta = Ainv res and the lambdas two rows at a time, each lane computing
+// exactly what its row alone would.
+QS_INLINE void block_delta(const qs_block *blk, int n, int np, qs_b6 x0, qs_b6 x1, dReal *l,
+                           dReal *delta)
 {
     const int w = QS_PAD(n);
-    const qs_v2 *J = blk->J, *M = blk->M;
-    const qs_v2 *Ainv = (const qs_v2 *)blk->Ainv;   // rows of w / 2 pairs
-    dReal *f0 = fc + blk->o0, *f1 = fc + blk->o1, *l = lambda + blk->first;
-    qs_b6 x0 = b6_load(f0), x1 = x0;
-    if (np == 6) x1 = b6_load(f1);
+    const qs_v2 *J = blk->J, *Ainv = (const qs_v2 *)blk->Ainv;
     qs_v2 res[QS_MAX_BLOCK / 2];   // in pairs: res[a / 2] lane a % 2
     for (int a = 0; a < QS_MAX_BLOCK / 2; a++) res[a] = qs_splat(0);   // (for the compiler)
     for (int a = 0; a < n; a += 2) {
@@ -196,7 +194,6 @@ QS_INLINE void update_block(const qs_block *blk, int n, int np, dReal *lambda, d
                                   (qs_lane(sa, 0) + qs_lane(sa, 1)));
         }
     }
-    dReal delta[QS_MAX_BLOCK];
     for (int a = 0; a < w; a += 2) {
         qs_v2 d = qs_mul(Ainv[a / 2], qs_splat(qs_lane(res[0], 0)));
         for (int c = 1; c < n; c++)
@@ -209,21 +206,58 @@ QS_INLINE void update_block(const qs_block *blk, int n, int np, dReal *lambda, d
             l[a] += qs_lane(d, 0);
         }
     }
+}
+
+// One coupled row of a block of n rows (quickstep.h), its bodies' fc in x0
+// and x1 (np as for the block): the row update, and the block's lambdas
+// moved by g delta.
+QS_INLINE void coupled_row(const qs_row *q, int n, int np, dReal *lambda, qs_b6 *x0, qs_b6 *x1)
+{
+    const dReal s = dFabs(lambda[q->f]), old = lambda[q->pos];
+    qs_v2 dot = b6_dot((const dReal *)q->J, *x0);
+    if (np == 6) dot = qs_add(dot, b6_dot((const dReal *)q->J1, *x1));
+    const dReal now = clamp(old + q->rhs - q->cfm * old - (qs_lane(dot, 0) + qs_lane(dot, 1)),
+                            q->lo * s, q->hi * s);
+    lambda[q->pos] = now;
+    const dReal delta = now - old;
+    const qs_v4 d4 = v4_splat(delta);
+    const qs_v2 d2 = qs_splat(delta);
+    *x0 = b6_add(*x0, d4, d2, (const dReal *)q->M);
+    if (np == 6) *x1 = b6_add(*x1, d4, d2, (const dReal *)q->M1);
+    dReal *lb = lambda + q->gfirst;
+    int a = 0;
+    for (; a + 4 <= n; a += 4) store4(v4_add(load4(lb + a), v4_mul(d4, load4(q->g + a))), lb + a);
+    for (; a < n; a++) lb[a] += delta * q->g[a];
+}
+
+// One block update and its coupled rows; n and np (3: one body, 6: two) are
+// constants after inlining. The fc of the bodies stays in registers until
+// the coupled rows are done.
+QS_INLINE void update_block(const qs_block *blk, const qs_row *coupled, int n, int np,
+                            dReal *lambda, dReal *fc)
+{
+    dReal *f0 = fc + blk->o0, *f1 = fc + blk->o1, *l = lambda + blk->first;
+    qs_b6 x0 = b6_load(f0), x1 = x0;
+    if (np == 6) x1 = b6_load(f1);
+    dReal delta[QS_MAX_BLOCK];
+    block_delta(blk, n, np, x0, x1, l, delta);
     for (int a = 0; a < n; a++) {
         const qs_v4 d4 = v4_splat(delta[a]);
         const qs_v2 d2 = qs_splat(delta[a]);
-        const dReal *Ma = (const dReal *)(M + 6 * a);
+        const dReal *Ma = (const dReal *)(blk->M + 6 * a);
         x0 = b6_add(x0, d4, d2, Ma);
         if (np == 6) x1 = b6_add(x1, d4, d2, Ma + 6);
     }
+    for (int c = 0; c < blk->ncoupled; c++) coupled_row(&coupled[c], n, np, lambda, &x0, &x1);
     b6_store(x0, f0);
     if (np == 6) b6_store(x1, f1);
 }
 
-QS_INLINE void update_block_n(const qs_block *blk, int n, dReal *lambda, dReal *fc)
+QS_INLINE void update_block_n(const qs_block *blk, const qs_row *coupled, int n, dReal *lambda,
+                              dReal *fc)
 {
-    if (blk->two) update_block(blk, n, 6, lambda, fc);
-    else update_block(blk, n, 3, lambda, fc);
+    if (blk->two) update_block(blk, coupled, n, 6, lambda, fc);
+    else update_block(blk, coupled, n, 3, lambda, fc);
 }
 
 // One row: J . fc of its bodies, the projected update of its lambda,
@@ -278,15 +312,14 @@ QS_SWEEP_CLONES static void sweep_blocks(const qs_system *sys)
     dReal *lambda = sys->lambda, *fc = sys->fc;
     for (int k = 0; k < sys->nblocks; k++) {
         const qs_block *blk = sys->bseq[k];
+        const qs_row *coupled = sys->rows + blk->coupled;
         switch (blk->n) {   // constant sizes let the compiler unroll
-        case 2: update_block_n(blk, 2, lambda, fc); break;
-        case 3: update_block_n(blk, 3, lambda, fc); break;
-        case 4: update_block_n(blk, 4, lambda, fc); break;
-        case 5: update_block_n(blk, 5, lambda, fc); break;
-        default: update_block_n(blk, QS_MAX_BLOCK, lambda, fc); break;
+        case 2: update_block_n(blk, coupled, 2, lambda, fc); break;
+        case 3: update_block_n(blk, coupled, 3, lambda, fc); break;
+        case 4: update_block_n(blk, coupled, 4, lambda, fc); break;
+        case 5: update_block_n(blk, coupled, 5, lambda, fc); break;
+        default: update_block_n(blk, coupled, QS_MAX_BLOCK, lambda, fc); break;
         }
-        for (int c = 0; c < blk->ncoupled; c++)
-            update_row(&sys->rows[blk->coupled + c], 1, 6, lambda, fc);
     }
 }
 

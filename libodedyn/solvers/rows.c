@@ -28,6 +28,43 @@ void dxBodyWorldInverseInertia(const struct dxBody *b, dReal *out)
 #define GYRO_TOL (16 * DBL_EPSILON)
 #endif
 
+// out = I v for the body-frame inertia I; diag (a constant after inlining):
+// I is diagonal, and its zeros are left out (the products they would add
+// are exact zeros).
+static inline void inertia_times(const dReal *I, int diag, const dReal *v, dReal *out)
+{
+    if (!diag) {
+        dMultiply0_331(out, I, v);
+        return;
+    }
+    for (int k = 0; k < 3; k++) out[k] = I[5 * k] * v[k];
+}
+
+// The Newton Jacobian of gyroscopic_midpoint, I + h/2 ([m]x I - [I m]x),
+// its diagonal zeros left out for a diagonal I as in inertia_times.
+static inline void midpoint_jacobian(const dReal *I, int diag, const dReal *m, const dReal *Im,
+                                     dReal h, dMatrix3 J)
+{
+    dMatrix3 mx, Imx, mxI;
+    dZeroMatrix3(mx);
+    dZeroMatrix3(Imx);
+    dSetCrossMatrixPlus(mx, m, 4);
+    dSetCrossMatrixPlus(Imx, Im, 4);
+    if (!diag) {
+        dMultiply0_333(mxI, mx, I);
+        for (int k = 0; k < 12; k++) J[k] = I[k] + REAL(0.5) * h * (mxI[k] - Imx[k]);
+        return;
+    }
+    // [m]x I scales column c of [m]x by I_c; its diagonal stays zero.
+    J[3] = J[7] = J[11] = 0;
+    for (int r = 0; r < 3; r++) {
+        for (int c = 0; c < 3; c++) {
+            const int k = 4 * r + c;
+            J[k] = r == c ? I[k] : REAL(0.5) * h * (mx[k] * I[5 * c] - Imx[k]);
+        }
+    }
+}
+
 // The torque-free motion of a body over one step, in the body frame: the
 // implicit midpoint rule for Euler's equation,
 //   I (x - w) + h m x (I m) = 0,   m = (w + x) / 2,
@@ -38,34 +75,32 @@ void dxBodyWorldInverseInertia(const struct dxBody *b, dReal *out)
 // also the energy and |L| measured after the step. An iteration that does
 // not converge (a huge spin for the step) is scaled back to w's energy, so
 // the term never adds energy. Writes x; see docs/design.md for the choice.
-static void gyroscopic_midpoint(const dReal *I, const dReal *w, dReal h, dReal *x)
+// diag: I is diagonal (the usual body frame: principal axes), whose zeros
+// are left out.
+static inline void gyroscopic_midpoint(const dReal *I, int diag, const dReal *w, dReal h,
+                                       dReal *x)
 {
     const dReal tol = GYRO_TOL;
     dCopyVector3(x, w);
     for (int it = 0; it < 12; it++) {
         dVector3 m, Im, mIm, F, step;
         for (int k = 0; k < 3; k++) m[k] = REAL(0.5) * (w[k] + x[k]);
-        dMultiply0_331(Im, I, m);
+        inertia_times(I, diag, m, Im);
         dCalcVectorCross3(mIm, m, Im);
         dVector3 d;
         dSubtractVectors3(d, x, w);
-        dMultiply0_331(F, I, d);
+        inertia_times(I, diag, d, F);
         dAddVectorScaledVector3(F, F, mIm, h);
-        dMatrix3 mx, Imx, mxI, J, Jinv;
-        dZeroMatrix3(mx);
-        dZeroMatrix3(Imx);
-        dSetCrossMatrixPlus(mx, m, 4);
-        dSetCrossMatrixPlus(Imx, Im, 4);
-        dMultiply0_333(mxI, mx, I);
-        for (int k = 0; k < 12; k++) J[k] = I[k] + REAL(0.5) * h * (mxI[k] - Imx[k]);
+        dMatrix3 J, Jinv;
+        midpoint_jacobian(I, diag, m, Im, h, J);
         if (dInvertMatrix3(Jinv, J) == 0) break;
         dMultiply0_331(step, Jinv, F);
         dSubtractVectors3(x, x, step);
         if (dCalcVectorLengthSquare3(step) <= tol * tol * dCalcVectorLengthSquare3(x)) break;
     }
     dVector3 Iw, Ix;
-    dMultiply0_331(Iw, I, w);
-    dMultiply0_331(Ix, I, x);
+    inertia_times(I, diag, w, Iw);
+    inertia_times(I, diag, x, Ix);
     const dReal e0 = dCalcVectorDot3(w, Iw), e1 = dCalcVectorDot3(x, Ix);
     if (!(e1 <= e0)) {
         if (e1 > 0 && dxIsFinite(e1)) dScaleVector3(x, dSqrt(e0 / e1));
@@ -78,13 +113,12 @@ static void gyroscopic_midpoint(const dReal *I, const dReal *w, dReal h, dReal *
 static int gyroscopic_change(const struct dxBody *b, dReal h, dReal *d)
 {
     const dReal *I = b->mass.I;
-    if ((b->flags & DX_BODY_NO_GYROSCOPIC) ||
-        (I[1] == 0 && I[2] == 0 && I[6] == 0 && I[4] == 0 && I[8] == 0 && I[9] == 0 &&
-         I[0] == I[5] && I[0] == I[10]))
-        return 0;
+    const int diag = I[1] == 0 && I[2] == 0 && I[6] == 0 && I[4] == 0 && I[8] == 0 && I[9] == 0;
+    if ((b->flags & DX_BODY_NO_GYROSCOPIC) || (diag && I[0] == I[5] && I[0] == I[10])) return 0;
     dVector3 w, x;
     dMultiply1_331(w, b->R, b->avel);   // body frame
-    gyroscopic_midpoint(I, w, h, x);
+    if (diag) gyroscopic_midpoint(I, 1, w, h, x);
+    else gyroscopic_midpoint(I, 0, w, h, x);
     dSubtractVectors3(d, x, w);
     return 1;
 }
