@@ -397,6 +397,12 @@ static void sanitise_surface(dSurfaceParameters *s)
 {
     const int mode = s->mode;
     s->mu = check_coefficient("surface.mu", s->mu);
+    enum {
+        CHECKED = dContactMu2 | dContactRolling | dContactBounce | dContactSoftERP |
+                  dContactSoftCFM | dContactMotion1 | dContactMotion2 | dContactMotionN |
+                  dContactSlip1 | dContactSlip2
+    };
+    if (!(mode & CHECKED)) return;   // (the usual contact: mu only)
     if (mode & dContactMu2) s->mu2 = check_coefficient("surface.mu2", s->mu2);
     if (mode & dContactRolling) {
         s->rho = check_coefficient("surface.rho", s->rho);
@@ -487,13 +493,22 @@ dJointID dJointCreateContact(dWorldID w, dJointGroupID g, const dContact *contac
     DX_CHECK_ARG(g == NULL || g->hdr.magic == DX_MAGIC_GROUP, return NULL,
                  "joint group was destroyed");
     DX_CHECK_ARG(contact != NULL, return NULL, "contact is NULL");
-    dxJoint *j = dxJointCreate(w, g, &contact_class);
+    // Every field of the contact's part is written below (no zeroing first):
+    // the pose record only says "none yet"; anchor() fills it at the first step.
+    dxJoint *j = dxJointCreateBare(w, g, &contact_class);
     dxJointContact *c = (dxJointContact *)j;
     c->contact = *contact;
+    c->anchor_body[0] = c->anchor_body[1] = NULL;
     if (!check_geometry(c)) {
+        dZeroVector3(c->n);
+        dZeroVector3(c->t1);
+        dZeroVector3(c->t2);
+        c->mu2 = c->rho2 = c->rhoN = 0;
+        c->rows_present = 0;
         c->inert = 1;
         return j;
     }
+    c->inert = 0;
     sanitise_surface(&c->contact.surface);
     friction_directions(c);
     choose_rows(c);
