@@ -46,14 +46,22 @@ typedef struct warm_point {
 // What a contact of this step needs until its forces are known: the handle
 // dxQuickWarmContact returns.
 struct qs_warm_entry {
+    const struct dxBody *b0;        // its first body
     int pos[3];                     // lambda positions: normal, t1, t2 (-1: none)
     dReal t1[3], t2[3];             // friction directions (world frame)
 };
+
+// A slot of the index: run `run` if stamp is the table's, else empty.
+typedef struct warm_slot {
+    uint32_t stamp;
+    int run;
+} warm_slot;
 
 // A run of consecutive contacts of one body pair.
 typedef struct warm_pair {
     const struct dxBody *b0, *b1;   // stored order; b1 NULL for the static world
     uint32_t g0, g1;                // their generations
+    uint32_t hash;                  // of b0 and b1 (pair_hash)
     int first, count;               // its contacts
     int next;                       // (old runs) the pair's next run, -1 at the end
 } warm_pair;
@@ -65,9 +73,13 @@ struct dxWarmCache {
     qs_warm_entry *pending;         // per contact of this step
     int ncur, nold, cap_cur, cap_old, cap_pending;
     int ncur_pairs, nold_pairs;
-    int match;                      // the current run's first old run, -1: none
-    int *slots;                     // nslots (a power of 2): old runs by pair, -1: empty
+    warm_pair *run;                 // the current run (NULL before the first)
+    int match;                      // its first old run, -1: none
+    // The index of the old runs by pair: nslots (a power of 2) slots, those
+    // whose stamp is slot_stamp in use (so the table is never cleared).
+    struct warm_slot *slots;
     int nslots;
+    uint32_t slot_stamp;
     uint32_t stamp;                 // w->step_count of the step that made old
 };
 
@@ -103,7 +115,7 @@ void dxWarmCacheFree(struct dxWorld *w)
     dFree(c->old, sizeof(warm_point) * (size_t)c->cap_old);
     dFree(c->old_pairs, sizeof(warm_pair) * (size_t)c->cap_old);
     dFree(c->pending, sizeof(qs_warm_entry) * (size_t)c->cap_pending);
-    dFree(c->slots, sizeof(int) * (size_t)c->nslots);
+    dFree(c->slots, sizeof(warm_slot) * (size_t)c->nslots);
     dFree(c, sizeof *c);
     w->qs_warm = NULL;
 }
@@ -129,27 +141,30 @@ static inline void to_world(dReal *x, const dReal *R, const dReal *v)
     x[2] = x2;
 }
 
-static unsigned slot_of(const dxWarmCache *c, const struct dxBody *b0, const struct dxBody *b1)
+static uint32_t pair_hash(const struct dxBody *b0, const struct dxBody *b1)
 {
     uint64_t x = (uint64_t)(uintptr_t)b0 * 0x9e3779b97f4a7c15u;
     x ^= (uint64_t)(uintptr_t)b1 * 0xc2b2ae3d27d4eb4fu;
     x ^= x >> 29;
-    return (unsigned)(x >> 17) & (unsigned)(c->nslots - 1);
+    return (uint32_t)(x >> 17);
 }
 
+// The same pair: bodies and generations (the hash first, the cheap reject).
 static int same_pair(const warm_pair *a, const warm_pair *b)
 {
-    return a->b0 == b->b0 && a->b1 == b->b1 && a->g0 == b->g0 && a->g1 == b->g1;
+    return a->hash == b->hash && a->b0 == b->b0 && a->b1 == b->b1 && a->g0 == b->g0 &&
+           a->g1 == b->g1;
 }
 
-// The first old run of pair `key` (bodies and generations), or -1.
+// The first old run of pair `key`, or -1.
 static int find_pair(const dxWarmCache *c, const warm_pair *key)
 {
     if (c->nold_pairs == 0) return -1;
     const unsigned mask = (unsigned)c->nslots - 1;
-    for (unsigned s = slot_of(c, key->b0, key->b1);; s = (s + 1) & mask) {
-        const int r = c->slots[s];
-        if (r < 0 || same_pair(&c->old_pairs[r], key)) return r;
+    for (unsigned s = key->hash & mask;; s = (s + 1) & mask) {
+        const warm_slot *t = &c->slots[s];
+        if (t->stamp != c->slot_stamp) return -1;
+        if (same_pair(&c->old_pairs[t->run], key)) return t->run;
     }
 }
 
@@ -160,23 +175,28 @@ static void index_old(dxWarmCache *c)
     if (c->nslots < 2 * c->nold_pairs) {
         int n = c->nslots > 0 ? c->nslots : 64;
         while (n < 2 * c->nold_pairs) n *= 2;
-        dFree(c->slots, sizeof(int) * (size_t)c->nslots);
-        c->slots = dAlloc(sizeof(int) * (size_t)n);
+        dFree(c->slots, sizeof(warm_slot) * (size_t)c->nslots);
+        c->slots = dAlloc(sizeof(warm_slot) * (size_t)n);
+        memset(c->slots, 0, sizeof(warm_slot) * (size_t)n);   // stamp 0: never in use
         c->nslots = n;
     }
-    if (c->nold_pairs == 0) return;
-    memset(c->slots, 0xff, sizeof(int) * (size_t)c->nslots);   // all -1
+    if (++c->slot_stamp == 0) {   // (after 2^32 tables: clear once)
+        memset(c->slots, 0, sizeof(warm_slot) * (size_t)c->nslots);
+        c->slot_stamp = 1;
+    }
     const unsigned mask = (unsigned)c->nslots - 1;
     for (int r = 0; r < c->nold_pairs; r++) {
         warm_pair *q = &c->old_pairs[r];
         q->next = -1;
-        unsigned s = slot_of(c, q->b0, q->b1);
-        while (c->slots[s] >= 0 && !same_pair(&c->old_pairs[c->slots[s]], q)) s = (s + 1) & mask;
-        if (c->slots[s] < 0) {
-            c->slots[s] = r;
+        unsigned s = q->hash & mask;
+        while (c->slots[s].stamp == c->slot_stamp && !same_pair(&c->old_pairs[c->slots[s].run], q))
+            s = (s + 1) & mask;
+        if (c->slots[s].stamp != c->slot_stamp) {
+            c->slots[s].stamp = c->slot_stamp;
+            c->slots[s].run = r;
             continue;
         }
-        int last = c->slots[s];   // the same pair in an earlier run
+        int last = c->slots[s].run;   // the same pair in an earlier run
         while (c->old_pairs[last].next >= 0) last = c->old_pairs[last].next;
         c->old_pairs[last].next = r;
     }
@@ -198,6 +218,7 @@ dxWarmCache *dxQuickWarmBegin(struct dxWorld *w, int ncontacts)
         c->cap_pending = cap;
     }
     c->ncur = c->ncur_pairs = 0;
+    c->run = NULL;
     if (c->stamp + 1 != w->step_count) c->nold = c->nold_pairs = 0;   // not the step just before
     return c;
 }
@@ -233,7 +254,7 @@ qs_warm_entry *dxQuickWarmContact(dxWarmCache *c, const struct dxBody *b0,
                                   dReal *f)
 {
     const int k = c->ncur++;
-    warm_pair *run = c->ncur_pairs ? &c->cur_pairs[c->ncur_pairs - 1] : NULL;
+    warm_pair *run = c->run;
     if (!run || run->b0 != b0 || run->b1 != b1) {
         // A new run (within a step a body pointer names one body: no
         // generation can change while the system is built).
@@ -242,14 +263,17 @@ qs_warm_entry *dxQuickWarmContact(dxWarmCache *c, const struct dxBody *b0,
         run->b1 = b1;
         run->g0 = b0->hdr.generation;
         run->g1 = b1 ? b1->hdr.generation : 0;
+        run->hash = pair_hash(b0, b1);
         run->first = k;
-        run->count = 0;
-        run->next = -1;
+        run->count = 1;
         c->match = find_pair(c, run);
+        c->run = run;
+    } else {
+        run->count++;
     }
-    run->count++;
     warm_point *e = &c->cur[k];
     qs_warm_entry *pend = &c->pending[k];
+    pend->b0 = b0;
     dCopyVector3(pend->t1, t1);
     dCopyVector3(pend->t2, t2);
     dVector3 arm;
@@ -281,19 +305,15 @@ void dxQuickWarmPositions(qs_warm_entry *e, const int pos[3])
 void dxQuickWarmEnd(struct dxWorld *w, dxWarmCache *c, const dReal *lambda)
 {
     if (!c) return;
-    for (int r = 0; r < c->ncur_pairs; r++) {
-        const warm_pair *q = &c->cur_pairs[r];
-        const dReal *R = q->b0->R;   // the bodies have not moved yet
-        for (int k = q->first; k < q->first + q->count; k++) {
-            const qs_warm_entry *pend = &c->pending[k];
-            warm_point *e = &c->cur[k];
-            const dReal l1 = pend->pos[1] >= 0 ? lambda[pend->pos[1]] : 0;
-            const dReal l2 = pend->pos[2] >= 0 ? lambda[pend->pos[2]] : 0;
-            e->ln = lambda[pend->pos[0]];
-            dVector3 fw;   // into b0's frame
-            for (int i = 0; i < 3; i++) fw[i] = l1 * pend->t1[i] + l2 * pend->t2[i];
-            to_body(e->f, R, fw);
-        }
+    for (int k = 0; k < c->ncur; k++) {
+        const qs_warm_entry *pend = &c->pending[k];
+        warm_point *e = &c->cur[k];
+        const dReal l1 = pend->pos[1] >= 0 ? lambda[pend->pos[1]] : 0;
+        const dReal l2 = pend->pos[2] >= 0 ? lambda[pend->pos[2]] : 0;
+        e->ln = lambda[pend->pos[0]];
+        dVector3 fw;   // into b0's frame (the bodies have not moved yet)
+        for (int i = 0; i < 3; i++) fw[i] = l1 * pend->t1[i] + l2 * pend->t2[i];
+        to_body(e->f, pend->b0->R, fw);
     }
     // Swap, and index the new old runs by body pair.
     warm_point *t = c->old;
@@ -308,6 +328,7 @@ void dxQuickWarmEnd(struct dxWorld *w, dxWarmCache *c, const dReal *lambda)
     c->nold = c->ncur;
     c->nold_pairs = c->ncur_pairs;
     c->ncur = c->ncur_pairs = 0;
+    c->run = NULL;
     c->stamp = w->step_count;
     index_old(c);
 }
@@ -378,6 +399,7 @@ int dxWarmCacheLoad(struct dxWorld *w, dxSnapReader *in, int apply)
         const uint32_t first = dxSnapGetU32(in), count = dxSnapGetU32(in);
         if (in->bad || first != next_first || count == 0 || count > nold - first) return 0;
         next_first = first + count;
+        q.hash = pair_hash(q.b0, q.b1);
         q.first = (int)first;
         q.count = (int)count;
         q.next = -1;
