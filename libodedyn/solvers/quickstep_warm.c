@@ -74,7 +74,7 @@ struct dxWarmCache {
     int ncur, nold, cap_cur, cap_old, cap_pending;
     int ncur_pairs, nold_pairs;
     warm_pair *run;                 // the current run (NULL before the first)
-    int match;                      // its first old run, -1: none
+    const warm_pair *match;         // its pair's first old run, NULL: none
     // The index of the old runs by pair: nslots (a power of 2) slots, those
     // whose stamp is slot_stamp in use (so the table is never cleared).
     struct warm_slot *slots;
@@ -101,7 +101,6 @@ static dxWarmCache *cache_new(struct dxWorld *w)
 {
     dxWarmCache *c = dAlloc(sizeof *c);
     memset(c, 0, sizeof *c);
-    c->match = -1;
     w->qs_warm = c;
     return c;
 }
@@ -156,15 +155,16 @@ static int same_pair(const warm_pair *a, const warm_pair *b)
            a->g1 == b->g1;
 }
 
-// The first old run of pair `key`, or -1.
-static int find_pair(const dxWarmCache *c, const warm_pair *key)
+// The first old run of pair `key`, or NULL.
+static const warm_pair *find_pair(const dxWarmCache *c, const warm_pair *key)
 {
-    if (c->nold_pairs == 0) return -1;
+    if (c->nold_pairs == 0) return NULL;
     const unsigned mask = (unsigned)c->nslots - 1;
     for (unsigned s = key->hash & mask;; s = (s + 1) & mask) {
         const warm_slot *t = &c->slots[s];
-        if (t->stamp != c->slot_stamp) return -1;
-        if (same_pair(&c->old_pairs[t->run], key)) return t->run;
+        if (t->stamp != c->slot_stamp) return NULL;
+        const warm_pair *q = &c->old_pairs[t->run];
+        if (same_pair(q, key)) return q;
     }
 }
 
@@ -223,16 +223,15 @@ dxWarmCache *dxQuickWarmBegin(struct dxWorld *w, int ncontacts)
     return c;
 }
 
-// The old contact of runs r, r->next, ... that matches (point p within
-// sqrt(tol2), normal n within WARM_COS), or NULL: the nearest, ties to the
-// smaller normal force, the first of equals.
-static const warm_point *find(const dxWarmCache *c, int r, const dReal *p, const dReal *n,
-                              dReal tol2)
+// The old contact of run q and the runs chained after it that matches
+// (point p within sqrt(tol2), normal n within WARM_COS), or NULL: the
+// nearest, ties to the smaller normal force, the first of equals.
+static const warm_point *find(const dxWarmCache *c, const warm_pair *q, const dReal *p,
+                              const dReal *n, dReal tol2)
 {
     const warm_point *best = NULL;
     dReal best_d2 = tol2;
-    for (; r >= 0; r = c->old_pairs[r].next) {
-        const warm_pair *q = &c->old_pairs[r];
+    for (;; q = &c->old_pairs[q->next]) {
         const warm_point *e = c->old + q->first, *end = e + q->count;
         for (; e < end; e++) {
             // The point first: most of a pair's other contacts are too far,
@@ -244,8 +243,8 @@ static const warm_point *find(const dxWarmCache *c, int r, const dReal *p, const
             best = e;
             best_d2 = d2;
         }
+        if (q->next < 0) return best;
     }
-    return best;
 }
 
 qs_warm_entry *dxQuickWarmContact(dxWarmCache *c, const struct dxBody *b0,
@@ -281,7 +280,7 @@ qs_warm_entry *dxQuickWarmContact(dxWarmCache *c, const struct dxBody *b0,
     to_body(e->p, b0->R, arm);
     to_body(e->n, b0->R, n);
     *found = 0;
-    if (c->match < 0) return pend;
+    if (!c->match) return pend;
     dReal reach2 = dCalcVectorDot3(arm, arm);   // the longer lever arm, squared
     if (b1) {
         dVector3 arm1;
