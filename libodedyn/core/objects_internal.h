@@ -271,6 +271,9 @@ void dxBodyUpdateRotation(struct dxBody *b);
 
 // Create a joint of class cls in world w (and group g, or NULL).
 dxJoint *dxJointCreate(struct dxWorld *w, struct dxJointGroup *g, const dxJointClass *cls);
+// The same with only the common part (struct dxJoint) written: the caller
+// writes every field of the type's own part (cls->init is not called).
+dxJoint *dxJointCreateBare(struct dxWorld *w, struct dxJointGroup *g, const dxJointClass *cls);
 // Detach from both bodies (keeps the joint in its world).
 void dxJointDetach(dxJoint *j);
 // Unlink from the world, detach, and poison; frees unless it lives in a group.

@@ -74,7 +74,7 @@ static void group_append(struct dxJointGroup *g, dxJoint *j)
     g->joints[g->num_joints++] = j;
 }
 
-dxJoint *dxJointCreate(struct dxWorld *w, struct dxJointGroup *g, const dxJointClass *cls)
+dxJoint *dxJointCreateBare(struct dxWorld *w, struct dxJointGroup *g, const dxJointClass *cls)
 {
     dxJoint *j;
     uint32_t generation = 0;
@@ -84,34 +84,64 @@ dxJoint *dxJointCreate(struct dxWorld *w, struct dxJointGroup *g, const dxJointC
         j = dxPoolTake(&joint_pools[cls->type], cls->size);
         generation = j->hdr.generation;
     }
-    memset(j, 0, cls->size);
+    // Every field of the common part, written once (no zeroing first).
     j->hdr.magic = DX_MAGIC_JOINT;
     j->hdr.generation = generation + 1;
     j->cls = cls;
     j->world = w;
-    j->group = g;
-    j->flags = g ? DX_JOINT_IN_GROUP : 0;
-    j->node[0].joint = j->node[1].joint = j;
-
     j->next = w->joints;
+    j->prev = NULL;
+    j->group = g;
+    j->userdata = NULL;
+    j->flags = g ? DX_JOINT_IN_GROUP : 0;
+    for (int k = 0; k < 2; k++) {
+        j->node[k].joint = j;
+        j->node[k].other = NULL;
+        j->node[k].next = NULL;
+    }
+    j->feedback = NULL;
+    j->tag = 0;
+    j->rows.m = j->rows.nub = 0;
     if (w->joints) w->joints->prev = j;
     w->joints = j;
     w->num_joints++;
     if (g) group_append(g, j);
+    return j;
+}
+
+dxJoint *dxJointCreate(struct dxWorld *w, struct dxJointGroup *g, const dxJointClass *cls)
+{
+    dxJoint *j = dxJointCreateBare(w, g, cls);
+    memset(j + 1, 0, cls->size - sizeof *j);
     if (cls->init) cls->init(j);
     return j;
 }
 
-// Remove node n from the joint list of body b.
-static void unlink_node(struct dxBody *b, dxJointNode *n)
+// Remove node n from the joint list of body b: O(1) when n is the newest
+// there (a group emptied newest first).
+static inline void unlink_node(struct dxBody *b, dxJointNode *n)
 {
-    for (dxJointNode **p = &b->joints; *p; p = &(*p)->next) {
-        if (*p == n) {
-            *p = n->next;
-            b->num_joints--;
-            return;
-        }
+    dxJointNode **p = &b->joints;
+    while (*p && *p != n) p = &(*p)->next;
+    if (!*p) return;
+    *p = n->next;
+    b->num_joints--;
+}
+
+// Unlink j from its bodies' lists and its world's, and poison its handle.
+static inline void unlink_joint(dxJoint *j)
+{
+    struct dxBody *b0 = dxJointBody(j, 0), *b1 = dxJointBody(j, 1);
+    if (b0) unlink_node(b0, &j->node[0]);
+    if (b1) unlink_node(b1, &j->node[1]);
+    struct dxWorld *w = j->world;
+    if (w) {
+        if (j->prev) j->prev->next = j->next;
+        else w->joints = j->next;
+        if (j->next) j->next->prev = j->prev;
+        w->num_joints--;
     }
+    j->hdr.magic = DX_MAGIC_DEAD;
 }
 
 void dxJointDetach(dxJoint *j)
@@ -126,15 +156,9 @@ void dxJointDetach(dxJoint *j)
 
 void dxJointRemove(dxJoint *j)
 {
-    dxJointDetach(j);
-    struct dxWorld *w = j->world;
-    if (w) {
-        if (j->prev) j->prev->next = j->next;
-        else w->joints = j->next;
-        if (j->next) j->next->prev = j->prev;
-        w->num_joints--;
-    }
-    j->hdr.magic = DX_MAGIC_DEAD;
+    unlink_joint(j);
+    j->node[0].other = j->node[1].other = NULL;
+    j->node[0].next = j->node[1].next = NULL;
     if (!(j->flags & DX_JOINT_IN_GROUP)) dxPoolGive(&joint_pools[j->cls->type], j);
 }
 
@@ -162,7 +186,9 @@ void dJointGroupEmpty(dJointGroupID g)
 {
     CHECK_GROUP(g, return);
     // Newest first, so a body's joint list (newest at its head) unlinks in O(1).
-    for (int i = g->num_joints - 1; i >= 0; i--) dxJointRemove(g->joints[i]);
+    // The group's memory is reused whole, so a joint is only unlinked and
+    // poisoned.
+    for (int i = g->num_joints - 1; i >= 0; i--) unlink_joint(g->joints[i]);
     g->num_joints = 0;
     g->current = g->chunks;
     if (g->current) g->current->used = 0;
@@ -193,7 +219,8 @@ void dJointAttach(dJointID j, dBodyID body1, dBodyID body2)
     DX_CHECK_ARG((!body1 || body1->world == j->world) && (!body2 || body2->world == j->world),
                  return, "a body belongs to another world than the joint");
 
-    dxJointDetach(j);
+    if (j->node[0].other || j->node[1].other) dxJointDetach(j);   // (a new joint is not attached)
+    else j->flags &= ~(unsigned)DX_JOINT_REVERSE;
     if (!body1 && body2) {   // keep body 0 non-NULL: store (body2, 0), reversed
         body1 = body2;
         body2 = NULL;

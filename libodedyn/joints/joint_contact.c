@@ -63,6 +63,8 @@ typedef struct dxJointContact {
     dReal mu2, rho2, rhoN; // effective coefficients of direction 2 and spin
     unsigned rows_present; // ROW_... ; computed once at creation
     int inert;             // bad geometry: no rows at all
+    int m;                 // its number of rows (0 when inert)
+    int plain;             // dxJointContactIsPlain's answer, kept from creation
     // The bodies' poses at the contact's first step, and the arms from
     // their origins to the contact point then (world frame).
     const struct dxBody *anchor_body[2];
@@ -74,12 +76,7 @@ typedef struct dxJointContact {
 static void contact_count_rows(dxJoint *j, dxJointRowCount *count)
 {
     const dxJointContact *c = (const dxJointContact *)j;
-    int m = 0;
-    if (!c->inert) {
-        m = 1;
-        for (unsigned bits = c->rows_present; bits; bits &= bits - 1) m++;
-    }
-    count->m = m;
+    count->m = c->m;
     count->nub = 0;   // row 0 is bounded, so no row may be declared unbounded up front
 }
 
@@ -320,13 +317,7 @@ static void contact_fill_rows(dxJoint *j, dxJointRows *rows)
 
 int dxJointContactIsPlain(const dxJoint *j)
 {
-    const dxJointContact *c = (const dxJointContact *)j;
-    if (j->cls->type != dJointTypeContact || c->inert) return 0;
-    if (c->rows_present & (ROW_R1 | ROW_R2 | ROW_RN)) return 0;
-    // Two unbounded friction rows would be solved as a block (quickstep_build.c).
-    const int t1 = (c->rows_present & ROW_T1) && c->contact.surface.mu == dInfinity;
-    const int t2 = (c->rows_present & ROW_T2) && c->mu2 == dInfinity;
-    return !(t1 && t2);
+    return j->cls->type == dJointTypeContact && ((const dxJointContact *)j)->plain;
 }
 
 void dxJointContactRows(dxJoint *j, dReal fps, dReal erp, dxContactRows *r)
@@ -397,6 +388,12 @@ static void sanitise_surface(dSurfaceParameters *s)
 {
     const int mode = s->mode;
     s->mu = check_coefficient("surface.mu", s->mu);
+    enum {
+        CHECKED = dContactMu2 | dContactRolling | dContactBounce | dContactSoftERP |
+                  dContactSoftCFM | dContactMotion1 | dContactMotion2 | dContactMotionN |
+                  dContactSlip1 | dContactSlip2
+    };
+    if (!(mode & CHECKED)) return;   // (the usual contact: mu only)
     if (mode & dContactMu2) s->mu2 = check_coefficient("surface.mu2", s->mu2);
     if (mode & dContactRolling) {
         s->rho = check_coefficient("surface.rho", s->rho);
@@ -479,6 +476,12 @@ static void choose_rows(dxJointContact *c)
         if (c->rhoN > 0) p |= ROW_RN;
     }
     c->rows_present = p;
+    c->m = 1;
+    for (unsigned bits = p; bits; bits &= bits - 1) c->m++;
+    // Plain: no rolling rows, and not two unbounded friction rows (those
+    // would be solved as a block, quickstep_build.c).
+    const int t1 = (p & ROW_T1) && s->mu == dInfinity, t2 = (p & ROW_T2) && c->mu2 == dInfinity;
+    c->plain = !(p & (ROW_R1 | ROW_R2 | ROW_RN)) && !(t1 && t2);
 }
 
 dJointID dJointCreateContact(dWorldID w, dJointGroupID g, const dContact *contact)
@@ -487,13 +490,23 @@ dJointID dJointCreateContact(dWorldID w, dJointGroupID g, const dContact *contac
     DX_CHECK_ARG(g == NULL || g->hdr.magic == DX_MAGIC_GROUP, return NULL,
                  "joint group was destroyed");
     DX_CHECK_ARG(contact != NULL, return NULL, "contact is NULL");
-    dxJoint *j = dxJointCreate(w, g, &contact_class);
+    // Every field of the contact's part is written below (no zeroing first):
+    // the pose record only says "none yet"; anchor() fills it at the first step.
+    dxJoint *j = dxJointCreateBare(w, g, &contact_class);
     dxJointContact *c = (dxJointContact *)j;
     c->contact = *contact;
+    c->anchor_body[0] = c->anchor_body[1] = NULL;
     if (!check_geometry(c)) {
+        dZeroVector3(c->n);
+        dZeroVector3(c->t1);
+        dZeroVector3(c->t2);
+        c->mu2 = c->rho2 = c->rhoN = 0;
+        c->rows_present = 0;
+        c->m = c->plain = 0;
         c->inert = 1;
         return j;
     }
+    c->inert = 0;
     sanitise_surface(&c->contact.surface);
     friction_directions(c);
     choose_rows(c);
