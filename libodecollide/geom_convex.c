@@ -88,12 +88,34 @@ static unsigned convex_edges(const unsigned *polygons, unsigned planecount, dxHu
     return n;
 }
 
+// The sets of edges by face (dxConvex's by_f1, by_f2, lone) into masks
+// (room for two per plane), for hulls that fit 64-bit sets.
+static void convex_edge_sets(dxConvex *c, uint64_t *masks)
+{
+    c->lone = 0;
+    if (c->edgecount > 64 || c->planecount > 64) {
+        c->by_f1 = c->by_f2 = NULL;
+        return;
+    }
+    c->by_f1 = masks;
+    c->by_f2 = masks + c->planecount;
+    for (unsigned f = 0; f < c->planecount; f++) c->by_f1[f] = c->by_f2[f] = 0;
+    for (unsigned k = 0; k < c->edgecount; k++) {
+        const dxHullEdge *e = &c->edges[k];
+        uint64_t bit = (uint64_t)1 << k;
+        c->by_f1[e->f1] |= bit;
+        c->by_f2[e->f2] |= bit;
+        if (e->f1 == e->f2) c->lone |= bit;
+    }
+}
+
 static void free_derived(dxConvex *c)
 {
     if (c->derived) dFree(c->derived, c->derived_size);
     c->derived = NULL;
     c->edges = NULL;
     c->poly_start = NULL;
+    c->by_f1 = c->by_f2 = NULL;
 }
 
 static void convex_destroy(dxGeom *g)
@@ -121,13 +143,15 @@ static void convex_set(dxConvex *c, const dReal *planes, unsigned planecount,
         sides += *poly;
         poly += 1 + *poly;
     }
-    size_t doubles = 6 * (size_t)pointcount + 7 * (size_t)planecount + 3 * sides;
-    c->derived_size = sizeof(double) * doubles + sizeof(dxHullPosedEdge) * sides +
-                      sizeof(dxHullEdge) * sides + sizeof(unsigned) * planecount;
+    size_t doubles = 6 * (size_t)pointcount + 8 * (size_t)planecount + 3 * sides;
+    c->derived_size = sizeof(uint64_t) * 2 * (size_t)planecount + sizeof(double) * doubles +
+                      sizeof(dxHullPosedEdge) * sides + sizeof(dxHullEdge) * sides +
+                      sizeof(unsigned) * planecount;
     char *block = dAlloc(c->derived_size);
     c->derived = block;
     dxHullPose *pose = &c->pose;
-    pose->pts = (double (*)[3])block;
+    uint64_t *masks = (uint64_t *)block;
+    pose->pts = (double (*)[3])(masks + 2 * (size_t)planecount);
     pose->normals = pose->pts + pointcount;
     pose->offsets = (double *)(pose->normals + planecount);
     pose->px = pose->offsets + planecount;
@@ -139,11 +163,13 @@ static void convex_set(dxConvex *c, const dReal *planes, unsigned planecount,
     pose->ex = pose->nz + planecount;
     pose->ey = pose->ex + sides;
     pose->ez = pose->ey + sides;
-    pose->edges = (dxHullPosedEdge *)(pose->ez + sides);
+    pose->face_low = pose->ez + sides;
+    pose->edges = (dxHullPosedEdge *)(pose->face_low + planecount);
     pose->valid = pose->edges_valid = 0;
     c->edges = (dxHullEdge *)(pose->edges + sides);
     c->poly_start = (unsigned *)(c->edges + sides);
     c->edgecount = convex_edges(polygons, planecount, c->edges);
+    convex_edge_sets(c, masks);
     unsigned at = 0;
     for (unsigned f = 0; f < planecount; f++) {
         c->poly_start[f] = at;

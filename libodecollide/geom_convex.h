@@ -9,21 +9,28 @@
 
 #include "shapes.h"
 
+#include <stdint.h>
+
 // An edge of the hull, (a, b) with a < b, between faces f1 and f2 (f2 =
 // f1 when the polygons give the edge only once).
 typedef struct dxHullEdge {
     unsigned a, b, f1, f2;
 } dxHullEdge;
 
-// A separating axis found against another geom (collide_convex_hull.c):
-// tried first the next time the pair meets, so a pair that stays apart is
-// rejected by one axis. Only a hint: `other` is never dereferenced (it may
-// be destroyed and its address reused), and an axis that no longer
-// separates is simply not used.
+// What a hull found against another geom last time (collide_convex_hull.c),
+// tried first the next time the pair meets: the axis that parted them, so
+// a pair that stays apart is rejected by one axis; or, if they touched, the
+// face that gave the contact axis, the first guess that bounds the others
+// (a pair resting on one another keeps it). Only a hint: `other` is never
+// dereferenced (it may be destroyed and its address reused), an axis that
+// no longer separates is simply not used, and any face is a valid guess.
 enum { DX_CONVEX_AXIS_CACHE = 8 };
 typedef struct dxHullAxisHint {
     const void *other;
-    double axis[3];               // in this hull's frame
+    double axis[3];               // in this hull's frame, if !touching
+    int touching;                 // else: the face of this hull (side 0) or the other's
+    int side;
+    unsigned face;
 } dxHullAxisHint;
 
 // The hull posed in the world (by the native colliders,
@@ -45,6 +52,7 @@ typedef struct dxHullPose {
     double (*normals)[3];         // planecount unit outward normals ...
     double *offsets;              // ... and offsets (n . x = d)
     dxHullPosedEdge *edges;       // edgecount
+    double *face_low;             // per plane: the least n . x over its polygon (with the edges)
     // The same by coordinate, for loops over many at once: the points'
     // x, y, z, the normals' x, y, z, the edges' n2 x n1 x, y, z.
     double *px, *py, *pz, *nx, *ny, *nz, *ex, *ey, *ez;
@@ -60,6 +68,11 @@ typedef struct dxConvex {
     dxHullEdge *edges;            // derived from the polygons, owned by the geom
     unsigned edgecount;
     unsigned *poly_start;         // per plane: where its polygon starts in polygons
+    // For hulls of at most 64 edges and 64 planes (else NULL): per plane, the
+    // set of edges (bit k: edge k) whose first face it is, and whose second
+    // face; the edges with one face only.
+    uint64_t *by_f1, *by_f2;
+    uint64_t lone;
     double size;                  // the largest distance of a point from the frame's origin
     dxHullAxisHint hints[DX_CONVEX_AXIS_CACHE];
     unsigned next_hint;           // the entry replaced next

@@ -37,8 +37,13 @@ typedef struct dx_hull {
     const double (*wp)[3];    // the points in the world
     const double (*wn)[3];    // the planes in the world: unit outward normals ...
     const double *wd;         // ... and offsets
-    dxHullPosedEdge *we;      // the edges in the world, once *edges_posed
+    dxHullPosedEdge *we;      // the edges in the world, once *edges_posed ...
+    double *face_low;         // ... and per plane the least n . x over its polygon
     int *edges_posed;
+    // The edges by face as bit sets (dxConvex's by_f1, by_f2, lone; NULL
+    // beyond 64 edges or planes).
+    const uint64_t *by_f1, *by_f2;
+    uint64_t lone;
     // The points, normals and edges' n2 x n1 by coordinate (dxHullPose).
     const double *px, *py, *pz, *nx, *ny, *nz;
     double *ex, *ey, *ez;
@@ -52,7 +57,8 @@ typedef struct dx_hull_box {
     dxHullEdge edges[12];
     double wp[8][3], wn[6][3], wd[6];
     dxHullPosedEdge we[12];
-    double p_soa[3][8], n_soa[3][6], e_soa[3][12];
+    double p_soa[3][8], n_soa[3][6], e_soa[3][12], face_low[6];
+    uint64_t by_f1[6], by_f2[6];
     int edges_posed;
 } dx_hull_box;
 
@@ -120,9 +126,11 @@ typedef struct edge_axes {
 
 // 0 if a separating axis parts a and b (into sep); else the face axis and
 // the edge axis of least depth (edge->depth is infinite if no edge pair
-// counts), and what the clearance needs into found.
-int dx_hull_sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axes *found,
-                double sep[3]);
+// counts), and what the clearance needs into found. The face hint_face of
+// a (hint_side 0) or b (1) is tried first (it bounds the others; any face
+// does, the winner best); hint_side -1 for none.
+int dx_hull_sat(dx_hull *a, dx_hull *b, int hint_side, unsigned hint_face, sat_axis *face,
+                sat_axis *edge, edge_axes *found, double sep[3]);
 // The exact translation of a along the unit n (the best face axis, of depth
 // s_n) that parts it from b, from what dx_hull_sat kept in found.
 double dx_hull_clearance(const dx_hull *a, const dx_hull *b, const double n[3], double s_n,

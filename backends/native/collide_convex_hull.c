@@ -88,6 +88,14 @@ static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
                                            (unsigned)(2 * j) + bj };
         }
     }
+    for (int f = 0; f < 6; f++) bx->by_f1[f] = bx->by_f2[f] = 0;
+    for (unsigned k = 0; k < 12; k++) {
+        bx->by_f1[bx->edges[k].f1] |= (uint64_t)1 << k;
+        bx->by_f2[bx->edges[k].f2] |= (uint64_t)1 << k;
+    }
+    h->by_f1 = bx->by_f1;
+    h->by_f2 = bx->by_f2;
+    h->lone = 0;
     h->pts = bx->pts;
     h->planes = bx->planes;
     h->polys = bx->polys;
@@ -116,6 +124,7 @@ static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
     h->wn = (const double (*)[3])bx->wn;
     h->wd = bx->wd;
     h->we = bx->we;
+    h->face_low = bx->face_low;
     bx->edges_posed = 0;
     h->edges_posed = &bx->edges_posed;
 }
@@ -155,7 +164,11 @@ static void convex_hull(dx_hull *h, const dxGeom *g)
     h->wn = (const double (*)[3])pose->normals;
     h->wd = pose->offsets;
     h->we = pose->edges;
+    h->face_low = pose->face_low;
     h->edges_posed = &pose->edges_valid;
+    h->by_f1 = c->by_f1;
+    h->by_f2 = c->by_f2;
+    h->lone = c->lone;
     h->px = pose->px;
     h->py = pose->py;
     h->pz = pose->pz;
@@ -496,8 +509,9 @@ static int axis_separates(const dx_hull *a, const dx_hull *b, const double n[3])
     return bhi - alo < 0 || ahi - blo < 0;
 }
 
-// Keeps the separating axis n (world) as h's hint against the geom other.
-static void keep_hint(dx_hull *h, const void *other, const double n[3])
+// h's hint against the geom other, made if there is none (replacing the
+// oldest entry).
+static dxHullAxisHint *hint_entry(dx_hull *h, const void *other)
 {
     dxHullAxisHint *e = find_hint(h, other);
     if (!e) {
@@ -505,19 +519,42 @@ static void keep_hint(dx_hull *h, const void *other, const double n[3])
         h->convex->next_hint = (h->convex->next_hint + 1) % DX_CONVEX_AXIS_CACHE;
         e->other = other;
     }
+    return e;
+}
+
+// Keeps the separating axis n (world) as h's hint against the geom other.
+static void keep_axis(dx_hull *h, const void *other, const double n[3])
+{
+    dxHullAxisHint *e = hint_entry(h, other);
+    e->touching = 0;
     for (int k = 0; k < 3; k++)
         e->axis[k] = h->R[k] * n[0] + h->R[3 + k] * n[1] + h->R[6 + k] * n[2];
+}
+
+// Keeps the contact's face (side 0: h's own) as h's hint against other.
+static void keep_face(dx_hull *h, const void *other, int side, unsigned face)
+{
+    dxHullAxisHint *e = hint_entry(h, other);
+    e->touching = 1;
+    e->side = side;
+    e->face = face;
 }
 
 int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
                  dContactGeom *out, int skip)
 {
-    // The axis that parted the pair last time, if it still does.
+    // The axis that parted the pair last time, if it still does; or the
+    // face that gave their contact (sides as the holder sees them).
     dx_hull *holder = a->convex ? a : b->convex ? b : NULL;
     const void *other = holder == a ? (const void *)o2 : (const void *)o1;
+    int hint_side = -1;
+    unsigned hint_face = 0;
     if (holder) {
         const dxHullAxisHint *e = find_hint(holder, other);
-        if (e) {
+        if (e && e->touching) {
+            hint_side = holder == a ? e->side : 1 - e->side;
+            hint_face = e->face;
+        } else if (e) {
             double n[3];
             for (int r = 0; r < 3; r++)
                 n[r] = holder->R[3 * r] * e->axis[0] + holder->R[3 * r + 1] * e->axis[1] +
@@ -528,10 +565,11 @@ int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
     sat_axis face, edge;
     edge_axes found;
     double sep[3];
-    if (!dx_hull_sat(a, b, &face, &edge, &found, sep)) {
-        if (holder) keep_hint(holder, other, sep);
+    if (!dx_hull_sat(a, b, hint_side, hint_face, &face, &edge, &found, sep)) {
+        if (holder) keep_axis(holder, other, sep);
         return 0;
     }
+    if (holder) keep_face(holder, other, holder == a ? face.ref : 1 - face.ref, face.face);
     int max = dx_max_contacts(flags);
     if (edge.depth * DX_HULL_EDGE_PREFERENCE < face.depth) {
         double pos[3];

@@ -114,7 +114,7 @@ void dx_hull_interval(const dx_hull *h, const double m[3], double *lo, double *h
     dot_range(m, h->px, h->py, h->pz, h->npts, lo, hi);
 }
 
-// Poses the edges of h (once per pose).
+// Poses the edges of h and its faces' least points (once per pose).
 static void pose_edges(dx_hull *h)
 {
     if (*h->edges_posed) return;
@@ -131,6 +131,16 @@ static void pose_edges(dx_hull *h)
         h->ex[k] = out->n2xn1[0];
         h->ey[k] = out->n2xn1[1];
         h->ez[k] = out->n2xn1[2];
+    }
+    for (unsigned f = 0; f < h->nplanes; f++) {
+        unsigned count;
+        const unsigned *idx = dx_hull_polygon(h, f, &count);
+        double low = INFINITY;
+        for (unsigned k = 0; k < count; k++) {
+            double e = dot3(h->wn[f], h->wp[idx[k]]);
+            low = e < low ? e : low;
+        }
+        h->face_low[f] = low;
     }
     *h->edges_posed = 1;
 }
@@ -202,15 +212,16 @@ static void face_axis(const dx_hull *a, const dx_hull *b, int side, unsigned f, 
     for (int i = 0; i < 3; i++) n[i] = side ? m[i] : -m[i];
 }
 
-// A floor under face_depth for h's face f, q a point inside the other
-// hull: h's extent along the face's normal m is at least m . p for the
-// polygon's first point p, the other's along -m at least -m . q.
-static double face_floor(const dx_hull *h, unsigned f, const double q[3])
+// The gaps of h's faces against q, a point of the other hull: gap[f] =
+// low - n . q for the face's unit normal n and the least n . x over its
+// polygon, low. A floor under the face axis' depth (h's extent along n is
+// at least low, the other's along -n at least -n . q), and under the
+// depth of every edge pair with an edge of that face over the edge's arc
+// (see masked_edge_pairs).
+static void face_gaps(const dx_hull *h, const double q[3], double *gap)
 {
-    unsigned count;
-    const double *p = h->wp[*dx_hull_polygon(h, f, &count)];
-    double w[3] = { p[0] - q[0], p[1] - q[1], p[2] - q[2] };
-    return dot3(h->wn[f], w);
+    for (unsigned f = 0; f < h->nplanes; f++)
+        gap[f] = h->face_low[f] - (h->nx[f] * q[0] + h->ny[f] * q[1] + h->nz[f] * q[2]);
 }
 
 // Whether a's arc (from n1 to n2) and b's negated arc (for the difference,
@@ -406,21 +417,6 @@ static inline int edge_candidate(const dx_hull *a, unsigned i, const dx_hull *b,
     return 1;
 }
 
-// Whether every edge pair with h's edge k (two faces) is clearly deeper
-// than far, q being a point of the other hull. Where such a pair is a
-// face of the Minkowski difference its normal d lies on k's arc (between
-// its faces' outward normals) and its depth is h's extent along d, d . p
-// for p on the edge, plus the other's along -d, at least -d . q: so at
-// least the least of d . (p - q) over the arc, which (the arc shorter than
-// a half circle) is at one of its ends when both are positive.
-static inline int edge_far(const dx_hull *h, unsigned k, const double q[3], double far)
-{
-    const dxHullEdge *e = &h->edges[k];
-    const double *p = h->wp[e->a];
-    double w[3] = { p[0] - q[0], p[1] - q[1], p[2] - q[2] };
-    return dot3(h->wn[e->f1], w) > far && dot3(h->wn[e->f2], w) > far;
-}
-
 // The edge pairs of sat for hulls whose edges and faces fit 64-bit masks.
 // edge_axis's arc test asks, of a's edge i (faces f1, f2) and b's edge j
 // (faces g1, g2), for the signs of the products of each edge's circle
@@ -433,43 +429,31 @@ static inline int edge_far(const dx_hull *h, unsigned k, const double q[3], doub
 // circle it is above and below. Then the pairs that pass are, for each i,
 // the set bits of S & U & W, visited in edge_axis's order. An edge
 // without a second face meets every edge. Edges whose every pair is
-// clearly deeper than the best face (edge_far) are left out: such a pair
-// can neither part the hulls, nor win, nor lower the clearance.
+// clearly deeper than the best face are left out: such a pair can neither
+// part the hulls, nor win, nor lower the clearance. Where an edge pair is
+// a face of the Minkowski difference its normal d lies on the edge's arc
+// (between its faces' outward normals) and its depth is the hull's extent
+// along d, d . p for p on the edge, plus the other's along -d, at least
+// -d . q for the other's point q: at least the least of d . (p - q) over
+// the arc, which (the arc shorter than a half circle) is at one of its
+// ends when both are positive, each end at least its face's gap (gap_a
+// for a's faces against b's point, gap_b for b's against a's).
 enum { MASK_BITS = 64 };
 
-static int masked_edge_pairs(const dx_hull *a, const dx_hull *b, edge_search *es)
+static int masked_edge_pairs(const dx_hull *a, const dx_hull *b, edge_search *es,
+                             const double *gap_a, const double *gap_b)
 {
-    uint64_t first[MASK_BITS], second[MASK_BITS], lone = 0;   // b's edges by face
-    uint64_t above[MASK_BITS], below[MASK_BITS];              // by a's face: b's edges
-    for (unsigned f = 0; f < b->nplanes; f++) first[f] = second[f] = 0;
-    for (unsigned j = 0; j < b->nedges; j++) {
-        const dxHullEdge *e = &b->edges[j];
-        uint64_t bit = (uint64_t)1 << j;
-        first[e->f1] |= bit;
-        second[e->f2] |= bit;
-        if (e->f1 == e->f2) lone |= bit;
-    }
+    uint64_t above[MASK_BITS], below[MASK_BITS];   // by a's face: b's edges
+    const uint64_t *first = b->by_f1, *second = b->by_f2, lone = b->lone;
     uint64_t all = b->nedges == MASK_BITS ? ~(uint64_t)0 : ((uint64_t)1 << b->nedges) - 1;
     double far = es->face->depth * (1 + 1e-9) + 2 * es->margin;
-    // The point of each hull furthest towards the other's centre (points
-    // of the hulls, for edge_far: tighter there than the centres).
-    double ab[3] = { b->centre[0] - a->centre[0], b->centre[1] - a->centre[1],
-                     b->centre[2] - a->centre[2] };
-    double ba[3] = { -ab[0], -ab[1], -ab[2] };
-    unsigned va, vb;
-    dx_hull_extent(a, ab, &va);
-    dx_hull_extent(b, ba, &vb);
-    const double *qa = a->wp[va], *qb = b->wp[vb];
-    uint64_t near_b = all, near_a = 0, faces = 0;   // a's near edges, and their faces
-    for (unsigned j = 0; j < b->nedges; j++)
-        if (!(lone >> j & 1) && edge_far(b, j, qa, far)) near_b &= ~((uint64_t)1 << j);
-    for (unsigned i = 0; i < a->nedges; i++) {
-        const dxHullEdge *ea = &a->edges[i];
-        if (ea->f1 == ea->f2 || !edge_far(a, i, qb, far)) {
-            near_a |= (uint64_t)1 << i;
-            faces |= (uint64_t)1 << ea->f1 | (uint64_t)1 << ea->f2;
-        }
-    }
+    uint64_t near_a = a->lone, near_b = lone, faces = 0;   // near edges; a's near edges' faces
+    for (unsigned f = 0; f < a->nplanes; f++)
+        if (!(gap_a[f] > far)) near_a |= a->by_f1[f] | a->by_f2[f];
+    for (unsigned f = 0; f < b->nplanes; f++)
+        if (!(gap_b[f] > far)) near_b |= first[f] | second[f];
+    for (unsigned f = 0; f < a->nplanes; f++)
+        if ((a->by_f1[f] | a->by_f2[f]) & near_a) faces |= (uint64_t)1 << f;
     for (; faces; faces &= faces - 1) {
         unsigned f = (unsigned)__builtin_ctzll(faces);
         dot_signs(a->wn[f], b->ex, b->ey, b->ez, b->nedges, &above[f], &below[f]);
@@ -505,11 +489,23 @@ static int masked_edge_pairs(const dx_hull *a, const dx_hull *b, edge_search *es
     return 1;
 }
 
-// 0 if a separating axis parts a and b (into sep); else the face axis and
-// the edge axis of least depth (edge->depth is infinite if no edge pair
-// counts), and the axes' depths into found.
-int dx_hull_sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axes *found,
-                double sep[3])
+// Each hull's point furthest towards the other's centre (qa of a, qb of
+// b): points of the hulls, for the gaps.
+static void facing_points(const dx_hull *a, const dx_hull *b, const double **qa,
+                          const double **qb)
+{
+    double ab[3] = { b->centre[0] - a->centre[0], b->centre[1] - a->centre[1],
+                     b->centre[2] - a->centre[2] };
+    double ba[3] = { -ab[0], -ab[1], -ab[2] };
+    unsigned va, vb;
+    dx_hull_extent(a, ab, &va);
+    dx_hull_extent(b, ba, &vb);
+    *qa = a->wp[va];
+    *qb = b->wp[vb];
+}
+
+int dx_hull_sat(dx_hull *a, dx_hull *b, int hint_side, unsigned hint_face, sat_axis *face,
+                sat_axis *edge, edge_axes *found, double sep[3])
 {
     found->n = found->overflow = 0;
     found->faces_kept = a->nplanes <= KEPT_FACES && b->nplanes <= KEPT_FACES;
@@ -517,40 +513,53 @@ int dx_hull_sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axe
     for (int i = 0; i < 3; i++) scale += fabs(a->c[i]) + fabs(b->c[i]);
     found->margin = 1e-12 * scale;
     face->depth = edge->depth = INFINITY;
-    // A face's depth is at least face_floor: faces clearly deeper than a
-    // first guess (the face of least floor) are skipped.
-    double floors[2][KEPT_FACES], guess = INFINITY, limit = INFINITY;
-    int gside = 0;
+    pose_edges(a);
+    pose_edges(b);
+    // A face's depth is at least its gap: faces clearly deeper than a first
+    // guess (the hinted face, else the face of least gap) are skipped.
+    double gaps[2][MASK_BITS], guess = INFINITY, limit = INFINITY;
+    int gapped = a->nplanes <= MASK_BITS && b->nplanes <= MASK_BITS, gside = -1;
     unsigned gface = 0;
-    if (found->faces_kept) {
-        for (int side = 0; side < 2; side++) {
-            const dx_hull *h = side ? b : a, *o = side ? a : b;
-            for (unsigned f = 0; f < h->nplanes; f++) {
-                floors[side][f] = face_floor(h, f, o->centre);
-                if (floors[side][f] < guess) {
-                    guess = floors[side][f];
-                    gside = side;
-                    gface = f;
+    if (gapped) {
+        const double *qa, *qb;
+        facing_points(a, b, &qa, &qb);
+        face_gaps(a, qb, gaps[0]);
+        face_gaps(b, qa, gaps[1]);
+        if (hint_side >= 0 && hint_face < (hint_side ? b : a)->nplanes) {
+            gside = hint_side;
+            gface = hint_face;
+        } else {
+            gside = 0;
+            for (int side = 0; side < 2; side++) {
+                const dx_hull *h = side ? b : a;
+                for (unsigned f = 0; f < h->nplanes; f++) {
+                    if (gaps[side][f] < guess) {
+                        guess = gaps[side][f];
+                        gside = side;
+                        gface = f;
+                    }
                 }
             }
         }
         double n[3];
         face_axis(a, b, gside, gface, n);
         guess = face_depth(a, b, gside, gface, n);
-        if (guess >= 0) limit = guess * (1 + 1e-9) + 2 * found->margin;
+        if (guess < 0) {
+            memcpy(sep, n, sizeof n);
+            return 0;
+        }
+        limit = guess * (1 + 1e-9) + 2 * found->margin;
     }
     for (int side = 0; side < 2; side++) {
         const dx_hull *h = side ? b : a;
         for (unsigned f = 0; f < h->nplanes; f++) {
-            if (limit < INFINITY && floors[side][f] > limit) {
-                found->face_s[side][f] = INFINITY;
+            if (gapped && gaps[side][f] > limit) {
+                if (found->faces_kept) found->face_s[side][f] = INFINITY;
                 continue;
             }
             double n[3];
             face_axis(a, b, side, f, n);
-            double s = side == gside && f == gface && limit < INFINITY
-                           ? guess
-                           : face_depth(a, b, side, f, n);
+            double s = side == gside && f == gface ? guess : face_depth(a, b, side, f, n);
             if (s < 0) {
                 memcpy(sep, n, sizeof n);
                 return 0;
@@ -564,14 +573,10 @@ int dx_hull_sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axe
             }
         }
     }
-    pose_edges(a);
-    pose_edges(b);
     edge_search es = { edge, found, sep, face, face->depth / DX_HULL_EDGE_PREFERENCE, 0,
                        found->margin };
     update_threshold(&es);
-    if (a->nedges <= MASK_BITS && b->nedges <= MASK_BITS && a->nplanes <= MASK_BITS &&
-        b->nplanes <= MASK_BITS)
-        return masked_edge_pairs(a, b, &es);
+    if (gapped && a->by_f1 && b->by_f1) return masked_edge_pairs(a, b, &es, gaps[0], gaps[1]);
     for (unsigned i = 0; i < a->nedges; i++) {
         for (unsigned j = 0; j < b->nedges; j++) {
             double n[3];
