@@ -12,6 +12,11 @@
 #include <ode/memory.h>
 
 #include <math.h>
+#include <string.h>
+
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 // 1 if the hull data is usable by the colliders; else reports what is
 // wrong (naming the calling function) and returns 0.
@@ -49,21 +54,98 @@ static int convex_valid(const char *fn, const dReal *planes, unsigned planecount
 #undef CONVEX_CHECK
 }
 
+void dxHullPosePointsPlanes(const double R[9], const double c[3], const dReal *pts, unsigned npts,
+                            const dReal *planes, const double *len, unsigned nplanes,
+                            double (*wp)[3], double *const p3[3], double (*wn)[3],
+                            double *const n3[3], double *wd)
+{
+    for (unsigned v = 0; v < npts; v++) {
+        const dReal *p = pts + 3 * v;
+        for (int r = 0; r < 3; r++)
+            p3[r][v] = wp[v][r] = c[r] + R[3 * r] * p[0] + R[3 * r + 1] * p[1] + R[3 * r + 2] * p[2];
+    }
+    for (unsigned f = 0; f < nplanes; f++) {
+        const dReal *p = planes + 4 * f;
+        double l = len ? len[f]
+                       : sqrt((double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2]);
+        for (int r = 0; r < 3; r++)
+            n3[r][f] = wn[f][r] = (R[3 * r] * p[0] + R[3 * r + 1] * p[1] + R[3 * r + 2] * p[2]) / l;
+        wd[f] = p[3] / l + (wn[f][0] * c[0] + wn[f][1] * c[1] + wn[f][2] * c[2]);
+    }
+}
+
+// Whether the n numbers at a and b are the same bits (memcmp's answer,
+// without its call: this runs for every pair a hull meets).
+static int same_bits(const dReal *a, const dReal *b, int n)
+{
+#ifdef dSINGLE
+    uint32_t diff = 0, x, y;
+#else
+    uint64_t diff = 0, x, y;
+#endif
+    for (int i = 0; i < n; i++) {
+        memcpy(&x, a + i, sizeof x);
+        memcpy(&y, b + i, sizeof y);
+        diff |= x ^ y;
+    }
+    return diff == 0;
+}
+
+void dxConvexPose(dxConvex *c)
+{
+    const dxGeom *g = &c->g;
+    dxHullPose *pose = &c->pose;
+    if (pose->valid && same_bits(pose->pos, g->pos, 3) && same_bits(pose->R, g->R, 12)) return;
+    double R[9], pos[3];
+    for (int i = 0; i < 3; i++) {
+        pos[i] = g->pos[i];
+        for (int k = 0; k < 3; k++) R[3 * i + k] = g->R[4 * i + k];
+    }
+    dxHullPosePointsPlanes(R, pos, c->points, c->pointcount, c->planes, c->plane_len,
+                           c->planecount, pose->pts, (double *const[3]){ pose->px, pose->py, pose->pz },
+                           pose->normals, (double *const[3]){ pose->nx, pose->ny, pose->nz },
+                           pose->offsets);
+    double sum[3] = { 0, 0, 0 };
+    for (unsigned v = 0; v < c->pointcount; v++)
+        for (int i = 0; i < 3; i++) sum[i] += pose->pts[v][i];
+    for (int i = 0; i < 3; i++) pose->centre[i] = sum[i] / c->pointcount;
+    memcpy(pose->pos, g->pos, sizeof pose->pos);
+    memcpy(pose->R, g->R, sizeof pose->R);
+    pose->valid = 1;
+    pose->edges_valid = 0;
+}
+
+// The bounding box of the points as posed (the pose is kept for the
+// colliders: a hull that meets others this step is posed once).
 static void convex_aabb(dxGeom *g)
 {
-    const dxConvex *c = (const dxConvex *)g;
+    dxConvex *c = (dxConvex *)g;
+    dxConvexPose(c);
+    const double *p3[3] = { c->pose.px, c->pose.py, c->pose.pz };
+    unsigned n = c->pointcount;
     for (int i = 0; i < 3; i++) {
-        g->aabb[2 * i] = dInfinity;
-        g->aabb[2 * i + 1] = -dInfinity;
-    }
-    for (unsigned v = 0; v < c->pointcount; v++) {
-        const dReal *p = c->points + 3 * v;
-        for (int i = 0; i < 3; i++) {
-            dReal x = g->pos[i] + g->R[4 * i] * p[0] + g->R[4 * i + 1] * p[1] +
-                      g->R[4 * i + 2] * p[2];
-            if (x < g->aabb[2 * i]) g->aabb[2 * i] = x;
-            if (x > g->aabb[2 * i + 1]) g->aabb[2 * i + 1] = x;
+        const double *x = p3[i];
+        double lo = x[0], hi = x[0];
+        unsigned v = 1;
+#ifdef __SSE2__
+        __m128d vlo = _mm_set1_pd(lo), vhi = vlo;
+        for (; v + 2 <= n; v += 2) {
+            __m128d e = _mm_loadu_pd(x + v);
+            vlo = _mm_min_pd(e, vlo);
+            vhi = _mm_max_pd(e, vhi);
         }
+        double l2[2], h2[2];
+        _mm_storeu_pd(l2, vlo);
+        _mm_storeu_pd(h2, vhi);
+        lo = l2[0] < l2[1] ? l2[0] : l2[1];
+        hi = h2[0] > h2[1] ? h2[0] : h2[1];
+#endif
+        for (; v < n; v++) {
+            lo = x[v] < lo ? x[v] : lo;
+            hi = x[v] > hi ? x[v] : hi;
+        }
+        g->aabb[2 * i] = (dReal)lo;
+        g->aabb[2 * i + 1] = (dReal)hi;
     }
 }
 
@@ -116,6 +198,7 @@ static void free_derived(dxConvex *c)
     c->edges = NULL;
     c->poly_start = NULL;
     c->by_f1 = c->by_f2 = NULL;
+    c->plane_len = NULL;
 }
 
 static void convex_destroy(dxGeom *g)
@@ -143,7 +226,7 @@ static void convex_set(dxConvex *c, const dReal *planes, unsigned planecount,
         sides += *poly;
         poly += 1 + *poly;
     }
-    size_t doubles = 6 * (size_t)pointcount + 8 * (size_t)planecount + 3 * sides;
+    size_t doubles = 6 * (size_t)pointcount + 9 * (size_t)planecount + 3 * sides;
     c->derived_size = sizeof(uint64_t) * 2 * (size_t)planecount + sizeof(double) * doubles +
                       sizeof(dxHullPosedEdge) * sides + sizeof(dxHullEdge) * sides +
                       sizeof(unsigned) * planecount;
@@ -164,7 +247,8 @@ static void convex_set(dxConvex *c, const dReal *planes, unsigned planecount,
     pose->ey = pose->ex + sides;
     pose->ez = pose->ey + sides;
     pose->face_low = pose->ez + sides;
-    pose->edges = (dxHullPosedEdge *)(pose->face_low + planecount);
+    c->plane_len = pose->face_low + planecount;
+    pose->edges = (dxHullPosedEdge *)(c->plane_len + planecount);
     pose->valid = pose->edges_valid = 0;
     c->edges = (dxHullEdge *)(pose->edges + sides);
     c->poly_start = (unsigned *)(c->edges + sides);
@@ -174,6 +258,10 @@ static void convex_set(dxConvex *c, const dReal *planes, unsigned planecount,
     for (unsigned f = 0; f < planecount; f++) {
         c->poly_start[f] = at;
         at += 1 + polygons[at];
+    }
+    for (unsigned f = 0; f < planecount; f++) {
+        const dReal *p = planes + 4 * f;
+        c->plane_len[f] = sqrt((double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2]);
     }
     double r2 = 0;
     for (unsigned v = 0; v < pointcount; v++) {

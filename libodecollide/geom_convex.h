@@ -33,15 +33,14 @@ typedef struct dxHullAxisHint {
     unsigned face;
 } dxHullAxisHint;
 
-// The hull posed in the world (by the native colliders,
+// The hull posed in the world (by dxConvexPose and the native colliders,
 // collide_convex_hull.c), kept while the geom's pose stays what it was
 // made for: a hull meets several partners a step and is posed once. The
 // geom's own arrays are assumed unchanged between dGeomSetConvex calls (as
 // the edge list already assumes). An edge's direction u = b - a with u . u,
-// the cross product of its faces' normals n2 x n1, and their sum n1 + n2
-// with its square.
+// and the sum of its faces' normals n1 + n2 with its square.
 typedef struct dxHullPosedEdge {
-    double u[3], n2xn1[3], sum[3], uu, ss;
+    double u[3], sum[3], uu, ss;
 } dxHullPosedEdge;
 
 typedef struct dxHullPose {
@@ -54,7 +53,8 @@ typedef struct dxHullPose {
     dxHullPosedEdge *edges;       // edgecount
     double *face_low;             // per plane: the least n . x over its polygon (with the edges)
     // The same by coordinate, for loops over many at once: the points'
-    // x, y, z, the normals' x, y, z, the edges' n2 x n1 x, y, z.
+    // x, y, z, the normals' x, y, z; and with the edges, each edge's cross
+    // product of its faces' normals n2 x n1 (the normal of its arc's circle).
     double *px, *py, *pz, *nx, *ny, *nz, *ex, *ey, *ez;
     double centre[3];             // the mean of the points: inside the hull
 } dxHullPose;
@@ -74,6 +74,7 @@ typedef struct dxConvex {
     uint64_t *by_f1, *by_f2;
     uint64_t lone;
     double size;                  // the largest distance of a point from the frame's origin
+    double *plane_len;            // per plane: the length of its normal as given
     dxHullAxisHint hints[DX_CONVEX_AXIS_CACHE];
     unsigned next_hint;           // the entry replaced next
     dxHullPose pose;
@@ -82,5 +83,18 @@ typedef struct dxConvex {
 } dxConvex;
 
 extern const dxGeomClassOps dx_convex_ops;
+
+// Points and planes of a hull's local arrays posed by R (row-major) and c
+// (world = R local + c) into wp and by coordinate p3[3], and into unit
+// outward normals wn (p3's way: n3[3]) and offsets wd; len: the planes'
+// normal lengths, or NULL to take them here.
+void dxHullPosePointsPlanes(const double R[9], const double c[3], const dReal *pts, unsigned npts,
+                            const dReal *planes, const double *len, unsigned nplanes,
+                            double (*wp)[3], double *const p3[3], double (*wn)[3],
+                            double *const n3[3], double *wd);
+
+// The convex geom's hull posed in the world for its position and rotation
+// (c->pose), unless it already is (compared bit for bit).
+void dxConvexPose(dxConvex *c);
 
 #endif

@@ -37,8 +37,8 @@ typedef struct dx_hull {
     const double (*wp)[3];    // the points in the world
     const double (*wn)[3];    // the planes in the world: unit outward normals ...
     const double *wd;         // ... and offsets
-    dxHullPosedEdge *we;      // the edges in the world, once *edges_posed ...
-    double *face_low;         // ... and per plane the least n . x over its polygon
+    dxHullPosedEdge *we;      // once *edges_posed: the edges in the world, and per plane
+    double *face_low;         // the least n . x over its polygon
     int *edges_posed;
     // The edges by face as bit sets (dxConvex's by_f1, by_f2, lone; NULL
     // beyond 64 edges or planes).
@@ -46,7 +46,7 @@ typedef struct dx_hull {
     uint64_t lone;
     // The points, normals and edges' n2 x n1 by coordinate (dxHullPose).
     const double *px, *py, *pz, *nx, *ny, *nz;
-    double *ex, *ey, *ez;
+    double *ex, *ey, *ez;     // (with the edges: n2 x n1)
     dxConvex *convex;         // the convex geom (its axis hints), NULL for a box
 } dx_hull;
 

@@ -36,30 +36,6 @@ static void cross3(const double *a, const double *b, double out[3])
     out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-// Points and planes of the local arrays posed by R, c into wp, wn, wd,
-// and by coordinate into p[3] (points) and n[3] (normals).
-static void pose_points_planes(const dx_hull *h, double (*wp)[3], double (*wn)[3], double *wd,
-                               double *const p3[3], double *const n3[3])
-{
-    for (unsigned v = 0; v < h->npts; v++) {
-        const dReal *p = h->pts + 3 * v;
-        for (int r = 0; r < 3; r++)
-            wp[v][r] = h->c[r] + h->R[3 * r] * p[0] + h->R[3 * r + 1] * p[1] +
-                       h->R[3 * r + 2] * p[2];
-    }
-    for (unsigned f = 0; f < h->nplanes; f++) {
-        const dReal *p = h->planes + 4 * f;
-        double l = sqrt((double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2]);
-        for (int r = 0; r < 3; r++)
-            wn[f][r] = (h->R[3 * r] * p[0] + h->R[3 * r + 1] * p[1] + h->R[3 * r + 2] * p[2]) / l;
-        wd[f] = p[3] / l + dot3(wn[f], h->c);
-    }
-    for (int r = 0; r < 3; r++) {
-        for (unsigned v = 0; v < h->npts; v++) p3[r][v] = wp[v][r];
-        for (unsigned f = 0; f < h->nplanes; f++) n3[r][f] = wn[f][r];
-    }
-}
-
 // A box as a hull in bx: corners by bits (x, y, z), faces -x +x -y +y -z +z.
 static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
 {
@@ -107,9 +83,9 @@ static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
     h->convex = NULL;
     const dReal *p = bx->pts;   // every corner is as far from the centre
     h->size = sqrt((double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2]);
-    pose_points_planes(h, bx->wp, bx->wn, bx->wd,
-                       (double *const[3]){ bx->p_soa[0], bx->p_soa[1], bx->p_soa[2] },
-                       (double *const[3]){ bx->n_soa[0], bx->n_soa[1], bx->n_soa[2] });
+    dxHullPosePointsPlanes(h->R, h->c, bx->pts, 8, bx->planes, NULL, 6, bx->wp,
+                           (double *const[3]){ bx->p_soa[0], bx->p_soa[1], bx->p_soa[2] }, bx->wn,
+                           (double *const[3]){ bx->n_soa[0], bx->n_soa[1], bx->n_soa[2] }, bx->wd);
     h->px = bx->p_soa[0];
     h->py = bx->p_soa[1];
     h->pz = bx->p_soa[2];
@@ -126,6 +102,7 @@ static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
     h->we = bx->we;
     h->face_low = bx->face_low;
     bx->edges_posed = 0;
+
     h->edges_posed = &bx->edges_posed;
 }
 
@@ -145,20 +122,7 @@ static void convex_hull(dx_hull *h, const dxGeom *g)
     h->convex = c;
     h->size = c->size;
     dxHullPose *pose = &c->pose;
-    if (!pose->valid || memcmp(pose->pos, g->pos, sizeof pose->pos) != 0 ||
-        memcmp(pose->R, g->R, sizeof pose->R) != 0) {
-        pose_points_planes(h, pose->pts, pose->normals, pose->offsets,
-                           (double *const[3]){ pose->px, pose->py, pose->pz },
-                           (double *const[3]){ pose->nx, pose->ny, pose->nz });
-        double sum[3] = { 0, 0, 0 };
-        for (unsigned v = 0; v < h->npts; v++)
-            for (int i = 0; i < 3; i++) sum[i] += pose->pts[v][i];
-        for (int i = 0; i < 3; i++) pose->centre[i] = sum[i] / h->npts;
-        memcpy(pose->pos, g->pos, sizeof pose->pos);
-        memcpy(pose->R, g->R, sizeof pose->R);
-        pose->valid = 1;
-        pose->edges_valid = 0;
-    }
+    dxConvexPose(c);
     memcpy(h->centre, pose->centre, sizeof h->centre);
     h->wp = (const double (*)[3])pose->pts;
     h->wn = (const double (*)[3])pose->normals;

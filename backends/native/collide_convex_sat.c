@@ -21,6 +21,11 @@
 #ifdef __SSE2__
 #include <emmintrin.h>
 #endif
+// dot_signs four at a time where the machine has AVX2 (chosen when called).
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__SSE2__)
+#define DX_SIGNS_AVX2 1
+#include <immintrin.h>
+#endif
 
 static double dot3(const double *a, const double *b)
 {
@@ -114,23 +119,25 @@ void dx_hull_interval(const dx_hull *h, const double m[3], double *lo, double *h
     dot_range(m, h->px, h->py, h->pz, h->npts, lo, hi);
 }
 
-// Poses the edges of h and its faces' least points (once per pose).
+// Poses h's edges (with their circles' normals n2 x n1 by coordinate) and
+// its faces' least points (once per pose).
 static void pose_edges(dx_hull *h)
 {
     if (*h->edges_posed) return;
     for (unsigned k = 0; k < h->nedges; k++) {
         const dxHullEdge *e = &h->edges[k];
         dxHullPosedEdge *out = &h->we[k];
+        double c[3];
         for (int i = 0; i < 3; i++) {
             out->u[i] = h->wp[e->b][i] - h->wp[e->a][i];
             out->sum[i] = h->wn[e->f1][i] + h->wn[e->f2][i];
         }
         out->uu = dot3(out->u, out->u);
         out->ss = dot3(out->sum, out->sum);
-        cross3(h->wn[e->f2], h->wn[e->f1], out->n2xn1);
-        h->ex[k] = out->n2xn1[0];
-        h->ey[k] = out->n2xn1[1];
-        h->ez[k] = out->n2xn1[2];
+        cross3(h->wn[e->f2], h->wn[e->f1], c);
+        h->ex[k] = c[0];
+        h->ey[k] = c[1];
+        h->ez[k] = c[2];
     }
     for (unsigned f = 0; f < h->nplanes; f++) {
         unsigned count;
@@ -145,13 +152,22 @@ static void pose_edges(dx_hull *h)
     *h->edges_posed = 1;
 }
 
-// The signs of c . (x[k], y[k], z[k]) for k < n (made as dot3 makes them):
-// bit k of *pos where above 0, of *neg where below.
-static inline void dot_signs(const double c[3], const double *x, const double *y,
-                             const double *z, unsigned n, uint64_t *pos, uint64_t *neg)
+// The normal of h's edge k's circle (n2 x n1), as pose_edges made it.
+static void edge_circle(const dx_hull *h, unsigned k, double c[3])
 {
-    uint64_t p = 0, q = 0;
-    unsigned k = 0;
+    c[0] = h->ex[k];
+    c[1] = h->ey[k];
+    c[2] = h->ez[k];
+}
+
+// The signs of c . (x[k], y[k], z[k]) for k >= k0, k < n, made as dot3
+// makes them, added to *pos (bit k where above 0) and *neg (below).
+static inline void dot_signs_from(const double c[3], const double *x, const double *y,
+                                  const double *z, unsigned k0, unsigned n, uint64_t *pos,
+                                  uint64_t *neg)
+{
+    uint64_t p = *pos, q = *neg;
+    unsigned k = k0;
 #ifdef __SSE2__
     __m128d c0 = _mm_set1_pd(c[0]), c1 = _mm_set1_pd(c[1]), c2 = _mm_set1_pd(c[2]);
     __m128d zero = _mm_setzero_pd();
@@ -170,6 +186,49 @@ static inline void dot_signs(const double c[3], const double *x, const double *y
     }
     *pos = p;
     *neg = q;
+}
+
+#ifdef DX_SIGNS_AVX2
+// dot_signs' first products four at a time (the same products and sums,
+// no fused multiply-add: the same numbers); returns how many it made.
+__attribute__((target("avx2"))) static inline unsigned dot_signs4(const double c[3], const double *x,
+                                                          const double *y, const double *z,
+                                                          unsigned n, uint64_t *pos,
+                                                          uint64_t *neg)
+{
+    uint64_t p = 0, q = 0;
+    unsigned k = 0;
+    __m256d c0 = _mm256_set1_pd(c[0]), c1 = _mm256_set1_pd(c[1]), c2 = _mm256_set1_pd(c[2]);
+    __m256d zero = _mm256_setzero_pd();
+    for (; k + 4 <= n; k += 4) {
+        __m256d d = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(c0, _mm256_loadu_pd(x + k)),
+                                                _mm256_mul_pd(c1, _mm256_loadu_pd(y + k))),
+                                  _mm256_mul_pd(c2, _mm256_loadu_pd(z + k)));
+        p |= (uint64_t)_mm256_movemask_pd(_mm256_cmp_pd(d, zero, _CMP_GT_OQ)) << k;
+        q |= (uint64_t)_mm256_movemask_pd(_mm256_cmp_pd(d, zero, _CMP_LT_OQ)) << k;
+    }
+    *pos = p;
+    *neg = q;
+    return k;
+}
+#endif
+
+// The signs of c . (x[k], y[k], z[k]) for k < n (made as dot3 makes them):
+// bit k of *pos where above 0, of *neg where below; with AVX2 (avx2 is
+// then 1, in a function built for it) four at a time.
+static inline __attribute__((always_inline)) void dot_signs(const double c[3], const double *x,
+                                                             const double *y, const double *z,
+                                                             unsigned n, uint64_t *pos,
+                                                             uint64_t *neg, int avx2)
+{
+    unsigned k = 0;
+    *pos = *neg = 0;
+#ifdef DX_SIGNS_AVX2
+    if (avx2) k = dot_signs4(c, x, y, z, n, pos, neg);
+#else
+    (void)avx2;
+#endif
+    dot_signs_from(c, x, y, z, k, n, pos, neg);
 }
 
 // The translation of a along the unit n that parts it from b.
@@ -255,12 +314,14 @@ static int unit_cross(const dxHullPosedEdge *xa, const dxHullPosedEdge *xb, doub
 static int edge_axis(const dx_hull *a, unsigned i, const dx_hull *b, unsigned j, double m[3])
 {
     const dxHullEdge *ea = &a->edges[i], *eb = &b->edges[j];
-    const dxHullPosedEdge *xa = &a->we[i], *xb = &b->we[j];
+    double ca[3], cb[3];
+    edge_circle(a, i, ca);
+    edge_circle(b, j, cb);
     if (ea->f1 != ea->f2 && eb->f1 != eb->f2 &&
-        !arcs_cross(-dot3(b->wn[eb->f1], xa->n2xn1), -dot3(b->wn[eb->f2], xa->n2xn1),
-                    dot3(a->wn[ea->f1], xb->n2xn1), dot3(a->wn[ea->f2], xb->n2xn1)))
+        !arcs_cross(-dot3(b->wn[eb->f1], ca), -dot3(b->wn[eb->f2], ca),
+                    dot3(a->wn[ea->f1], cb), dot3(a->wn[ea->f2], cb)))
         return 0;
-    return unit_cross(xa, xb, m);
+    return unit_cross(&a->we[i], &b->we[j], m);
 }
 
 // The depths of a along +m (s[0]) and -m (s[1]) against b, from one pass
@@ -440,8 +501,9 @@ static inline int edge_candidate(const dx_hull *a, unsigned i, const dx_hull *b,
 // for a's faces against b's point, gap_b for b's against a's).
 enum { MASK_BITS = 64 };
 
-static int masked_edge_pairs(const dx_hull *a, const dx_hull *b, edge_search *es,
-                             const double *gap_a, const double *gap_b)
+static inline __attribute__((always_inline)) int
+masked_edge_pairs_with(const dx_hull *a, const dx_hull *b, edge_search *es, const double *gap_a,
+                       const double *gap_b, int avx2)
 {
     uint64_t above[MASK_BITS], below[MASK_BITS];   // by a's face: b's edges
     const uint64_t *first = b->by_f1, *second = b->by_f2, lone = b->lone;
@@ -456,7 +518,7 @@ static int masked_edge_pairs(const dx_hull *a, const dx_hull *b, edge_search *es
         if ((a->by_f1[f] | a->by_f2[f]) & near_a) faces |= (uint64_t)1 << f;
     for (; faces; faces &= faces - 1) {
         unsigned f = (unsigned)__builtin_ctzll(faces);
-        dot_signs(a->wn[f], b->ex, b->ey, b->ez, b->nedges, &above[f], &below[f]);
+        dot_signs(a->wn[f], b->ex, b->ey, b->ez, b->nedges, &above[f], &below[f], avx2);
     }
     for (unsigned i = 0; i < a->nedges; i++) {
         const dxHullEdge *ea = &a->edges[i];
@@ -465,7 +527,9 @@ static int masked_edge_pairs(const dx_hull *a, const dx_hull *b, edge_search *es
             cand = lone;
         } else if (ea->f1 != ea->f2) {
             uint64_t first_pos = 0, first_neg = 0, second_pos = 0, second_neg = 0, pos, neg;
-            dot_signs(a->we[i].n2xn1, b->nx, b->ny, b->nz, b->nplanes, &pos, &neg);
+            double circle[3];
+            edge_circle(a, i, circle);
+            dot_signs(circle, b->nx, b->ny, b->nz, b->nplanes, &pos, &neg, avx2);
             for (; pos; pos &= pos - 1) {
                 unsigned f = (unsigned)__builtin_ctzll(pos);
                 first_pos |= first[f];
@@ -487,6 +551,26 @@ static int masked_edge_pairs(const dx_hull *a, const dx_hull *b, edge_search *es
         }
     }
     return 1;
+}
+
+#ifdef DX_SIGNS_AVX2
+__attribute__((target("avx2"))) static int masked_edge_pairs_avx2(const dx_hull *a,
+                                                                  const dx_hull *b,
+                                                                  edge_search *es,
+                                                                  const double *gap_a,
+                                                                  const double *gap_b)
+{
+    return masked_edge_pairs_with(a, b, es, gap_a, gap_b, 1);
+}
+#endif
+
+static int masked_edge_pairs(const dx_hull *a, const dx_hull *b, edge_search *es,
+                             const double *gap_a, const double *gap_b)
+{
+#ifdef DX_SIGNS_AVX2
+    if (__builtin_cpu_supports("avx2")) return masked_edge_pairs_avx2(a, b, es, gap_a, gap_b);
+#endif
+    return masked_edge_pairs_with(a, b, es, gap_a, gap_b, 0);
 }
 
 // Each hull's point furthest towards the other's centre (qa of a, qb of
