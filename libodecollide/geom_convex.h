@@ -28,9 +28,9 @@ enum { DX_CONVEX_AXIS_CACHE = 8 };
 typedef struct dxHullAxisHint {
     const void *other;
     double axis[3];               // in this hull's frame, if !touching
-    int touching;                 // else: the face of this hull (side 0) or the other's
-    int side;
-    unsigned face;
+    int touching;                 // else: the face of this hull (side 0) or the other's,
+    int side;                     // and a point of each that bounded the other axes
+    unsigned face, own_point, other_point;
 } dxHullAxisHint;
 
 // The hull posed in the world (by dxConvexPose and the native colliders,

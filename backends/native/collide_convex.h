@@ -124,13 +124,22 @@ typedef struct edge_axes {
     int n, overflow;
 } edge_axes;
 
+// What a touching pair's last test leaves for its next (only ever a
+// first guess: any face and any points give the same result): the face
+// that gave the contact axis, of a (side 0) or b (1), and the points qa of
+// a and qb of b that bounded the other axes (each hull's point furthest
+// towards the other's centre, when they were found). side -1: none.
+typedef struct sat_hint {
+    int side;
+    unsigned face, qa, qb;
+} sat_hint;
+
 // 0 if a separating axis parts a and b (into sep); else the face axis and
 // the edge axis of least depth (edge->depth is infinite if no edge pair
-// counts), and what the clearance needs into found. The face hint_face of
-// a (hint_side 0) or b (1) is tried first (it bounds the others; any face
-// does, the winner best); hint_side -1 for none.
-int dx_hull_sat(dx_hull *a, dx_hull *b, int hint_side, unsigned hint_face, sat_axis *face,
-                sat_axis *edge, edge_axes *found, double sep[3]);
+// counts), and what the clearance needs into found. hint's face and
+// points are tried first, and hint's points are set to those used.
+int dx_hull_sat(dx_hull *a, dx_hull *b, sat_hint *hint, sat_axis *face, sat_axis *edge,
+                edge_axes *found, double sep[3]);
 // The exact translation of a along the unit n (the best face axis, of depth
 // s_n) that parts it from b, from what dx_hull_sat kept in found.
 double dx_hull_clearance(const dx_hull *a, const dx_hull *b, const double n[3], double s_n,

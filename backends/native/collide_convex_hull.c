@@ -495,13 +495,17 @@ static void keep_axis(dx_hull *h, const void *other, const double n[3])
         e->axis[k] = h->R[k] * n[0] + h->R[3 + k] * n[1] + h->R[6 + k] * n[2];
 }
 
-// Keeps the contact's face (side 0: h's own) as h's hint against other.
-static void keep_face(dx_hull *h, const void *other, int side, unsigned face)
+// Keeps the contact's face and the bounding points (side 0, own_point:
+// h's own) as h's hint against other.
+static void keep_face(dx_hull *h, const void *other, int side, unsigned face,
+                      unsigned own_point, unsigned other_point)
 {
     dxHullAxisHint *e = hint_entry(h, other);
     e->touching = 1;
     e->side = side;
     e->face = face;
+    e->own_point = own_point;
+    e->other_point = other_point;
 }
 
 int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
@@ -511,13 +515,14 @@ int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
     // face that gave their contact (sides as the holder sees them).
     dx_hull *holder = a->convex ? a : b->convex ? b : NULL;
     const void *other = holder == a ? (const void *)o2 : (const void *)o1;
-    int hint_side = -1;
-    unsigned hint_face = 0;
+    sat_hint hint = { -1, 0, 0, 0 };
     if (holder) {
         const dxHullAxisHint *e = find_hint(holder, other);
         if (e && e->touching) {
-            hint_side = holder == a ? e->side : 1 - e->side;
-            hint_face = e->face;
+            hint.side = holder == a ? e->side : 1 - e->side;
+            hint.face = e->face;
+            hint.qa = holder == a ? e->own_point : e->other_point;
+            hint.qb = holder == a ? e->other_point : e->own_point;
         } else if (e) {
             double n[3];
             for (int r = 0; r < 3; r++)
@@ -529,11 +534,15 @@ int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
     sat_axis face, edge;
     edge_axes found;
     double sep[3];
-    if (!dx_hull_sat(a, b, hint_side, hint_face, &face, &edge, &found, sep)) {
+    if (!dx_hull_sat(a, b, &hint, &face, &edge, &found, sep)) {
         if (holder) keep_axis(holder, other, sep);
         return 0;
     }
-    if (holder) keep_face(holder, other, holder == a ? face.ref : 1 - face.ref, face.face);
+    if (holder) {
+        int own = holder == a;
+        keep_face(holder, other, own ? face.ref : 1 - face.ref, face.face, own ? hint.qa : hint.qb,
+                  own ? hint.qb : hint.qa);
+    }
     int max = dx_max_contacts(flags);
     if (edge.depth * DX_HULL_EDGE_PREFERENCE < face.depth) {
         double pos[3];

@@ -553,43 +553,26 @@ masked_edge_pairs_with(const dx_hull *a, const dx_hull *b, edge_search *es, cons
     return 1;
 }
 
-#ifdef DX_SIGNS_AVX2
-__attribute__((target("avx2"))) static int masked_edge_pairs_avx2(const dx_hull *a,
-                                                                  const dx_hull *b,
-                                                                  edge_search *es,
-                                                                  const double *gap_a,
-                                                                  const double *gap_b)
+// Points of each hull (qa of a, qb of b), for the gaps: the hint's, else
+// each hull's point furthest towards the other's centre (into the hint).
+static void facing_points(const dx_hull *a, const dx_hull *b, sat_hint *hint,
+                          const double **qa, const double **qb)
 {
-    return masked_edge_pairs_with(a, b, es, gap_a, gap_b, 1);
-}
-#endif
-
-static int masked_edge_pairs(const dx_hull *a, const dx_hull *b, edge_search *es,
-                             const double *gap_a, const double *gap_b)
-{
-#ifdef DX_SIGNS_AVX2
-    if (__builtin_cpu_supports("avx2")) return masked_edge_pairs_avx2(a, b, es, gap_a, gap_b);
-#endif
-    return masked_edge_pairs_with(a, b, es, gap_a, gap_b, 0);
+    if (hint->side < 0 || hint->qa >= a->npts || hint->qb >= b->npts) {
+        double ab[3] = { b->centre[0] - a->centre[0], b->centre[1] - a->centre[1],
+                         b->centre[2] - a->centre[2] };
+        double ba[3] = { -ab[0], -ab[1], -ab[2] };
+        dx_hull_extent(a, ab, &hint->qa);
+        dx_hull_extent(b, ba, &hint->qb);
+    }
+    *qa = a->wp[hint->qa];
+    *qb = b->wp[hint->qb];
 }
 
-// Each hull's point furthest towards the other's centre (qa of a, qb of
-// b): points of the hulls, for the gaps.
-static void facing_points(const dx_hull *a, const dx_hull *b, const double **qa,
-                          const double **qb)
-{
-    double ab[3] = { b->centre[0] - a->centre[0], b->centre[1] - a->centre[1],
-                     b->centre[2] - a->centre[2] };
-    double ba[3] = { -ab[0], -ab[1], -ab[2] };
-    unsigned va, vb;
-    dx_hull_extent(a, ab, &va);
-    dx_hull_extent(b, ba, &vb);
-    *qa = a->wp[va];
-    *qb = b->wp[vb];
-}
-
-int dx_hull_sat(dx_hull *a, dx_hull *b, int hint_side, unsigned hint_face, sat_axis *face,
-                sat_axis *edge, edge_axes *found, double sep[3])
+// dx_hull_sat, built once for AVX2 (avx2 1) and once for any machine.
+static inline __attribute__((always_inline)) int
+sat_with(dx_hull *a, dx_hull *b, sat_hint *hint, sat_axis *face, sat_axis *edge,
+         edge_axes *found, double sep[3], int avx2)
 {
     found->n = found->overflow = 0;
     found->faces_kept = a->nplanes <= KEPT_FACES && b->nplanes <= KEPT_FACES;
@@ -606,12 +589,12 @@ int dx_hull_sat(dx_hull *a, dx_hull *b, int hint_side, unsigned hint_face, sat_a
     unsigned gface = 0;
     if (gapped) {
         const double *qa, *qb;
-        facing_points(a, b, &qa, &qb);
+        facing_points(a, b, hint, &qa, &qb);
         face_gaps(a, qb, gaps[0]);
         face_gaps(b, qa, gaps[1]);
-        if (hint_side >= 0 && hint_face < (hint_side ? b : a)->nplanes) {
-            gside = hint_side;
-            gface = hint_face;
+        if (hint->side >= 0 && hint->face < (hint->side ? b : a)->nplanes) {
+            gside = hint->side;
+            gface = hint->face;
         } else {
             gside = 0;
             for (int side = 0; side < 2; side++) {
@@ -660,7 +643,8 @@ int dx_hull_sat(dx_hull *a, dx_hull *b, int hint_side, unsigned hint_face, sat_a
     edge_search es = { edge, found, sep, face, face->depth / DX_HULL_EDGE_PREFERENCE, 0,
                        found->margin };
     update_threshold(&es);
-    if (gapped && a->by_f1 && b->by_f1) return masked_edge_pairs(a, b, &es, gaps[0], gaps[1]);
+    if (gapped && a->by_f1 && b->by_f1)
+        return masked_edge_pairs_with(a, b, &es, gaps[0], gaps[1], avx2);
     for (unsigned i = 0; i < a->nedges; i++) {
         for (unsigned j = 0; j < b->nedges; j++) {
             double n[3];
@@ -668,6 +652,24 @@ int dx_hull_sat(dx_hull *a, dx_hull *b, int hint_side, unsigned hint_face, sat_a
         }
     }
     return 1;
+}
+
+#ifdef DX_SIGNS_AVX2
+__attribute__((target("avx2"))) static int sat_avx2(dx_hull *a, dx_hull *b, sat_hint *hint,
+                                                    sat_axis *face, sat_axis *edge,
+                                                    edge_axes *found, double sep[3])
+{
+    return sat_with(a, b, hint, face, edge, found, sep, 1);
+}
+#endif
+
+int dx_hull_sat(dx_hull *a, dx_hull *b, sat_hint *hint, sat_axis *face, sat_axis *edge,
+                edge_axes *found, double sep[3])
+{
+#ifdef DX_SIGNS_AVX2
+    if (__builtin_cpu_supports("avx2")) return sat_avx2(a, b, hint, face, edge, found, sep);
+#endif
+    return sat_with(a, b, hint, face, edge, found, sep, 0);
 }
 
 // What the edge pair axis m (either sign; s its depths along +m and -m)
