@@ -96,19 +96,19 @@ void dxConvexPose(dxConvex *c)
     const dxGeom *g = &c->g;
     dxHullPose *pose = &c->pose;
     if (pose->valid && same_bits(pose->pos, g->pos, 3) && same_bits(pose->R, g->R, 12)) return;
-    double R[9], pos[3];
+    dx_hull *h = &c->hull;
     for (int i = 0; i < 3; i++) {
-        pos[i] = g->pos[i];
-        for (int k = 0; k < 3; k++) R[3 * i + k] = g->R[4 * i + k];
+        h->c[i] = g->pos[i];
+        for (int k = 0; k < 3; k++) h->R[3 * i + k] = g->R[4 * i + k];
     }
-    dxHullPosePointsPlanes(R, pos, c->points, c->pointcount, c->planes, c->plane_len,
+    dxHullPosePointsPlanes(h->R, h->c, c->points, c->pointcount, c->planes, c->plane_len,
                            c->planecount, pose->pts, (double *const[3]){ pose->px, pose->py, pose->pz },
                            pose->normals, (double *const[3]){ pose->nx, pose->ny, pose->nz },
                            pose->offsets);
     double sum[3] = { 0, 0, 0 };
     for (unsigned v = 0; v < c->pointcount; v++)
         for (int i = 0; i < 3; i++) sum[i] += pose->pts[v][i];
-    for (int i = 0; i < 3; i++) pose->centre[i] = sum[i] / c->pointcount;
+    for (int i = 0; i < 3; i++) h->centre[i] = pose->centre[i] = sum[i] / c->pointcount;
     memcpy(pose->pos, g->pos, sizeof pose->pos);
     memcpy(pose->R, g->R, sizeof pose->R);
     pose->valid = 1;
@@ -191,6 +191,40 @@ static void convex_edge_sets(dxConvex *c, uint64_t *masks)
     }
 }
 
+// The parts of c->hull that stay from one pose to the next.
+static void convex_view(dxConvex *c)
+{
+    dx_hull *h = &c->hull;
+    dxHullPose *pose = &c->pose;
+    h->pts = c->points;
+    h->planes = c->planes;
+    h->polys = c->polygons;
+    h->poly_start = c->poly_start;
+    h->edges = c->edges;
+    h->npts = c->pointcount;
+    h->nplanes = c->planecount;
+    h->nedges = c->edgecount;
+    h->wp = (const double (*)[3])pose->pts;
+    h->wn = (const double (*)[3])pose->normals;
+    h->wd = pose->offsets;
+    h->we = pose->edges;
+    h->face_low = pose->face_low;
+    h->edges_posed = &pose->edges_valid;
+    h->by_f1 = c->by_f1;
+    h->by_f2 = c->by_f2;
+    h->lone = c->lone;
+    h->px = pose->px;
+    h->py = pose->py;
+    h->pz = pose->pz;
+    h->nx = pose->nx;
+    h->ny = pose->ny;
+    h->nz = pose->nz;
+    h->ex = pose->ex;
+    h->ey = pose->ey;
+    h->ez = pose->ez;
+    h->convex = c;
+}
+
 static void free_derived(dxConvex *c)
 {
     if (c->derived) dFree(c->derived, c->derived_size);
@@ -263,13 +297,14 @@ static void convex_set(dxConvex *c, const dReal *planes, unsigned planecount,
         const dReal *p = planes + 4 * f;
         c->plane_len[f] = sqrt((double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2]);
     }
+    convex_view(c);
     double r2 = 0;
     for (unsigned v = 0; v < pointcount; v++) {
         const dReal *p = points + 3 * v;
         double d2 = (double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2];
         if (d2 > r2) r2 = d2;
     }
-    c->size = sqrt(r2);
+    c->size = c->hull.size = sqrt(r2);
 }
 
 dGeomID dCreateConvex(dSpaceID space, const dReal *planes, unsigned int planecount,

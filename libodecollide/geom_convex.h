@@ -59,6 +59,38 @@ typedef struct dxHullPose {
     double centre[3];             // the mean of the points: inside the hull
 } dxHullPose;
 
+// A hull as the native colliders see it (backends/native/collide_convex*.c):
+// the geom's arrays, its pose, and the same posed in the world (points,
+// face planes, and the edges once the pair test needs them): a convex
+// geom's is kept on the geom while its pose stays (dxConvexPose), a box's
+// is made by the collider.
+typedef struct dx_hull {
+    const dReal *pts;         // npts x (x, y, z), local
+    const dReal *planes;      // nplanes x (a, b, c, d), local, outward
+    const unsigned *polys;    // per plane: count, indices
+    const unsigned *poly_start;   // per plane: where its polygon starts in polys
+    const dxHullEdge *edges;  // each edge once, with its two faces
+    unsigned npts, nplanes, nedges;
+    double R[9];              // world = R local + c (row-major)
+    double c[3];
+    double size;              // the largest distance of a point from the origin of the frame
+    double centre[3];         // a point inside, in the world
+    const double (*wp)[3];    // the points in the world
+    const double (*wn)[3];    // the planes in the world: unit outward normals ...
+    const double *wd;         // ... and offsets
+    dxHullPosedEdge *we;      // once *edges_posed: the edges in the world, and per plane
+    double *face_low;         // the least n . x over its polygon
+    int *edges_posed;
+    // The edges by face as bit sets (dxConvex's by_f1, by_f2, lone; NULL
+    // beyond 64 edges or planes).
+    const uint64_t *by_f1, *by_f2;
+    uint64_t lone;
+    // The points, normals and edges' n2 x n1 by coordinate (dxHullPose).
+    const double *px, *py, *pz, *nx, *ny, *nz;
+    double *ex, *ey, *ez;     // (with the edges: n2 x n1)
+    struct dxConvex *convex;  // the convex geom (its axis hints), NULL for a box
+} dx_hull;
+
 typedef struct dxConvex {
     dxGeom g;
     const dReal *planes;          // planecount x (a, b, c, d): a x + b y + c z = d, outward
@@ -78,6 +110,7 @@ typedef struct dxConvex {
     dxHullAxisHint hints[DX_CONVEX_AXIS_CACHE];
     unsigned next_hint;           // the entry replaced next
     dxHullPose pose;
+    dx_hull hull;                 // the pose as the native colliders see it
     void *derived;                // one block: edges, poly_start, the pose's arrays
     size_t derived_size;
 } dxConvex;
@@ -94,7 +127,7 @@ void dxHullPosePointsPlanes(const double R[9], const double c[3], const dReal *p
                             double *const n3[3], double *wd);
 
 // The convex geom's hull posed in the world for its position and rotation
-// (c->pose), unless it already is (compared bit for bit).
+// (c->pose, c->hull), unless it already is (compared bit for bit).
 void dxConvexPose(dxConvex *c);
 
 #endif

@@ -19,37 +19,6 @@
 #define DX_HULL_EPS 1e-9
 #endif
 
-// A hull: the geom's arrays, its pose, and the same posed in the world
-// (points, face planes, and the edges once the pair test needs them):
-// a convex geom's pose is kept on the geom between calls (dxHullPose), a
-// box's is made in the caller's dx_hull_box.
-typedef struct dx_hull {
-    const dReal *pts;         // npts x (x, y, z), local
-    const dReal *planes;      // nplanes x (a, b, c, d), local, outward
-    const unsigned *polys;    // per plane: count, indices
-    const unsigned *poly_start;   // per plane: where its polygon starts in polys
-    const dxHullEdge *edges;  // each edge once, with its two faces
-    unsigned npts, nplanes, nedges;
-    double R[9];              // world = R local + c (row-major)
-    double c[3];
-    double size;              // the largest distance of a point from the origin of the frame
-    double centre[3];         // a point inside, in the world
-    const double (*wp)[3];    // the points in the world
-    const double (*wn)[3];    // the planes in the world: unit outward normals ...
-    const double *wd;         // ... and offsets
-    dxHullPosedEdge *we;      // once *edges_posed: the edges in the world, and per plane
-    double *face_low;         // the least n . x over its polygon
-    int *edges_posed;
-    // The edges by face as bit sets (dxConvex's by_f1, by_f2, lone; NULL
-    // beyond 64 edges or planes).
-    const uint64_t *by_f1, *by_f2;
-    uint64_t lone;
-    // The points, normals and edges' n2 x n1 by coordinate (dxHullPose).
-    const double *px, *py, *pz, *nx, *ny, *nz;
-    double *ex, *ey, *ez;     // (with the edges: n2 x n1)
-    dxConvex *convex;         // the convex geom (its axis hints), NULL for a box
-} dx_hull;
-
 // The storage of a box made into a hull (dx_hull_of_geom's box case).
 typedef struct dx_hull_box {
     dReal pts[24], planes[24];
@@ -64,6 +33,9 @@ typedef struct dx_hull_box {
 
 // The hull of a convex geom or (into the storage bx) of a box geom, posed.
 void dx_hull_of_geom(dx_hull *h, const dxGeom *g, dx_hull_box *bx);
+// The same without a copy: a convex geom's kept hull, or h made from the
+// box geom g (into bx).
+dx_hull *dx_hull_posed(const dxGeom *g, dx_hull *h, dx_hull_box *bx);
 
 // Point i in world coordinates.
 static inline void dx_hull_vertex(const dx_hull *h, unsigned i, double out[3])

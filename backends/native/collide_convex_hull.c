@@ -106,54 +106,25 @@ static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
     h->edges_posed = &bx->edges_posed;
 }
 
-// A convex geom as a hull, posed from the geom's kept pose if the geom has
-// not moved since it was made.
-static void convex_hull(dx_hull *h, const dxGeom *g)
-{
-    dxConvex *c = (dxConvex *)g;
-    h->pts = c->points;
-    h->planes = c->planes;
-    h->polys = c->polygons;
-    h->poly_start = c->poly_start;
-    h->npts = c->pointcount;
-    h->nplanes = c->planecount;
-    h->edges = c->edges;
-    h->nedges = c->edgecount;
-    h->convex = c;
-    h->size = c->size;
-    dxHullPose *pose = &c->pose;
-    dxConvexPose(c);
-    memcpy(h->centre, pose->centre, sizeof h->centre);
-    h->wp = (const double (*)[3])pose->pts;
-    h->wn = (const double (*)[3])pose->normals;
-    h->wd = pose->offsets;
-    h->we = pose->edges;
-    h->face_low = pose->face_low;
-    h->edges_posed = &pose->edges_valid;
-    h->by_f1 = c->by_f1;
-    h->by_f2 = c->by_f2;
-    h->lone = c->lone;
-    h->px = pose->px;
-    h->py = pose->py;
-    h->pz = pose->pz;
-    h->nx = pose->nx;
-    h->ny = pose->ny;
-    h->nz = pose->nz;
-    h->ex = pose->ex;
-    h->ey = pose->ey;
-    h->ez = pose->ez;
-}
-
 void dx_hull_of_geom(dx_hull *h, const dxGeom *g, dx_hull_box *bx)
 {
+    const dx_hull *kept = dx_hull_posed(g, h, bx);
+    if (kept != h) *h = *kept;
+}
+
+dx_hull *dx_hull_posed(const dxGeom *g, dx_hull *h, dx_hull_box *bx)
+{
+    if (g->ops->cls == dConvexClass) {
+        dxConvex *c = (dxConvex *)g;   // its kept pose changes, the geom does not
+        dxConvexPose(c);
+        return &c->hull;
+    }
     for (int i = 0; i < 3; i++) {
         h->c[i] = g->pos[i];
         for (int k = 0; k < 3; k++) h->R[3 * i + k] = g->R[4 * i + k];
     }
-    if (g->ops->cls == dConvexClass)
-        convex_hull(h, g);
-    else
-        box_hull(h, (const dxBox *)g, bx);
+    box_hull(h, (const dxBox *)g, bx);
+    return h;
 }
 
 // Narrows [t0, t1] to where the line o + t d is inside one plane, given
