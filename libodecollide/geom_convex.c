@@ -209,6 +209,7 @@ static void convex_view(dxConvex *c)
     h->wd = pose->offsets;
     h->we = pose->edges;
     h->face_low = pose->face_low;
+    h->plane_dev = c->plane_dev;
     h->edges_posed = &pose->edges_valid;
     h->by_f1 = c->by_f1;
     h->by_f2 = c->by_f2;
@@ -232,7 +233,7 @@ static void free_derived(dxConvex *c)
     c->edges = NULL;
     c->poly_start = NULL;
     c->by_f1 = c->by_f2 = NULL;
-    c->plane_len = NULL;
+    c->plane_len = c->plane_dev = NULL;
 }
 
 static void convex_destroy(dxGeom *g)
@@ -260,7 +261,7 @@ static void convex_set(dxConvex *c, const dReal *planes, unsigned planecount,
         sides += *poly;
         poly += 1 + *poly;
     }
-    size_t doubles = 6 * (size_t)pointcount + 9 * (size_t)planecount + 3 * sides;
+    size_t doubles = 6 * (size_t)pointcount + 10 * (size_t)planecount + 3 * sides;
     c->derived_size = sizeof(uint64_t) * 2 * (size_t)planecount + sizeof(double) * doubles +
                       sizeof(dxHullPosedEdge) * sides + sizeof(dxHullEdge) * sides +
                       sizeof(unsigned) * planecount;
@@ -282,7 +283,8 @@ static void convex_set(dxConvex *c, const dReal *planes, unsigned planecount,
     pose->ez = pose->ey + sides;
     pose->face_low = pose->ez + sides;
     c->plane_len = pose->face_low + planecount;
-    pose->edges = (dxHullPosedEdge *)(c->plane_len + planecount);
+    c->plane_dev = c->plane_len + planecount;
+    pose->edges = (dxHullPosedEdge *)(c->plane_dev + planecount);
     pose->valid = pose->edges_valid = 0;
     c->edges = (dxHullEdge *)(pose->edges + sides);
     c->poly_start = (unsigned *)(c->edges + sides);
@@ -296,6 +298,17 @@ static void convex_set(dxConvex *c, const dReal *planes, unsigned planecount,
     for (unsigned f = 0; f < planecount; f++) {
         const dReal *p = planes + 4 * f;
         c->plane_len[f] = sqrt((double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2]);
+        // (d - n . x) / |n| at the polygon's points: the most is how far
+        // under the plane the polygon reaches (0 for a flat one).
+        const unsigned *idx = polygons + c->poly_start[f];
+        double dev = 0;
+        for (unsigned k = 1; k <= idx[0]; k++) {
+            const dReal *q = points + 3 * idx[k];
+            double under = ((double)p[3] - ((double)p[0] * q[0] + (double)p[1] * q[1] +
+                                            (double)p[2] * q[2])) / c->plane_len[f];
+            dev = under > dev ? under : dev;
+        }
+        c->plane_dev[f] = dev;
     }
     convex_view(c);
     double r2 = 0;

@@ -51,7 +51,7 @@ typedef struct dxHullPose {
     double (*normals)[3];         // planecount unit outward normals ...
     double *offsets;              // ... and offsets (n . x = d)
     dxHullPosedEdge *edges;       // edgecount
-    double *face_low;             // per plane: the least n . x over its polygon (with the edges)
+    double *face_low;             // per plane: a floor under n . x over its polygon (with the edges)
     // The same by coordinate, for loops over many at once: the points'
     // x, y, z, the normals' x, y, z; and with the edges, each edge's cross
     // product of its faces' normals n2 x n1 (the normal of its arc's circle).
@@ -79,7 +79,8 @@ typedef struct dx_hull {
     const double (*wn)[3];    // the planes in the world: unit outward normals ...
     const double *wd;         // ... and offsets
     dxHullPosedEdge *we;      // once *edges_posed: the edges in the world, and per plane
-    double *face_low;         // the least n . x over its polygon
+    double *face_low;         // a floor under n . x over its polygon
+    const double *plane_dev;  // per plane: how far its polygon dips under it (NULL: none)
     int *edges_posed;
     // The edges by face as bit sets (dxConvex's by_f1, by_f2, lone; NULL
     // beyond 64 edges or planes).
@@ -106,7 +107,8 @@ typedef struct dxConvex {
     uint64_t *by_f1, *by_f2;
     uint64_t lone;
     double size;                  // the largest distance of a point from the frame's origin
-    double *plane_len;            // per plane: the length of its normal as given
+    double *plane_len;            // per plane: the length of its normal as given ...
+    double *plane_dev;            // ... and how far below it its polygon's points reach
     dxHullAxisHint hints[DX_CONVEX_AXIS_CACHE];
     unsigned next_hint;           // the entry replaced next
     dxHullPose pose;

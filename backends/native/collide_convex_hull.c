@@ -101,6 +101,7 @@ static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
     h->wd = bx->wd;
     h->we = bx->we;
     h->face_low = bx->face_low;
+    h->plane_dev = NULL;
     bx->edges_posed = 0;
 
     h->edges_posed = &bx->edges_posed;

@@ -14,6 +14,7 @@
 #include "collide_convex.h"
 #include "collide_math.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
@@ -21,8 +22,9 @@
 #ifdef __SSE2__
 #include <emmintrin.h>
 #endif
-// dot_signs four at a time where the machine has AVX2 (chosen when called).
-#if defined(__GNUC__) && defined(__x86_64__) && defined(__SSE2__)
+// dot_signs four at a time where the machine has AVX2 (chosen when called;
+// -DDX_HULL_NO_AVX2 builds the baseline alone, to compare the two).
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__SSE2__) && !defined(DX_HULL_NO_AVX2)
 #define DX_SIGNS_AVX2 1
 #include <immintrin.h>
 #endif
@@ -120,7 +122,7 @@ void dx_hull_interval(const dx_hull *h, const double m[3], double *lo, double *h
 }
 
 // Poses h's edges (with their circles' normals n2 x n1 by coordinate) and
-// its faces' least points (once per pose).
+// its faces' floors (once per pose).
 static void pose_edges(dx_hull *h)
 {
     if (*h->edges_posed) return;
@@ -139,16 +141,23 @@ static void pose_edges(dx_hull *h)
         h->ey[k] = c[1];
         h->ez[k] = c[2];
     }
-    for (unsigned f = 0; f < h->nplanes; f++) {
-        unsigned count;
-        const unsigned *idx = dx_hull_polygon(h, f, &count);
-        double low = INFINITY;
-        for (unsigned k = 0; k < count; k++) {
-            double e = dot3(h->wn[f], h->wp[idx[k]]);
-            low = e < low ? e : low;
+    // A floor under n . x over face f's polygon, without visiting it: the
+    // plane's offset less how far the polygon dips under the plane in the
+    // hull's frame (plane_dev), less what R's departure from a rotation can
+    // add (n . x = (n' R^T R x' + ...) / |n'|: |E| size, E = R^T R - I),
+    // less rounding (the products' sizes times 8 units in the last place).
+    double e2 = 0;
+    for (int i = 0; i < 3; i++) {
+        for (int k = i; k < 3; k++) {
+            double d = h->R[i] * h->R[k] + h->R[3 + i] * h->R[3 + k] + h->R[6 + i] * h->R[6 + k] -
+                       (i == k);
+            e2 += (i == k ? 1 : 2) * d * d;
         }
-        h->face_low[f] = low;
     }
+    double reach = h->size + fabs(h->c[0]) + fabs(h->c[1]) + fabs(h->c[2]);
+    double slack = sqrt(e2) * h->size + 8 * DBL_EPSILON * reach;
+    for (unsigned f = 0; f < h->nplanes; f++)
+        h->face_low[f] = h->wd[f] - (h->plane_dev ? h->plane_dev[f] : 0) - slack;
     *h->edges_posed = 1;
 }
 
@@ -252,15 +261,57 @@ static double face_extent(const dx_hull *h, unsigned f, const double m[3])
     return best;
 }
 
+#ifdef DX_SIGNS_AVX2
+// dot_max four at a time (the same products; the largest is the same
+// number, the order it is found in aside).
+__attribute__((target("avx2"))) static inline double dot_max4(const double m[3], const double *x,
+                                                             const double *y, const double *z,
+                                                             unsigned n)
+{
+    __m256d m0 = _mm256_set1_pd(m[0]), m1 = _mm256_set1_pd(m[1]), m2 = _mm256_set1_pd(m[2]);
+    __m256d vhi = _mm256_set1_pd(-INFINITY);
+    unsigned k = 0;
+    for (; k + 4 <= n; k += 4) {
+        __m256d e = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(m0, _mm256_loadu_pd(x + k)),
+                                                _mm256_mul_pd(m1, _mm256_loadu_pd(y + k))),
+                                  _mm256_mul_pd(m2, _mm256_loadu_pd(z + k)));
+        vhi = _mm256_max_pd(e, vhi);
+    }
+    double h4[4];
+    _mm256_storeu_pd(h4, vhi);
+    double mx = h4[0] > h4[1] ? h4[0] : h4[1];
+    mx = h4[2] > mx ? h4[2] : mx;
+    mx = h4[3] > mx ? h4[3] : mx;
+    for (; k < n; k++) {
+        double e = m[0] * x[k] + m[1] * y[k] + m[2] * z[k];
+        mx = e > mx ? e : mx;
+    }
+    return mx;
+}
+#endif
+
+// dx_hull_extent without the index, four at a time with AVX2 (avx2 1, in
+// a function built for it).
+static inline __attribute__((always_inline)) double extent_with(const dx_hull *h,
+                                                                const double m[3], int avx2)
+{
+#ifdef DX_SIGNS_AVX2
+    if (avx2) return dot_max4(m, h->px, h->py, h->pz, h->npts);
+#else
+    (void)avx2;
+#endif
+    return dot_max(m, h->px, h->py, h->pz, h->npts);
+}
+
 // depth_along for the face axis n of a's face f (side 0: n its inward
 // normal) or b's (side 1: its outward normal), the face's own hull's
 // extent taken over the face's polygon.
-static double face_depth(const dx_hull *a, const dx_hull *b, int side, unsigned f,
-                         const double n[3])
+static inline __attribute__((always_inline)) double
+face_depth(const dx_hull *a, const dx_hull *b, int side, unsigned f, const double n[3], int avx2)
 {
     double m[3] = { -n[0], -n[1], -n[2] };
-    return side ? face_extent(b, f, n) + dx_hull_extent(a, m, NULL)
-                : dx_hull_extent(b, n, NULL) + face_extent(a, f, m);
+    return side ? face_extent(b, f, n) + extent_with(a, m, avx2)
+                : extent_with(b, n, avx2) + face_extent(a, f, m);
 }
 
 // The axis of a's face f (side 0: its inward normal, along which a's face
@@ -272,8 +323,8 @@ static void face_axis(const dx_hull *a, const dx_hull *b, int side, unsigned f, 
 }
 
 // The gaps of h's faces against q, a point of the other hull: gap[f] =
-// low - n . q for the face's unit normal n and the least n . x over its
-// polygon, low. A floor under the face axis' depth (h's extent along n is
+// low - n . q for the face's unit normal n and a floor under n . x over
+// its polygon, low (pose_edges). A floor under the face axis' depth (h's extent along n is
 // at least low, the other's along -n at least -n . q), and under the
 // depth of every edge pair with an edge of that face over the edge's arc
 // (see masked_edge_pairs).
@@ -520,7 +571,13 @@ masked_edge_pairs_with(const dx_hull *a, const dx_hull *b, edge_search *es, cons
         unsigned f = (unsigned)__builtin_ctzll(faces);
         dot_signs(a->wn[f], b->ex, b->ey, b->ez, b->nedges, &above[f], &below[f], avx2);
     }
-    for (unsigned i = 0; i < a->nedges; i++) {
+    // a's edges that can have candidates: the near ones, or all if b has
+    // lone edges (which meet every edge).
+    uint64_t visit = !lone ? near_a
+                     : a->nedges == MASK_BITS ? ~(uint64_t)0
+                                              : ((uint64_t)1 << a->nedges) - 1;
+    for (; visit; visit &= visit - 1) {
+        unsigned i = (unsigned)__builtin_ctzll(visit);
         const dxHullEdge *ea = &a->edges[i];
         uint64_t cand = all;
         if (!(near_a >> i & 1)) {
@@ -610,7 +667,7 @@ sat_with(dx_hull *a, dx_hull *b, sat_hint *hint, sat_axis *face, sat_axis *edge,
         }
         double n[3];
         face_axis(a, b, gside, gface, n);
-        guess = face_depth(a, b, gside, gface, n);
+        guess = face_depth(a, b, gside, gface, n, avx2);
         if (guess < 0) {
             memcpy(sep, n, sizeof n);
             return 0;
@@ -626,7 +683,7 @@ sat_with(dx_hull *a, dx_hull *b, sat_hint *hint, sat_axis *face, sat_axis *edge,
             }
             double n[3];
             face_axis(a, b, side, f, n);
-            double s = side == gside && f == gface ? guess : face_depth(a, b, side, f, n);
+            double s = side == gside && f == gface ? guess : face_depth(a, b, side, f, n, avx2);
             if (s < 0) {
                 memcpy(sep, n, sizeof n);
                 return 0;
