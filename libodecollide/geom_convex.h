@@ -9,32 +9,38 @@
 
 #include "shapes.h"
 
+#include <stdint.h>
+
 // An edge of the hull, (a, b) with a < b, between faces f1 and f2 (f2 =
 // f1 when the polygons give the edge only once).
 typedef struct dxHullEdge {
     unsigned a, b, f1, f2;
 } dxHullEdge;
 
-// A separating axis found against another geom (collide_convex_hull.c):
-// tried first the next time the pair meets, so a pair that stays apart is
-// rejected by one axis. Only a hint: `other` is never dereferenced (it may
-// be destroyed and its address reused), and an axis that no longer
-// separates is simply not used.
+// What a hull found against another geom last time (collide_convex_hull.c),
+// tried first the next time the pair meets: the axis that parted them, so
+// a pair that stays apart is rejected by one axis; or, if they touched, the
+// face that gave the contact axis, the first guess that bounds the others
+// (a pair resting on one another keeps it). Only a hint: `other` is never
+// dereferenced (it may be destroyed and its address reused), an axis that
+// no longer separates is simply not used, and any face is a valid guess.
 enum { DX_CONVEX_AXIS_CACHE = 8 };
 typedef struct dxHullAxisHint {
     const void *other;
-    double axis[3];               // in this hull's frame
+    double axis[3];               // in this hull's frame, if !touching
+    int touching;                 // else: the face of this hull (side 0) or the other's,
+    int side;                     // and a point of each that bounded the other axes
+    unsigned face, own_point, other_point;
 } dxHullAxisHint;
 
-// The hull posed in the world (by the native colliders,
+// The hull posed in the world (by dxConvexPose and the native colliders,
 // collide_convex_hull.c), kept while the geom's pose stays what it was
 // made for: a hull meets several partners a step and is posed once. The
 // geom's own arrays are assumed unchanged between dGeomSetConvex calls (as
 // the edge list already assumes). An edge's direction u = b - a with u . u,
-// the cross product of its faces' normals n2 x n1, and their sum n1 + n2
-// with its square.
+// and the sum of its faces' normals n1 + n2 with its square.
 typedef struct dxHullPosedEdge {
-    double u[3], n2xn1[3], sum[3], uu, ss;
+    double u[3], sum[3], uu, ss;
 } dxHullPosedEdge;
 
 typedef struct dxHullPose {
@@ -45,11 +51,46 @@ typedef struct dxHullPose {
     double (*normals)[3];         // planecount unit outward normals ...
     double *offsets;              // ... and offsets (n . x = d)
     dxHullPosedEdge *edges;       // edgecount
+    double *face_low;             // per plane: a floor under n . x over its polygon (with the edges)
     // The same by coordinate, for loops over many at once: the points'
-    // x, y, z, the normals' x, y, z, the edges' n2 x n1 x, y, z.
+    // x, y, z, the normals' x, y, z; and with the edges, each edge's cross
+    // product of its faces' normals n2 x n1 (the normal of its arc's circle).
     double *px, *py, *pz, *nx, *ny, *nz, *ex, *ey, *ez;
     double centre[3];             // the mean of the points: inside the hull
 } dxHullPose;
+
+// A hull as the native colliders see it (backends/native/collide_convex*.c):
+// the geom's arrays, its pose, and the same posed in the world (points,
+// face planes, and the edges once the pair test needs them): a convex
+// geom's is kept on the geom while its pose stays (dxConvexPose), a box's
+// is made by the collider.
+typedef struct dx_hull {
+    const dReal *pts;         // npts x (x, y, z), local
+    const dReal *planes;      // nplanes x (a, b, c, d), local, outward
+    const unsigned *polys;    // per plane: count, indices
+    const unsigned *poly_start;   // per plane: where its polygon starts in polys
+    const dxHullEdge *edges;  // each edge once, with its two faces
+    unsigned npts, nplanes, nedges;
+    double R[9];              // world = R local + c (row-major)
+    double c[3];
+    double size;              // the largest distance of a point from the origin of the frame
+    double centre[3];         // a point inside, in the world
+    const double (*wp)[3];    // the points in the world
+    const double (*wn)[3];    // the planes in the world: unit outward normals ...
+    const double *wd;         // ... and offsets
+    dxHullPosedEdge *we;      // once *edges_posed: the edges in the world, and per plane
+    double *face_low;         // a floor under n . x over its polygon
+    const double *plane_dev;  // per plane: how far its polygon dips under it (NULL: none)
+    int *edges_posed;
+    // The edges by face as bit sets (dxConvex's by_f1, by_f2, lone; NULL
+    // beyond 64 edges or planes).
+    const uint64_t *by_f1, *by_f2;
+    uint64_t lone;
+    // The points, normals and edges' n2 x n1 by coordinate (dxHullPose).
+    const double *px, *py, *pz, *nx, *ny, *nz;
+    double *ex, *ey, *ez;     // (with the edges: n2 x n1)
+    struct dxConvex *convex;  // the convex geom (its axis hints), NULL for a box
+} dx_hull;
 
 typedef struct dxConvex {
     dxGeom g;
@@ -60,14 +101,35 @@ typedef struct dxConvex {
     dxHullEdge *edges;            // derived from the polygons, owned by the geom
     unsigned edgecount;
     unsigned *poly_start;         // per plane: where its polygon starts in polygons
+    // For hulls of at most 64 edges and 64 planes (else NULL): per plane, the
+    // set of edges (bit k: edge k) whose first face it is, and whose second
+    // face; the edges with one face only.
+    uint64_t *by_f1, *by_f2;
+    uint64_t lone;
     double size;                  // the largest distance of a point from the frame's origin
+    double *plane_len;            // per plane: the length of its normal as given ...
+    double *plane_dev;            // ... and how far below it its polygon's points reach
     dxHullAxisHint hints[DX_CONVEX_AXIS_CACHE];
     unsigned next_hint;           // the entry replaced next
     dxHullPose pose;
+    dx_hull hull;                 // the pose as the native colliders see it
     void *derived;                // one block: edges, poly_start, the pose's arrays
     size_t derived_size;
 } dxConvex;
 
 extern const dxGeomClassOps dx_convex_ops;
+
+// Points and planes of a hull's local arrays posed by R (row-major) and c
+// (world = R local + c) into wp and by coordinate p3[3], and into unit
+// outward normals wn (p3's way: n3[3]) and offsets wd; len: the planes'
+// normal lengths, or NULL to take them here.
+void dxHullPosePointsPlanes(const double R[9], const double c[3], const dReal *pts, unsigned npts,
+                            const dReal *planes, const double *len, unsigned nplanes,
+                            double (*wp)[3], double *const p3[3], double (*wn)[3],
+                            double *const n3[3], double *wd);
+
+// The convex geom's hull posed in the world for its position and rotation
+// (c->pose, c->hull), unless it already is (compared bit for bit).
+void dxConvexPose(dxConvex *c);
 
 #endif

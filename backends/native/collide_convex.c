@@ -280,19 +280,16 @@ static int clip_to_face_prism(const dx_hull *h, unsigned f, const double nf[3], 
 
 int dxCollideConvexConvex(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)
 {
-    dx_hull a, b;
-    dx_hull_of_geom(&a, o1, NULL);
-    dx_hull_of_geom(&b, o2, NULL);
-    return dx_hull_hull(&a, &b, o1, o2, flags, out, skip);
+    dx_hull *a = dx_hull_posed(o1, NULL, NULL), *b = dx_hull_posed(o2, NULL, NULL);
+    return dx_hull_hull(a, b, o1, o2, flags, out, skip);
 }
 
 int dxCollideConvexBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)
 {
-    dx_hull a, b;
+    dx_hull hb;
     dx_hull_box bx;
-    dx_hull_of_geom(&a, o1, NULL);
-    dx_hull_of_geom(&b, o2, &bx);
-    return dx_hull_hull(&a, &b, o1, o2, flags, out, skip);
+    dx_hull *a = dx_hull_posed(o1, NULL, NULL), *b = dx_hull_posed(o2, &hb, &bx);
+    return dx_hull_hull(a, b, o1, o2, flags, out, skip);
 }
 
 // The hull's points below the plane, deepest first, at most max.

@@ -19,32 +19,6 @@
 #define DX_HULL_EPS 1e-9
 #endif
 
-// A hull: the geom's arrays, its pose, and the same posed in the world
-// (points, face planes, and the edges once the pair test needs them):
-// a convex geom's pose is kept on the geom between calls (dxHullPose), a
-// box's is made in the caller's dx_hull_box.
-typedef struct dx_hull {
-    const dReal *pts;         // npts x (x, y, z), local
-    const dReal *planes;      // nplanes x (a, b, c, d), local, outward
-    const unsigned *polys;    // per plane: count, indices
-    const unsigned *poly_start;   // per plane: where its polygon starts in polys
-    const dxHullEdge *edges;  // each edge once, with its two faces
-    unsigned npts, nplanes, nedges;
-    double R[9];              // world = R local + c (row-major)
-    double c[3];
-    double size;              // the largest distance of a point from the origin of the frame
-    double centre[3];         // a point inside, in the world
-    const double (*wp)[3];    // the points in the world
-    const double (*wn)[3];    // the planes in the world: unit outward normals ...
-    const double *wd;         // ... and offsets
-    dxHullPosedEdge *we;      // the edges in the world, once *edges_posed
-    int *edges_posed;
-    // The points, normals and edges' n2 x n1 by coordinate (dxHullPose).
-    const double *px, *py, *pz, *nx, *ny, *nz;
-    double *ex, *ey, *ez;
-    dxConvex *convex;         // the convex geom (its axis hints), NULL for a box
-} dx_hull;
-
 // The storage of a box made into a hull (dx_hull_of_geom's box case).
 typedef struct dx_hull_box {
     dReal pts[24], planes[24];
@@ -52,12 +26,16 @@ typedef struct dx_hull_box {
     dxHullEdge edges[12];
     double wp[8][3], wn[6][3], wd[6];
     dxHullPosedEdge we[12];
-    double p_soa[3][8], n_soa[3][6], e_soa[3][12];
+    double p_soa[3][8], n_soa[3][6], e_soa[3][12], face_low[6];
+    uint64_t by_f1[6], by_f2[6];
     int edges_posed;
 } dx_hull_box;
 
 // The hull of a convex geom or (into the storage bx) of a box geom, posed.
 void dx_hull_of_geom(dx_hull *h, const dxGeom *g, dx_hull_box *bx);
+// The same without a copy: a convex geom's kept hull, or h made from the
+// box geom g (into bx).
+dx_hull *dx_hull_posed(const dxGeom *g, dx_hull *h, dx_hull_box *bx);
 
 // Point i in world coordinates.
 static inline void dx_hull_vertex(const dx_hull *h, unsigned i, double out[3])
@@ -118,11 +96,22 @@ typedef struct edge_axes {
     int n, overflow;
 } edge_axes;
 
+// What a touching pair's last test leaves for its next (only ever a
+// first guess: any face and any points give the same result): the face
+// that gave the contact axis, of a (side 0) or b (1), and the points qa of
+// a and qb of b that bounded the other axes (each hull's point furthest
+// towards the other's centre, when they were found). side -1: none.
+typedef struct sat_hint {
+    int side;
+    unsigned face, qa, qb;
+} sat_hint;
+
 // 0 if a separating axis parts a and b (into sep); else the face axis and
 // the edge axis of least depth (edge->depth is infinite if no edge pair
-// counts), and what the clearance needs into found.
-int dx_hull_sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axes *found,
-                double sep[3]);
+// counts), and what the clearance needs into found. hint's face and
+// points are tried first, and hint's points are set to those used.
+int dx_hull_sat(dx_hull *a, dx_hull *b, sat_hint *hint, sat_axis *face, sat_axis *edge,
+                edge_axes *found, double sep[3]);
 // The exact translation of a along the unit n (the best face axis, of depth
 // s_n) that parts it from b, from what dx_hull_sat kept in found.
 double dx_hull_clearance(const dx_hull *a, const dx_hull *b, const double n[3], double s_n,

@@ -36,30 +36,6 @@ static void cross3(const double *a, const double *b, double out[3])
     out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-// Points and planes of the local arrays posed by R, c into wp, wn, wd,
-// and by coordinate into p[3] (points) and n[3] (normals).
-static void pose_points_planes(const dx_hull *h, double (*wp)[3], double (*wn)[3], double *wd,
-                               double *const p3[3], double *const n3[3])
-{
-    for (unsigned v = 0; v < h->npts; v++) {
-        const dReal *p = h->pts + 3 * v;
-        for (int r = 0; r < 3; r++)
-            wp[v][r] = h->c[r] + h->R[3 * r] * p[0] + h->R[3 * r + 1] * p[1] +
-                       h->R[3 * r + 2] * p[2];
-    }
-    for (unsigned f = 0; f < h->nplanes; f++) {
-        const dReal *p = h->planes + 4 * f;
-        double l = sqrt((double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2]);
-        for (int r = 0; r < 3; r++)
-            wn[f][r] = (h->R[3 * r] * p[0] + h->R[3 * r + 1] * p[1] + h->R[3 * r + 2] * p[2]) / l;
-        wd[f] = p[3] / l + dot3(wn[f], h->c);
-    }
-    for (int r = 0; r < 3; r++) {
-        for (unsigned v = 0; v < h->npts; v++) p3[r][v] = wp[v][r];
-        for (unsigned f = 0; f < h->nplanes; f++) n3[r][f] = wn[f][r];
-    }
-}
-
 // A box as a hull in bx: corners by bits (x, y, z), faces -x +x -y +y -z +z.
 static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
 {
@@ -88,6 +64,14 @@ static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
                                            (unsigned)(2 * j) + bj };
         }
     }
+    for (int f = 0; f < 6; f++) bx->by_f1[f] = bx->by_f2[f] = 0;
+    for (unsigned k = 0; k < 12; k++) {
+        bx->by_f1[bx->edges[k].f1] |= (uint64_t)1 << k;
+        bx->by_f2[bx->edges[k].f2] |= (uint64_t)1 << k;
+    }
+    h->by_f1 = bx->by_f1;
+    h->by_f2 = bx->by_f2;
+    h->lone = 0;
     h->pts = bx->pts;
     h->planes = bx->planes;
     h->polys = bx->polys;
@@ -99,9 +83,9 @@ static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
     h->convex = NULL;
     const dReal *p = bx->pts;   // every corner is as far from the centre
     h->size = sqrt((double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2]);
-    pose_points_planes(h, bx->wp, bx->wn, bx->wd,
-                       (double *const[3]){ bx->p_soa[0], bx->p_soa[1], bx->p_soa[2] },
-                       (double *const[3]){ bx->n_soa[0], bx->n_soa[1], bx->n_soa[2] });
+    dxHullPosePointsPlanes(h->R, h->c, bx->pts, 8, bx->planes, NULL, 6, bx->wp,
+                           (double *const[3]){ bx->p_soa[0], bx->p_soa[1], bx->p_soa[2] }, bx->wn,
+                           (double *const[3]){ bx->n_soa[0], bx->n_soa[1], bx->n_soa[2] }, bx->wd);
     h->px = bx->p_soa[0];
     h->py = bx->p_soa[1];
     h->pz = bx->p_soa[2];
@@ -116,67 +100,32 @@ static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
     h->wn = (const double (*)[3])bx->wn;
     h->wd = bx->wd;
     h->we = bx->we;
+    h->face_low = bx->face_low;
+    h->plane_dev = NULL;
     bx->edges_posed = 0;
-    h->edges_posed = &bx->edges_posed;
-}
 
-// A convex geom as a hull, posed from the geom's kept pose if the geom has
-// not moved since it was made.
-static void convex_hull(dx_hull *h, const dxGeom *g)
-{
-    dxConvex *c = (dxConvex *)g;
-    h->pts = c->points;
-    h->planes = c->planes;
-    h->polys = c->polygons;
-    h->poly_start = c->poly_start;
-    h->npts = c->pointcount;
-    h->nplanes = c->planecount;
-    h->edges = c->edges;
-    h->nedges = c->edgecount;
-    h->convex = c;
-    h->size = c->size;
-    dxHullPose *pose = &c->pose;
-    if (!pose->valid || memcmp(pose->pos, g->pos, sizeof pose->pos) != 0 ||
-        memcmp(pose->R, g->R, sizeof pose->R) != 0) {
-        pose_points_planes(h, pose->pts, pose->normals, pose->offsets,
-                           (double *const[3]){ pose->px, pose->py, pose->pz },
-                           (double *const[3]){ pose->nx, pose->ny, pose->nz });
-        double sum[3] = { 0, 0, 0 };
-        for (unsigned v = 0; v < h->npts; v++)
-            for (int i = 0; i < 3; i++) sum[i] += pose->pts[v][i];
-        for (int i = 0; i < 3; i++) pose->centre[i] = sum[i] / h->npts;
-        memcpy(pose->pos, g->pos, sizeof pose->pos);
-        memcpy(pose->R, g->R, sizeof pose->R);
-        pose->valid = 1;
-        pose->edges_valid = 0;
-    }
-    memcpy(h->centre, pose->centre, sizeof h->centre);
-    h->wp = (const double (*)[3])pose->pts;
-    h->wn = (const double (*)[3])pose->normals;
-    h->wd = pose->offsets;
-    h->we = pose->edges;
-    h->edges_posed = &pose->edges_valid;
-    h->px = pose->px;
-    h->py = pose->py;
-    h->pz = pose->pz;
-    h->nx = pose->nx;
-    h->ny = pose->ny;
-    h->nz = pose->nz;
-    h->ex = pose->ex;
-    h->ey = pose->ey;
-    h->ez = pose->ez;
+    h->edges_posed = &bx->edges_posed;
 }
 
 void dx_hull_of_geom(dx_hull *h, const dxGeom *g, dx_hull_box *bx)
 {
+    const dx_hull *kept = dx_hull_posed(g, h, bx);
+    if (kept != h) *h = *kept;
+}
+
+dx_hull *dx_hull_posed(const dxGeom *g, dx_hull *h, dx_hull_box *bx)
+{
+    if (g->ops->cls == dConvexClass) {
+        dxConvex *c = (dxConvex *)g;   // its kept pose changes, the geom does not
+        dxConvexPose(c);
+        return &c->hull;
+    }
     for (int i = 0; i < 3; i++) {
         h->c[i] = g->pos[i];
         for (int k = 0; k < 3; k++) h->R[3 * i + k] = g->R[4 * i + k];
     }
-    if (g->ops->cls == dConvexClass)
-        convex_hull(h, g);
-    else
-        box_hull(h, (const dxBox *)g, bx);
+    box_hull(h, (const dxBox *)g, bx);
+    return h;
 }
 
 // Narrows [t0, t1] to where the line o + t d is inside one plane, given
@@ -496,8 +445,9 @@ static int axis_separates(const dx_hull *a, const dx_hull *b, const double n[3])
     return bhi - alo < 0 || ahi - blo < 0;
 }
 
-// Keeps the separating axis n (world) as h's hint against the geom other.
-static void keep_hint(dx_hull *h, const void *other, const double n[3])
+// h's hint against the geom other, made if there is none (replacing the
+// oldest entry).
+static dxHullAxisHint *hint_entry(dx_hull *h, const void *other)
 {
     dxHullAxisHint *e = find_hint(h, other);
     if (!e) {
@@ -505,19 +455,47 @@ static void keep_hint(dx_hull *h, const void *other, const double n[3])
         h->convex->next_hint = (h->convex->next_hint + 1) % DX_CONVEX_AXIS_CACHE;
         e->other = other;
     }
+    return e;
+}
+
+// Keeps the separating axis n (world) as h's hint against the geom other.
+static void keep_axis(dx_hull *h, const void *other, const double n[3])
+{
+    dxHullAxisHint *e = hint_entry(h, other);
+    e->touching = 0;
     for (int k = 0; k < 3; k++)
         e->axis[k] = h->R[k] * n[0] + h->R[3 + k] * n[1] + h->R[6 + k] * n[2];
+}
+
+// Keeps the contact's face and the bounding points (side 0, own_point:
+// h's own) as h's hint against other.
+static void keep_face(dx_hull *h, const void *other, int side, unsigned face,
+                      unsigned own_point, unsigned other_point)
+{
+    dxHullAxisHint *e = hint_entry(h, other);
+    e->touching = 1;
+    e->side = side;
+    e->face = face;
+    e->own_point = own_point;
+    e->other_point = other_point;
 }
 
 int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
                  dContactGeom *out, int skip)
 {
-    // The axis that parted the pair last time, if it still does.
+    // The axis that parted the pair last time, if it still does; or the
+    // face that gave their contact (sides as the holder sees them).
     dx_hull *holder = a->convex ? a : b->convex ? b : NULL;
     const void *other = holder == a ? (const void *)o2 : (const void *)o1;
+    sat_hint hint = { -1, 0, 0, 0 };
     if (holder) {
         const dxHullAxisHint *e = find_hint(holder, other);
-        if (e) {
+        if (e && e->touching) {
+            hint.side = holder == a ? e->side : 1 - e->side;
+            hint.face = e->face;
+            hint.qa = holder == a ? e->own_point : e->other_point;
+            hint.qb = holder == a ? e->other_point : e->own_point;
+        } else if (e) {
             double n[3];
             for (int r = 0; r < 3; r++)
                 n[r] = holder->R[3 * r] * e->axis[0] + holder->R[3 * r + 1] * e->axis[1] +
@@ -528,9 +506,14 @@ int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
     sat_axis face, edge;
     edge_axes found;
     double sep[3];
-    if (!dx_hull_sat(a, b, &face, &edge, &found, sep)) {
-        if (holder) keep_hint(holder, other, sep);
+    if (!dx_hull_sat(a, b, &hint, &face, &edge, &found, sep)) {
+        if (holder) keep_axis(holder, other, sep);
         return 0;
+    }
+    if (holder) {
+        int own = holder == a;
+        keep_face(holder, other, own ? face.ref : 1 - face.ref, face.face, own ? hint.qa : hint.qb,
+                  own ? hint.qb : hint.qa);
     }
     int max = dx_max_contacts(flags);
     if (edge.depth * DX_HULL_EDGE_PREFERENCE < face.depth) {

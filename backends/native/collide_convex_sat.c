@@ -14,12 +14,19 @@
 #include "collide_convex.h"
 #include "collide_math.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
 
 #ifdef __SSE2__
 #include <emmintrin.h>
+#endif
+// dot_signs four at a time where the machine has AVX2 (chosen when called;
+// -DDX_HULL_NO_AVX2 builds the baseline alone, to compare the two).
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__SSE2__) && !defined(DX_HULL_NO_AVX2)
+#define DX_SIGNS_AVX2 1
+#include <immintrin.h>
 #endif
 
 static double dot3(const double *a, const double *b)
@@ -114,34 +121,62 @@ void dx_hull_interval(const dx_hull *h, const double m[3], double *lo, double *h
     dot_range(m, h->px, h->py, h->pz, h->npts, lo, hi);
 }
 
-// Poses the edges of h (once per pose).
+// Poses h's edges (with their circles' normals n2 x n1 by coordinate) and
+// its faces' floors (once per pose).
 static void pose_edges(dx_hull *h)
 {
     if (*h->edges_posed) return;
     for (unsigned k = 0; k < h->nedges; k++) {
         const dxHullEdge *e = &h->edges[k];
         dxHullPosedEdge *out = &h->we[k];
+        double c[3];
         for (int i = 0; i < 3; i++) {
             out->u[i] = h->wp[e->b][i] - h->wp[e->a][i];
             out->sum[i] = h->wn[e->f1][i] + h->wn[e->f2][i];
         }
         out->uu = dot3(out->u, out->u);
         out->ss = dot3(out->sum, out->sum);
-        cross3(h->wn[e->f2], h->wn[e->f1], out->n2xn1);
-        h->ex[k] = out->n2xn1[0];
-        h->ey[k] = out->n2xn1[1];
-        h->ez[k] = out->n2xn1[2];
+        cross3(h->wn[e->f2], h->wn[e->f1], c);
+        h->ex[k] = c[0];
+        h->ey[k] = c[1];
+        h->ez[k] = c[2];
     }
+    // A floor under n . x over face f's polygon, without visiting it: the
+    // plane's offset less how far the polygon dips under the plane in the
+    // hull's frame (plane_dev), less what R's departure from a rotation can
+    // add (n . x = (n' R^T R x' + ...) / |n'|: |E| size, E = R^T R - I),
+    // less rounding (the products' sizes times 8 units in the last place).
+    double e2 = 0;
+    for (int i = 0; i < 3; i++) {
+        for (int k = i; k < 3; k++) {
+            double d = h->R[i] * h->R[k] + h->R[3 + i] * h->R[3 + k] + h->R[6 + i] * h->R[6 + k] -
+                       (i == k);
+            e2 += (i == k ? 1 : 2) * d * d;
+        }
+    }
+    double reach = h->size + fabs(h->c[0]) + fabs(h->c[1]) + fabs(h->c[2]);
+    double slack = sqrt(e2) * h->size + 8 * DBL_EPSILON * reach;
+    for (unsigned f = 0; f < h->nplanes; f++)
+        h->face_low[f] = h->wd[f] - (h->plane_dev ? h->plane_dev[f] : 0) - slack;
     *h->edges_posed = 1;
 }
 
-// The signs of c . (x[k], y[k], z[k]) for k < n (made as dot3 makes them):
-// bit k of *pos where above 0, of *neg where below.
-static inline void dot_signs(const double c[3], const double *x, const double *y,
-                             const double *z, unsigned n, uint64_t *pos, uint64_t *neg)
+// The normal of h's edge k's circle (n2 x n1), as pose_edges made it.
+static void edge_circle(const dx_hull *h, unsigned k, double c[3])
 {
-    uint64_t p = 0, q = 0;
-    unsigned k = 0;
+    c[0] = h->ex[k];
+    c[1] = h->ey[k];
+    c[2] = h->ez[k];
+}
+
+// The signs of c . (x[k], y[k], z[k]) for k >= k0, k < n, made as dot3
+// makes them, added to *pos (bit k where above 0) and *neg (below).
+static inline void dot_signs_from(const double c[3], const double *x, const double *y,
+                                  const double *z, unsigned k0, unsigned n, uint64_t *pos,
+                                  uint64_t *neg)
+{
+    uint64_t p = *pos, q = *neg;
+    unsigned k = k0;
 #ifdef __SSE2__
     __m128d c0 = _mm_set1_pd(c[0]), c1 = _mm_set1_pd(c[1]), c2 = _mm_set1_pd(c[2]);
     __m128d zero = _mm_setzero_pd();
@@ -160,6 +195,49 @@ static inline void dot_signs(const double c[3], const double *x, const double *y
     }
     *pos = p;
     *neg = q;
+}
+
+#ifdef DX_SIGNS_AVX2
+// dot_signs' first products four at a time (the same products and sums,
+// no fused multiply-add: the same numbers); returns how many it made.
+__attribute__((target("avx2"))) static inline unsigned dot_signs4(const double c[3], const double *x,
+                                                          const double *y, const double *z,
+                                                          unsigned n, uint64_t *pos,
+                                                          uint64_t *neg)
+{
+    uint64_t p = 0, q = 0;
+    unsigned k = 0;
+    __m256d c0 = _mm256_set1_pd(c[0]), c1 = _mm256_set1_pd(c[1]), c2 = _mm256_set1_pd(c[2]);
+    __m256d zero = _mm256_setzero_pd();
+    for (; k + 4 <= n; k += 4) {
+        __m256d d = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(c0, _mm256_loadu_pd(x + k)),
+                                                _mm256_mul_pd(c1, _mm256_loadu_pd(y + k))),
+                                  _mm256_mul_pd(c2, _mm256_loadu_pd(z + k)));
+        p |= (uint64_t)_mm256_movemask_pd(_mm256_cmp_pd(d, zero, _CMP_GT_OQ)) << k;
+        q |= (uint64_t)_mm256_movemask_pd(_mm256_cmp_pd(d, zero, _CMP_LT_OQ)) << k;
+    }
+    *pos = p;
+    *neg = q;
+    return k;
+}
+#endif
+
+// The signs of c . (x[k], y[k], z[k]) for k < n (made as dot3 makes them):
+// bit k of *pos where above 0, of *neg where below; with AVX2 (avx2 is
+// then 1, in a function built for it) four at a time.
+static inline __attribute__((always_inline)) void dot_signs(const double c[3], const double *x,
+                                                             const double *y, const double *z,
+                                                             unsigned n, uint64_t *pos,
+                                                             uint64_t *neg, int avx2)
+{
+    unsigned k = 0;
+    *pos = *neg = 0;
+#ifdef DX_SIGNS_AVX2
+    if (avx2) k = dot_signs4(c, x, y, z, n, pos, neg);
+#else
+    (void)avx2;
+#endif
+    dot_signs_from(c, x, y, z, k, n, pos, neg);
 }
 
 // The translation of a along the unit n that parts it from b.
@@ -183,15 +261,57 @@ static double face_extent(const dx_hull *h, unsigned f, const double m[3])
     return best;
 }
 
+#ifdef DX_SIGNS_AVX2
+// dot_max four at a time (the same products; the largest is the same
+// number, the order it is found in aside).
+__attribute__((target("avx2"))) static inline double dot_max4(const double m[3], const double *x,
+                                                             const double *y, const double *z,
+                                                             unsigned n)
+{
+    __m256d m0 = _mm256_set1_pd(m[0]), m1 = _mm256_set1_pd(m[1]), m2 = _mm256_set1_pd(m[2]);
+    __m256d vhi = _mm256_set1_pd(-INFINITY);
+    unsigned k = 0;
+    for (; k + 4 <= n; k += 4) {
+        __m256d e = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(m0, _mm256_loadu_pd(x + k)),
+                                                _mm256_mul_pd(m1, _mm256_loadu_pd(y + k))),
+                                  _mm256_mul_pd(m2, _mm256_loadu_pd(z + k)));
+        vhi = _mm256_max_pd(e, vhi);
+    }
+    double h4[4];
+    _mm256_storeu_pd(h4, vhi);
+    double mx = h4[0] > h4[1] ? h4[0] : h4[1];
+    mx = h4[2] > mx ? h4[2] : mx;
+    mx = h4[3] > mx ? h4[3] : mx;
+    for (; k < n; k++) {
+        double e = m[0] * x[k] + m[1] * y[k] + m[2] * z[k];
+        mx = e > mx ? e : mx;
+    }
+    return mx;
+}
+#endif
+
+// dx_hull_extent without the index, four at a time with AVX2 (avx2 1, in
+// a function built for it).
+static inline __attribute__((always_inline)) double extent_with(const dx_hull *h,
+                                                                const double m[3], int avx2)
+{
+#ifdef DX_SIGNS_AVX2
+    if (avx2) return dot_max4(m, h->px, h->py, h->pz, h->npts);
+#else
+    (void)avx2;
+#endif
+    return dot_max(m, h->px, h->py, h->pz, h->npts);
+}
+
 // depth_along for the face axis n of a's face f (side 0: n its inward
 // normal) or b's (side 1: its outward normal), the face's own hull's
 // extent taken over the face's polygon.
-static double face_depth(const dx_hull *a, const dx_hull *b, int side, unsigned f,
-                         const double n[3])
+static inline __attribute__((always_inline)) double
+face_depth(const dx_hull *a, const dx_hull *b, int side, unsigned f, const double n[3], int avx2)
 {
     double m[3] = { -n[0], -n[1], -n[2] };
-    return side ? face_extent(b, f, n) + dx_hull_extent(a, m, NULL)
-                : dx_hull_extent(b, n, NULL) + face_extent(a, f, m);
+    return side ? face_extent(b, f, n) + extent_with(a, m, avx2)
+                : extent_with(b, n, avx2) + face_extent(a, f, m);
 }
 
 // The axis of a's face f (side 0: its inward normal, along which a's face
@@ -202,15 +322,16 @@ static void face_axis(const dx_hull *a, const dx_hull *b, int side, unsigned f, 
     for (int i = 0; i < 3; i++) n[i] = side ? m[i] : -m[i];
 }
 
-// A floor under face_depth for h's face f, q a point inside the other
-// hull: h's extent along the face's normal m is at least m . p for the
-// polygon's first point p, the other's along -m at least -m . q.
-static double face_floor(const dx_hull *h, unsigned f, const double q[3])
+// The gaps of h's faces against q, a point of the other hull: gap[f] =
+// low - n . q for the face's unit normal n and a floor under n . x over
+// its polygon, low (pose_edges). A floor under the face axis' depth (h's extent along n is
+// at least low, the other's along -n at least -n . q), and under the
+// depth of every edge pair with an edge of that face over the edge's arc
+// (see masked_edge_pairs).
+static void face_gaps(const dx_hull *h, const double q[3], double *gap)
 {
-    unsigned count;
-    const double *p = h->wp[*dx_hull_polygon(h, f, &count)];
-    double w[3] = { p[0] - q[0], p[1] - q[1], p[2] - q[2] };
-    return dot3(h->wn[f], w);
+    for (unsigned f = 0; f < h->nplanes; f++)
+        gap[f] = h->face_low[f] - (h->nx[f] * q[0] + h->ny[f] * q[1] + h->nz[f] * q[2]);
 }
 
 // Whether a's arc (from n1 to n2) and b's negated arc (for the difference,
@@ -244,12 +365,14 @@ static int unit_cross(const dxHullPosedEdge *xa, const dxHullPosedEdge *xb, doub
 static int edge_axis(const dx_hull *a, unsigned i, const dx_hull *b, unsigned j, double m[3])
 {
     const dxHullEdge *ea = &a->edges[i], *eb = &b->edges[j];
-    const dxHullPosedEdge *xa = &a->we[i], *xb = &b->we[j];
+    double ca[3], cb[3];
+    edge_circle(a, i, ca);
+    edge_circle(b, j, cb);
     if (ea->f1 != ea->f2 && eb->f1 != eb->f2 &&
-        !arcs_cross(-dot3(b->wn[eb->f1], xa->n2xn1), -dot3(b->wn[eb->f2], xa->n2xn1),
-                    dot3(a->wn[ea->f1], xb->n2xn1), dot3(a->wn[ea->f2], xb->n2xn1)))
+        !arcs_cross(-dot3(b->wn[eb->f1], ca), -dot3(b->wn[eb->f2], ca),
+                    dot3(a->wn[ea->f1], cb), dot3(a->wn[ea->f2], cb)))
         return 0;
-    return unit_cross(xa, xb, m);
+    return unit_cross(&a->we[i], &b->we[j], m);
 }
 
 // The depths of a along +m (s[0]) and -m (s[1]) against b, from one pass
@@ -406,21 +529,6 @@ static inline int edge_candidate(const dx_hull *a, unsigned i, const dx_hull *b,
     return 1;
 }
 
-// Whether every edge pair with h's edge k (two faces) is clearly deeper
-// than far, q being a point of the other hull. Where such a pair is a
-// face of the Minkowski difference its normal d lies on k's arc (between
-// its faces' outward normals) and its depth is h's extent along d, d . p
-// for p on the edge, plus the other's along -d, at least -d . q: so at
-// least the least of d . (p - q) over the arc, which (the arc shorter than
-// a half circle) is at one of its ends when both are positive.
-static inline int edge_far(const dx_hull *h, unsigned k, const double q[3], double far)
-{
-    const dxHullEdge *e = &h->edges[k];
-    const double *p = h->wp[e->a];
-    double w[3] = { p[0] - q[0], p[1] - q[1], p[2] - q[2] };
-    return dot3(h->wn[e->f1], w) > far && dot3(h->wn[e->f2], w) > far;
-}
-
 // The edge pairs of sat for hulls whose edges and faces fit 64-bit masks.
 // edge_axis's arc test asks, of a's edge i (faces f1, f2) and b's edge j
 // (faces g1, g2), for the signs of the products of each edge's circle
@@ -433,55 +541,52 @@ static inline int edge_far(const dx_hull *h, unsigned k, const double q[3], doub
 // circle it is above and below. Then the pairs that pass are, for each i,
 // the set bits of S & U & W, visited in edge_axis's order. An edge
 // without a second face meets every edge. Edges whose every pair is
-// clearly deeper than the best face (edge_far) are left out: such a pair
-// can neither part the hulls, nor win, nor lower the clearance.
+// clearly deeper than the best face are left out: such a pair can neither
+// part the hulls, nor win, nor lower the clearance. Where an edge pair is
+// a face of the Minkowski difference its normal d lies on the edge's arc
+// (between its faces' outward normals) and its depth is the hull's extent
+// along d, d . p for p on the edge, plus the other's along -d, at least
+// -d . q for the other's point q: at least the least of d . (p - q) over
+// the arc, which (the arc shorter than a half circle) is at one of its
+// ends when both are positive, each end at least its face's gap (gap_a
+// for a's faces against b's point, gap_b for b's against a's).
 enum { MASK_BITS = 64 };
 
-static int masked_edge_pairs(const dx_hull *a, const dx_hull *b, edge_search *es)
+static inline __attribute__((always_inline)) int
+masked_edge_pairs_with(const dx_hull *a, const dx_hull *b, edge_search *es, const double *gap_a,
+                       const double *gap_b, int avx2)
 {
-    uint64_t first[MASK_BITS], second[MASK_BITS], lone = 0;   // b's edges by face
-    uint64_t above[MASK_BITS], below[MASK_BITS];              // by a's face: b's edges
-    for (unsigned f = 0; f < b->nplanes; f++) first[f] = second[f] = 0;
-    for (unsigned j = 0; j < b->nedges; j++) {
-        const dxHullEdge *e = &b->edges[j];
-        uint64_t bit = (uint64_t)1 << j;
-        first[e->f1] |= bit;
-        second[e->f2] |= bit;
-        if (e->f1 == e->f2) lone |= bit;
-    }
+    uint64_t above[MASK_BITS], below[MASK_BITS];   // by a's face: b's edges
+    const uint64_t *first = b->by_f1, *second = b->by_f2, lone = b->lone;
     uint64_t all = b->nedges == MASK_BITS ? ~(uint64_t)0 : ((uint64_t)1 << b->nedges) - 1;
     double far = es->face->depth * (1 + 1e-9) + 2 * es->margin;
-    // The point of each hull furthest towards the other's centre (points
-    // of the hulls, for edge_far: tighter there than the centres).
-    double ab[3] = { b->centre[0] - a->centre[0], b->centre[1] - a->centre[1],
-                     b->centre[2] - a->centre[2] };
-    double ba[3] = { -ab[0], -ab[1], -ab[2] };
-    unsigned va, vb;
-    dx_hull_extent(a, ab, &va);
-    dx_hull_extent(b, ba, &vb);
-    const double *qa = a->wp[va], *qb = b->wp[vb];
-    uint64_t near_b = all, near_a = 0, faces = 0;   // a's near edges, and their faces
-    for (unsigned j = 0; j < b->nedges; j++)
-        if (!(lone >> j & 1) && edge_far(b, j, qa, far)) near_b &= ~((uint64_t)1 << j);
-    for (unsigned i = 0; i < a->nedges; i++) {
-        const dxHullEdge *ea = &a->edges[i];
-        if (ea->f1 == ea->f2 || !edge_far(a, i, qb, far)) {
-            near_a |= (uint64_t)1 << i;
-            faces |= (uint64_t)1 << ea->f1 | (uint64_t)1 << ea->f2;
-        }
-    }
+    uint64_t near_a = a->lone, near_b = lone, faces = 0;   // near edges; a's near edges' faces
+    for (unsigned f = 0; f < a->nplanes; f++)
+        if (!(gap_a[f] > far)) near_a |= a->by_f1[f] | a->by_f2[f];
+    for (unsigned f = 0; f < b->nplanes; f++)
+        if (!(gap_b[f] > far)) near_b |= first[f] | second[f];
+    for (unsigned f = 0; f < a->nplanes; f++)
+        if ((a->by_f1[f] | a->by_f2[f]) & near_a) faces |= (uint64_t)1 << f;
     for (; faces; faces &= faces - 1) {
         unsigned f = (unsigned)__builtin_ctzll(faces);
-        dot_signs(a->wn[f], b->ex, b->ey, b->ez, b->nedges, &above[f], &below[f]);
+        dot_signs(a->wn[f], b->ex, b->ey, b->ez, b->nedges, &above[f], &below[f], avx2);
     }
-    for (unsigned i = 0; i < a->nedges; i++) {
+    // a's edges that can have candidates: the near ones, or all if b has
+    // lone edges (which meet every edge).
+    uint64_t visit = !lone ? near_a
+                     : a->nedges == MASK_BITS ? ~(uint64_t)0
+                                              : ((uint64_t)1 << a->nedges) - 1;
+    for (; visit; visit &= visit - 1) {
+        unsigned i = (unsigned)__builtin_ctzll(visit);
         const dxHullEdge *ea = &a->edges[i];
         uint64_t cand = all;
         if (!(near_a >> i & 1)) {
             cand = lone;
         } else if (ea->f1 != ea->f2) {
             uint64_t first_pos = 0, first_neg = 0, second_pos = 0, second_neg = 0, pos, neg;
-            dot_signs(a->we[i].n2xn1, b->nx, b->ny, b->nz, b->nplanes, &pos, &neg);
+            double circle[3];
+            edge_circle(a, i, circle);
+            dot_signs(circle, b->nx, b->ny, b->nz, b->nplanes, &pos, &neg, avx2);
             for (; pos; pos &= pos - 1) {
                 unsigned f = (unsigned)__builtin_ctzll(pos);
                 first_pos |= first[f];
@@ -505,11 +610,26 @@ static int masked_edge_pairs(const dx_hull *a, const dx_hull *b, edge_search *es
     return 1;
 }
 
-// 0 if a separating axis parts a and b (into sep); else the face axis and
-// the edge axis of least depth (edge->depth is infinite if no edge pair
-// counts), and the axes' depths into found.
-int dx_hull_sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axes *found,
-                double sep[3])
+// Points of each hull (qa of a, qb of b), for the gaps: the hint's, else
+// each hull's point furthest towards the other's centre (into the hint).
+static void facing_points(const dx_hull *a, const dx_hull *b, sat_hint *hint,
+                          const double **qa, const double **qb)
+{
+    if (hint->side < 0 || hint->qa >= a->npts || hint->qb >= b->npts) {
+        double ab[3] = { b->centre[0] - a->centre[0], b->centre[1] - a->centre[1],
+                         b->centre[2] - a->centre[2] };
+        double ba[3] = { -ab[0], -ab[1], -ab[2] };
+        dx_hull_extent(a, ab, &hint->qa);
+        dx_hull_extent(b, ba, &hint->qb);
+    }
+    *qa = a->wp[hint->qa];
+    *qb = b->wp[hint->qb];
+}
+
+// dx_hull_sat, built once for AVX2 (avx2 1) and once for any machine.
+static inline __attribute__((always_inline)) int
+sat_with(dx_hull *a, dx_hull *b, sat_hint *hint, sat_axis *face, sat_axis *edge,
+         edge_axes *found, double sep[3], int avx2)
 {
     found->n = found->overflow = 0;
     found->faces_kept = a->nplanes <= KEPT_FACES && b->nplanes <= KEPT_FACES;
@@ -517,40 +637,53 @@ int dx_hull_sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axe
     for (int i = 0; i < 3; i++) scale += fabs(a->c[i]) + fabs(b->c[i]);
     found->margin = 1e-12 * scale;
     face->depth = edge->depth = INFINITY;
-    // A face's depth is at least face_floor: faces clearly deeper than a
-    // first guess (the face of least floor) are skipped.
-    double floors[2][KEPT_FACES], guess = INFINITY, limit = INFINITY;
-    int gside = 0;
+    pose_edges(a);
+    pose_edges(b);
+    // A face's depth is at least its gap: faces clearly deeper than a first
+    // guess (the hinted face, else the face of least gap) are skipped.
+    double gaps[2][MASK_BITS], guess = INFINITY, limit = INFINITY;
+    int gapped = a->nplanes <= MASK_BITS && b->nplanes <= MASK_BITS, gside = -1;
     unsigned gface = 0;
-    if (found->faces_kept) {
-        for (int side = 0; side < 2; side++) {
-            const dx_hull *h = side ? b : a, *o = side ? a : b;
-            for (unsigned f = 0; f < h->nplanes; f++) {
-                floors[side][f] = face_floor(h, f, o->centre);
-                if (floors[side][f] < guess) {
-                    guess = floors[side][f];
-                    gside = side;
-                    gface = f;
+    if (gapped) {
+        const double *qa, *qb;
+        facing_points(a, b, hint, &qa, &qb);
+        face_gaps(a, qb, gaps[0]);
+        face_gaps(b, qa, gaps[1]);
+        if (hint->side >= 0 && hint->face < (hint->side ? b : a)->nplanes) {
+            gside = hint->side;
+            gface = hint->face;
+        } else {
+            gside = 0;
+            for (int side = 0; side < 2; side++) {
+                const dx_hull *h = side ? b : a;
+                for (unsigned f = 0; f < h->nplanes; f++) {
+                    if (gaps[side][f] < guess) {
+                        guess = gaps[side][f];
+                        gside = side;
+                        gface = f;
+                    }
                 }
             }
         }
         double n[3];
         face_axis(a, b, gside, gface, n);
-        guess = face_depth(a, b, gside, gface, n);
-        if (guess >= 0) limit = guess * (1 + 1e-9) + 2 * found->margin;
+        guess = face_depth(a, b, gside, gface, n, avx2);
+        if (guess < 0) {
+            memcpy(sep, n, sizeof n);
+            return 0;
+        }
+        limit = guess * (1 + 1e-9) + 2 * found->margin;
     }
     for (int side = 0; side < 2; side++) {
         const dx_hull *h = side ? b : a;
         for (unsigned f = 0; f < h->nplanes; f++) {
-            if (limit < INFINITY && floors[side][f] > limit) {
-                found->face_s[side][f] = INFINITY;
+            if (gapped && gaps[side][f] > limit) {
+                if (found->faces_kept) found->face_s[side][f] = INFINITY;
                 continue;
             }
             double n[3];
             face_axis(a, b, side, f, n);
-            double s = side == gside && f == gface && limit < INFINITY
-                           ? guess
-                           : face_depth(a, b, side, f, n);
+            double s = side == gside && f == gface ? guess : face_depth(a, b, side, f, n, avx2);
             if (s < 0) {
                 memcpy(sep, n, sizeof n);
                 return 0;
@@ -564,14 +697,11 @@ int dx_hull_sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axe
             }
         }
     }
-    pose_edges(a);
-    pose_edges(b);
     edge_search es = { edge, found, sep, face, face->depth / DX_HULL_EDGE_PREFERENCE, 0,
                        found->margin };
     update_threshold(&es);
-    if (a->nedges <= MASK_BITS && b->nedges <= MASK_BITS && a->nplanes <= MASK_BITS &&
-        b->nplanes <= MASK_BITS)
-        return masked_edge_pairs(a, b, &es);
+    if (gapped && a->by_f1 && b->by_f1)
+        return masked_edge_pairs_with(a, b, &es, gaps[0], gaps[1], avx2);
     for (unsigned i = 0; i < a->nedges; i++) {
         for (unsigned j = 0; j < b->nedges; j++) {
             double n[3];
@@ -579,6 +709,24 @@ int dx_hull_sat(dx_hull *a, dx_hull *b, sat_axis *face, sat_axis *edge, edge_axe
         }
     }
     return 1;
+}
+
+#ifdef DX_SIGNS_AVX2
+__attribute__((target("avx2"))) static int sat_avx2(dx_hull *a, dx_hull *b, sat_hint *hint,
+                                                    sat_axis *face, sat_axis *edge,
+                                                    edge_axes *found, double sep[3])
+{
+    return sat_with(a, b, hint, face, edge, found, sep, 1);
+}
+#endif
+
+int dx_hull_sat(dx_hull *a, dx_hull *b, sat_hint *hint, sat_axis *face, sat_axis *edge,
+                edge_axes *found, double sep[3])
+{
+#ifdef DX_SIGNS_AVX2
+    if (__builtin_cpu_supports("avx2")) return sat_avx2(a, b, hint, face, edge, found, sep);
+#endif
+    return sat_with(a, b, hint, face, edge, found, sep, 0);
 }
 
 // What the edge pair axis m (either sign; s its depths along +m and -m)
