@@ -4,6 +4,7 @@
 // touching faces or the closest points of two edges) and box-plane (the
 // corners below the plane).
 
+#include <stdint.h>
 #include <string.h>
 
 #include "collide_math.h"
@@ -36,6 +37,75 @@ typedef struct clip_point {
 // Functions of the clipper and the axes, inlined with their constant
 // arguments (a side, an axis pair) so that their indices fold away.
 #define BOX_INLINE static inline __attribute__((always_inline))
+
+// The collider's entry points are built twice where the compiler can pick a
+// version when the library is loaded (GNU ifunc: x86-64, ELF, glibc): for
+// AVX2 (one operation per four numbers below) and for the baseline.
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__ELF__) && defined(__GLIBC__) && \
+    defined(__has_attribute)
+#if __has_attribute(target_clones)
+#define BOX_CLONES __attribute__((target_clones("avx2", "default")))
+#endif
+#endif
+#ifndef BOX_CLONES
+#define BOX_CLONES
+#endif
+// The functions that take or return fours are all inlined: no call passes
+// them, so the baseline's ABI note about them does not apply.
+#if defined(__clang__)
+#if __has_warning("-Wpsabi")
+#pragma clang diagnostic ignored "-Wpsabi"
+#endif
+#elif defined(__GNUC__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
+// Fours of numbers (GNU vector extensions: two SSE2 operations, or one AVX
+// one in the AVX2 build of the callers): a vector's lanes are computed with
+// the same operations in the same order as the scalar formulas they stand
+// for, so their results are the same to the bit.
+typedef dReal box_v4 __attribute__((vector_size(4 * sizeof(dReal))));
+#ifdef dSINGLE
+typedef int32_t box_b4 __attribute__((vector_size(4 * sizeof(int32_t))));
+#define BOX_SIGN_BIT ((int32_t)0x7fffffff)
+#else
+typedef int64_t box_b4 __attribute__((vector_size(4 * sizeof(int64_t))));
+#define BOX_SIGN_BIT ((int64_t)0x7fffffffffffffff)
+#endif
+
+BOX_INLINE box_v4 v4_load(const dReal *p)
+{
+    box_v4 v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+
+BOX_INLINE void v4_store(dReal *p, box_v4 v)
+{
+    memcpy(p, &v, sizeof v);
+}
+
+// |v| lane by lane (the sign bits cleared, as fabs does).
+BOX_INLINE box_v4 v4_abs(box_v4 v)
+{
+    box_b4 bits;
+    memcpy(&bits, &v, sizeof v);
+    bits &= BOX_SIGN_BIT;
+    memcpy(&v, &bits, sizeof v);
+    return v;
+}
+
+// (v1, v2, v0, v3) and (v2, v0, v1, v3): lane j gets lane j + 1 or j + 2
+// (mod 3).
+BOX_INLINE box_v4 v4_turn1(box_v4 v)
+{
+    return __builtin_shufflevector(v, v, 1, 2, 0, 3);
+}
+
+BOX_INLINE box_v4 v4_turn2(box_v4 v)
+{
+    return __builtin_shufflevector(v, v, 2, 0, 1, 3);
+}
 
 // The part of edge p-q (offsets dp, dq from the clipping line) clip_side
 // keeps: p if inside, then the crossing if the edge crosses the line.
@@ -301,7 +371,7 @@ static int box_keep_overlapping(const box_face *f, clip_point *a, int n, const d
 // whether every |Rm_ij| <= 1.25 (as for rotations).
 typedef struct box_axes {
     dReal nl[3];
-    const dReal (*Rm)[3];
+    const dReal (*Rm)[4];
     const dReal *over, *proj, *T, *a, *b;
     int rotations;
 } box_axes;
@@ -318,7 +388,7 @@ BOX_INLINE dReal exit_along(const box_axes *ax, int x, dReal s)
 // m . n for face axis x (0-5).
 BOX_INLINE dReal face_dot(const box_axes *ax, int x)
 {
-    const dReal *nl = ax->nl, (*Rm)[3] = ax->Rm;
+    const dReal *nl = ax->nl, (*Rm)[4] = ax->Rm;
     return x < 3 ? nl[x] : Rm[0][x - 3] * nl[0] + Rm[1][x - 3] * nl[1] + Rm[2][x - 3] * nl[2];
 }
 
@@ -340,7 +410,7 @@ BOX_INLINE dReal face_dot(const box_axes *ax, int x)
 // least exit is the same.
 static dReal box_clearance(const box_axes *ax, dReal known, int known_axis)
 {
-    const dReal *nl = ax->nl, (*Rm)[3] = ax->Rm, *over = ax->over;
+    const dReal *nl = ax->nl, (*Rm)[4] = ax->Rm, *over = ax->over;
     dReal best = known, cut = dInfinity, rounding = 0, per_q = dInfinity;
     if (ax->rotations && known < dInfinity) {
         const dReal *T = ax->T, *a = ax->a, *b = ax->b;
@@ -385,7 +455,7 @@ static dReal box_clearance(const box_axes *ax, dReal known, int known_axis)
 // through the faces of the contact's own axis (code), so when the deepest
 // point reaches that, the full clearance is not needed. normal is the
 // contact normal (into o1).
-static int box_face_contacts(const box_face *f, const dReal normal[3], const box_axes *ax,
+BOX_CLONES static int box_face_contacts(const box_face *f, const dReal normal[3], const box_axes *ax,
                              int code, dxGeom *o1, dxGeom *o2, int max, dContactGeom *out,
                              int skip)
 {
@@ -473,31 +543,6 @@ static void report_axis(const dReal normal[3], dReal depth, int code, dReal norm
     *code_out = code;
 }
 
-// Overlap of the boxes along face axis x (0-2: A_x, 3-5: B_(x-3)), and
-// box 2's offset along it (proj); box_box's names.
-BOX_INLINE dReal face_overlap(int x, const dReal a[3], const dReal b[3], const dReal T[3],
-                                 const dReal Rm[3][3], const dReal Q[3][3], dReal *proj)
-{
-    if (x < 3) {
-        *proj = T[x];
-        return a[x] + b[0] * Q[x][0] + b[1] * Q[x][1] + b[2] * Q[x][2] - dFabs(T[x]);
-    }
-    int j = x - 3;
-    *proj = T[0] * Rm[0][j] + T[1] * Rm[1][j] + T[2] * Rm[2][j];
-    return a[0] * Q[0][j] + a[1] * Q[1][j] + a[2] * Q[2][j] + b[j] - dFabs(*proj);
-}
-
-// The same, unnormalised, along edge axis 6 + 3 i + j (A_i x B_j, in box
-// 1's frame e_i x Rm[.][j]).
-BOX_INLINE dReal edge_overlap(int i, int j, const dReal a[3], const dReal b[3], const dReal T[3],
-                              const dReal Rm[3][3], const dReal Q[3][3], dReal *proj)
-{
-    int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-    *proj = T[i2] * Rm[i1][j] - T[i1] * Rm[i2][j];
-    dReal radii = a[i1] * Q[i2][j] + a[i2] * Q[i1][j] + b[j1] * Q[i][j2] + b[j2] * Q[i][j1];
-    return radii - dFabs(*proj);
-}
-
 // An edge axis' length may vanish, so its overlap separates only below this
 // margin beyond rounding (or below 0 where the axis is well defined).
 BOX_INLINE dReal edge_slack(int i, int j, const dReal a[3], const dReal b[3])
@@ -505,23 +550,22 @@ BOX_INLINE dReal edge_slack(int i, int j, const dReal a[3], const dReal b[3])
     return -BOX_AXIS_SLACK * (a[(i + 1) % 3] + a[(i + 2) % 3] + b[(j + 1) % 3] + b[(j + 2) % 3]);
 }
 
-// Whether axis x alone parts the boxes by box_box's own tests (for the
-// remembered axis: exactly when box_box would return 0 on reaching it).
-static int axis_parts(int x, const dReal a[3], const dReal b[3], const dReal T[3],
-                      const dReal Rm[3][3], const dReal Q[3][3])
+// Whether axis x alone parts the boxes by box_box's own tests, from its
+// overlaps (for the remembered axis: exactly when box_box would return 0 on
+// reaching it).
+static int axis_parts(int x, const dReal over[15], const dReal a[3], const dReal b[3],
+                      const dReal Rm[3][4])
 {
-    dReal proj;
-    if (x < 6) return face_overlap(x, a, b, T, Rm, Q, &proj) < 0;
+    if (x < 6) return over[x] < 0;
     int i = (x - 6) / 3, j = (x - 6) % 3, i1 = (i + 1) % 3, i2 = (i + 2) % 3;
-    dReal over = edge_overlap(i, j, a, b, T, Rm, Q, &proj);
-    if (over < edge_slack(i, j, a, b)) return 1;
+    if (over[x] < edge_slack(i, j, a, b)) return 1;
     dReal len2 = Rm[i1][j] * Rm[i1][j] + Rm[i2][j] * Rm[i2][j];
-    return len2 > DX_COLLIDE_EPS && over / dSqrt(len2) < 0;
+    return len2 > DX_COLLIDE_EPS && over[x] / dSqrt(len2) < 0;
 }
 
 // Whether box_box's shortcuts may take R1 and R2 for rotations: every entry
 // of theirs and of Rm (its absolute values Q) at most 1.25 in magnitude.
-static int rotation_like(const dReal *R1, const dReal *R2, const dReal Q[3][3])
+static int rotation_like(const dReal *R1, const dReal *R2, const dReal Q[3][4])
 {
     for (int i = 0; i < 3; i++) {
         for (int j = 0; j < 3; j++) {
@@ -530,6 +574,52 @@ static int rotation_like(const dReal *R1, const dReal *R2, const dReal Q[3][3])
         }
     }
     return 1;
+}
+
+// Box 1's frame (axes A_i, half sides a) for box_box: box 2's centre T,
+// Rm_ij = A_i . B_j and Q = |Rm| (rows of four, the fourth unused), and
+// along each of the 15 axes (0-2 A_i, 3-5 B_j, 6 + 3 i + j A_i x B_j,
+// unnormalised) the overlap of the boxes (over) and box 2's offset (proj).
+// Each is computed as the plain formulas say, term for term in the same
+// order, four lanes at a time (the same numbers to the bit): T_i = A_i . d;
+// over = a_i + sum_j b_j Q_ij - |T_i| and proj = T_i along A_i;
+// proj = sum_i T_i Rm_ij, over = sum_i a_i Q_ij + b_j - |proj| along B_j;
+// along A_i x B_j, proj = T_i2 Rm_i1j - T_i1 Rm_i2j and over = a_i1 Q_i2j
+// + a_i2 Q_i1j + b_j1 Q_ij2 + b_j2 Q_ij1 - |proj| (i1, i2 and j1, j2 the
+// next indices mod 3). over and proj have room for 16.
+BOX_INLINE void box_frame(const dReal *R1, const dReal *R2, const dReal d[3], const dReal a[3],
+                          const dReal b[3], dReal T[4], dReal Rm[3][4], dReal Q[3][4],
+                          dReal over[16], dReal proj[16])
+{
+    box_v4 r1[3], r2[3], row[3], qrow[3], qcol[3];
+    for (int q = 0; q < 3; q++) {
+        r1[q] = v4_load(R1 + 4 * q);
+        r2[q] = v4_load(R2 + 4 * q);
+    }
+    box_v4 t = r1[0] * d[0] + r1[1] * d[1] + r1[2] * d[2];
+    for (int i = 0; i < 3; i++) {
+        row[i] = R1[i] * r2[0] + R1[4 + i] * r2[1] + R1[8 + i] * r2[2];   // Rm_i.
+        qrow[i] = v4_abs(row[i]);
+        qcol[i] = v4_abs(R2[i] * r1[0] + R2[4 + i] * r1[1] + R2[8 + i] * r1[2]);   // Q_.i
+        v4_store(Rm[i], row[i]);
+        v4_store(Q[i], qrow[i]);
+    }
+    v4_store(T, t);
+    box_v4 av = { a[0], a[1], a[2], 0 }, bv = { b[0], b[1], b[2], 0 };
+    v4_store(proj, t);
+    v4_store(over, av + b[0] * qcol[0] + b[1] * qcol[1] + b[2] * qcol[2] - v4_abs(t));
+    box_v4 pb = T[0] * row[0] + T[1] * row[1] + T[2] * row[2];
+    v4_store(proj + 3, pb);
+    v4_store(over + 3, a[0] * qrow[0] + a[1] * qrow[1] + a[2] * qrow[2] + bv - v4_abs(pb));
+    box_v4 b1 = { b[1], b[2], b[0], 0 }, b2 = { b[2], b[0], b[1], 0 };
+    for (int i = 0; i < 3; i++) {
+        int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+        box_v4 pe = T[i2] * row[i1] - T[i1] * row[i2];
+        box_v4 radii = a[i1] * qrow[i2] + a[i2] * qrow[i1] + b1 * v4_turn2(qrow[i])
+                       + b2 * v4_turn1(qrow[i]);
+        v4_store(proj + 6 + 3 * i, pe);
+        v4_store(over + 6 + 3 * i, radii - v4_abs(pe));
+    }
 }
 
 // box_box's return when axis x parts the boxes: 0, with x noted in *apart.
@@ -563,41 +653,23 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
 {
     const dReal a[3] = { s1[0] / 2, s1[1] / 2, s1[2] / 2 };
     const dReal b[3] = { s2[0] / 2, s2[1] / 2, s2[2] / 2 };
-    dReal d[3] = { p2[0] - p1[0], p2[1] - p1[1], p2[2] - p1[2] }, T[3];
+    dReal d[3] = { p2[0] - p1[0], p2[1] - p1[1], p2[2] - p1[2] }, T[4];
     // Bounding spheres apart by more than the edge axes' slack: no axis can
     // say the boxes touch.
     dReal ra = dSqrt(dx_dot(a, a)), rb = dSqrt(dx_dot(b, b));
     dReal reach = (ra + rb) * BOX_SPHERE_MARGIN;
     if (dx_dot(d, d) > reach * reach) return 0;
-    dx_to_local(R1, d, T);
-    dReal Rm[3][3], Q[3][3];
-    for (int i = 0; i < 3; i++) {
-        for (int j = 0; j < 3; j++) {
-            Rm[i][j] = R1[i] * R2[j] + R1[4 + i] * R2[4 + j] + R1[8 + i] * R2[8 + j];
-            Q[i][j] = dFabs(Rm[i][j]);
-        }
-    }
-    // Overlap along each axis (< 0: apart), unnormalised for the edges. The
-    // loops are unrolled, so that the axes' indices are constants. An edge
-    // axis' slack is <= 0 for boxes of sides >= 0: a pair apart along it has
-    // an edge overlap < 0, and only then are the edges tested in turn.
-    dReal over[15], proj[15];
-    if (hint >= 0 && axis_parts(hint, a, b, T, Rm, Q)) return apart_by(hint, apart);
-#pragma GCC unroll 6
-    for (int x = 0; x < 6; x++) {
-        over[x] = face_overlap(x, a, b, T, Rm, Q, &proj[x]);
+    dReal Rm[3][4], Q[3][4], over[16], proj[16];
+    box_frame(R1, R2, d, a, b, T, Rm, Q, over, proj);
+    // Any negative overlap parts the boxes, the first in axis order found. An
+    // edge axis' slack is <= 0 for boxes of sides >= 0: a pair apart along it
+    // has an edge overlap < 0, and only then are the edges tested in turn.
+    if (hint >= 0 && axis_parts(hint, over, a, b, Rm)) return apart_by(hint, apart);
+    for (int x = 0; x < 6; x++)
         if (over[x] < 0) return apart_by(x, apart);
-    }
     dReal lowest = 0;
-#pragma GCC unroll 3
-    for (int i = 0; i < 3; i++) {
-#pragma GCC unroll 3
-        for (int j = 0; j < 3; j++) {
-            int x = 6 + 3 * i + j;
-            over[x] = edge_overlap(i, j, a, b, T, Rm, Q, &proj[x]);
-            if (over[x] < lowest) lowest = over[x];
-        }
-    }
+    for (int x = 6; x < 15; x++)
+        if (over[x] < lowest) lowest = over[x];
     if (lowest < 0 || (!trusted && !(a[0] >= 0 && a[1] >= 0 && a[2] >= 0 && b[0] >= 0
                                        && b[1] >= 0 && b[2] >= 0))) {
         for (int i = 0; i < 3; i++) {
@@ -717,7 +789,7 @@ static dxBoxAxisHint *find_hint(dxBox *box, const void *other)
 
 // Box-box of two geoms: box 1 remembers the axis that parted it from o2
 // (see dxBoxAxisHint) and tries it first; the result never depends on it.
-int dxCollideBoxBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)
+BOX_CLONES int dxCollideBoxBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)
 {
     dxBox *b1 = (dxBox *)o1;
     dxBoxAxisHint *e = find_hint(b1, o2);
@@ -740,7 +812,7 @@ int dxCollideBoxBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int sk
 // 1 into box 2 (the contacts' normal negated) and return_code the axis
 // (1-15, 0 if apart); the contacts get positions, depths and normals, with
 // g1 and g2 left 0.
-int dBoxBox(const dVector3 p1, const dMatrix3 R1, const dVector3 side1, const dVector3 p2,
+BOX_CLONES int dBoxBox(const dVector3 p1, const dMatrix3 R1, const dVector3 side1, const dVector3 p2,
             const dMatrix3 R2, const dVector3 side2, dVector3 normal, dReal *depth,
             int *return_code, int flags, dContactGeom *contact, int skip)
 {
