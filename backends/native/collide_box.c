@@ -28,12 +28,6 @@
 // half diagonals are apart without a look at their axes.
 #define BOX_SPHERE_MARGIN ((dReal)1.001)
 
-// A point of the clipped contact polygon in the reference face's frame.
-typedef struct clip_point {
-    dReal x, y, depth;
-    dReal t;   // pos is this far from the incident point along nf
-} clip_point;
-
 // Functions of the clipper and the axes, inlined with their constant
 // arguments (a side, an axis pair) so that their indices fold away.
 #define BOX_INLINE static inline __attribute__((always_inline))
@@ -95,6 +89,20 @@ BOX_INLINE box_v4 v4_abs(box_v4 v)
     return v;
 }
 
+// (x, y, z, 0): the fourth lane cleared with a mask, not inserted (GCC
+// inserts a 0 with a vmovq between registers that Valgrind 3.19, the
+// instruction counts' tool, cannot run).
+BOX_INLINE box_v4 v4_of3(dReal x, dReal y, dReal z)
+{
+    static const box_b4 keep3 = { -1, -1, -1, 0 };
+    box_v4 v = { x, y, z, z };
+    box_b4 bits;
+    memcpy(&bits, &v, sizeof v);
+    bits &= keep3;
+    memcpy(&v, &bits, sizeof v);
+    return v;
+}
+
 // (v1, v2, v0, v3) and (v2, v0, v1, v3): lane j gets lane j + 1 or j + 2
 // (mod 3).
 BOX_INLINE box_v4 v4_turn1(box_v4 v)
@@ -107,6 +115,12 @@ BOX_INLINE box_v4 v4_turn2(box_v4 v)
     return __builtin_shufflevector(v, v, 2, 0, 1, 3);
 }
 
+// A point of the clipped contact polygon in the reference face's frame, in
+// four lanes: x, y, its depth under the reference face, and t (pos is this
+// far from the incident point along nf).
+typedef box_v4 clip_point;
+enum { CP_X, CP_Y, CP_DEPTH, CP_T };
+
 // The part of edge p-q (offsets dp, dq from the clipping line) clip_side
 // keeps: p if inside, then the crossing if the edge crosses the line.
 BOX_INLINE void clip_edge(const clip_point *p, const clip_point *q, dReal dp, dReal dq,
@@ -115,10 +129,7 @@ BOX_INLINE void clip_edge(const clip_point *p, const clip_point *q, dReal dp, dR
     if (dp <= 0) out[(*m)++] = *p;
     if ((!capped || *m < 16) && ((dp < 0 && dq > 0) || (dp > 0 && dq < 0))) {
         dReal f = dp / (dp - dq);
-        clip_point *o = &out[(*m)++];
-        o->x = p->x + f * (q->x - p->x);
-        o->y = p->y + f * (q->y - p->y);
-        o->depth = p->depth + f * (q->depth - p->depth);
+        out[(*m)++] = *p + f * (*q - *p);   // x, y and depth (t: not yet set)
     }
 }
 
@@ -133,7 +144,7 @@ BOX_INLINE int clip_side(clip_point *poly, int n, int axis, int sg, dReal h, cli
     dReal off[17];
     int outside = 0;
     for (int i = 0; i < n; i++) {
-        dReal c = axis ? poly[i].y : poly[i].x;
+        dReal c = poly[i][axis];
         off[i] = (sg > 0 ? c : -c) - h;
         outside |= !(off[i] <= 0);
     }
@@ -168,7 +179,7 @@ BOX_INLINE void clip_step(clip_point **cur, clip_point **spare, int *n, int axis
 // deepest, then each time the point farthest from those already chosen, so
 // the kept points spread over the polygon. near[i] is point i's squared
 // distance to the nearest chosen one, brought up to date with each choice.
-static void cull_points(clip_point *pts, int n, int max)
+BOX_INLINE void cull_points(clip_point *pts, int n, int max)
 {
     dReal near[16];
     for (int i = 1; i < n; i++) near[i] = dInfinity;
@@ -176,8 +187,8 @@ static void cull_points(clip_point *pts, int n, int max)
         int best = k;
         dReal best_d = -1;
         for (int i = k; i < n; i++) {
-            dReal dx = pts[i].x - pts[k - 1].x, dy = pts[i].y - pts[k - 1].y;
-            dReal d2 = dx * dx + dy * dy;
+            clip_point d = pts[i] - pts[k - 1];
+            dReal d2 = d[CP_X] * d[CP_X] + d[CP_Y] * d[CP_Y];
             if (d2 < near[i]) near[i] = d2;
             if (near[i] > best_d) {
                 best_d = near[i];
@@ -255,13 +266,14 @@ typedef struct box_face {
     const dReal *pr, *Rr, *hr, *pi, *Ri, *hi;
     int rotations;
     dReal hk, h1, h2;
-    dReal nf[3], U1[3], U2[3], C[3][3], c[3], e[3];
+    box_v4 nf, U1, U2;   // fourth lanes 0
+    dReal C[3][3], c[3], e[3];
 } box_face;
 
 // The incident box's face most against nf, clipped to the reference face's
 // rectangle (in the frame U1, U2, relative to pr): the clipped polygon is
 // written to a (at most 16 points, room for 17), its count returned.
-static int box_clip_incident(const box_face *f, clip_point a[17])
+BOX_INLINE int box_clip_incident(const box_face *f, clip_point a[17])
 {
     const dReal *hi = f->hi, (*C)[3] = f->C;
     dReal d0 = dFabs(C[0][2]), d1 = dFabs(C[1][2]), d2 = dFabs(C[2][2]);
@@ -269,29 +281,27 @@ static int box_clip_incident(const box_face *f, clip_point a[17])
     if (d2 > (j ? d1 : d0)) j = 2;
     int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
     // The incident face's centre (rel + sgn hi_j B_j) and half edges
-    // (hi B_j1, hi B_j2) in the reference face's frame (x, y, height).
+    // (hi B_j1, hi B_j2) in the reference face's frame (x, y, height); the
+    // corners centre +- u +- v (exact signs), the height turned to a depth.
     dReal sgn = C[j][2] > 0 ? -hi[j] : hi[j];
-    dReal cx = f->c[0] + sgn * C[j][0];
-    dReal cy = f->c[1] + sgn * C[j][1];
-    dReal cz = f->c[2] + sgn * C[j][2];
-    dReal ux = hi[j1] * C[j1][0], uy = hi[j1] * C[j1][1], uz = hi[j1] * C[j1][2];
-    dReal vx = hi[j2] * C[j2][0], vy = hi[j2] * C[j2][1], vz = hi[j2] * C[j2][2];
-    dReal hk = f->hk;
-    static const dReal corner[4][2] = { { 1, 1 }, { -1, 1 }, { -1, -1 }, { 1, -1 } };
-    for (int v = 0; v < 4; v++) {
-        dReal s = corner[v][0], t = corner[v][1];
-        a[v].x = cx + s * ux + t * vx;
-        a[v].y = cy + s * uy + t * vy;
-        a[v].depth = hk - (cz + s * uz + t * vz);
-    }
+    box_v4 cv = v4_of3(f->c[0] + sgn * C[j][0], f->c[1] + sgn * C[j][1], f->c[2] + sgn * C[j][2]);
+    box_v4 u = v4_of3(hi[j1] * C[j1][0], hi[j1] * C[j1][1], hi[j1] * C[j1][2]);
+    box_v4 v = v4_of3(hi[j2] * C[j2][0], hi[j2] * C[j2][1], hi[j2] * C[j2][2]);
+    box_v4 cu = cv + u, cmu = cv - u;
+    a[0] = cu + v;
+    a[1] = cmu + v;
+    a[2] = cmu - v;
+    a[3] = cu - v;
+    for (int k = 0; k < 4; k++) a[k][CP_DEPTH] = f->hk - a[k][CP_DEPTH];
     clip_point b[17], *cur = a, *spare = b;
     int n = 4;
     dReal h1 = f->h1, h2 = f->h2;
-    clip_step(&cur, &spare, &n, 0, 1, h1);
-    clip_step(&cur, &spare, &n, 0, -1, h1);
-    clip_step(&cur, &spare, &n, 1, 1, h2);
-    clip_step(&cur, &spare, &n, 1, -1, h2);
-    if (cur != a) memcpy(a, cur, (size_t)n * sizeof *a);
+    clip_step(&cur, &spare, &n, CP_X, 1, h1);
+    clip_step(&cur, &spare, &n, CP_X, -1, h1);
+    clip_step(&cur, &spare, &n, CP_Y, 1, h2);
+    clip_step(&cur, &spare, &n, CP_Y, -1, h2);
+    if (cur != a)
+        for (int k = 0; k < n; k++) a[k] = cur[k];
     return n;
 }
 
@@ -301,9 +311,9 @@ static int box_clip_incident(const box_face *f, clip_point a[17])
 // one (rel = pr - pi); pos will be the middle of that stretch (t). Deep
 // overlaps can clip points past the far side of a thin reference box: they
 // are in neither box and dropped. The deepest is moved first.
-static int box_keep_overlapping(const box_face *f, clip_point *a, int n, const dReal rel[3])
+BOX_INLINE int box_keep_overlapping(const box_face *f, clip_point *a, int n, box_v4 rel)
 {
-    const dReal *hr = f->hr, *hi = f->hi, *nf = f->nf, *U1 = f->U1, *U2 = f->U2, *Ri = f->Ri;
+    const dReal *hr = f->hr, *hi = f->hi, *Ri = f->Ri;
     const dReal (*C)[3] = f->C, hk = f->hk;
     // The exit through the incident box's faces of axis m (t_m, where
     // B_m . (q + t nf) = +-hi_m) is >= depth exactly when the point over P
@@ -315,47 +325,55 @@ static int box_keep_overlapping(const box_face *f, clip_point *a, int n, const d
     // computed as defined. Axes whose g_m clears twice the margin over the
     // whole reference face (|x| <= h1, |y| <= h2, with the margin for the
     // clipped points' rounding) are not looked at again (nor those
-    // parallel to nf: no exit through their faces).
+    // parallel to nf: no exit through their faces). The three axes' g_m and
+    // t_m are lanes of fours; the least exit is taken in axis order.
     dReal scale = dFabs(rel[0]) + dFabs(rel[1]) + dFabs(rel[2]) + hr[0] + hr[1] + hr[2]
                   + 2 * (hi[0] + hi[1] + hi[2]);
     dReal margin = f->rotations ? BOX_EXIT_MARGIN * scale : dInfinity;   // else: as defined
     dReal X = f->h1 + margin, Y = f->h2 + margin;
-    dReal g0[3], gx[3], gy[3];
+    dReal lanes[5][4] = { { 0 }, { 0 }, { 0 }, { 0 }, { 1, 1, 1, 1 } };   // g0, gx, gy, face, dot
     int act[3], na = 0;
     for (int m = 0; m < 3; m++) {
+        act[m] = 0;
         if (C[m][2] == 0) continue;
         dReal sg = C[m][2] > 0 ? 1 : -1;
-        g0[na] = hi[m] - sg * (f->e[m] + hk * C[m][2]);
-        gx[na] = -sg * C[m][0];
-        gy[na] = -sg * C[m][1];
-        if (g0[na] - dFabs(gx[na]) * X - dFabs(gy[na]) * Y > 2 * margin) continue;
-        act[na++] = m;
+        dReal g0 = hi[m] - sg * (f->e[m] + hk * C[m][2]), gx = -sg * C[m][0], gy = -sg * C[m][1];
+        if (g0 - dFabs(gx) * X - dFabs(gy) * Y > 2 * margin) continue;
+        lanes[0][m] = g0;
+        lanes[1][m] = gx;
+        lanes[2][m] = gy;
+        lanes[3][m] = C[m][2] > 0 ? hi[m] : -hi[m];
+        lanes[4][m] = C[m][2];
+        act[m] = 1;
+        na++;
     }
+    box_v4 g0 = v4_load(lanes[0]), gx = v4_load(lanes[1]), gy = v4_load(lanes[2]);
+    box_v4 face = v4_load(lanes[3]), dot = v4_load(lanes[4]);
+    box_v4 ri0 = v4_load(Ri), ri1 = v4_load(Ri + 4), ri2 = v4_load(Ri + 8);
     int kept = 0, deepest = 0;
     for (int i = 0; i < n; i++) {
-        dReal depth = a[i].depth;
+        clip_point p = a[i];
+        dReal depth = p[CP_DEPTH];
         if (depth < 0) continue;
-        dReal x = a[i].x, y = a[i].y, exit = dInfinity, q[3];
-        int have_q = 0;
-        for (int r = 0; r < na; r++) {
-            if (g0[r] + x * gx[r] + y * gy[r] > margin) continue;
-            if (!have_q) {
-                dReal up = hk - depth;
-                for (int c = 0; c < 3; c++) q[c] = rel[c] + x * U1[c] + y * U2[c] + up * nf[c];
-                have_q = 1;
+        dReal x = p[CP_X], y = p[CP_Y], exit = dInfinity;
+        if (na) {
+            box_v4 g = g0 + x * gx + y * gy;
+            int need[3];
+            for (int m = 0; m < 3; m++) need[m] = act[m] && !(g[m] > margin);
+            if (need[0] | need[1] | need[2]) {
+                box_v4 q = rel + x * f->U1 + y * f->U2 + (hk - depth) * f->nf;
+                box_v4 t = (face - (ri0 * q[0] + ri1 * q[1] + ri2 * q[2])) / dot;
+                for (int m = 0; m < 3; m++)
+                    if (need[m] && t[m] < exit) exit = t[m];
             }
-            int m = act[r];
-            dReal dot = C[m][2], from = Ri[m] * q[0] + Ri[4 + m] * q[1] + Ri[8 + m] * q[2];
-            dReal t = ((dot > 0 ? hi[m] : -hi[m]) - from) / dot;
-            if (t < exit) exit = t;
         }
         if (exit < 0) exit = 0;   // clipped points lie on the incident face: rounding
         dReal lo = depth - 2 * hk > 0 ? depth - 2 * hk : 0;
         dReal top = exit < depth ? exit : depth;
         if (top < lo) continue;
-        if (kept != i) a[kept] = a[i];
-        a[kept].t = (lo + top) / 2;
-        if (a[kept].depth > a[deepest].depth) deepest = kept;
+        p[CP_T] = (lo + top) / 2;
+        a[kept] = p;
+        if (depth > a[deepest][CP_DEPTH]) deepest = kept;
         kept++;
     }
     if (kept > 0) {
@@ -459,10 +477,11 @@ BOX_CLONES static int box_face_contacts(const box_face *f, const dReal normal[3]
                              int code, dxGeom *o1, dxGeom *o2, int max, dContactGeom *out,
                              int skip)
 {
-    const dReal *pr = f->pr, *pi = f->pi, *U1 = f->U1, *U2 = f->U2, *nf = f->nf;
+    const dReal *pr = f->pr, *pi = f->pi;
     clip_point a[17];
     int n = box_clip_incident(f, a);
-    dReal rel[3] = { pr[0] - pi[0], pr[1] - pi[1], pr[2] - pi[2] };
+    box_v4 prv = v4_of3(pr[0], pr[1], pr[2]);
+    box_v4 rel = v4_of3(pr[0] - pi[0], pr[1] - pi[1], pr[2] - pi[2]);
     int kept = box_keep_overlapping(f, a, n, rel);
     if (kept == 0) {   // the separating axis says they overlap: find a point
         dReal pos[3];
@@ -471,17 +490,27 @@ BOX_CLONES static int box_face_contacts(const box_face *f, const dReal normal[3]
         return 1;
     }
     dReal own = exit_along(ax, code, face_dot(ax, code));
-    dReal clear = a[0].depth < own ? box_clearance(ax, own, code) : a[0].depth;
+    dReal deepest = a[0][CP_DEPTH];
+    dReal clear = deepest < own ? box_clearance(ax, own, code) : deepest;
     if (kept > max) {
         cull_points(a, kept, max);
         kept = max;
     }
+    // pos = pr + x U1 + y U2 + (hk - depth + t) nf, lane by lane; the fourth
+    // lanes of pos and normal (dVector3's padding) get 0.
+    box_v4 nv = v4_of3(normal[0], normal[1], normal[2]);
     dReal hk = f->hk;
     for (int c = 0; c < kept; c++) {
-        dReal pos[3], up = hk - a[c].depth + a[c].t;
-        for (int i = 0; i < 3; i++) pos[i] = pr[i] + a[c].x * U1[i] + a[c].y * U2[i] + up * nf[i];
-        dReal depth = c == 0 && a[0].depth < clear ? clear : a[c].depth;
-        dx_put_contact(out, c, skip, pos, normal, depth, o1, o2);
+        clip_point p = a[c];
+        dReal up = hk - p[CP_DEPTH] + p[CP_T];
+        box_v4 pos = prv + p[CP_X] * f->U1 + p[CP_Y] * f->U2 + up * f->nf;
+        dContactGeom *k = dxContactAt(out, c, skip);
+        v4_store(k->pos, pos);
+        v4_store(k->normal, nv);
+        k->depth = c == 0 && deepest < clear ? clear : p[CP_DEPTH];
+        k->g1 = o1;
+        k->g2 = o2;
+        k->side1 = k->side2 = -1;
     }
     return kept;
 }
@@ -605,13 +634,13 @@ BOX_INLINE void box_frame(const dReal *R1, const dReal *R2, const dReal d[3], co
         v4_store(Q[i], qrow[i]);
     }
     v4_store(T, t);
-    box_v4 av = { a[0], a[1], a[2], 0 }, bv = { b[0], b[1], b[2], 0 };
+    box_v4 av = v4_of3(a[0], a[1], a[2]), bv = v4_of3(b[0], b[1], b[2]);
     v4_store(proj, t);
     v4_store(over, av + b[0] * qcol[0] + b[1] * qcol[1] + b[2] * qcol[2] - v4_abs(t));
     box_v4 pb = T[0] * row[0] + T[1] * row[1] + T[2] * row[2];
     v4_store(proj + 3, pb);
     v4_store(over + 3, a[0] * qrow[0] + a[1] * qrow[1] + a[2] * qrow[2] + bv - v4_abs(pb));
-    box_v4 b1 = { b[1], b[2], b[0], 0 }, b2 = { b[2], b[0], b[1], 0 };
+    box_v4 b1 = v4_of3(b[1], b[2], b[0]), b2 = v4_of3(b[2], b[0], b[1]);
     for (int i = 0; i < 3; i++) {
         int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
         box_v4 pe = T[i2] * row[i1] - T[i1] * row[i2];
@@ -717,6 +746,7 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
     dReal normal[3];
     if (code < 6) {
         box_face f;
+        f.nf[3] = f.U1[3] = f.U2[3] = 0;
         box_axes ax = { .Rm = Rm, .over = over, .proj = proj, .T = T, .a = a, .b = b,
                         .rotations = rotations };
         dReal sg = proj[code] < 0 ? 1 : -1;
@@ -728,9 +758,9 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
             for (int q = 0; q < 3; q++) {
                 normal[q] = sg * R1[4 * q + k];
                 f.nf[q] = -normal[q];
+                f.U1[q] = R1[4 * q + k1];
+                f.U2[q] = R1[4 * q + k2];
             }
-            dx_axis(R1, k1, f.U1);
-            dx_axis(R1, k2, f.U2);
             for (int m = 0; m < 3; m++) {
                 f.C[m][0] = Rm[k1][m];
                 f.C[m][1] = Rm[k2][m];
@@ -747,18 +777,20 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
             f.pr = p2, f.Rr = R2, f.hr = b, f.pi = p1, f.Ri = R1, f.hi = a;
             f.rotations = rotations;
             f.hk = b[k], f.h1 = b[k1], f.h2 = b[k2];
-            for (int q = 0; q < 3; q++) normal[q] = f.nf[q] = sg * R2[4 * q + k];
-            dx_axis(R2, k1, f.U1);
-            dx_axis(R2, k2, f.U2);
+            for (int q = 0; q < 3; q++) {
+                normal[q] = f.nf[q] = sg * R2[4 * q + k];
+                f.U1[q] = R2[4 * q + k1];
+                f.U2[q] = R2[4 * q + k2];
+            }
             for (int m = 0; m < 3; m++) {
                 f.C[m][0] = Rm[m][k1];
                 f.C[m][1] = Rm[m][k2];
                 f.C[m][2] = sg * Rm[m][k];
                 f.e[m] = T[m];
             }
-            f.c[0] = -dx_dot(d, f.U1);
-            f.c[1] = -dx_dot(d, f.U2);
-            f.c[2] = -dx_dot(d, f.nf);
+            f.c[0] = -(d[0] * f.U1[0] + d[1] * f.U1[1] + d[2] * f.U1[2]);
+            f.c[1] = -(d[0] * f.U2[0] + d[1] * f.U2[1] + d[2] * f.U2[2]);
+            f.c[2] = -(d[0] * f.nf[0] + d[1] * f.nf[1] + d[2] * f.nf[2]);
         }
         dx_to_local(R1, normal, ax.nl);
         report_axis(normal, best, code, normal_out, depth_out, code_out);
