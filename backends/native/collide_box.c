@@ -103,6 +103,17 @@ BOX_INLINE box_v4 v4_of3(dReal x, dReal y, dReal z)
     return v;
 }
 
+// Lane by lane, a where mask (all bits set) else b.
+BOX_INLINE box_v4 v4_select(box_b4 mask, box_v4 a, box_v4 b)
+{
+    box_b4 x, y;
+    memcpy(&x, &a, sizeof a);
+    memcpy(&y, &b, sizeof b);
+    x = (x & mask) | (y & ~mask);
+    memcpy(&a, &x, sizeof a);
+    return a;
+}
+
 // (v1, v2, v0, v3) and (v2, v0, v1, v3): lane j gets lane j + 1 or j + 2
 // (mod 3).
 BOX_INLINE box_v4 v4_turn1(box_v4 v)
@@ -331,10 +342,11 @@ BOX_INLINE int box_keep_overlapping(const box_face *f, clip_point *a, int n, box
                   + 2 * (hi[0] + hi[1] + hi[2]);
     dReal margin = f->rotations ? BOX_EXIT_MARGIN * scale : dInfinity;   // else: as defined
     dReal X = f->h1 + margin, Y = f->h2 + margin;
-    dReal lanes[5][4] = { { 0 }, { 0 }, { 0 }, { 0 }, { 1, 1, 1, 1 } };   // g0, gx, gy, face, dot
-    int act[3], na = 0;
+    // Lanes of axes not looked at: t_m = (inf - from) / 1, never the least.
+    dReal lanes[5][4] = { { 0 }, { 0 }, { 0 }, { dInfinity, dInfinity, dInfinity, dInfinity },
+                          { 1, 1, 1, 1 } };   // g0, gx, gy, face, dot
+    int na = 0;
     for (int m = 0; m < 3; m++) {
-        act[m] = 0;
         if (C[m][2] == 0) continue;
         dReal sg = C[m][2] > 0 ? 1 : -1;
         dReal g0 = hi[m] - sg * (f->e[m] + hk * C[m][2]), gx = -sg * C[m][0], gy = -sg * C[m][1];
@@ -344,28 +356,25 @@ BOX_INLINE int box_keep_overlapping(const box_face *f, clip_point *a, int n, box
         lanes[2][m] = gy;
         lanes[3][m] = C[m][2] > 0 ? hi[m] : -hi[m];
         lanes[4][m] = C[m][2];
-        act[m] = 1;
         na++;
     }
     box_v4 g0 = v4_load(lanes[0]), gx = v4_load(lanes[1]), gy = v4_load(lanes[2]);
     box_v4 face = v4_load(lanes[3]), dot = v4_load(lanes[4]);
     box_v4 ri0 = v4_load(Ri), ri1 = v4_load(Ri + 4), ri2 = v4_load(Ri + 8);
+    box_v4 margins = { margin, margin, margin, margin };
+    box_v4 inf = { dInfinity, dInfinity, dInfinity, dInfinity };
     int kept = 0, deepest = 0;
     for (int i = 0; i < n; i++) {
         clip_point p = a[i];
         dReal depth = p[CP_DEPTH];
         if (depth < 0) continue;
         dReal x = p[CP_X], y = p[CP_Y], exit = dInfinity;
-        if (na) {
-            box_v4 g = g0 + x * gx + y * gy;
-            int need[3];
-            for (int m = 0; m < 3; m++) need[m] = act[m] && !(g[m] > margin);
-            if (need[0] | need[1] | need[2]) {
-                box_v4 q = rel + x * f->U1 + y * f->U2 + (hk - depth) * f->nf;
-                box_v4 t = (face - (ri0 * q[0] + ri1 * q[1] + ri2 * q[2])) / dot;
-                for (int m = 0; m < 3; m++)
-                    if (need[m] && t[m] < exit) exit = t[m];
-            }
+        if (na) {   // t_m where g_m > margin replaced by inf
+            box_v4 q = rel + x * f->U1 + y * f->U2 + (hk - depth) * f->nf;
+            box_v4 t = (face - (ri0 * q[0] + ri1 * q[1] + ri2 * q[2])) / dot;
+            t = v4_select(g0 + x * gx + y * gy > margins, inf, t);
+            for (int m = 0; m < 3; m++)
+                if (t[m] < exit) exit = t[m];
         }
         if (exit < 0) exit = 0;   // clipped points lie on the incident face: rounding
         dReal lo = depth - 2 * hk > 0 ? depth - 2 * hk : 0;
