@@ -24,6 +24,15 @@
 #else
 #define BOX_EXIT_MARGIN ((dReal)1e-10)
 #endif
+// edges_lose's margin for rounding (relative), and the range of overlaps
+// (BOX_SQUARE_RANGE to its inverse) whose squares it takes.
+#ifdef dSINGLE
+#define BOX_SQUARE_MARGIN ((dReal)1e-4)
+#define BOX_SQUARE_RANGE ((dReal)1e-15)
+#else
+#define BOX_SQUARE_MARGIN ((dReal)1e-9)
+#define BOX_SQUARE_RANGE ((dReal)1e-100)
+#endif
 // Boxes whose centres are farther apart than this times the sum of their
 // half diagonals are apart without a look at their axes.
 #define BOX_SPHERE_MARGIN ((dReal)1.001)
@@ -660,6 +669,30 @@ BOX_INLINE void box_frame(const dReal *R1, const dReal *R2, const dReal d[3], co
     }
 }
 
+// Whether every edge axis (of overlap >= 0, R1 and R2 rotations) loses to
+// the best face axis, of overlap best, in box_box's choice: those of
+// length len <= sqrt(DX_COLLIDE_EPS) are left out there, and the others
+// have o = over / len with o BOX_EDGE_PREFERENCE >= best when (over
+// BOX_EDGE_PREFERENCE)^2 >= best^2 len^2 with a margin (BOX_SQUARE_MARGIN,
+// relative) for the rounding of both sides and of o (a few units in the
+// last place, far less): o >= 0 is not apart either, so box_box's loop
+// over the edges would change nothing. Squares of best between
+// BOX_SQUARE_RANGE and its inverse stay clear of underflow and overflow.
+BOX_INLINE int edges_lose(const dReal over[16], const dReal Rm[3][4], dReal best)
+{
+    if (!(best > BOX_SQUARE_RANGE && best < 1 / BOX_SQUARE_RANGE)) return 0;
+    box_v4 r[3] = { v4_load(Rm[0]), v4_load(Rm[1]), v4_load(Rm[2]) };
+    dReal b2 = best * best * (1 + BOX_SQUARE_MARGIN);
+    box_v4 eps = { DX_COLLIDE_EPS, DX_COLLIDE_EPS, DX_COLLIDE_EPS, DX_COLLIDE_EPS };
+    box_b4 lose = { -1, -1, -1, -1 };
+    for (int i = 0; i < 3; i++) {
+        box_v4 l2 = r[(i + 1) % 3] * r[(i + 1) % 3] + r[(i + 2) % 3] * r[(i + 2) % 3];
+        box_v4 o = v4_load(over + 6 + 3 * i) * BOX_EDGE_PREFERENCE;
+        lose &= (l2 <= eps) | (o * o >= b2 * l2);
+    }
+    return lose[0] & lose[1] & lose[2] & 1;
+}
+
 // box_box's return when axis x parts the boxes: 0, with x noted in *apart.
 static inline int apart_by(int x, int *apart)
 {
@@ -729,8 +762,9 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
     dReal best_edge = dInfinity, edge_len = 1;
     int rotations = trusted || rotation_like(R1, R2, Q);
     dReal bound = rotations ? 2 * over[code] : dInfinity;
+    int edges = !(rotations && lowest >= 0 && edges_lose(over, Rm, over[code]));
 #pragma GCC unroll 3
-    for (int i = 0; i < 3; i++) {
+    for (int i = 0; i < 3 && edges; i++) {
 #pragma GCC unroll 3
         for (int j = 0; j < 3; j++) {
             int x = 6 + 3 * i + j, i1 = (i + 1) % 3, i2 = (i + 2) % 3;
