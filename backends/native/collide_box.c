@@ -141,58 +141,74 @@ BOX_INLINE box_v4 v4_turn2(box_v4 v)
 typedef box_v4 clip_point;
 enum { CP_X, CP_Y, CP_DEPTH, CP_T };
 
-// The part of edge p-q (offsets dp, dq from the clipping line) clip_side
-// keeps: p if inside, then the crossing if the edge crosses the line.
-BOX_INLINE void clip_edge(const clip_point *p, const clip_point *q, dReal dp, dReal dq,
-                          clip_point *out, int *m, int capped)
+// The reference face's rectangle |x| <= h1, |y| <= h2 as four clipping
+// lines, clipped against in this order: x <= h1, -x <= h1, y <= h2,
+// -y <= h2. A point's offsets from them (> 0 outside) are the lanes of
+// (x, x, y, y) sg - h, with sg = (1, -1, 1, -1) (exact signs) and
+// h = (h1, h1, h2, h2).
+typedef struct clip_rect {
+    box_v4 sg, h;
+} clip_rect;
+
+BOX_INLINE box_v4 side_offsets(const clip_rect *r, clip_point p)
 {
-    if (dp <= 0) out[(*m)++] = *p;
-    if ((!capped || *m < 16) && ((dp < 0 && dq > 0) || (dp > 0 && dq < 0))) {
+    return __builtin_shufflevector(p, p, CP_X, CP_X, CP_Y, CP_Y) * r->sg - r->h;
+}
+
+// The lines a point with offsets off is not inside of (all bits set), NaN
+// counted as outside.
+BOX_INLINE box_b4 outside_of(box_v4 off)
+{
+    box_v4 zero = { 0, 0, 0, 0 };
+    return ~(off <= zero);
+}
+
+// The part of edge p-q (line offsets dp, dq) clip_side keeps, written at
+// *o (offsets at *oo, their outside_of ored into *mask): p if inside, then
+// the crossing if the edge crosses the line (with room for it: room is 0
+// for none). Points on the line are kept once and not duplicated by the
+// crossing test.
+BOX_INLINE void clip_edge(const clip_rect *r, const clip_point *p, const box_v4 *po, dReal dp,
+                          dReal dq, clip_point **o, box_v4 **oo, box_b4 *mask, int room)
+{
+    if (dp <= 0) {
+        *(*o)++ = *p;
+        *(*oo)++ = *po;
+        *mask |= outside_of(*po);
+        room--;
+    }
+    if (room > 0 && ((dp < 0 && dq > 0) || (dp > 0 && dq < 0))) {
         dReal f = dp / (dp - dq);
-        out[(*m)++] = *p + f * (*q - *p);   // x, y and depth (t: not yet set)
+        clip_point c = *p + f * (p[1] - *p);   // x, y, depth (t: unset)
+        box_v4 co = side_offsets(r, c);
+        *(*o)++ = c;
+        *(*oo)++ = co;
+        *mask |= outside_of(co);
     }
 }
 
-// Clip poly (n points, room for n + 1) to sg * coordinate(axis) <= h, into
-// out; returns the new count (at most n + 1 for a convex polygon, capped at
-// 16), or -1 when every point is inside already (out untouched). Points on
-// the line are kept once and not duplicated by the crossing test. sg is
-// +-1, so sg * c is exactly +-c. Each point adds at most two, so up to 8
-// points need no cap.
-BOX_INLINE int clip_side(clip_point *poly, int n, int axis, int sg, dReal h, clip_point *out)
+// Clip poly (n points, their offsets off; room for n + 1) by line s into
+// out and out_off; returns the new count (at most n + 1 for a convex
+// polygon, capped at 16) and sets *outside to the new points' outside_of
+// ored. Each point adds at most two, so up to 8 points need no cap.
+BOX_INLINE int clip_side(const clip_rect *r, clip_point *poly, box_v4 *off, int n, int s,
+                         clip_point *out, box_v4 *out_off, box_b4 *outside)
 {
-    dReal off[17];
-    int outside = 0;
-    for (int i = 0; i < n; i++) {
-        dReal c = poly[i][axis];
-        off[i] = (sg > 0 ? c : -c) - h;
-        outside |= !(off[i] <= 0);
-    }
-    if (!outside) return -1;
     poly[n] = poly[0];   // the closing edge without a wrap-around index
     off[n] = off[0];
-    int m = 0;
+    box_b4 mask = { 0, 0, 0, 0 };
+    clip_point *o = out;
+    box_v4 *oo = out_off;
     if (n <= 8) {
         for (int i = 0; i < n; i++)
-            clip_edge(&poly[i], &poly[i + 1], off[i], off[i + 1], out, &m, 0);
+            clip_edge(r, &poly[i], &off[i], off[i][s], off[i + 1][s], &o, &oo, &mask, 2);
     } else {
-        for (int i = 0; i < n && m < 16; i++)
-            clip_edge(&poly[i], &poly[i + 1], off[i], off[i + 1], out, &m, 1);
+        for (int i = 0; i < n && o - out < 16; i++)
+            clip_edge(r, &poly[i], &off[i], off[i][s], off[i + 1][s], &o, &oo, &mask,
+                      (int)(16 - (o - out)));
     }
-    return m;
-}
-
-// clip_side on *cur (*n points), the result left in *cur (swapped with
-// *spare when the side cut anything).
-BOX_INLINE void clip_step(clip_point **cur, clip_point **spare, int *n, int axis, int sg,
-                          dReal h)
-{
-    int m = clip_side(*cur, *n, axis, sg, h, *spare);
-    if (m < 0) return;
-    clip_point *t = *cur;
-    *cur = *spare;
-    *spare = t;
-    *n = m;
+    *outside = mask;
+    return (int)(o - out);
 }
 
 // Choose max of the n points (n > max, n <= 16) to keep, in place: the
@@ -313,13 +329,25 @@ BOX_INLINE int box_clip_incident(const box_face *f, clip_point a[17])
     a[2] = cmu - v;
     a[3] = cu - v;
     for (int k = 0; k < 4; k++) a[k][CP_DEPTH] = f->hk - a[k][CP_DEPTH];
+    clip_rect r = { { 1, -1, 1, -1 }, { f->h1, f->h1, f->h2, f->h2 } };
     clip_point b[17], *cur = a, *spare = b;
+    box_v4 off_a[17], off_b[17], *cur_off = off_a, *spare_off = off_b;
+    box_b4 outside = { 0, 0, 0, 0 };
+    for (int k = 0; k < 4; k++) {
+        off_a[k] = side_offsets(&r, a[k]);
+        outside |= outside_of(off_a[k]);
+    }
     int n = 4;
-    dReal h1 = f->h1, h2 = f->h2;
-    clip_step(&cur, &spare, &n, CP_X, 1, h1);
-    clip_step(&cur, &spare, &n, CP_X, -1, h1);
-    clip_step(&cur, &spare, &n, CP_Y, 1, h2);
-    clip_step(&cur, &spare, &n, CP_Y, -1, h2);
+    for (int s = 0; s < 4; s++) {   // a line every point is inside of cuts nothing
+        if (!outside[s]) continue;
+        n = clip_side(&r, cur, cur_off, n, s, spare, spare_off, &outside);
+        clip_point *t = cur;
+        cur = spare;
+        spare = t;
+        box_v4 *u = cur_off;
+        cur_off = spare_off;
+        spare_off = u;
+    }
     if (cur != a)
         for (int k = 0; k < n; k++) a[k] = cur[k];
     return n;
