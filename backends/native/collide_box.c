@@ -303,7 +303,8 @@ typedef struct box_face {
     int rotations;
     dReal hk, h1, h2;
     box_v4 nf, U1, U2;   // fourth lanes 0
-    dReal C[3][3], c[3], e[3];
+    box_v4 Cx, Cy, Cz, e;   // lanes m: C[m][0], C[m][1], C[m][2], e[m]
+    dReal c[3];
 } box_face;
 
 // The incident box's face most against nf, clipped to the reference face's
@@ -311,18 +312,19 @@ typedef struct box_face {
 // written to a (at most 16 points, room for 17), its count returned.
 BOX_INLINE int box_clip_incident(const box_face *f, clip_point a[17])
 {
-    const dReal *hi = f->hi, (*C)[3] = f->C;
-    dReal d0 = dFabs(C[0][2]), d1 = dFabs(C[1][2]), d2 = dFabs(C[2][2]);
+    const dReal *hi = f->hi;
+    box_v4 Cx = f->Cx, Cy = f->Cy, Cz = f->Cz;
+    dReal d0 = dFabs(Cz[0]), d1 = dFabs(Cz[1]), d2 = dFabs(Cz[2]);
     int j = d1 > d0 ? 1 : 0;
     if (d2 > (j ? d1 : d0)) j = 2;
     int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
     // The incident face's centre (rel + sgn hi_j B_j) and half edges
     // (hi B_j1, hi B_j2) in the reference face's frame (x, y, height); the
     // corners centre +- u +- v (exact signs), the height turned to a depth.
-    dReal sgn = C[j][2] > 0 ? -hi[j] : hi[j];
-    box_v4 cv = v4_of3(f->c[0] + sgn * C[j][0], f->c[1] + sgn * C[j][1], f->c[2] + sgn * C[j][2]);
-    box_v4 u = v4_of3(hi[j1] * C[j1][0], hi[j1] * C[j1][1], hi[j1] * C[j1][2]);
-    box_v4 v = v4_of3(hi[j2] * C[j2][0], hi[j2] * C[j2][1], hi[j2] * C[j2][2]);
+    dReal sgn = Cz[j] > 0 ? -hi[j] : hi[j];
+    box_v4 cv = v4_of3(f->c[0] + sgn * Cx[j], f->c[1] + sgn * Cy[j], f->c[2] + sgn * Cz[j]);
+    box_v4 u = v4_of3(hi[j1] * Cx[j1], hi[j1] * Cy[j1], hi[j1] * Cz[j1]);
+    box_v4 v = v4_of3(hi[j2] * Cx[j2], hi[j2] * Cy[j2], hi[j2] * Cz[j2]);
     box_v4 cu = cv + u, cmu = cv - u;
     a[0] = cu + v;
     a[1] = cmu + v;
@@ -362,7 +364,7 @@ BOX_INLINE int box_clip_incident(const box_face *f, clip_point a[17])
 BOX_INLINE int box_keep_overlapping(const box_face *f, clip_point *a, int n, box_v4 rel)
 {
     const dReal *hr = f->hr, *hi = f->hi, *Ri = f->Ri;
-    const dReal (*C)[3] = f->C, hk = f->hk;
+    const dReal hk = f->hk;
     // The exit through the incident box's faces of axis m (t_m, where
     // B_m . (q + t nf) = +-hi_m) is >= depth exactly when the point over P
     // on the reference face lies inside them: g_m = hi_m - sg_m B_m . (rel
@@ -380,26 +382,18 @@ BOX_INLINE int box_keep_overlapping(const box_face *f, clip_point *a, int n, box
     dReal margin = f->rotations ? BOX_EXIT_MARGIN * scale : dInfinity;   // else: as defined
     dReal X = f->h1 + margin, Y = f->h2 + margin;
     // Lanes of axes not looked at: t_m = (inf - from) / 1, never the least.
-    dReal lanes[5][4] = { { 0 }, { 0 }, { 0 }, { dInfinity, dInfinity, dInfinity, dInfinity },
-                          { 1, 1, 1, 1 } };   // g0, gx, gy, face, dot
-    int na = 0;
-    for (int m = 0; m < 3; m++) {
-        if (C[m][2] == 0) continue;
-        dReal sg = C[m][2] > 0 ? 1 : -1;
-        dReal g0 = hi[m] - sg * (f->e[m] + hk * C[m][2]), gx = -sg * C[m][0], gy = -sg * C[m][1];
-        if (g0 - dFabs(gx) * X - dFabs(gy) * Y > 2 * margin) continue;
-        lanes[0][m] = g0;
-        lanes[1][m] = gx;
-        lanes[2][m] = gy;
-        lanes[3][m] = C[m][2] > 0 ? hi[m] : -hi[m];
-        lanes[4][m] = C[m][2];
-        na++;
-    }
-    box_v4 g0 = v4_load(lanes[0]), gx = v4_load(lanes[1]), gy = v4_load(lanes[2]);
-    box_v4 face = v4_load(lanes[3]), dot = v4_load(lanes[4]);
-    box_v4 ri0 = v4_load(Ri), ri1 = v4_load(Ri + 4), ri2 = v4_load(Ri + 8);
-    box_v4 margins = { margin, margin, margin, margin };
+    box_v4 zero = { 0, 0, 0, 0 }, one = { 1, 1, 1, 1 };
     box_v4 inf = { dInfinity, dInfinity, dInfinity, dInfinity };
+    box_v4 hiv = v4_load(hi), Cz = f->Cz, margins = { margin, margin, margin, margin };
+    box_b4 up = Cz > zero, axes = { -1, -1, -1, 0 };
+    box_v4 sg = v4_select(up, one, -one);
+    box_v4 g0 = hiv - sg * (f->e + hk * Cz), gx = -sg * f->Cx, gy = -sg * f->Cy;
+    box_b4 act = axes & (Cz != zero)
+                 & ~(g0 - v4_abs(gx) * X - v4_abs(gy) * Y > 2 * margins);
+    box_v4 face = v4_select(act, v4_select(up, hiv, -hiv), inf);
+    box_v4 dot = v4_select(act, Cz, one);
+    int na = (int)((act[0] | act[1] | act[2]) & 1);
+    box_v4 ri0 = v4_load(Ri), ri1 = v4_load(Ri + 4), ri2 = v4_load(Ri + 8);
     int kept = 0, deepest = 0;
     for (int i = 0; i < n; i++) {
         clip_point p = a[i];
@@ -663,8 +657,8 @@ static int rotation_like(const dReal *R1, const dReal *R2, const dReal Q[3][4])
 // + a_i2 Q_i1j + b_j1 Q_ij2 + b_j2 Q_ij1 - |proj| (i1, i2 and j1, j2 the
 // next indices mod 3). over and proj have room for 16.
 BOX_INLINE void box_frame(const dReal *R1, const dReal *R2, const dReal d[3], const dReal a[3],
-                          const dReal b[3], dReal T[4], dReal Rm[3][4], dReal Q[3][4],
-                          dReal over[16], dReal proj[16])
+                          const dReal b[3], dReal T[4], dReal Rm[3][4], dReal Rc[3][4],
+                          dReal Q[3][4], dReal over[16], dReal proj[16])
 {
     box_v4 r1[3], r2[3], row[3], qrow[3], qcol[3];
     for (int q = 0; q < 3; q++) {
@@ -675,12 +669,14 @@ BOX_INLINE void box_frame(const dReal *R1, const dReal *R2, const dReal d[3], co
     for (int i = 0; i < 3; i++) {
         row[i] = R1[i] * r2[0] + R1[4 + i] * r2[1] + R1[8 + i] * r2[2];   // Rm_i.
         qrow[i] = v4_abs(row[i]);
-        qcol[i] = v4_abs(R2[i] * r1[0] + R2[4 + i] * r1[1] + R2[8 + i] * r1[2]);   // Q_.i
+        box_v4 col = R2[i] * r1[0] + R2[4 + i] * r1[1] + R2[8 + i] * r1[2];   // Rm_.i
+        qcol[i] = v4_abs(col);
+        v4_store(Rc[i], col);
         v4_store(Rm[i], row[i]);
         v4_store(Q[i], qrow[i]);
     }
     v4_store(T, t);
-    box_v4 av = v4_of3(a[0], a[1], a[2]), bv = v4_of3(b[0], b[1], b[2]);
+    box_v4 av = v4_load(a), bv = v4_load(b);
     v4_store(proj, t);
     v4_store(over, av + b[0] * qcol[0] + b[1] * qcol[1] + b[2] * qcol[2] - v4_abs(t));
     box_v4 pb = T[0] * row[0] + T[1] * row[1] + T[2] * row[2];
@@ -750,16 +746,16 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
                        int flags, dContactGeom *out, int skip, int hint, int *apart,
                        dReal normal_out[3], dReal *depth_out, int *code_out)
 {
-    const dReal a[3] = { s1[0] / 2, s1[1] / 2, s1[2] / 2 };
-    const dReal b[3] = { s2[0] / 2, s2[1] / 2, s2[2] / 2 };
+    const dReal a[4] = { s1[0] / 2, s1[1] / 2, s1[2] / 2, 0 };
+    const dReal b[4] = { s2[0] / 2, s2[1] / 2, s2[2] / 2, 0 };
     dReal d[3] = { p2[0] - p1[0], p2[1] - p1[1], p2[2] - p1[2] }, T[4];
     // Bounding spheres apart by more than the edge axes' slack: no axis can
     // say the boxes touch.
     dReal ra = dSqrt(dx_dot(a, a)), rb = dSqrt(dx_dot(b, b));
     dReal reach = (ra + rb) * BOX_SPHERE_MARGIN;
     if (dx_dot(d, d) > reach * reach) return 0;
-    dReal Rm[3][4], Q[3][4], over[16], proj[16];
-    box_frame(R1, R2, d, a, b, T, Rm, Q, over, proj);
+    dReal Rm[3][4], Rc[3][4], Q[3][4], over[16], proj[16];
+    box_frame(R1, R2, d, a, b, T, Rm, Rc, Q, over, proj);
     // Any negative overlap parts the boxes, the first in axis order found. An
     // edge axis' slack is <= 0 for boxes of sides >= 0: a pair apart along it
     // has an edge overlap < 0, and only then are the edges tested in turn.
@@ -832,14 +828,12 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
                 f.U1[q] = R1[4 * q + k1];
                 f.U2[q] = R1[4 * q + k2];
             }
-            for (int m = 0; m < 3; m++) {
-                f.C[m][0] = Rm[k1][m];
-                f.C[m][1] = Rm[k2][m];
-                f.C[m][2] = -sg * Rm[k][m];
-                // B_m . (p1 - p2): T . Rm[.][m] is it for orthonormal R1
-                f.e[m] = trusted ? -proj[3 + m]
-                                 : -(R2[m] * d[0] + R2[4 + m] * d[1] + R2[8 + m] * d[2]);
-            }
+            f.Cx = v4_load(Rm[k1]);
+            f.Cy = v4_load(Rm[k2]);
+            f.Cz = -sg * v4_load(Rm[k]);
+            // B_m . (p1 - p2): T . Rm[.][m] is it for orthonormal R1
+            f.e = trusted ? -v4_load(proj + 3)
+                          : -(d[0] * v4_load(R2) + d[1] * v4_load(R2 + 4) + d[2] * v4_load(R2 + 8));
             f.c[0] = T[k1];
             f.c[1] = T[k2];
             f.c[2] = -sg * T[k];
@@ -853,12 +847,10 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
                 f.U1[q] = R2[4 * q + k1];
                 f.U2[q] = R2[4 * q + k2];
             }
-            for (int m = 0; m < 3; m++) {
-                f.C[m][0] = Rm[m][k1];
-                f.C[m][1] = Rm[m][k2];
-                f.C[m][2] = sg * Rm[m][k];
-                f.e[m] = T[m];
-            }
+            f.Cx = v4_load(Rc[k1]);
+            f.Cy = v4_load(Rc[k2]);
+            f.Cz = sg * v4_load(Rc[k]);
+            f.e = v4_load(T);
             f.c[0] = -(d[0] * f.U1[0] + d[1] * f.U1[1] + d[2] * f.U1[2]);
             f.c[1] = -(d[0] * f.U2[0] + d[1] * f.U2[1] + d[2] * f.U2[2]);
             f.c[2] = -(d[0] * f.nf[0] + d[1] * f.nf[1] + d[2] * f.nf[2]);
