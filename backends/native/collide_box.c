@@ -907,7 +907,18 @@ BOX_CLONES int dxCollideBoxBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *
 // 1 into box 2 (the contacts' normal negated) and return_code the axis
 // (1-15, 0 if apart); the contacts get positions, depths and normals, with
 // g1 and g2 left 0.
-BOX_CLONES int dBoxBox(const dVector3 p1, const dMatrix3 R1, const dVector3 side1, const dVector3 p2,
+// dBoxBox's collider: box_box on anything, no geoms, no remembered axis.
+BOX_CLONES static int box_box_any(const dReal *p1, const dReal *R1, const dReal *s1,
+                                  const dReal *p2, const dReal *R2, const dReal *s2, int flags,
+                                  dContactGeom *out, int skip, dReal normal[3], dReal *depth,
+                                  int *code)
+{
+    int apart;
+    return box_box(p1, R1, s1, p2, R2, s2, 0, NULL, NULL, flags, out, skip, -1, &apart, normal,
+                   depth, code);
+}
+
+int dBoxBox(const dVector3 p1, const dMatrix3 R1, const dVector3 side1, const dVector3 p2,
             const dMatrix3 R2, const dVector3 side2, dVector3 normal, dReal *depth,
             int *return_code, int flags, dContactGeom *contact, int skip)
 {
@@ -918,9 +929,7 @@ BOX_CLONES int dBoxBox(const dVector3 p1, const dMatrix3 R1, const dVector3 side
                  "skip %d is smaller than sizeof(dContactGeom)", skip);
     dReal n[3] = { 0, 0, 0 }, d = 0;
     int code = -1;
-    int apart;
-    int count = box_box(p1, R1, side1, p2, R2, side2, 0, NULL, NULL, flags, contact, skip, -1,
-                        &apart, n, &d, &code);
+    int count = box_box_any(p1, R1, side1, p2, R2, side2, flags, contact, skip, n, &d, &code);
     *return_code = count > 0 ? code + 1 : 0;
     *depth = count > 0 ? d : 0;
     for (int q = 0; q < 3; q++) normal[q] = -n[q];
