@@ -885,7 +885,10 @@ static dxBoxAxisHint *find_hint(dxBox *box, const void *other)
 
 // Box-box of two geoms: box 1 remembers the axis that parted it from o2
 // (see dxBoxAxisHint) and tries it first; the result never depends on it.
-BOX_CLONES int dxCollideBoxBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)
+// Static: GCC 12 exports a target_clones function whatever -fvisibility
+// says, so dxCollideBoxBox below is a plain call into it.
+BOX_CLONES static int box_box_geoms(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out,
+                                    int skip)
 {
     dxBox *b1 = (dxBox *)o1;
     dxBoxAxisHint *e = find_hint(b1, o2);
@@ -902,6 +905,11 @@ BOX_CLONES int dxCollideBoxBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *
         e->axis = apart;
     }
     return n;
+}
+
+int dxCollideBoxBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)
+{
+    return box_box_geoms(o1, o2, flags, out, skip);
 }
 
 // ODE 0.16's public box-box test. As there, normal is the direction from box
