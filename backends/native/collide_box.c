@@ -64,10 +64,11 @@
 #pragma GCC diagnostic ignored "-Wpsabi"
 #endif
 
-// Fours of numbers (GNU vector extensions: two SSE2 operations, or one AVX
-// one in the AVX2 build of the callers): a vector's lanes are computed with
-// the same operations in the same order as the scalar formulas they stand
-// for, so their results are the same to the bit.
+// Fours of numbers (GNU vector extensions: one AVX operation in the AVX2
+// build, two SSE2 ones for doubles in the baseline): a vector's lanes are
+// computed with the same operations in the same order as the scalar
+// formulas they stand for, so their results are the same to the bit. (The
+// AVX2 build has no FMA, so no a * b + c is contracted to one rounding.)
 typedef dReal box_v4 __attribute__((vector_size(4 * sizeof(dReal))));
 #ifdef dSINGLE
 typedef int32_t box_b4 __attribute__((vector_size(4 * sizeof(int32_t))));
