@@ -4,6 +4,7 @@
 // touching faces or the closest points of two edges) and box-plane (the
 // corners below the plane).
 
+#include <stdint.h>
 #include <string.h>
 
 #include "collide_math.h"
@@ -23,82 +24,200 @@
 #else
 #define BOX_EXIT_MARGIN ((dReal)1e-10)
 #endif
+// edges_lose's margin for rounding (relative), and the range of overlaps
+// (BOX_SQUARE_RANGE to its inverse) whose squares it takes.
+#ifdef dSINGLE
+#define BOX_SQUARE_MARGIN ((dReal)1e-4)
+#define BOX_SQUARE_RANGE ((dReal)1e-15)
+#else
+#define BOX_SQUARE_MARGIN ((dReal)1e-9)
+#define BOX_SQUARE_RANGE ((dReal)1e-100)
+#endif
 // Boxes whose centres are farther apart than this times the sum of their
 // half diagonals are apart without a look at their axes.
 #define BOX_SPHERE_MARGIN ((dReal)1.001)
-
-// A point of the clipped contact polygon in the reference face's frame.
-typedef struct clip_point {
-    dReal x, y, depth;
-    dReal t;   // pos is this far from the incident point along nf
-} clip_point;
 
 // Functions of the clipper and the axes, inlined with their constant
 // arguments (a side, an axis pair) so that their indices fold away.
 #define BOX_INLINE static inline __attribute__((always_inline))
 
-// The part of edge p-q (offsets dp, dq from the clipping line) clip_side
-// keeps: p if inside, then the crossing if the edge crosses the line.
-BOX_INLINE void clip_edge(const clip_point *p, const clip_point *q, dReal dp, dReal dq,
-                          clip_point *out, int *m, int capped)
+// The collider's entry points are built twice where the compiler can pick a
+// version when the library is loaded (GNU ifunc: x86-64, ELF, glibc): for
+// AVX2 (one operation per four numbers below) and for the baseline.
+// (-DBOX_CLONES= builds the baseline alone, to check it.)
+#if !defined(BOX_CLONES) && defined(__GNUC__) && defined(__x86_64__) && defined(__ELF__) && \
+    defined(__GLIBC__) && defined(__has_attribute)
+#if __has_attribute(target_clones)
+#define BOX_CLONES __attribute__((target_clones("avx2", "default")))
+#endif
+#endif
+#ifndef BOX_CLONES
+#define BOX_CLONES
+#endif
+// The functions that take or return fours are all inlined: no call passes
+// them, so the baseline's ABI note about them does not apply.
+#if defined(__clang__)
+#if __has_warning("-Wpsabi")
+#pragma clang diagnostic ignored "-Wpsabi"
+#endif
+#elif defined(__GNUC__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
+// Fours of numbers (GNU vector extensions: one AVX operation in the AVX2
+// build, two SSE2 ones for doubles in the baseline): a vector's lanes are
+// computed with the same operations in the same order as the scalar
+// formulas they stand for, so their results are the same to the bit. (The
+// AVX2 build has no FMA, so no a * b + c is contracted to one rounding.)
+typedef dReal box_v4 __attribute__((vector_size(4 * sizeof(dReal))));
+#ifdef dSINGLE
+typedef int32_t box_b4 __attribute__((vector_size(4 * sizeof(int32_t))));
+#define BOX_SIGN_BIT ((int32_t)0x7fffffff)
+#else
+typedef int64_t box_b4 __attribute__((vector_size(4 * sizeof(int64_t))));
+#define BOX_SIGN_BIT ((int64_t)0x7fffffffffffffff)
+#endif
+
+BOX_INLINE box_v4 v4_load(const dReal *p)
 {
-    if (dp <= 0) out[(*m)++] = *p;
-    if ((!capped || *m < 16) && ((dp < 0 && dq > 0) || (dp > 0 && dq < 0))) {
+    box_v4 v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+
+BOX_INLINE void v4_store(dReal *p, box_v4 v)
+{
+    memcpy(p, &v, sizeof v);
+}
+
+// |v| lane by lane (the sign bits cleared, as fabs does).
+BOX_INLINE box_v4 v4_abs(box_v4 v)
+{
+    box_b4 bits;
+    memcpy(&bits, &v, sizeof v);
+    bits &= BOX_SIGN_BIT;
+    memcpy(&v, &bits, sizeof v);
+    return v;
+}
+
+// (x, y, z, 0): the fourth lane cleared with a mask, not inserted (GCC
+// inserts a 0 with a vmovq between registers that Valgrind 3.19, the
+// instruction counts' tool, cannot run).
+BOX_INLINE box_v4 v4_of3(dReal x, dReal y, dReal z)
+{
+    static const box_b4 keep3 = { -1, -1, -1, 0 };
+    box_v4 v = { x, y, z, z };
+    box_b4 bits;
+    memcpy(&bits, &v, sizeof v);
+    bits &= keep3;
+    memcpy(&v, &bits, sizeof v);
+    return v;
+}
+
+// Lane by lane, a where mask (all bits set) else b.
+BOX_INLINE box_v4 v4_select(box_b4 mask, box_v4 a, box_v4 b)
+{
+    box_b4 x, y;
+    memcpy(&x, &a, sizeof a);
+    memcpy(&y, &b, sizeof b);
+    x = (x & mask) | (y & ~mask);
+    memcpy(&a, &x, sizeof a);
+    return a;
+}
+
+// (v1, v2, v0, v3) and (v2, v0, v1, v3): lane j gets lane j + 1 or j + 2
+// (mod 3).
+BOX_INLINE box_v4 v4_turn1(box_v4 v)
+{
+    return __builtin_shufflevector(v, v, 1, 2, 0, 3);
+}
+
+BOX_INLINE box_v4 v4_turn2(box_v4 v)
+{
+    return __builtin_shufflevector(v, v, 2, 0, 1, 3);
+}
+
+// A point of the clipped contact polygon in the reference face's frame, in
+// four lanes: x, y, its depth under the reference face, and t (pos is this
+// far from the incident point along nf).
+typedef box_v4 clip_point;
+enum { CP_X, CP_Y, CP_DEPTH, CP_T };
+
+// The reference face's rectangle |x| <= h1, |y| <= h2 as four clipping
+// lines, clipped against in this order: x <= h1, -x <= h1, y <= h2,
+// -y <= h2. A point's offsets from them (> 0 outside) are the lanes of
+// (x, x, y, y) sg - h, with sg = (1, -1, 1, -1) (exact signs) and
+// h = (h1, h1, h2, h2).
+typedef struct clip_rect {
+    box_v4 sg, h;
+} clip_rect;
+
+BOX_INLINE box_v4 side_offsets(const clip_rect *r, clip_point p)
+{
+    return __builtin_shufflevector(p, p, CP_X, CP_X, CP_Y, CP_Y) * r->sg - r->h;
+}
+
+// The lines a point with offsets off is not inside of (all bits set), NaN
+// counted as outside.
+BOX_INLINE box_b4 outside_of(box_v4 off)
+{
+    box_v4 zero = { 0, 0, 0, 0 };
+    return ~(off <= zero);
+}
+
+// The part of edge p-q (line offsets dp, dq) clip_side keeps, written at
+// *o (offsets at *oo, their outside_of ored into *mask): p if inside, then
+// the crossing if the edge crosses the line (with room for it: room is 0
+// for none). Points on the line are kept once and not duplicated by the
+// crossing test.
+BOX_INLINE void clip_edge(const clip_rect *r, const clip_point *p, const box_v4 *po, dReal dp,
+                          dReal dq, clip_point **o, box_v4 **oo, box_b4 *mask, int room)
+{
+    if (dp <= 0) {
+        *(*o)++ = *p;
+        *(*oo)++ = *po;
+        *mask |= outside_of(*po);
+        room--;
+    }
+    if (room > 0 && ((dp < 0 && dq > 0) || (dp > 0 && dq < 0))) {
         dReal f = dp / (dp - dq);
-        clip_point *o = &out[(*m)++];
-        o->x = p->x + f * (q->x - p->x);
-        o->y = p->y + f * (q->y - p->y);
-        o->depth = p->depth + f * (q->depth - p->depth);
+        clip_point c = *p + f * (p[1] - *p);   // x, y, depth (t: unset)
+        box_v4 co = side_offsets(r, c);
+        *(*o)++ = c;
+        *(*oo)++ = co;
+        *mask |= outside_of(co);
     }
 }
 
-// Clip poly (n points, room for n + 1) to sg * coordinate(axis) <= h, into
-// out; returns the new count (at most n + 1 for a convex polygon, capped at
-// 16), or -1 when every point is inside already (out untouched). Points on
-// the line are kept once and not duplicated by the crossing test. sg is
-// +-1, so sg * c is exactly +-c. Each point adds at most two, so up to 8
-// points need no cap.
-BOX_INLINE int clip_side(clip_point *poly, int n, int axis, int sg, dReal h, clip_point *out)
+// Clip poly (n points, their offsets off; room for n + 1) by line s into
+// out and out_off; returns the new count (at most n + 1 for a convex
+// polygon, capped at 16) and sets *outside to the new points' outside_of
+// ored. Each point adds at most two, so up to 8 points need no cap.
+BOX_INLINE int clip_side(const clip_rect *r, clip_point *poly, box_v4 *off, int n, int s,
+                         clip_point *out, box_v4 *out_off, box_b4 *outside)
 {
-    dReal off[17];
-    int outside = 0;
-    for (int i = 0; i < n; i++) {
-        dReal c = axis ? poly[i].y : poly[i].x;
-        off[i] = (sg > 0 ? c : -c) - h;
-        outside |= !(off[i] <= 0);
-    }
-    if (!outside) return -1;
     poly[n] = poly[0];   // the closing edge without a wrap-around index
     off[n] = off[0];
-    int m = 0;
+    box_b4 mask = { 0, 0, 0, 0 };
+    clip_point *o = out;
+    box_v4 *oo = out_off;
     if (n <= 8) {
         for (int i = 0; i < n; i++)
-            clip_edge(&poly[i], &poly[i + 1], off[i], off[i + 1], out, &m, 0);
+            clip_edge(r, &poly[i], &off[i], off[i][s], off[i + 1][s], &o, &oo, &mask, 2);
     } else {
-        for (int i = 0; i < n && m < 16; i++)
-            clip_edge(&poly[i], &poly[i + 1], off[i], off[i + 1], out, &m, 1);
+        for (int i = 0; i < n && o - out < 16; i++)
+            clip_edge(r, &poly[i], &off[i], off[i][s], off[i + 1][s], &o, &oo, &mask,
+                      (int)(16 - (o - out)));
     }
-    return m;
-}
-
-// clip_side on *cur (*n points), the result left in *cur (swapped with
-// *spare when the side cut anything).
-BOX_INLINE void clip_step(clip_point **cur, clip_point **spare, int *n, int axis, int sg,
-                          dReal h)
-{
-    int m = clip_side(*cur, *n, axis, sg, h, *spare);
-    if (m < 0) return;
-    clip_point *t = *cur;
-    *cur = *spare;
-    *spare = t;
-    *n = m;
+    *outside = mask;
+    return (int)(o - out);
 }
 
 // Choose max of the n points (n > max, n <= 16) to keep, in place: the
 // deepest, then each time the point farthest from those already chosen, so
 // the kept points spread over the polygon. near[i] is point i's squared
 // distance to the nearest chosen one, brought up to date with each choice.
-static void cull_points(clip_point *pts, int n, int max)
+BOX_INLINE void cull_points(clip_point *pts, int n, int max)
 {
     dReal near[16];
     for (int i = 1; i < n; i++) near[i] = dInfinity;
@@ -106,8 +225,8 @@ static void cull_points(clip_point *pts, int n, int max)
         int best = k;
         dReal best_d = -1;
         for (int i = k; i < n; i++) {
-            dReal dx = pts[i].x - pts[k - 1].x, dy = pts[i].y - pts[k - 1].y;
-            dReal d2 = dx * dx + dy * dy;
+            clip_point d = pts[i] - pts[k - 1];
+            dReal d2 = d[CP_X] * d[CP_X] + d[CP_Y] * d[CP_Y];
             if (d2 < near[i]) near[i] = d2;
             if (near[i] > best_d) {
                 best_d = near[i];
@@ -185,43 +304,56 @@ typedef struct box_face {
     const dReal *pr, *Rr, *hr, *pi, *Ri, *hi;
     int rotations;
     dReal hk, h1, h2;
-    dReal nf[3], U1[3], U2[3], C[3][3], c[3], e[3];
+    box_v4 nf, U1, U2;   // fourth lanes 0
+    box_v4 Cx, Cy, Cz, e;   // lanes m: C[m][0], C[m][1], C[m][2], e[m]
+    dReal c[3];
 } box_face;
 
 // The incident box's face most against nf, clipped to the reference face's
 // rectangle (in the frame U1, U2, relative to pr): the clipped polygon is
 // written to a (at most 16 points, room for 17), its count returned.
-static int box_clip_incident(const box_face *f, clip_point a[17])
+BOX_INLINE int box_clip_incident(const box_face *f, clip_point a[17])
 {
-    const dReal *hi = f->hi, (*C)[3] = f->C;
-    dReal d0 = dFabs(C[0][2]), d1 = dFabs(C[1][2]), d2 = dFabs(C[2][2]);
+    const dReal *hi = f->hi;
+    box_v4 Cx = f->Cx, Cy = f->Cy, Cz = f->Cz;
+    dReal d0 = dFabs(Cz[0]), d1 = dFabs(Cz[1]), d2 = dFabs(Cz[2]);
     int j = d1 > d0 ? 1 : 0;
     if (d2 > (j ? d1 : d0)) j = 2;
     int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
     // The incident face's centre (rel + sgn hi_j B_j) and half edges
-    // (hi B_j1, hi B_j2) in the reference face's frame (x, y, height).
-    dReal sgn = C[j][2] > 0 ? -hi[j] : hi[j];
-    dReal cx = f->c[0] + sgn * C[j][0];
-    dReal cy = f->c[1] + sgn * C[j][1];
-    dReal cz = f->c[2] + sgn * C[j][2];
-    dReal ux = hi[j1] * C[j1][0], uy = hi[j1] * C[j1][1], uz = hi[j1] * C[j1][2];
-    dReal vx = hi[j2] * C[j2][0], vy = hi[j2] * C[j2][1], vz = hi[j2] * C[j2][2];
-    dReal hk = f->hk;
-    static const dReal corner[4][2] = { { 1, 1 }, { -1, 1 }, { -1, -1 }, { 1, -1 } };
-    for (int v = 0; v < 4; v++) {
-        dReal s = corner[v][0], t = corner[v][1];
-        a[v].x = cx + s * ux + t * vx;
-        a[v].y = cy + s * uy + t * vy;
-        a[v].depth = hk - (cz + s * uz + t * vz);
-    }
+    // (hi B_j1, hi B_j2) in the reference face's frame (x, y, height); the
+    // corners centre +- u +- v (exact signs), the height turned to a depth.
+    dReal sgn = Cz[j] > 0 ? -hi[j] : hi[j];
+    box_v4 cv = v4_of3(f->c[0] + sgn * Cx[j], f->c[1] + sgn * Cy[j], f->c[2] + sgn * Cz[j]);
+    box_v4 u = v4_of3(hi[j1] * Cx[j1], hi[j1] * Cy[j1], hi[j1] * Cz[j1]);
+    box_v4 v = v4_of3(hi[j2] * Cx[j2], hi[j2] * Cy[j2], hi[j2] * Cz[j2]);
+    box_v4 cu = cv + u, cmu = cv - u;
+    a[0] = cu + v;
+    a[1] = cmu + v;
+    a[2] = cmu - v;
+    a[3] = cu - v;
+    for (int k = 0; k < 4; k++) a[k][CP_DEPTH] = f->hk - a[k][CP_DEPTH];
+    clip_rect r = { { 1, -1, 1, -1 }, { f->h1, f->h1, f->h2, f->h2 } };
     clip_point b[17], *cur = a, *spare = b;
+    box_v4 off_a[17], off_b[17], *cur_off = off_a, *spare_off = off_b;
+    box_b4 outside = { 0, 0, 0, 0 };
+    for (int k = 0; k < 4; k++) {
+        off_a[k] = side_offsets(&r, a[k]);
+        outside |= outside_of(off_a[k]);
+    }
     int n = 4;
-    dReal h1 = f->h1, h2 = f->h2;
-    clip_step(&cur, &spare, &n, 0, 1, h1);
-    clip_step(&cur, &spare, &n, 0, -1, h1);
-    clip_step(&cur, &spare, &n, 1, 1, h2);
-    clip_step(&cur, &spare, &n, 1, -1, h2);
-    if (cur != a) memcpy(a, cur, (size_t)n * sizeof *a);
+    for (int s = 0; s < 4; s++) {   // a line every point is inside of cuts nothing
+        if (!outside[s]) continue;
+        n = clip_side(&r, cur, cur_off, n, s, spare, spare_off, &outside);
+        clip_point *t = cur;
+        cur = spare;
+        spare = t;
+        box_v4 *u = cur_off;
+        cur_off = spare_off;
+        spare_off = u;
+    }
+    if (cur != a)
+        for (int k = 0; k < n; k++) a[k] = cur[k];
     return n;
 }
 
@@ -231,10 +363,10 @@ static int box_clip_incident(const box_face *f, clip_point a[17])
 // one (rel = pr - pi); pos will be the middle of that stretch (t). Deep
 // overlaps can clip points past the far side of a thin reference box: they
 // are in neither box and dropped. The deepest is moved first.
-static int box_keep_overlapping(const box_face *f, clip_point *a, int n, const dReal rel[3])
+BOX_INLINE int box_keep_overlapping(const box_face *f, clip_point *a, int n, box_v4 rel)
 {
-    const dReal *hr = f->hr, *hi = f->hi, *nf = f->nf, *U1 = f->U1, *U2 = f->U2, *Ri = f->Ri;
-    const dReal (*C)[3] = f->C, hk = f->hk;
+    const dReal *hr = f->hr, *hi = f->hi, *Ri = f->Ri;
+    const dReal hk = f->hk;
     // The exit through the incident box's faces of axis m (t_m, where
     // B_m . (q + t nf) = +-hi_m) is >= depth exactly when the point over P
     // on the reference face lies inside them: g_m = hi_m - sg_m B_m . (rel
@@ -245,47 +377,45 @@ static int box_keep_overlapping(const box_face *f, clip_point *a, int n, const d
     // computed as defined. Axes whose g_m clears twice the margin over the
     // whole reference face (|x| <= h1, |y| <= h2, with the margin for the
     // clipped points' rounding) are not looked at again (nor those
-    // parallel to nf: no exit through their faces).
+    // parallel to nf: no exit through their faces). The three axes' g_m and
+    // t_m are lanes of fours; the least exit is taken in axis order.
     dReal scale = dFabs(rel[0]) + dFabs(rel[1]) + dFabs(rel[2]) + hr[0] + hr[1] + hr[2]
                   + 2 * (hi[0] + hi[1] + hi[2]);
     dReal margin = f->rotations ? BOX_EXIT_MARGIN * scale : dInfinity;   // else: as defined
     dReal X = f->h1 + margin, Y = f->h2 + margin;
-    dReal g0[3], gx[3], gy[3];
-    int act[3], na = 0;
-    for (int m = 0; m < 3; m++) {
-        if (C[m][2] == 0) continue;
-        dReal sg = C[m][2] > 0 ? 1 : -1;
-        g0[na] = hi[m] - sg * (f->e[m] + hk * C[m][2]);
-        gx[na] = -sg * C[m][0];
-        gy[na] = -sg * C[m][1];
-        if (g0[na] - dFabs(gx[na]) * X - dFabs(gy[na]) * Y > 2 * margin) continue;
-        act[na++] = m;
-    }
+    // Lanes of axes not looked at: t_m = (inf - from) / 1, never the least.
+    box_v4 zero = { 0, 0, 0, 0 }, one = { 1, 1, 1, 1 };
+    box_v4 inf = { dInfinity, dInfinity, dInfinity, dInfinity };
+    box_v4 hiv = v4_load(hi), Cz = f->Cz, margins = { margin, margin, margin, margin };
+    box_b4 up = Cz > zero, axes = { -1, -1, -1, 0 };
+    box_v4 sg = v4_select(up, one, -one);
+    box_v4 g0 = hiv - sg * (f->e + hk * Cz), gx = -sg * f->Cx, gy = -sg * f->Cy;
+    box_b4 act = axes & (Cz != zero)
+                 & ~(g0 - v4_abs(gx) * X - v4_abs(gy) * Y > 2 * margins);
+    box_v4 face = v4_select(act, v4_select(up, hiv, -hiv), inf);
+    box_v4 dot = v4_select(act, Cz, one);
+    int na = (int)((act[0] | act[1] | act[2]) & 1);
+    box_v4 ri0 = v4_load(Ri), ri1 = v4_load(Ri + 4), ri2 = v4_load(Ri + 8);
     int kept = 0, deepest = 0;
     for (int i = 0; i < n; i++) {
-        dReal depth = a[i].depth;
+        clip_point p = a[i];
+        dReal depth = p[CP_DEPTH];
         if (depth < 0) continue;
-        dReal x = a[i].x, y = a[i].y, exit = dInfinity, q[3];
-        int have_q = 0;
-        for (int r = 0; r < na; r++) {
-            if (g0[r] + x * gx[r] + y * gy[r] > margin) continue;
-            if (!have_q) {
-                dReal up = hk - depth;
-                for (int c = 0; c < 3; c++) q[c] = rel[c] + x * U1[c] + y * U2[c] + up * nf[c];
-                have_q = 1;
-            }
-            int m = act[r];
-            dReal dot = C[m][2], from = Ri[m] * q[0] + Ri[4 + m] * q[1] + Ri[8 + m] * q[2];
-            dReal t = ((dot > 0 ? hi[m] : -hi[m]) - from) / dot;
-            if (t < exit) exit = t;
+        dReal x = p[CP_X], y = p[CP_Y], exit = dInfinity;
+        if (na) {   // t_m where g_m > margin replaced by inf
+            box_v4 q = rel + x * f->U1 + y * f->U2 + (hk - depth) * f->nf;
+            box_v4 t = (face - (ri0 * q[0] + ri1 * q[1] + ri2 * q[2])) / dot;
+            t = v4_select(g0 + x * gx + y * gy > margins, inf, t);
+            for (int m = 0; m < 3; m++)
+                if (t[m] < exit) exit = t[m];
         }
         if (exit < 0) exit = 0;   // clipped points lie on the incident face: rounding
         dReal lo = depth - 2 * hk > 0 ? depth - 2 * hk : 0;
         dReal top = exit < depth ? exit : depth;
         if (top < lo) continue;
-        if (kept != i) a[kept] = a[i];
-        a[kept].t = (lo + top) / 2;
-        if (a[kept].depth > a[deepest].depth) deepest = kept;
+        p[CP_T] = (lo + top) / 2;
+        a[kept] = p;
+        if (depth > a[deepest][CP_DEPTH]) deepest = kept;
         kept++;
     }
     if (kept > 0) {
@@ -301,7 +431,7 @@ static int box_keep_overlapping(const box_face *f, clip_point *a, int n, const d
 // whether every |Rm_ij| <= 1.25 (as for rotations).
 typedef struct box_axes {
     dReal nl[3];
-    const dReal (*Rm)[3];
+    const dReal (*Rm)[4];
     const dReal *over, *proj, *T, *a, *b;
     int rotations;
 } box_axes;
@@ -318,7 +448,7 @@ BOX_INLINE dReal exit_along(const box_axes *ax, int x, dReal s)
 // m . n for face axis x (0-5).
 BOX_INLINE dReal face_dot(const box_axes *ax, int x)
 {
-    const dReal *nl = ax->nl, (*Rm)[3] = ax->Rm;
+    const dReal *nl = ax->nl, (*Rm)[4] = ax->Rm;
     return x < 3 ? nl[x] : Rm[0][x - 3] * nl[0] + Rm[1][x - 3] * nl[1] + Rm[2][x - 3] * nl[2];
 }
 
@@ -340,7 +470,7 @@ BOX_INLINE dReal face_dot(const box_axes *ax, int x)
 // least exit is the same.
 static dReal box_clearance(const box_axes *ax, dReal known, int known_axis)
 {
-    const dReal *nl = ax->nl, (*Rm)[3] = ax->Rm, *over = ax->over;
+    const dReal *nl = ax->nl, (*Rm)[4] = ax->Rm, *over = ax->over;
     dReal best = known, cut = dInfinity, rounding = 0, per_q = dInfinity;
     if (ax->rotations && known < dInfinity) {
         const dReal *T = ax->T, *a = ax->a, *b = ax->b;
@@ -385,14 +515,15 @@ static dReal box_clearance(const box_axes *ax, dReal known, int known_axis)
 // through the faces of the contact's own axis (code), so when the deepest
 // point reaches that, the full clearance is not needed. normal is the
 // contact normal (into o1).
-static int box_face_contacts(const box_face *f, const dReal normal[3], const box_axes *ax,
+BOX_CLONES static int box_face_contacts(const box_face *f, const dReal normal[3], const box_axes *ax,
                              int code, dxGeom *o1, dxGeom *o2, int max, dContactGeom *out,
                              int skip)
 {
-    const dReal *pr = f->pr, *pi = f->pi, *U1 = f->U1, *U2 = f->U2, *nf = f->nf;
+    const dReal *pr = f->pr, *pi = f->pi;
     clip_point a[17];
     int n = box_clip_incident(f, a);
-    dReal rel[3] = { pr[0] - pi[0], pr[1] - pi[1], pr[2] - pi[2] };
+    box_v4 prv = v4_of3(pr[0], pr[1], pr[2]);
+    box_v4 rel = v4_of3(pr[0] - pi[0], pr[1] - pi[1], pr[2] - pi[2]);
     int kept = box_keep_overlapping(f, a, n, rel);
     if (kept == 0) {   // the separating axis says they overlap: find a point
         dReal pos[3];
@@ -401,17 +532,27 @@ static int box_face_contacts(const box_face *f, const dReal normal[3], const box
         return 1;
     }
     dReal own = exit_along(ax, code, face_dot(ax, code));
-    dReal clear = a[0].depth < own ? box_clearance(ax, own, code) : a[0].depth;
+    dReal deepest = a[0][CP_DEPTH];
+    dReal clear = deepest < own ? box_clearance(ax, own, code) : deepest;
     if (kept > max) {
         cull_points(a, kept, max);
         kept = max;
     }
+    // pos = pr + x U1 + y U2 + (hk - depth + t) nf, lane by lane; the fourth
+    // lanes of pos and normal (dVector3's padding) get 0.
+    box_v4 nv = v4_of3(normal[0], normal[1], normal[2]);
     dReal hk = f->hk;
     for (int c = 0; c < kept; c++) {
-        dReal pos[3], up = hk - a[c].depth + a[c].t;
-        for (int i = 0; i < 3; i++) pos[i] = pr[i] + a[c].x * U1[i] + a[c].y * U2[i] + up * nf[i];
-        dReal depth = c == 0 && a[0].depth < clear ? clear : a[c].depth;
-        dx_put_contact(out, c, skip, pos, normal, depth, o1, o2);
+        clip_point p = a[c];
+        dReal up = hk - p[CP_DEPTH] + p[CP_T];
+        box_v4 pos = prv + p[CP_X] * f->U1 + p[CP_Y] * f->U2 + up * f->nf;
+        dContactGeom *k = dxContactAt(out, c, skip);
+        v4_store(k->pos, pos);
+        v4_store(k->normal, nv);
+        k->depth = c == 0 && deepest < clear ? clear : p[CP_DEPTH];
+        k->g1 = o1;
+        k->g2 = o2;
+        k->side1 = k->side2 = -1;
     }
     return kept;
 }
@@ -473,31 +614,6 @@ static void report_axis(const dReal normal[3], dReal depth, int code, dReal norm
     *code_out = code;
 }
 
-// Overlap of the boxes along face axis x (0-2: A_x, 3-5: B_(x-3)), and
-// box 2's offset along it (proj); box_box's names.
-BOX_INLINE dReal face_overlap(int x, const dReal a[3], const dReal b[3], const dReal T[3],
-                                 const dReal Rm[3][3], const dReal Q[3][3], dReal *proj)
-{
-    if (x < 3) {
-        *proj = T[x];
-        return a[x] + b[0] * Q[x][0] + b[1] * Q[x][1] + b[2] * Q[x][2] - dFabs(T[x]);
-    }
-    int j = x - 3;
-    *proj = T[0] * Rm[0][j] + T[1] * Rm[1][j] + T[2] * Rm[2][j];
-    return a[0] * Q[0][j] + a[1] * Q[1][j] + a[2] * Q[2][j] + b[j] - dFabs(*proj);
-}
-
-// The same, unnormalised, along edge axis 6 + 3 i + j (A_i x B_j, in box
-// 1's frame e_i x Rm[.][j]).
-BOX_INLINE dReal edge_overlap(int i, int j, const dReal a[3], const dReal b[3], const dReal T[3],
-                              const dReal Rm[3][3], const dReal Q[3][3], dReal *proj)
-{
-    int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-    *proj = T[i2] * Rm[i1][j] - T[i1] * Rm[i2][j];
-    dReal radii = a[i1] * Q[i2][j] + a[i2] * Q[i1][j] + b[j1] * Q[i][j2] + b[j2] * Q[i][j1];
-    return radii - dFabs(*proj);
-}
-
 // An edge axis' length may vanish, so its overlap separates only below this
 // margin beyond rounding (or below 0 where the axis is well defined).
 BOX_INLINE dReal edge_slack(int i, int j, const dReal a[3], const dReal b[3])
@@ -505,23 +621,22 @@ BOX_INLINE dReal edge_slack(int i, int j, const dReal a[3], const dReal b[3])
     return -BOX_AXIS_SLACK * (a[(i + 1) % 3] + a[(i + 2) % 3] + b[(j + 1) % 3] + b[(j + 2) % 3]);
 }
 
-// Whether axis x alone parts the boxes by box_box's own tests (for the
-// remembered axis: exactly when box_box would return 0 on reaching it).
-static int axis_parts(int x, const dReal a[3], const dReal b[3], const dReal T[3],
-                      const dReal Rm[3][3], const dReal Q[3][3])
+// Whether axis x alone parts the boxes by box_box's own tests, from its
+// overlaps (for the remembered axis: exactly when box_box would return 0 on
+// reaching it).
+static int axis_parts(int x, const dReal over[15], const dReal a[3], const dReal b[3],
+                      const dReal Rm[3][4])
 {
-    dReal proj;
-    if (x < 6) return face_overlap(x, a, b, T, Rm, Q, &proj) < 0;
+    if (x < 6) return over[x] < 0;
     int i = (x - 6) / 3, j = (x - 6) % 3, i1 = (i + 1) % 3, i2 = (i + 2) % 3;
-    dReal over = edge_overlap(i, j, a, b, T, Rm, Q, &proj);
-    if (over < edge_slack(i, j, a, b)) return 1;
+    if (over[x] < edge_slack(i, j, a, b)) return 1;
     dReal len2 = Rm[i1][j] * Rm[i1][j] + Rm[i2][j] * Rm[i2][j];
-    return len2 > DX_COLLIDE_EPS && over / dSqrt(len2) < 0;
+    return len2 > DX_COLLIDE_EPS && over[x] / dSqrt(len2) < 0;
 }
 
 // Whether box_box's shortcuts may take R1 and R2 for rotations: every entry
 // of theirs and of Rm (its absolute values Q) at most 1.25 in magnitude.
-static int rotation_like(const dReal *R1, const dReal *R2, const dReal Q[3][3])
+static int rotation_like(const dReal *R1, const dReal *R2, const dReal Q[3][4])
 {
     for (int i = 0; i < 3; i++) {
         for (int j = 0; j < 3; j++) {
@@ -530,6 +645,78 @@ static int rotation_like(const dReal *R1, const dReal *R2, const dReal Q[3][3])
         }
     }
     return 1;
+}
+
+// Box 1's frame (axes A_i, half sides a) for box_box: box 2's centre T,
+// Rm_ij = A_i . B_j and Q = |Rm| (rows of four, the fourth unused), and
+// along each of the 15 axes (0-2 A_i, 3-5 B_j, 6 + 3 i + j A_i x B_j,
+// unnormalised) the overlap of the boxes (over) and box 2's offset (proj).
+// Each is computed as the plain formulas say, term for term in the same
+// order, four lanes at a time (the same numbers to the bit): T_i = A_i . d;
+// over = a_i + sum_j b_j Q_ij - |T_i| and proj = T_i along A_i;
+// proj = sum_i T_i Rm_ij, over = sum_i a_i Q_ij + b_j - |proj| along B_j;
+// along A_i x B_j, proj = T_i2 Rm_i1j - T_i1 Rm_i2j and over = a_i1 Q_i2j
+// + a_i2 Q_i1j + b_j1 Q_ij2 + b_j2 Q_ij1 - |proj| (i1, i2 and j1, j2 the
+// next indices mod 3). over and proj have room for 16.
+BOX_INLINE void box_frame(const dReal *R1, const dReal *R2, const dReal d[3], const dReal a[3],
+                          const dReal b[3], dReal T[4], dReal Rm[3][4], dReal Rc[3][4],
+                          dReal Q[3][4], dReal over[16], dReal proj[16])
+{
+    box_v4 r1[3], r2[3], row[3], qrow[3], qcol[3];
+    for (int q = 0; q < 3; q++) {
+        r1[q] = v4_load(R1 + 4 * q);
+        r2[q] = v4_load(R2 + 4 * q);
+    }
+    box_v4 t = r1[0] * d[0] + r1[1] * d[1] + r1[2] * d[2];
+    for (int i = 0; i < 3; i++) {
+        row[i] = R1[i] * r2[0] + R1[4 + i] * r2[1] + R1[8 + i] * r2[2];   // Rm_i.
+        qrow[i] = v4_abs(row[i]);
+        box_v4 col = R2[i] * r1[0] + R2[4 + i] * r1[1] + R2[8 + i] * r1[2];   // Rm_.i
+        qcol[i] = v4_abs(col);
+        v4_store(Rc[i], col);
+        v4_store(Rm[i], row[i]);
+        v4_store(Q[i], qrow[i]);
+    }
+    v4_store(T, t);
+    box_v4 av = v4_load(a), bv = v4_load(b);
+    v4_store(proj, t);
+    v4_store(over, av + b[0] * qcol[0] + b[1] * qcol[1] + b[2] * qcol[2] - v4_abs(t));
+    box_v4 pb = T[0] * row[0] + T[1] * row[1] + T[2] * row[2];
+    v4_store(proj + 3, pb);
+    v4_store(over + 3, a[0] * qrow[0] + a[1] * qrow[1] + a[2] * qrow[2] + bv - v4_abs(pb));
+    box_v4 b1 = v4_of3(b[1], b[2], b[0]), b2 = v4_of3(b[2], b[0], b[1]);
+    for (int i = 0; i < 3; i++) {
+        int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+        box_v4 pe = T[i2] * row[i1] - T[i1] * row[i2];
+        box_v4 radii = a[i1] * qrow[i2] + a[i2] * qrow[i1] + b1 * v4_turn2(qrow[i])
+                       + b2 * v4_turn1(qrow[i]);
+        v4_store(proj + 6 + 3 * i, pe);
+        v4_store(over + 6 + 3 * i, radii - v4_abs(pe));
+    }
+}
+
+// Whether every edge axis (of overlap >= 0, R1 and R2 rotations) loses to
+// the best face axis, of overlap best, in box_box's choice: those of
+// length len <= sqrt(DX_COLLIDE_EPS) are left out there, and the others
+// have o = over / len with o BOX_EDGE_PREFERENCE >= best when (over
+// BOX_EDGE_PREFERENCE)^2 >= best^2 len^2 with a margin (BOX_SQUARE_MARGIN,
+// relative) for the rounding of both sides and of o (a few units in the
+// last place, far less): o >= 0 is not apart either, so box_box's loop
+// over the edges would change nothing. Squares of best between
+// BOX_SQUARE_RANGE and its inverse stay clear of underflow and overflow.
+BOX_INLINE int edges_lose(const dReal over[16], const dReal Rm[3][4], dReal best)
+{
+    if (!(best > BOX_SQUARE_RANGE && best < 1 / BOX_SQUARE_RANGE)) return 0;
+    box_v4 r[3] = { v4_load(Rm[0]), v4_load(Rm[1]), v4_load(Rm[2]) };
+    dReal b2 = best * best * (1 + BOX_SQUARE_MARGIN);
+    box_v4 eps = { DX_COLLIDE_EPS, DX_COLLIDE_EPS, DX_COLLIDE_EPS, DX_COLLIDE_EPS };
+    box_b4 lose = { -1, -1, -1, -1 };
+    for (int i = 0; i < 3; i++) {
+        box_v4 l2 = r[(i + 1) % 3] * r[(i + 1) % 3] + r[(i + 2) % 3] * r[(i + 2) % 3];
+        box_v4 o = v4_load(over + 6 + 3 * i) * BOX_EDGE_PREFERENCE;
+        lose &= (l2 <= eps) | (o * o >= b2 * l2);
+    }
+    return lose[0] & lose[1] & lose[2] & 1;
 }
 
 // box_box's return when axis x parts the boxes: 0, with x noted in *apart.
@@ -561,43 +748,25 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
                        int flags, dContactGeom *out, int skip, int hint, int *apart,
                        dReal normal_out[3], dReal *depth_out, int *code_out)
 {
-    const dReal a[3] = { s1[0] / 2, s1[1] / 2, s1[2] / 2 };
-    const dReal b[3] = { s2[0] / 2, s2[1] / 2, s2[2] / 2 };
-    dReal d[3] = { p2[0] - p1[0], p2[1] - p1[1], p2[2] - p1[2] }, T[3];
+    const dReal a[4] = { s1[0] / 2, s1[1] / 2, s1[2] / 2, 0 };
+    const dReal b[4] = { s2[0] / 2, s2[1] / 2, s2[2] / 2, 0 };
+    dReal d[3] = { p2[0] - p1[0], p2[1] - p1[1], p2[2] - p1[2] }, T[4];
     // Bounding spheres apart by more than the edge axes' slack: no axis can
     // say the boxes touch.
     dReal ra = dSqrt(dx_dot(a, a)), rb = dSqrt(dx_dot(b, b));
     dReal reach = (ra + rb) * BOX_SPHERE_MARGIN;
     if (dx_dot(d, d) > reach * reach) return 0;
-    dx_to_local(R1, d, T);
-    dReal Rm[3][3], Q[3][3];
-    for (int i = 0; i < 3; i++) {
-        for (int j = 0; j < 3; j++) {
-            Rm[i][j] = R1[i] * R2[j] + R1[4 + i] * R2[4 + j] + R1[8 + i] * R2[8 + j];
-            Q[i][j] = dFabs(Rm[i][j]);
-        }
-    }
-    // Overlap along each axis (< 0: apart), unnormalised for the edges. The
-    // loops are unrolled, so that the axes' indices are constants. An edge
-    // axis' slack is <= 0 for boxes of sides >= 0: a pair apart along it has
-    // an edge overlap < 0, and only then are the edges tested in turn.
-    dReal over[15], proj[15];
-    if (hint >= 0 && axis_parts(hint, a, b, T, Rm, Q)) return apart_by(hint, apart);
-#pragma GCC unroll 6
-    for (int x = 0; x < 6; x++) {
-        over[x] = face_overlap(x, a, b, T, Rm, Q, &proj[x]);
+    dReal Rm[3][4], Rc[3][4], Q[3][4], over[16], proj[16];
+    box_frame(R1, R2, d, a, b, T, Rm, Rc, Q, over, proj);
+    // Any negative overlap parts the boxes, the first in axis order found. An
+    // edge axis' slack is <= 0 for boxes of sides >= 0: a pair apart along it
+    // has an edge overlap < 0, and only then are the edges tested in turn.
+    if (hint >= 0 && axis_parts(hint, over, a, b, Rm)) return apart_by(hint, apart);
+    for (int x = 0; x < 6; x++)
         if (over[x] < 0) return apart_by(x, apart);
-    }
     dReal lowest = 0;
-#pragma GCC unroll 3
-    for (int i = 0; i < 3; i++) {
-#pragma GCC unroll 3
-        for (int j = 0; j < 3; j++) {
-            int x = 6 + 3 * i + j;
-            over[x] = edge_overlap(i, j, a, b, T, Rm, Q, &proj[x]);
-            if (over[x] < lowest) lowest = over[x];
-        }
-    }
+    for (int x = 6; x < 15; x++)
+        if (over[x] < lowest) lowest = over[x];
     if (lowest < 0 || (!trusted && !(a[0] >= 0 && a[1] >= 0 && a[2] >= 0 && b[0] >= 0
                                        && b[1] >= 0 && b[2] >= 0))) {
         for (int i = 0; i < 3; i++) {
@@ -619,8 +788,9 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
     dReal best_edge = dInfinity, edge_len = 1;
     int rotations = trusted || rotation_like(R1, R2, Q);
     dReal bound = rotations ? 2 * over[code] : dInfinity;
+    int edges = !(rotations && lowest >= 0 && edges_lose(over, Rm, over[code]));
 #pragma GCC unroll 3
-    for (int i = 0; i < 3; i++) {
+    for (int i = 0; i < 3 && edges; i++) {
 #pragma GCC unroll 3
         for (int j = 0; j < 3; j++) {
             int x = 6 + 3 * i + j, i1 = (i + 1) % 3, i2 = (i + 2) % 3;
@@ -645,6 +815,7 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
     dReal normal[3];
     if (code < 6) {
         box_face f;
+        f.nf[3] = f.U1[3] = f.U2[3] = 0;
         box_axes ax = { .Rm = Rm, .over = over, .proj = proj, .T = T, .a = a, .b = b,
                         .rotations = rotations };
         dReal sg = proj[code] < 0 ? 1 : -1;
@@ -656,17 +827,15 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
             for (int q = 0; q < 3; q++) {
                 normal[q] = sg * R1[4 * q + k];
                 f.nf[q] = -normal[q];
+                f.U1[q] = R1[4 * q + k1];
+                f.U2[q] = R1[4 * q + k2];
             }
-            dx_axis(R1, k1, f.U1);
-            dx_axis(R1, k2, f.U2);
-            for (int m = 0; m < 3; m++) {
-                f.C[m][0] = Rm[k1][m];
-                f.C[m][1] = Rm[k2][m];
-                f.C[m][2] = -sg * Rm[k][m];
-                // B_m . (p1 - p2): T . Rm[.][m] is it for orthonormal R1
-                f.e[m] = trusted ? -proj[3 + m]
-                                 : -(R2[m] * d[0] + R2[4 + m] * d[1] + R2[8 + m] * d[2]);
-            }
+            f.Cx = v4_load(Rm[k1]);
+            f.Cy = v4_load(Rm[k2]);
+            f.Cz = -sg * v4_load(Rm[k]);
+            // B_m . (p1 - p2): T . Rm[.][m] is it for orthonormal R1
+            f.e = trusted ? -v4_load(proj + 3)
+                          : -(d[0] * v4_load(R2) + d[1] * v4_load(R2 + 4) + d[2] * v4_load(R2 + 8));
             f.c[0] = T[k1];
             f.c[1] = T[k2];
             f.c[2] = -sg * T[k];
@@ -675,18 +844,18 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
             f.pr = p2, f.Rr = R2, f.hr = b, f.pi = p1, f.Ri = R1, f.hi = a;
             f.rotations = rotations;
             f.hk = b[k], f.h1 = b[k1], f.h2 = b[k2];
-            for (int q = 0; q < 3; q++) normal[q] = f.nf[q] = sg * R2[4 * q + k];
-            dx_axis(R2, k1, f.U1);
-            dx_axis(R2, k2, f.U2);
-            for (int m = 0; m < 3; m++) {
-                f.C[m][0] = Rm[m][k1];
-                f.C[m][1] = Rm[m][k2];
-                f.C[m][2] = sg * Rm[m][k];
-                f.e[m] = T[m];
+            for (int q = 0; q < 3; q++) {
+                normal[q] = f.nf[q] = sg * R2[4 * q + k];
+                f.U1[q] = R2[4 * q + k1];
+                f.U2[q] = R2[4 * q + k2];
             }
-            f.c[0] = -dx_dot(d, f.U1);
-            f.c[1] = -dx_dot(d, f.U2);
-            f.c[2] = -dx_dot(d, f.nf);
+            f.Cx = v4_load(Rc[k1]);
+            f.Cy = v4_load(Rc[k2]);
+            f.Cz = sg * v4_load(Rc[k]);
+            f.e = v4_load(T);
+            f.c[0] = -(d[0] * f.U1[0] + d[1] * f.U1[1] + d[2] * f.U1[2]);
+            f.c[1] = -(d[0] * f.U2[0] + d[1] * f.U2[1] + d[2] * f.U2[2]);
+            f.c[2] = -(d[0] * f.nf[0] + d[1] * f.nf[1] + d[2] * f.nf[2]);
         }
         dx_to_local(R1, normal, ax.nl);
         report_axis(normal, best, code, normal_out, depth_out, code_out);
@@ -717,7 +886,10 @@ static dxBoxAxisHint *find_hint(dxBox *box, const void *other)
 
 // Box-box of two geoms: box 1 remembers the axis that parted it from o2
 // (see dxBoxAxisHint) and tries it first; the result never depends on it.
-int dxCollideBoxBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)
+// Static: GCC 12 exports a target_clones function whatever -fvisibility
+// says, so dxCollideBoxBox below is a plain call into it.
+BOX_CLONES static int box_box_geoms(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out,
+                                    int skip)
 {
     dxBox *b1 = (dxBox *)o1;
     dxBoxAxisHint *e = find_hint(b1, o2);
@@ -736,10 +908,26 @@ int dxCollideBoxBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int sk
     return n;
 }
 
+int dxCollideBoxBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)
+{
+    return box_box_geoms(o1, o2, flags, out, skip);
+}
+
 // ODE 0.16's public box-box test. As there, normal is the direction from box
 // 1 into box 2 (the contacts' normal negated) and return_code the axis
 // (1-15, 0 if apart); the contacts get positions, depths and normals, with
 // g1 and g2 left 0.
+// dBoxBox's collider: box_box on anything, no geoms, no remembered axis.
+BOX_CLONES static int box_box_any(const dReal *p1, const dReal *R1, const dReal *s1,
+                                  const dReal *p2, const dReal *R2, const dReal *s2, int flags,
+                                  dContactGeom *out, int skip, dReal normal[3], dReal *depth,
+                                  int *code)
+{
+    int apart;
+    return box_box(p1, R1, s1, p2, R2, s2, 0, NULL, NULL, flags, out, skip, -1, &apart, normal,
+                   depth, code);
+}
+
 int dBoxBox(const dVector3 p1, const dMatrix3 R1, const dVector3 side1, const dVector3 p2,
             const dMatrix3 R2, const dVector3 side2, dVector3 normal, dReal *depth,
             int *return_code, int flags, dContactGeom *contact, int skip)
@@ -751,9 +939,7 @@ int dBoxBox(const dVector3 p1, const dMatrix3 R1, const dVector3 side1, const dV
                  "skip %d is smaller than sizeof(dContactGeom)", skip);
     dReal n[3] = { 0, 0, 0 }, d = 0;
     int code = -1;
-    int apart;
-    int count = box_box(p1, R1, side1, p2, R2, side2, 0, NULL, NULL, flags, contact, skip, -1,
-                        &apart, n, &d, &code);
+    int count = box_box_any(p1, R1, side1, p2, R2, side2, flags, contact, skip, n, &d, &code);
     *return_code = count > 0 ? code + 1 : 0;
     *depth = count > 0 ? d : 0;
     for (int q = 0; q < 3; q++) normal[q] = -n[q];
