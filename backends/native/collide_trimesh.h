@@ -171,7 +171,10 @@ typedef struct dxTriPrism {
     int made[3];
 } dxTriPrism;
 void dxTriPrismInit(const dxTriQuery *q, const dxTri *t, dxTriPrism *p);
-// dxTriClipToPrism with the prism made by dxTriPrismInit(q, t, p).
-int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, dReal a[][3], int n, int *made);
+// dxTriClipToPrism with the prism made by dxTriPrismInit(q, t, p); the
+// sides k with bit k of `inside` set are known to keep every point (a
+// polygon within them by more than rounding) and are not clipped against.
+int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, dReal a[][3], int n, int *made,
+                         unsigned inside);
 
 #endif
