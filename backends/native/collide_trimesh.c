@@ -98,6 +98,10 @@ static int finite3(const dReal p[3])
 // (nearly) the same normal.
 static int duplicates(const dxTriMeshRaw *a, const dxTriMeshRaw *b, dReal tol)
 {
+    // Most pairs are apart along x alone (the square of one term of the
+    // distance's sum already over: the same answer, rounding included).
+    dReal dx = a->pos[0] - b->pos[0];
+    if (dx * dx > tol * tol) return 0;
     return dist2(a->pos, b->pos) <= tol * tol && dx_dot(a->n, b->n) > 1 - (dReal)1e-6;
 }
 
@@ -485,6 +489,23 @@ static void pose_other(dxTriQuery *q, dReal lo[3], dReal hi[3])
         hi[i] = cl[i] + e;
         q->scale += hw[i];
     }
+    // A sphere's or a box's own box in the mesh frame is tighter where the
+    // mesh is turned (the world box turned with it holds it).
+    int cls = o->ops->cls;
+    if (cls == dSphereClass || cls == dBoxClass) {
+        dReal e[3];
+        for (int i = 0; i < 3; i++) {
+            if (cls == dSphereClass) {
+                e[i] = ((const dxSphere *)o)->radius;
+            } else {
+                const dReal *side = ((const dxBox *)o)->side;
+                e[i] = (dFabs(q->R[4 * i]) * side[0] + dFabs(q->R[4 * i + 1]) * side[1] +
+                        dFabs(q->R[4 * i + 2]) * side[2]) / 2;
+            }
+            lo[i] = dMax(lo[i], q->pos[i] - e[i]);
+            hi[i] = dMin(hi[i], q->pos[i] + e[i]);
+        }
+    }
 }
 
 // Whether the triangle with vertices v (9 numbers) lies off the box
@@ -492,11 +513,14 @@ static void pose_other(dxTriQuery *q, dReal lo[3], dReal hi[3])
 // geom (widened by rounding), so such a triangle touches nothing.
 static inline int tri_off_box(const dReal *v, const dReal lo[3], const dReal hi[3])
 {
-    for (int i = 0; i < 3; i++)
-        if (dMax(v[i], dMax(v[3 + i], v[6 + i])) < lo[i] ||
-            dMin(v[i], dMin(v[3 + i], v[6 + i])) > hi[i])
-            return 1;
-    return 0;
+    // Without branches: the comparisons of a triangle that is not off (most
+    // of them) are all made anyway. A NaN coordinate is never off.
+    int off = 0;
+    for (int i = 0; i < 3; i++) {
+        off |= (v[i] < lo[i]) & (v[3 + i] < lo[i]) & (v[6 + i] < lo[i]);
+        off |= (v[i] > hi[i]) & (v[3 + i] > hi[i]) & (v[6 + i] > hi[i]);
+    }
+    return off;
 }
 
 // One candidate of the walk: skipped if degenerate or refused by the
@@ -692,8 +716,9 @@ static int clip_polygon(dReal p[][3], const int *tp, int n, const dReal m[3], co
     if (inside == n) return -1;
     int k = 0;
     for (int i = 0; i < n; i++) {
-        const dReal *a = p[i], *b = p[(i + 1) % n];
-        dReal fa = f[i], fb = f[(i + 1) % n];
+        int next = i + 1 < n ? i + 1 : 0;
+        const dReal *a = p[i], *b = p[next];
+        dReal fa = f[i], fb = f[next];
         if (fa >= 0) {
             for (int j = 0; j < 3; j++) out[k][j] = a[j];
             tout[k++] = tp[i];

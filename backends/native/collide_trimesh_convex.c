@@ -328,10 +328,10 @@ static int face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p, dRe
 }
 
 // A box's values for a pair, worked out on its first triangle (in q->s->pair):
-// unit axes, half sides, corners (bit j of the index picks the sign of
-// axis j) and its bounding box in the mesh frame.
+// unit axes, half sides and corners (bit j of the index picks the sign of
+// axis j).
 typedef struct box_pair {
-    dReal ax[3][3], h[3], corner[8][3], lo[3], hi[3];
+    dReal ax[3][3], h[3], corner[8][3];
 } box_pair;
 _Static_assert(sizeof(box_pair) <= sizeof(((dxTriScratch *)0)->pair), "box_pair fits");
 
@@ -350,17 +350,6 @@ static const box_pair *prepare_box(dxTriQuery *q)
             b->corner[v][i] = c[i] + (v & 1 ? h[0] : -h[0]) * b->ax[0][i] +
                               (v & 2 ? h[1] : -h[1]) * b->ax[1][i] +
                               (v & 4 ? h[2] : -h[2]) * b->ax[2][i];
-    // The box's bounding box in the mesh frame, widened by rounding.
-    dReal eps = DX_COLLIDE_EPS * q->scale;
-    for (int i = 0; i < 3; i++) {
-        b->lo[i] = b->hi[i] = b->corner[0][i];
-        for (int v = 1; v < 8; v++) {
-            b->lo[i] = dMin(b->lo[i], b->corner[v][i]);
-            b->hi[i] = dMax(b->hi[i], b->corner[v][i]);
-        }
-        b->lo[i] -= eps;
-        b->hi[i] += eps;
-    }
     q->prepared = 1;
     return b;
 }
@@ -411,14 +400,9 @@ static int box_test(dxTriQuery *q, const dxTri *t)
     const dReal *c = q->pos;
     dReal hc = height(t, c);
     if (hc < 0) return 0;
+    // (A triangle off the box's own bounding box in the mesh frame never
+    // comes here: dxTriMeshGather leaves it out.)
     const box_pair *b = prepare_box(q);
-    // Apart by more than rounding along a mesh axis (the tree's leaves hold
-    // four triangles): then one of the axes below separates them by as
-    // much, this is only quicker.
-    for (int i = 0; i < 3; i++)
-        if (dMax(t->v[0][i], dMax(t->v[1][i], t->v[2][i])) < b->lo[i] ||
-            dMin(t->v[0][i], dMin(t->v[1][i], t->v[2][i])) > b->hi[i])
-            return 0;
     dReal nb[3];
     if (box_separated(b, t, c, hc, nb)) return 0;
     // A face is clipped if one of its corners is on or behind the plane.
