@@ -13,9 +13,8 @@
 
 // ---- the walk and the reduction --------------------------------------------
 
-// Welded vertex w of d (dxTriMeshVertex, here inline: loading triangles
-// is the walk's hot path, and a call across the library goes through the
-// PLT).
+// Vertex w of d (dxTriMeshVertex, here inline: loading triangles is the
+// walk's hot path, and a call across the library goes through the PLT).
 static inline void load_vertex(const dxTriMeshData *d, int w, dReal out[3])
 {
     const char *p = (const char *)d->vertices + (size_t)w * (size_t)d->vertex_stride;
@@ -30,14 +29,20 @@ static inline void load_vertex(const dxTriMeshData *d, int w, dReal out[3])
     }
 }
 
-// Triangle t's indices, features and neighbours into out (all but its
+// The index of vertex k of triangle t.
+static inline int tri_vertex(const dxTriMeshData *d, int t, int k)
+{
+    dTriIndex idx;
+    memcpy(&idx, (const char *)d->indices + (size_t)t * (size_t)d->tri_stride + k * sizeof idx,
+           sizeof idx);
+    return (int)idx;
+}
+
+// Triangle t's normal, features and neighbours into out (all but its
 // vertices).
 static inline void load_topology(const dxTriMeshData *d, int t, dxTri *out)
 {
-    dTriIndex idx[3];
-    memcpy(idx, (const char *)d->indices + (size_t)t * (size_t)d->tri_stride, sizeof idx);
     out->index = t;
-    for (int k = 0; k < 3; k++) out->vi[k] = d->weld[(int)idx[k]];
     for (int k = 0; k < 3; k++) out->n[k] = d->normal[3 * t + k];
     out->features = dxTriMeshFeatures(d, t);
     out->neighbour = d->neighbour + 3 * t;
@@ -46,7 +51,9 @@ static inline void load_topology(const dxTriMeshData *d, int t, dxTri *out)
 void dxTriLoad(const dxTriMeshData *d, int t, dxTri *out)
 {
     load_topology(d, t, out);
-    for (int k = 0; k < 3; k++) load_vertex(d, out->vi[k], out->v[k]);
+    // The triangle's own vertices, as the leaf-order copy holds them (a
+    // welded one is at the same position, but for the sign of a zero).
+    for (int k = 0; k < 3; k++) load_vertex(d, tri_vertex(d, t, k), out->v[k]);
 }
 
 void dxTriAdd(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth, int tri)
@@ -666,7 +673,8 @@ int dxTriFeatureNormal(const dxTriQuery *q, const dxTri *t, int feature, const d
         int k = feature - 4;
         if (!(t->features & (DX_TRI_VERTEX_FEATURE << k))) return 0;
         const dxTriMeshData *d = q->data;
-        for (int j = d->vertex_first[t->vi[k]]; j < d->vertex_first[t->vi[k] + 1]; j++) {
+        int w = d->weld[tri_vertex(d, t->index, k)];
+        for (int j = d->vertex_first[w]; j < d->vertex_first[w + 1]; j++) {
             dReal w[3], e[3];
             dxTriMeshVertex(d, d->vertex_adj[j], w);
             for (int i = 0; i < 3; i++) e[i] = w[i] - t->v[k][i];

@@ -87,10 +87,10 @@ typedef struct dxTriQuery {
 } dxTriQuery;
 
 // One triangle: its vertices, unit normal, feature bits (DX_TRI_*_FEATURE)
-// and neighbours across its edges.
+// and neighbours across its edges (its welded vertex indices, needed only
+// at a vertex feature, are read from the data: dxTriFeatureNormal).
 typedef struct dxTri {
     int index;
-    int vi[3];         // (welded) vertex indices
     dReal v[3][3];
     dReal n[3];
     unsigned features;
