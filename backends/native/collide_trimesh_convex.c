@@ -354,12 +354,28 @@ static const box_pair *prepare_box(dxTriQuery *q)
     return b;
 }
 
+// Whether the axis L (mesh frame) separates the triangle from the box
+// (centre c, unit axes ax[j], half sides h[j]).
+static int separates_box(const dxTri *t, const dReal L[3], const dReal c[3],
+                         const dReal ax[3][3], const dReal h[3])
+{
+    if (dx_dot(L, L) <= DX_COLLIDE_EPS * DX_COLLIDE_EPS) return 0;   // parallel edges
+    dReal lo, hi, bc = dx_dot(L, c), br = 0;
+    triangle_interval(t, L, &lo, &hi);
+    for (int j = 0; j < 3; j++) br += h[j] * dFabs(dx_dot(L, ax[j]));
+    return hi < bc - br || lo > bc + br;
+}
+
 // Whether a separating axis parts the box b (centre c) from triangle t,
-// whose plane the centre is hc above (hc >= 0). The triangle is taken into
-// the box's frame, where the box is [-h, h]: the axes in the order of what
-// they reject in a rain of boxes on terrain (of the triangles left after
-// the bounding boxes: most by the triangle's normal, then the box's axes,
-// few by the edge pairs). nb: the normal in the box's frame.
+// whose plane the centre is hc above (hc >= 0): in the order of what they
+// reject in a rain of boxes on terrain (of the triangles left after the
+// bounding boxes: most by the triangle's normal, then the box's axes, few
+// by the edge pairs). The normal and the box's axes are tested with the
+// triangle in the box's frame, where the box is [-h, h]; the edge pairs in
+// the mesh frame, from the edges as they are there (worked out in the
+// box's frame from the vertices there, they judged a box sliding over a
+// grid mesh otherwise in single precision and let it bump:
+// tests/test_trimesh_motion.c). nb: the normal in the box's frame.
 static int box_separated(const box_pair *b, const dxTri *t, const dReal c[3], dReal hc,
                          dReal nb[3])
 {
@@ -376,20 +392,12 @@ static int box_separated(const box_pair *b, const dxTri *t, const dReal c[3], dR
         if (dMax(p[0][j], dMax(p[1][j], p[2][j])) < -h[j] ||
             dMin(p[0][j], dMin(p[1][j], p[2][j])) > h[j])
             return 1;
-    // Edge k against box axis j: L = e x u_j has L_j = 0, L_y = e_z and
-    // L_z = -e_y (y, z the next axes in turn). Both ends of the edge
-    // project alike, so the edge's start and the opposite vertex bound the
-    // triangle's interval; the box reaches h_y |e_z| + h_z |e_y|.
     for (int k = 0; k < 3; k++) {
-        const dReal *a = p[k], *o = p[(k + 2) % 3];
-        dReal e[3];
-        sub3(e, p[(k + 1) % 3], a);
+        dReal e[3], L[3];
+        sub3(e, t->v[(k + 1) % 3], t->v[k]);
         for (int j = 0; j < 3; j++) {
-            int y = (j + 1) % 3, z = (j + 2) % 3;
-            if (e[y] * e[y] + e[z] * e[z] <= DX_COLLIDE_EPS * DX_COLLIDE_EPS) continue;   // parallel
-            dReal pa = a[y] * e[z] - a[z] * e[y], po = o[y] * e[z] - o[z] * e[y];
-            dReal r = h[y] * dFabs(e[z]) + h[z] * dFabs(e[y]);
-            if (dMin(pa, po) > r || dMax(pa, po) < -r) return 1;
+            cross3(L, e, b->ax[j]);
+            if (separates_box(t, L, c, b->ax, h)) return 1;
         }
     }
     return 0;
