@@ -673,8 +673,8 @@ int dxTriFeatureNormal(const dxTriQuery *q, const dxTri *t, int feature, const d
         int k = feature - 4;
         if (!(t->features & (DX_TRI_VERTEX_FEATURE << k))) return 0;
         const dxTriMeshData *d = q->data;
-        int w = d->weld[tri_vertex(d, t->index, k)];
-        for (int j = d->vertex_first[w]; j < d->vertex_first[w + 1]; j++) {
+        int welded = d->weld[tri_vertex(d, t->index, k)];
+        for (int j = d->vertex_first[welded]; j < d->vertex_first[welded + 1]; j++) {
             dReal w[3], e[3];
             dxTriMeshVertex(d, d->vertex_adj[j], w);
             for (int i = 0; i < 3; i++) e[i] = w[i] - t->v[k][i];
