@@ -13,9 +13,8 @@
 
 // ---- the walk and the reduction --------------------------------------------
 
-// Welded vertex w of d (dxTriMeshVertex, here inline: loading triangles
-// is the walk's hot path, and a call across the library goes through the
-// PLT).
+// Vertex w of d (dxTriMeshVertex, here inline: loading triangles is the
+// walk's hot path, and a call across the library goes through the PLT).
 static inline void load_vertex(const dxTriMeshData *d, int w, dReal out[3])
 {
     const char *p = (const char *)d->vertices + (size_t)w * (size_t)d->vertex_stride;
@@ -30,18 +29,31 @@ static inline void load_vertex(const dxTriMeshData *d, int w, dReal out[3])
     }
 }
 
-void dxTriLoad(const dxTriMeshData *d, int t, dxTri *out)
+// The index of vertex k of triangle t.
+static inline int tri_vertex(const dxTriMeshData *d, int t, int k)
 {
-    dTriIndex idx[3];
-    memcpy(idx, (const char *)d->indices + (size_t)t * (size_t)d->tri_stride, sizeof idx);
+    dTriIndex idx;
+    memcpy(&idx, (const char *)d->indices + (size_t)t * (size_t)d->tri_stride + k * sizeof idx,
+           sizeof idx);
+    return (int)idx;
+}
+
+// Triangle t's normal, features and neighbours into out (all but its
+// vertices).
+static inline void load_topology(const dxTriMeshData *d, int t, dxTri *out)
+{
     out->index = t;
-    for (int k = 0; k < 3; k++) {
-        out->vi[k] = d->weld[(int)idx[k]];
-        load_vertex(d, out->vi[k], out->v[k]);
-    }
     for (int k = 0; k < 3; k++) out->n[k] = d->normal[3 * t + k];
     out->features = dxTriMeshFeatures(d, t);
     out->neighbour = d->neighbour + 3 * t;
+}
+
+void dxTriLoad(const dxTriMeshData *d, int t, dxTri *out)
+{
+    load_topology(d, t, out);
+    // The triangle's own vertices, as the leaf-order copy holds them (a
+    // welded one is at the same position, but for the sign of a zero).
+    for (int k = 0; k < 3; k++) load_vertex(d, tri_vertex(d, t, k), out->v[k]);
 }
 
 void dxTriAdd(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth, int tri)
@@ -93,6 +105,10 @@ static int finite3(const dReal p[3])
 // (nearly) the same normal.
 static int duplicates(const dxTriMeshRaw *a, const dxTriMeshRaw *b, dReal tol)
 {
+    // Most pairs are apart along x alone (the square of one term of the
+    // distance's sum already over: the same answer, rounding included).
+    dReal dx = a->pos[0] - b->pos[0];
+    if (dx * dx > tol * tol) return 0;
     return dist2(a->pos, b->pos) <= tol * tol && dx_dot(a->n, b->n) > 1 - (dReal)1e-6;
 }
 
@@ -480,7 +496,65 @@ static void pose_other(dxTriQuery *q, dReal lo[3], dReal hi[3])
         hi[i] = cl[i] + e;
         q->scale += hw[i];
     }
+    // A sphere's or a box's own box in the mesh frame is tighter where the
+    // mesh is turned (the world box turned with it holds it).
+    int cls = o->ops->cls;
+    if (cls == dSphereClass || cls == dBoxClass) {
+        dReal e[3];
+        for (int i = 0; i < 3; i++) {
+            if (cls == dSphereClass) {
+                e[i] = ((const dxSphere *)o)->radius;
+            } else {
+                const dReal *side = ((const dxBox *)o)->side;
+                e[i] = (dFabs(q->R[4 * i]) * side[0] + dFabs(q->R[4 * i + 1]) * side[1] +
+                        dFabs(q->R[4 * i + 2]) * side[2]) / 2;
+            }
+            lo[i] = dMax(lo[i], q->pos[i] - e[i]);
+            hi[i] = dMin(hi[i], q->pos[i] + e[i]);
+        }
+    }
 }
+
+// Whether the triangle with vertices v (9 numbers) lies off the box
+// [lo, hi] along one of the mesh's axes. The query box holds the other
+// geom (widened by rounding), so such a triangle touches nothing.
+static inline int tri_off_box(const dReal *v, const dReal lo[3], const dReal hi[3])
+{
+    // Without branches: the comparisons of a triangle that is not off (most
+    // of them) are all made anyway. A NaN coordinate is never off.
+    int off = 0;
+    for (int i = 0; i < 3; i++) {
+        off |= (v[i] < lo[i]) & (v[3 + i] < lo[i]) & (v[6 + i] < lo[i]);
+        off |= (v[i] > hi[i]) & (v[3 + i] > hi[i]) & (v[6 + i] > hi[i]);
+    }
+    return off;
+}
+
+// One candidate of the walk: skipped if degenerate or refused by the
+// per-triangle callback; its vertices then read from v (9 numbers) if
+// given, else from the user's arrays (dxTriLoad); tested if its own box
+// meets [lo, hi]. Returns whether it touches.
+static inline int gather_one(dxTriQuery *q, int t, const dReal *v, const dReal lo[3],
+                             const dReal hi[3], dxTriTest *test)
+{
+    dxTriMesh *m = q->mesh;
+    if (dxTriMeshIsDegenerate(q->data, t)) return 0;
+    if (m->callback && !m->callback(&m->g, q->other, t)) return 0;
+    dxTri tri;
+    if (v) {
+        if (tri_off_box(v, lo, hi)) return 0;
+        load_topology(q->data, t, &tri);
+        memcpy(tri.v, v, sizeof tri.v);
+    } else {
+        dxTriLoad(q->data, t, &tri);
+        if (tri_off_box(&tri.v[0][0], lo, hi)) return 0;
+    }
+    return test(q, &tri);
+}
+
+// At most this many leaves are walked from the vertices' leaf-order copy;
+// a query meeting more goes through the triangle list.
+enum { LEAF_WALK_MAX = 256 };
 
 int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dxTriTest *test)
 {
@@ -488,20 +562,40 @@ int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dxTriTest *test)
     dxTriScratch *s = q->s;
     *q = (dxTriQuery){ .s = s, .mesh = m, .data = m->data, .other = other };
     s->raw_count = 0;
-    if (!m->data || m->data->tri_count == 0) return 0;
-    dReal lo[3], hi[3];
+    const dxTriMeshData *d = m->data;
+    if (!d || d->tri_count == 0) return 0;
+    dReal lo[3], hi[3], wlo[3], whi[3];
     pose_other(q, lo, hi);
-    int count = dxTriMeshQueryTC(s, m, other, lo, hi);
+    dReal eps = DX_COLLIDE_EPS * q->scale;
+    for (int i = 0; i < 3; i++) {
+        wlo[i] = lo[i] - eps;
+        whi[i] = hi[i] + eps;
+    }
     int hits = 0;
-    for (int i = 0; i < count; i++) {
-        int t = s->cand[0][i];
-        if (dxTriMeshIsDegenerate(m->data, t)) continue;
-        if (m->callback && !m->callback(mesh, other, t)) continue;
-        dxTri tri;
-        dxTriLoad(m->data, t, &tri);
-        if (!test(q, &tri)) continue;
-        dxTriMeshReserveInts(&s->hits[0], &s->hits_cap[0], hits + 1);
-        s->hits[0][hits++] = t;
+    // Without temporal coherence the tree's leaves are walked in place:
+    // the same triangles in the same order as dxTriMeshQueryBox lists
+    // them, their vertices read from the leaf-order copy.
+    int leaf[LEAF_WALK_MAX], leaves = -1;
+    if (d->leaf_vertices && (d->tree_stamp == 0 || !dxTriMeshTCOn(m, other->ops->cls)))
+        leaves = dxTriMeshQueryLeaves(d, lo, hi, leaf, LEAF_WALK_MAX);
+    if (leaves >= 0) {
+        for (int i = 0; i < leaves; i++) {
+            const dxTriMeshNode *node = &d->nodes[leaf[i]];
+            for (int j = node->first; j < node->first + node->count; j++) {
+                int t = d->order[j];
+                if (!gather_one(q, t, d->leaf_vertices + 9 * j, wlo, whi, test)) continue;
+                dxTriMeshReserveInts(&s->hits[0], &s->hits_cap[0], hits + 1);
+                s->hits[0][hits++] = t;
+            }
+        }
+    } else {
+        int count = dxTriMeshQueryTC(s, m, other, lo, hi);
+        for (int i = 0; i < count; i++) {
+            int t = s->cand[0][i];
+            if (!gather_one(q, t, NULL, wlo, whi, test)) continue;
+            dxTriMeshReserveInts(&s->hits[0], &s->hits_cap[0], hits + 1);
+            s->hits[0][hits++] = t;
+        }
     }
     if (hits > 0 && m->array_callback) m->array_callback(mesh, other, s->hits[0], hits);
     return s->raw_count;
@@ -579,7 +673,8 @@ int dxTriFeatureNormal(const dxTriQuery *q, const dxTri *t, int feature, const d
         int k = feature - 4;
         if (!(t->features & (DX_TRI_VERTEX_FEATURE << k))) return 0;
         const dxTriMeshData *d = q->data;
-        for (int j = d->vertex_first[t->vi[k]]; j < d->vertex_first[t->vi[k] + 1]; j++) {
+        int welded = d->weld[tri_vertex(d, t->index, k)];
+        for (int j = d->vertex_first[welded]; j < d->vertex_first[welded + 1]; j++) {
             dReal w[3], e[3];
             dxTriMeshVertex(d, d->vertex_adj[j], w);
             for (int i = 0; i < 3; i++) e[i] = w[i] - t->v[k][i];
@@ -629,8 +724,9 @@ static int clip_polygon(dReal p[][3], const int *tp, int n, const dReal m[3], co
     if (inside == n) return -1;
     int k = 0;
     for (int i = 0; i < n; i++) {
-        const dReal *a = p[i], *b = p[(i + 1) % n];
-        dReal fa = f[i], fb = f[(i + 1) % n];
+        int next = i + 1 < n ? i + 1 : 0;
+        const dReal *a = p[i], *b = p[next];
+        dReal fa = f[i], fb = f[next];
         if (fa >= 0) {
             for (int j = 0; j < 3; j++) out[k][j] = a[j];
             tout[k++] = tp[i];
@@ -664,7 +760,8 @@ void dxTriPrismInit(const dxTriQuery *q, const dxTri *t, dxTriPrism *p)
     }
 }
 
-int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, dReal a[][3], int n, int *made)
+int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, dReal a[][3], int n, int *made,
+                         unsigned inside)
 {
     // Side by side from a into b and back (the last result copied to a if
     // it ended in b).
@@ -672,6 +769,7 @@ int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, dReal a[][3], int 
     int tb[DX_TRI_POLY_MAX], in_a = 1;
     for (int i = 0; i < n; i++) made[i] = DX_TRI_MADE_NOT;
     for (int k = 0; k < 3 && n > 0; k++) {
+        if (inside & (1u << k)) continue;
         int c = in_a ? clip_polygon(a, made, n, p->m[k], t->v[k], p->slack[k], p->made[k], b, tb)
                      : clip_polygon(b, tb, n, p->m[k], t->v[k], p->slack[k], p->made[k], a, made);
         if (c < 0) continue;   // unchanged
@@ -690,7 +788,7 @@ int dxTriClipToPrism(const dxTriQuery *q, const dxTri *t, dReal a[][3], int n, i
 {
     dxTriPrism p;
     dxTriPrismInit(q, t, &p);
-    return dxTriClipToPrismWith(&p, t, a, n, made);
+    return dxTriClipToPrismWith(&p, t, a, n, made, 0);
 }
 
 // ---- trimesh-plane ----------------------------------------------------------------

@@ -87,10 +87,10 @@ typedef struct dxTriQuery {
 } dxTriQuery;
 
 // One triangle: its vertices, unit normal, feature bits (DX_TRI_*_FEATURE)
-// and neighbours across its edges.
+// and neighbours across its edges (its welded vertex indices, needed only
+// at a vertex feature, are read from the data: dxTriFeatureNormal).
 typedef struct dxTri {
     int index;
-    int vi[3];         // (welded) vertex indices
     dReal v[3][3];
     dReal n[3];
     unsigned features;
@@ -171,7 +171,10 @@ typedef struct dxTriPrism {
     int made[3];
 } dxTriPrism;
 void dxTriPrismInit(const dxTriQuery *q, const dxTri *t, dxTriPrism *p);
-// dxTriClipToPrism with the prism made by dxTriPrismInit(q, t, p).
-int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, dReal a[][3], int n, int *made);
+// dxTriClipToPrism with the prism made by dxTriPrismInit(q, t, p); the
+// sides k with bit k of `inside` set are known to keep every point (a
+// polygon within them by more than rounding) and are not clipped against.
+int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, dReal a[][3], int n, int *made,
+                         unsigned inside);
 
 #endif

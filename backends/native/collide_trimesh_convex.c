@@ -272,18 +272,6 @@ static void triangle_interval(const dxTri *t, const dReal L[3], dReal *lo, dReal
     *hi = dMax(t0, dMax(t1, t2));
 }
 
-// Whether the axis L separates the triangle from the box (centre c, unit
-// axes ax[j], half sides h[j]).
-static int separates_box(const dxTri *t, const dReal L[3], const dReal c[3],
-                         const dReal ax[3][3], const dReal h[3])
-{
-    if (dx_dot(L, L) <= DX_COLLIDE_EPS * DX_COLLIDE_EPS) return 0;   // parallel edges
-    dReal lo, hi, bc = dx_dot(L, c), br = 0;
-    triangle_interval(t, L, &lo, &hi);
-    for (int j = 0; j < 3; j++) br += h[j] * dFabs(dx_dot(L, ax[j]));
-    return hi < bc - br || lo > bc + br;
-}
-
 // Whether the axis L separates the triangle from the cylinder (centre c,
 // unit axis a, radius r, half length h): its projection reaches
 // h |L.a| + r sqrt(|L|^2 - (L.a)^2) from the centre's.
@@ -313,11 +301,11 @@ enum { CYL_SIDES = 32, POLY_MAX = DX_TRI_POLY_MAX };
 // patch (the corners of the solid over the neighbour come from it).
 // Returns 1 if any was added.
 static int clipped_face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p,
-                                 dReal a[][3], int n)
+                                 dReal a[][3], int n, unsigned inside)
 {
     dReal eps = DX_COLLIDE_EPS * q->scale;
     int made[POLY_MAX];
-    n = dxTriClipToPrismWith(p, t, a, n, made);
+    n = dxTriClipToPrismWith(p, t, a, n, made, inside);
     int added = 0;
     for (int i = 0; i < n; i++) {
         dReal depth = -height(t, a[i]);
@@ -336,14 +324,14 @@ static int face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p, dRe
     dReal eps = DX_COLLIDE_EPS * q->scale;
     int behind = 0;
     for (int i = 0; i < n && !behind; i++) behind = height(t, a[i]) <= eps;
-    return behind ? clipped_face_contacts(q, t, p, a, n) : 0;
+    return behind ? clipped_face_contacts(q, t, p, a, n, 0) : 0;
 }
 
 // A box's values for a pair, worked out on its first triangle (in q->s->pair):
-// unit axes, half sides, corners (bit j of the index picks the sign of
-// axis j), and on each axis the centre's projection and the box's reach.
+// unit axes, half sides and corners (bit j of the index picks the sign of
+// axis j).
 typedef struct box_pair {
-    dReal ax[3][3], h[3], corner[8][3], centre_on[3], reach_on[3], lo[3], hi[3];
+    dReal ax[3][3], h[3], corner[8][3];
 } box_pair;
 _Static_assert(sizeof(box_pair) <= sizeof(((dxTriScratch *)0)->pair), "box_pair fits");
 
@@ -356,73 +344,90 @@ static const box_pair *prepare_box(dxTriQuery *q)
         b->h[j] = side[j] / 2;
         dx_axis(q->R, j, b->ax[j]);
     }
-    for (int j = 0; j < 3; j++) {
-        b->centre_on[j] = dx_dot(b->ax[j], c);
-        b->reach_on[j] = 0;
-        for (int k = 0; k < 3; k++) b->reach_on[j] += b->h[k] * dFabs(dx_dot(b->ax[j], b->ax[k]));
-    }
     const dReal *h = b->h;
     for (int v = 0; v < 8; v++)
         for (int i = 0; i < 3; i++)
             b->corner[v][i] = c[i] + (v & 1 ? h[0] : -h[0]) * b->ax[0][i] +
                               (v & 2 ? h[1] : -h[1]) * b->ax[1][i] +
                               (v & 4 ? h[2] : -h[2]) * b->ax[2][i];
-    // The box's bounding box in the mesh frame, widened by rounding.
-    dReal eps = DX_COLLIDE_EPS * q->scale;
-    for (int i = 0; i < 3; i++) {
-        b->lo[i] = b->hi[i] = b->corner[0][i];
-        for (int v = 1; v < 8; v++) {
-            b->lo[i] = dMin(b->lo[i], b->corner[v][i]);
-            b->hi[i] = dMax(b->hi[i], b->corner[v][i]);
-        }
-        b->lo[i] -= eps;
-        b->hi[i] += eps;
-    }
     q->prepared = 1;
     return b;
 }
 
-// Whether the box's axis j separates it from the triangle.
-static int box_axis_separates(const box_pair *b, const dxTri *t, int j)
+// Whether the axis L (mesh frame) separates the triangle from the box
+// (centre c, unit axes ax[j], half sides h[j]).
+static int separates_box(const dxTri *t, const dReal L[3], const dReal c[3],
+                         const dReal ax[3][3], const dReal h[3])
 {
-    dReal lo, hi;
-    triangle_interval(t, b->ax[j], &lo, &hi);
-    return hi < b->centre_on[j] - b->reach_on[j] || lo > b->centre_on[j] + b->reach_on[j];
+    if (dx_dot(L, L) <= DX_COLLIDE_EPS * DX_COLLIDE_EPS) return 0;   // parallel edges
+    dReal lo, hi, bc = dx_dot(L, c), br = 0;
+    triangle_interval(t, L, &lo, &hi);
+    for (int j = 0; j < 3; j++) br += h[j] * dFabs(dx_dot(L, ax[j]));
+    return hi < bc - br || lo > bc + br;
 }
 
-static int box_test(dxTriQuery *q, const dxTri *t)
+// Whether a separating axis parts the box b (centre c) from triangle t,
+// whose plane the centre is hc above (hc >= 0): in the order of what they
+// reject in a rain of boxes on terrain (of the triangles left after the
+// bounding boxes: most by the triangle's normal, then the box's axes, few
+// by the edge pairs). The normal and the box's axes are tested with the
+// triangle in the box's frame, where the box is [-h, h]; the edge pairs in
+// the mesh frame, from the edges as they are there (worked out in the
+// box's frame from the vertices there, they judged a box sliding over a
+// grid mesh otherwise in single precision and let it bump:
+// tests/test_trimesh_motion.c). nb: the normal in the box's frame.
+static int box_separated(const box_pair *b, const dxTri *t, const dReal c[3], dReal hc,
+                         dReal nb[3])
 {
-    const dReal *c = q->pos;
-    if (height(t, c) < 0) return 0;
-    const box_pair *b = prepare_box(q);
-    // Apart by more than rounding along a mesh axis (the tree's leaves hold
-    // four triangles): then one of the axes below separates them by as
-    // much, this is only quicker.
-    for (int i = 0; i < 3; i++)
-        if (dMax(t->v[0][i], dMax(t->v[1][i], t->v[2][i])) < b->lo[i] ||
-            dMin(t->v[0][i], dMin(t->v[1][i], t->v[2][i])) > b->hi[i])
-            return 0;
-    // The axes in the order of what they reject in a rain of boxes on
-    // terrain (of the triangles the tree gives: 30 %, 39 %, 7 %; 24 % touch):
-    // the triangle's normal, the box's axes, the edges' cross products.
-    if (separates_box(t, t->n, c, b->ax, b->h)) return 0;
+    const dReal *h = b->h;
+    for (int j = 0; j < 3; j++) nb[j] = dx_dot(t->n, b->ax[j]);
+    if (hc > h[0] * dFabs(nb[0]) + h[1] * dFabs(nb[1]) + h[2] * dFabs(nb[2])) return 1;
+    dReal p[3][3];   // vertex i's coordinate j
+    for (int i = 0; i < 3; i++) {
+        dReal d[3];
+        sub3(d, t->v[i], c);
+        for (int j = 0; j < 3; j++) p[i][j] = dx_dot(b->ax[j], d);
+    }
     for (int j = 0; j < 3; j++)
-        if (box_axis_separates(b, t, j)) return 0;
+        if (dMax(p[0][j], dMax(p[1][j], p[2][j])) < -h[j] ||
+            dMin(p[0][j], dMin(p[1][j], p[2][j])) > h[j])
+            return 1;
     for (int k = 0; k < 3; k++) {
         dReal e[3], L[3];
         sub3(e, t->v[(k + 1) % 3], t->v[k]);
         for (int j = 0; j < 3; j++) {
             cross3(L, e, b->ax[j]);
-            if (separates_box(t, L, c, b->ax, b->h)) return 0;
+            if (separates_box(t, L, c, b->ax, h)) return 1;
         }
     }
+    return 0;
+}
+
+static int box_test(dxTriQuery *q, const dxTri *t)
+{
+    const dReal *c = q->pos;
+    dReal hc = height(t, c);
+    if (hc < 0) return 0;
+    // (A triangle off the box's own bounding box in the mesh frame never
+    // comes here: dxTriMeshGather leaves it out.)
+    const box_pair *b = prepare_box(q);
+    dReal nb[3];
+    if (box_separated(b, t, c, hc, nb)) return 0;
     // A face is clipped if one of its corners is on or behind the plane.
     static const int faces[6][4] = { { 0, 2, 6, 4 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
                                      { 2, 3, 7, 6 }, { 0, 1, 3, 2 }, { 4, 5, 7, 6 } };
-    dReal eps = DX_COLLIDE_EPS * q->scale;
-    unsigned behind = 0;   // bit v: corner v
-    for (int v = 0; v < 8; v++)
-        if (height(t, b->corner[v]) <= eps) behind |= 1u << v;
+    // Bit v: corner v is on or behind the plane (height <= eps), from the
+    // centre's height and the axes; one eps more covers that sum's
+    // rounding (a face clipped needlessly adds nothing: its points are all
+    // above the plane).
+    dReal eps = DX_COLLIDE_EPS * q->scale, up[3];
+    for (int j = 0; j < 3; j++) up[j] = b->h[j] * nb[j];
+    unsigned behind = 0;
+    for (int v = 0; v < 8; v++) {
+        dReal hv = hc + (v & 1 ? up[0] : -up[0]) + (v & 2 ? up[1] : -up[1]) +
+                   (v & 4 ? up[2] : -up[2]);
+        if (hv <= 2 * eps) behind |= 1u << v;
+    }
     dxTriPrism p;
     dxTriPrismInit(q, t, &p);
     // Bit v of outside[k]: corner v is beyond side k of the prism by more
@@ -430,7 +435,10 @@ static int box_test(dxTriQuery *q, const dxTri *t)
     // one slack more, a margin for working it out from the centre and the
     // axes instead). A face with its four corners beyond one side clips to
     // nothing.
-    unsigned outside[3] = { 0, 0, 0 };
+    // Bit v of inside[k]: corner v is within side k by more than rounding
+    // (the measure at least one slack: with the clip's own slack, two), so
+    // a face with its four corners within needs no clip against side k.
+    unsigned outside[3] = { 0, 0, 0 }, inside[3] = { 0, 0, 0 };
     for (int k = 0; k < 3; k++) {
         dReal d[3], off[3];
         sub3(d, c, t->v[k]);
@@ -440,6 +448,7 @@ static int box_test(dxTriQuery *q, const dxTri *t)
             dReal f = f0 + (v & 1 ? off[0] : -off[0]) + (v & 2 ? off[1] : -off[1]) +
                       (v & 4 ? off[2] : -off[2]);
             if (f < 0) outside[k] |= 1u << v;
+            if (f >= 3 * p.slack[k]) inside[k] |= 1u << v;
         }
     }
     int added = 0;
@@ -453,7 +462,10 @@ static int box_test(dxTriQuery *q, const dxTri *t)
         dReal a[POLY_MAX][3];
         for (int i = 0; i < 4; i++)
             for (int j = 0; j < 3; j++) a[i][j] = b->corner[fv[i]][j];
-        added |= clipped_face_contacts(q, t, &p, a, 4);
+        unsigned within = 0;
+        for (int k = 0; k < 3; k++)
+            if ((inside[k] & mask) == mask) within |= 1u << k;
+        added |= clipped_face_contacts(q, t, &p, a, 4, within);
     }
     return added;
 }

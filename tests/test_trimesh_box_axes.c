@@ -1,0 +1,198 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// test_trimesh_box_axes.c -- a box against a mesh of one triangle, in
+// random poses of both, judged by the test's own separating-axis sums in
+// the world frame: a box apart from the triangle along one of the 13 axes
+// (the normal, the box's three, the nine edge pairs) by more than rounding
+// gets no contact; a box whose centre is in front of the triangle and whose
+// lowest corner (below the triangle's plane) lies over the triangle gets
+// contacts along the triangle's normal, the deepest as deep as that corner
+// is below the plane, each a point of the box over the triangle. The collider takes the triangle into the
+// box's frame for its axes and skips the box faces' clips against prism
+// sides they are wholly within: these are the cases that must not move.
+
+#include "test.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+static double urand(double lo, double hi)
+{
+    return lo + (hi - lo) * (rand() / (double)RAND_MAX);
+}
+
+static double dot3(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static void cross3(double out[3], const double a[3], const double b[3])
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+// The largest gap between the box (centre c, unit axes ax[j] in world,
+// half sides h) and the triangle v over the 13 axes, each made unit; a
+// negative value: they overlap on every axis by at least its size.
+static double largest_gap(const double c[3], double ax[3][3], const double h[3],
+                          double v[3][3])
+{
+    double axes[13][3];
+    int n = 0;
+    double e[3][3], nrm[3];
+    for (int k = 0; k < 3; k++)
+        for (int i = 0; i < 3; i++) e[k][i] = v[(k + 1) % 3][i] - v[k][i];
+    cross3(nrm, e[0], e[1]);
+    for (int i = 0; i < 3; i++) axes[n][i] = nrm[i];
+    n++;
+    for (int j = 0; j < 3; j++, n++)
+        for (int i = 0; i < 3; i++) axes[n][i] = ax[j][i];
+    for (int k = 0; k < 3; k++)
+        for (int j = 0; j < 3; j++) cross3(axes[n++], e[k], ax[j]);
+    double gap = -INFINITY;
+    for (int a = 0; a < n; a++) {
+        double len = sqrt(dot3(axes[a], axes[a]));
+        if (len < 1e-6) continue;   // parallel edges: no axis
+        double L[3] = { axes[a][0] / len, axes[a][1] / len, axes[a][2] / len };
+        double lo = INFINITY, hi = -INFINITY;
+        for (int k = 0; k < 3; k++) {
+            double p = dot3(L, v[k]);
+            lo = fmin(lo, p);
+            hi = fmax(hi, p);
+        }
+        double bc = dot3(L, c), br = 0;
+        for (int j = 0; j < 3; j++) br += h[j] * fabs(dot3(L, ax[j]));
+        gap = fmax(gap, fmax(lo - (bc + br), (bc - br) - hi));
+    }
+    return gap;
+}
+
+// Whether p, projected on the triangle's plane, is inside it by margin.
+static int over_triangle(double v[3][3], const double nrm[3], const double p[3], double margin)
+{
+    for (int k = 0; k < 3; k++) {
+        double e[3], m[3], d[3];
+        for (int i = 0; i < 3; i++) {
+            e[i] = v[(k + 1) % 3][i] - v[k][i];
+            d[i] = p[i] - v[k][i];
+        }
+        cross3(m, nrm, e);   // inward, in the plane
+        if (dot3(m, d) < margin * sqrt(dot3(m, m))) return 0;
+    }
+    return 1;
+}
+
+static int test_box_against_one_triangle(void)
+{
+    srand(11);
+    const double margin = TOL(1e-6, 2e-3);
+    int apart = 0, deep = 0, behind = 0;
+    for (int round = 0; round < 6000; round++) {
+        // The triangle in the mesh frame, the mesh turned and moved.
+        double tv[3][3];
+        for (int k = 0; k < 3; k++)
+            for (int i = 0; i < 3; i++) tv[k][i] = urand(-1, 1);
+        float fv[9];
+        for (int k = 0; k < 9; k++) fv[k] = (float)tv[k / 3][k % 3];
+        static const dTriIndex idx[3] = { 0, 1, 2 };
+        dTriMeshDataID data = dGeomTriMeshDataCreate();
+        dGeomTriMeshDataBuildSingle(data, fv, 3 * sizeof(float), 3, idx, 3, 3 * sizeof(dTriIndex));
+        dGeomID mesh = dCreateTriMesh(0, data, 0, 0, 0);
+        dMatrix3 Rm, Rb;
+        dRFromAxisAndAngle(Rm, urand(-1, 1), urand(-1, 1), urand(-1, 1), urand(0, 3));
+        dGeomSetRotation(mesh, Rm);
+        dGeomSetPosition(mesh, urand(-1, 1), urand(-1, 1), urand(-1, 1));
+        double v[3][3];
+        for (int k = 0; k < 3; k++) {
+            dVector3 w;
+            dGeomGetRelPointPos(mesh, fv[3 * k], fv[3 * k + 1], fv[3 * k + 2], w);
+            for (int i = 0; i < 3; i++) v[k][i] = w[i];
+        }
+        double e1[3], e2[3], nrm[3];
+        for (int i = 0; i < 3; i++) {
+            e1[i] = v[1][i] - v[0][i];
+            e2[i] = v[2][i] - v[0][i];
+        }
+        cross3(nrm, e1, e2);
+        double nl = sqrt(dot3(nrm, nrm));
+        if (nl < 0.05) {   // a sliver: its normal is rounding
+            dGeomDestroy(mesh);
+            dGeomTriMeshDataDestroy(data);
+            continue;
+        }
+        for (int i = 0; i < 3; i++) nrm[i] /= nl;
+
+        // The box near the triangle's centre.
+        double h[3] = { urand(0.05, 0.6), urand(0.05, 0.6), urand(0.05, 0.6) };
+        dGeomID box = dCreateBox(0, 2 * h[0], 2 * h[1], 2 * h[2]);
+        double c[3];
+        for (int i = 0; i < 3; i++)
+            c[i] = (v[0][i] + v[1][i] + v[2][i]) / 3 + urand(-0.8, 0.8);
+        dRFromAxisAndAngle(Rb, urand(-1, 1), urand(-1, 1), urand(-1, 1), urand(0, 3));
+        dGeomSetRotation(box, Rb);
+        dGeomSetPosition(box, c[0], c[1], c[2]);
+        const dReal *R = dGeomGetRotation(box), *P = dGeomGetPosition(box);
+        double ax[3][3];
+        for (int j = 0; j < 3; j++)
+            for (int i = 0; i < 3; i++) ax[j][i] = R[4 * i + j];
+        for (int i = 0; i < 3; i++) c[i] = P[i];
+
+        dContactGeom k[8];
+        int n = dCollide(mesh, box, 8, k, sizeof k[0]);
+        double gap = largest_gap(c, ax, h, v);
+        double hc = dot3(nrm, c) - dot3(nrm, v[0]);
+        // The lowest corner along the normal.
+        double low[3] = { 0, 0, 0 }, low_h = INFINITY;   // and its height
+        for (int corner = 0; corner < 8; corner++) {
+            double p[3];
+            for (int i = 0; i < 3; i++)
+                p[i] = c[i] + (corner & 1 ? h[0] : -h[0]) * ax[0][i] +
+                       (corner & 2 ? h[1] : -h[1]) * ax[1][i] +
+                       (corner & 4 ? h[2] : -h[2]) * ax[2][i];
+            double ph = dot3(nrm, p) - dot3(nrm, v[0]);
+            if (ph < low_h) {
+                low_h = ph;
+                for (int i = 0; i < 3; i++) low[i] = p[i];
+            }
+        }
+        if (gap > margin) {
+            CHECK(n == 0);
+            apart++;
+        } else if (hc < -margin) {
+            CHECK(n == 0);   // one-sided: the centre behind the triangle
+            behind++;
+        } else if (hc > margin && gap < -margin && low_h < -margin &&
+                   over_triangle(v, nrm, low, margin)) {
+            CHECK(n >= 1);
+            double deepest = 0;
+            for (int j = 0; j < n; j++) deepest = fmax(deepest, k[j].depth);
+            CHECK_NEAR(deepest, -low_h, TOL(1e-9, 1e-4));
+            for (int j = 0; j < n; j++) {
+                CHECK(k[j].g1 == mesh && k[j].g2 == box && k[j].side1 == 0);
+                CHECK_VEC(k[j].normal, -nrm[0], -nrm[1], -nrm[2], TOL(1e-9, 1e-4));
+                CHECK(k[j].depth >= 0);
+                // Each contact a point of the box over the triangle, as
+                // deep below the plane as it says.
+                double p[3] = { k[j].pos[0], k[j].pos[1], k[j].pos[2] }, d[3];
+                for (int i = 0; i < 3; i++) d[i] = p[i] - c[i];
+                for (int a = 0; a < 3; a++) CHECK(fabs(dot3(d, ax[a])) <= h[a] + margin);
+                CHECK(over_triangle(v, nrm, p, -margin));
+                CHECK_NEAR(dot3(nrm, p) - dot3(nrm, v[0]), -k[j].depth, TOL(1e-8, 1e-4));
+            }
+            deep++;
+        }
+        dGeomDestroy(box);
+        dGeomDestroy(mesh);
+        dGeomTriMeshDataDestroy(data);
+    }
+    // Each kind judged often enough to mean something.
+    CHECK(apart > 1000 && deep > 300 && behind > 300);
+    return 0;
+}
+
+const test_case test_cases[] = {
+    TEST_CASE(test_box_against_one_triangle),
+    TEST_END,
+};
