@@ -194,19 +194,18 @@ static void keep_hit(dxTriScratch *m, int max, dReal dist, int tri, const dReal 
     for (int j = 0; j < 3; j++) r->n[j] = n[j];
 }
 
-// Stack the slots of nodes[i] that the ray enters within limit, the
-// farthest first (so the nearest is walked first), with where it enters.
-static inline void push_slots(const dxTriMeshData *d, int i, const ray_lanes *r, dReal limit,
+// Stack the slots of nodes[i] that the ray enters within limit (rounded
+// up to a float), the farthest first (so the nearest is walked first), with
+// where it enters.
+static inline void push_slots(const dxTriMeshData *d, int i, const ray_lanes *r, float limit,
                               int *stack, float *entry, int *top)
 {
     const dxTriMeshNode *node = &d->nodes[i];
     float enter[4];
-    unsigned m = ray_slots(r, node, dxFloatAbove(limit), enter);
     int sorted[4], n = 0;
-    for (int j = 0; j < 4; j++) {   // insertion by entry, ties in slot order
-        if (!(m >> j & 1)) continue;
+    for (unsigned m = ray_slots(r, node, limit, enter); m; m &= m - 1) {
+        int j = __builtin_ctz(m), k = n++;   // insertion by entry, ties in slot order
         prefetch_slot(d, node, j);
-        int k = n++;
         while (k > 0 && enter[sorted[k - 1]] > enter[j]) {
             sorted[k] = sorted[k - 1];
             k--;
@@ -244,33 +243,37 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
     // untested. A node pushes at most 4 and the four-way depth is under 17.
     int stack[128], top = 0;
     float entry[128];
-    push_slots(d, 0, &lanes, ray->length, stack, entry, &top);
+    dReal limit = ray->length;   // the farthest hit kept once `max` are
+    float limit_up = dxFloatAbove(limit);
+    push_slots(d, 0, &lanes, limit_up, stack, entry, &top);
     while (top > 0) {
         top--;
-        dReal limit = h->raw_count == max ? h->raw[max - 1].depth : ray->length;
         if (entry[top] > limit) continue;
         const dxTriMeshNode *node = &d->nodes[stack[top] >> 2];
         int slot = stack[top] & 3, first = node->first[slot];
         if (node->count[slot] == 0) {
-            push_slots(d, first, &lanes, limit, stack, entry, &top);
+            push_slots(d, first, &lanes, limit_up, stack, entry, &top);
             continue;
         }
         // Only the vertices are read until a hit (memory traffic is what a
         // ray costs), from the leaf-order copy (a heightfield's patch has
         // none: its arrays): the triangle's index and normal, after. A hit
-        // beyond the farthest kept (when `max` are) could not be kept.
+        // beyond the limit could not be kept.
         for (int j = first; j < first + node->count[slot]; j++) {
             dReal load[3][3], dist, bu, bv;
             const dReal(*tv)[3] = (const dReal(*)[3])load;
             if (d->leaf_vertices) tv = (const dReal(*)[3])(d->leaf_vertices + 9 * j);
             else dxTriMeshTriangle(d, d->order[j], load);
-            dReal within = h->raw_count == max ? h->raw[max - 1].depth : ray->length;
-            if (!ray_triangle(s, v, within, tv, ray->backface_cull, &dist, &bu, &bv)) continue;
+            if (!ray_triangle(s, v, limit, tv, ray->backface_cull, &dist, &bu, &bv)) continue;
             int ti = d->order[j];
             if (dxTriMeshIsDegenerate(d, ti)) continue;
             if (m->ray_callback && !m->ray_callback(o1, o2, ti, bu, bv)) continue;
             if (m->callback && !m->callback(o1, o2, ti)) continue;
             keep_hit(h, max, dist, ti, d->normal + 3 * ti);
+            if (h->raw_count == max) {
+                limit = h->raw[max - 1].depth;
+                limit_up = dxFloatAbove(limit);
+            }
         }
     }
     int count = h->raw_count;
