@@ -32,8 +32,9 @@ enum { DX_TRI_EDGE_FEATURE = 0x01, DX_TRI_VERTEX_FEATURE = 0x08 };
 // triangles order[first[s] ..], an inner node (count 0) at nodes[first[s]],
 // after this one, or unused (count -1; unused slots come last). The boxes
 // are in float, rounded outwards: each contains the exact one. The tree is
-// a median-split binary tree with every second level lifted into its
-// parent: its leaves, their order and their boxes are the binary tree's.
+// a median-split binary tree with levels lifted into their parents (see
+// trimesh_tree.c): its leaves, their order and their boxes are the binary
+// tree's.
 // A leaf is named by node * 4 + slot (temporal coherence).
 typedef struct dxTriMeshNode {
     float lo[3][4], hi[3][4];

@@ -3,8 +3,8 @@
 // trimesh_tree.c -- the box tree of a mesh: built once per data object
 // (top-down as a binary tree, each node's triangles split at the median of
 // their centres along the longest side of the centres' box, leaves of at
-// most LEAF triangles; then every second level lifted into its parent, so
-// that a node holds up to four children, after it; then the boxes
+// most LEAF triangles; then levels lifted into their parents, so that a
+// node holds up to four children, after it; then the boxes
 // bottom-up), refitted bottom-up when the vertices move (same topology),
 // and walked with a fixed stack to list the triangles near a box (or the
 // leaves, for temporal coherence), a node's four boxes tested at once.
@@ -129,9 +129,9 @@ static void grow(dReal lo[3], dReal hi[3], const dReal blo[3], const dReal bhi[3
 
 // A node of the binary tree while building: a leaf of count > 0 triangles
 // order[first ..], or (count 0) an inner node with its children at first
-// and first + 1.
+// and first + 1; height: the longest way down to a leaf (a leaf's is 0).
 typedef struct bin_node {
-    int first, count;
+    int first, count, height;
 } bin_node;
 
 // Binary node i over order[lo, hi) (its slot taken): split at the median of
@@ -141,8 +141,7 @@ static void build_node(dxTriMeshData *d, bin_node *bin, int *used, int i, const 
                        int lo, int hi)
 {
     if (hi - lo <= LEAF) {
-        bin[i].first = lo;
-        bin[i].count = hi - lo;
+        bin[i] = (bin_node){ lo, hi - lo, 0 };
         return;
     }
     dReal clo[3] = { dInfinity, dInfinity, dInfinity };
@@ -158,33 +157,41 @@ static void build_node(dxTriMeshData *d, bin_node *bin, int *used, int i, const 
     select_median(d->order, centre, axis, lo, hi, mid);
     int first = *used;
     *used += 2;
-    bin[i].count = 0;
-    bin[i].first = first;
     build_node(d, bin, used, first, centre, lo, mid);
     build_node(d, bin, used, first + 1, centre, mid, hi);
+    int h = bin[first].height > bin[first + 1].height ? bin[first].height : bin[first + 1].height;
+    bin[i] = (bin_node){ first, 0, h + 1 };
 }
 
-// The four-way node w from binary node b: b's children, or for an inner
-// child its two children, become the slots in order; inner slots take the
-// next free nodes (*used) and are made at once (depth first: a node's
-// children come after it).
+// The four-way node w from binary inner node b (or a leaf, as the root of
+// a small mesh): b's children become the slots in order, and while there
+// is room, the first inner slot of odd height gives way to its two
+// children. So the slots below are of even height, whose grandchildren
+// fill a node's four slots: about a third as many nodes as leaves, where
+// lifting every second level from the root would make half-empty nodes
+// over the leaves when the tree's height is odd. Inner slots take the next
+// free nodes (*used) and are made at once (depth first: a node's children
+// come after it).
 static void lift_node(dxTriMeshData *d, const bin_node *bin, int b, int w, int *used)
 {
-    dxTriMeshNode *node = &d->nodes[w];
-    clear_node(node);
     int slot[4], n = 0;
     if (bin[b].count > 0) {
         slot[n++] = b;
     } else {
-        for (int c = bin[b].first; c <= bin[b].first + 1; c++) {
-            if (bin[c].count > 0) {
-                slot[n++] = c;
-            } else {
-                slot[n++] = bin[c].first;
-                slot[n++] = bin[c].first + 1;
-            }
-        }
+        slot[n++] = bin[b].first;
+        slot[n++] = bin[b].first + 1;
     }
+    while (n < 4) {
+        int e = 0;
+        while (e < n && !(bin[slot[e]].count == 0 && bin[slot[e]].height % 2 == 1)) e++;
+        if (e == n) break;
+        int first = bin[slot[e]].first;
+        for (int k = n; k > e + 1; k--) slot[k] = slot[k - 1];
+        slot[e] = first;
+        slot[e + 1] = first + 1;
+        n++;
+    }
+    clear_node(&d->nodes[w]);
     for (int s = 0; s < n; s++) {
         const bin_node *e = &bin[slot[s]];
         if (e->count > 0) {

@@ -103,8 +103,9 @@ static void mesh_destroy(mesh *m)
 
 // Every used slot's box holds what is below it (triangles or a node's
 // slots), children come after their parent, unused slots last, and the
-// leaves met depth first, slot by slot, cover order[] once, in order.
-static int check_node(const dxTriMeshData *d, int i, int *next_first)
+// leaves met depth first, slot by slot, cover order[] once, in order
+// (counted into *leaves).
+static int check_node(const dxTriMeshData *d, int i, int *next_first, int *leaves)
 {
     const dxTriMeshNode *node = &d->nodes[i];
     int used = 0;
@@ -119,10 +120,11 @@ static int check_node(const dxTriMeshData *d, int i, int *next_first)
             for (int cs = 0; cs < 4 && child->count[cs] >= 0; cs++)
                 for (int k = 0; k < 3; k++)
                     CHECK(node->lo[k][s] <= child->lo[k][cs] && child->hi[k][cs] <= node->hi[k][s]);
-            if (check_node(d, c, next_first)) return 1;
+            if (check_node(d, c, next_first, leaves)) return 1;
             continue;
         }
         CHECK(node->count[s] <= 4 && node->first[s] == *next_first);
+        ++*leaves;
         *next_first += node->count[s];
         for (int j = node->first[s]; j < node->first[s] + node->count[s]; j++) {
             dReal tv[3][3];
@@ -140,9 +142,11 @@ static int check_node(const dxTriMeshData *d, int i, int *next_first)
 
 static int check_shape(const dxTriMeshData *d)
 {
-    int next_first = 0;
-    if (check_node(d, 0, &next_first)) return 1;
+    int next_first = 0, leaves = 0;
+    if (check_node(d, 0, &next_first, &leaves)) return 1;
     CHECK(next_first == d->tri_count);
+    // nodes mostly full: about a third as many as leaves
+    CHECK(2 * d->node_count <= leaves + 2);
     int *seen = calloc((size_t)d->tri_count, sizeof(int));
     for (int j = 0; j < d->tri_count; j++) seen[d->order[j]]++;
     int once = 1;
