@@ -56,6 +56,61 @@ static int ray_triangle(const dReal s[3], const dReal v[3], dReal len, const dRe
     return 1;
 }
 
+#if defined(__SSE2__) && !defined(dSINGLE)
+// ray_triangle for two triangles at once (9 numbers each, t0 in lane 0 and
+// t1 in lane 1): the same operations in the same order, so the same bits
+// (no fused operations: SSE2), each test passing as the scalar one does
+// (also for a NaN). Bit l of the result is set if triangle l is crossed,
+// with dist[l], bu[l], bv[l].
+static inline unsigned ray_triangle_pair(const dReal s[3], const dReal v[3], dReal len,
+                                         const dReal *t0, const dReal *t1, int cull,
+                                         dReal dist[2], dReal bu[2], dReal bv[2])
+{
+    __m128d e1[3], e2[3], tv[3], vv[3];
+    for (int i = 0; i < 3; i++) {
+        __m128d a = _mm_set_pd(t1[i], t0[i]);
+        e1[i] = _mm_sub_pd(_mm_set_pd(t1[3 + i], t0[3 + i]), a);
+        e2[i] = _mm_sub_pd(_mm_set_pd(t1[6 + i], t0[6 + i]), a);
+        tv[i] = _mm_sub_pd(_mm_set1_pd(s[i]), a);
+        vv[i] = _mm_set1_pd(v[i]);
+    }
+#define MUL _mm_mul_pd
+#define SUB _mm_sub_pd
+#define DOT(a, b) _mm_add_pd(_mm_add_pd(MUL(a[0], b[0]), MUL(a[1], b[1])), MUL(a[2], b[2]))
+    __m128d p[3] = { SUB(MUL(vv[1], e2[2]), MUL(vv[2], e2[1])),
+                     SUB(MUL(vv[2], e2[0]), MUL(vv[0], e2[2])),
+                     SUB(MUL(vv[0], e2[1]), MUL(vv[1], e2[0])) };
+    __m128d det = DOT(e1, p), zero = _mm_setzero_pd(), one = _mm_set1_pd(1);
+    __m128d ok;
+    if (cull) {
+        ok = _mm_cmpnle_pd(det, zero);
+    } else {
+        __m128d abs = _mm_andnot_pd(_mm_set1_pd(-0.0), det);
+        __m128d eps = _mm_set1_pd(DX_COLLIDE_EPS);
+        __m128d scale = MUL(DOT(e1, e1), DOT(e2, e2));
+        ok = _mm_cmpnle_pd(MUL(abs, abs), MUL(MUL(scale, eps), eps));
+    }
+    __m128d inv = _mm_div_pd(one, det);
+    __m128d u = MUL(DOT(tv, p), inv);
+    ok = _mm_and_pd(ok, _mm_and_pd(_mm_cmpnlt_pd(u, zero), _mm_cmpngt_pd(u, one)));
+    __m128d qv[3] = { SUB(MUL(tv[1], e1[2]), MUL(tv[2], e1[1])),
+                      SUB(MUL(tv[2], e1[0]), MUL(tv[0], e1[2])),
+                      SUB(MUL(tv[0], e1[1]), MUL(tv[1], e1[0])) };
+    __m128d w = MUL(DOT(vv, qv), inv);
+    ok = _mm_and_pd(ok, _mm_and_pd(_mm_cmpnlt_pd(w, zero),
+                                   _mm_cmpngt_pd(_mm_add_pd(u, w), one)));
+    __m128d dd = MUL(DOT(e2, qv), inv);
+    ok = _mm_and_pd(ok, _mm_and_pd(_mm_cmpnlt_pd(dd, zero), _mm_cmpngt_pd(dd, _mm_set1_pd(len))));
+#undef MUL
+#undef SUB
+#undef DOT
+    _mm_storeu_pd(dist, dd);
+    _mm_storeu_pd(bu, u);
+    _mm_storeu_pd(bv, w);
+    return (unsigned)_mm_movemask_pd(ok);
+}
+#endif
+
 // The ray as the slot tests take it (mesh frame, in float): its start s,
 // the inverses of its direction's components, and per axis a slack that
 // covers every rounding of a crossing computed in float (the start's, the
@@ -257,22 +312,42 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
         }
         // Only the vertices are read until a hit (memory traffic is what a
         // ray costs), from the leaf-order copy (a heightfield's patch has
-        // none: its arrays): the triangle's index and normal, after. A hit
-        // beyond the limit could not be kept.
-        for (int j = first; j < first + node->count[slot]; j++) {
-            dReal load[3][3], dist, bu, bv;
-            const dReal(*tv)[3] = (const dReal(*)[3])load;
-            if (d->leaf_vertices) tv = (const dReal(*)[3])(d->leaf_vertices + 9 * j);
-            else dxTriMeshTriangle(d, d->order[j], load);
-            if (!ray_triangle(s, v, limit, tv, ray->backface_cull, &dist, &bu, &bv)) continue;
-            int ti = d->order[j];
-            if (dxTriMeshIsDegenerate(d, ti)) continue;
-            if (m->ray_callback && !m->ray_callback(o1, o2, ti, bu, bv)) continue;
-            if (m->callback && !m->callback(o1, o2, ti)) continue;
-            keep_hit(h, max, dist, ti, d->normal + 3 * ti);
-            if (h->raw_count == max) {
-                limit = h->raw[max - 1].depth;
-                limit_up = dxFloatAbove(limit);
+        // none: its arrays), two triangles at a time where SSE2 allows: the
+        // triangle's index and normal, after. A hit beyond the limit could
+        // not be kept.
+        int end = first + node->count[slot];
+        for (int j = first; j < end; j += 2) {
+            dReal dist[2], bu[2], bv[2];
+            unsigned crossed = 0;
+#if defined(__SSE2__) && !defined(dSINGLE)
+            if (d->leaf_vertices) {
+                const dReal *t0 = d->leaf_vertices + 9 * j, *t1 = j + 1 < end ? t0 + 9 : t0;
+                crossed = ray_triangle_pair(s, v, limit, t0, t1, ray->backface_cull, dist, bu,
+                                            bv);
+                if (j + 1 == end) crossed &= 1;
+            } else
+#endif
+            {
+                for (int l = 0; l < 2 && j + l < end; l++) {
+                    dReal load[3][3];
+                    const dReal(*tv)[3] = (const dReal(*)[3])load;
+                    if (d->leaf_vertices) tv = (const dReal(*)[3])(d->leaf_vertices + 9 * (j + l));
+                    else dxTriMeshTriangle(d, d->order[j + l], load);
+                    if (ray_triangle(s, v, limit, tv, ray->backface_cull, &dist[l], &bu[l], &bv[l]))
+                        crossed |= 1u << l;
+                }
+            }
+            for (int l = 0; l < 2; l++) {
+                if (!(crossed >> l & 1) || dist[l] > limit) continue;
+                int ti = d->order[j + l];
+                if (dxTriMeshIsDegenerate(d, ti)) continue;
+                if (m->ray_callback && !m->ray_callback(o1, o2, ti, bu[l], bv[l])) continue;
+                if (m->callback && !m->callback(o1, o2, ti)) continue;
+                keep_hit(h, max, dist[l], ti, d->normal + 3 * ti);
+                if (h->raw_count == max) {
+                    limit = h->raw[max - 1].depth;
+                    limit_up = dxFloatAbove(limit);
+                }
             }
         }
     }
