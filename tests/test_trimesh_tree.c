@@ -293,7 +293,8 @@ static int check_rays(mesh *m, double size, int grid, int soup)
         dContactGeom c[8];
         dGeomRaySetClosestHit(ray, 1);
         int got = dCollide(whole, ray, 8, c, sizeof c[0]);
-        failed |= got != (n > 0) || (n > 0 && (c[0].depth != all[0].depth || c[0].side1 != all[0].tri));
+        failed |= got != (n > 0);
+        failed |= n > 0 && (c[0].depth != all[0].depth || c[0].side1 != all[0].tri);
         dGeomRaySetClosestHit(ray, 0);
         got = dCollide(whole, ray, 8, c, sizeof c[0]);
         failed |= got != (n < 8 ? n : 8);

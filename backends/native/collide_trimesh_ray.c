@@ -3,11 +3,12 @@
 // collide_trimesh_ray.c -- trimesh-ray, as ODE 0.16 with OPCODE: one
 // contact per triangle the ray crosses within its length (nearest first, at
 // most the flags' count; only the nearest with the ray's ClosestHit or
-// FirstContact set), backfaces skipped with BackfaceCull. Each hit goes
-// through the ray callback (with its barycentric u, v) and the per-triangle
-// callback. pos is the hit point, depth its distance from the ray's start,
-// normal the triangle's normal reversed (into the mesh, g1); side1 the
-// triangle.
+// FirstContact set), backfaces skipped with BackfaceCull. Each hit that
+// could be kept (not beyond the farthest of the hits kept once there are as
+// many as wanted) goes through the ray callback (with its barycentric u, v)
+// and the per-triangle callback. pos is the hit point, depth its distance
+// from the ray's start, normal the triangle's normal reversed (into the
+// mesh, g1); side1 the triangle.
 
 #include "collide_trimesh.h"
 
@@ -331,9 +332,12 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
                 for (int l = 0; l < 2 && j + l < end; l++) {
                     dReal load[3][3];
                     const dReal(*tv)[3] = (const dReal(*)[3])load;
-                    if (d->leaf_vertices) tv = (const dReal(*)[3])(d->leaf_vertices + 9 * (j + l));
-                    else dxTriMeshTriangle(d, d->order[j + l], load);
-                    if (ray_triangle(s, v, limit, tv, ray->backface_cull, &dist[l], &bu[l], &bv[l]))
+                    if (d->leaf_vertices)
+                        tv = (const dReal(*)[3])(d->leaf_vertices + 9 * (j + l));
+                    else
+                        dxTriMeshTriangle(d, d->order[j + l], load);
+                    if (ray_triangle(s, v, limit, tv, ray->backface_cull, &dist[l], &bu[l],
+                                     &bv[l]))
                         crossed |= 1u << l;
                 }
             }
