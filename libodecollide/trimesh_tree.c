@@ -146,9 +146,12 @@ static void build_node(dxTriMeshData *d, bin_node *bin, int *used, int i, const 
     }
     dReal clo[3] = { dInfinity, dInfinity, dInfinity };
     dReal chi[3] = { -dInfinity, -dInfinity, -dInfinity };
-    for (int j = lo; j < hi; j++) {
+    for (int j = lo; j < hi; j++) {   // the centres' box, without branches
         const dReal *c = centre + 3 * d->order[j];
-        grow(clo, chi, c, c);
+        for (int k = 0; k < 3; k++) {
+            clo[k] = c[k] < clo[k] ? c[k] : clo[k];
+            chi[k] = c[k] > chi[k] ? c[k] : chi[k];
+        }
     }
     int axis = 0;
     for (int k = 1; k < 3; k++)
