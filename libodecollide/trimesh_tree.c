@@ -342,11 +342,9 @@ typedef struct tree_walk {
 // subtree comes out before the second slot: leaf order).
 static inline void push_slots(const dxTriMeshData *d, const query_box *q, tree_walk *w, int node)
 {
-    for (unsigned m = overlapping_slots(&d->nodes[node], q); m;) {
-        int s = 31 - __builtin_clz(m);
-        m &= ~(1u << s);
-        w->stack[w->top++] = 4 * node + s;
-    }
+    unsigned m = overlapping_slots(&d->nodes[node], q);
+    for (int s = 3; s >= 0; s--)
+        if (m >> s & 1) w->stack[w->top++] = 4 * node + s;
 }
 
 // The next leaf (node * 4 + slot) whose box overlaps q, in leaf order, or
