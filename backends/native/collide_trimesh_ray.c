@@ -115,11 +115,12 @@ static inline unsigned ray_triangle_pair(const dReal s[3], const dReal v[3], dRe
 // The ray as the slot tests take it (mesh frame, in float): its start s,
 // the inverses of its direction's components, and per axis a slack that
 // covers every rounding of a crossing computed in float (the start's, the
-// difference's, the inverse's and the product's: each under 2^-24 of
-// m |inv|, m the largest coordinate in play, the box's or the start's;
-// the slack is 16 times that), so that each slab's [near, far] holds the
-// exact one. The tests can only keep a box an exact test would drop, never
-// drop one it would keep: the walk finds the hits of an exact walk. An
+// difference's, the inverse's and the product's: together under
+// 8 2^-24 m |inv|, m the largest coordinate in play, the box's or the
+// start's; the slack is 64 2^-24 m |inv|), so that each slab's [near, far]
+// holds the exact one. The tests can only keep a box an exact test would
+// drop, never drop one it would keep: the walk finds the hits of an exact
+// walk. An
 // axis the ray runs along (|v| under 1e-30, or 0) is tested as a slab the
 // start must lie in, [s_lo, s_hi]: the start widened by how far the ray
 // moves along that axis, and a float step more each side.
