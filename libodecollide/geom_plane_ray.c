@@ -117,6 +117,11 @@ dReal dGeomRayGetLength(dGeomID g)
 }
 
 // Place the ray at p pointing along d: a rotation whose z column is d.
+// A ray on no body takes the rotation and position directly: the same
+// numbers as dRFromZAxis then dGeomSetRotation (whose orthogonalisation
+// moves the last bits of the rows, so it is kept) and dGeomSetPosition,
+// without their checks of what is already known finite and unit, and with
+// one walk up the spaces.
 void dGeomRaySet(dGeomID g, dReal px, dReal py, dReal pz, dReal dx, dReal dy, dReal dz)
 {
     CHECK_CLASS(g, dRayClass, "ray", return);
@@ -125,6 +130,23 @@ void dGeomRaySet(dGeomID g, dReal px, dReal py, dReal pz, dReal dx, dReal dy, dR
     DX_CHECK_ARG(dxIsFinite3(dx, dy, dz) && dSafeNormalize3(d), return,
                  "direction (%g, %g, %g) has no length", (double)dx, (double)dy, (double)dz);
     dMatrix3 R;
+    if (!g->body) {
+        dVector3 p, q;
+        dSafeNormalize3(d);   // as dRFromZAxis: a unit vector's last bits may move
+        dPlaneSpace(d, p, q);
+        for (int i = 0; i < 3; i++) {
+            R[4 * i] = p[i];
+            R[4 * i + 1] = q[i];
+            R[4 * i + 2] = d[i];
+            R[4 * i + 3] = 0;
+        }
+        if (dOrthogonalizeR(R)) {
+            dCopyMatrix4x3(g->own_R, R);
+            dAssignVector3(g->own_pos, px, py, pz);
+            dxGeomMarkMoved(g);
+            return;
+        }
+    }
     dRFromZAxis(R, d[0], d[1], d[2]);
     dGeomSetRotation(g, R);
     dGeomSetPosition(g, px, py, pz);

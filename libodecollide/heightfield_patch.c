@@ -209,9 +209,7 @@ int dxHeightfieldBuildPatch(const dxHeightfieldData *d, dxHeightfieldPatch *pt, 
                 }
             }
         }
-    dxTriMeshNodeSetBox(node, p->lo, p->hi);
-    node->first = 0;
-    node->count = count;
+    dxTriMeshNodeSetLeaf(node, p->lo, p->hi, count);
     p->node_count = count > 0;
     return 1;
 }

@@ -8,6 +8,7 @@
 #ifndef DX_TRIMESH_INTERNAL_H
 #define DX_TRIMESH_INTERNAL_H
 
+#include <math.h>
 #include <ode/collision_trimesh.h>
 
 #include "geom_internal.h"
@@ -25,17 +26,37 @@ enum {
 // bumps).
 enum { DX_TRI_EDGE_FEATURE = 0x01, DX_TRI_VERTEX_FEATURE = 0x08 };
 
-// A node of the box tree (32 bytes: two siblings share a cache line): a
-// leaf holds count > 0 triangles order[first ..]; an inner node (count 0)
-// has its children at `first` and `first + 1`, after it. The box is in
-// float, rounded outwards: it contains the exact one.
+// A node of the box tree: up to four children ("slots") with their boxes
+// side by side per axis, so that a query or a ray tests the four at once
+// (128 bytes, two cache lines). Slot s is a leaf of count[s] > 0
+// triangles order[first[s] ..], an inner node (count 0) at nodes[first[s]],
+// after this one, or unused (count -1; unused slots come last). The boxes
+// are in float, rounded outwards: each contains the exact one. The tree is
+// a median-split binary tree with levels lifted into their parents (see
+// trimesh_tree.c): its leaves, their order and their boxes are the binary
+// tree's.
+// A leaf is named by node * 4 + slot (temporal coherence).
 typedef struct dxTriMeshNode {
-    float lo[3], hi[3];
-    int first, count;
+    float lo[3][4], hi[3][4];
+    int first[4], count[4];
 } dxTriMeshNode;
 
-// Set a node's box to contain [lo, hi].
-void dxTriMeshNodeSetBox(dxTriMeshNode *node, const dReal lo[3], const dReal hi[3]);
+// The float nearest x on the side of -infinity (below) or +infinity
+// (above): the tree's boxes are rounded outwards with these.
+static inline float dxFloatBelow(dReal x)
+{
+    float f = (float)x;
+    return f > x ? nextafterf(f, -INFINITY) : f;
+}
+static inline float dxFloatAbove(dReal x)
+{
+    float f = (float)x;
+    return f < x ? nextafterf(f, INFINITY) : f;
+}
+
+// Make node a tree of one leaf: the count triangles order[0 ..], in the box
+// [lo, hi] (a heightfield's patch).
+void dxTriMeshNodeSetLeaf(dxTriMeshNode *node, const dReal lo[3], const dReal hi[3], int count);
 
 struct dxTriMesh;
 
@@ -56,7 +77,7 @@ struct dxTriMeshData {
     int *neighbour;                       // 3 per triangle: across edge k, or -1
     int closed;                           // every edge has a neighbour
     unsigned char *features;              // DX_TRI_*_FEATURE bits per triangle
-    dxTriMeshNode *nodes;
+    dxTriMeshNode *nodes;                 // the box tree, root first
     int node_count;
     dReal lo[3], hi[3];                   // the exact box of the triangles (with nodes)
     int *order;                           // triangles in leaf order
@@ -132,7 +153,7 @@ static inline int dxTriMeshIsDegenerate(const dxTriMeshData *d, int t)
 // as needed, capacity *cap); returns the count.
 int dxTriMeshQueryBox(const dxTriMeshData *d, const dReal lo[3], const dReal hi[3], int **out,
                       int *cap);
-// The leaves (node indices) whose box overlaps [lo, hi], in the order
+// The leaves (node * 4 + slot) whose box overlaps [lo, hi], in the order
 // dxTriMeshQueryBox lists their triangles, into leaf[]; returns the count,
 // or -1 (stopping) if there are more than max.
 int dxTriMeshQueryLeaves(const dxTriMeshData *d, const dReal lo[3], const dReal hi[3], int *leaf,

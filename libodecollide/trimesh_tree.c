@@ -1,14 +1,16 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
 // trimesh_tree.c -- the box tree of a mesh: built once per data object
-// (top-down, each node's triangles split at the median of their centres
-// along the longest side of the centres' box, leaves of at most LEAF
-// triangles; siblings side by side, after their parent; then the boxes
+// (top-down as a binary tree, each node's triangles split at the median of
+// their centres along the longest side of the centres' box, leaves of at
+// most LEAF triangles; then levels lifted into their parents, so that a
+// node holds up to four children, after it; then the boxes
 // bottom-up), refitted bottom-up when the vertices move (same topology),
 // and walked with a fixed stack to list the triangles near a box (or the
-// leaves, for temporal coherence). Beside the tree, a copy of
-// the triangles' vertices in leaf order, so that a ray reads contiguous
-// memory (the user's arrays are indexed twice over: triangle, vertex).
+// leaves, for temporal coherence), a node's four boxes tested at once.
+// Beside the tree, a copy of the triangles' vertices in leaf order, so that
+// a ray reads contiguous memory (the user's arrays are indexed twice over:
+// triangle, vertex).
 
 #include <math.h>
 #include <ode/memory.h>
@@ -17,9 +19,14 @@
 
 #include "trimesh_internal.h"
 
-// A median split halves the triangles, so the depth stays below
-// log2(tri_count) + 2, far below STACK.
-enum { LEAF = 4, STACK = 64 };
+#if defined(__SSE__)
+#include <xmmintrin.h>
+#endif
+
+// A median split halves the triangles, so the binary depth stays below
+// log2(tri_count) + 2 and the four-way depth below half that: a walk
+// stacks at most 3 slots a level, far below STACK.
+enum { LEAF = 4, STACK = 128 };
 
 void dxTriMeshBuildTree(dxTriMeshData *d);
 void dxTriMeshRefitTree(dxTriMeshData *d);
@@ -82,15 +89,34 @@ static void select_median(int *order, const dReal *centre, int axis, int lo, int
     }
 }
 
-void dxTriMeshNodeSetBox(dxTriMeshNode *node, const dReal lo[3], const dReal hi[3])
+// Slot s of node gets the float box containing [lo, hi].
+static void set_slot_box(dxTriMeshNode *node, int s, const dReal lo[3], const dReal hi[3])
 {
     for (int k = 0; k < 3; k++) {
-        float l = (float)lo[k], h = (float)hi[k];
-        if (l > lo[k]) l = nextafterf(l, -INFINITY);
-        if (h < hi[k]) h = nextafterf(h, INFINITY);
-        node->lo[k] = l;
-        node->hi[k] = h;
+        node->lo[k][s] = dxFloatBelow(lo[k]);
+        node->hi[k][s] = dxFloatAbove(hi[k]);
     }
+}
+
+// Every slot unused (count -1, an empty box).
+static void clear_node(dxTriMeshNode *node)
+{
+    for (int s = 0; s < 4; s++) {
+        for (int k = 0; k < 3; k++) {
+            node->lo[k][s] = INFINITY;
+            node->hi[k][s] = -INFINITY;
+        }
+        node->first[s] = 0;
+        node->count[s] = -1;
+    }
+}
+
+void dxTriMeshNodeSetLeaf(dxTriMeshNode *node, const dReal lo[3], const dReal hi[3], int count)
+{
+    clear_node(node);
+    set_slot_box(node, 0, lo, hi);
+    node->first[0] = 0;
+    node->count[0] = count;
 }
 
 static void grow(dReal lo[3], dReal hi[3], const dReal blo[3], const dReal bhi[3])
@@ -101,40 +127,92 @@ static void grow(dReal lo[3], dReal hi[3], const dReal blo[3], const dReal bhi[3
     }
 }
 
-// Node i over order[lo, hi) (its slot taken): split at the median of the
-// triangles' centres (3 numbers per triangle) along the longest side of
-// their box. Its children take the next two free slots. The nodes' boxes
-// are set afterwards (fit_boxes).
-static void build_node(dxTriMeshData *d, int i, const dReal *centre, int lo, int hi)
+// A node of the binary tree while building: a leaf of count > 0 triangles
+// order[first ..], or (count 0) an inner node with its children at first
+// and first + 1; height: the longest way down to a leaf (a leaf's is 0).
+typedef struct bin_node {
+    int first, count, height;
+} bin_node;
+
+// Binary node i over order[lo, hi) (its slot taken): split at the median of
+// the triangles' centres (3 numbers per triangle) along the longest side of
+// their box. Its children take the next two free slots of bin[] (*used).
+static void build_node(dxTriMeshData *d, bin_node *bin, int *used, int i, const dReal *centre,
+                       int lo, int hi)
 {
-    dxTriMeshNode *node = &d->nodes[i];
     if (hi - lo <= LEAF) {
-        node->first = lo;
-        node->count = hi - lo;
+        bin[i] = (bin_node){ lo, hi - lo, 0 };
         return;
     }
     dReal clo[3] = { dInfinity, dInfinity, dInfinity };
     dReal chi[3] = { -dInfinity, -dInfinity, -dInfinity };
-    for (int j = lo; j < hi; j++) {
+    for (int j = lo; j < hi; j++) {   // the centres' box, without branches
         const dReal *c = centre + 3 * d->order[j];
-        grow(clo, chi, c, c);
+        for (int k = 0; k < 3; k++) {
+            clo[k] = c[k] < clo[k] ? c[k] : clo[k];
+            chi[k] = c[k] > chi[k] ? c[k] : chi[k];
+        }
     }
     int axis = 0;
     for (int k = 1; k < 3; k++)
         if (chi[k] - clo[k] > chi[axis] - clo[axis]) axis = k;
     int mid = (lo + hi) / 2;
     select_median(d->order, centre, axis, lo, hi, mid);
-    node->count = 0;
-    node->first = d->node_count;
-    d->node_count += 2;
-    build_node(d, node->first, centre, lo, mid);
-    build_node(d, d->nodes[i].first + 1, centre, mid, hi);
+    int first = *used;
+    *used += 2;
+    build_node(d, bin, used, first, centre, lo, mid);
+    build_node(d, bin, used, first + 1, centre, mid, hi);
+    int h = bin[first].height > bin[first + 1].height ? bin[first].height : bin[first + 1].height;
+    bin[i] = (bin_node){ first, 0, h + 1 };
 }
 
-// Every node's box from the leaf-order copy of the vertices, bottom-up
+// The four-way node w from binary inner node b (or a leaf, as the root of
+// a small mesh): b's children become the slots in order, and while there
+// is room, the first inner slot of odd height gives way to its two
+// children. So the slots below are of even height, whose grandchildren
+// fill a node's four slots: about a third as many nodes as leaves, where
+// lifting every second level from the root would make half-empty nodes
+// over the leaves when the tree's height is odd. Inner slots take the next
+// free nodes (*used) and are made at once (depth first: a node's children
+// come after it).
+static void lift_node(dxTriMeshData *d, const bin_node *bin, int b, int w, int *used)
+{
+    int slot[4], n = 0;
+    if (bin[b].count > 0) {
+        slot[n++] = b;
+    } else {
+        slot[n++] = bin[b].first;
+        slot[n++] = bin[b].first + 1;
+    }
+    while (n < 4) {
+        int e = 0;
+        while (e < n && !(bin[slot[e]].count == 0 && bin[slot[e]].height % 2 == 1)) e++;
+        if (e == n) break;
+        int first = bin[slot[e]].first;
+        for (int k = n; k > e + 1; k--) slot[k] = slot[k - 1];
+        slot[e] = first;
+        slot[e + 1] = first + 1;
+        n++;
+    }
+    clear_node(&d->nodes[w]);
+    for (int s = 0; s < n; s++) {
+        const bin_node *e = &bin[slot[s]];
+        if (e->count > 0) {
+            d->nodes[w].first[s] = e->first;
+            d->nodes[w].count[s] = e->count;
+        } else {
+            int child = (*used)++;
+            d->nodes[w].first[s] = child;
+            d->nodes[w].count[s] = 0;
+            lift_node(d, bin, slot[s], child, used);
+        }
+    }
+}
+
+// Every slot's box from the leaf-order copy of the vertices, bottom-up
 // (children come after their parent: going backwards meets them first),
-// the exact boxes kept beside the nodes' rounded ones while walking; the
-// root's exact box into the data.
+// the nodes' exact boxes kept aside while walking; the root's exact box
+// into the data.
 static void fit_boxes(dxTriMeshData *d)
 {
     size_t size = (size_t)d->node_count * 6 * sizeof(dReal);
@@ -146,17 +224,22 @@ static void fit_boxes(dxTriMeshData *d)
             lo[k] = dInfinity;
             hi[k] = -dInfinity;
         }
-        if (node->count > 0) {
-            for (int j = node->first; j < node->first + node->count; j++) {
-                dReal tlo[3], thi[3];
-                leaf_triangle_box(d, j, tlo, thi);
-                grow(lo, hi, tlo, thi);
+        for (int s = 0; s < 4 && node->count[s] >= 0; s++) {
+            dReal slo[3] = { dInfinity, dInfinity, dInfinity };
+            dReal shi[3] = { -dInfinity, -dInfinity, -dInfinity };
+            if (node->count[s] > 0) {
+                for (int j = node->first[s]; j < node->first[s] + node->count[s]; j++) {
+                    dReal tlo[3], thi[3];
+                    leaf_triangle_box(d, j, tlo, thi);
+                    grow(slo, shi, tlo, thi);
+                }
+            } else {
+                const dReal *c = exact + 6 * node->first[s];
+                grow(slo, shi, c, c + 3);
             }
-        } else {
-            for (int c = node->first; c <= node->first + 1; c++)
-                grow(lo, hi, exact + 6 * c, exact + 6 * c + 3);
+            set_slot_box(node, s, slo, shi);
+            grow(lo, hi, slo, shi);
         }
-        dxTriMeshNodeSetBox(node, lo, hi);
     }
     for (int k = 0; k < 3; k++) {
         d->lo[k] = exact[k];
@@ -169,8 +252,6 @@ void dxTriMeshBuildTree(dxTriMeshData *d)
 {
     size_t n = (size_t)d->tri_count;
     d->order = (int *)dAlloc(n * sizeof(int));
-    d->nodes = (dxTriMeshNode *)dAlloc(2 * n * sizeof(dxTriMeshNode));
-    d->node_count = 1;
     dReal *centre = (dReal *)dAlloc(3 * n * sizeof(dReal));
     for (int t = 0; t < d->tri_count; t++) {
         d->order[t] = t;
@@ -178,10 +259,19 @@ void dxTriMeshBuildTree(dxTriMeshData *d)
         triangle_box(d, t, lo, hi);
         for (int k = 0; k < 3; k++) centre[3 * t + k] = (lo[k] + hi[k]) / 2;
     }
-    build_node(d, 0, centre, 0, d->tri_count);
+    // At most 2 n - 1 binary nodes, of which fewer than n inner ones: each
+    // four-way node but a root leaf's holds at least one inner binary node.
+    size_t bin_size = 2 * n * sizeof(bin_node);
+    bin_node *bin = (bin_node *)dAlloc(bin_size);
+    int used = 1;
+    build_node(d, bin, &used, 0, centre, 0, d->tri_count);
     dFree(centre, 3 * n * sizeof(dReal));
-    // Fewer nodes than the 2 n reserved are used (about n / 2): give the rest back.
-    d->nodes = (dxTriMeshNode *)dRealloc(d->nodes, 2 * n * sizeof(dxTriMeshNode),
+    size_t cap = (size_t)used / 2 + 1;
+    d->nodes = (dxTriMeshNode *)dAlloc(cap * sizeof(dxTriMeshNode));
+    d->node_count = 1;
+    lift_node(d, bin, 0, 0, &d->node_count);
+    dFree(bin, bin_size);
+    d->nodes = (dxTriMeshNode *)dRealloc(d->nodes, cap * sizeof(dxTriMeshNode),
                                          (size_t)d->node_count * sizeof(dxTriMeshNode));
     d->leaf_vertices = (dReal *)dAlloc(9 * n * sizeof(dReal));
     copy_leaf_vertices(d);
@@ -197,29 +287,93 @@ void dxTriMeshRefitTree(dxTriMeshData *d)
     d->tree_stamp = dxTriMeshNewStamp();
 }
 
-static int overlaps(const dxTriMeshNode *node, const dReal lo[3], const dReal hi[3])
+// A query box as floats rounded inwards: a float box side x meets the exact
+// one as it meets these (x <= hi exactly when x <= the float at or below
+// hi), so the four slots are compared in float with the same outcome.
+typedef struct query_box {
+    float lo[3], hi[3];
+} query_box;
+
+static query_box make_query(const dReal lo[3], const dReal hi[3])
 {
-    return node->lo[0] <= hi[0] && node->hi[0] >= lo[0] && node->lo[1] <= hi[1] &&
-           node->hi[1] >= lo[1] && node->lo[2] <= hi[2] && node->hi[2] >= lo[2];
+    query_box q;
+    for (int k = 0; k < 3; k++) {
+        q.lo[k] = dxFloatAbove(lo[k]);
+        q.hi[k] = dxFloatBelow(hi[k]);
+    }
+    return q;
+}
+
+typedef float f4 __attribute__((vector_size(16)));
+typedef int i4 __attribute__((vector_size(16)));
+
+static inline f4 load_f4(const float *p)
+{
+    f4 r;
+    memcpy(&r, p, sizeof r);
+    return r;
+}
+
+// Bit s set for each used slot of the node whose box overlaps the query.
+static inline unsigned overlapping_slots(const dxTriMeshNode *node, const query_box *q)
+{
+    i4 count;
+    memcpy(&count, node->count, sizeof count);
+    i4 m = count >= (i4){ 0, 0, 0, 0 };
+    for (int k = 0; k < 3; k++) {
+        f4 qlo = { q->lo[k], q->lo[k], q->lo[k], q->lo[k] };
+        f4 qhi = { q->hi[k], q->hi[k], q->hi[k], q->hi[k] };
+        m &= (load_f4(node->lo[k]) <= qhi) & (load_f4(node->hi[k]) >= qlo);
+    }
+#if defined(__SSE__)
+    return (unsigned)_mm_movemask_ps((__m128)m);
+#else
+    return (unsigned)((m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8));
+#endif
+}
+
+// A walk of the tree for a query: the slots still to visit, the last
+// stacked first out.
+typedef struct tree_walk {
+    int stack[STACK], top;
+} tree_walk;
+
+// Stack node's slots that overlap q, the last first (so the first slot's
+// subtree comes out before the second slot: leaf order).
+static inline void push_slots(const dxTriMeshData *d, const query_box *q, tree_walk *w, int node)
+{
+    unsigned m = overlapping_slots(&d->nodes[node], q);
+    for (int s = 3; s >= 0; s--)
+        if (m >> s & 1) w->stack[w->top++] = 4 * node + s;
+}
+
+// The next leaf (node * 4 + slot) whose box overlaps q, in leaf order, or
+// -1 at the end.
+static inline int next_leaf(const dxTriMeshData *d, const query_box *q, tree_walk *w)
+{
+    while (w->top > 0) {
+        int id = w->stack[--w->top];
+        const dxTriMeshNode *node = &d->nodes[id >> 2];
+        if (node->count[id & 3] > 0) return id;
+        push_slots(d, q, w, node->first[id & 3]);
+    }
+    return -1;
 }
 
 int dxTriMeshQueryBox(const dxTriMeshData *d, const dReal lo[3], const dReal hi[3], int **out,
                       int *cap)
 {
     if (d->node_count == 0) return 0;
-    int stack[STACK], top = 0, n = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-        int i = stack[--top];
-        const dxTriMeshNode *node = &d->nodes[i];
-        if (!overlaps(node, lo, hi)) continue;
-        if (node->count > 0) {
-            if (n + node->count > *cap) dxTriMeshReserveInts(out, cap, n + node->count);
-            for (int j = 0; j < node->count; j++) (*out)[n++] = d->order[node->first + j];
-        } else {   // the first child is walked first
-            stack[top++] = node->first + 1;
-            stack[top++] = node->first;
-        }
+    query_box q = make_query(lo, hi);
+    tree_walk w;
+    w.top = 0;
+    push_slots(d, &q, &w, 0);
+    int n = 0;
+    for (int id; (id = next_leaf(d, &q, &w)) >= 0;) {
+        const dxTriMeshNode *leaf = &d->nodes[id >> 2];
+        int first = leaf->first[id & 3], count = leaf->count[id & 3];
+        if (n + count > *cap) dxTriMeshReserveInts(out, cap, n + count);
+        for (int j = 0; j < count; j++) (*out)[n++] = d->order[first + j];
     }
     return n;
 }
@@ -228,19 +382,14 @@ int dxTriMeshQueryLeaves(const dxTriMeshData *d, const dReal lo[3], const dReal 
                          int max)
 {
     if (d->node_count == 0) return 0;
-    int stack[STACK], top = 0, n = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-        int i = stack[--top];
-        const dxTriMeshNode *node = &d->nodes[i];
-        if (!overlaps(node, lo, hi)) continue;
-        if (node->count > 0) {
-            if (n == max) return -1;
-            leaf[n++] = i;
-        } else {   // the first child is walked first, as in dxTriMeshQueryBox
-            stack[top++] = node->first + 1;
-            stack[top++] = node->first;
-        }
+    query_box q = make_query(lo, hi);
+    tree_walk w;
+    w.top = 0;
+    push_slots(d, &q, &w, 0);
+    int n = 0;
+    for (int id; (id = next_leaf(d, &q, &w)) >= 0;) {
+        if (n == max) return -1;
+        leaf[n++] = id;
     }
     return n;
 }
@@ -250,10 +399,14 @@ int dxTriMeshFilterLeaves(const dxTriMeshData *d, const int *leaf, int n, const 
 {
     int count = 0;
     for (int i = 0; i < n; i++) {
-        const dxTriMeshNode *node = &d->nodes[leaf[i]];
-        if (!overlaps(node, lo, hi)) continue;
-        if (count + node->count > *cap) dxTriMeshReserveInts(out, cap, count + node->count);
-        for (int j = 0; j < node->count; j++) (*out)[count++] = d->order[node->first + j];
+        const dxTriMeshNode *node = &d->nodes[leaf[i] >> 2];
+        int s = leaf[i] & 3;
+        if (!(node->lo[0][s] <= hi[0] && node->hi[0][s] >= lo[0] && node->lo[1][s] <= hi[1] &&
+              node->hi[1][s] >= lo[1] && node->lo[2][s] <= hi[2] && node->hi[2][s] >= lo[2]))
+            continue;
+        int first = node->first[s], c = node->count[s];
+        if (count + c > *cap) dxTriMeshReserveInts(out, cap, count + c);
+        for (int j = 0; j < c; j++) (*out)[count++] = d->order[first + j];
     }
     return count;
 }

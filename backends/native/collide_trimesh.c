@@ -580,8 +580,9 @@ int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dxTriTest *test)
         leaves = dxTriMeshQueryLeaves(d, lo, hi, leaf, LEAF_WALK_MAX);
     if (leaves >= 0) {
         for (int i = 0; i < leaves; i++) {
-            const dxTriMeshNode *node = &d->nodes[leaf[i]];
-            for (int j = node->first; j < node->first + node->count; j++) {
+            const dxTriMeshNode *node = &d->nodes[leaf[i] >> 2];   // node * 4 + slot
+            const int first = node->first[leaf[i] & 3], end = first + node->count[leaf[i] & 3];
+            for (int j = first; j < end; j++) {
                 int t = d->order[j];
                 if (!gather_one(q, t, d->leaf_vertices + 9 * j, wlo, whi, test)) continue;
                 dxTriMeshReserveInts(&s->hits[0], &s->hits_cap[0], hits + 1);

@@ -3,15 +3,23 @@
 // collide_trimesh_ray.c -- trimesh-ray, as ODE 0.16 with OPCODE: one
 // contact per triangle the ray crosses within its length (nearest first, at
 // most the flags' count; only the nearest with the ray's ClosestHit or
-// FirstContact set), backfaces skipped with BackfaceCull. Each hit goes
-// through the ray callback (with its barycentric u, v) and the per-triangle
-// callback. pos is the hit point, depth its distance from the ray's start,
-// normal the triangle's normal reversed (into the mesh, g1); side1 the
-// triangle.
+// FirstContact set), backfaces skipped with BackfaceCull. Each hit that
+// could be kept (not beyond the farthest of the hits kept once there are as
+// many as wanted) goes through the ray callback (with its barycentric u, v)
+// and the per-triangle callback. pos is the hit point, depth its distance
+// from the ray's start, normal the triangle's normal reversed (into the
+// mesh, g1); side1 the triangle.
 
 #include "collide_trimesh.h"
 
 #include <ode/memory.h>
+
+#include <float.h>
+#include <math.h>
+
+#if defined(__SSE__)
+#include <emmintrin.h>
+#endif
 
 // The ray (start s, unit direction v, mesh frame) against the triangle of
 // vertices tri (Moller-Trumbore): 1 with the distance and the barycentric u (of v1) and
@@ -49,45 +57,175 @@ static int ray_triangle(const dReal s[3], const dReal v[3], dReal len, const dRe
     return 1;
 }
 
-// Where the ray s + t v (inv: 1 / v per axis, infinite for 0) enters the
-// node's box within [0, limit]: 1 and *enter, or 0 if it misses it.
-static int ray_enters(const dReal s[3], const dReal v[3], const dReal inv[3],
-                      const dxTriMeshNode *node, dReal limit, dReal *enter)
+#if defined(__SSE2__) && !defined(dSINGLE)
+// ray_triangle for two triangles at once (9 numbers each, t0 in lane 0 and
+// t1 in lane 1): the same operations in the same order, so the same bits
+// (no fused operations: SSE2), each test passing as the scalar one does
+// (also for a NaN). Bit l of the result is set if triangle l is crossed,
+// with dist[l], bu[l], bv[l].
+static inline unsigned ray_triangle_pair(const dReal s[3], const dReal v[3], dReal len,
+                                         const dReal *t0, const dReal *t1, int cull,
+                                         dReal dist[2], dReal bu[2], dReal bv[2])
 {
-    dReal t0 = 0, t1 = limit;
+    __m128d e1[3], e2[3], tv[3], vv[3];
+    for (int i = 0; i < 3; i++) {
+        __m128d a = _mm_set_pd(t1[i], t0[i]);
+        e1[i] = _mm_sub_pd(_mm_set_pd(t1[3 + i], t0[3 + i]), a);
+        e2[i] = _mm_sub_pd(_mm_set_pd(t1[6 + i], t0[6 + i]), a);
+        tv[i] = _mm_sub_pd(_mm_set1_pd(s[i]), a);
+        vv[i] = _mm_set1_pd(v[i]);
+    }
+#define MUL _mm_mul_pd
+#define SUB _mm_sub_pd
+#define DOT(a, b) _mm_add_pd(_mm_add_pd(MUL(a[0], b[0]), MUL(a[1], b[1])), MUL(a[2], b[2]))
+    __m128d p[3] = { SUB(MUL(vv[1], e2[2]), MUL(vv[2], e2[1])),
+                     SUB(MUL(vv[2], e2[0]), MUL(vv[0], e2[2])),
+                     SUB(MUL(vv[0], e2[1]), MUL(vv[1], e2[0])) };
+    __m128d det = DOT(e1, p), zero = _mm_setzero_pd(), one = _mm_set1_pd(1);
+    __m128d ok;
+    if (cull) {
+        ok = _mm_cmpnle_pd(det, zero);
+    } else {
+        __m128d abs = _mm_andnot_pd(_mm_set1_pd(-0.0), det);
+        __m128d eps = _mm_set1_pd(DX_COLLIDE_EPS);
+        __m128d scale = MUL(DOT(e1, e1), DOT(e2, e2));
+        ok = _mm_cmpnle_pd(MUL(abs, abs), MUL(MUL(scale, eps), eps));
+    }
+    __m128d inv = _mm_div_pd(one, det);
+    __m128d u = MUL(DOT(tv, p), inv);
+    ok = _mm_and_pd(ok, _mm_and_pd(_mm_cmpnlt_pd(u, zero), _mm_cmpngt_pd(u, one)));
+    __m128d qv[3] = { SUB(MUL(tv[1], e1[2]), MUL(tv[2], e1[1])),
+                      SUB(MUL(tv[2], e1[0]), MUL(tv[0], e1[2])),
+                      SUB(MUL(tv[0], e1[1]), MUL(tv[1], e1[0])) };
+    __m128d w = MUL(DOT(vv, qv), inv);
+    ok = _mm_and_pd(ok, _mm_and_pd(_mm_cmpnlt_pd(w, zero),
+                                   _mm_cmpngt_pd(_mm_add_pd(u, w), one)));
+    __m128d dd = MUL(DOT(e2, qv), inv);
+    ok = _mm_and_pd(ok, _mm_and_pd(_mm_cmpnlt_pd(dd, zero), _mm_cmpngt_pd(dd, _mm_set1_pd(len))));
+#undef MUL
+#undef SUB
+#undef DOT
+    _mm_storeu_pd(dist, dd);
+    _mm_storeu_pd(bu, u);
+    _mm_storeu_pd(bv, w);
+    return (unsigned)_mm_movemask_pd(ok);
+}
+#endif
+
+// The ray as the slot tests take it (mesh frame, in float): its start s,
+// the inverses of its direction's components, and per axis a slack that
+// covers every rounding of a crossing computed in float (the start's, the
+// difference's, the inverse's and the product's: together under
+// 8 2^-24 m |inv|, m the largest coordinate in play, the box's or the
+// start's; the slack is 64 2^-24 m |inv|), so that each slab's [near, far]
+// holds the exact one. The tests can only keep a box an exact test would
+// drop, never drop one it would keep: the walk finds the hits of an exact
+// walk. An
+// axis the ray runs along (|v| under 1e-30, or 0) is tested as a slab the
+// start must lie in, [s_lo, s_hi]: the start widened by how far the ray
+// moves along that axis, and a float step more each side.
+typedef struct ray_lanes {
+    float s[3], inv[3], slack[3], s_lo[3], s_hi[3];
+    int along[3];
+} ray_lanes;
+
+static void ray_setup(ray_lanes *r, const dxTriMeshData *d, const dReal s[3], const dReal v[3],
+                      dReal len)
+{
     for (int k = 0; k < 3; k++) {
-        if (v[k] == 0) {
-            if (s[k] < node->lo[k] || s[k] > node->hi[k]) return 0;
+        r->s[k] = (float)s[k];
+        r->along[k] = !(dFabs(v[k]) >= (dReal)1e-30);
+        r->inv[k] = r->slack[k] = 0;
+        if (r->along[k]) {
+            dReal reach = dFabs(v[k]) * len;
+            r->s_lo[k] = nextafterf(dxFloatBelow(s[k] - reach), -INFINITY);
+            r->s_hi[k] = nextafterf(dxFloatAbove(s[k] + reach), INFINITY);
             continue;
         }
-        dReal a = (node->lo[k] - s[k]) * inv[k], b = (node->hi[k] - s[k]) * inv[k];
-        if (a > b) {
-            dReal t = a;
-            a = b;
-            b = t;
-        }
-        if (a > t0) t0 = a;
-        if (b < t1) t1 = b;
-        if (t0 > t1) return 0;
+        dReal m = dMax(dFabs(s[k]), dMax(dFabs(d->lo[k]), dFabs(d->hi[k])));
+        dReal inv = 1 / v[k], slack = 32 * (dReal)FLT_EPSILON * m * dFabs(inv) + FLT_MIN;
+        r->inv[k] = (float)inv;
+        r->slack[k] = slack < FLT_MAX ? (float)slack : FLT_MAX;
     }
-    *enter = t0;
-    return 1;
 }
 
-// Ask for what a node pushed on the stack will read when popped (its
-// children, or its triangles' vertices) while other nodes are tested.
+// Which of the node's slots the ray enters within [0, limit]: bit j set,
+// and enter[j], at most where it enters. Per axis the slab's crossings
+// (lo - s) inv and (hi - s) inv, the nearer less the slack and the farther
+// plus it; the latest near against the earliest far. The four slots side
+// by side: one SSE operation each, or a loop the compiler may make one.
+#if defined(__SSE__)
+static inline unsigned ray_slots(const ray_lanes *r, const dxTriMeshNode *node, float limit,
+                                 float enter[4])
+{
+    __m128 t0 = _mm_setzero_ps(), t1 = _mm_set1_ps(limit);
+    __m128i count = _mm_loadu_si128((const __m128i *)node->count);
+    __m128 ok = _mm_castsi128_ps(_mm_cmpgt_epi32(count, _mm_set1_epi32(-1)));
+    for (int k = 0; k < 3; k++) {
+        __m128 lo = _mm_loadu_ps(node->lo[k]), hi = _mm_loadu_ps(node->hi[k]);
+        if (r->along[k]) {
+            ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmple_ps(lo, _mm_set1_ps(r->s_hi[k])),
+                                           _mm_cmpge_ps(hi, _mm_set1_ps(r->s_lo[k]))));
+            continue;
+        }
+        __m128 sk = _mm_set1_ps(r->s[k]), ik = _mm_set1_ps(r->inv[k]);
+        __m128 slack = _mm_set1_ps(r->slack[k]);
+        __m128 a = _mm_mul_ps(_mm_sub_ps(lo, sk), ik), b = _mm_mul_ps(_mm_sub_ps(hi, sk), ik);
+        t0 = _mm_max_ps(t0, _mm_sub_ps(_mm_min_ps(a, b), slack));
+        t1 = _mm_min_ps(t1, _mm_add_ps(_mm_max_ps(a, b), slack));
+    }
+    _mm_storeu_ps(enter, t0);
+    return (unsigned)_mm_movemask_ps(_mm_and_ps(ok, _mm_cmple_ps(t0, t1)));
+}
+#else
+static inline unsigned ray_slots(const ray_lanes *r, const dxTriMeshNode *node, float limit,
+                                 float enter[4])
+{
+    float t0[4] = { 0, 0, 0, 0 }, t1[4] = { limit, limit, limit, limit };
+    int ok[4];
+    for (int j = 0; j < 4; j++) ok[j] = node->count[j] >= 0;
+    for (int k = 0; k < 3; k++) {
+        if (r->along[k]) {
+            for (int j = 0; j < 4; j++)
+                ok[j] &= node->lo[k][j] <= r->s_hi[k] && node->hi[k][j] >= r->s_lo[k];
+            continue;
+        }
+        for (int j = 0; j < 4; j++) {
+            float a = (node->lo[k][j] - r->s[k]) * r->inv[k];
+            float b = (node->hi[k][j] - r->s[k]) * r->inv[k];
+            float near = (a < b ? a : b) - r->slack[k], far = (a < b ? b : a) + r->slack[k];
+            t0[j] = near > t0[j] ? near : t0[j];
+            t1[j] = far < t1[j] ? far : t1[j];
+        }
+    }
+    unsigned m = 0;
+    for (int j = 0; j < 4; j++) {
+        enter[j] = t0[j];
+        if (ok[j] && t0[j] <= t1[j]) m |= 1u << j;
+    }
+    return m;
+}
+#endif
+
+// Ask for what a slot pushed on the stack will read when popped (its
+// node, or its triangles' vertices) while other slots are tested.
 // Inlined always: GCC finds a function that only prefetches free of side
 // effects and drops the calls.
-static inline __attribute__((always_inline)) void prefetch_below(const dxTriMeshData *d, int i)
+static inline __attribute__((always_inline)) void prefetch_slot(const dxTriMeshData *d,
+                                                                const dxTriMeshNode *node, int j)
 {
-    const dxTriMeshNode *node = &d->nodes[i];
-    if (node->count == 0) {
-        __builtin_prefetch(&d->nodes[node->first]);
+    const char *p;
+    size_t size;
+    if (node->count[j] == 0) {
+        p = (const char *)&d->nodes[node->first[j]];
+        size = sizeof(dxTriMeshNode);
     } else if (d->leaf_vertices) {
-        const char *p = (const char *)(d->leaf_vertices + 9 * node->first);
-        size_t size = 9 * sizeof(dReal) * (size_t)node->count;
-        for (size_t k = 0; k < size; k += 64) __builtin_prefetch(p + k);
+        p = (const char *)(d->leaf_vertices + 9 * node->first[j]);
+        size = 9 * sizeof(dReal) * (size_t)node->count[j];
+    } else {
+        return;
     }
+    for (size_t k = 0; k < size; k += 64) __builtin_prefetch(p + k);
 }
 
 // Keep the nearest `max` hits in m->raw (a scratch set) sorted by distance (then triangle):
@@ -113,7 +251,32 @@ static void keep_hit(dxTriScratch *m, int max, dReal dist, int tri, const dReal 
     for (int j = 0; j < 3; j++) r->n[j] = n[j];
 }
 
-// The tree is walked along the ray, nearer child first; once `max` hits
+// Stack the slots of nodes[i] that the ray enters within limit (rounded
+// up to a float), the farthest first (so the nearest is walked first), with
+// where it enters.
+static inline void push_slots(const dxTriMeshData *d, int i, const ray_lanes *r, float limit,
+                              int *stack, float *entry, int *top)
+{
+    const dxTriMeshNode *node = &d->nodes[i];
+    float enter[4];
+    int sorted[4], n = 0;
+    for (unsigned m = ray_slots(r, node, limit, enter); m; m &= m - 1) {
+        int j = __builtin_ctz(m), k = n++;   // insertion by entry, ties in slot order
+        prefetch_slot(d, node, j);
+        while (k > 0 && enter[sorted[k - 1]] > enter[j]) {
+            sorted[k] = sorted[k - 1];
+            k--;
+        }
+        sorted[k] = j;
+    }
+    while (n > 0) {
+        int j = sorted[--n];
+        stack[*top] = 4 * i + j;
+        entry[(*top)++] = enter[j];
+    }
+}
+
+// The tree is walked along the ray, nearer slot first; once `max` hits
 // are kept, boxes the ray enters beyond the farthest of them are skipped.
 int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
 {
@@ -121,60 +284,76 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
     const dxRay *ray = (const dxRay *)o2;
     const dxTriMeshData *d = m->data;
     if (!d || d->node_count == 0) return 0;
-    dReal s[3], v[3], dir[3], inv[3];
+    dReal s[3], v[3], dir[3];
     dx_axis(o2->R, 2, dir);
     dxTriMeshToLocal(o1, o2->pos, s);
     dxTriMeshDirToLocal(o1, dir, v);
-    for (int i = 0; i < 3; i++) inv[i] = v[i] != 0 ? 1 / v[i] : 0;
+    ray_lanes lanes;
+    ray_setup(&lanes, d, s, v, ray->length);
     int single = ray->closest_hit || ray->first_contact;
     int max = single ? 1 : dx_max_contacts(flags);
     dxTriScratch *h = dxTriScratchAcquire();
     if (!h) return 0;
     dxTriScratchAddRaw(h, max);
-    // Each node on the stack with the distance at which the ray enters it:
-    // popped beyond the farthest hit kept, it is skipped untested.
-    int stack[64], top = 0;
-    dReal entry[64];
-    if (ray_enters(s, v, inv, &d->nodes[0], ray->length, &entry[0])) stack[top++] = 0;
+    // Each slot on the stack (node * 4 + slot) with the distance at which
+    // the ray enters it: popped beyond the farthest hit kept, it is skipped
+    // untested. A node pushes at most 4 and the four-way depth is under 17.
+    int stack[128], top = 0;
+    float entry[128];
+    dReal limit = ray->length;   // the farthest hit kept once `max` are
+    float limit_up = dxFloatAbove(limit);
+    push_slots(d, 0, &lanes, limit_up, stack, entry, &top);
     while (top > 0) {
         top--;
-        dReal limit = h->raw_count == max ? h->raw[max - 1].depth : ray->length;
         if (entry[top] > limit) continue;
-        const dxTriMeshNode *node = &d->nodes[stack[top]];
-        if (node->count == 0) {
-            // Push the farther child first: the nearer is walked first.
-            int a = node->first, b = node->first + 1;
-            dReal ea = 0, eb = 0;   // set by ray_enters when it returns 1
-            int ha = ray_enters(s, v, inv, &d->nodes[a], limit, &ea);
-            int hb = ray_enters(s, v, inv, &d->nodes[b], limit, &eb);
-            if (ha) prefetch_below(d, a);
-            if (hb) prefetch_below(d, b);
-            if (ha && hb && ea < eb) {
-                entry[top] = eb;
-                stack[top++] = b;
-                entry[top] = ea;
-                stack[top++] = a;
-            } else {
-                if (ha) entry[top] = ea, stack[top++] = a;
-                if (hb) entry[top] = eb, stack[top++] = b;
-            }
+        const dxTriMeshNode *node = &d->nodes[stack[top] >> 2];
+        int slot = stack[top] & 3, first = node->first[slot];
+        if (node->count[slot] == 0) {
+            push_slots(d, first, &lanes, limit_up, stack, entry, &top);
             continue;
         }
         // Only the vertices are read until a hit (memory traffic is what a
         // ray costs), from the leaf-order copy (a heightfield's patch has
-        // none: its arrays): the triangle's index and normal, after.
-        for (int j = node->first; j < node->first + node->count; j++) {
-            dReal load[3][3], dist, bu, bv;
-            const dReal(*tv)[3] = (const dReal(*)[3])load;
-            if (d->leaf_vertices) tv = (const dReal(*)[3])(d->leaf_vertices + 9 * j);
-            else dxTriMeshTriangle(d, d->order[j], load);
-            if (!ray_triangle(s, v, ray->length, tv, ray->backface_cull, &dist, &bu, &bv))
-                continue;
-            int ti = d->order[j];
-            if (dxTriMeshIsDegenerate(d, ti)) continue;
-            if (m->ray_callback && !m->ray_callback(o1, o2, ti, bu, bv)) continue;
-            if (m->callback && !m->callback(o1, o2, ti)) continue;
-            keep_hit(h, max, dist, ti, d->normal + 3 * ti);
+        // none: its arrays), two triangles at a time where SSE2 allows: the
+        // triangle's index and normal, after. A hit beyond the limit could
+        // not be kept.
+        int end = first + node->count[slot];
+        for (int j = first; j < end; j += 2) {
+            dReal dist[2], bu[2], bv[2];
+            unsigned crossed = 0;
+#if defined(__SSE2__) && !defined(dSINGLE)
+            if (d->leaf_vertices) {
+                const dReal *t0 = d->leaf_vertices + 9 * j, *t1 = j + 1 < end ? t0 + 9 : t0;
+                crossed = ray_triangle_pair(s, v, limit, t0, t1, ray->backface_cull, dist, bu,
+                                            bv);
+                if (j + 1 == end) crossed &= 1;
+            } else
+#endif
+            {
+                for (int l = 0; l < 2 && j + l < end; l++) {
+                    dReal load[3][3];
+                    const dReal(*tv)[3] = (const dReal(*)[3])load;
+                    if (d->leaf_vertices)
+                        tv = (const dReal(*)[3])(d->leaf_vertices + 9 * (j + l));
+                    else
+                        dxTriMeshTriangle(d, d->order[j + l], load);
+                    if (ray_triangle(s, v, limit, tv, ray->backface_cull, &dist[l], &bu[l],
+                                     &bv[l]))
+                        crossed |= 1u << l;
+                }
+            }
+            for (int l = 0; l < 2; l++) {
+                if (!(crossed >> l & 1) || dist[l] > limit) continue;
+                int ti = d->order[j + l];
+                if (dxTriMeshIsDegenerate(d, ti)) continue;
+                if (m->ray_callback && !m->ray_callback(o1, o2, ti, bu[l], bv[l])) continue;
+                if (m->callback && !m->callback(o1, o2, ti)) continue;
+                keep_hit(h, max, dist[l], ti, d->normal + 3 * ti);
+                if (h->raw_count == max) {
+                    limit = h->raw[max - 1].depth;
+                    limit_up = dxFloatAbove(limit);
+                }
+            }
         }
     }
     int count = h->raw_count;

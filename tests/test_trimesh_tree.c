@@ -1,0 +1,366 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// test_trimesh_tree.c -- the triangle tree (white box): its shape (every
+// triangle in one leaf, leaves in order, each box holding what is below
+// it), the box queries against a scan of every leaf, and rays against the
+// same rays cast at each triangle alone (a mesh of one triangle is a tree
+// of one leaf: the hits a walk must find, with the same arithmetic).
+
+#include "test.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../libodecollide/trimesh_internal.h"
+
+static unsigned long long rng_state = 0x2545f4914f6cdd1dull;
+
+static double rnd(double a, double b)
+{
+    rng_state ^= rng_state << 13;
+    rng_state ^= rng_state >> 7;
+    rng_state ^= rng_state << 17;
+    return a + (b - a) * (double)(rng_state >> 11) / 9007199254740992.0;
+}
+
+// A mesh kept with its arrays: a wavy or flat (integer) grid, or a soup of
+// random triangles.
+typedef struct mesh {
+    dReal *v;
+    dTriIndex *idx;
+    int nv, nt;
+    dTriMeshDataID data;
+} mesh;
+
+// Data on m's vertices and the n triangles from idx.
+static dTriMeshDataID data_of(const mesh *m, const dTriIndex *idx, int n)
+{
+    dTriMeshDataID data = dGeomTriMeshDataCreate();
+#ifdef dDOUBLE
+    dGeomTriMeshDataBuildDouble(data, m->v, 3 * sizeof(dReal), m->nv, idx, 3 * n,
+                                3 * sizeof(dTriIndex));
+#else
+    dGeomTriMeshDataBuildSingle(data, m->v, 3 * sizeof(dReal), m->nv, idx, 3 * n,
+                                3 * sizeof(dTriIndex));
+#endif
+    return data;
+}
+
+static void mesh_build(mesh *m)
+{
+    m->data = data_of(m, m->idx, m->nt);
+}
+
+static void make_grid(mesh *m, int n, double cell, int wavy)
+{
+    m->nv = (n + 1) * (n + 1);
+    m->nt = 2 * n * n;
+    m->v = malloc(sizeof(dReal) * 3 * (size_t)m->nv);
+    m->idx = malloc(sizeof(dTriIndex) * 3 * (size_t)m->nt);
+    for (int j = 0; j <= n; j++)
+        for (int i = 0; i <= n; i++) {
+            dReal *p = m->v + 3 * (i + j * (n + 1));
+            p[0] = (i - n / 2) * cell;
+            p[1] = (j - n / 2) * cell;
+            p[2] = wavy ? 0.5 * sin(0.6 * p[0]) * cos(0.5 * p[1]) : 0;
+        }
+    int t = 0;
+    for (int j = 0; j < n; j++)
+        for (int i = 0; i < n; i++) {
+            int a = i + j * (n + 1), b = a + 1, c = a + n + 1, d = c + 1;
+            dTriIndex q[6] = { a, b, d, a, d, c };
+            memcpy(m->idx + 3 * t, q, sizeof q);
+            t += 2;
+        }
+    mesh_build(m);
+}
+
+static void make_soup(mesh *m, int nt, double size)
+{
+    m->nt = nt;
+    m->nv = 3 * nt;
+    m->v = malloc(sizeof(dReal) * 3 * (size_t)m->nv);
+    m->idx = malloc(sizeof(dTriIndex) * 3 * (size_t)m->nt);
+    for (int i = 0; i < nt; i++) {
+        double c[3] = { rnd(-size, size), rnd(-size, size), rnd(-size, size) };
+        for (int k = 0; k < 3; k++) {
+            for (int a = 0; a < 3; a++) m->v[3 * (3 * i + k) + a] = c[a] + rnd(-0.7, 0.7);
+            m->idx[3 * i + k] = (dTriIndex)(3 * i + k);
+        }
+    }
+    mesh_build(m);
+}
+
+static void mesh_destroy(mesh *m)
+{
+    dGeomTriMeshDataDestroy(m->data);
+    free(m->v);
+    free(m->idx);
+}
+
+// ---- shape ------------------------------------------------------------------------
+
+// Every used slot's box holds what is below it (triangles or a node's
+// slots), children come after their parent, unused slots last, and the
+// leaves met depth first, slot by slot, cover order[] once, in order
+// (counted into *leaves).
+static int check_node(const dxTriMeshData *d, int i, int *next_first, int *leaves)
+{
+    const dxTriMeshNode *node = &d->nodes[i];
+    int used = 0;
+    for (int s = 0; s < 4; s++) {
+        if (node->count[s] < 0) continue;
+        CHECK(s == used);
+        used++;
+        if (node->count[s] == 0) {
+            int c = node->first[s];
+            CHECK(c > i && c < d->node_count);
+            const dxTriMeshNode *child = &d->nodes[c];
+            for (int cs = 0; cs < 4 && child->count[cs] >= 0; cs++)
+                for (int k = 0; k < 3; k++)
+                    CHECK(node->lo[k][s] <= child->lo[k][cs] && child->hi[k][cs] <= node->hi[k][s]);
+            if (check_node(d, c, next_first, leaves)) return 1;
+            continue;
+        }
+        CHECK(node->count[s] <= 4 && node->first[s] == *next_first);
+        ++*leaves;
+        *next_first += node->count[s];
+        for (int j = node->first[s]; j < node->first[s] + node->count[s]; j++) {
+            dReal tv[3][3];
+            dxTriMeshTriangle(d, d->order[j], tv);
+            for (int p = 0; p < 3; p++)
+                for (int k = 0; k < 3; k++) {
+                    CHECK(node->lo[k][s] <= tv[p][k] && tv[p][k] <= node->hi[k][s]);
+                    CHECK(d->leaf_vertices[9 * j + 3 * p + k] == tv[p][k]);
+                }
+        }
+    }
+    CHECK(used > 0);
+    return 0;
+}
+
+static int check_shape(const dxTriMeshData *d)
+{
+    int next_first = 0, leaves = 0;
+    if (check_node(d, 0, &next_first, &leaves)) return 1;
+    CHECK(next_first == d->tri_count);
+    // nodes mostly full: about a third as many as leaves
+    CHECK(2 * d->node_count <= leaves + 2);
+    int *seen = calloc((size_t)d->tri_count, sizeof(int));
+    for (int j = 0; j < d->tri_count; j++) seen[d->order[j]]++;
+    int once = 1;
+    for (int t = 0; t < d->tri_count; t++) once &= seen[t] == 1;
+    free(seen);
+    CHECK(once);
+    return 0;
+}
+
+// ---- box queries ------------------------------------------------------------------
+
+// What a query must list: every leaf whose box overlaps [lo, hi] (compared
+// in dReal), in leaf order, found by scanning every slot.
+static int scan_leaves(const dxTriMeshData *d, const dReal lo[3], const dReal hi[3], int *out)
+{
+    int n = 0;
+    for (int first = 0; first < d->tri_count;) {
+        int found = 0;
+        for (int i = 0; i < d->node_count && !found; i++)
+            for (int s = 0; s < 4 && !found; s++) {
+                const dxTriMeshNode *node = &d->nodes[i];
+                if (node->count[s] <= 0 || node->first[s] != first) continue;
+                found = 1;
+                int meets = 1;
+                for (int k = 0; k < 3; k++)
+                    meets &= node->lo[k][s] <= hi[k] && node->hi[k][s] >= lo[k];
+                for (int j = 0; meets && j < node->count[s]; j++) out[n++] = d->order[first + j];
+                first += node->count[s];
+            }
+        if (!found) return -1;
+    }
+    return n;
+}
+
+static int check_queries(const dxTriMeshData *d, double size)
+{
+    int *expect = malloc(sizeof(int) * (size_t)d->tri_count);
+    int *got = NULL, cap = 0, leaf[64];
+    for (int q = 0; q < 400; q++) {
+        dReal lo[3], hi[3];
+        for (int k = 0; k < 3; k++) {
+            double c = rnd(-size, size), h = q % 4 == 0 ? 0 : rnd(0, size / 8);
+            lo[k] = c - h;
+            hi[k] = c + h;
+        }
+        if (q % 50 == 1) lo[0] = -dInfinity, hi[1] = dInfinity;
+        if (q % 50 == 2) lo[2] = NAN;
+        if (q % 50 == 3) {   // a side on a leaf box's float side, or just off it
+            const dxTriMeshNode *node = &d->nodes[d->node_count - 1];
+            hi[0] = node->lo[0][0];
+            lo[1] = nextafter((double)node->hi[1][0], INFINITY);
+        }
+        int n = scan_leaves(d, lo, hi, expect);
+        CHECK(n >= 0);
+        int m = dxTriMeshQueryBox(d, lo, hi, &got, &cap);
+        CHECK(m == n);
+        CHECK(n == 0 || memcmp(expect, got, sizeof(int) * (size_t)n) == 0);
+        // through the leaves of a larger box, as temporal coherence does
+        dReal flo[3], fhi[3];
+        for (int k = 0; k < 3; k++) {
+            flo[k] = lo[k] - size / 10;
+            fhi[k] = hi[k] + size / 10;
+        }
+        int nl = dxTriMeshQueryLeaves(d, flo, fhi, leaf, 64);
+        if (nl >= 0) {
+            m = dxTriMeshFilterLeaves(d, leaf, nl, lo, hi, &got, &cap);
+            CHECK(m == n);
+            CHECK(n == 0 || memcmp(expect, got, sizeof(int) * (size_t)n) == 0);
+        }
+    }
+    free(expect);
+    free(got);
+    return 0;
+}
+
+// ---- rays -------------------------------------------------------------------------
+
+typedef struct hit {
+    dReal depth;
+    int tri;
+} hit;
+
+static int hit_order(const void *a, const void *b)
+{
+    const hit *x = a, *y = b;
+    if (x->depth != y->depth) return x->depth < y->depth ? -1 : 1;
+    return (x->tri > y->tri) - (x->tri < y->tri);
+}
+
+// Rays cast at the whole mesh and at each triangle alone (a mesh of one
+// triangle on the same pose): the closest hit, and the nearest 8 of all,
+// are the least of the lone triangles' hits by distance then triangle, to
+// the bit; with BackfaceCull too. On the grid (not turned, so that
+// directions along its axes stay exact in its frame) the rays go through
+// vertices and edges, along the axes and nearly along the grid.
+static int check_rays(mesh *m, double size, int grid, int soup)
+{
+    dMatrix3 R;
+    if (grid) dRSetIdentity(R);
+    else dRFromEulerAngles(R, 0.3, -0.2, 0.1);
+    dGeomID whole = dCreateTriMesh(0, m->data, NULL, NULL, NULL);
+    dGeomSetRotation(whole, R);
+    dGeomSetPosition(whole, 0.25, -0.5, 0.125);
+    dTriMeshDataID *one = malloc(sizeof *one * (size_t)m->nt);
+    dGeomID *lone = malloc(sizeof *lone * (size_t)m->nt);
+    for (int t = 0; t < m->nt; t++) {
+        one[t] = data_of(m, m->idx + 3 * t, 1);
+        lone[t] = dCreateTriMesh(0, one[t], NULL, NULL, NULL);
+        dGeomSetRotation(lone[t], R);
+        dGeomSetPosition(lone[t], 0.25, -0.5, 0.125);
+    }
+    dGeomID ray = dCreateRay(0, 1);
+    hit *all = malloc(sizeof *all * (size_t)m->nt);
+    int failed = 0, hits = 0;
+    for (int r = 0; r < 300 && !failed; r++) {
+        // from a point in the mesh's box (grown) towards another in it
+        double p[3], dir[3], len2 = 0;
+        for (int k = 0; k < 3; k++) {
+            p[k] = rnd(-1.2, 1.2) * (k == 2 && !soup ? 2 : size);
+            dir[k] = rnd(-1, 1) * (k == 2 && !soup ? 0.5 : size) - p[k];
+            len2 += dir[k] * dir[k];
+        }
+        double len = sqrt(len2) * rnd(0.3, 2);
+        if (grid) {
+            static const double offset[3] = { 0, 0.25, 0.5 };
+            p[0] = floor(p[0]) + offset[r % 3] - 0.25;
+            p[1] = floor(p[1]) + offset[r / 3 % 3] + 0.5;
+            p[2] = r % 7 == 0 ? 1e-3 : fabs(p[2]) + 0.5;
+            dir[0] = r % 5 < 2 ? 0 : rnd(-0.5, 0.5);
+            dir[1] = r % 5 == 0 || r % 5 == 2 ? 0 : rnd(-0.5, 0.5);
+            dir[2] = r % 7 == 0 ? -1e-35 : -1;
+        }
+        dGeomRaySet(ray, p[0], p[1], p[2], dir[0], dir[1], dir[2]);
+        dGeomRaySetLength(ray, grid ? 4 : len);
+        int cull = r % 4 == 1;
+        dGeomRaySetBackfaceCull(ray, cull);
+        int n = 0;
+        for (int t = 0; t < m->nt; t++) {
+            dContactGeom c;
+            if (dCollide(lone[t], ray, 1, &c, sizeof c)) all[n++] = (hit){ c.depth, t };
+        }
+        qsort(all, (size_t)n, sizeof *all, hit_order);
+        hits += n > 0;
+        dContactGeom c[8];
+        dGeomRaySetClosestHit(ray, 1);
+        int got = dCollide(whole, ray, 8, c, sizeof c[0]);
+        failed |= got != (n > 0);
+        failed |= n > 0 && (c[0].depth != all[0].depth || c[0].side1 != all[0].tri);
+        dGeomRaySetClosestHit(ray, 0);
+        got = dCollide(whole, ray, 8, c, sizeof c[0]);
+        failed |= got != (n < 8 ? n : 8);
+        for (int i = 0; i < got; i++)
+            failed |= c[i].depth != all[i].depth || c[i].side1 != all[i].tri;
+    }
+    free(all);
+    dGeomDestroy(ray);
+    for (int t = 0; t < m->nt; t++) {
+        dGeomDestroy(lone[t]);
+        dGeomTriMeshDataDestroy(one[t]);
+    }
+    free(one);
+    free(lone);
+    dGeomDestroy(whole);
+    CHECK(!failed);
+    CHECK(m->nt < 100 || hits >= 100);   // the rays meet the mesh
+    return 0;
+}
+
+static int check_mesh(mesh *m, double size, int grid, int soup)
+{
+    const dxTriMeshData *d = (const dxTriMeshData *)m->data;
+    int bad = check_shape(d) || check_queries(d, size) || check_rays(m, size, grid, soup);
+    mesh_destroy(m);
+    return bad;
+}
+
+static int test_tree_wavy_grid(void)
+{
+    mesh m;
+    make_grid(&m, 24, 0.5, 1);
+    return check_mesh(&m, 7, 0, 0);
+}
+
+static int test_tree_flat_integer_grid(void)
+{
+    mesh m;
+    make_grid(&m, 20, 1, 0);
+    return check_mesh(&m, 11, 1, 0);
+}
+
+static int test_tree_soup(void)
+{
+    mesh m;
+    make_soup(&m, 700, 5);
+    return check_mesh(&m, 6, 0, 1);
+}
+
+// 1 to 9 triangles: a root that is a leaf, roots of two to four slots.
+static int test_tree_small(void)
+{
+    for (int nt = 1; nt <= 9; nt++) {
+        mesh m;
+        make_soup(&m, nt, 2);
+        const dxTriMeshData *d = (const dxTriMeshData *)m.data;
+        CHECK(d->node_count >= 1);
+        if (check_mesh(&m, 3, 0, 1)) return 1;
+    }
+    return 0;
+}
+
+const test_case test_cases[] = {
+    TEST_CASE(test_tree_wavy_grid),
+    TEST_CASE(test_tree_flat_integer_grid),
+    TEST_CASE(test_tree_soup),
+    TEST_CASE(test_tree_small),
+    TEST_END,
+};
