@@ -151,6 +151,7 @@ typedef struct qs_island {
     int block0, nblocks;   // its blocks, in its joints' order
     int order0, norder;    // its part of order: its entries (rows not coupled to a block)
     int dependent;         // has an entry of one row bounded by another row's force
+    int free0, nfree;      // its part of free_order: its entries' rows one by one
     uint32_t seed;         // of its shuffles
 } qs_island;
 
@@ -172,6 +173,9 @@ typedef struct qs_system {
     int *order;            // each island's entries (QS_UNIT), in the order of its sweeps
     const qs_block **bseq; // the blocks of all islands, interleaved
     int *seq;              // order of all islands, interleaved
+    int *free_order;       // each island's rows of order one by one (the last sweep's)
+    int *free_seq;         // free_order of all islands, interleaved
+    int nfree;             // the length of free_order
     int *at;               // m + 1: the place in order per lambda position (-1: not there)
     int *row_pos, *row_f;  // per row: its pos and f (compact copies for the reordering)
     dReal *lambda;         // m + 1: the last holds the constant 1
@@ -243,9 +247,7 @@ int dxQuickContactIsDirect(const dxJoint *j);
 void dxQuickContact(const qs_input *in, dxJoint *j, qs_system *sys);
 
 // One sweep over all blocks in bseq (each followed by its coupled rows) and
-// all entries in seq: the blocks first, or (rows_first) the entries; split:
-// the entries' first rows (a contact's normal row) before the rest of them
-// (the last sweep of a step, quickstep.c).
-void dxQuickSweep(const qs_system *sys, int rows_first, int split);
+// all entries in seq: the blocks first, or (rows_first) the entries.
+void dxQuickSweep(const qs_system *sys, int rows_first);
 
 #endif

@@ -570,6 +570,9 @@ void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_syst
     sys->rows = DX_ARENA_ARRAY(a, qs_row, m + 1);
     sys->order = DX_ARENA_ARRAY(a, int, m + 1);
     sys->seq = DX_ARENA_ARRAY(a, int, m + 1);
+    sys->free_order = DX_ARENA_ARRAY(a, int, m + 1);
+    sys->free_seq = DX_ARENA_ARRAY(a, int, m + 1);
+    sys->nfree = 0;
     sys->at = DX_ARENA_ARRAY(a, int, m + 1);
     sys->row_pos = DX_ARENA_ARRAY(a, int, m + 1);
     sys->row_f = DX_ARENA_ARRAY(a, int, m + 1);
@@ -594,7 +597,8 @@ void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *b
     part->block0 = sys->nblocks;
     part->order0 = sys->norder;
     sys->nbodies += is->nb + 1;
-    part->nblocks = part->norder = part->dependent = 0;
+    part->nblocks = part->norder = part->dependent = part->nfree = 0;
+    part->free0 = sys->nfree;
     if (is->nj == 0) return;
     const dReal fps = dRecip(h);
     // Every joint's rows first, the bodies' rates after: a limit motor that
@@ -631,7 +635,9 @@ void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *b
     part->norder = sys->norder - part->order0;
     // Entries of one row bounded by another's force need the reordering's rule
     // (quickstep.c); a contact's own rows are in order within their entry.
-    part->dependent = 0;
-    for (int k = part->order0; k < sys->norder; k++)
+    for (int k = part->order0; k < sys->norder; k++) {
         part->dependent |= sys->row_f[QS_UNIT_ROW(sys->order[k])] != sys->m;
+        part->nfree += QS_UNIT_LEN(sys->order[k]);
+    }
+    sys->nfree += part->nfree;
 }

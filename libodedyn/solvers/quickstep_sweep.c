@@ -261,47 +261,39 @@ QS_INLINE void update_row(const qs_row *q, int coupled, int np, dReal *lambda, d
         for (int a = 0; a < q->gn; a++) lambda[q->gfirst + a] += delta * q->g[a];
 }
 
-// Which rows of an entry a sweep updates: all, its first (a contact's
-// normal row) only, or all but its first.
-enum { QS_ALL, QS_FIRST, QS_REST };
-
-// The n rows of an entry (QS_UNIT), or its part of them, in turn, each
-// exactly as alone (a friction row bounded by its normal's force just
-// made), the second and third in turned order if swap (0 or 1), their
-// bodies' fc loaded once and stored once. n, part and np are constants
-// after inlining where they can be.
-QS_INLINE void update_unit(const qs_row *q, int n, int swap, int part, int np, dReal *lambda,
-                           dReal *fc)
+// The n rows of an entry (QS_UNIT) in turn, each exactly as alone (a
+// friction row bounded by its normal's force just made), the second and
+// third in turned order if swap (0 or 1), their bodies' fc loaded once and
+// stored once. n and np are constants after inlining where they can be.
+QS_INLINE void update_unit(const qs_row *q, int n, int swap, int np, dReal *lambda, dReal *fc)
 {
     dReal *f0 = fc + q->o0, *f1 = fc + q->o1;
     qs_b6 x0 = b6_load(f0), x1 = x0;
     if (np == 6) x1 = b6_load(f1);
-    if (part != QS_REST) row_step(q, np, lambda, &x0, &x1);
-    if (part != QS_FIRST) {
-        if (n >= 3) {
-            row_step(q + 1 + swap, np, lambda, &x0, &x1);
-            row_step(q + 2 - swap, np, lambda, &x0, &x1);
-        }
-        for (int i = n >= 3 ? 3 : 1; i < n; i++) row_step(q + i, np, lambda, &x0, &x1);
+    row_step(q, np, lambda, &x0, &x1);
+    if (n >= 3) {
+        row_step(q + 1 + swap, np, lambda, &x0, &x1);
+        row_step(q + 2 - swap, np, lambda, &x0, &x1);
     }
+    for (int i = n >= 3 ? 3 : 1; i < n; i++) row_step(q + i, np, lambda, &x0, &x1);
     b6_store(x0, f0);
     if (np == 6) b6_store(x1, f1);
 }
 
-// Entry e of seq, or its part: a contact's three rows (the common case,
-// unrolled), or any other number; on one body or two.
-QS_INLINE void update_entry(const qs_row *rows, int e, int part, dReal *lambda, dReal *fc)
+// Entry e of seq: a contact's three rows (the common case, unrolled), one
+// row (the last sweep's entries), or any other number; on one body or two.
+QS_INLINE void update_entry(const qs_row *rows, int e, dReal *lambda, dReal *fc)
 {
     const qs_row *q = &rows[QS_UNIT_ROW(e)];
     const int n = QS_UNIT_LEN(e), swap = (e & QS_UNIT_SWAP) != 0;
-    if (part == QS_FIRST) update_row(q, 0, q->two ? 6 : 3, lambda, fc);
-    else if (part == QS_REST && n == 1) return;
-    else if (q->two) {
-        if (n == 3) update_unit(q, 3, swap, part, 6, lambda, fc);
-        else update_unit(q, n, swap, part, 6, lambda, fc);
+    if (q->two) {
+        if (n == 3) update_unit(q, 3, swap, 6, lambda, fc);
+        else if (n == 1) update_row(q, 0, 6, lambda, fc);
+        else update_unit(q, n, swap, 6, lambda, fc);
     } else {
-        if (n == 3) update_unit(q, 3, swap, part, 3, lambda, fc);
-        else update_unit(q, n, swap, part, 3, lambda, fc);
+        if (n == 3) update_unit(q, 3, swap, 3, lambda, fc);
+        else if (n == 1) update_row(q, 0, 3, lambda, fc);
+        else update_unit(q, n, swap, 3, lambda, fc);
     }
 }
 
@@ -322,7 +314,9 @@ QS_INLINE void prefetch_entry(const qs_row *rows, int e)
 {
     const qs_row *q = &rows[QS_UNIT_ROW(e)];
     const int n = QS_UNIT_LEN(e);
-    if (n == 3) {
+    if (n == 1) {
+        prefetch_row(q);
+    } else if (n == 3) {
         prefetch_row(q);
         prefetch_row(q + 1);
         prefetch_row(q + 2);
@@ -349,41 +343,28 @@ QS_SWEEP_CLONES static void sweep_blocks(const qs_system *sys)
     }
 }
 
-// The entries in seq, or their part (QS_ALL, ...); those of a big system
-// (beyond PREFETCH_BYTES of rows) fetched ahead.
-QS_INLINE void sweep_entries(const qs_system *sys, int part)
+// The entries in seq; those of a big system (beyond PREFETCH_BYTES of rows)
+// fetched ahead.
+QS_SWEEP_CLONES static void sweep_rows(const qs_system *sys)
 {
     dReal *lambda = sys->lambda, *fc = sys->fc;
     const qs_row *rows = sys->rows;
     const int *seq = sys->seq, n = sys->norder;
     if ((size_t)sys->nrows * sizeof(qs_row) < PREFETCH_BYTES) {
-        for (int k = 0; k < n; k++) update_entry(rows, seq[k], part, lambda, fc);
+        for (int k = 0; k < n; k++) update_entry(rows, seq[k], lambda, fc);
         return;
     }
     int k = 0;
     for (; k + PREFETCH_AHEAD < n; k++) {
         prefetch_entry(rows, seq[k + PREFETCH_AHEAD]);
-        update_entry(rows, seq[k], part, lambda, fc);
+        update_entry(rows, seq[k], lambda, fc);
     }
-    for (; k < n; k++) update_entry(rows, seq[k], part, lambda, fc);
+    for (; k < n; k++) update_entry(rows, seq[k], lambda, fc);
 }
 
-QS_SWEEP_CLONES static void sweep_rows(const qs_system *sys)
+void dxQuickSweep(const qs_system *sys, int rows_first)
 {
-    sweep_entries(sys, QS_ALL);
-}
-
-// The entries' first rows, then the rest of them (the frictions after all
-// normals).
-QS_SWEEP_CLONES static void sweep_rows_split(const qs_system *sys)
-{
-    sweep_entries(sys, QS_FIRST);
-    sweep_entries(sys, QS_REST);
-}
-
-void dxQuickSweep(const qs_system *sys, int rows_first, int split)
-{
-    if (rows_first) split ? sweep_rows_split(sys) : sweep_rows(sys);
+    if (rows_first) sweep_rows(sys);
     sweep_blocks(sys);
-    if (!rows_first) split ? sweep_rows_split(sys) : sweep_rows(sys);
+    if (!rows_first) sweep_rows(sys);
 }
