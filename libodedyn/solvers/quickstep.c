@@ -86,7 +86,7 @@
 
 #define REORDER_PERIOD 8
 // The last sweeps of a step go through the rows one by one (reorder_rows).
-#define LAST_ROWS 2
+#define LAST_ROWS 6
 
 // A counter-based generator: the k-th number is a hash of the seed and k,
 // so that consecutive numbers do not wait for each other.
