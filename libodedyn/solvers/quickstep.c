@@ -15,38 +15,24 @@
 // the order of the updates decides where the error goes. A sweep updates
 // the joints' equality blocks in the island's order (which carries forces
 // along chains), each block followed by the limit and motor rows coupled to
-// it, and every other row on its own, a contact's rows together: the blocks
-// first in even sweeps, the rows first in odd ones, so that neither the
-// joints nor the contacts always have the last word (always the contacts:
-// ragdolls' joints come apart a third more than with ODE). A contact's rows
-// are one entry of the order (quickstep.h's QS_UNIT): its normal row, then
-// its two friction rows in either order (drawn at random), bounded by the
-// normal force just made, with the bodies' fc loaded and stored once for
-// the three. The entries are shuffled before the first sweep and every
-// REORDER_PERIOD sweeps, with the same rule for a friction row that is an
-// entry of its own: it comes after its normal row, so that its bound is the
-// normal force of the same sweep (bounded by the previous sweep's, as about
-// half of them are in a plain shuffle, a tower of boxes sways twice as
-// much). The last LAST_ROWS sweeps of the step take the rows one by one,
-// shuffled, each friction row after its normal row but not next to it, so
-// that the step ends with friction rows that saw most other contacts'
-// normal forces (see reorder_rows: with contacts swept whole to the end, a
-// cylinder on its side kept rolling; with only the last sweep one by one,
-// at 1.8 mm/s after 3 s, and with two as slowly as before).
-// The generator is seeded from the island's state (positions and
-// velocities): the order differs from step to step, yet a step is
-// reproducible and independent of the other islands. Any fixed relation in
-// the order leaves a bias that adds up over the steps:
-//  - all normal rows before all friction rows in every sweep (as this file
-//    once did) gives the friction rows the last word in every step: their
-//    torques about the boxes' centres undo part of the normal rows' work,
-//    contacts sink faster than they are corrected, and a 20-layer pyramid
-//    of boxes collapses;
-//  - a contact's friction rows always in the same order make a pyramid
-//    spread sideways (40 layers, contacts swept whole in every sweep: 9.8 cm
-//    in 10 s against 6.4 cm with the order drawn, 5 cm with the last sweeps
-//    one row at a time; before the warm start, a contact's rows always next
-//    to each other spread a 20-layer pyramid by 25 cm);
+// it, and every other row on its own: the blocks first in even sweeps, the
+// rows first in odd ones, so that neither the joints nor the contacts always
+// have the last word (always the contacts: ragdolls' joints come apart a
+// third more than with ODE). The rows are shuffled before the first sweep
+// and every REORDER_PERIOD sweeps, with one rule: a friction row comes after
+// its normal row (not next to it), so that its bound is the normal force of
+// the same sweep (bounded by the previous sweep's, as about half of them are
+// in a plain shuffle, a tower of boxes sways twice as much). The generator
+// is seeded from the island's state (positions and velocities): the order
+// differs from step to step, yet a step is reproducible and independent of
+// the other islands. Any fixed relation in the order leaves a bias that adds
+// up over the steps:
+//  - all normal rows before all friction rows (as this file once did) gives
+//    the friction rows the last word in every step: their torques about the
+//    boxes' centres undo part of the normal rows' work, contacts sink faster
+//    than they are corrected, and a 20-layer pyramid of boxes collapses;
+//  - a contact's normal and friction rows always next to each other make a
+//    pyramid spread sideways (25 cm in 10 s at 20 layers);
 //  - the same order in every step makes a stack creep.
 //
 // Islands share no body and no row, so their sweeps are interleaved row by
@@ -85,8 +71,6 @@
 #include <string.h>
 
 #define REORDER_PERIOD 8
-// The last sweeps of a step go through the rows one by one (reorder_rows).
-#define LAST_ROWS 6
 
 // A counter-based generator: the k-th number is a hash of the seed and k,
 // so that consecutive numbers do not wait for each other.
@@ -100,17 +84,15 @@ static uint32_t next_random(uint32_t *state)
     return x ^ (x >> 16);
 }
 
-// Fisher-Yates shuffle of the entries order[0, n), each entry's
-// QS_UNIT_SWAP drawn anew (a bit of the number that placed it).
+// Fisher-Yates shuffle of order[0, n).
 static void shuffle(int *order, int n, uint32_t *state)
 {
-    for (int k = n - 1; k >= 0; k--) {
-        // A uniform index in [0, k] by multiply-shift (the high bits).
-        const uint32_t x = next_random(state);
-        const int j = (int)(((uint64_t)x * (uint64_t)(k + 1)) >> 32);
-        const int t = order[j];
-        order[j] = order[k];
-        order[k] = (t & ~QS_UNIT_SWAP) | (int)(x & QS_UNIT_SWAP);
+    for (int k = n - 1; k > 0; k--) {
+        // A uniform index in [0, k] by multiply-shift.
+        const int j = (int)(((uint64_t)next_random(state) * (uint64_t)(k + 1)) >> 32);
+        const int t = order[k];
+        order[k] = order[j];
+        order[j] = t;
     }
 }
 
@@ -135,22 +117,20 @@ static uint32_t island_seed(const dxIsland *is)
     return (uint32_t)(h ^ (h >> 32));
 }
 
-// How many blocks (kind 1), entries of order (kind 0) or rows of free_order
-// (kind 2) an island has.
-static int island_length(const qs_island *p, int kind)
+// How many blocks (block = 1) or rows (block = 0) an island has.
+static int island_length(const qs_island *p, int block)
 {
-    return kind == 1 ? p->nblocks : kind == 2 ? p->nfree : p->norder;
+    return block ? p->nblocks : p->norder;
 }
 
-// The islands with blocks, entries or rows (kind, as island_length) into
-// list, longest first and the same length in island order; returns how many.
-// tmp: scratch for count. (A stable bottom-up merge sort: no allocation,
-// O(n log n).)
-static int islands_by_length(const qs_island *parts, int count, int kind, int *list, int *tmp)
+// The islands with blocks (block = 1) or rows (block = 0) into list, longest
+// first and the same length in island order; returns how many. tmp: scratch
+// for count. (A stable bottom-up merge sort: no allocation, O(n log n).)
+static int islands_by_length(const qs_island *parts, int count, int block, int *list, int *tmp)
 {
     int n = 0;
     for (int i = 0; i < count; i++)
-        if (island_length(&parts[i], kind) > 0) list[n++] = i;
+        if (island_length(&parts[i], block) > 0) list[n++] = i;
     int *from = list, *to = tmp;
     for (int width = 1; width < n; width *= 2) {
         for (int lo = 0; lo < n; lo += 2 * width) {
@@ -158,8 +138,8 @@ static int islands_by_length(const qs_island *parts, int count, int kind, int *l
             const int hi = lo + 2 * width < n ? lo + 2 * width : n;
             int a = lo, b = mid, out = lo;
             while (a < mid || b < hi) {
-                const int la = a < mid ? island_length(&parts[from[a]], kind) : -1;
-                const int lb = b < hi ? island_length(&parts[from[b]], kind) : -1;
+                const int la = a < mid ? island_length(&parts[from[a]], block) : -1;
+                const int lb = b < hi ? island_length(&parts[from[b]], block) : -1;
                 to[out++] = la >= lb ? from[a++] : from[b++];
             }
         }
@@ -183,100 +163,67 @@ static void interleave_blocks(const qs_system *sys, const qs_island *parts, cons
     }
 }
 
-// The same for the entries in order (kind 0, after every reshuffle) into
-// seq, or the rows of free_order (kind 2) into free_seq. first: scratch for
-// n numbers.
+// The same for the rows in order (after every reshuffle). first: scratch
+// for n numbers.
 static void interleave_rows(const qs_system *sys, const qs_island *parts, const int *list, int n,
-                            int *first, int kind)
+                            int *first)
 {
-    const int *order = kind == 2 ? sys->free_order : sys->order;
-    int *seq = kind == 2 ? sys->free_seq : sys->seq, out = 0;
-    for (int k = 0; k < n; k++)
-        first[k] = kind == 2 ? parts[list[k]].free0 : parts[list[k]].order0;
     if (n == 1) {   // one island (a heap): its order as it is
-        memcpy(seq, order + first[0], sizeof(int) * (size_t)island_length(&parts[list[0]], kind));
+        const qs_island *p = &parts[list[0]];
+        memcpy(sys->seq, sys->order + p->order0, sizeof(int) * (size_t)p->norder);
         return;
     }
+    for (int k = 0; k < n; k++) first[k] = parts[list[k]].order0;
+    const int *order = sys->order;
+    int *seq = sys->seq, out = 0;
     for (int t = 0; n > 0; t++) {
-        while (n > 0 && island_length(&parts[list[n - 1]], kind) <= t) n--;
+        while (n > 0 && parts[list[n - 1]].norder <= t) n--;
         for (int k = 0; k < n; k++) seq[out++] = order[first[k] + t];
     }
 }
 
-// Move every entry of one friction row among the n entries of o that comes
-// before its normal row's entry to the normal's place and the normal's to
-// its own: the entries stay in a random order, but each friction row is
-// bounded by the normal force of the same sweep. One pass suffices: a swap
-// only moves a normal row earlier. at: -1 for every lambda position but
-// those of the entries' first rows in o (earlier calls of the step wrote
-// only places of rows that are in o again, and the places are all written
-// before they are read).
-static void normals_before_friction(const qs_system *sys, int *o, int n, int *at)
+// Move every friction row of the island's order that comes before its
+// normal row to the normal row's place and the normal row to its own: the
+// rows stay in a random order, but each friction row is bounded by the
+// normal force of the same sweep. One pass suffices: a swap only moves a
+// normal row earlier. at: -1 for every lambda position but those of the
+// rows in order (the same rows at every reordering of a step: their places
+// are all written before they are read).
+static void normals_before_friction(qs_system *sys, const qs_island *p, int *at)
 {
+    int *o = sys->order + p->order0;
     const int *pos = sys->row_pos, *f = sys->row_f;
-    for (int k = 0; k < n; k++) at[pos[QS_UNIT_ROW(o[k])]] = k;
-    for (int k = 0; k < n; k++) {
-        const int j = at[f[QS_UNIT_ROW(o[k])]];   // -1: no friction, or normal not here
+    for (int k = 0; k < p->norder; k++) at[pos[o[k]]] = k;
+    for (int k = 0; k < p->norder; k++) {
+        const int j = at[f[o[k]]];   // -1: no friction, or normal not here
         if (j <= k) continue;
         const int t = o[k];
         o[k] = o[j];
         o[j] = t;
-        at[pos[QS_UNIT_ROW(o[k])]] = k;
-        at[pos[QS_UNIT_ROW(o[j])]] = j;
+        at[pos[o[k]]] = k;
+        at[pos[o[j]]] = j;
     }
 }
 
-// Reshuffle the island's entries (a contact's rows stay one entry; an entry
-// of one friction row goes after its normal's).
-static void reorder_entries(qs_system *sys, qs_island *p)
-{
-    int *o = sys->order + p->order0;
-    shuffle(o, p->norder, &p->seed);
-    if (p->dependent) normals_before_friction(sys, o, p->norder, sys->at);
-}
-
-// The last sweep's order of the island: its rows one by one, shuffled, each
-// friction row after its normal row but not next to it. Its friction rows so
-// see most other contacts' normal forces of the same sweep: swept with their
-// normal to the end, the friction rows of a contact miss the normal rows of
-// every contact after it, and what those do to its slip stays in the step
-// (a cylinder on its side kept rolling at 2 cm/s; a 40-layer pyramid kept 3
-// times the kinetic energy and spread 30 % further).
-static void reorder_rows(qs_system *sys, qs_island *p)
-{
-    const int *e = sys->order + p->order0;
-    int *o = sys->free_order + p->free0, n = 0;
-    for (int k = 0; k < p->norder; k++)
-        for (int i = 0; i < QS_UNIT_LEN(e[k]); i++) o[n++] = QS_UNIT(QS_UNIT_ROW(e[k]) + i, 1);
-    shuffle(o, n, &p->seed);
-    normals_before_friction(sys, o, n, sys->at);
-}
-
-// `iterations` sweeps over all islands, each island's entries reshuffled
-// every REORDER_PERIOD with its own generator, its rows one by one in the
-// last LAST_ROWS, the odd sweeps going through the rows before the blocks.
-// list, tmp: scratch for count islands.
+// `iterations` sweeps over all islands, each island's rows reshuffled every
+// REORDER_PERIOD with its own generator, the odd sweeps going through the
+// rows before the blocks. list, tmp: scratch for count islands.
 static void solve(qs_system *sys, qs_island *parts, int count, int iterations, int *list,
                   int *tmp)
 {
     interleave_blocks(sys, parts, list, islands_by_length(parts, count, 1, list, tmp));
     const int n = islands_by_length(parts, count, 0, list, tmp);
-    const int units = iterations > LAST_ROWS ? iterations - LAST_ROWS : 0;
-    for (int it = 0; it < units; it++) {
+    for (int it = 0; it < iterations; it++) {
         if (it % REORDER_PERIOD == 0) {
-            for (int k = 0; k < n; k++) reorder_entries(sys, &parts[list[k]]);
-            interleave_rows(sys, parts, list, n, tmp, 0);
+            for (int k = 0; k < n; k++) {
+                qs_island *p = &parts[list[k]];
+                shuffle(sys->order + p->order0, p->norder, &p->seed);
+                normals_before_friction(sys, p, sys->at);
+            }
+            interleave_rows(sys, parts, list, n, tmp);
         }
         dxQuickSweep(sys, it & 1);
     }
-    if (units == iterations) return;
-    for (int k = 0; k < n; k++) reorder_rows(sys, &parts[list[k]]);
-    const int nf = islands_by_length(parts, count, 2, list, tmp);
-    interleave_rows(sys, parts, list, nf, tmp, 2);
-    qs_system last = *sys;
-    last.seq = sys->free_seq;
-    last.norder = sys->nfree;
-    for (int it = units; it < iterations; it++) dxQuickSweep(&last, it & 1);
 }
 
 // With a threading implementation the islands are swept apart, each on
@@ -303,16 +250,13 @@ static void solve_island(void *context, int item, dxArena *arena)
     for (int t = 0; t < p->nblocks; t++) one.bseq[t] = &s->sys->blocks[p->block0 + t];
     one.norder = p->norder;
     one.seq = s->sys->order + p->order0;
-    const int units = s->iterations > LAST_ROWS ? s->iterations - LAST_ROWS : 0;
-    for (int it = 0; it < units; it++) {
-        if (it % REORDER_PERIOD == 0) reorder_entries(s->sys, p);
+    for (int it = 0; it < s->iterations; it++) {
+        if (it % REORDER_PERIOD == 0) {
+            shuffle(one.seq, p->norder, &p->seed);
+            normals_before_friction(s->sys, p, s->sys->at);
+        }
         dxQuickSweep(&one, it & 1);
     }
-    if (units == s->iterations) return;
-    reorder_rows(s->sys, p);
-    one.norder = p->nfree;
-    one.seq = s->sys->free_order + p->free0;
-    for (int it = units; it < s->iterations; it++) dxQuickSweep(&one, it & 1);
 }
 
 // The forces a joint with feedback applies: J^T lambda of its rows, per body.

@@ -8,8 +8,7 @@
 //  - blocks: a joint's unbounded (equality) rows, up to 6, solved together
 //    with the exact inverse of their block of A, each followed by the
 //    joint's limit and motor rows coupled to it;
-//  - rows: every other row (contacts, limits, motors) on its own (a
-//    contact's rows one after the other, as one entry of the order), in one
+//  - rows: every other row (contacts, limits, motors) on its own, in one
 //    array of rows that all look alike: two bodies (a one-body row's second
 //    body is a dummy whose numbers stay zero), bounds scaled by a lambda
 //    (a friction row's normal force, or a constant 1), so that the update
@@ -95,8 +94,7 @@ typedef struct qs_block {
     int coupled, ncoupled;   // the joint's rows coupled to the block: rows[coupled...]
 } qs_block;
 
-// A row updated on its own (or with the other rows of its contact, each as
-// alone, in turn). With D = sor_w / A_ii and s = |lambda[f]|:
+// A row updated on its own. With D = sor_w / A_ii and s = |lambda[f]|:
 //   lambda[pos] += rhs - cfm lambda[pos] - J . fc, clamped to lo s .. hi s,
 //   fc += delta M for the change delta.
 // A limit or motor row of a joint with a block is coupled to it: it moves
@@ -122,19 +120,6 @@ typedef struct qs_row {
     qs_v2 J1[3], M1[3]; // response) of the first body [lin ang], then of the second
 } qs_row;
 
-// An entry of order and seq: a run of rows, one after the other in rows[]
-// and on the same bodies, updated together (QS_UNIT_LEN of them from row
-// QS_UNIT_ROW): a contact's rows (normal, frictions, rolling frictions) are
-// one entry, every other free row an entry of its own. QS_UNIT_SWAP (set at
-// random by every reshuffle): an entry of three rows or more takes its
-// second and third (a contact's two friction rows) in turned order.
-#define QS_UNIT_BITS 4
-#define QS_UNIT_MAX 7
-#define QS_UNIT_SWAP 8
-#define QS_UNIT(row, n) (((row) << QS_UNIT_BITS) | (n))
-#define QS_UNIT_ROW(e) ((e) >> QS_UNIT_BITS)
-#define QS_UNIT_LEN(e) ((e) & QS_UNIT_MAX)
-
 // A joint with a dJointFeedback: its rows' J and lambda positions, kept for
 // the forces it applies.
 typedef struct qs_feedback {
@@ -149,9 +134,7 @@ typedef struct qs_feedback {
 typedef struct qs_island {
     int body0;             // its first body in fc; body0 + nb is its dummy
     int block0, nblocks;   // its blocks, in its joints' order
-    int order0, norder;    // its part of order: its entries (rows not coupled to a block)
-    int dependent;         // has an entry of one row bounded by another row's force
-    int free0, nfree;      // its part of free_order: its entries' rows one by one
+    int order0, norder;    // its part of order: its rows not coupled to a block
     uint32_t seed;         // of its shuffles
 } qs_island;
 
@@ -170,12 +153,9 @@ typedef struct qs_system {
     int m, nblocks, nrows, norder, nfeedback, nbodies;
     qs_block *blocks;      // in each island's joint order
     qs_row *rows;          // the rows coupled to blocks, and the others
-    int *order;            // each island's entries (QS_UNIT), in the order of its sweeps
+    int *order;            // each island's other rows, in the order of its sweeps
     const qs_block **bseq; // the blocks of all islands, interleaved
     int *seq;              // order of all islands, interleaved
-    int *free_order;       // each island's rows of order one by one (the last sweep's)
-    int *free_seq;         // free_order of all islands, interleaved
-    int nfree;             // the length of free_order
     int *at;               // m + 1: the place in order per lambda position (-1: not there)
     int *row_pos, *row_f;  // per row: its pos and f (compact copies for the reordering)
     dReal *lambda;         // m + 1: the last holds the constant 1
@@ -247,7 +227,7 @@ int dxQuickContactIsDirect(const dxJoint *j);
 void dxQuickContact(const qs_input *in, dxJoint *j, qs_system *sys);
 
 // One sweep over all blocks in bseq (each followed by its coupled rows) and
-// all entries in seq: the blocks first, or (rows_first) the entries.
+// all rows in seq: the blocks first, or (rows_first) the rows.
 void dxQuickSweep(const qs_system *sys, int rows_first);
 
 #endif

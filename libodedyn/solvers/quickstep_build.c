@@ -356,23 +356,10 @@ static void fill_row(dxArena *a, const qs_input *in, const qs_jrows *jr, int i, 
 // The joint's rows outside its blocks (pos[i] < 0 after make_blocks): their
 // lambda positions from *next on, then their rows: first those coupled to
 // the joint's block (blk, if it has one), then the others, which go into
-// sys->order, one entry each or (unit: a contact, which has no block) all
-// as one entry. done: scratch for the joint's rows.
+// sys->order. done: scratch for the joint's rows.
 static void make_rows(dxArena *a, const qs_input *in, const qs_jrows *jr, qs_block *blk,
-                      const qs_jblock *jb, qs_system *sys, int *pos, int *next, char *done,
-                      int unit)
+                      const qs_jblock *jb, qs_system *sys, int *pos, int *next, char *done)
 {
-    if (unit && !blk && jr->m <= QS_UNIT_MAX) {
-        sys->order[sys->norder++] = QS_UNIT(sys->nrows, jr->m);
-        for (int i = 0; i < jr->m; i++) pos[i] = (*next)++;
-        for (int i = 0; i < jr->m; i++) {
-            const qs_row *q = &sys->rows[sys->nrows];
-            fill_row(a, in, jr, i, pos, sys->m, NULL, NULL, &sys->rows[sys->nrows]);
-            sys->row_pos[sys->nrows] = q->pos;
-            sys->row_f[sys->nrows++] = q->f;
-        }
-        return;
-    }
     for (int i = 0; i < jr->m; i++) {
         done[i] = pos[i] >= 0;   // in a block
         if (pos[i] < 0) pos[i] = (*next)++;
@@ -394,8 +381,7 @@ static void make_rows(dxArena *a, const qs_input *in, const qs_jrows *jr, qs_blo
         fill_row(a, in, jr, i, pos, sys->m, NULL, NULL, &sys->rows[sys->nrows]);
         sys->row_pos[sys->nrows] = q->pos;
         sys->row_f[sys->nrows] = q->f;
-        sys->order[sys->norder++] = QS_UNIT(sys->nrows, 1);
-        sys->nrows++;
+        sys->order[sys->norder++] = sys->nrows++;
     }
 }
 
@@ -570,9 +556,6 @@ void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_syst
     sys->rows = DX_ARENA_ARRAY(a, qs_row, m + 1);
     sys->order = DX_ARENA_ARRAY(a, int, m + 1);
     sys->seq = DX_ARENA_ARRAY(a, int, m + 1);
-    sys->free_order = DX_ARENA_ARRAY(a, int, m + 1);
-    sys->free_seq = DX_ARENA_ARRAY(a, int, m + 1);
-    sys->nfree = 0;
     sys->at = DX_ARENA_ARRAY(a, int, m + 1);
     sys->row_pos = DX_ARENA_ARRAY(a, int, m + 1);
     sys->row_f = DX_ARENA_ARRAY(a, int, m + 1);
@@ -597,8 +580,7 @@ void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *b
     part->block0 = sys->nblocks;
     part->order0 = sys->norder;
     sys->nbodies += is->nb + 1;
-    part->nblocks = part->norder = part->dependent = part->nfree = 0;
-    part->free0 = sys->nfree;
+    part->nblocks = part->norder = 0;
     if (is->nj == 0) return;
     const dReal fps = dRecip(h);
     // Every joint's rows first, the bodies' rates after: a limit motor that
@@ -624,8 +606,7 @@ void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *b
         const int nblocks = sys->nblocks, nrows = sys->nrows;
         qs_jblock jb;
         qs_block *blk = make_blocks(a, jin, jr, sys, s->pos, &sys->next, &jb);
-        make_rows(a, jin, jr, blk, blk ? &jb : NULL, sys, s->pos, &sys->next, s->done,
-                  j->cls->type == dJointTypeContact);
+        make_rows(a, jin, jr, blk, blk ? &jb : NULL, sys, s->pos, &sys->next, s->done);
         if (j->feedback) keep_feedback(a, j, jr, s->pos, sys);
         // Without blocks the joint's rows are in order and alone (not coupled).
         const int alone = sys->nblocks == nblocks && sys->nrows - nrows == jr->m;
@@ -633,11 +614,4 @@ void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *b
     }
     part->nblocks = sys->nblocks - part->block0;
     part->norder = sys->norder - part->order0;
-    // Entries of one row bounded by another's force need the reordering's rule
-    // (quickstep.c); a contact's own rows are in order within their entry.
-    for (int k = part->order0; k < sys->norder; k++) {
-        part->dependent |= sys->row_f[QS_UNIT_ROW(sys->order[k])] != sys->m;
-        part->nfree += QS_UNIT_LEN(sys->order[k]);
-    }
-    sys->nfree += part->nfree;
 }

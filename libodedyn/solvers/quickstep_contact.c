@@ -178,8 +178,8 @@ void dxQuickContact(const qs_input *in, dxJoint *j, qs_system *sys)
         }
         sys->row_pos[sys->nrows + i] = q->pos;
         sys->row_f[sys->nrows + i] = q->f;
+        sys->order[sys->norder++] = sys->nrows + i;
     }
-    sys->order[sys->norder++] = QS_UNIT(sys->nrows, r.m);
     sys->nrows += r.m;
     sys->next += r.m;
 

@@ -5,9 +5,8 @@
 // QuickStep spends its time: the updates work on fours and pairs of numbers
 // (a body's 6 numbers as 4 + 2; a block's residuals, lambdas and Ainv res two
 // rows at a time), the block updates are
-// inlined once per size so that the loops have constant bounds, a contact's
-// rows are updated together (its bodies' numbers loaded and stored once),
-// and the row update branches only on one body or two.
+// inlined once per size so that the loops have constant bounds, and the row
+// update branches only on one body or two.
 
 #include "quickstep.h"
 
@@ -227,74 +226,38 @@ QS_INLINE void update_block_n(const qs_block *blk, int n, dReal *lambda, dReal *
     else update_block(blk, n, 3, lambda, fc);
 }
 
-// One row's update with its bodies' fc in registers (x0, x1): J . fc, the
-// projected update of its lambda, fc += delta M; returns delta. np: 6 for two
-// bodies, 3 for one (the second body's numbers are zeros and would add exact
-// zeros), a constant after inlining.
-QS_INLINE dReal row_step(const qs_row *q, int np, dReal *lambda, qs_b6 *x0, qs_b6 *x1)
+// One row: J . fc of its bodies, the projected update of its lambda,
+// fc += delta M, and (coupled, a constant after inlining) the block it moves
+// along. np: 6 for two bodies, 3 for one (the second body's numbers are
+// zeros and would add exact zeros), a constant after inlining.
+QS_INLINE void update_row(const qs_row *q, int coupled, int np, dReal *lambda, dReal *fc)
 {
+    dReal *f0 = fc + q->o0, *f1 = fc + q->o1;
+    const qs_b6 x0 = b6_load(f0);
+    qs_b6 x1 = x0;
     const dReal s = dFabs(lambda[q->f]), old = lambda[q->pos];
-    qs_v2 dot = b6_dot((const dReal *)q->J, *x0);
-    if (np == 6) dot = qs_add(dot, b6_dot((const dReal *)q->J1, *x1));
+    qs_v2 dot = b6_dot((const dReal *)q->J, x0);
+    if (np == 6) {
+        x1 = b6_load(f1);
+        dot = qs_add(dot, b6_dot((const dReal *)q->J1, x1));
+    }
     const dReal now = clamp(old + q->rhs - q->cfm * old - (qs_lane(dot, 0) + qs_lane(dot, 1)),
                             q->lo * s, q->hi * s);
     lambda[q->pos] = now;
     const dReal delta = now - old;
     const qs_v4 d4 = v4_splat(delta);
     const qs_v2 d2 = qs_splat(delta);
-    *x0 = b6_add(*x0, d4, d2, (const dReal *)q->M);
-    if (np == 6) *x1 = b6_add(*x1, d4, d2, (const dReal *)q->M1);
-    return delta;
-}
-
-// One row: its update with its bodies' fc loaded and stored, and (coupled,
-// a constant after inlining) the block it moves along.
-QS_INLINE void update_row(const qs_row *q, int coupled, int np, dReal *lambda, dReal *fc)
-{
-    dReal *f0 = fc + q->o0, *f1 = fc + q->o1;
-    qs_b6 x0 = b6_load(f0), x1 = x0;
-    if (np == 6) x1 = b6_load(f1);
-    const dReal delta = row_step(q, np, lambda, &x0, &x1);
-    b6_store(x0, f0);
-    if (np == 6) b6_store(x1, f1);
+    b6_store(b6_add(x0, d4, d2, (const dReal *)q->M), f0);
+    if (np == 6) b6_store(b6_add(x1, d4, d2, (const dReal *)q->M1), f1);
     if (coupled)
         for (int a = 0; a < q->gn; a++) lambda[q->gfirst + a] += delta * q->g[a];
 }
 
-// The n rows of an entry (QS_UNIT) in turn, each exactly as alone (a
-// friction row bounded by its normal's force just made), the second and
-// third in turned order if swap (0 or 1), their bodies' fc loaded once and
-// stored once. n and np are constants after inlining where they can be.
-QS_INLINE void update_unit(const qs_row *q, int n, int swap, int np, dReal *lambda, dReal *fc)
+// A free row: one body or two.
+QS_INLINE void update_free_row(const qs_row *q, dReal *lambda, dReal *fc)
 {
-    dReal *f0 = fc + q->o0, *f1 = fc + q->o1;
-    qs_b6 x0 = b6_load(f0), x1 = x0;
-    if (np == 6) x1 = b6_load(f1);
-    row_step(q, np, lambda, &x0, &x1);
-    if (n >= 3) {
-        row_step(q + 1 + swap, np, lambda, &x0, &x1);
-        row_step(q + 2 - swap, np, lambda, &x0, &x1);
-    }
-    for (int i = n >= 3 ? 3 : 1; i < n; i++) row_step(q + i, np, lambda, &x0, &x1);
-    b6_store(x0, f0);
-    if (np == 6) b6_store(x1, f1);
-}
-
-// Entry e of seq: a contact's three rows (the common case, unrolled), one
-// row (the last sweep's entries), or any other number; on one body or two.
-QS_INLINE void update_entry(const qs_row *rows, int e, dReal *lambda, dReal *fc)
-{
-    const qs_row *q = &rows[QS_UNIT_ROW(e)];
-    const int n = QS_UNIT_LEN(e), swap = (e & QS_UNIT_SWAP) != 0;
-    if (q->two) {
-        if (n == 3) update_unit(q, 3, swap, 6, lambda, fc);
-        else if (n == 1) update_row(q, 0, 6, lambda, fc);
-        else update_unit(q, n, swap, 6, lambda, fc);
-    } else {
-        if (n == 3) update_unit(q, 3, swap, 3, lambda, fc);
-        else if (n == 1) update_row(q, 0, 3, lambda, fc);
-        else update_unit(q, n, swap, 3, lambda, fc);
-    }
+    if (q->two) update_row(q, 0, 6, lambda, fc);
+    else update_row(q, 0, 3, lambda, fc);
 }
 
 // Ask for a row's 256 bytes: every other 64-byte line, the neighbouring
@@ -307,22 +270,6 @@ QS_INLINE void prefetch_row(const qs_row *q)
 #else
     (void)q;
 #endif
-}
-
-// Ask for an entry's rows (a contact's three unrolled).
-QS_INLINE void prefetch_entry(const qs_row *rows, int e)
-{
-    const qs_row *q = &rows[QS_UNIT_ROW(e)];
-    const int n = QS_UNIT_LEN(e);
-    if (n == 1) {
-        prefetch_row(q);
-    } else if (n == 3) {
-        prefetch_row(q);
-        prefetch_row(q + 1);
-        prefetch_row(q + 2);
-    } else {
-        for (int i = 0; i < n; i++) prefetch_row(q + i);
-    }
 }
 
 // The blocks in bseq, each followed by its coupled rows.
@@ -343,23 +290,23 @@ QS_SWEEP_CLONES static void sweep_blocks(const qs_system *sys)
     }
 }
 
-// The entries in seq; those of a big system (beyond PREFETCH_BYTES of rows)
-// fetched ahead.
+// The rows in seq; those of a big system (beyond PREFETCH_BYTES) fetched
+// ahead.
 QS_SWEEP_CLONES static void sweep_rows(const qs_system *sys)
 {
     dReal *lambda = sys->lambda, *fc = sys->fc;
     const qs_row *rows = sys->rows;
-    const int *seq = sys->seq, n = sys->norder;
-    if ((size_t)sys->nrows * sizeof(qs_row) < PREFETCH_BYTES) {
-        for (int k = 0; k < n; k++) update_entry(rows, seq[k], lambda, fc);
+    const int *order = sys->seq, n = sys->norder;
+    if ((size_t)n * sizeof(qs_row) < PREFETCH_BYTES) {
+        for (int k = 0; k < n; k++) update_free_row(&rows[order[k]], lambda, fc);
         return;
     }
     int k = 0;
     for (; k + PREFETCH_AHEAD < n; k++) {
-        prefetch_entry(rows, seq[k + PREFETCH_AHEAD]);
-        update_entry(rows, seq[k], lambda, fc);
+        prefetch_row(&rows[order[k + PREFETCH_AHEAD]]);
+        update_free_row(&rows[order[k]], lambda, fc);
     }
-    for (; k < n; k++) update_entry(rows, seq[k], lambda, fc);
+    for (; k < n; k++) update_free_row(&rows[order[k]], lambda, fc);
 }
 
 void dxQuickSweep(const qs_system *sys, int rows_first)
