@@ -734,6 +734,68 @@ static int test_sliding_box_decelerates_at_mu_g(void)
     return 0;
 }
 
+// Friction on a slope (gravity tilted by atan 0.3 about y, the ground flat):
+// a box on its four corner contacts below the friction angle (mu 0.5) stays
+// put with every way a contact's rows are made and swept together: both
+// friction directions on the pyramid, one on the pyramid and one a fixed
+// force (dContactApprox1_1), friction along the slope only (mu2 0: a
+// contact of two rows), fixed friction forces, rolling friction (six rows).
+// Above it (tilt atan 0.7) it slides down at g (sin - mu cos).
+static int test_box_holds_on_slope_and_slides_beyond(void)
+{
+    const double size[3] = { 1, 0.6, 0.4 }, mu = 0.5, h = 0.01;
+    const int modes[5] = { dContactApprox1, dContactApprox1_1, dContactApprox1 | dContactMu2,
+                           0, dContactApprox1 | dContactRolling };
+    for (int k = 0; k < 6; k++) {
+        const int slide = k == 5, mode = slide ? dContactApprox1 : modes[k];
+        const double t = slide ? 0.7 : 0.3, c = 1 / sqrt(1 + t * t), sn = t * c;
+        dWorldID w = dWorldCreate();
+        dWorldSetGravity(w, G * sn, 0, -G * c);
+        dJointGroupID g = dJointGroupCreate(0);
+        // Box friction is a force: about mu times this box's share of weight.
+        const double m = 3, mu_k = mode == 0 ? mu * m * G * c / 4 : mu;
+        dBodyID b = box_body(w, 0, 0, 0.2, size, m);
+        double v_start = 0, worst = 0;
+        for (int s = 1; s <= 300; s++) {
+            for (int e = 0; e < 4; e++) {
+                dVector3 p;
+                dBodyGetRelPointPos(b, (e & 1 ? 0.5 : -0.5) * size[0],
+                                    (e & 2 ? 0.5 : -0.5) * size[1], -0.5 * size[2], p);
+                dContact ct = { 0 };
+                ct.surface.mode = mode | dContactFDir1;
+                ct.surface.mu = mu_k;
+                ct.surface.mu2 = 0;   // used with dContactMu2 only
+                ct.surface.rho = ct.surface.rho2 = ct.surface.rhoN = 0.1;
+                ct.fdir1[0] = 1;
+                dCopyVector3(ct.geom.pos, p);
+                ct.geom.normal[2] = 1;
+                ct.geom.depth = -p[2];
+                ct.geom.side1 = ct.geom.side2 = -1;
+                if (ct.geom.depth < -1e-6) continue;
+                dJointAttach(dJointCreateContact(w, g, &ct), b, NULL);
+            }
+            CHECK(dWorldQuickStep(w, h) == 1);
+            dJointGroupEmpty(g);
+            if (s == 100) v_start = dBodyGetLinearVel(b)[0];
+            const dReal *p = dBodyGetPosition(b);
+            worst = fmax(worst, sqrt(p[0] * p[0] + p[1] * p[1]));
+        }
+        if (slide) {
+            const double a = (dBodyGetLinearVel(b)[0] - v_start) / (200 * h);
+            printf("# slope 0.7, mu %g: slides at %.5g m/s^2 (g (sin - mu cos) = %.5g)\n", mu, a,
+                   G * (sn - mu * c));
+            CHECK_NEAR(a, G * (sn - mu * c), 0.02 * G * (sn - mu * c));
+        } else {
+            printf("# slope 0.3, mode %#x: moved %.3g m in 3 s\n", mode, worst);
+            CHECK(worst < TOL(1e-6, 3e-3));
+        }
+        CHECK(fabs(dBodyGetLinearVel(b)[1]) < TOL(1e-6, 1e-4));   // nothing sideways
+        dJointGroupDestroy(g);
+        dWorldDestroy(w);
+    }
+    return 0;
+}
+
 // Contacts of a box resting on another, as a box-box collider reports them
 // for two boxes of the given size stacked flat or nearly: the corners of the
 // overlap of the upper box's bottom face with the lower box's top face
@@ -1025,6 +1087,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_every_block_size_converges_to_world_step),
     TEST_CASE(test_box_rests_on_contacts),
     TEST_CASE(test_sliding_box_decelerates_at_mu_g),
+    TEST_CASE(test_box_holds_on_slope_and_slides_beyond),
     TEST_CASE(test_box_stack_stands),
     TEST_CASE(test_box_pyramid_stands),
     TEST_CASE(test_islands_are_independent_and_reproducible),
