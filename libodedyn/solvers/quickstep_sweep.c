@@ -260,11 +260,10 @@ QS_INLINE void update_block_n(const qs_block *blk, const qs_row *coupled, int n,
     else update_block(blk, coupled, n, 3, lambda, fc);
 }
 
-// One row: J . fc of its bodies, the projected update of its lambda,
-// fc += delta M, and (coupled, a constant after inlining) the block it moves
-// along. np: 6 for two bodies, 3 for one (the second body's numbers are
-// zeros and would add exact zeros), a constant after inlining.
-QS_INLINE void update_row(const qs_row *q, int coupled, int np, dReal *lambda, dReal *fc)
+// One free row: J . fc of its bodies, the projected update of its lambda
+// and fc += delta M. np: 6 for two bodies, 3 for one (the second body's
+// numbers are zeros and would add exact zeros), a constant after inlining.
+QS_INLINE void update_row(const qs_row *q, int np, dReal *lambda, dReal *fc)
 {
     dReal *f0 = fc + q->o0, *f1 = fc + q->o1;
     const qs_b6 x0 = b6_load(f0);
@@ -283,15 +282,13 @@ QS_INLINE void update_row(const qs_row *q, int coupled, int np, dReal *lambda, d
     const qs_v2 d2 = qs_splat(delta);
     b6_store(b6_add(x0, d4, d2, (const dReal *)q->M), f0);
     if (np == 6) b6_store(b6_add(x1, d4, d2, (const dReal *)q->M1), f1);
-    if (coupled)
-        for (int a = 0; a < q->gn; a++) lambda[q->gfirst + a] += delta * q->g[a];
 }
 
 // A free row: one body or two.
 QS_INLINE void update_free_row(const qs_row *q, dReal *lambda, dReal *fc)
 {
-    if (q->two) update_row(q, 0, 6, lambda, fc);
-    else update_row(q, 0, 3, lambda, fc);
+    if (q->two) update_row(q, 6, lambda, fc);
+    else update_row(q, 3, lambda, fc);
 }
 
 // Ask for a row's 256 bytes: every other 64-byte line, the neighbouring
