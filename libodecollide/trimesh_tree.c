@@ -360,14 +360,22 @@ static inline int next_leaf(const dxTriMeshData *d, const query_box *q, tree_wal
     return -1;
 }
 
+// Start a walk for [lo, hi] at the root (the tree must have nodes).
+static inline void start_walk(const dxTriMeshData *d, const dReal lo[3], const dReal hi[3],
+                              query_box *q, tree_walk *w)
+{
+    *q = make_query(lo, hi);
+    w->top = 0;
+    push_slots(d, q, w, 0);
+}
+
 int dxTriMeshQueryBox(const dxTriMeshData *d, const dReal lo[3], const dReal hi[3], int **out,
                       int *cap)
 {
     if (d->node_count == 0) return 0;
-    query_box q = make_query(lo, hi);
+    query_box q;
     tree_walk w;
-    w.top = 0;
-    push_slots(d, &q, &w, 0);
+    start_walk(d, lo, hi, &q, &w);
     int n = 0;
     for (int id; (id = next_leaf(d, &q, &w)) >= 0;) {
         const dxTriMeshNode *leaf = &d->nodes[id >> 2];
@@ -382,10 +390,9 @@ int dxTriMeshQueryLeaves(const dxTriMeshData *d, const dReal lo[3], const dReal 
                          int max)
 {
     if (d->node_count == 0) return 0;
-    query_box q = make_query(lo, hi);
+    query_box q;
     tree_walk w;
-    w.top = 0;
-    push_slots(d, &q, &w, 0);
+    start_walk(d, lo, hi, &q, &w);
     int n = 0;
     for (int id; (id = next_leaf(d, &q, &w)) >= 0;) {
         if (n == max) return -1;

@@ -924,6 +924,32 @@ static double brute_least_depth(dGeomID a, const hull_arrays *ha, dGeomID b,
     return least;
 }
 
+// a's n contacts c against b judged by the brute-force least depth: none
+// when it says apart (*verdict -1), some when it says overlapping (*verdict
+// 1), the first normal's separating translation then within [least, 1.05
+// least]; a least depth within rounding of 0 is not judged (*verdict 0).
+static int judge_by_least_depth(dGeomID a, const hull_arrays *ha, dGeomID b, const hull_arrays *hb,
+                                double least, const dContactGeom *c, int n, int *verdict)
+{
+    const double tol = TOL(1e-9, 1e-4);
+    *verdict = 0;
+    if (least < -tol) {
+        CHECK(n == 0);
+        *verdict = -1;
+    } else if (least > tol) {
+        CHECK(n > 0);
+        double m[3], mm[3];
+        for (int k = 0; k < 3; k++) {
+            m[k] = c[0].normal[k];
+            mm[k] = -m[k];
+        }
+        double along = brute_support(b, hb, m) + brute_support(a, ha, mm);
+        CHECK(along >= least - tol && along <= 1.05 * least + tol);
+        *verdict = 1;
+    }
+    return 0;
+}
+
 // The pair test keeps only what can matter: edge pairs whose arcs cross,
 // and of those, faces and edges that are not clearly deeper than the best
 // face. Against a brute-force least depth over every face and edge pair
@@ -969,22 +995,10 @@ static int test_least_depth_as_brute_force(void)
         double least = brute_least_depth(a, of[pq[0]], b, of[pq[1]]);
         dContactGeom c[MAXC];
         int n = dCollide(a, b, MAXC, c, sizeof c[0]);
-        double tol = TOL(1e-9, 1e-4);
-        if (least < -tol) {
-            CHECK(n == 0);
-            apart++;
-        } else if (least > tol) {
-            CHECK(n > 0);
-            if (n == 0) continue;
-            double m[3], mm[3];
-            for (int k = 0; k < 3; k++) {
-                m[k] = c[0].normal[k];
-                mm[k] = -m[k];
-            }
-            double along = brute_support(b, of[pq[1]], m) + brute_support(a, of[pq[0]], mm);
-            CHECK(along >= least - tol && along <= 1.05 * least + tol);
-            touching++;
-        }
+        int verdict;
+        CHECK(judge_by_least_depth(a, of[pq[0]], b, of[pq[1]], least, c, n, &verdict) == 0);
+        apart += verdict < 0;
+        touching += verdict > 0;
     }
     printf("# least depth: %d touching, %d apart, as the brute force\n", touching, apart);
     CHECK(touching > 300 && apart > 300);
@@ -1037,21 +1051,9 @@ static int test_floors_of_loose_planes(void)
         dGeomDestroy(fresh);
         CHECK(identical(c, n, fc, fn));
         same++;
-        double tol = TOL(1e-9, 1e-4);
-        if (least > tol) {
-            CHECK(n > 0);
-            if (n == 0) continue;
-            double m[3], mm[3];
-            for (int k = 0; k < 3; k++) {
-                m[k] = c[0].normal[k];
-                mm[k] = -m[k];
-            }
-            double along = brute_support(b, of[pq[1]], m) + brute_support(a, of[pq[0]], mm);
-            CHECK(along >= least - tol && along <= 1.05 * least + tol);
-            touching++;
-        } else if (least < -tol) {
-            CHECK(n == 0);
-        }
+        int verdict;
+        CHECK(judge_by_least_depth(a, of[pq[0]], b, of[pq[1]], least, c, n, &verdict) == 0);
+        touching += verdict > 0;
     }
     printf("# loose planes: %d touching as the brute force, %d as fresh geoms\n", touching,
            same);

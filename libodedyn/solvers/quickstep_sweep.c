@@ -208,10 +208,11 @@ QS_INLINE void block_delta(const qs_block *blk, int n, int np, qs_b6 x0, qs_b6 x
     }
 }
 
-// One coupled row of a block of n rows (quickstep.h), its bodies' fc in x0
-// and x1 (np as for the block): the row update, and the block's lambdas
-// moved by g delta.
-QS_INLINE void coupled_row(const qs_row *q, int n, int np, dReal *lambda, qs_b6 *x0, qs_b6 *x1)
+// One row's update on its bodies' fc in registers x0 and x1 (np: 6 for two
+// bodies, 3 for one, the second body's numbers being zeros that would add
+// exact zeros; a constant after inlining): J . fc, the projected update of
+// its lambda and fc += delta M. Returns delta.
+QS_INLINE dReal row_in_registers(const qs_row *q, int np, dReal *lambda, qs_b6 *x0, qs_b6 *x1)
 {
     const dReal s = dFabs(lambda[q->f]), old = lambda[q->pos];
     qs_v2 dot = b6_dot((const dReal *)q->J, *x0);
@@ -224,6 +225,16 @@ QS_INLINE void coupled_row(const qs_row *q, int n, int np, dReal *lambda, qs_b6 
     const qs_v2 d2 = qs_splat(delta);
     *x0 = b6_add(*x0, d4, d2, (const dReal *)q->M);
     if (np == 6) *x1 = b6_add(*x1, d4, d2, (const dReal *)q->M1);
+    return delta;
+}
+
+// One coupled row of a block of n rows (quickstep.h), its bodies' fc in x0
+// and x1 (np as for the block): the row update, and the block's lambdas
+// moved by g delta.
+QS_INLINE void coupled_row(const qs_row *q, int n, int np, dReal *lambda, qs_b6 *x0, qs_b6 *x1)
+{
+    const dReal delta = row_in_registers(q, np, lambda, x0, x1);
+    const qs_v4 d4 = v4_splat(delta);
     dReal *lb = lambda + q->gfirst;
     int a = 0;
     for (; a + 4 <= n; a += 4) store4(v4_add(load4(lb + a), v4_mul(d4, load4(q->g + a))), lb + a);
@@ -260,28 +271,15 @@ QS_INLINE void update_block_n(const qs_block *blk, const qs_row *coupled, int n,
     else update_block(blk, coupled, n, 3, lambda, fc);
 }
 
-// One free row: J . fc of its bodies, the projected update of its lambda
-// and fc += delta M. np: 6 for two bodies, 3 for one (the second body's
-// numbers are zeros and would add exact zeros), a constant after inlining.
+// One free row, its bodies' fc loaded and stored back.
 QS_INLINE void update_row(const qs_row *q, int np, dReal *lambda, dReal *fc)
 {
     dReal *f0 = fc + q->o0, *f1 = fc + q->o1;
-    const qs_b6 x0 = b6_load(f0);
-    qs_b6 x1 = x0;
-    const dReal s = dFabs(lambda[q->f]), old = lambda[q->pos];
-    qs_v2 dot = b6_dot((const dReal *)q->J, x0);
-    if (np == 6) {
-        x1 = b6_load(f1);
-        dot = qs_add(dot, b6_dot((const dReal *)q->J1, x1));
-    }
-    const dReal now = clamp(old + q->rhs - q->cfm * old - (qs_lane(dot, 0) + qs_lane(dot, 1)),
-                            q->lo * s, q->hi * s);
-    lambda[q->pos] = now;
-    const dReal delta = now - old;
-    const qs_v4 d4 = v4_splat(delta);
-    const qs_v2 d2 = qs_splat(delta);
-    b6_store(b6_add(x0, d4, d2, (const dReal *)q->M), f0);
-    if (np == 6) b6_store(b6_add(x1, d4, d2, (const dReal *)q->M1), f1);
+    qs_b6 x0 = b6_load(f0), x1 = x0;
+    if (np == 6) x1 = b6_load(f1);
+    row_in_registers(q, np, lambda, &x0, &x1);
+    b6_store(x0, f0);
+    if (np == 6) b6_store(x1, f1);
 }
 
 // A free row: one body or two.
