@@ -25,20 +25,6 @@ void dxTriMeshRefitTree(dxTriMeshData *d);
     DX_CHECK_ARG(dxTriMeshDataIsLive(d) && !(d)->destroy_pending, on_fail, \
                  "trimesh data is NULL or was destroyed")
 
-void dxTriMeshVertex(const dxTriMeshData *d, int i, dReal out[3])
-{
-    const char *p = (const char *)d->vertices + (size_t)i * (size_t)d->vertex_stride;
-    if (d->vertex_double) {
-        double v[3];
-        memcpy(v, p, sizeof v);
-        for (int k = 0; k < 3; k++) out[k] = (dReal)v[k];
-    } else {
-        float v[3];
-        memcpy(v, p, sizeof v);
-        for (int k = 0; k < 3; k++) out[k] = (dReal)v[k];
-    }
-}
-
 void dxTriMeshIndices(const dxTriMeshData *d, int t, int idx[3])
 {
     dTriIndex v[3];

@@ -9,6 +9,7 @@
 #define DX_TRIMESH_INTERNAL_H
 
 #include <math.h>
+#include <string.h>
 #include <ode/collision_trimesh.h>
 
 #include "geom_internal.h"
@@ -136,8 +137,21 @@ static inline unsigned dxTriMeshFeatures(const dxTriMeshData *d, int t)
     return d->user_flags ? d->user_flags[t] : d->features[t];
 }
 
-// Vertex i (0 <= i < vertex_count) in dReal.
-void dxTriMeshVertex(const dxTriMeshData *d, int i, dReal out[3]);
+// Vertex i (0 <= i < vertex_count) in dReal (inline: loading triangles is
+// the colliders' hot path).
+static inline void dxTriMeshVertex(const dxTriMeshData *d, int i, dReal out[3])
+{
+    const char *p = (const char *)d->vertices + (size_t)i * (size_t)d->vertex_stride;
+    if (d->vertex_double) {
+        double v[3];
+        memcpy(v, p, sizeof v);
+        for (int k = 0; k < 3; k++) out[k] = (dReal)v[k];
+    } else {
+        float v[3];
+        memcpy(v, p, sizeof v);
+        for (int k = 0; k < 3; k++) out[k] = (dReal)v[k];
+    }
+}
 // The three vertex indices of triangle t.
 void dxTriMeshIndices(const dxTriMeshData *d, int t, int idx[3]);
 // The three vertices of triangle t.

@@ -13,22 +13,6 @@
 
 // ---- the walk and the reduction --------------------------------------------
 
-// Vertex w of d (dxTriMeshVertex, here inline: loading triangles is the
-// walk's hot path, and a call across the library goes through the PLT).
-static inline void load_vertex(const dxTriMeshData *d, int w, dReal out[3])
-{
-    const char *p = (const char *)d->vertices + (size_t)w * (size_t)d->vertex_stride;
-    if (d->vertex_double) {
-        double v[3];
-        memcpy(v, p, sizeof v);
-        for (int k = 0; k < 3; k++) out[k] = (dReal)v[k];
-    } else {
-        float v[3];
-        memcpy(v, p, sizeof v);
-        for (int k = 0; k < 3; k++) out[k] = (dReal)v[k];
-    }
-}
-
 // The index of vertex k of triangle t.
 static inline int tri_vertex(const dxTriMeshData *d, int t, int k)
 {
@@ -53,7 +37,7 @@ void dxTriLoad(const dxTriMeshData *d, int t, dxTri *out)
     load_topology(d, t, out);
     // The triangle's own vertices, as the leaf-order copy holds them (a
     // welded one is at the same position, but for the sign of a zero).
-    for (int k = 0; k < 3; k++) load_vertex(d, tri_vertex(d, t, k), out->v[k]);
+    for (int k = 0; k < 3; k++) dxTriMeshVertex(d, tri_vertex(d, t, k), out->v[k]);
 }
 
 void dxTriAdd(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth, int tri)
