@@ -13,6 +13,9 @@
 
 #include <cstdlib>
 #include <deque>
+#include <memory>
+#include <mutex>
+#include <unordered_map>
 #include <vector>
 
 namespace dxadapter {
@@ -79,6 +82,50 @@ private:
         return pool[level];
     }
     std::vector<dxRawContact> &buffer_;
+};
+
+// One engine's live mesh models by trimesh data object, weakly held: the
+// geoms' cache slots own them. shared(key, build) gives the live model of
+// the data object `key`, or makes one with build() (a std::unique_ptr);
+// the last owner's release removes the entry, unless a newer model of the
+// same data took it. One registry per model type, never destroyed, so a
+// model released during the program's exit still finds it.
+template <class Model>
+class ModelRegistry {
+public:
+    static ModelRegistry &instance()
+    {
+        static ModelRegistry *r = new ModelRegistry;
+        return *r;
+    }
+
+    template <class Build>
+    std::shared_ptr<Model> shared(const void *key, Build build)
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        std::weak_ptr<Model> &slot = live_[key];
+        std::shared_ptr<Model> model = slot.lock();
+        if (!model) {
+            model = std::shared_ptr<Model>(build().release(), [this, key](Model *m) {
+                forget(key);
+                delete m;
+            });
+            slot = model;
+        }
+        return model;
+    }
+
+private:
+    ModelRegistry() = default;
+    void forget(const void *key)
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        auto it = live_.find(key);
+        if (it != live_.end() && it->second.expired()) live_.erase(it);
+    }
+
+    std::mutex mutex_;
+    std::unordered_map<const void *, std::weak_ptr<Model>> live_;
 };
 
 // The contacts gathered (more than a sink holds, for a mesh) into the sink:

@@ -20,8 +20,6 @@
 
 #include "bullet_trimesh.h"
 
-#include <mutex>
-#include <unordered_map>
 #include <vector>
 
 namespace dxbullet {
@@ -36,25 +34,11 @@ struct Model {
     std::unique_ptr<btBvhTriangleMeshShape> shape;
 };
 
-// The live models by data object (weak: the geoms' caches own them).
-std::mutex registry_mutex;
-std::unordered_map<const void *, std::weak_ptr<Model>> registry;
-
 // A new model of the data of g (info: its counts). Margin 0: Bullet would
 // otherwise thicken every triangle.
-std::shared_ptr<Model> build_model(dGeomID g, const dxTriMeshInfo &info)
+std::unique_ptr<Model> build_model(dGeomID g, const dxTriMeshInfo &info)
 {
-    const void *key = info.data;
-    // The last owner's release also removes the registry's entry (unless a
-    // newer model of the same data took it).
-    std::shared_ptr<Model> m(new Model, [key](Model *p) {
-        {
-            std::lock_guard<std::mutex> lock(registry_mutex);
-            auto it = registry.find(key);
-            if (it != registry.end() && it->second.expired()) registry.erase(it);
-        }
-        delete p;
-    });
+    std::unique_ptr<Model> m(new Model);
     const std::size_t nv = static_cast<std::size_t>(info.vertex_count);
     const std::size_t nt = static_cast<std::size_t>(info.tri_count);
     m->vertices.resize(3 * nv);
@@ -86,13 +70,8 @@ std::shared_ptr<btCollisionShape> mesh_shape(dGeomID g)
     dxTriMeshInfo info;
     dxTriMeshGetInfo(g, &info);
     if (!info.data || info.tri_count == 0) return nullptr;
-    std::lock_guard<std::mutex> lock(registry_mutex);
-    std::weak_ptr<Model> &slot = registry[info.data];
-    std::shared_ptr<Model> model = slot.lock();
-    if (!model) {
-        model = build_model(g, info);
-        slot = model;
-    }
+    std::shared_ptr<Model> model = dxadapter::ModelRegistry<Model>::instance().shared(
+        info.data, [&] { return build_model(g, info); });
     return std::shared_ptr<btCollisionShape>(model, model->shape.get());   // owns the model
 }
 

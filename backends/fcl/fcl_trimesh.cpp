@@ -19,8 +19,6 @@
 #include <fcl/math/bv/OBBRSS.h>
 
 #include <cmath>
-#include <mutex>
-#include <unordered_map>
 #include <vector>
 
 namespace dxfcl {
@@ -34,12 +32,8 @@ using Model = fcl::BVHModel<fcl::OBBRSSd>;
 // at this many); the adapter keeps DX_SINK_CAPACITY of them, spread.
 constexpr std::size_t MESH_CONTACTS = 1024;
 
-// The live models by data object (weak: the geoms' caches own them).
-std::mutex registry_mutex;
-std::unordered_map<const void *, std::weak_ptr<Model>> registry;
-
 // A new model of the data of g (info: its counts).
-std::shared_ptr<Model> build_model(dGeomID g, const dxTriMeshInfo &info)
+std::unique_ptr<Model> build_model(dGeomID g, const dxTriMeshInfo &info)
 {
     std::vector<fcl::Vector3d> vertices(static_cast<std::size_t>(info.vertex_count));
     for (int i = 0; i < info.vertex_count; i++) {
@@ -55,17 +49,7 @@ std::shared_ptr<Model> build_model(dGeomID g, const dxTriMeshInfo &info)
                                                    static_cast<std::size_t>(idx[1]),
                                                    static_cast<std::size_t>(idx[2]));
     }
-    const void *key = info.data;
-    // The last owner's release also removes the registry's entry (unless a
-    // newer model of the same data took it).
-    std::shared_ptr<Model> model(new Model, [key](Model *m) {
-        {
-            std::lock_guard<std::mutex> lock(registry_mutex);
-            auto it = registry.find(key);
-            if (it != registry.end() && it->second.expired()) registry.erase(it);
-        }
-        delete m;
-    });
+    std::unique_ptr<Model> model(new Model);
     model->beginModel(info.tri_count, info.vertex_count);
     model->addSubModel(vertices, triangles);
     model->endModel();
@@ -88,14 +72,8 @@ std::shared_ptr<Geometry> mesh_model(dGeomID g)
     dxTriMeshInfo info;
     dxTriMeshGetInfo(g, &info);
     if (!info.data || info.tri_count == 0) return nullptr;
-    std::lock_guard<std::mutex> lock(registry_mutex);
-    std::weak_ptr<Model> &slot = registry[info.data];
-    std::shared_ptr<Model> model = slot.lock();
-    if (!model) {
-        model = build_model(g, info);
-        slot = model;
-    }
-    return model;
+    return dxadapter::ModelRegistry<Model>::instance().shared(info.data,
+                                                             [&] { return build_model(g, info); });
 }
 
 // Measured against the contract and native (tests/test_backend_trimesh.c,
