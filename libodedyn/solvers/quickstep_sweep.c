@@ -75,21 +75,11 @@ QS_INLINE qs_v4 v4_splat(dReal a)
     qs_v4 v = { a, a, a, a };
     return v;
 }
-// A four's halves, through a union: GCC then takes the upper half with
-// vextractf128 (3 cycles on this machine, Zen 4) where from lanes it picks
-// vpermpd (4), and a half of a splat is the splat's own register
-// (vbroadcastsd, 1 cycle, instead of two shuffles): both are on the path
-// from a body's fc to its next fc that every update waits on.
-typedef union qs_v4h {
-    qs_v4 w;
-    qs_v2 h[2];
-} qs_v4h;
-#define v4_lo(a) (((qs_v4h){ .w = (a) }).h[0])
-#define v4_hi(a) (((qs_v4h){ .w = (a) }).h[1])
 // [a0 + a2, a1 + a3] + b
 QS_INLINE qs_v2 v4_fold(qs_v4 a, qs_v2 b)
 {
-    return (v4_lo(a) + v4_hi(a)) + b;
+    const qs_v2 lo = { a[0], a[1] }, hi = { a[2], a[3] };
+    return (lo + hi) + b;
 }
 #else
 typedef struct qs_v4 {
@@ -108,11 +98,6 @@ static inline qs_v4 v4_mul(qs_v4 x, qs_v4 y)
 static inline qs_v4 v4_splat(dReal a)
 {
     qs_v4 v = { { a, a, a, a } };
-    return v;
-}
-static inline qs_v2 v4_lo(qs_v4 a)
-{
-    qs_v2 v = { { a.e[0], a.e[1] } };
     return v;
 }
 static inline qs_v2 v4_fold(qs_v4 a, qs_v2 b)
@@ -237,7 +222,7 @@ QS_INLINE dReal row_in_registers(const qs_row *q, int np, dReal *lambda, qs_b6 *
     lambda[q->pos] = now;
     const dReal delta = now - old;
     const qs_v4 d4 = v4_splat(delta);
-    const qs_v2 d2 = v4_lo(d4);
+    const qs_v2 d2 = qs_splat(delta);
     *x0 = b6_add(*x0, d4, d2, (const dReal *)q->M);
     if (np == 6) *x1 = b6_add(*x1, d4, d2, (const dReal *)q->M1);
     return delta;
@@ -266,7 +251,7 @@ QS_INLINE void update_block(const qs_block *blk, int n, int np, dReal *lambda, d
     block_delta(blk, n, np, *x0, *x1, lambda + blk->first, delta);
     for (int a = 0; a < n; a++) {
         const qs_v4 d4 = v4_splat(delta[a]);
-        const qs_v2 d2 = v4_lo(d4);
+        const qs_v2 d2 = qs_splat(delta[a]);
         const dReal *Ma = (const dReal *)(blk->M + 6 * a);
         *x0 = b6_add(*x0, d4, d2, Ma);
         if (np == 6) *x1 = b6_add(*x1, d4, d2, Ma + 6);
