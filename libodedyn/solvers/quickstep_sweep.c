@@ -241,65 +241,34 @@ QS_INLINE void coupled_row(const qs_row *q, int n, int np, dReal *lambda, qs_b6 
     for (; a < n; a++) lb[a] += delta * q->g[a];
 }
 
-// One block update and its coupled rows on its bodies' fc in registers x0
-// and x1 (stored back at the end, and left in x0 and x1); n and np (3: one
-// body, 6: two) are constants after inlining.
-QS_INLINE void update_block(const qs_block *blk, int n, int np, dReal *lambda, dReal *fc,
-                            const qs_row *coupled, qs_b6 *x0, qs_b6 *x1)
+// One block update and its coupled rows; n and np (3: one body, 6: two) are
+// constants after inlining. The fc of the bodies stays in registers until
+// the coupled rows are done.
+QS_INLINE void update_block(const qs_block *blk, const qs_row *coupled, int n, int np,
+                            dReal *lambda, dReal *fc)
 {
+    dReal *f0 = fc + blk->o0, *f1 = fc + blk->o1, *l = lambda + blk->first;
+    qs_b6 x0 = b6_load(f0), x1 = x0;
+    if (np == 6) x1 = b6_load(f1);
     dReal delta[QS_MAX_BLOCK];
-    block_delta(blk, n, np, *x0, *x1, lambda + blk->first, delta);
+    block_delta(blk, n, np, x0, x1, l, delta);
     for (int a = 0; a < n; a++) {
         const qs_v4 d4 = v4_splat(delta[a]);
         const qs_v2 d2 = qs_splat(delta[a]);
         const dReal *Ma = (const dReal *)(blk->M + 6 * a);
-        *x0 = b6_add(*x0, d4, d2, Ma);
-        if (np == 6) *x1 = b6_add(*x1, d4, d2, Ma + 6);
+        x0 = b6_add(x0, d4, d2, Ma);
+        if (np == 6) x1 = b6_add(x1, d4, d2, Ma + 6);
     }
-    for (int c = 0; c < blk->ncoupled; c++) coupled_row(&coupled[c], n, np, lambda, x0, x1);
-    b6_store(*x0, fc + blk->o0);
-    if (np == 6) b6_store(*x1, fc + blk->o1);
+    for (int c = 0; c < blk->ncoupled; c++) coupled_row(&coupled[c], n, np, lambda, &x0, &x1);
+    b6_store(x0, f0);
+    if (np == 6) b6_store(x1, f1);
 }
 
-// The blocks from bseq[k] on that are of one kind (n rows, np as above),
-// while each shares a body with the one before it (a chain's joints in
-// order): that body's fc goes from one block to the next in registers
-// instead of through memory, where forwarding the store just made to the
-// load would take about 10 cycles more on the sweep's critical path (the
-// same numbers either way). Returns the bseq index after the last block done.
-QS_INLINE int update_blocks(const qs_system *sys, int k, int n, int np, dReal *lambda,
-                            dReal *fc)
+QS_INLINE void update_block_n(const qs_block *blk, const qs_row *coupled, int n, dReal *lambda,
+                              dReal *fc)
 {
-    const qs_block *blk = sys->bseq[k];
-    qs_b6 x0 = b6_load(fc + blk->o0), x1 = x0;
-    if (np == 6) x1 = b6_load(fc + blk->o1);
-    for (;;) {
-        update_block(blk, n, np, lambda, fc, sys->rows + blk->coupled, &x0, &x1);
-        if (++k == sys->nblocks) return k;
-        const qs_block *next = sys->bseq[k];
-        if (next->n != n || next->two != (np == 6)) return k;
-        const int p0 = blk->o0, p1 = np == 6 ? blk->o1 : -1;
-        if (next->o0 == p1) {
-            x0 = x1;
-            if (np == 6) x1 = b6_load(fc + next->o1);
-        } else if (next->o0 == p0) {
-            if (np == 6) x1 = b6_load(fc + next->o1);
-        } else if (np == 6 && next->o1 == p0) {
-            x1 = x0;
-            x0 = b6_load(fc + next->o0);
-        } else if (np == 6 && next->o1 == p1) {
-            x0 = b6_load(fc + next->o0);
-        } else {
-            return k;
-        }
-        blk = next;
-    }
-}
-
-QS_INLINE int update_blocks_n(const qs_system *sys, int k, int n, dReal *lambda, dReal *fc)
-{
-    if (sys->bseq[k]->two) return update_blocks(sys, k, n, 6, lambda, fc);
-    return update_blocks(sys, k, n, 3, lambda, fc);
+    if (blk->two) update_block(blk, coupled, n, 6, lambda, fc);
+    else update_block(blk, coupled, n, 3, lambda, fc);
 }
 
 // One free row, its bodies' fc loaded and stored back.
@@ -336,14 +305,15 @@ QS_INLINE void prefetch_row(const qs_row *q)
 QS_SWEEP_CLONES static void sweep_blocks(const qs_system *sys)
 {
     dReal *lambda = sys->lambda, *fc = sys->fc;
-    int k = 0;
-    while (k < sys->nblocks) {
-        switch (sys->bseq[k]->n) {   // constant sizes let the compiler unroll
-        case 2: k = update_blocks_n(sys, k, 2, lambda, fc); break;
-        case 3: k = update_blocks_n(sys, k, 3, lambda, fc); break;
-        case 4: k = update_blocks_n(sys, k, 4, lambda, fc); break;
-        case 5: k = update_blocks_n(sys, k, 5, lambda, fc); break;
-        default: k = update_blocks_n(sys, k, QS_MAX_BLOCK, lambda, fc); break;
+    for (int k = 0; k < sys->nblocks; k++) {
+        const qs_block *blk = sys->bseq[k];
+        const qs_row *coupled = sys->rows + blk->coupled;
+        switch (blk->n) {   // constant sizes let the compiler unroll
+        case 2: update_block_n(blk, coupled, 2, lambda, fc); break;
+        case 3: update_block_n(blk, coupled, 3, lambda, fc); break;
+        case 4: update_block_n(blk, coupled, 4, lambda, fc); break;
+        case 5: update_block_n(blk, coupled, 5, lambda, fc); break;
+        default: update_block_n(blk, coupled, QS_MAX_BLOCK, lambda, fc); break;
         }
     }
 }
