@@ -16,9 +16,22 @@
 
 void dxBodyWorldInverseInertia(const struct dxBody *b, dReal *out)
 {
+    const dReal *A = b->inv_inertia, *R = b->R;
     dMatrix3 tmp;
-    dMultiply2_333(tmp, b->inv_inertia, b->R);
-    dMultiply0_333(out, b->R, tmp);
+    if (A[1] == 0 && A[2] == 0 && A[4] == 0 && A[6] == 0 && A[8] == 0 && A[9] == 0) {
+        // A diagonal body-frame inverse (the usual case): tmp = A R^T is R^T
+        // with row k scaled by A_kk, the products the general form adds to it
+        // being exact zeros; then R tmp summed in dMultiply0_333's order.
+        for (int k = 0; k < 3; k++)
+            for (int j = 0; j < 3; j++) tmp[4 * k + j] = A[5 * k] * R[4 * j + k];
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                out[4 * i + j] = tmp[j] * R[4 * i] + tmp[4 + j] * R[4 * i + 1] +
+                                 tmp[8 + j] * R[4 * i + 2];
+        return;
+    }
+    dMultiply2_333(tmp, A, R);
+    dMultiply0_333(out, R, tmp);
 }
 
 // Newton's method stops when its step is this small relative to the solution.
@@ -109,15 +122,16 @@ static inline void gyroscopic_midpoint(const dReal *I, int diag, const dReal *w,
 }
 
 // Body b's gyroscopic change x - w (body frame) over a step h, or 0 when it
-// has none (the term off, or an isotropic inertia, where w x I w = 0).
-static int gyroscopic_change(const struct dxBody *b, dReal h, dReal *d)
+// has none (the term off, or an isotropic inertia, where w x I w = 0); its
+// body-frame rate w into w and whether its inertia is diagonal into *diag.
+static int gyroscopic_change(const struct dxBody *b, dReal h, dReal *d, dReal *w, int *diag)
 {
     const dReal *I = b->mass.I;
-    const int diag = I[1] == 0 && I[2] == 0 && I[6] == 0 && I[4] == 0 && I[8] == 0 && I[9] == 0;
-    if ((b->flags & DX_BODY_NO_GYROSCOPIC) || (diag && I[0] == I[5] && I[0] == I[10])) return 0;
-    dVector3 w, x;
+    *diag = I[1] == 0 && I[2] == 0 && I[6] == 0 && I[4] == 0 && I[8] == 0 && I[9] == 0;
+    if ((b->flags & DX_BODY_NO_GYROSCOPIC) || (*diag && I[0] == I[5] && I[0] == I[10])) return 0;
+    dVector3 x;
     dMultiply1_331(w, b->R, b->avel);   // body frame
-    if (diag) gyroscopic_midpoint(I, 1, w, h, x);
+    if (*diag) gyroscopic_midpoint(I, 1, w, h, x);
     else gyroscopic_midpoint(I, 0, w, h, x);
     dSubtractVectors3(d, x, w);
     return 1;
@@ -127,12 +141,12 @@ static int gyroscopic_change(const struct dxBody *b, dReal h, dReal *d)
 // momentum L = I w (which turns the body about its own rate, so it is
 // realised wherever the body may still turn as it turned): added to t.
 // Limited to a tenth of the rate per step, so a stale or odd entry cannot
-// throw the body.
-static void add_work_correction(const struct dxBody *b, dReal h, dReal *t)
+// throw the body. wb: its rate in the body frame; diag as for inertia_times.
+static void add_work_correction(const struct dxBody *b, const dReal *wb, int diag, dReal h,
+                                dReal *t)
 {
-    dVector3 wb, Lb, L;
-    dMultiply1_331(wb, b->R, b->avel);
-    dMultiply0_331(Lb, b->mass.I, wb);
+    dVector3 Lb, L;
+    inertia_times(b->mass.I, diag, wb, Lb);
     dMultiply0_331(L, b->R, Lb);
     const dReal e2 = dCalcVectorDot3(b->avel, L);   // twice the rotational energy
     if (!(e2 > 0)) return;
@@ -145,17 +159,18 @@ static void add_work_correction(const struct dxBody *b, dReal h, dReal *t)
 
 int dxBodyGyroscopicTorque(struct dxBody *b, dReal h, dReal *t)
 {
-    dVector3 d, Id;
+    dVector3 d, w, Id;
+    int diag;
     dZeroVector3(b->gyro_torque);
     b->gyro_work = 0;
-    if (!gyroscopic_change(b, h, d)) {
+    if (!gyroscopic_change(b, h, d, w, &diag)) {
         b->gyro_pending = 0;
         return 0;
     }
-    dMultiply0_331(Id, b->mass.I, d);
+    inertia_times(b->mass.I, diag, d, Id);
     dMultiply0_331(t, b->R, Id);
     dScaleVector3(t, dRecip(h));
-    if (b->gyro_pending != 0) add_work_correction(b, h, t);
+    if (b->gyro_pending != 0) add_work_correction(b, w, diag, h, t);
     dCopyVector3(b->gyro_torque, t);
     b->gyro_work = REAL(0.5) * h * dCalcVectorDot3(t, b->avel);
     return 1;
