@@ -95,22 +95,32 @@ QS_INLINE void side_parts(const dReal *Js, dReal im, const dReal *I, const dReal
                           qs_v2 *Jo, qs_v2 *p)
 {
     // Every load before the first store: the compiler need not fear overlaps.
-    qs_v2 Jv[3], Rv[3];
-    memcpy(Jv, Js, sizeof Jv);
-    memcpy(Rv, r, sizeof Rv);
+    qs_v2 j0, j1, j2, r0, r1, r2;
+    memcpy(&j0, Js, sizeof j0);
+    memcpy(&j1, Js + 2, sizeof j1);
+    memcpy(&j2, Js + 4, sizeof j2);
+    memcpy(&r0, r, sizeof r0);
+    memcpy(&r1, r + 2, sizeof r1);
+    memcpy(&r2, r + 4, sizeof r2);
     const dReal a0 = Js[3], a1 = Js[4], a2 = Js[5];
     const dReal m3 = I[0] * a0 + I[1] * a1 + I[2] * a2;
     const dReal m4 = I[4] * a0 + I[5] * a1 + I[6] * a2;
     const dReal m5 = I[8] * a0 + I[9] * a1 + I[10] * a2;
     const qs_v2 k = qs_splat(im);
-    const qs_v2 lin = qs_mul(k, Jv[0]);
-    qs_v2 mid = qs_mul(k, Jv[1]), ang = { m4, m5 };
+    qs_v2 mid = qs_mul(k, j1);
+    const qs_v2 ang = { m4, m5 };
     mid[1] = m3;
-    Mo[0] = lin;
+    Mo[0] = qs_mul(k, j0);
     Mo[1] = mid;
     Mo[2] = ang;
-    if (Jo) memcpy(Jo, Jv, sizeof Jv);
-    for (int e = 0; e < 3; e++) p[e] = qs_mul(Jv[e], Rv[e]);
+    if (Jo) {
+        Jo[0] = j0;
+        Jo[1] = j1;
+        Jo[2] = j2;
+    }
+    p[0] = qs_mul(j0, r0);
+    p[1] = qs_mul(j1, r1);
+    p[2] = qs_mul(j2, r2);
 }
 
 // Row i's M^-1 J^T into Mo and (unless Jo is NULL) its J, 6 pairs each, with

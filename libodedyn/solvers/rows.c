@@ -11,7 +11,6 @@
 
 #include <float.h>
 #include <math.h>
-#include <stdint.h>
 #include <string.h>
 
 void dxBodyWorldInverseInertia(const struct dxBody *b, dReal *out)
@@ -94,6 +93,7 @@ static inline void gyroscopic_midpoint(const dReal *I, int diag, const dReal *w,
                                        dReal *x)
 {
     const dReal tol = GYRO_TOL;
+    dReal last2 = 0;   // the last step's |step|^2
     dCopyVector3(x, w);
     for (int it = 0; it < 12; it++) {
         dVector3 m, Im, mIm, F, step;
@@ -109,7 +109,13 @@ static inline void gyroscopic_midpoint(const dReal *I, int diag, const dReal *w,
         if (dInvertMatrix3(Jinv, J) == 0) break;
         dMultiply0_331(step, Jinv, F);
         dSubtractVectors3(x, x, step);
-        if (dCalcVectorLengthSquare3(step) <= tol * tol * dCalcVectorLengthSquare3(x)) break;
+        // Converged when the step is below tol |x|, or when the next one
+        // would be: Newton's steps shrink quadratically, |next| ~ K |step|^2
+        // with K ~ |step| / |last|^2, so |step|^3 / |last|^2 <= tol |x| (in
+        // squares) saves the step that would only confirm it.
+        const dReal s2 = dCalcVectorLengthSquare3(step), x2 = dCalcVectorLengthSquare3(x);
+        if (s2 <= tol * tol * x2 || s2 * s2 * s2 <= tol * tol * x2 * last2 * last2) break;
+        last2 = s2;
     }
     dVector3 Iw, Ix;
     inertia_times(I, diag, w, Iw);
@@ -271,51 +277,34 @@ void dxJointRowsFill(struct dxWorld *w, dxJoint *j, dReal h, dReal *J, dReal *c,
                         "no answer): it acts with no force this step", j->cls->name);
 }
 
-// The top bit of the result is set when x is infinite or NaN (its exponent
-// bits all ones: adding one to the exponent field carries into the top bit).
-// Integer operations with no branch, so the loops below vectorise.
-#if defined(dDOUBLE)
-typedef uint64_t dxRealBits;
-#define DX_EXP_BITS UINT64_C(0x7ff0000000000000)
-#define DX_EXP_ONE UINT64_C(0x0010000000000000)
-#else
-typedef uint32_t dxRealBits;
-#define DX_EXP_BITS UINT32_C(0x7f800000)
-#define DX_EXP_ONE UINT32_C(0x00800000)
-#endif
-#define DX_TOP_BIT ((dxRealBits)1 << (sizeof(dxRealBits) * 8 - 1))
+// Two numbers at a time (GCC/Clang vector extension: SSE2), for the 12
+// numbers of a row's J.
+typedef dReal dxRealPair __attribute__((vector_size(2 * sizeof(dReal))));
 
-static inline dxRealBits nonfinite_bit(dReal x)
+static inline dxRealPair load_pair(const dReal *x)
 {
-    dxRealBits u;
-    memcpy(&u, &x, sizeof u);
-    return (u & DX_EXP_BITS) + DX_EXP_ONE;
-}
-
-// The same for two numbers at once (GCC/Clang vector extension: SSE2 and,
-// add, or), for the 12 numbers of a row's J.
-typedef dxRealBits dxRealBitsPair __attribute__((vector_size(2 * sizeof(dxRealBits))));
-
-static inline dxRealBitsPair nonfinite_bits2(const dReal *x)
-{
-    dxRealBitsPair u;
-    memcpy(&u, x, sizeof u);
-    return (u & DX_EXP_BITS) + DX_EXP_ONE;
+    dxRealPair v;
+    memcpy(&v, x, sizeof v);
+    return v;
 }
 
 int dxJointRowsKeepFinite(const dxJoint *j, int m, dReal *J, int skip, dReal *c, dReal *cfm,
                           dReal *lo, dReal *hi, int *findex)
 {
-    dxRealBitsPair pair = { 0, 0 };
-    dxRealBits bad = 0;
+    // x * 0 is 0 for a finite x and NaN for an infinite or NaN one, so the
+    // sums of the products stay 0 exactly when every number is finite (a
+    // multiply and an add a pair, no branch).
+    const dxRealPair zero = { 0, 0 };
+    dxRealPair sum = zero;
+    dReal sum1 = 0;
+    int nan_bound = 0;
     for (int i = 0; i < m; i++) {
         const dReal *Ji = J + i * skip;
-        for (int e = 0; e < 12; e += 2) pair |= nonfinite_bits2(Ji + e);
-        bad |= nonfinite_bit(c[i]) | nonfinite_bit(cfm[i]);
-        if (isnan(lo[i]) || isnan(hi[i])) bad |= DX_TOP_BIT;   // infinite bounds are fine
+        for (int e = 0; e < 12; e += 2) sum += load_pair(Ji + e) * zero;
+        sum1 += c[i] * zero[0] + cfm[i] * zero[0];
+        nan_bound |= (lo[i] != lo[i]) | (hi[i] != hi[i]);   // infinite bounds are fine
     }
-    bad |= pair[0] | pair[1];
-    const int finite = !(bad & DX_TOP_BIT);
+    const int finite = sum[0] + sum[1] + sum1 == 0 && !nan_bound;
     if (finite) return 1;
     for (int i = 0; i < m; i++) {
         for (int e = 0; e < 12; e++) J[i * skip + e] = 0;
