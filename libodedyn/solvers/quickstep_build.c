@@ -88,6 +88,17 @@ static double dot12(const qs_v2 *a, const qs_v2 *b)
 #endif
 }
 
+// The pair (a, b).
+QS_INLINE qs_v2 pair_of(dReal a, dReal b)
+{
+#if defined(__GNUC__)
+    const qs_v2 v = { a, b };
+#else
+    const qs_v2 v = { { a, b } };
+#endif
+    return v;
+}
+
 // One island body's part of a row (its 6 numbers of J at Js, inverse mass
 // im and world inverse inertia I, unconstrained rates r): M^-1 J^T into Mo,
 // J into Jo unless it is NULL, and the products of J and r as 3 pairs in p.
@@ -106,13 +117,9 @@ QS_INLINE void side_parts(const dReal *Js, dReal im, const dReal *I, const dReal
     const dReal m3 = I[0] * a0 + I[1] * a1 + I[2] * a2;
     const dReal m4 = I[4] * a0 + I[5] * a1 + I[6] * a2;
     const dReal m5 = I[8] * a0 + I[9] * a1 + I[10] * a2;
-    const qs_v2 k = qs_splat(im);
-    qs_v2 mid = qs_mul(k, j1);
-    const qs_v2 ang = { m4, m5 };
-    mid[1] = m3;
-    Mo[0] = qs_mul(k, j0);
-    Mo[1] = mid;
-    Mo[2] = ang;
+    Mo[0] = qs_mul(qs_splat(im), j0);
+    Mo[1] = pair_of(im * Js[2], m3);
+    Mo[2] = pair_of(m4, m5);
     if (Jo) {
         Jo[0] = j0;
         Jo[1] = j1;
