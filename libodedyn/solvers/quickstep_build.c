@@ -13,7 +13,6 @@
 
 #include <float.h>
 #include <math.h>
-#include <ode/matrix.h>
 #include <string.h>
 
 // A pivot below this fraction of its diagonal entry makes a block singular.
@@ -89,29 +88,76 @@ static double dot12(const qs_v2 *a, const qs_v2 *b)
 #endif
 }
 
-// Row i's J, M^-1 J^T and its bodies' unconstrained rates as 6 pairs each,
-// with its one island body first if it has only one (the other side,
-// static or kinematic, is then zero).
-static void row_full(const qs_jrows *jr, int i, qs_v2 *Jo, qs_v2 *Mo, qs_v2 *Ro)
+// The pair (a, b).
+QS_INLINE qs_v2 pair_of(dReal a, dReal b)
+{
+#if defined(__GNUC__)
+    const qs_v2 v = { a, b };
+#else
+    const qs_v2 v = { { a, b } };
+#endif
+    return v;
+}
+
+// One island body's part of a row (its 6 numbers of J at Js, inverse mass
+// im and world inverse inertia I, unconstrained rates r): M^-1 J^T into Mo,
+// J into Jo unless it is NULL, and the products of J and r as 3 pairs in p.
+QS_INLINE void side_parts(const dReal *Js, dReal im, const dReal *I, const dReal *r, qs_v2 *Mo,
+                          qs_v2 *Jo, qs_v2 *p)
+{
+    // Every load before the first store: the compiler need not fear overlaps.
+    qs_v2 j0, j1, j2, r0, r1, r2;
+    memcpy(&j0, Js, sizeof j0);
+    memcpy(&j1, Js + 2, sizeof j1);
+    memcpy(&j2, Js + 4, sizeof j2);
+    memcpy(&r0, r, sizeof r0);
+    memcpy(&r1, r + 2, sizeof r1);
+    memcpy(&r2, r + 4, sizeof r2);
+    const dReal a0 = Js[3], a1 = Js[4], a2 = Js[5];
+    const dReal m3 = I[0] * a0 + I[1] * a1 + I[2] * a2;
+    const dReal m4 = I[4] * a0 + I[5] * a1 + I[6] * a2;
+    const dReal m5 = I[8] * a0 + I[9] * a1 + I[10] * a2;
+    Mo[0] = qs_mul(qs_splat(im), j0);
+    Mo[1] = pair_of(im * Js[2], m3);
+    Mo[2] = pair_of(m4, m5);
+    if (Jo) {
+        Jo[0] = j0;
+        Jo[1] = j1;
+        Jo[2] = j2;
+    }
+    p[0] = qs_mul(j0, r0);
+    p[1] = qs_mul(j1, r1);
+    p[2] = qs_mul(j2, r2);
+}
+
+// Row i's M^-1 J^T into Mo and (unless Jo is NULL) its J, 6 pairs each, with
+// its one island body first if it has only one (the other side, static or
+// kinematic, is then zero); returns J times the bodies' unconstrained rates
+// (the pairs' products summed as pair_dot sums them; a missing body's would
+// add exact zeros).
+static dReal row_full(const qs_jrows *jr, int i, qs_v2 *Jo, qs_v2 *Mo)
 {
     const dReal *J = jr->J + i * DX_ROW_SKIP;
-    for (int side = 0; side < 2; side++) {
-        const dReal *Js = J + jr->src[side], *I = jr->I[side], im = jr->im[side];
-        dReal m[6];
-        if (!I) {
-            Jo[3 * side] = Jo[3 * side + 1] = Jo[3 * side + 2] = qs_splat(0);
-            Mo[3 * side] = Mo[3 * side + 1] = Mo[3 * side + 2] = qs_splat(0);
-            Ro[3 * side] = Ro[3 * side + 1] = Ro[3 * side + 2] = qs_splat(0);
-            continue;
+    qs_v2 p[6];
+    if (!jr->I[0]) {   // no island body at all: an empty row
+        for (int e = 0; e < 6; e++) {
+            if (Jo) Jo[e] = qs_splat(0);
+            Mo[e] = qs_splat(0);
         }
-        for (int e = 0; e < 3; e++) {
-            m[e] = im * Js[e];
-            m[3 + e] = I[4 * e] * Js[3] + I[4 * e + 1] * Js[4] + I[4 * e + 2] * Js[5];
-        }
-        memcpy(Jo + 3 * side, Js, sizeof m);
-        memcpy(Mo + 3 * side, m, sizeof m);
-        memcpy(Ro + 3 * side, jr->rate[side], sizeof m);
+        return 0;
     }
+    side_parts(J + jr->src[0], jr->im[0], jr->I[0], jr->rate[0], Mo, Jo, p);
+    if (jr->I[1]) {
+        side_parts(J + 6, jr->im[1], jr->I[1], jr->rate[1], Mo + 3, Jo ? Jo + 3 : NULL, p + 3);
+        const qs_v2 s = qs_add(qs_add(p[0], p[1]), qs_add(qs_add(p[2], p[3]), qs_add(p[4], p[5])));
+        return qs_lane(s, 0) + qs_lane(s, 1);
+    }
+    for (int e = 3; e < 6; e++) {
+        if (Jo) Jo[e] = qs_splat(0);
+        Mo[e] = qs_splat(0);
+    }
+    const qs_v2 s = qs_add(qs_add(p[0], p[1]), p[2]);
+    return qs_lane(s, 0) + qs_lane(s, 1);
 }
 
 // ---- blocks --------------------------------------------------------------------
@@ -165,6 +211,7 @@ QS_INLINE void cholesky_solve(const double *L, int n, double *x)
 typedef struct qs_jblock {
     int n;
     const qs_v2 *J, *iMJ;
+    dReal *g;              // room for the next coupled row's g (n numbers)
     double L[QS_MAX_BLOCK * QS_MAX_BLOCK];
 } qs_jblock;
 
@@ -226,14 +273,21 @@ static int fill_block(dxArena *a, const qs_input *in, const qs_jrows *jr, const 
                       qs_block *blk, qs_jblock *jb)
 {
     const dxArenaMark mark = dxArenaSave(a);
-    qs_v2 *J = DX_ARENA_ARRAY(a, qs_v2, 12 * n), *M = J + 6 * n;
-    dReal *Ainv = DX_ARENA_ARRAY(a, dReal, n * (QS_PAD(n) + 2));
+    // Rows that follow each other, their island body first, are already
+    // the block's J in the joint's rows (the pairs of a row are J1 then J2).
+    const int in_place = jr->src[0] == 0 && idx[n - 1] - idx[0] == n - 1;
+    // One piece of arena: M (and J), Ainv, rhs, cfm, and the g of the rows
+    // that may be coupled to the block (couple_n).
+    const size_t pairs = (size_t)(in_place ? 6 : 12) * n;
+    const size_t reals = (size_t)n * (QS_PAD(n) + 2 + jr->m - n);
+    qs_v2 *M = dxArenaAlloc(a, sizeof(qs_v2) * pairs + sizeof(dReal) * reals);
+    qs_v2 *J = in_place ? (qs_v2 *)(jr->J + idx[0] * DX_ROW_SKIP) : M + 6 * n;
+    dReal *Ainv = (dReal *)(M + pairs);
     dReal *rhs = Ainv + n * QS_PAD(n), *cfm = rhs + n;
     for (int k = 0; k < n; k++) {
         const int i = idx[k];
-        qs_v2 R[6];
-        row_full(jr, i, J + 6 * k, M + 6 * k, R);
-        rhs[k] = jr->c[i] * in->fps - pair_dot(J + 6 * k, R);
+        const dReal rate = row_full(jr, i, in_place ? NULL : J + 6 * k, M + 6 * k);
+        rhs[k] = jr->c[i] * in->fps - rate;
         cfm[k] = jr->cfm[i] * in->fps;
     }
     if (!factor(J, M, cfm, n, in->sor_w, jb->L, Ainv)) {
@@ -243,6 +297,7 @@ static int fill_block(dxArena *a, const qs_input *in, const qs_jrows *jr, const 
     jb->n = n;
     jb->J = J;
     jb->iMJ = M;
+    jb->g = cfm + n;
     blk->n = n;
     blk->two = is_two_body(jr);
     blk->o0 = jr->o[0];
@@ -287,8 +342,7 @@ static qs_block *make_blocks(dxArena *a, const qs_input *in, const qs_jrows *jr,
 // and its column c = J_B M^-1 J^T, g = -B^-1 c, the diagonal becomes the
 // Schur complement diag - c^T B^-1 c and iMJ gains M^-1 J_B^T g. Returns g
 // (arena), or NULL if the row depends on the block's rows.
-QS_INLINE const dReal *couple_n(dxArena *a, const qs_jblock *jb, int n, qs_v2 *iMJ,
-                                double *diag)
+QS_INLINE const dReal *couple_n(qs_jblock *jb, int n, qs_v2 *iMJ, double *diag)
 {
     double c[QS_MAX_BLOCK], t[QS_MAX_BLOCK];
     for (int k = 0; k < n; k++) t[k] = c[k] = dot12(jb->J + 6 * k, iMJ);
@@ -296,7 +350,8 @@ QS_INLINE const dReal *couple_n(dxArena *a, const qs_jblock *jb, int n, qs_v2 *i
     double schur = *diag;
     for (int k = 0; k < n; k++) schur -= c[k] * t[k];
     if (!(schur > PIVOT_EPS * *diag)) return NULL;
-    dReal *g = DX_ARENA_ARRAY(a, dReal, n);
+    dReal *g = jb->g;
+    jb->g += n;
     for (int k = 0; k < n; k++) {
         g[k] = (dReal)-t[k];
         const qs_v2 gk = qs_splat(g[k]);
@@ -306,14 +361,14 @@ QS_INLINE const dReal *couple_n(dxArena *a, const qs_jblock *jb, int n, qs_v2 *i
     return g;
 }
 
-static const dReal *couple_to_block(dxArena *a, const qs_jblock *jb, qs_v2 *iMJ, double *diag)
+static const dReal *couple_to_block(qs_jblock *jb, qs_v2 *iMJ, double *diag)
 {
     switch (jb->n) {   // constant sizes let the compiler unroll
-    case 2: return couple_n(a, jb, 2, iMJ, diag);
-    case 3: return couple_n(a, jb, 3, iMJ, diag);
-    case 4: return couple_n(a, jb, 4, iMJ, diag);
-    case 5: return couple_n(a, jb, 5, iMJ, diag);
-    default: return couple_n(a, jb, QS_MAX_BLOCK, iMJ, diag);
+    case 2: return couple_n(jb, 2, iMJ, diag);
+    case 3: return couple_n(jb, 3, iMJ, diag);
+    case 4: return couple_n(jb, 4, iMJ, diag);
+    case 5: return couple_n(jb, 5, iMJ, diag);
+    default: return couple_n(jb, QS_MAX_BLOCK, iMJ, diag);
     }
 }
 
@@ -321,12 +376,11 @@ static const dReal *couple_to_block(dxArena *a, const qs_jblock *jb, qs_v2 *iMJ,
 // constant 1 at position one): D J and M^-1 J^T as pairs, the scaled rhs and
 // cfm, the bounds. blk, jb: the joint's block to couple to and its build
 // data, or NULL.
-static void fill_row(dxArena *a, const qs_input *in, const qs_jrows *jr, int i, const int *pos,
-                     int one, const qs_block *blk, const qs_jblock *jb, qs_row *q)
+static void fill_row(const qs_input *in, const qs_jrows *jr, int i, const int *pos, int one,
+                     const qs_block *blk, qs_jblock *jb, qs_row *q)
 {
-    qs_v2 Jp[6], Mp[6], Rp[6];
-    row_full(jr, i, Jp, Mp, Rp);
-    const dReal rate = pair_dot(Jp, Rp), cfm = jr->cfm[i] * in->fps;
+    qs_v2 Jp[6], Mp[6];
+    const dReal rate = row_full(jr, i, Jp, Mp), cfm = jr->cfm[i] * in->fps;
 #ifdef dSINGLE
     double diag = (double)pair_dot(Jp, Mp) + cfm;
     if (jb && diag > 0) diag = dot12(Jp, Mp) + cfm;   // in double
@@ -334,7 +388,7 @@ static void fill_row(dxArena *a, const qs_input *in, const qs_jrows *jr, int i, 
     double diag = pair_dot(Jp, Mp) + cfm;   // dot12 is pair_dot
 #endif
     q->g = NULL;
-    if (jb && diag > 0) q->g = couple_to_block(a, jb, Mp, &diag);
+    if (jb && diag > 0) q->g = couple_to_block(jb, Mp, &diag);
     q->gn = (short)(q->g ? blk->n : 0);
     q->gfirst = q->g ? blk->first : 0;
     // A zero diagonal (an empty row without cfm) leaves the row's force at 0.
@@ -370,8 +424,8 @@ static void fill_row(dxArena *a, const qs_input *in, const qs_jrows *jr, int i, 
 // lambda positions from *next on, then their rows: first those coupled to
 // the joint's block (blk, if it has one), then the others, which go into
 // sys->order. done: scratch for the joint's rows.
-static void make_rows(dxArena *a, const qs_input *in, const qs_jrows *jr, qs_block *blk,
-                      const qs_jblock *jb, qs_system *sys, int *pos, int *next, char *done)
+static void make_rows(const qs_input *in, const qs_jrows *jr, qs_block *blk, qs_jblock *jb,
+                      qs_system *sys, int *pos, int *next, char *done)
 {
     for (int i = 0; i < jr->m; i++) {
         done[i] = pos[i] >= 0;   // in a block
@@ -382,7 +436,7 @@ static void make_rows(dxArena *a, const qs_input *in, const qs_jrows *jr, qs_blo
         for (int i = 0; i < jr->m; i++) {
             if (done[i]) continue;
             qs_row *q = &sys->rows[sys->nrows];
-            fill_row(a, in, jr, i, pos, sys->m, blk, jb, q);
+            fill_row(in, jr, i, pos, sys->m, blk, jb, q);
             done[i] = q->g != NULL;
             sys->nrows += done[i];
         }
@@ -391,7 +445,7 @@ static void make_rows(dxArena *a, const qs_input *in, const qs_jrows *jr, qs_blo
     for (int i = 0; i < jr->m; i++) {
         if (done[i]) continue;
         const qs_row *q = &sys->rows[sys->nrows];
-        fill_row(a, in, jr, i, pos, sys->m, NULL, NULL, &sys->rows[sys->nrows]);
+        fill_row(in, jr, i, pos, sys->m, NULL, NULL, &sys->rows[sys->nrows]);
         sys->row_pos[sys->nrows] = q->pos;
         sys->row_f[sys->nrows] = q->f;
         sys->order[sys->norder++] = sys->nrows++;
@@ -416,10 +470,11 @@ typedef struct qs_warm {
 // last step's (quickstep_warm.c). Returns ws->found (0 for other joints).
 static int warm_lookup(dxJoint *j, const qs_jrows *jr, qs_system *sys, qs_warm *ws)
 {
-    dVector3 point;
-    const int friction = dxJointContactWarmInfo(j, point);
     ws->entry = NULL;
     ws->found = 0;
+    if (j->cls->type != dJointTypeContact) return 0;
+    dVector3 point;
+    const int friction = dxJointContactWarmInfo(j, point);
     if (friction < 0) return 0;
     static const dReal zero[3] = { 0, 0, 0 };
     ws->r[0] = 0;
@@ -432,15 +487,25 @@ static int warm_lookup(dxJoint *j, const qs_jrows *jr, qs_system *sys, qs_warm *
 }
 
 // lambda[pos] = l and fc += M^-1 J^T l for row i of the joint; q: its row
-// as made (its M^-1 J^T), or NULL to work it out (a row in a block).
-QS_INLINE void start_row(const qs_jrows *jr, int i, const qs_row *q, int pos, dReal l,
-                         qs_system *sys)
+// as made (its M^-1 J^T), or NULL; blk: the joint's block, whose rows keep
+// their M^-1 J^T (a row coupled to it has the block's response in its M),
+// or NULL; else M^-1 J^T is worked out again (the same numbers).
+QS_INLINE void start_row(const qs_jrows *jr, int i, const qs_row *q, const qs_block *blk,
+                         int pos, dReal l, qs_system *sys)
 {
     if (l == 0) return;
     sys->lambda[pos] = l;
-    qs_v2 J[6], Mf[6], R[6];
-    const qs_v2 *M0 = q ? q->M : Mf, *M1 = q ? q->M1 : Mf + 3;
-    if (!q) row_full(jr, i, J, Mf, R);
+    qs_v2 Mf[6];
+    const qs_v2 *M0 = Mf, *M1 = Mf + 3;
+    if (q) {
+        M0 = q->M;
+        M1 = q->M1;
+    } else if (blk && pos >= blk->first && pos < blk->first + blk->n) {
+        M0 = blk->M + 6 * (pos - blk->first);
+        M1 = M0 + 3;
+    } else {
+        row_full(jr, i, NULL, Mf);
+    }
     const qs_v2 k = qs_splat(l);
     dReal *f0 = sys->fc + jr->o[0], *f1 = sys->fc + jr->o[1];
     for (int e = 0; e < 3; e++) {
@@ -455,14 +520,14 @@ QS_INLINE void start_row(const qs_jrows *jr, int i, const qs_row *q, int pos, dR
 }
 
 // After the contact's rows are made (lambda positions in pos; rows: its
-// rows in order in sys->rows, or NULL if some went into a block): the cache
-// entry learns where its forces will be; a contact found in the last step
-// starts from those forces, scaled by WARM_SCALE and projected on the rows'
-// bounds (the friction pyramid's with the scaled normal force), the friction
-// force projected on this step's friction directions; fc gets their
-// M^-1 J^T.
-static void warm_apply(const qs_jrows *jr, const int *pos, const qs_row *rows, const qs_warm *ws,
-                       qs_system *sys)
+// rows in order in sys->rows, or NULL if some went into a block; blk: its
+// one block, or NULL): the cache entry learns where its forces will be; a
+// contact found in the last step starts from those forces, scaled by
+// WARM_SCALE and projected on the rows' bounds (the friction pyramid's with
+// the scaled normal force), the friction force projected on this step's
+// friction directions; fc gets their M^-1 J^T.
+static void warm_apply(const qs_jrows *jr, const int *pos, const qs_row *rows,
+                       const qs_block *blk, const qs_warm *ws, qs_system *sys)
 {
     if (!ws->entry) return;
     int p[3];
@@ -470,7 +535,7 @@ static void warm_apply(const qs_jrows *jr, const int *pos, const qs_row *rows, c
     dxQuickWarmPositions(ws->entry, p);
     if (!ws->found) return;
     const dReal ln = WARM_SCALE * (ws->ln > 0 ? ws->ln : 0);
-    start_row(jr, 0, rows, p[0], ln, sys);
+    start_row(jr, 0, rows, blk, p[0], ln, sys);
     for (int k = 1; k < 3; k++) {
         const int i = ws->r[k];
         if (i < 0) continue;
@@ -481,7 +546,7 @@ static void warm_apply(const qs_jrows *jr, const int *pos, const qs_row *rows, c
         }
         dReal l = WARM_SCALE * dCalcVectorDot3(ws->f, ws->t[k]);
         l = l > hi ? hi : l < lo ? lo : l;
-        start_row(jr, i, rows ? rows + i : NULL, p[k], l, sys);
+        start_row(jr, i, rows ? rows + i : NULL, blk, p[k], l, sys);
     }
 }
 
@@ -517,7 +582,8 @@ static qs_jrows *fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h
     for (int k = 0; k < is->nj; k++) {
         dxJoint *j = is->joints[k];
         jrows[k].m = j->rows.m;
-        jrows[k].direct = j->rows.m > 0 && dxQuickContactIsDirect(j);
+        jrows[k].direct = j->rows.m > 0 && j->cls->type == dJointTypeContact &&
+                          dxQuickContactIsDirect(j);
         if (!jrows[k].direct) m += (size_t)j->rows.m;
     }
     dReal *J = DX_ARENA_ARRAY(a, dReal, m * DX_ROW_SKIP + 1);
@@ -574,8 +640,8 @@ void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_syst
     sys->row_f = DX_ARENA_ARRAY(a, int, m + 1);
     for (int i = 0; i <= m; i++) sys->at[i] = -1;
     sys->feedback = DX_ARENA_ARRAY(a, qs_feedback, nfeedback + 1);
-    dSetZero(sys->fc, 6 * nbodies);
-    dSetZero(sys->lambda, m);
+    memset(sys->fc, 0, sizeof(dReal) * 6 * (size_t)nbodies);
+    memset(sys->lambda, 0, sizeof(dReal) * (size_t)m);
     sys->lambda[m] = 1;
 
     qs_scratch *s = DX_ARENA_ARRAY(a, qs_scratch, 1);
@@ -619,11 +685,11 @@ void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *b
         const int nblocks = sys->nblocks, nrows = sys->nrows;
         qs_jblock jb;
         qs_block *blk = make_blocks(a, jin, jr, sys, s->pos, &sys->next, &jb);
-        make_rows(a, jin, jr, blk, blk ? &jb : NULL, sys, s->pos, &sys->next, s->done);
+        make_rows(jin, jr, blk, blk ? &jb : NULL, sys, s->pos, &sys->next, s->done);
         if (j->feedback) keep_feedback(a, j, jr, s->pos, sys);
         // Without blocks the joint's rows are in order and alone (not coupled).
         const int alone = sys->nblocks == nblocks && sys->nrows - nrows == jr->m;
-        warm_apply(jr, s->pos, alone ? sys->rows + nrows : NULL, &ws, sys);
+        warm_apply(jr, s->pos, alone ? sys->rows + nrows : NULL, blk, &ws, sys);
     }
     part->nblocks = sys->nblocks - part->block0;
     part->norder = sys->norder - part->order0;

@@ -11,14 +11,26 @@
 
 #include <float.h>
 #include <math.h>
-#include <stdint.h>
 #include <string.h>
 
 void dxBodyWorldInverseInertia(const struct dxBody *b, dReal *out)
 {
+    const dReal *A = b->inv_inertia, *R = b->R;
     dMatrix3 tmp;
-    dMultiply2_333(tmp, b->inv_inertia, b->R);
-    dMultiply0_333(out, b->R, tmp);
+    if (A[1] == 0 && A[2] == 0 && A[4] == 0 && A[6] == 0 && A[8] == 0 && A[9] == 0) {
+        // A diagonal body-frame inverse (the usual case): tmp = A R^T is R^T
+        // with row k scaled by A_kk, the products the general form adds to it
+        // being exact zeros; then R tmp summed in dMultiply0_333's order.
+        for (int k = 0; k < 3; k++)
+            for (int j = 0; j < 3; j++) tmp[4 * k + j] = A[5 * k] * R[4 * j + k];
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                out[4 * i + j] = tmp[j] * R[4 * i] + tmp[4 + j] * R[4 * i + 1] +
+                                 tmp[8 + j] * R[4 * i + 2];
+        return;
+    }
+    dMultiply2_333(tmp, A, R);
+    dMultiply0_333(out, R, tmp);
 }
 
 // Newton's method stops when its step is this small relative to the solution.
@@ -81,6 +93,7 @@ static inline void gyroscopic_midpoint(const dReal *I, int diag, const dReal *w,
                                        dReal *x)
 {
     const dReal tol = GYRO_TOL;
+    dReal last2 = 0;   // the last step's |step|^2
     dCopyVector3(x, w);
     for (int it = 0; it < 12; it++) {
         dVector3 m, Im, mIm, F, step;
@@ -96,7 +109,13 @@ static inline void gyroscopic_midpoint(const dReal *I, int diag, const dReal *w,
         if (dInvertMatrix3(Jinv, J) == 0) break;
         dMultiply0_331(step, Jinv, F);
         dSubtractVectors3(x, x, step);
-        if (dCalcVectorLengthSquare3(step) <= tol * tol * dCalcVectorLengthSquare3(x)) break;
+        // Converged when the step is below tol |x|, or when the next one
+        // would be: Newton's steps shrink quadratically, |next| ~ K |step|^2
+        // with K ~ |step| / |last|^2, so |step|^3 / |last|^2 <= tol |x| (in
+        // squares) saves the step that would only confirm it.
+        const dReal s2 = dCalcVectorLengthSquare3(step), x2 = dCalcVectorLengthSquare3(x);
+        if (s2 <= tol * tol * x2 || s2 * s2 * s2 <= tol * tol * x2 * last2 * last2) break;
+        last2 = s2;
     }
     dVector3 Iw, Ix;
     inertia_times(I, diag, w, Iw);
@@ -109,15 +128,16 @@ static inline void gyroscopic_midpoint(const dReal *I, int diag, const dReal *w,
 }
 
 // Body b's gyroscopic change x - w (body frame) over a step h, or 0 when it
-// has none (the term off, or an isotropic inertia, where w x I w = 0).
-static int gyroscopic_change(const struct dxBody *b, dReal h, dReal *d)
+// has none (the term off, or an isotropic inertia, where w x I w = 0); its
+// body-frame rate w into w and whether its inertia is diagonal into *diag.
+static int gyroscopic_change(const struct dxBody *b, dReal h, dReal *d, dReal *w, int *diag)
 {
     const dReal *I = b->mass.I;
-    const int diag = I[1] == 0 && I[2] == 0 && I[6] == 0 && I[4] == 0 && I[8] == 0 && I[9] == 0;
-    if ((b->flags & DX_BODY_NO_GYROSCOPIC) || (diag && I[0] == I[5] && I[0] == I[10])) return 0;
-    dVector3 w, x;
+    *diag = I[1] == 0 && I[2] == 0 && I[6] == 0 && I[4] == 0 && I[8] == 0 && I[9] == 0;
+    if ((b->flags & DX_BODY_NO_GYROSCOPIC) || (*diag && I[0] == I[5] && I[0] == I[10])) return 0;
+    dVector3 x;
     dMultiply1_331(w, b->R, b->avel);   // body frame
-    if (diag) gyroscopic_midpoint(I, 1, w, h, x);
+    if (*diag) gyroscopic_midpoint(I, 1, w, h, x);
     else gyroscopic_midpoint(I, 0, w, h, x);
     dSubtractVectors3(d, x, w);
     return 1;
@@ -127,12 +147,12 @@ static int gyroscopic_change(const struct dxBody *b, dReal h, dReal *d)
 // momentum L = I w (which turns the body about its own rate, so it is
 // realised wherever the body may still turn as it turned): added to t.
 // Limited to a tenth of the rate per step, so a stale or odd entry cannot
-// throw the body.
-static void add_work_correction(const struct dxBody *b, dReal h, dReal *t)
+// throw the body. wb: its rate in the body frame; diag as for inertia_times.
+static void add_work_correction(const struct dxBody *b, const dReal *wb, int diag, dReal h,
+                                dReal *t)
 {
-    dVector3 wb, Lb, L;
-    dMultiply1_331(wb, b->R, b->avel);
-    dMultiply0_331(Lb, b->mass.I, wb);
+    dVector3 Lb, L;
+    inertia_times(b->mass.I, diag, wb, Lb);
     dMultiply0_331(L, b->R, Lb);
     const dReal e2 = dCalcVectorDot3(b->avel, L);   // twice the rotational energy
     if (!(e2 > 0)) return;
@@ -145,17 +165,18 @@ static void add_work_correction(const struct dxBody *b, dReal h, dReal *t)
 
 int dxBodyGyroscopicTorque(struct dxBody *b, dReal h, dReal *t)
 {
-    dVector3 d, Id;
+    dVector3 d, w, Id;
+    int diag;
     dZeroVector3(b->gyro_torque);
     b->gyro_work = 0;
-    if (!gyroscopic_change(b, h, d)) {
+    if (!gyroscopic_change(b, h, d, w, &diag)) {
         b->gyro_pending = 0;
         return 0;
     }
-    dMultiply0_331(Id, b->mass.I, d);
+    inertia_times(b->mass.I, diag, d, Id);
     dMultiply0_331(t, b->R, Id);
     dScaleVector3(t, dRecip(h));
-    if (b->gyro_pending != 0) add_work_correction(b, h, t);
+    if (b->gyro_pending != 0) add_work_correction(b, w, diag, h, t);
     dCopyVector3(b->gyro_torque, t);
     b->gyro_work = REAL(0.5) * h * dCalcVectorDot3(t, b->avel);
     return 1;
@@ -256,51 +277,34 @@ void dxJointRowsFill(struct dxWorld *w, dxJoint *j, dReal h, dReal *J, dReal *c,
                         "no answer): it acts with no force this step", j->cls->name);
 }
 
-// The top bit of the result is set when x is infinite or NaN (its exponent
-// bits all ones: adding one to the exponent field carries into the top bit).
-// Integer operations with no branch, so the loops below vectorise.
-#if defined(dDOUBLE)
-typedef uint64_t dxRealBits;
-#define DX_EXP_BITS UINT64_C(0x7ff0000000000000)
-#define DX_EXP_ONE UINT64_C(0x0010000000000000)
-#else
-typedef uint32_t dxRealBits;
-#define DX_EXP_BITS UINT32_C(0x7f800000)
-#define DX_EXP_ONE UINT32_C(0x00800000)
-#endif
-#define DX_TOP_BIT ((dxRealBits)1 << (sizeof(dxRealBits) * 8 - 1))
+// Two numbers at a time (GCC/Clang vector extension: SSE2), for the 12
+// numbers of a row's J.
+typedef dReal dxRealPair __attribute__((vector_size(2 * sizeof(dReal))));
 
-static inline dxRealBits nonfinite_bit(dReal x)
+static inline dxRealPair load_pair(const dReal *x)
 {
-    dxRealBits u;
-    memcpy(&u, &x, sizeof u);
-    return (u & DX_EXP_BITS) + DX_EXP_ONE;
-}
-
-// The same for two numbers at once (GCC/Clang vector extension: SSE2 and,
-// add, or), for the 12 numbers of a row's J.
-typedef dxRealBits dxRealBitsPair __attribute__((vector_size(2 * sizeof(dxRealBits))));
-
-static inline dxRealBitsPair nonfinite_bits2(const dReal *x)
-{
-    dxRealBitsPair u;
-    memcpy(&u, x, sizeof u);
-    return (u & DX_EXP_BITS) + DX_EXP_ONE;
+    dxRealPair v;
+    memcpy(&v, x, sizeof v);
+    return v;
 }
 
 int dxJointRowsKeepFinite(const dxJoint *j, int m, dReal *J, int skip, dReal *c, dReal *cfm,
                           dReal *lo, dReal *hi, int *findex)
 {
-    dxRealBitsPair pair = { 0, 0 };
-    dxRealBits bad = 0;
+    // x * 0 is 0 for a finite x and NaN for an infinite or NaN one, so the
+    // sums of the products stay 0 exactly when every number is finite (a
+    // multiply and an add a pair, no branch).
+    const dxRealPair zero = { 0, 0 };
+    dxRealPair sum = zero;
+    dReal sum1 = 0;
+    int nan_bound = 0;
     for (int i = 0; i < m; i++) {
         const dReal *Ji = J + i * skip;
-        for (int e = 0; e < 12; e += 2) pair |= nonfinite_bits2(Ji + e);
-        bad |= nonfinite_bit(c[i]) | nonfinite_bit(cfm[i]);
-        if (isnan(lo[i]) || isnan(hi[i])) bad |= DX_TOP_BIT;   // infinite bounds are fine
+        for (int e = 0; e < 12; e += 2) sum += load_pair(Ji + e) * zero;
+        sum1 += c[i] * zero[0] + cfm[i] * zero[0];
+        nan_bound |= (lo[i] != lo[i]) | (hi[i] != hi[i]);   // infinite bounds are fine
     }
-    bad |= pair[0] | pair[1];
-    const int finite = !(bad & DX_TOP_BIT);
+    const int finite = sum[0] + sum[1] + sum1 == 0 && !nan_bound;
     if (finite) return 1;
     for (int i = 0; i < m; i++) {
         for (int e = 0; e < 12; e++) J[i * skip + e] = 0;
