@@ -84,10 +84,11 @@ typedef struct dx_hull {
     const double *plane_dev;  // per plane: how far its polygon dips under it (NULL: none)
     int *edges_posed;         // which of face_low and we (with ex, ey, ez) are made
                               // (bits, collide_convex_sat.c)
-    // The edges by face as bit sets (dxConvex's by_f1, by_f2, lone; NULL
+    // The edges by face as bit sets (dxConvex's by_f1, by_f2, lone, nbr; NULL
     // beyond 64 edges or planes).
     const uint64_t *by_f1, *by_f2;
     uint64_t lone;
+    const uint64_t *nbr;      // per plane: it and the planes it shares an edge with
     // The points, normals and edges' n2 x n1 by coordinate (dxHullPose).
     const double *px, *py, *pz, *nx, *ny, *nz;
     double *ex, *ey, *ez;     // (with the edges: n2 x n1)
@@ -108,6 +109,7 @@ typedef struct dxConvex {
     // face; the edges with one face only.
     uint64_t *by_f1, *by_f2;
     uint64_t lone;
+    uint64_t *nbr;                // per plane: it and the planes it shares an edge with
     double size;                  // the largest distance of a point from the frame's origin
     double *plane_len;            // per plane: the length of its normal as given ...
     double *plane_dev;            // ... and how far below it its polygon's points reach

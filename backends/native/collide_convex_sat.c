@@ -588,17 +588,17 @@ masked_edge_pairs_with(const dx_hull *a, const dx_hull *b, edge_search *es, cons
     uint64_t all = b->nedges == MASK_BITS ? ~(uint64_t)0 : ((uint64_t)1 << b->nedges) - 1;
     uint64_t b_planes = b->nplanes == MASK_BITS ? ~(uint64_t)0 : ((uint64_t)1 << b->nplanes) - 1;
     double far = es->face->depth * (1 + 1e-9) + 2 * es->margin;
-    uint64_t near_a = a->lone, near_b = lone, faces = 0;   // near edges; a's near edges' faces
+    // The near edges (and lone ones), and the faces of a's near faces' edges.
+    uint64_t near_a = a->lone, near_b = lone, faces = 0;
     for (uint64_t m = faces_within(gap_a, a->nplanes, far); m; m &= m - 1) {
         unsigned f = (unsigned)__builtin_ctzll(m);
         near_a |= a->by_f1[f] | a->by_f2[f];
+        faces |= a->nbr[f];   // the faces of f's edges
     }
     for (uint64_t m = faces_within(gap_b, b->nplanes, far); m; m &= m - 1) {
         unsigned f = (unsigned)__builtin_ctzll(m);
         near_b |= first[f] | second[f];
     }
-    for (unsigned f = 0; f < a->nplanes; f++)
-        if ((a->by_f1[f] | a->by_f2[f]) & near_a) faces |= (uint64_t)1 << f;
     for (; faces; faces &= faces - 1) {
         unsigned f = (unsigned)__builtin_ctzll(faces);
         dot_signs(a->wn[f], b->ex, b->ey, b->ez, b->nedges, &above[f], &below[f], avx2);
