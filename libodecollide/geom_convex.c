@@ -170,23 +170,30 @@ static unsigned convex_edges(const unsigned *polygons, unsigned planecount, dxHu
     return n;
 }
 
-// The sets of edges by face (dxConvex's by_f1, by_f2, lone) into masks
-// (room for two per plane), for hulls that fit 64-bit sets.
+// The sets of edges by face and of neighbouring faces (dxConvex's by_f1,
+// by_f2, lone, nbr) into masks (room for three per plane), for hulls that
+// fit 64-bit sets.
 static void convex_edge_sets(dxConvex *c, uint64_t *masks)
 {
     c->lone = 0;
     if (c->edgecount > 64 || c->planecount > 64) {
-        c->by_f1 = c->by_f2 = NULL;
+        c->by_f1 = c->by_f2 = c->nbr = NULL;
         return;
     }
     c->by_f1 = masks;
     c->by_f2 = masks + c->planecount;
-    for (unsigned f = 0; f < c->planecount; f++) c->by_f1[f] = c->by_f2[f] = 0;
+    c->nbr = masks + 2 * (size_t)c->planecount;
+    for (unsigned f = 0; f < c->planecount; f++) {
+        c->by_f1[f] = c->by_f2[f] = 0;
+        c->nbr[f] = (uint64_t)1 << f;
+    }
     for (unsigned k = 0; k < c->edgecount; k++) {
         const dxHullEdge *e = &c->edges[k];
         uint64_t bit = (uint64_t)1 << k;
         c->by_f1[e->f1] |= bit;
         c->by_f2[e->f2] |= bit;
+        c->nbr[e->f1] |= (uint64_t)1 << e->f2;
+        c->nbr[e->f2] |= (uint64_t)1 << e->f1;
         if (e->f1 == e->f2) c->lone |= bit;
     }
 }
@@ -214,6 +221,7 @@ static void convex_view(dxConvex *c)
     h->by_f1 = c->by_f1;
     h->by_f2 = c->by_f2;
     h->lone = c->lone;
+    h->nbr = c->nbr;
     h->px = pose->px;
     h->py = pose->py;
     h->pz = pose->pz;
@@ -232,7 +240,7 @@ static void free_derived(dxConvex *c)
     c->derived = NULL;
     c->edges = NULL;
     c->poly_start = NULL;
-    c->by_f1 = c->by_f2 = NULL;
+    c->by_f1 = c->by_f2 = c->nbr = NULL;
     c->plane_len = c->plane_dev = NULL;
 }
 
@@ -262,14 +270,14 @@ static void convex_set(dxConvex *c, const dReal *planes, unsigned planecount,
         poly += 1 + *poly;
     }
     size_t doubles = 6 * (size_t)pointcount + 10 * (size_t)planecount + 3 * sides;
-    c->derived_size = sizeof(uint64_t) * 2 * (size_t)planecount + sizeof(double) * doubles +
+    c->derived_size = sizeof(uint64_t) * 3 * (size_t)planecount + sizeof(double) * doubles +
                       sizeof(dxHullPosedEdge) * sides + sizeof(dxHullEdge) * sides +
                       sizeof(unsigned) * planecount;
     char *block = dAlloc(c->derived_size);
     c->derived = block;
     dxHullPose *pose = &c->pose;
     uint64_t *masks = (uint64_t *)block;
-    pose->pts = (double (*)[3])(masks + 2 * (size_t)planecount);
+    pose->pts = (double (*)[3])(masks + 3 * (size_t)planecount);
     pose->normals = pose->pts + pointcount;
     pose->offsets = (double *)(pose->normals + planecount);
     pose->px = pose->offsets + planecount;

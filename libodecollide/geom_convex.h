@@ -46,12 +46,13 @@ typedef struct dxHullPosedEdge {
 typedef struct dxHullPose {
     dReal pos[3], R[12];          // the pose the arrays were made for
     int valid;                    // points and planes hold that pose
-    int edges_valid;              // edges too (posed only when needed)
+    int edges_valid;              // what else the pair test made for it (bits: the
+                                  // faces' floors, the edges; only when needed)
     double (*pts)[3];             // pointcount world points
     double (*normals)[3];         // planecount unit outward normals ...
     double *offsets;              // ... and offsets (n . x = d)
     dxHullPosedEdge *edges;       // edgecount
-    double *face_low;             // per plane: a floor under n . x over its polygon (with the edges)
+    double *face_low;             // per plane: a floor under n . x over its polygon
     // The same by coordinate, for loops over many at once: the points'
     // x, y, z, the normals' x, y, z; and with the edges, each edge's cross
     // product of its faces' normals n2 x n1 (the normal of its arc's circle).
@@ -78,14 +79,16 @@ typedef struct dx_hull {
     const double (*wp)[3];    // the points in the world
     const double (*wn)[3];    // the planes in the world: unit outward normals ...
     const double *wd;         // ... and offsets
-    dxHullPosedEdge *we;      // once *edges_posed: the edges in the world, and per plane
+    dxHullPosedEdge *we;      // the edges in the world, and per plane
     double *face_low;         // a floor under n . x over its polygon
     const double *plane_dev;  // per plane: how far its polygon dips under it (NULL: none)
-    int *edges_posed;
-    // The edges by face as bit sets (dxConvex's by_f1, by_f2, lone; NULL
+    int *edges_posed;         // which of face_low and we (with ex, ey, ez) are made
+                              // (bits, collide_convex_sat.c)
+    // The edges by face as bit sets (dxConvex's by_f1, by_f2, lone, nbr; NULL
     // beyond 64 edges or planes).
     const uint64_t *by_f1, *by_f2;
     uint64_t lone;
+    const uint64_t *nbr;      // per plane: it and the planes it shares an edge with
     // The points, normals and edges' n2 x n1 by coordinate (dxHullPose).
     const double *px, *py, *pz, *nx, *ny, *nz;
     double *ex, *ey, *ez;     // (with the edges: n2 x n1)
@@ -106,6 +109,7 @@ typedef struct dxConvex {
     // face; the edges with one face only.
     uint64_t *by_f1, *by_f2;
     uint64_t lone;
+    uint64_t *nbr;                // per plane: it and the planes it shares an edge with
     double size;                  // the largest distance of a point from the frame's origin
     double *plane_len;            // per plane: the length of its normal as given ...
     double *plane_dev;            // ... and how far below it its polygon's points reach

@@ -772,6 +772,101 @@ static int test_box_remembered_axis_never_hides_contacts(void)
     return wander_among_partners(box_walk_geom, 91);
 }
 
+// ---- kept state against fresh geoms ----------------------------------------------
+
+// Geom k of the drift below: prism hulls, box hulls, tall prism hulls and
+// real boxes in turn (arrays shared, as ODE keeps them).
+static dGeomID drift_geom(int k)
+{
+    static test_hull pr, bh, tall;
+    static int made;
+    if (!made) {
+        test_hull_prism(&pr, 0.15, 0.1);
+        test_hull_box(&bh, 0.3, 0.2, 0.25);
+        test_hull_prism(&tall, 0.1, 0.3);
+        made = 1;
+    }
+    const test_hull *h = k % 4 == 0 ? &pr : k % 4 == 1 ? &bh : &tall;
+    if (k % 4 == 3) return dCreateBox(0, (dReal)0.3, (dReal)0.25, (dReal)0.2);
+    return dCreateConvex(0, h->planes, h->nplanes, h->points, h->npoints, h->polygons);
+}
+
+// Places g at p, q (the same calls for a fresh copy: the same bits).
+static void place_q(dGeomID g, const dReal p[3], const dQuaternion q)
+{
+    dGeomSetPosition(g, p[0], p[1], p[2]);
+    dGeomSetQuaternion(g, q);
+}
+
+// What a convex geom keeps between calls (its posed hull, with or without
+// its edges; per partner the separating axis, or the contact face and
+// points; the faces measured for the clearance) changes no contact. Eight
+// hulls and boxes drift slowly into and through one another, each step
+// turning a little (resting and sliding pairs, pairs coming apart), and
+// some stay put for a few steps; every pair, in both orders, with every
+// contact count from 1 to 8, must give the contacts of fresh geoms at the
+// same poses bit for bit.
+static int test_kept_state_as_fresh_geoms(void)
+{
+    enum { N = 8 };
+    dGeomID g[N];
+    dReal pos[N][3];
+    dQuaternion quat[N];
+    double v[N][3], w[N][3];
+    rng_state = 2024;
+    for (int i = 0; i < N; i++) {
+        g[i] = drift_geom(i);
+        for (int k = 0; k < 3; k++) {
+            pos[i][k] = (dReal)rnd(-0.25, 0.25);
+            v[i][k] = rnd(-1, 1) * 0.003;
+            w[i][k] = rnd(-1, 1) * 0.02;
+        }
+        dQSetIdentity(quat[i]);
+        place_q(g[i], pos[i], quat[i]);
+    }
+    int touching = 0, apart = 0, counts[9] = { 0 };
+    for (int step = 0; step < 300; step++) {
+        for (int i = 0; i < N; i++) {
+            if (i % 3 == 1 && step % 4) continue;   // left unmoved: its kept pose is reused
+            for (int k = 0; k < 3; k++) {
+                pos[i][k] = (dReal)(pos[i][k] + v[i][k]);
+                if (fabs(pos[i][k]) > 0.25) v[i][k] = -v[i][k];
+            }
+            dQuaternion dq = { 1, (dReal)w[i][0], (dReal)w[i][1], (dReal)w[i][2] }, r;
+            dQMultiply0(r, dq, quat[i]);
+            dNormalize4(r);
+            memcpy(quat[i], r, sizeof r);
+            place_q(g[i], pos[i], quat[i]);
+        }
+        for (int i = 0; i < N; i++) {
+            for (int j = 0; j < N; j++) {
+                if (i == j || (i % 4 == 3 && j % 4 == 3)) continue;   // box-box is not a hull pair
+                int max = 1 + (i + j + step) % 8;
+                dContactGeom a[8], b[8];
+                int na = dCollide(g[i], g[j], max, a, sizeof a[0]);
+                dGeomID fi = drift_geom(i), fj = drift_geom(j);
+                place_q(fi, pos[i], quat[i]);
+                place_q(fj, pos[j], quat[j]);
+                int nb = dCollide(fi, fj, max, b, sizeof b[0]);
+                dGeomDestroy(fi);
+                dGeomDestroy(fj);
+                CHECK(identical(a, na, b, nb));
+                CHECK(na <= max);
+                touching += na > 0;
+                apart += na == 0;
+                counts[na]++;
+            }
+        }
+    }
+    printf("# drift: %d touching, %d apart; pairs with 1-8 contacts: %d %d %d %d %d %d %d %d\n",
+           touching, apart, counts[1], counts[2], counts[3], counts[4], counts[5], counts[6],
+           counts[7], counts[8]);
+    CHECK(touching > 2000 && apart > 2000);
+    for (int k = 1; k <= 4; k++) CHECK(counts[k] > 100);
+    for (int i = 0; i < N; i++) dGeomDestroy(g[i]);
+    return 0;
+}
+
 // ---- bad input ------------------------------------------------------------------
 
 static char last_error[512];
@@ -1078,6 +1173,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_large_prism),
     TEST_CASE(test_resting_on_plane),
     TEST_CASE(test_remembered_axis_never_hides_contacts),
+    TEST_CASE(test_kept_state_as_fresh_geoms),
     TEST_CASE(test_least_depth_as_brute_force),
     TEST_CASE(test_box_remembered_axis_never_hides_contacts),
     TEST_CASE(test_bad_input),

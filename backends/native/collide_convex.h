@@ -88,7 +88,8 @@ typedef struct sat_axis {
 // b), unless there were more.
 enum { MAX_EDGE_AXES = 1024, KEPT_FACES = 48 };
 typedef struct edge_axes {
-    double face_s[2][KEPT_FACES];   // infinite for a face clearly deeper than the best
+    double face_s[2][KEPT_FACES];   // for the faces in tested (the others are clearly
+    uint64_t tested[2];             // deeper than the best: infinite)
     int faces_kept;
     double margin;   // for rounding, in the screens of depths: 1e-12 times the scale
                      // of the sizes and the coordinates

@@ -69,9 +69,12 @@ static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
         bx->by_f1[bx->edges[k].f1] |= (uint64_t)1 << k;
         bx->by_f2[bx->edges[k].f2] |= (uint64_t)1 << k;
     }
+    // Each face of a box shares an edge with every other but its opposite.
+    static const uint64_t box_nbr[6] = { 0x3d, 0x3e, 0x37, 0x3b, 0x1f, 0x2f };
     h->by_f1 = bx->by_f1;
     h->by_f2 = bx->by_f2;
     h->lone = 0;
+    h->nbr = box_nbr;
     h->pts = bx->pts;
     h->planes = bx->planes;
     h->polys = bx->polys;

@@ -121,11 +121,40 @@ void dx_hull_interval(const dx_hull *h, const double m[3], double *lo, double *h
     dot_range(m, h->px, h->py, h->pz, h->npts, lo, hi);
 }
 
-// Poses h's edges (with their circles' normals n2 x n1 by coordinate) and
-// its faces' floors (once per pose).
+// What of a hull's pose the pair test has made (bits of *edges_posed):
+// its faces' floors, its edges.
+enum { POSED_FLOORS = 1, POSED_EDGES = 2 };
+
+// Poses h's faces' floors (once per pose): a floor under n . x over face
+// f's polygon, without visiting it: the plane's offset less how far the
+// polygon dips under the plane in the hull's frame (plane_dev), less what
+// R's departure from a rotation can add (n . x = (n' R^T R x' + ...) /
+// |n'|: |E| size, E = R^T R - I), less rounding (the products' sizes
+// times 8 units in the last place).
+static void pose_floors(dx_hull *h)
+{
+    if (*h->edges_posed & POSED_FLOORS) return;
+    double e2 = 0;
+    for (int i = 0; i < 3; i++) {
+        for (int k = i; k < 3; k++) {
+            double d = h->R[i] * h->R[k] + h->R[3 + i] * h->R[3 + k] + h->R[6 + i] * h->R[6 + k] -
+                       (i == k);
+            e2 += (i == k ? 1 : 2) * d * d;
+        }
+    }
+    double reach = h->size + fabs(h->c[0]) + fabs(h->c[1]) + fabs(h->c[2]);
+    double slack = sqrt(e2) * h->size + 8 * DBL_EPSILON * reach;
+    for (unsigned f = 0; f < h->nplanes; f++)
+        h->face_low[f] = h->wd[f] - (h->plane_dev ? h->plane_dev[f] : 0) - slack;
+    *h->edges_posed |= POSED_FLOORS;
+}
+
+// Poses h's edges, with their circles' normals n2 x n1 by coordinate
+// (once per pose, when a test first reaches the edge pairs: not for
+// pairs that a face axis parts).
 static void pose_edges(dx_hull *h)
 {
-    if (*h->edges_posed) return;
+    if (*h->edges_posed & POSED_EDGES) return;
     for (unsigned k = 0; k < h->nedges; k++) {
         const dxHullEdge *e = &h->edges[k];
         dxHullPosedEdge *out = &h->we[k];
@@ -141,24 +170,7 @@ static void pose_edges(dx_hull *h)
         h->ey[k] = c[1];
         h->ez[k] = c[2];
     }
-    // A floor under n . x over face f's polygon, without visiting it: the
-    // plane's offset less how far the polygon dips under the plane in the
-    // hull's frame (plane_dev), less what R's departure from a rotation can
-    // add (n . x = (n' R^T R x' + ...) / |n'|: |E| size, E = R^T R - I),
-    // less rounding (the products' sizes times 8 units in the last place).
-    double e2 = 0;
-    for (int i = 0; i < 3; i++) {
-        for (int k = i; k < 3; k++) {
-            double d = h->R[i] * h->R[k] + h->R[3 + i] * h->R[3 + k] + h->R[6 + i] * h->R[6 + k] -
-                       (i == k);
-            e2 += (i == k ? 1 : 2) * d * d;
-        }
-    }
-    double reach = h->size + fabs(h->c[0]) + fabs(h->c[1]) + fabs(h->c[2]);
-    double slack = sqrt(e2) * h->size + 8 * DBL_EPSILON * reach;
-    for (unsigned f = 0; f < h->nplanes; f++)
-        h->face_low[f] = h->wd[f] - (h->plane_dev ? h->plane_dev[f] : 0) - slack;
-    *h->edges_posed = 1;
+    *h->edges_posed |= POSED_EDGES;
 }
 
 // The normal of h's edge k's circle (n2 x n1), as pose_edges made it.
@@ -324,7 +336,7 @@ static void face_axis(const dx_hull *a, const dx_hull *b, int side, unsigned f, 
 
 // The gaps of h's faces against q, a point of the other hull: gap[f] =
 // low - n . q for the face's unit normal n and a floor under n . x over
-// its polygon, low (pose_edges). A floor under the face axis' depth (h's extent along n is
+// its polygon, low (pose_floors). A floor under the face axis' depth (h's extent along n is
 // at least low, the other's along -n at least -n . q), and under the
 // depth of every edge pair with an edge of that face over the edge's arc
 // (see masked_edge_pairs).
@@ -332,6 +344,21 @@ static void face_gaps(const dx_hull *h, const double q[3], double *gap)
 {
     for (unsigned f = 0; f < h->nplanes; f++)
         gap[f] = h->face_low[f] - (h->nx[f] * q[0] + h->ny[f] * q[1] + h->nz[f] * q[2]);
+}
+
+// The set of faces f < n (bit f) whose gap[f] is not above x, two at a
+// time where SSE2 is there.
+static inline uint64_t faces_within(const double *gap, unsigned n, double x)
+{
+    uint64_t m = 0;
+    unsigned f = 0;
+#ifdef __SSE2__
+    __m128d vx = _mm_set1_pd(x);
+    for (; f + 2 <= n; f += 2)
+        m |= (uint64_t)_mm_movemask_pd(_mm_cmpngt_pd(_mm_loadu_pd(gap + f), vx)) << f;
+#endif
+    for (; f < n; f++) m |= (uint64_t)!(gap[f] > x) << f;
+    return m;
 }
 
 // Whether a's arc (from n1 to n2) and b's negated arc (for the difference,
@@ -559,14 +586,19 @@ masked_edge_pairs_with(const dx_hull *a, const dx_hull *b, edge_search *es, cons
     uint64_t above[MASK_BITS], below[MASK_BITS];   // by a's face: b's edges
     const uint64_t *first = b->by_f1, *second = b->by_f2, lone = b->lone;
     uint64_t all = b->nedges == MASK_BITS ? ~(uint64_t)0 : ((uint64_t)1 << b->nedges) - 1;
+    uint64_t b_planes = b->nplanes == MASK_BITS ? ~(uint64_t)0 : ((uint64_t)1 << b->nplanes) - 1;
     double far = es->face->depth * (1 + 1e-9) + 2 * es->margin;
-    uint64_t near_a = a->lone, near_b = lone, faces = 0;   // near edges; a's near edges' faces
-    for (unsigned f = 0; f < a->nplanes; f++)
-        if (!(gap_a[f] > far)) near_a |= a->by_f1[f] | a->by_f2[f];
-    for (unsigned f = 0; f < b->nplanes; f++)
-        if (!(gap_b[f] > far)) near_b |= first[f] | second[f];
-    for (unsigned f = 0; f < a->nplanes; f++)
-        if ((a->by_f1[f] | a->by_f2[f]) & near_a) faces |= (uint64_t)1 << f;
+    // The near edges (and lone ones), and the faces of a's near faces' edges.
+    uint64_t near_a = a->lone, near_b = lone, faces = 0;
+    for (uint64_t m = faces_within(gap_a, a->nplanes, far); m; m &= m - 1) {
+        unsigned f = (unsigned)__builtin_ctzll(m);
+        near_a |= a->by_f1[f] | a->by_f2[f];
+        faces |= a->nbr[f];   // the faces of f's edges
+    }
+    for (uint64_t m = faces_within(gap_b, b->nplanes, far); m; m &= m - 1) {
+        unsigned f = (unsigned)__builtin_ctzll(m);
+        near_b |= first[f] | second[f];
+    }
     for (; faces; faces &= faces - 1) {
         unsigned f = (unsigned)__builtin_ctzll(faces);
         dot_signs(a->wn[f], b->ex, b->ey, b->ez, b->nedges, &above[f], &below[f], avx2);
@@ -587,12 +619,17 @@ masked_edge_pairs_with(const dx_hull *a, const dx_hull *b, edge_search *es, cons
             double circle[3];
             edge_circle(a, i, circle);
             dot_signs(circle, b->nx, b->ny, b->nz, b->nplanes, &pos, &neg, avx2);
+            int signed_all = (pos | neg) == b_planes;
             for (; pos; pos &= pos - 1) {
                 unsigned f = (unsigned)__builtin_ctzll(pos);
                 first_pos |= first[f];
                 second_pos |= second[f];
             }
-            for (; neg; neg &= neg - 1) {
+            if (signed_all) {   // each edge has one first and one second face
+                first_neg = all & ~first_pos;
+                second_neg = all & ~second_pos;
+            }
+            for (; !signed_all && neg; neg &= neg - 1) {
                 unsigned f = (unsigned)__builtin_ctzll(neg);
                 first_neg |= first[f];
                 second_neg |= second[f];
@@ -626,6 +663,31 @@ static void facing_points(const dx_hull *a, const dx_hull *b, sat_hint *hint,
     *qb = b->wp[hint->qb];
 }
 
+// The face axis of a's face f (side 0) or b's (side 1), of depth *known
+// if that is given (else measured here): 0 (the axis into sep) if it parts
+// the hulls; else its depth kept in found (if it keeps faces), and in face
+// if least.
+static inline __attribute__((always_inline)) int
+face_test(const dx_hull *a, const dx_hull *b, int side, unsigned f, const double *known,
+          sat_axis *face, edge_axes *found, double sep[3], int avx2)
+{
+    double n[3];
+    face_axis(a, b, side, f, n);
+    double s = known ? *known : face_depth(a, b, side, f, n, avx2);
+    if (s < 0) {
+        memcpy(sep, n, 3 * sizeof n[0]);
+        return 0;
+    }
+    if (found->faces_kept) found->face_s[side][f] = s;
+    if (s < face->depth) {
+        face->depth = s;
+        memcpy(face->n, n, sizeof face->n);
+        face->ref = side;
+        face->face = f;
+    }
+    return 1;
+}
+
 // dx_hull_sat, built once for AVX2 (avx2 1) and once for any machine.
 static inline __attribute__((always_inline)) int
 sat_with(dx_hull *a, dx_hull *b, sat_hint *hint, sat_axis *face, sat_axis *edge,
@@ -637,11 +699,11 @@ sat_with(dx_hull *a, dx_hull *b, sat_hint *hint, sat_axis *face, sat_axis *edge,
     for (int i = 0; i < 3; i++) scale += fabs(a->c[i]) + fabs(b->c[i]);
     found->margin = 1e-12 * scale;
     face->depth = edge->depth = INFINITY;
-    pose_edges(a);
-    pose_edges(b);
+    pose_floors(a);
+    pose_floors(b);
     // A face's depth is at least its gap: faces clearly deeper than a first
     // guess (the hinted face, else the face of least gap) are skipped.
-    double gaps[2][MASK_BITS], guess = INFINITY, limit = INFINITY;
+    double gaps[2][MASK_BITS], guess = INFINITY;
     int gapped = a->nplanes <= MASK_BITS && b->nplanes <= MASK_BITS, gside = -1;
     unsigned gface = 0;
     if (gapped) {
@@ -672,31 +734,28 @@ sat_with(dx_hull *a, dx_hull *b, sat_hint *hint, sat_axis *face, sat_axis *edge,
             memcpy(sep, n, sizeof n);
             return 0;
         }
-        limit = guess * (1 + 1e-9) + 2 * found->margin;
-    }
-    for (int side = 0; side < 2; side++) {
-        const dx_hull *h = side ? b : a;
-        for (unsigned f = 0; f < h->nplanes; f++) {
-            if (gapped && gaps[side][f] > limit) {
-                if (found->faces_kept) found->face_s[side][f] = INFINITY;
-                continue;
-            }
-            double n[3];
-            face_axis(a, b, side, f, n);
-            double s = side == gside && f == gface ? guess : face_depth(a, b, side, f, n, avx2);
-            if (s < 0) {
-                memcpy(sep, n, sizeof n);
-                return 0;
-            }
-            if (found->faces_kept) found->face_s[side][f] = s;
-            if (s < face->depth) {
-                face->depth = s;
-                memcpy(face->n, n, sizeof face->n);
-                face->ref = side;
-                face->face = f;
+        // The faces to measure: those not clearly deeper than the guess
+        // (found->tested; face_s is set for them only).
+        double limit = guess * (1 + 1e-9) + 2 * found->margin;
+        for (int side = 0; side < 2; side++) {
+            const dx_hull *h = side ? b : a;
+            uint64_t near = faces_within(gaps[side], h->nplanes, limit);
+            found->tested[side] = near;
+            for (; near; near &= near - 1) {
+                unsigned f = (unsigned)__builtin_ctzll(near);
+                const double *known = side == gside && f == gface ? &guess : NULL;
+                if (!face_test(a, b, side, f, known, face, found, sep, avx2)) return 0;
             }
         }
+    } else {
+        for (int side = 0; side < 2; side++) {
+            const dx_hull *h = side ? b : a;
+            for (unsigned f = 0; f < h->nplanes; f++)
+                if (!face_test(a, b, side, f, NULL, face, found, sep, avx2)) return 0;
+        }
     }
+    pose_edges(a);
+    pose_edges(b);
     edge_search es = { edge, found, sep, face, face->depth / DX_HULL_EDGE_PREFERENCE, 0,
                        found->margin };
     update_threshold(&es);
@@ -779,7 +838,9 @@ double dx_hull_clearance(const dx_hull *a, const dx_hull *b, const double n[3], 
                 for (int i = 0; i < 3; i++) m[i] = -m[i];
             double mn = dot3(m, n);
             if (mn > 0) {
-                double s = found->faces_kept ? found->face_s[side][f] : depth_along(a, b, m);
+                double s = !found->faces_kept              ? depth_along(a, b, m)
+                           : found->tested[side] >> f & 1 ? found->face_s[side][f]
+                                                          : INFINITY;
                 best = fmin(best, s / mn);
             }
         }
