@@ -8,7 +8,9 @@
 #ifndef DX_TRIMESH_INTERNAL_H
 #define DX_TRIMESH_INTERNAL_H
 
+#include <float.h>
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 #include <ode/collision_trimesh.h>
 
@@ -42,17 +44,30 @@ typedef struct dxTriMeshNode {
     int first[4], count[4];
 } dxTriMeshNode;
 
+// The next float from f towards -infinity (down) or +infinity (up):
+// nextafterf's answers, inline (query boxes are rounded per query); f is
+// not NaN, nor the infinity it would step towards.
+static inline float dxFloatStep(float f, int up)
+{
+    if (f == 0) return up ? FLT_TRUE_MIN : -FLT_TRUE_MIN;
+    uint32_t bits;
+    memcpy(&bits, &f, sizeof bits);
+    bits += (f > 0) == (up != 0) ? 1 : (uint32_t)-1;   // away from 0, or towards it
+    memcpy(&f, &bits, sizeof f);
+    return f;
+}
+
 // The float nearest x on the side of -infinity (below) or +infinity
 // (above): the tree's boxes are rounded outwards with these.
 static inline float dxFloatBelow(dReal x)
 {
     float f = (float)x;
-    return f > x ? nextafterf(f, -INFINITY) : f;
+    return f > x ? dxFloatStep(f, 0) : f;
 }
 static inline float dxFloatAbove(dReal x)
 {
     float f = (float)x;
-    return f < x ? nextafterf(f, INFINITY) : f;
+    return f < x ? dxFloatStep(f, 1) : f;
 }
 
 // Make node a tree of one leaf: the count triangles order[0 ..], in the box

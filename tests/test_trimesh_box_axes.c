@@ -192,7 +192,95 @@ static int test_box_against_one_triangle(void)
     return 0;
 }
 
+// A triangle with a vertex inside the box (the collider then skips the
+// edge pairs' axes: no axis can part them) and the box's centre in front of
+// it: the box reaches behind the triangle near that vertex, so there are
+// contacts, each along the triangle's normal, a point of the box over the
+// triangle as deep below its plane as it says. Vertices from deep inside
+// to a millionth of the box's size from its faces (a thousandth in single
+// precision).
+static int test_box_holding_a_vertex(void)
+{
+    srand(12);
+    const double margin = TOL(1e-6, 2e-3);
+    int judged = 0;
+    for (int round = 0; round < 4000; round++) {
+        double h[3] = { urand(0.05, 0.6), urand(0.05, 0.6), urand(0.05, 0.6) };
+        dGeomID box = dCreateBox(0, 2 * h[0], 2 * h[1], 2 * h[2]);
+        dMatrix3 Rb;
+        dRFromAxisAndAngle(Rb, urand(-1, 1), urand(-1, 1), urand(-1, 1), urand(0, 3));
+        dGeomSetRotation(box, Rb);
+        dGeomSetPosition(box, urand(-1, 1), urand(-1, 1), urand(-1, 1));
+        const dReal *R = dGeomGetRotation(box), *P = dGeomGetPosition(box);
+        double ax[3][3], c[3];
+        for (int j = 0; j < 3; j++)
+            for (int i = 0; i < 3; i++) ax[j][i] = R[4 * i + j];
+        for (int i = 0; i < 3; i++) c[i] = P[i];
+        // Vertex 0 in the box (a quarter of them within a millionth of a
+        // face; in single precision, where the box then reaches behind the
+        // triangle by less than rounding, a thousandth), the others around it.
+        double inset = round % 4 == 0 ? TOL(1e-6, 1e-3) : urand(0.01, 1);
+        double v[3][3];
+        for (int i = 0; i < 3; i++) v[0][i] = c[i];
+        for (int j = 0; j < 3; j++) {
+            double u = (urand(-1, 1) < 0 ? -1 : 1) * (1 - inset * urand(0.5, 1)) * h[j];
+            for (int i = 0; i < 3; i++) v[0][i] += u * ax[j][i];
+        }
+        for (int k = 1; k < 3; k++)
+            for (int i = 0; i < 3; i++) v[k][i] = v[0][i] + urand(-1, 1);
+        double e1[3], e2[3], nrm[3];
+        for (int i = 0; i < 3; i++) {
+            e1[i] = v[1][i] - v[0][i];
+            e2[i] = v[2][i] - v[0][i];
+        }
+        cross3(nrm, e1, e2);
+        double nl = sqrt(dot3(nrm, nrm));
+        double hc = (dot3(nrm, c) - dot3(nrm, v[0])) / nl;
+        if (nl < 0.05 || hc < margin) {   // a sliver, or the centre not in front
+            dGeomDestroy(box);
+            continue;
+        }
+        for (int i = 0; i < 3; i++) nrm[i] /= nl;
+        dReal fv[9];
+        for (int k = 0; k < 9; k++) fv[k] = (dReal)v[k / 3][k % 3];
+        static const dTriIndex idx[3] = { 0, 1, 2 };
+        dTriMeshDataID data = dGeomTriMeshDataCreate();
+#ifdef dDOUBLE
+        dGeomTriMeshDataBuildDouble(data, fv, 3 * sizeof(dReal), 3, idx, 3, 3 * sizeof(dTriIndex));
+#else
+        dGeomTriMeshDataBuildSingle(data, fv, 3 * sizeof(dReal), 3, idx, 3, 3 * sizeof(dTriIndex));
+#endif
+        dGeomID mesh = dCreateTriMesh(0, data, 0, 0, 0);
+
+        dContactGeom k[8];
+        int n = dCollide(mesh, box, 8, k, sizeof k[0]);
+        dContactGeom kr[8];
+        int nr = dCollide(box, mesh, 8, kr, sizeof kr[0]);
+
+        CHECK(n >= 1 && nr == n);
+        for (int j = 0; j < n; j++) {
+            CHECK(k[j].g1 == mesh && k[j].g2 == box && k[j].side1 == 0);
+            CHECK(kr[j].g1 == box && kr[j].g2 == mesh && kr[j].side2 == 0);
+            CHECK_VEC(k[j].normal, -nrm[0], -nrm[1], -nrm[2], TOL(1e-9, 1e-4));
+            CHECK_VEC(kr[j].normal, nrm[0], nrm[1], nrm[2], TOL(1e-9, 1e-4));
+            CHECK(k[j].depth >= 0 && kr[j].depth == k[j].depth);
+            double p[3] = { k[j].pos[0], k[j].pos[1], k[j].pos[2] }, d[3];
+            for (int i = 0; i < 3; i++) d[i] = p[i] - c[i];
+            for (int a = 0; a < 3; a++) CHECK(fabs(dot3(d, ax[a])) <= h[a] + margin);
+            CHECK(over_triangle(v, nrm, p, -margin));
+            CHECK_NEAR(dot3(nrm, p) - dot3(nrm, v[0]), -k[j].depth, TOL(1e-8, 1e-4));
+        }
+        judged++;
+        dGeomDestroy(box);
+        dGeomDestroy(mesh);
+        dGeomTriMeshDataDestroy(data);
+    }
+    CHECK(judged > 1000);
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_box_against_one_triangle),
+    TEST_CASE(test_box_holding_a_vertex),
     TEST_END,
 };

@@ -8,6 +8,7 @@
 
 #include "test.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -357,7 +358,36 @@ static int test_tree_small(void)
     return 0;
 }
 
+// The inline steps that round the tree's and the queries' boxes outwards
+// give nextafterf's answers: zeros of both signs, subnormals, the largest
+// float and infinity, and random numbers over the whole range.
+static int test_float_steps_match_nextafterf(void)
+{
+    const float special[] = { 0.0f, -0.0f, FLT_TRUE_MIN, -FLT_TRUE_MIN, FLT_MIN, -FLT_MIN,
+                              FLT_MAX, -FLT_MAX, INFINITY, -INFINITY, 1.0f, -1.0f };
+    for (size_t i = 0; i < sizeof special / sizeof special[0]; i++) {
+        float f = special[i];
+        if (f != INFINITY)   // (no step beyond infinity is ever asked for)
+            CHECK(memcmp(&(float){ dxFloatStep(f, 1) }, &(float){ nextafterf(f, INFINITY) },
+                         sizeof f) == 0);
+        if (f != -INFINITY)
+            CHECK(memcmp(&(float){ dxFloatStep(f, 0) }, &(float){ nextafterf(f, -INFINITY) },
+                         sizeof f) == 0);
+    }
+    for (int i = 0; i < 100000; i++) {
+        // x = m 2^e over every exponent a float has, and beyond.
+        dReal x = (dReal)ldexp(rnd(-1, 1), (int)rnd(-160, 140));
+        float below = dxFloatBelow(x), above = dxFloatAbove(x), f = (float)x;
+        float want_below = f > x ? nextafterf(f, -INFINITY) : f;
+        float want_above = f < x ? nextafterf(f, INFINITY) : f;
+        CHECK(below == want_below && above == want_above);
+        CHECK(below <= x && above >= x);
+    }
+    return 0;
+}
+
 const test_case test_cases[] = {
+    TEST_CASE(test_float_steps_match_nextafterf),
     TEST_CASE(test_tree_wavy_grid),
     TEST_CASE(test_tree_flat_integer_grid),
     TEST_CASE(test_tree_soup),

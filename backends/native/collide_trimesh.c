@@ -11,6 +11,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 // ---- the walk and the reduction --------------------------------------------
 
 // The index of vertex k of triangle t.
@@ -49,7 +53,7 @@ void dxTriAdd2(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth,
                int tri2)
 {
     dxTriScratch *s = q->s;
-    dxTriScratchAddRaw(s, 1);
+    if (s->raw_count >= s->raw_cap) dxTriScratchAddRaw(s, 1);
     dxTriMeshRaw *r = &s->raw[s->raw_count++];
     for (int k = 0; k < 3; k++) {
         r->pos[k] = pos[k];
@@ -506,12 +510,28 @@ static inline int tri_off_box(const dReal *v, const dReal lo[3], const dReal hi[
 {
     // Without branches: the comparisons of a triangle that is not off (most
     // of them) are all made anyway. A NaN coordinate is never off.
+#if defined(__SSE2__) && !defined(dSINGLE)
+    // x and y side by side, then z: the same ordered comparisons (false for
+    // NaN), half the instructions.
+    const __m128d lxy = _mm_loadu_pd(lo), hxy = _mm_loadu_pd(hi);
+    const __m128d lz = _mm_load_sd(lo + 2), hz = _mm_load_sd(hi + 2);
+    const __m128d a = _mm_loadu_pd(v), b = _mm_loadu_pd(v + 3), c = _mm_loadu_pd(v + 6);
+    const __m128d az = _mm_load_sd(v + 2), bz = _mm_load_sd(v + 5), cz = _mm_load_sd(v + 8);
+    __m128d xy = _mm_or_pd(
+        _mm_and_pd(_mm_and_pd(_mm_cmplt_pd(a, lxy), _mm_cmplt_pd(b, lxy)), _mm_cmplt_pd(c, lxy)),
+        _mm_and_pd(_mm_and_pd(_mm_cmpgt_pd(a, hxy), _mm_cmpgt_pd(b, hxy)), _mm_cmpgt_pd(c, hxy)));
+    __m128d z = _mm_or_pd(
+        _mm_and_pd(_mm_and_pd(_mm_cmplt_sd(az, lz), _mm_cmplt_sd(bz, lz)), _mm_cmplt_sd(cz, lz)),
+        _mm_and_pd(_mm_and_pd(_mm_cmpgt_sd(az, hz), _mm_cmpgt_sd(bz, hz)), _mm_cmpgt_sd(cz, hz)));
+    return (_mm_movemask_pd(xy) | (_mm_movemask_pd(z) & 1)) != 0;
+#else
     int off = 0;
     for (int i = 0; i < 3; i++) {
         off |= (v[i] < lo[i]) & (v[3 + i] < lo[i]) & (v[6 + i] < lo[i]);
         off |= (v[i] > hi[i]) & (v[3 + i] > hi[i]) & (v[6 + i] > hi[i]);
     }
     return off;
+#endif
 }
 
 // One candidate of the walk: skipped if degenerate or refused by the
@@ -522,11 +542,15 @@ static inline int gather_one(dxTriQuery *q, int t, const dReal *v, const dReal l
                              const dReal hi[3], dxTriTest *test)
 {
     dxTriMesh *m = q->mesh;
+    // Without a per-triangle callback (which sees every listed triangle
+    // that is not degenerate) the box test comes first: it rejects more,
+    // from memory the walk reads anyway.
+    if (v && !m->callback && tri_off_box(v, lo, hi)) return 0;
     if (dxTriMeshIsDegenerate(q->data, t)) return 0;
     if (m->callback && !m->callback(&m->g, q->other, t)) return 0;
     dxTri tri;
     if (v) {
-        if (tri_off_box(v, lo, hi)) return 0;
+        if (m->callback && tri_off_box(v, lo, hi)) return 0;
         load_topology(q->data, t, &tri);
         memcpy(tri.v, v, sizeof tri.v);
     } else {
@@ -534,6 +558,13 @@ static inline int gather_one(dxTriQuery *q, int t, const dReal *v, const dReal l
         if (tri_off_box(&tri.v[0][0], lo, hi)) return 0;
     }
     return test(q, &tri);
+}
+
+// Append triangle t to the list of those that touch (s->hits[0], *hits).
+static inline void add_hit(dxTriScratch *s, int *hits, int t)
+{
+    if (*hits >= s->hits_cap[0]) dxTriMeshReserveInts(&s->hits[0], &s->hits_cap[0], *hits + 1);
+    s->hits[0][(*hits)++] = t;
 }
 
 // At most this many leaves are walked from the vertices' leaf-order copy;
@@ -568,18 +599,14 @@ int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dxTriTest *test)
             const int first = node->first[leaf[i] & 3], end = first + node->count[leaf[i] & 3];
             for (int j = first; j < end; j++) {
                 int t = d->order[j];
-                if (!gather_one(q, t, d->leaf_vertices + 9 * j, wlo, whi, test)) continue;
-                dxTriMeshReserveInts(&s->hits[0], &s->hits_cap[0], hits + 1);
-                s->hits[0][hits++] = t;
+                if (gather_one(q, t, d->leaf_vertices + 9 * j, wlo, whi, test)) add_hit(s, &hits, t);
             }
         }
     } else {
         int count = dxTriMeshQueryTC(s, m, other, lo, hi);
         for (int i = 0; i < count; i++) {
             int t = s->cand[0][i];
-            if (!gather_one(q, t, NULL, wlo, whi, test)) continue;
-            dxTriMeshReserveInts(&s->hits[0], &s->hits_cap[0], hits + 1);
-            s->hits[0][hits++] = t;
+            if (gather_one(q, t, NULL, wlo, whi, test)) add_hit(s, &hits, t);
         }
     }
     if (hits > 0 && m->array_callback) m->array_callback(mesh, other, s->hits[0], hits);

@@ -24,6 +24,8 @@
 //   and edges for the box's axes and its polygons for the box's faces, so a
 //   convex box has exactly a box's contacts.
 
+#include <float.h>
+
 #include "collide_trimesh.h"
 #include "../../libodecollide/geom_convex.h"
 
@@ -329,9 +331,10 @@ static int face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p, dRe
 
 // A box's values for a pair, worked out on its first triangle (in q->s->pair):
 // unit axes, half sides and corners (bit j of the index picks the sign of
-// axis j).
+// axis j); inner[j]: h[j] less the margin within which a point counts as
+// inside the box whatever the rounding (box_separated).
 typedef struct box_pair {
-    dReal ax[3][3], h[3], corner[8][3];
+    dReal ax[3][3], h[3], corner[8][3], inner[3];
 } box_pair;
 _Static_assert(sizeof(box_pair) <= sizeof(((dxTriScratch *)0)->pair), "box_pair fits");
 
@@ -345,6 +348,11 @@ static const box_pair *prepare_box(dxTriQuery *q)
         dx_axis(q->R, j, b->ax[j]);
     }
     const dReal *h = b->h;
+    // The margin: 128 roundings of the largest number in the edge pairs
+    // sums (a point inside the box is within |c| + h of 0).
+    dReal eps = sizeof(dReal) == sizeof(double) ? (dReal)DBL_EPSILON : (dReal)FLT_EPSILON;
+    dReal size = dMax(dFabs(c[0]), dMax(dFabs(c[1]), dFabs(c[2]))) + h[0] + h[1] + h[2];
+    for (int j = 0; j < 3; j++) b->inner[j] = h[j] - 128 * eps * size;
     for (int v = 0; v < 8; v++)
         for (int i = 0; i < 3; i++)
             b->corner[v][i] = c[i] + (v & 1 ? h[0] : -h[0]) * b->ax[0][i] +
@@ -392,6 +400,14 @@ static int box_separated(const box_pair *b, const dxTri *t, const dReal c[3], dR
         if (dMax(p[0][j], dMax(p[1][j], p[2][j])) < -h[j] ||
             dMin(p[0][j], dMin(p[1][j], p[2][j])) > h[j])
             return 1;
+    // A vertex inside the box by more than the margin lies, on every axis
+    // L, within the box's interval by at least the margin times |L| (the
+    // box's |L . a_j| sum to at least |L|), far beyond the rounding of the
+    // sums below: no edge pair can separate, and they are not worked out.
+    const dReal *in = b->inner;
+    for (int i = 0; i < 3; i++)
+        if (dFabs(p[i][0]) <= in[0] && dFabs(p[i][1]) <= in[1] && dFabs(p[i][2]) <= in[2])
+            return 0;
     for (int k = 0; k < 3; k++) {
         dReal e[3], L[3];
         sub3(e, t->v[(k + 1) % 3], t->v[k]);
