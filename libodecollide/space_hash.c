@@ -444,12 +444,22 @@ static void query_levels(const dxHashSpace *hs, dxGeom *g, int first, void *data
         int64_t lo[3], hi[3];
         if (cell_range(g->aabb, level_scale(lv->level), lo, hi) &&
             cell_count(lo, hi) <= lv->count) {
-            for (int64_t i = lo[0]; i <= hi[0]; i++)
-                for (int64_t j = lo[1]; j <= hi[1]; j++)
+            if (lo[0] == hi[0] && lo[1] == hi[1] && lo[2] == hi[2]) {   // the common case
+                query_cell(hs, g, lv->level, lo, ALL_AXES, data, cb);
+                continue;
+            }
+            // The cells in place()'s order; lowest_bits(c, lo) built axis by axis.
+            for (int64_t i = lo[0]; i <= hi[0]; i++) {
+                const unsigned bi = i == lo[0];
+                for (int64_t j = lo[1]; j <= hi[1]; j++) {
+                    const unsigned bij = bi | (unsigned)(j == lo[1]) << 1;
                     for (int64_t k = lo[2]; k <= hi[2]; k++) {
                         const int64_t c[3] = { i, j, k };
-                        query_cell(hs, g, lv->level, c, lowest_bits(c, lo), data, cb);
+                        query_cell(hs, g, lv->level, c, bij | (unsigned)(k == lo[2]) << 2, data,
+                                   cb);
                     }
+                }
+            }
         } else {
             for (int n = lv->start; n < lv->start + lv->count; n++)
                 test_pair(g, hs->nodes[n].g, data, cb);
