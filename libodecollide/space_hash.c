@@ -448,18 +448,12 @@ static void query_levels(const dxHashSpace *hs, dxGeom *g, int first, void *data
                 query_cell(hs, g, lv->level, lo, ALL_AXES, data, cb);
                 continue;
             }
-            // The cells in place()'s order; lowest_bits(c, lo) built axis by axis.
-            for (int64_t i = lo[0]; i <= hi[0]; i++) {
-                const unsigned bi = i == lo[0];
-                for (int64_t j = lo[1]; j <= hi[1]; j++) {
-                    const unsigned bij = bi | (unsigned)(j == lo[1]) << 1;
+            for (int64_t i = lo[0]; i <= hi[0]; i++)
+                for (int64_t j = lo[1]; j <= hi[1]; j++)
                     for (int64_t k = lo[2]; k <= hi[2]; k++) {
                         const int64_t c[3] = { i, j, k };
-                        query_cell(hs, g, lv->level, c, bij | (unsigned)(k == lo[2]) << 2, data,
-                                   cb);
+                        query_cell(hs, g, lv->level, c, lowest_bits(c, lo), data, cb);
                     }
-                }
-            }
         } else {
             for (int n = lv->start; n < lv->start + lv->count; n++)
                 test_pair(g, hs->nodes[n].g, data, cb);
