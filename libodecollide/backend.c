@@ -167,6 +167,17 @@ static const dCollisionBackend *from_environment(const char *name, const char *r
     return b;
 }
 
+const dxRoute *dx_routes[DX_ROUTE_CLASSES][DX_ROUTE_CLASSES];
+
+void dxBackendRoutesUpdate(void)
+{
+    const int plain = backend_count > 0 && selected == backends[0].table && !shadow &&
+                      !requested[0] && !requested_shadow[0];
+    for (int a = 0; a < DX_ROUTE_CLASSES; a++)
+        for (int b = 0; b < DX_ROUTE_CLASSES; b++)
+            dx_routes[a][b] = plain && !dxCollideOverrideIsSet(a, b) ? dxNativeRoute(a, b) : NULL;
+}
+
 static void start_shadow(const dCollisionBackend *b)
 {
     shadow = b;
@@ -176,12 +187,8 @@ static void start_shadow(const dCollisionBackend *b)
 // The first use registers native, lists the modules found and reads
 // ODE_COLLISION_BACKEND, "name" or "name,shadow" (a name too long for
 // `requested` is cut and then matches nothing).
-static void ensure_native(void)
+static void read_environment(void)
 {
-    if (backend_count > 0) return;
-    add_entry(dxNativeBackend()->name, dxNativeBackend(), NULL);
-    selected = backends[0].table;
-    find_modules();
     const char *env = getenv("ODE_COLLISION_BACKEND");
     if (!env) return;
     char first[64];
@@ -194,6 +201,16 @@ static void ensure_native(void)
         start_shadow(b);
 }
 
+static void ensure_native(void)
+{
+    if (backend_count > 0) return;
+    add_entry(dxNativeBackend()->name, dxNativeBackend(), NULL);
+    selected = backends[0].table;
+    find_modules();
+    read_environment();
+    dxBackendRoutesUpdate();
+}
+
 // A requested backend that never registered: say so once, at the first collision.
 static void give_up_request(char *request, const char *role, const char *fallback)
 {
@@ -202,6 +219,7 @@ static void give_up_request(char *request, const char *role, const char *fallbac
     dMessage(d_ERR_UNKNOWN, "ODE_COLLISION_BACKEND: no %sbackend named \"%s\"%s%s; %s", role,
              request, missing ? ": " : "", missing ? missing : "", fallback);
     request[0] = 0;
+    dxBackendRoutesUpdate();
 }
 
 int dCollisionRegisterBackend(const dCollisionBackend *b)
@@ -221,6 +239,7 @@ int dCollisionRegisterBackend(const dCollisionBackend *b)
         start_shadow(b);
         requested_shadow[0] = 0;
     }
+    dxBackendRoutesUpdate();
     return 1;
 }
 
@@ -238,6 +257,7 @@ int dCollisionSetBackend(const char *name)
     selected = b;
     requested[0] = 0;
     fallback_reported = 0;
+    dxBackendRoutesUpdate();
     return 1;
 }
 
@@ -273,6 +293,7 @@ int dCollisionSetShadowBackend(const char *name)
     requested_shadow[0] = 0;
     if (!name) {
         shadow = NULL;
+        dxBackendRoutesUpdate();
         return 1;
     }
     entry *e = find(name);
@@ -283,6 +304,7 @@ int dCollisionSetShadowBackend(const char *name)
     const dCollisionBackend *b = load(e, why, sizeof why);
     DX_CHECK_ARG(b != NULL, return 0, "cannot load the \"%s\" backend: %s", name, why);
     start_shadow(b);
+    dxBackendRoutesUpdate();
     return 1;
 }
 

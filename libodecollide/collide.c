@@ -3,7 +3,8 @@
 // collide.c -- dCollide (guide 10.5.2): argument checks, colliders the
 // program set for a pair of classes, spaces passed as arguments (their
 // contents are collided), geometry transforms, user classes, and otherwise
-// the selected backend's narrow phase.
+// the selected backend's narrow phase. A pair of built-in classes that this
+// would hand to a native collider goes there straight (dx_routes).
 
 #include "backend_internal.h"
 #include "shapes.h"
@@ -116,5 +117,18 @@ int dCollide(dGeomID o1, dGeomID o2, int flags, dContactGeom *contact, int skip)
                  (int)sizeof(dContactGeom));
     DX_CHECK_ARG(contact != NULL, return 0, "contact is NULL");
     if ((flags & 0xffff) == 0) flags |= 1;   // guide 10.5.2: zero contacts means one
+    // Two built-in geoms whose pair ends in a native collider: collide_any's
+    // first two answers, then that collider, without the way there.
+    const unsigned c1 = (unsigned)o1->ops->cls, c2 = (unsigned)o2->ops->cls;
+    if (c1 < DX_ROUTE_CLASSES && c2 < DX_ROUTE_CLASSES) {
+        const dxRoute *r = dx_routes[c1][c2];
+        if (r) {
+            if (o1 == o2 || (o1->body && o1->body == o2->body)) return 0;
+            if (!r->reverse) return r->fn(o1, o2, flags, contact, skip);
+            const int n = r->fn(o2, o1, flags, contact, skip);
+            dxFlipContacts(contact, n, skip);
+            return n;
+        }
+    }
     return collide_any(o1, o2, flags, contact, skip);
 }

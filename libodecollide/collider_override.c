@@ -5,7 +5,7 @@
 // transform, user class). As in ODE, setting (i, j) sets (j, i) too, called
 // with the geoms swapped and the contacts mirrored back.
 
-#include "geom_internal.h"
+#include "backend_internal.h"
 
 typedef struct override_entry {
     dColliderFn *fn;
@@ -21,7 +21,10 @@ void dSetColliderOverride(int i, int j, dColliderFn *fn)
     DX_CHECK_ARG(j >= 0 && j < dGeomNumClasses, return, "class j (%d) is not a class number", j);
     overrides[i][j] = (override_entry){ fn, 1, 0 };
     overrides[j][i] = (override_entry){ fn, 1, 1 };
+    dxBackendRoutesUpdate();
 }
+
+int dxCollideOverrideIsSet(int c1, int c2) { return overrides[c1][c2].set; }
 
 int dxCollideOverride(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip, int *handled)
 {

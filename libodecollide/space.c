@@ -13,7 +13,7 @@
 // compute_aabb, which a type may wrap, runs exactly then).
 
 #include "geom_internal.h"
-#include "user_class.h"
+#include "space_pair.h"
 
 #include <ode/memory.h>
 
@@ -229,30 +229,18 @@ void dSpaceClean(dSpaceID s)
 
 // ---- pair tests -------------------------------------------------------------
 
-static int aabbs_overlap(const dReal *a, const dReal *b)
-{
-    return a[0] <= b[1] && b[0] <= a[1] && a[2] <= b[3] && b[2] <= a[3] && a[4] <= b[5] &&
-           b[4] <= a[5];
-}
-
 unsigned long dx_aabb_tests;
 
 // a == b happens only in dSpaceCollide2(space, X) with X in the space: the
 // guide (10.5.2) reports the pair (X, X) then, so a geom touches itself.
 int dxGeomsMayTouch(dxGeom *a, dxGeom *b)
 {
-    if (!(a->flags & b->flags & DX_GEOM_ENABLED)) return 0;
-    if (a != b && a->body && a->body == b->body) return 0;
-    if (!(a->category_bits & b->collide_bits) && !(b->category_bits & a->collide_bits)) return 0;
-    if (!aabbs_overlap(a->aabb, b->aabb)) return 0;
-    // Only user classes have a box test of their own.
-    return (a->ops->cls < dFirstUserClass && b->ops->cls < dFirstUserClass) || dxUserAABBTest(a, b);
+    return dxAABBsOverlap(a->aabb, b->aabb) && dxGeomsMayTouchOverlapping(a, b);
 }
 
 void dxSpaceTestPair(dxGeom *a, dxGeom *b, void *data, dNearCallback *cb)
 {
-    dx_aabb_tests++;
-    if (dxGeomsMayTouch(a, b)) cb(data, a, b);
+    dxSpaceTestPairInline(a, b, data, cb);
 }
 
 // ---- dSpaceCollide, dSpaceCollide2 --------------------------------------------

@@ -34,6 +34,7 @@
 
 #include "geom_internal.h"
 #include "space_hash_cells.h"
+#include "space_pair.h"
 
 #include <float.h>
 #include <math.h>
@@ -81,11 +82,11 @@ typedef struct hash_slot {
     double scale, lo_d[3], hi_d[3], side_lo, side_hi;
 } hash_slot;
 
-// Where a geom goes at the next update: its level and cells, unless big;
-// whether that differs from where it is, and whether its level does.
+// Where s->geoms[i] goes at the next update, when that differs from where
+// it is: its level and cells, unless big.
 typedef struct hash_place {
+    int i;
     int placed, level;
-    int moved, relevelled;
     int64_t lo[3], hi[3];
 } hash_place;
 
@@ -102,7 +103,7 @@ typedef struct dxHashSpace {
     int slots_cap, n_slots, free_slot;   // allocated, ever used, first free (-1 if none)
     int *slot_of;                 // the slot of s->geoms[i]
     int slot_of_cap;
-    hash_place *next;             // where s->geoms[i] goes (scratch of hash_update)
+    hash_place *next;             // the geoms that move, in space order (scratch of hash_update)
     int next_cap;
     dxHashCells cells;
     hash_node *nodes, *placed;    // placed geoms by level / in space order
@@ -326,6 +327,32 @@ static void list_geoms(dxHashSpace *hs)
     sort_nodes(hs);
 }
 
+// Record the geom of slot si afresh where it already is (after
+// dxHashCellsRestart, in space order).
+static void place_again(dxHashSpace *hs, int si)
+{
+    hash_slot *sl = &hs->slots[si];
+    sl->n = 0;   // (the cells forgot its entries)
+    if (sl->state != SLOT_PLACED) return;
+    int64_t lo[3], hi[3];
+    memcpy(lo, sl->lo, sizeof lo);
+    memcpy(hi, sl->hi, sizeof hi);
+    place(hs, si, sl->level, lo, hi, 1);
+}
+
+// Put the geom of slot si where p says.
+static void move_to(dxHashSpace *hs, int si, const hash_place *p, int afresh)
+{
+    hash_slot *sl = &hs->slots[si];
+    if (afresh) sl->n = 0;   // (the cells forgot its entries)
+    if (p->placed) {
+        place(hs, si, p->level, p->lo, p->hi, afresh);
+    } else {
+        unplace(hs, si);
+        sl->state = SLOT_BIG;
+    }
+}
+
 // Bring the cells up to date with the geoms' boxes. Only geoms whose level
 // or cells changed are moved (an unlink and a link per cell: a hash lookup
 // each); when that is more than a third of them (a scene in motion), the
@@ -338,45 +365,41 @@ static void hash_update(dxHashSpace *hs)
     const dxSpace *s = &hs->s;
     hs->next = grow(hs->next, &hs->next_cap, s->count, sizeof *hs->next);
     int n_placed = 0, n_entries = 0, moved = 0, relevelled = hs->members_changed;
+    const int check_kept = !hs->levels_changed && !hs->afresh;
     for (int i = 0; i < s->count; i++) {
-        hash_place *p = &hs->next[i];
         const hash_slot *sl = &hs->slots[hs->slot_of[i]];
-        if (sl->state == SLOT_PLACED && !hs->levels_changed && !hs->afresh &&
-            keeps_place(sl, sl->g->aabb)) {
-            *p = (hash_place){ 1, sl->level, 0, 0, { sl->lo[0], sl->lo[1], sl->lo[2] },
-                               { sl->hi[0], sl->hi[1], sl->hi[2] } };
+        if (check_kept && sl->state == SLOT_PLACED && keeps_place(sl, sl->g->aabb)) {
             n_placed++;
             n_entries += sl->n;
             continue;
         }
+        hash_place *p = &hs->next[moved];
+        p->i = i;
         p->placed = geom_level(hs, sl->g->aabb, &p->level, p->lo, p->hi);
+        int changed, new_level;
         if (p->placed) {
             n_placed++;
             n_entries += (int)cell_count(p->lo, p->hi);
-            p->moved = !same_place(sl, p);
-            p->relevelled = sl->state != SLOT_PLACED || sl->level != p->level;
+            changed = !same_place(sl, p);
+            new_level = sl->state != SLOT_PLACED || sl->level != p->level;
         } else {
-            p->moved = p->relevelled = sl->state != SLOT_BIG;
+            changed = new_level = sl->state != SLOT_BIG;
         }
-        moved += p->moved;
-        relevelled += p->relevelled;
+        moved += changed;   // (p is kept only if it moves)
+        relevelled += new_level;
     }
     hs->stale = hs->levels_changed = hs->afresh = 0;
     if (!moved && !relevelled) return;
     const int afresh = hs->afresh = 3 * moved > n_placed;
-    if (afresh) dxHashCellsRestart(&hs->cells, n_entries);
-    for (int i = 0; i < s->count; i++) {
-        const hash_place *p = &hs->next[i];
-        if (!afresh && !p->moved) continue;
-        const int si = hs->slot_of[i];
-        hash_slot *sl = &hs->slots[si];
-        if (afresh) sl->n = 0;   // (the cells forgot its entries)
-        if (p->placed) {
-            place(hs, si, p->level, p->lo, p->hi, afresh);
-        } else {
-            unplace(hs, si);
-            sl->state = SLOT_BIG;
+    if (afresh) {
+        dxHashCellsRestart(&hs->cells, n_entries);
+        const hash_place *p = hs->next, *end = hs->next + moved;
+        for (int i = 0; i < s->count; i++) {
+            if (p < end && p->i == i) move_to(hs, hs->slot_of[i], p++, 1);
+            else place_again(hs, hs->slot_of[i]);
         }
+    } else {
+        for (int m = 0; m < moved; m++) move_to(hs, hs->slot_of[hs->next[m].i], &hs->next[m], 0);
     }
     if (relevelled) list_geoms(hs);
     hs->members_changed = 0;
@@ -393,17 +416,11 @@ static int hash_ready(dxHashSpace *hs)
     return 1;
 }
 
-// dxSpaceTestPair, with its most common answer -- the boxes are apart --
-// found here without the call (and counted the same).
+// dxSpaceTestPair, inline (most pairs of neighbouring cells have their
+// boxes apart).
 static inline void test_pair(dxGeom *a, dxGeom *b, void *data, dNearCallback *cb)
 {
-    const dReal *p = a->aabb, *q = b->aabb;
-    if (p[0] <= q[1] && q[0] <= p[1] && p[2] <= q[3] && q[2] <= p[3] && p[4] <= q[5] &&
-        q[4] <= p[5]) {
-        dxSpaceTestPair(a, b, data, cb);
-    } else {
-        dx_aabb_tests++;
-    }
+    dxSpaceTestPairInline(a, b, data, cb);
 }
 
 // g against the geoms of `level` recorded in cell c (g's lowest-cell bits
@@ -427,6 +444,10 @@ static void query_levels(const dxHashSpace *hs, dxGeom *g, int first, void *data
         int64_t lo[3], hi[3];
         if (cell_range(g->aabb, level_scale(lv->level), lo, hi) &&
             cell_count(lo, hi) <= lv->count) {
+            if (lo[0] == hi[0] && lo[1] == hi[1] && lo[2] == hi[2]) {   // the common case
+                query_cell(hs, g, lv->level, lo, ALL_AXES, data, cb);
+                continue;
+            }
             for (int64_t i = lo[0]; i <= hi[0]; i++)
                 for (int64_t j = lo[1]; j <= hi[1]; j++)
                     for (int64_t k = lo[2]; k <= hi[2]; k++) {

@@ -60,16 +60,15 @@ void dxHashCellsUnlink(dxHashCells *hc, int e);
 void dxHashCellsRestart(dxHashCells *hc, int entries);
 void dxHashCellsFree(dxHashCells *hc);
 
-// Multiply-xor hash of a cell, mixed so that neighbouring cells spread.
+// Multiplicative hash of a cell: a sum of the coordinates times odd
+// constants, whose high half (which every bit of the coordinates reaches
+// through the carries) picks the bucket; neighbouring cells spread.
 static inline unsigned dxHashCellBucket(int level, const int64_t c[3], int mask)
 {
-    uint64_t h = (uint64_t)c[0] * 0x9E3779B97F4A7C15u ^ (uint64_t)c[1] * 0xC2B2AE3D27D4EB4Fu ^
-                 (uint64_t)c[2] * 0x165667B19E3779F9u ^
-                 (uint64_t)(int64_t)level * 0x27D4EB2F165667C5u;
-    h ^= h >> 31;
-    h *= 0xBF58476D1CE4E5B9u;
-    h ^= h >> 29;
-    return (unsigned)h & (unsigned)mask;
+    const uint64_t h = (uint64_t)c[0] * 0x9E3779B97F4A7C15u + (uint64_t)c[1] * 0xC2B2AE3D27D4EB4Fu +
+                       (uint64_t)c[2] * 0x165667B19E3779F9u +
+                       (uint64_t)(int64_t)level * 0x27D4EB2F165667C5u;
+    return (unsigned)(h >> 32) & (unsigned)mask;
 }
 
 // The record of cell (level, c), or -1 if it has none.

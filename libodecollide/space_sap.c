@@ -32,6 +32,7 @@
 // nothing.
 
 #include "geom_internal.h"
+#include "space_pair.h"
 #include "space_sap_pairs.h"
 
 #include <ode/memory.h>
@@ -483,7 +484,8 @@ static void sap_collide(dxSpace *s, void *data, dNearCallback *cb)
     }
     ss->walking++;
     const dxSapPair *pair = ss->pairs.pair;
-    for (int i = 0; i < ss->pairs.count; i++) dxSpaceTestPair(pair[i].ga, pair[i].gb, data, cb);
+    for (int i = 0; i < ss->pairs.count; i++)
+        dxSpaceTestPairInline(pair[i].ga, pair[i].gb, data, cb);
     // Each wild proxy against every other geom (wild pairs once).
     for (int w = 0; w < ss->nwild; w++) {
         const int p = ss->wild[w];

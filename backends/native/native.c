@@ -65,3 +65,22 @@ static const dCollisionBackend native_backend = { "native", native_supports, nat
                                                   NULL, NULL };
 
 const dCollisionBackend *dxNativeBackend(void) { return &native_backend; }
+
+// The route of every pair of classes, each written once (a pointer to one
+// of these is what dCollide's table publishes, so a reader never sees half
+// of one).
+static dxRoute routes[NATIVE_CLASSES][NATIVE_CLASSES];
+static int routes_made;
+
+const dxRoute *dxNativeRoute(int c1, int c2)
+{
+    if (c1 < 0 || c2 < 0 || c1 >= NATIVE_CLASSES || c2 >= NATIVE_CLASSES) return NULL;
+    if (!routes_made) {
+        for (int a = 0; a < NATIVE_CLASSES; a++)
+            for (int b = 0; b < NATIVE_CLASSES; b++)
+                routes[a][b] = table[a][b] ? (dxRoute){ table[a][b], 0 }
+                                           : (dxRoute){ table[b][a], 1 };
+        routes_made = 1;
+    }
+    return routes[c1][c2].fn ? &routes[c1][c2] : NULL;
+}
