@@ -46,7 +46,7 @@ int main(int argc, char **argv)
     dMassSetCapsuleTotal(&m, (dReal)MASS, 3, (dReal)RADIUS, (dReal)(LINK - 2 * RADIUS));
     bench_rng rng = bench_rng_init((unsigned long long)seed);
     const double tilt = seed ? bench_rand(&rng, 0, 2 * M_PI / 180) : 0;
-    const double dx = cos(tilt), dz = -sin(tilt);
+    const double dx = cos(tilt), dz = seed ? -sin(tilt) : 0;   // +0 without a seed, as before
     dMatrix3 R;
     dRFromAxisAndAngle(R, 0, 1, 0, (dReal)(M_PI / 2 + tilt));
     for (int i = 0; i < links; i++) {
