@@ -245,9 +245,13 @@ static void friction_row(const dxJointContact *c, dxContactRows *r, int row, con
     r->d[row] = t;
     r->c[row] = motion;
     r->cfm[row] = has_slip ? slip : c->base.world->cfm;
-    r->k[row] = k;
-    r->pyramid[row] = pyramid != 0;
+    r->lo[row] = -k;
+    r->hi[row] = k;
+    r->pyramid[row] = pyramid && k < dInfinity;   // (an infinite k: no findex)
 }
+
+// A zero direction, for the rows a contact does not have.
+static const dVector3 no_direction = { 0, 0, 0, 0 };
 
 // The contact's normal and sliding friction rows (a live contact).
 static void contact_rows(dxJointContact *c, dReal fps, dReal erp, dxContactRows *r)
@@ -260,10 +264,12 @@ static void contact_rows(dxJointContact *c, dReal fps, dReal erp, dxContactRows 
     dCopyScaledVector3(r->n, c->n, sign);
     dCopyScaledVector3(r->t1, c->t1, sign);
     dCopyScaledVector3(r->t2, c->t2, sign);
+    r->n[3] = r->t1[3] = r->t2[3] = 0;
     r->d[0] = r->n;
     r->c[0] = normal_target(c, r->n, fps, erp);   // first: it may record the arms
     r->cfm[0] = (mode & dContactSoftCFM) ? s->soft_cfm : c->base.world->cfm;
-    r->k[0] = 0;
+    r->lo[0] = 0;
+    r->hi[0] = dInfinity;
     r->pyramid[0] = 0;
     r->arm[0] = c->arm[0];
     r->arm[1] = dxJointBody(&c->base, 1) ? c->arm[1] : NULL;
@@ -277,6 +283,10 @@ static void contact_rows(dxJointContact *c, dReal fps, dReal erp, dxContactRows 
         friction_row(c, r, row++, r->t2, c->mu2, mode & dContactApprox1_2,
                      (mode & dContactMotion2) ? s->motion2 : 0, mode & dContactSlip2, s->slip2);
     r->m = row;
+    for (; row < 4; row++) {
+        if (row < 3) r->d[row] = no_direction;
+        r->c[row] = r->cfm[row] = r->lo[row] = r->hi[row] = 0;
+    }
 }
 
 static void contact_fill_rows(dxJoint *j, dxJointRows *rows)
@@ -292,11 +302,11 @@ static void contact_fill_rows(dxJoint *j, dxJointRows *rows)
         rows->c[i] = r.c[i];
         rows->cfm[i] = r.cfm[i];
         if (i > 0) {
-            friction_bounds(rows, i, r.k[i], r.pyramid[i]);
+            friction_bounds(rows, i, r.hi[i], r.pyramid[i]);
             continue;
         }
-        rows->lo[0] = 0;
-        rows->hi[0] = dInfinity;
+        rows->lo[0] = r.lo[0];
+        rows->hi[0] = r.hi[0];
         rows->findex[0] = -1;
     }
     int row = r.m;
