@@ -46,6 +46,7 @@
 #include "joint_kept.h"
 #include "joint_geometry.h"
 #include "step_internal.h"
+#include "unit_vector.h"
 
 // The rows a contact contributes, by kind (bit set = row present).
 enum {
@@ -440,7 +441,7 @@ static int check_geometry(dxJointContact *c)
         return 0;
     }
     dCopyVector3(c->n, g->normal);
-    if (!dxIsFinite3(c->n[0], c->n[1], c->n[2]) || !dSafeNormalize3(c->n)) {
+    if (!dxIsFinite3(c->n[0], c->n[1], c->n[2]) || !dxUnitVector3(c->n)) {
         dxReportBadArgument("dJointCreateContact", "contact normal (%g, %g, %g) has no direction;"
                             " the contact is ignored", (double)g->normal[0],
                             (double)g->normal[1], (double)g->normal[2]);
@@ -466,7 +467,7 @@ static void friction_directions(dxJointContact *c)
                             "across the normal; using an arbitrary one", (double)f[0],
                             (double)f[1], (double)f[2]);
     }
-    dPlaneSpace(c->n, c->t1, c->t2);   // t2 = n x t1
+    dxPlaneSpaceUnit(c->n, c->t1, c->t2);   // t2 = n x t1 (dPlaneSpace's arithmetic)
 }
 
 // Which rows exist, and the effective coefficients of direction 2 and spin.
