@@ -169,7 +169,8 @@ QS_INLINE void qc_store(qs_row *rows, int m, size_t off, qc_v4 a, qc_v4 b, qc_v4
 
 // The numbers qc_store writes: rhs, cfm, lo, hi together, and J, M, J1, M1
 // (24 numbers) together.
-_Static_assert(offsetof(qs_row, cfm) == sizeof(dReal) && offsetof(qs_row, lo) == 2 * sizeof(dReal) &&
+_Static_assert(offsetof(qs_row, cfm) == sizeof(dReal) &&
+                   offsetof(qs_row, lo) == 2 * sizeof(dReal) &&
                    offsetof(qs_row, hi) == 3 * sizeof(dReal),
                "qs_row: rhs, cfm, lo, hi are consecutive");
 _Static_assert(offsetof(qs_row, M) == offsetof(qs_row, J) + 6 * sizeof(dReal) &&
@@ -187,13 +188,6 @@ typedef struct qs_cbodies {
     int o0, o1;
 } qs_cbodies;
 
-// The scaled numbers of the contact's m rows into rows[0..m) (lane i: row
-// i along r->d[i]; sor_w the lanes' relaxation factors): D J and M^-1 J^T,
-// rhs = (c fps - J rates) D, cfm = cfm fps D, the bounds (friction: -k..k),
-// as fill_row makes them from row_full's J and M^-1 J^T. two: a second
-// body (else its numbers are zero). The sums are pair_dot's: the 12
-// products p of a row, as pairs, (p0 + p2 | p1 + p3) + (p4 | p5) + body 1's
-// ((q0 | q1) + (q2 + q4 | q3 + q5)), the pair's lanes added last.
 // x = I a for the lanes' a (I: a world inverse inertia, dMatrix3), each
 // entry of I broadcast once: I0 a0 + I1 a1 + I2 a2, in that order.
 QS_INLINE void inertia_lanes(const dReal *I, qc_v4 ax, qc_v4 ay, qc_v4 az, qc_v4 x[3])
@@ -205,6 +199,14 @@ QS_INLINE void inertia_lanes(const dReal *I, qc_v4 ax, qc_v4 ay, qc_v4 az, qc_v4
     }
 }
 
+// The scaled numbers of the contact's m rows into rows[0..m) (lane i: row
+// i along r->d[i]; sor_w the lanes' relaxation factors): D J and M^-1 J^T,
+// rhs = (c fps - J rates) D, cfm = cfm fps D, the bounds (friction: -k..k),
+// as fill_row makes them from row_full's J and M^-1 J^T. two: a second
+// body (else its numbers are zero). The sums are pair_dot's: with p the
+// products of body 0's 6 numbers and q body 1's, the pair
+// (p0 + p2 | p1 + p3) + ((p4 + q0) + (q2 + q4) | (p5 + q1) + (q3 + q5)),
+// (one body: + (p4 | p5)), its two lanes added last.
 QS_INLINE void lanes_rows(const qs_input *in, const qs_cbodies *cb, const dxContactRows *r,
                           qc_v4 sor_w, int two, qs_row *rows)
 {
