@@ -46,6 +46,7 @@
 #include "joint_kept.h"
 #include "joint_geometry.h"
 #include "step_internal.h"
+#include "unit_vector.h"
 
 // The rows a contact contributes, by kind (bit set = row present).
 enum {
@@ -245,9 +246,13 @@ static void friction_row(const dxJointContact *c, dxContactRows *r, int row, con
     r->d[row] = t;
     r->c[row] = motion;
     r->cfm[row] = has_slip ? slip : c->base.world->cfm;
-    r->k[row] = k;
-    r->pyramid[row] = pyramid != 0;
+    r->lo[row] = -k;
+    r->hi[row] = k;
+    r->pyramid[row] = pyramid && k < dInfinity;   // (an infinite k: no findex)
 }
+
+// A zero direction, for the rows a contact does not have.
+static const dVector3 no_direction = { 0, 0, 0, 0 };
 
 // The contact's normal and sliding friction rows (a live contact).
 static void contact_rows(dxJointContact *c, dReal fps, dReal erp, dxContactRows *r)
@@ -260,10 +265,12 @@ static void contact_rows(dxJointContact *c, dReal fps, dReal erp, dxContactRows 
     dCopyScaledVector3(r->n, c->n, sign);
     dCopyScaledVector3(r->t1, c->t1, sign);
     dCopyScaledVector3(r->t2, c->t2, sign);
+    r->n[3] = r->t1[3] = r->t2[3] = 0;
     r->d[0] = r->n;
     r->c[0] = normal_target(c, r->n, fps, erp);   // first: it may record the arms
     r->cfm[0] = (mode & dContactSoftCFM) ? s->soft_cfm : c->base.world->cfm;
-    r->k[0] = 0;
+    r->lo[0] = 0;
+    r->hi[0] = dInfinity;
     r->pyramid[0] = 0;
     r->arm[0] = c->arm[0];
     r->arm[1] = dxJointBody(&c->base, 1) ? c->arm[1] : NULL;
@@ -277,6 +284,10 @@ static void contact_rows(dxJointContact *c, dReal fps, dReal erp, dxContactRows 
         friction_row(c, r, row++, r->t2, c->mu2, mode & dContactApprox1_2,
                      (mode & dContactMotion2) ? s->motion2 : 0, mode & dContactSlip2, s->slip2);
     r->m = row;
+    for (; row < 4; row++) {
+        if (row < 3) r->d[row] = no_direction;
+        r->c[row] = r->cfm[row] = r->lo[row] = r->hi[row] = 0;
+    }
 }
 
 static void contact_fill_rows(dxJoint *j, dxJointRows *rows)
@@ -292,11 +303,11 @@ static void contact_fill_rows(dxJoint *j, dxJointRows *rows)
         rows->c[i] = r.c[i];
         rows->cfm[i] = r.cfm[i];
         if (i > 0) {
-            friction_bounds(rows, i, r.k[i], r.pyramid[i]);
+            friction_bounds(rows, i, r.hi[i], r.pyramid[i]);
             continue;
         }
-        rows->lo[0] = 0;
-        rows->hi[0] = dInfinity;
+        rows->lo[0] = r.lo[0];
+        rows->hi[0] = r.hi[0];
         rows->findex[0] = -1;
     }
     int row = r.m;
@@ -430,7 +441,7 @@ static int check_geometry(dxJointContact *c)
         return 0;
     }
     dCopyVector3(c->n, g->normal);
-    if (!dxIsFinite3(c->n[0], c->n[1], c->n[2]) || !dSafeNormalize3(c->n)) {
+    if (!dxIsFinite3(c->n[0], c->n[1], c->n[2]) || !dxUnitVector3(c->n)) {
         dxReportBadArgument("dJointCreateContact", "contact normal (%g, %g, %g) has no direction;"
                             " the contact is ignored", (double)g->normal[0],
                             (double)g->normal[1], (double)g->normal[2]);
@@ -456,7 +467,7 @@ static void friction_directions(dxJointContact *c)
                             "across the normal; using an arbitrary one", (double)f[0],
                             (double)f[1], (double)f[2]);
     }
-    dPlaneSpace(c->n, c->t1, c->t2);   // t2 = n x t1
+    dxPlaneSpaceUnit(c->n, c->t1, c->t2);   // t2 = n x t1 (dPlaneSpace's arithmetic)
 }
 
 // Which rows exist, and the effective coefficients of direction 2 and spin.

@@ -4,6 +4,7 @@
 // dPlaneSpace and dOrthogonalizeR.
 
 #include "dx_check.h"
+#include "unit_vector.h"
 
 #include <ode/odemath.h>
 
@@ -50,7 +51,7 @@ static int normalize_n(dReal *a, int n)
 int dSafeNormalize3(dVector3 a)
 {
     DX_CHECK_ARG(a != NULL, return 0, "a is NULL");
-    if (normalize_n(a, 3)) return 1;
+    if (dxIsFinite3(a[0], a[1], a[2]) && dxUnitVector3(a)) return 1;
     a[0] = 1;
     a[1] = a[2] = 0;
     return 0;
@@ -81,39 +82,15 @@ void dNormalize4(dVector4 a)
                 "the vector has zero length (or is not finite); set to (1,0,0,0)");
 }
 
-// Two unit vectors p, q perpendicular to n (q = n x p). p is built from the
-// two components of n that are not both small, so 1/sqrt(a) is well
-// conditioned: a >= 1/2 for a unit n in either branch.
+// Two unit vectors p, q perpendicular to n (q = n x p): unit_vector.h.
 void dPlaneSpace(const dVector3 n, dVector3 p, dVector3 q)
 {
     DX_CHECK_ARG(n != NULL && p != NULL && q != NULL, return, "n, p or q is NULL");
     DX_CHECK_ARG(dxIsFinite3(n[0], n[1], n[2]), return, "n (%g, %g, %g) is not finite",
                  (double)n[0], (double)n[1], (double)n[2]);
-    dReal pp[3], qq[3];
-    if (dFabs(n[2]) > M_SQRT1_2) {
-        // p in the y-z plane
-        dReal a = n[1] * n[1] + n[2] * n[2], k = dRecipSqrt(a);
-        pp[0] = 0;
-        pp[1] = -n[2] * k;
-        pp[2] = n[1] * k;
-        qq[0] = a * k;
-        qq[1] = -n[0] * pp[2];
-        qq[2] = n[0] * pp[1];
-    } else {
-        // p in the x-y plane
-        dReal a = n[0] * n[0] + n[1] * n[1];
-        DX_CHECK_ARG(a > 0, return, "n (%g, %g, %g) has no direction", (double)n[0],
-                     (double)n[1], (double)n[2]);
-        dReal k = dRecipSqrt(a);
-        pp[0] = -n[1] * k;
-        pp[1] = n[0] * k;
-        pp[2] = 0;
-        qq[0] = -n[2] * pp[1];
-        qq[1] = n[2] * pp[0];
-        qq[2] = a * k;
-    }
-    dCopyVector3(p, pp);
-    dCopyVector3(q, qq);
+    DX_CHECK_ARG(dFabs(n[2]) > M_SQRT1_2 || n[0] * n[0] + n[1] * n[1] > 0, return,
+                 "n (%g, %g, %g) has no direction", (double)n[0], (double)n[1], (double)n[2]);
+    dxPlaneSpaceUnit(n, p, q);
 }
 
 // Remove from v its part along the unit vector u, and normalise the rest.

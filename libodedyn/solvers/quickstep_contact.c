@@ -12,30 +12,272 @@
 // results are the same to the bit (tests/test_contact_direct.c runs scenes
 // both ways). One shortcut: a one-body row (a contact with the static world)
 // leaves out its second body's products, which are exact zeros.
+//
+// A contact's rows (normal, t1, t2: up to three) share their bodies, arms
+// and inverse inertias, so they are made together, one row per lane of a
+// four (row i in lane i, the fourth lane and the missing rows zero): each
+// scalar operation of the row's formula is one operation on the four, in
+// the same order, so every lane gets the bits the row alone would. The
+// lanes are then turned into rows four numbers at a time (a 4 x 4
+// transpose per four consecutive numbers of qs_row).
 
 #include "quickstep.h"
 
+#include <stddef.h>
 #include <string.h>
 
 int dxQuickContactDirect = 1;
 
+// Built for AVX2 and for the baseline where the compiler can pick a version
+// when the library is loaded (GNU ifunc: x86-64, ELF, glibc), as the sweeps
+// (quickstep_sweep.c); the same numbers either way. -DQS_CONTACT_CLONES=
+// builds the baseline alone.
+#if !defined(QS_CONTACT_CLONES) && defined(__GNUC__) && defined(__x86_64__) && \
+    defined(__ELF__) && defined(__GLIBC__) && defined(__has_attribute)
+#if __has_attribute(target_clones)
+#define QS_CONTACT_CLONES __attribute__((target_clones("avx2", "default")))
+#endif
+#endif
+#ifndef QS_CONTACT_CLONES
+#define QS_CONTACT_CLONES
+#endif
+// The functions that take or return fours are all inlined: no call passes
+// them, so the baseline's ABI note about them does not apply.
+#if defined(__clang__)
+#if __has_warning("-Wpsabi")
+#pragma clang diagnostic ignored "-Wpsabi"
+#endif
+#elif defined(__GNUC__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
+// Fours of numbers, one lane per row (GNU vector extensions: one AVX
+// operation for doubles in the AVX2 build, two SSE2 ones in the baseline;
+// elsewhere four scalar operations).
+#if defined(__GNUC__)
+typedef dReal qc_v4 __attribute__((vector_size(4 * sizeof(dReal))));
+#define qc_lane(v, i) ((v)[i])
+QS_INLINE qc_v4 qc_make(dReal a, dReal b, dReal c, dReal d)
+{
+    const qc_v4 v = { a, b, c, d };
+    return v;
+}
+#define qc_add(x, y) ((x) + (y))
+#define qc_sub(x, y) ((x) - (y))
+#define qc_mul(x, y) ((x) * (y))
+#define qc_neg(x) (-(x))
+#else
+typedef struct qc_v4 {
+    dReal e[4];
+} qc_v4;
+#define qc_lane(v, i) ((v).e[i])
+static inline qc_v4 qc_make(dReal a, dReal b, dReal c, dReal d)
+{
+    const qc_v4 v = { { a, b, c, d } };
+    return v;
+}
+static inline qc_v4 qc_add(qc_v4 x, qc_v4 y)
+{
+    return qc_make(x.e[0] + y.e[0], x.e[1] + y.e[1], x.e[2] + y.e[2], x.e[3] + y.e[3]);
+}
+static inline qc_v4 qc_sub(qc_v4 x, qc_v4 y)
+{
+    return qc_make(x.e[0] - y.e[0], x.e[1] - y.e[1], x.e[2] - y.e[2], x.e[3] - y.e[3]);
+}
+static inline qc_v4 qc_mul(qc_v4 x, qc_v4 y)
+{
+    return qc_make(x.e[0] * y.e[0], x.e[1] * y.e[1], x.e[2] * y.e[2], x.e[3] * y.e[3]);
+}
+static inline qc_v4 qc_neg(qc_v4 x)
+{
+    return qc_make(-x.e[0], -x.e[1], -x.e[2], -x.e[3]);
+}
+#endif
+
+#if defined(__GNUC__)
+QS_INLINE qc_v4 qc_splat(dReal a)
+{
+    const qc_v4 v = { a, a, a, a };   // (a broadcast)
+    return v;
+}
+#else
+static inline qc_v4 qc_splat(dReal a)
+{
+    return qc_make(a, a, a, a);
+}
+#endif
+
+// D = sor_w / diag per lane, in double as fill_row makes it (diag =
+// (double)ms + cfm), 0 where diag is not positive (an empty row without
+// cfm leaves its force at 0; the absent rows' lanes).
+QS_INLINE qc_v4 qc_factor(qc_v4 ms, qc_v4 cfm, qc_v4 sor_w)
+{
+#if defined(__GNUC__)
+    typedef double d4 __attribute__((vector_size(4 * sizeof(double))));
+    typedef long long m4 __attribute__((vector_size(4 * sizeof(double))));
+    const d4 diag = __builtin_convertvector(ms, d4) + __builtin_convertvector(cfm, d4);
+    const m4 pos = diag > 0;
+    const d4 one = { 1, 1, 1, 1 };
+    // Divide by 1 where diag is not used: no division by zero.
+    const d4 safe = (d4)(((m4)diag & pos) | ((m4)one & ~pos));
+    const d4 D = (d4)((m4)(__builtin_convertvector(sor_w, d4) / safe) & pos);
+    return __builtin_convertvector(D, qc_v4);
+#else
+    qc_v4 D;
+    for (int i = 0; i < 4; i++) {
+        const double diag = (double)ms.e[i] + cfm.e[i];
+        D.e[i] = diag > 0 ? (dReal)(sor_w.e[i] / diag) : 0;
+    }
+    return D;
+#endif
+}
+
+QS_INLINE qc_v4 qc_load(const dReal *p)
+{
+    qc_v4 v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+
+// Lanes 0..2 of a, b, c, d as fours (a 4 x 4 transpose, its fourth row
+// left out): out[i] = (a_i, b_i, c_i, d_i).
+QS_INLINE void qc_transpose(qc_v4 a, qc_v4 b, qc_v4 c, qc_v4 d, qc_v4 out[3])
+{
+#if defined(__GNUC__)
+    const qc_v4 t0 = __builtin_shufflevector(a, b, 0, 4, 2, 6);
+    const qc_v4 t1 = __builtin_shufflevector(a, b, 1, 5, 3, 7);
+    const qc_v4 t2 = __builtin_shufflevector(c, d, 0, 4, 2, 6);
+    const qc_v4 t3 = __builtin_shufflevector(c, d, 1, 5, 3, 7);
+    out[0] = __builtin_shufflevector(t0, t2, 0, 1, 4, 5);
+    out[1] = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
+    out[2] = __builtin_shufflevector(t0, t2, 2, 3, 6, 7);
+#else
+    for (int i = 0; i < 3; i++) out[i] = qc_make(a.e[i], b.e[i], c.e[i], d.e[i]);
+#endif
+}
+
+// The four numbers a, b, c, d of each of the first m rows (lanes), stored
+// at byte offset off of rows[0..m).
+QS_INLINE void qc_store(qs_row *rows, int m, size_t off, qc_v4 a, qc_v4 b, qc_v4 c, qc_v4 d)
+{
+    qc_v4 out[3];
+    qc_transpose(a, b, c, d, out);
+    memcpy((char *)&rows[0] + off, &out[0], sizeof out[0]);
+    if (m > 1) memcpy((char *)&rows[1] + off, &out[1], sizeof out[1]);
+    if (m > 2) memcpy((char *)&rows[2] + off, &out[2], sizeof out[2]);
+}
+
+// The numbers qc_store writes: rhs, cfm, lo, hi together, and J, M, J1, M1
+// (24 numbers) together.
+_Static_assert(offsetof(qs_row, cfm) == sizeof(dReal) &&
+                   offsetof(qs_row, lo) == 2 * sizeof(dReal) &&
+                   offsetof(qs_row, hi) == 3 * sizeof(dReal),
+               "qs_row: rhs, cfm, lo, hi are consecutive");
+_Static_assert(offsetof(qs_row, M) == offsetof(qs_row, J) + 6 * sizeof(dReal) &&
+                   offsetof(qs_row, J1) == offsetof(qs_row, J) + 12 * sizeof(dReal) &&
+                   offsetof(qs_row, M1) == offsetof(qs_row, J) + 18 * sizeof(dReal),
+               "qs_row: J, M, J1, M1 are consecutive");
+
 // A contact's bodies as the solver sees them: inverse mass and world inverse
-// inertia, unconstrained rates (6 numbers as 3 pairs), offsets in fc (the
-// island's dummy for a missing second body).
+// inertia, unconstrained rates, offsets in fc (the island's dummy for a
+// missing second body).
 typedef struct qs_cbodies {
-    int two;
     dReal im0, im1;
     const dReal *I0, *I1;
     const dReal *R0, *R1;
     int o0, o1;
 } qs_cbodies;
 
-QS_INLINE qs_v2 pair(dReal a, dReal b)
+// x = I a for the lanes' a (I: a world inverse inertia, dMatrix3), each
+// entry of I broadcast once: I0 a0 + I1 a1 + I2 a2, in that order.
+QS_INLINE void inertia_lanes(const dReal *I, qc_v4 ax, qc_v4 ay, qc_v4 az, qc_v4 x[3])
 {
-    qs_v2 v;
-    qs_lane(v, 0) = a;
-    qs_lane(v, 1) = b;
-    return v;
+    for (int i = 0; i < 3; i++) {
+        const qc_v4 c0 = qc_splat(I[4 * i]), c1 = qc_splat(I[4 * i + 1]),
+                    c2 = qc_splat(I[4 * i + 2]);
+        x[i] = qc_add(qc_add(qc_mul(c0, ax), qc_mul(c1, ay)), qc_mul(c2, az));
+    }
+}
+
+// The scaled numbers of the contact's m rows into rows[0..m) (lane i: row
+// i along r->d[i]; sor_w the lanes' relaxation factors): D J and M^-1 J^T,
+// rhs = (c fps - J rates) D, cfm = cfm fps D, the bounds (friction: -k..k),
+// as fill_row makes them from row_full's J and M^-1 J^T. two: a second
+// body (else its numbers are zero). The sums are pair_dot's: with p the
+// products of body 0's 6 numbers and q body 1's, the pair
+// (p0 + p2 | p1 + p3) + ((p4 + q0) + (q2 + q4) | (p5 + q1) + (q3 + q5)),
+// (one body: + (p4 | p5)), its two lanes added last.
+QS_INLINE void lanes_rows(const qs_input *in, const qs_cbodies *cb, const dxContactRows *r,
+                          qc_v4 sor_w, int two, qs_row *rows)
+{
+    const int m = r->m;
+    const size_t J = offsetof(qs_row, J), n = sizeof(dReal);
+    qc_v4 d[3];   // the directions' x, y, z (the missing rows' are zero)
+    qc_transpose(qc_load(r->d[0]), qc_load(r->d[1]), qc_load(r->d[2]), qc_splat(0), d);
+    const qc_v4 dx = d[0], dy = d[1], dz = d[2];
+    // Body 0: J = [d, arm0 x d], M^-1 J^T = [im0 d, I0 (arm0 x d)].
+    const qc_v4 A0 = qc_splat(r->arm[0][0]), A1 = qc_splat(r->arm[0][1]),
+                A2 = qc_splat(r->arm[0][2]);
+    const qc_v4 ax = qc_sub(qc_mul(A1, dz), qc_mul(A2, dy));
+    const qc_v4 ay = qc_sub(qc_mul(A2, dx), qc_mul(A0, dz));
+    const qc_v4 az = qc_sub(qc_mul(A0, dy), qc_mul(A1, dx));
+    const qc_v4 im = qc_splat(cb->im0);
+    const qc_v4 m0 = qc_mul(im, dx), m1 = qc_mul(im, dy), m2 = qc_mul(im, dz);
+    qc_v4 ia[3];
+    inertia_lanes(cb->I0, ax, ay, az, ia);
+    const qc_v4 m3 = ia[0], m4 = ia[1], m5 = ia[2];
+    qc_store(rows, m, J + 8 * n, m2, m3, m4, m5);
+    const dReal *R = cb->R0;
+    const qc_v4 ra = qc_add(qc_mul(dx, qc_splat(R[0])), qc_mul(dz, qc_splat(R[2])));
+    const qc_v4 rb = qc_add(qc_mul(dy, qc_splat(R[1])), qc_mul(ax, qc_splat(R[3])));
+    const qc_v4 ma = qc_add(qc_mul(dx, m0), qc_mul(dz, m2));
+    const qc_v4 mb = qc_add(qc_mul(dy, m1), qc_mul(ax, m3));
+    qc_v4 rc = qc_mul(ay, qc_splat(R[4])), rd = qc_mul(az, qc_splat(R[5]));
+    qc_v4 mc = qc_mul(ay, m4), md = qc_mul(az, m5);
+    // Body 1: J = [-d, d x arm1], M^-1 J^T = [im1 (-d), I1 (d x arm1)].
+    qc_v4 lx, ly, lz, bx, by, bz, n0, n1;
+    if (two) {
+        lx = qc_neg(dx);
+        ly = qc_neg(dy);
+        lz = qc_neg(dz);
+        const qc_v4 B0 = qc_splat(r->arm[1][0]), B1 = qc_splat(r->arm[1][1]),
+                    B2 = qc_splat(r->arm[1][2]);
+        bx = qc_sub(qc_mul(dy, B2), qc_mul(dz, B1));
+        by = qc_sub(qc_mul(dz, B0), qc_mul(dx, B2));
+        bz = qc_sub(qc_mul(dx, B1), qc_mul(dy, B0));
+        const qc_v4 im1 = qc_splat(cb->im1);
+        n0 = qc_mul(im1, lx);
+        n1 = qc_mul(im1, ly);
+        const qc_v4 n2 = qc_mul(im1, lz);
+        qc_v4 ib[3];
+        inertia_lanes(cb->I1, bx, by, bz, ib);
+        const qc_v4 n3 = ib[0], n4 = ib[1], n5 = ib[2];
+        qc_store(rows, m, J + 20 * n, n2, n3, n4, n5);
+        const dReal *S = cb->R1;
+        rc = qc_add(qc_add(rc, qc_mul(lx, qc_splat(S[0]))),
+                    qc_add(qc_mul(lz, qc_splat(S[2])), qc_mul(by, qc_splat(S[4]))));
+        rd = qc_add(qc_add(rd, qc_mul(ly, qc_splat(S[1]))),
+                    qc_add(qc_mul(bx, qc_splat(S[3])), qc_mul(bz, qc_splat(S[5]))));
+        mc = qc_add(qc_add(mc, qc_mul(lx, n0)), qc_add(qc_mul(lz, n2), qc_mul(by, n4)));
+        md = qc_add(qc_add(md, qc_mul(ly, n1)), qc_add(qc_mul(bx, n3), qc_mul(bz, n5)));
+    } else {
+        lx = ly = lz = bx = by = bz = n0 = n1 = qc_splat(0);
+    }
+    const qc_v4 rate = qc_add(qc_add(ra, rc), qc_add(rb, rd));
+    const qc_v4 ms = qc_add(qc_add(ma, mc), qc_add(mb, md));
+    const qc_v4 fps = qc_splat(in->fps);
+    const qc_v4 cfm = qc_mul(qc_load(r->cfm), fps);
+    const qc_v4 D = qc_factor(ms, cfm, sor_w);
+    qc_store(rows, m, 0, qc_mul(qc_sub(qc_mul(qc_load(r->c), fps), rate), D), qc_mul(cfm, D),
+             qc_load(r->lo), qc_load(r->hi));
+    qc_store(rows, m, J, qc_mul(D, dx), qc_mul(D, dy), qc_mul(D, dz), qc_mul(D, ax));
+    qc_store(rows, m, J + 4 * n, qc_mul(D, ay), qc_mul(D, az), m0, m1);
+    if (two) {
+        qc_store(rows, m, J + 12 * n, qc_mul(D, lx), qc_mul(D, ly), qc_mul(D, lz), qc_mul(D, bx));
+        qc_store(rows, m, J + 16 * n, qc_mul(D, by), qc_mul(D, bz), n0, n1);
+    } else {
+        for (int i = 0; i < m; i++) memset(rows[i].J1, 0, 12 * sizeof(dReal));   // J1, M1
+    }
 }
 
 QS_INLINE qs_v2 load_pair(const dReal *p)
@@ -45,85 +287,65 @@ QS_INLINE qs_v2 load_pair(const dReal *p)
     return v;
 }
 
-// M^-1 J^T of a body's half of a linear row: im l (l the linear part) and
-// I a (a the angular part), as pairs.
-QS_INLINE void half_response(dReal im, const dReal *I, const dReal *l, const dReal *a, qs_v2 *M)
+// fc += M^-1 J^T l of the body at fc for the m rows (their numbers for
+// that body at byte offset off of a row: M or M1) with l[i] nonzero, in row
+// order (warm_apply's start_row, row by row: the same sums), fc as a four
+// and a pair.
+QS_INLINE void start_body(dReal *fc, const qs_row *rows, int m, size_t off, const dReal *l)
 {
-    M[0] = pair(im * l[0], im * l[1]);
-    M[1] = pair(im * l[2], I[0] * a[0] + I[1] * a[1] + I[2] * a[2]);
-    M[2] = pair(I[4] * a[0] + I[5] * a[1] + I[6] * a[2], I[8] * a[0] + I[9] * a[1] + I[10] * a[2]);
+    qc_v4 a = qc_load(fc);
+    qs_v2 b = load_pair(fc + 4);
+    for (int i = 0; i < m; i++) {
+        if (l[i] == 0) continue;
+        const dReal *M = (const dReal *)((const char *)&rows[i] + off);
+        a = qc_add(a, qc_mul(qc_splat(l[i]), qc_load(M)));
+        b = qs_add(b, qs_mul(qs_splat(l[i]), load_pair(M + 4)));
+    }
+    memcpy(fc, &a, sizeof a);
+    memcpy(fc + 4, &b, sizeof b);
 }
 
-// Row q from the contact row along d (target velocity c, cfm, factor sor_w),
-// its lambda position pos: D J and M^-1 J^T, the scaled rhs and cfm, as
-// fill_row makes them (bounds and f are the caller's).
-QS_INLINE void contact_row(const qs_input *in, const qs_cbodies *cb, const dxContactRows *r,
-                           const dReal *d, dReal c, dReal cfm_row, dReal sor_w, int pos,
-                           qs_row *q)
+// The rows of a contact (r: m rows, lambda positions from sys->next on)
+// appended to the system, in its order, with their bounds' f: friction rows
+// bounded by the normal force (pyramid) take the normal row's lambda, the
+// others the constant 1. warm: the rows' starting forces (lambda and fc
+// then start there; the normal row is relaxed with 1), or NULL.
+QS_CONTACT_CLONES static void append_rows(const qs_input *in, const qs_cbodies *cb,
+                                          const dxContactRows *r, const dReal *warm,
+                                          qs_system *sys)
 {
-    dVector3 a;
-    dCalcVectorCross3(a, r->arm[0], d);
-    const qs_v2 J[3] = { pair(d[0], d[1]), pair(d[2], a[0]), pair(a[1], a[2]) };
-    qs_v2 M[3];
-    half_response(cb->im0, cb->I0, d, a, M);
-    const dReal *R = cb->R0;
-    // pair_dot's sums: (p0 + p1) + ((p2 + p3) + (p4 + p5)), p3..p5 of body 1.
-    const qs_v2 r01 = qs_add(qs_mul(J[0], load_pair(R)), qs_mul(J[1], load_pair(R + 2)));
-    const qs_v2 m01 = qs_add(qs_mul(J[0], M[0]), qs_mul(J[1], M[1]));
-    qs_v2 r2 = qs_mul(J[2], load_pair(R + 4)), m2 = qs_mul(J[2], M[2]);
-    qs_v2 J1[3], M1[3];
-    if (cb->two) {
-        dVector3 l, a1;
-        dCopyNegatedVector3(l, d);
-        dCalcVectorCross3(a1, d, r->arm[1]);
-        J1[0] = pair(l[0], l[1]);
-        J1[1] = pair(l[2], a1[0]);
-        J1[2] = pair(a1[1], a1[2]);
-        half_response(cb->im1, cb->I1, l, a1, M1);
-        const dReal *R1 = cb->R1;
-        r2 = qs_add(qs_add(r2, qs_mul(J1[0], load_pair(R1))),
-                    qs_add(qs_mul(J1[1], load_pair(R1 + 2)), qs_mul(J1[2], load_pair(R1 + 4))));
-        m2 = qs_add(qs_add(m2, qs_mul(J1[0], M1[0])),
-                    qs_add(qs_mul(J1[1], M1[1]), qs_mul(J1[2], M1[2])));
-    } else {
-        J1[0] = J1[1] = J1[2] = M1[0] = M1[1] = M1[2] = qs_splat(0);
+    const int m = r->m, first = sys->next, one = sys->m, nrows = sys->nrows;
+    qs_row *rows = sys->rows + nrows;
+    const dReal w = in->sor_w;
+    const qc_v4 sor_w = qc_make(warm ? 1 : w, w, w, w);
+    const int two = r->arm[1] != NULL;
+    if (two) lanes_rows(in, cb, r, sor_w, 1, rows);
+    else lanes_rows(in, cb, r, sor_w, 0, rows);
+    int *row_pos = sys->row_pos + nrows, *row_f = sys->row_f + nrows;
+    int *order = sys->order + sys->norder;
+    for (int i = 0; i < m; i++) {
+        qs_row *q = &rows[i];
+        const int f = r->pyramid[i] ? first : one;
+        q->o0 = cb->o0;
+        q->o1 = cb->o1;
+        q->pos = first + i;
+        q->f = f;
+        q->g = NULL;
+        q->gfirst = 0;
+        q->gn = 0;
+        q->two = (short)two;
+        row_pos[i] = first + i;
+        row_f[i] = f;
+        order[i] = nrows + i;
     }
-    const qs_v2 rs = qs_add(r01, r2), ms = qs_add(m01, m2);
-    const dReal rate = qs_lane(rs, 0) + qs_lane(rs, 1), cfm = cfm_row * in->fps;
-    const double diag = (double)(qs_lane(ms, 0) + qs_lane(ms, 1)) + cfm;
-    // A zero diagonal (an empty row without cfm) leaves the row's force at 0.
-    const dReal D = diag > 0 ? (dReal)(sor_w / diag) : 0;
-    const qs_v2 dd = qs_splat(D);
-    for (int e = 0; e < 3; e++) {
-        q->J[e] = qs_mul(dd, J[e]);
-        q->M[e] = M[e];
-        q->J1[e] = qs_mul(dd, J1[e]);
-        q->M1[e] = M1[e];
-    }
-    q->g = NULL;
-    q->gn = 0;
-    q->gfirst = 0;
-    q->two = (short)cb->two;
-    q->rhs = (c * in->fps - rate) * D;
-    q->cfm = cfm * D;
-    q->pos = pos;
-    q->o0 = cb->o0;
-    q->o1 = cb->o1;
-}
-
-// lambda[q->pos] = l and fc += M^-1 J^T l (warm_apply's start_row).
-QS_INLINE void start_row(const qs_row *q, dReal l, qs_system *sys)
-{
-    if (l == 0) return;
-    sys->lambda[q->pos] = l;
-    const qs_v2 k = qs_splat(l);
-    dReal *f0 = sys->fc + q->o0, *f1 = sys->fc + q->o1;
-    for (int e = 0; e < 3; e++) {
-        const qs_v2 x = qs_add(load_pair(f0 + 2 * e), qs_mul(k, q->M[e]));
-        const qs_v2 y = qs_add(load_pair(f1 + 2 * e), qs_mul(k, q->M1[e]));
-        memcpy(f0 + 2 * e, &x, sizeof x);
-        memcpy(f1 + 2 * e, &y, sizeof y);
-    }
+    sys->nrows = nrows + m;
+    sys->norder += m;
+    sys->next = first + m;
+    if (!warm) return;
+    for (int i = 0; i < m; i++)
+        if (warm[i] != 0) sys->lambda[first + i] = warm[i];
+    start_body(sys->fc + cb->o0, rows, m, offsetof(qs_row, M), warm);
+    if (two) start_body(sys->fc + cb->o1, rows, m, offsetof(qs_row, M1), warm);
 }
 
 int dxQuickContactIsDirect(const dxJoint *j)
@@ -141,7 +363,6 @@ void dxQuickContact(const qs_input *in, dxJoint *j, qs_system *sys)
     const struct dxBody *b0 = dxJointBody(j, 0), *b1 = dxJointBody(j, 1);
     const dxIslandBodies *bd = in->bd;
     qs_cbodies cb;
-    cb.two = b1 != NULL;
     cb.im0 = bd->inv_mass[b0->tag];
     cb.I0 = bd->inv_inertia + 12 * b0->tag;
     cb.R0 = in->rates + 6 * b0->tag;
@@ -159,45 +380,24 @@ void dxQuickContact(const qs_input *in, dxJoint *j, qs_system *sys)
     qs_warm_entry *entry =
         dxQuickWarmContact(sys->warm, b0, b1, r.point, r.n, t1 > 0 ? r.d[t1] : zero,
                            t2 > 0 ? r.d[t2] : zero, &found, &ln, f);
-
     const int first = sys->next;
-    qs_row *rows = sys->rows + sys->nrows;
-    for (int i = 0; i < r.m; i++) {
-        qs_row *q = &rows[i];
-        const dReal sor_w = found && i == 0 ? 1 : in->sor_w;
-        contact_row(in, &cb, &r, r.d[i], r.c[i], r.cfm[i], sor_w, first + i, q);
-        if (i > 0 && r.pyramid[i] && r.k[i] < dInfinity) {
-            // Friction: -+k times the normal force.
-            q->hi = r.k[i];
-            q->lo = -q->hi;
-            q->f = first;
-        } else {
-            q->lo = i > 0 ? -r.k[i] : 0;
-            q->hi = i > 0 ? r.k[i] : dInfinity;
-            q->f = sys->m;
-        }
-        sys->row_pos[sys->nrows + i] = q->pos;
-        sys->row_f[sys->nrows + i] = q->f;
-        sys->order[sys->norder++] = sys->nrows + i;
-    }
-    sys->nrows += r.m;
-    sys->next += r.m;
-
     const int p[3] = { first, t1 > 0 ? first + t1 : -1, t2 > 0 ? first + t2 : -1 };
     dxQuickWarmPositions(entry, p);
-    if (!found) return;
+    if (!found) {
+        append_rows(in, &cb, &r, NULL, sys);
+        return;
+    }
     // The last step's forces, scaled and projected on this step's bounds.
-    const dReal lnw = WARM_SCALE * (ln > 0 ? ln : 0);
-    start_row(&rows[0], lnw, sys);
+    dReal l[3];
+    l[0] = WARM_SCALE * (ln > 0 ? ln : 0);
     for (int i = 1; i < r.m; i++) {
-        const dReal *t = r.d[i];
-        dReal lo = rows[i].lo, hi = rows[i].hi;
-        if (rows[i].f == first) {
-            hi = r.k[i] * lnw;
+        dReal lo = r.lo[i], hi = r.hi[i];
+        if (r.pyramid[i]) {
+            hi = r.hi[i] * l[0];
             lo = -hi;
         }
-        dReal l = WARM_SCALE * dCalcVectorDot3(f, t);
-        l = l > hi ? hi : l < lo ? lo : l;
-        start_row(&rows[i], l, sys);
+        const dReal li = WARM_SCALE * dCalcVectorDot3(f, r.d[i]);
+        l[i] = li > hi ? hi : li < lo ? lo : li;
     }
+    append_rows(in, &cb, &r, l, sys);
 }

@@ -78,11 +78,14 @@ typedef struct dxContactRows {
     int m;                    // 1..3
     int friction;             // as dxJointContactWarmInfo returns it
     dVector3 n, t1, t2;       // stored sense (t1, t2 even where their rows are absent)
-    const dReal *d[3];
+    const dReal *d[3];        // row i's direction (from row m on: a zero dVector3)
     const dReal *arm[2];      // the lever arms (world frame); arm[1] NULL: no body 1
     const dReal *point;       // the contact point (world frame)
-    dReal c[3], cfm[3], k[3]; // k[0] unused
-    int pyramid[3];
+    // Per row (fours, so that the rows can be made together; 0 from row m
+    // on): target velocity, cfm, bounds (the normal row 0..inf, a friction
+    // row -k..k for its coefficient k, times the normal force if pyramid).
+    dReal c[4], cfm[4], lo[4], hi[4];
+    int pyramid[3];           // bounded by the normal force (k finite)
 } dxContactRows;
 // 1 if j is a live contact whose rows are all in dxContactRows: no rolling
 // friction, and not both friction rows unbounded (the generic path solves
