@@ -3,9 +3,10 @@
 // chain_bullet.cpp -- the chain scene (chain.c) for Bullet: the same capsules (with ODE's
 // capsule inertia), point-to-point constraints at the same anchors, dt 1/100, gravity 9.81.
 //
-// `chain_bullet links=100 steps=300 stepper=quick|world iterations=20`: stepper=quick is the
+// `chain_bullet links=100 steps=300 stepper=quick|world iterations=20 seed=N`: stepper=quick is the
 // sequential-impulse solver with the given iterations, stepper=world the direct MLCP solver
-// with the Dantzig LCP (Bullet's counterpart of dWorldStep). Prints the same key=value line.
+// with the Dantzig LCP (Bullet's counterpart of dWorldStep); seed=N tilts the release down as
+// chain.c does. Prints the same key=value line.
 
 #include "bench_bullet.h"
 
@@ -38,7 +39,8 @@ int main(int argc, char **argv)
     const int steps = (int)bench_arg_int(&args, "steps", 300);
     const int iterations = (int)bench_arg_int(&args, "iterations", 20);
     const char *stepper = bench_arg_str(&args, "stepper", "world");
-    bench_args_check(&args, "[links=N] [steps=N] [stepper=world|quick] [iterations=N]");
+    const long seed = bench_arg_int(&args, "seed", 0);   // 0: not given, horizontal
+    bench_args_check(&args, "[links=N] [steps=N] [stepper=world|quick] [iterations=N] [seed=N]");
     const bool direct = strcmp(stepper, "world") == 0;
     if (!direct && strcmp(stepper, "quick") != 0) {
         fprintf(stderr, "%s: stepper is world or quick, not '%s'\n", argv[0], stepper);
@@ -52,10 +54,16 @@ int main(int argc, char **argv)
     const btVector3 inertia = capsule_inertia(MASS, RADIUS, LINK - 2 * RADIUS);
     const btVector3 half(btScalar(LINK / 2), 0, 0);
     std::vector<btPoint2PointConstraint *> joints;
+    // The links along x, or turned about y so that x points down by `tilt` (chain.c's draw).
+    bench_rng rng = bench_rng_init((unsigned long long)seed);
+    const double tilt = seed ? bench_rand(&rng, 0, 2 * M_PI / 180) : 0;
+    const double dx = cos(tilt), dz = seed ? -sin(tilt) : 0;
     btTransform at;
     at.setIdentity();
+    at.setRotation(btQuaternion(btVector3(0, 1, 0), btScalar(tilt)));
     for (int i = 0; i < links; i++) {
-        at.setOrigin(btVector3(btScalar((i + 0.5) * LINK), 0, 0));
+        const double along = (i + 0.5) * LINK;
+        at.setOrigin(btVector3(btScalar(along * dx), 0, btScalar(along * dz)));
         btRigidBody *b = w.body(capsule, MASS, at, inertia);
         btPoint2PointConstraint *c;
         if (i == 0)
@@ -66,7 +74,7 @@ int main(int argc, char **argv)
         joints.push_back(c);
     }
 
-    double total_s = 0, max_pen = 0, sep_max = 0, sep_end = 0;
+    double total_s = 0, max_pen = 0, sep_max = 0, sep_end = 0, sep_sum = 0;
     long contacts = 0;
     for (int s = 0; s < steps; s++) {
         bench_count_on();
@@ -80,6 +88,7 @@ int main(int argc, char **argv)
         for (const btPoint2PointConstraint *c : joints)
             if (separation(c) > sep_end) sep_end = separation(c);
         if (sep_end > sep_max) sep_max = sep_end;
+        sep_sum += sep_end;
     }
 
     double ke = 0;
@@ -87,8 +96,9 @@ int main(int argc, char **argv)
     const double tip_z = w.bodies.back()->getCenterOfMassPosition().z();
     bench_report("chain", BENCH_ENGINE, direct ? "world" : "quick", links, steps,
                  w.world->coll_s, total_s - w.world->coll_s,
-                 "iterations=%d max_pen=%.6f joint_sep=%.6f joint_sep_end=%.6f ke_end=%.6g "
-                 "tip_z=%.4f contacts_per_step=%.1f",
-                 iterations, max_pen, sep_max, sep_end, ke, tip_z, (double)contacts / steps);
+                 "iterations=%d max_pen=%.6f joint_sep=%.6f joint_sep_end=%.6f joint_sep_mean=%.6f "
+                 "ke_end=%.6g tip_z=%.4f contacts_per_step=%.1f",
+                 iterations, max_pen, sep_max, sep_end, sep_sum / steps, ke, tip_z,
+                 (double)contacts / steps);
     return 0;
 }

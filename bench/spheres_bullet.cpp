@@ -20,7 +20,8 @@ int main(int argc, char **argv)
     const int count = (int)bench_arg_int(&args, "count", 2000);
     const int steps = (int)bench_arg_int(&args, "steps", 300);
     const int iterations = (int)bench_arg_int(&args, "iterations", 20);
-    bench_args_check(&args, "[count=N] [steps=N] [iterations=N]");
+    const long seed = bench_arg_int(&args, "seed", 5);
+    bench_args_check(&args, "[count=N] [steps=N] [iterations=N] [seed=N]");
     const btScalar dt = btScalar(1.0 / 60.0);
 
     BenchWorld w(0.8, iterations, false);
@@ -45,7 +46,7 @@ int main(int argc, char **argv)
     const size_t first = w.bodies.size();
 
     btCollisionShape *sphere = w.shape(new btSphereShape(btScalar(RADIUS)));
-    bench_rng rng = bench_rng_init(5);
+    bench_rng rng = bench_rng_init((unsigned long long)seed);
     for (int i = 0; i < count; i++) {
         const int layer = i / (PER_ROW * PER_ROW), cell = i % (PER_ROW * PER_ROW);
         const double x = (cell % PER_ROW - 0.5 * (PER_ROW - 1)) * PITCH +
