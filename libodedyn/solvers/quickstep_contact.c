@@ -31,9 +31,12 @@ int dxQuickContactDirect = 1;
 // Built for AVX2 and for the baseline where the compiler can pick a version
 // when the library is loaded (GNU ifunc: x86-64, ELF, glibc), as the sweeps
 // (quickstep_sweep.c); the same numbers either way. -DQS_CONTACT_CLONES=
-// builds the baseline alone.
-#if !defined(QS_CONTACT_CLONES) && defined(__GNUC__) && defined(__x86_64__) && \
-    defined(__ELF__) && defined(__GLIBC__) && defined(__has_attribute)
+// builds the baseline alone. Clang (14) refuses the fours passed between the
+// inlined functions of the baseline clone ("AVX vector argument ... changes
+// the ABI", an error there), so it builds the baseline alone, as box-box does
+// (collide_box.c).
+#if !defined(QS_CONTACT_CLONES) && !defined(__clang__) && defined(__GNUC__) && \
+    defined(__x86_64__) && defined(__ELF__) && defined(__GLIBC__) && defined(__has_attribute)
 #if __has_attribute(target_clones)
 #define QS_CONTACT_CLONES __attribute__((target_clones("avx2", "default")))
 #endif
