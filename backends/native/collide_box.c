@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "collide_math.h"
+#include "../../libodedyn/core/dx_clones.h"
 
 // The edge axes of (nearly) parallel edges are (nearly) zero vectors: their
 // separation test allows this margin (relative to the box sizes) for rounding.
@@ -48,23 +49,11 @@
 // refuses the fours passed between the inlined functions of the baseline
 // clone ("AVX vector argument ... changes the ABI", an error there), so it
 // builds the baseline alone: the same numbers.
-#if !defined(BOX_CLONES) && !defined(__clang__) && defined(__GNUC__) && defined(__x86_64__) && \
-    defined(__ELF__) && defined(__GLIBC__) && defined(__has_attribute)
-#if __has_attribute(target_clones)
-#define BOX_CLONES __attribute__((target_clones("avx2", "default")))
-#endif
+#if !defined(BOX_CLONES) && !defined(__clang__) && defined(DX_AVX2_CLONES)
+#define BOX_CLONES DX_AVX2_CLONES
 #endif
 #ifndef BOX_CLONES
 #define BOX_CLONES
-#endif
-// The functions that take or return fours are all inlined: no call passes
-// them, so the baseline's ABI note about them does not apply.
-#if defined(__clang__)
-#if __has_warning("-Wpsabi")
-#pragma clang diagnostic ignored "-Wpsabi"
-#endif
-#elif defined(__GNUC__)
-#pragma GCC diagnostic ignored "-Wpsabi"
 #endif
 
 // Fours of numbers (GNU vector extensions: one AVX operation in the AVX2

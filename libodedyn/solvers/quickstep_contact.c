@@ -22,6 +22,7 @@
 // transpose per four consecutive numbers of qs_row).
 
 #include "quickstep.h"
+#include "dx_clones.h"
 
 #include <stddef.h>
 #include <string.h>
@@ -35,23 +36,11 @@ int dxQuickContactDirect = 1;
 // inlined functions of the baseline clone ("AVX vector argument ... changes
 // the ABI", an error there), so it builds the baseline alone, as box-box does
 // (collide_box.c).
-#if !defined(QS_CONTACT_CLONES) && !defined(__clang__) && defined(__GNUC__) && \
-    defined(__x86_64__) && defined(__ELF__) && defined(__GLIBC__) && defined(__has_attribute)
-#if __has_attribute(target_clones)
-#define QS_CONTACT_CLONES __attribute__((target_clones("avx2", "default")))
-#endif
+#if !defined(QS_CONTACT_CLONES) && !defined(__clang__) && defined(DX_AVX2_CLONES)
+#define QS_CONTACT_CLONES DX_AVX2_CLONES
 #endif
 #ifndef QS_CONTACT_CLONES
 #define QS_CONTACT_CLONES
-#endif
-// The functions that take or return fours are all inlined: no call passes
-// them, so the baseline's ABI note about them does not apply.
-#if defined(__clang__)
-#if __has_warning("-Wpsabi")
-#pragma clang diagnostic ignored "-Wpsabi"
-#endif
-#elif defined(__GNUC__)
-#pragma GCC diagnostic ignored "-Wpsabi"
 #endif
 
 // Fours of numbers, one lane per row (GNU vector extensions: one AVX

@@ -10,29 +10,18 @@
 // only on one body or two.
 
 #include "quickstep.h"
+#include "dx_clones.h"
 
 #include <string.h>
 
 // The sweeps are built twice where the compiler can pick a version when the
 // library is loaded (GNU ifunc: x86-64, ELF, glibc): for AVX2 and for the
 // baseline. (-DQS_SWEEP_CLONES= builds the baseline alone, to compare the two.)
-#if !defined(QS_SWEEP_CLONES) && defined(__GNUC__) && defined(__x86_64__) && \
-    defined(__ELF__) && defined(__GLIBC__) && defined(__has_attribute)
-#if __has_attribute(target_clones)
-#define QS_SWEEP_CLONES __attribute__((target_clones("avx2", "default")))
-#endif
+#if !defined(QS_SWEEP_CLONES) && defined(DX_AVX2_CLONES)
+#define QS_SWEEP_CLONES DX_AVX2_CLONES
 #endif
 #ifndef QS_SWEEP_CLONES
 #define QS_SWEEP_CLONES
-#endif
-// The functions that take or return fours are all inlined into the sweeps:
-// no call passes them, so the baseline's ABI note about them does not apply.
-#if defined(__clang__)
-#if __has_warning("-Wpsabi")
-#pragma clang diagnostic ignored "-Wpsabi"
-#endif
-#elif defined(__GNUC__)
-#pragma GCC diagnostic ignored "-Wpsabi"
 #endif
 
 // The rows are read in a random order that hardware prefetchers cannot
