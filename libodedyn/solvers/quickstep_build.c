@@ -162,12 +162,22 @@ static dReal row_full(const qs_jrows *jr, int i, qs_v2 *Jo, qs_v2 *Mo)
 
 // ---- blocks --------------------------------------------------------------------
 
+// Unroll the next loop completely: the block's sizes are constants after
+// inlining, and without it the compiler keeps the loops of the larger ones.
+#if defined(__clang__)
+#define UNROLL _Pragma("unroll")
+#elif defined(__GNUC__)
+#define UNROLL _Pragma("GCC unroll 8")
+#else
+#define UNROLL
+#endif
+
 // The block's matrix B = J M^-1 J^T + cfm/h (n x n, row-major).
 QS_INLINE void block_matrix(const qs_v2 *J, const qs_v2 *iMJ, const dReal *cfm, int n,
                              double *B)
 {
-    for (int a = 0; a < n; a++) {
-        for (int c = 0; c < a; c++) B[a * n + c] = B[c * n + a] = dot12(J + 6 * a, iMJ + 6 * c);
+    UNROLL for (int a = 0; a < n; a++) {
+        UNROLL for (int c = 0; c < a; c++) B[a * n + c] = B[c * n + a] = dot12(J + 6 * a, iMJ + 6 * c);
         B[a * n + a] = dot12(J + 6 * a, iMJ + 6 * a) + cfm[a];
     }
 }
@@ -177,10 +187,10 @@ QS_INLINE void block_matrix(const qs_v2 *J, const qs_v2 *iMJ, const dReal *cfm, 
 // safely positive definite.
 QS_INLINE int cholesky(const double *B, int n, double *L)
 {
-    for (int i = 0; i < n; i++) {
-        for (int j = 0; j <= i; j++) {
+    UNROLL for (int i = 0; i < n; i++) {
+        UNROLL for (int j = 0; j <= i; j++) {
             double s = B[i * n + j];
-            for (int k = 0; k < j; k++) s -= L[i * n + k] * L[j * n + k];
+            UNROLL for (int k = 0; k < j; k++) s -= L[i * n + k] * L[j * n + k];
             if (i == j) {
                 if (!(s > PIVOT_EPS * B[i * n + i])) return 0;
                 L[i * n + i] = 1 / sqrt(s);
@@ -195,12 +205,12 @@ QS_INLINE int cholesky(const double *B, int n, double *L)
 // x = B^-1 x with B = L L^T.
 QS_INLINE void cholesky_solve(const double *L, int n, double *x)
 {
-    for (int i = 0; i < n; i++) {
-        for (int k = 0; k < i; k++) x[i] -= L[i * n + k] * x[k];
+    UNROLL for (int i = 0; i < n; i++) {
+        UNROLL for (int k = 0; k < i; k++) x[i] -= L[i * n + k] * x[k];
         x[i] *= L[i * n + i];
     }
-    for (int i = n - 1; i >= 0; i--) {
-        for (int k = i + 1; k < n; k++) x[i] -= L[k * n + i] * x[k];
+    UNROLL for (int i = n - 1; i >= 0; i--) {
+        UNROLL for (int k = i + 1; k < n; k++) x[i] -= L[k * n + i] * x[k];
         x[i] *= L[i * n + i];
     }
 }
@@ -222,22 +232,22 @@ QS_INLINE void scaled_inverse(const double *L, int n, dReal sor_w, dReal *Ainv)
     const int w = QS_PAD(n);
     // Linv = L^-1 (lower).
     double Linv[QS_MAX_BLOCK * QS_MAX_BLOCK];
-    for (int j = 0; j < n; j++) {
+    UNROLL for (int j = 0; j < n; j++) {
         Linv[j * n + j] = L[j * n + j];
-        for (int i = j + 1; i < n; i++) {
+        UNROLL for (int i = j + 1; i < n; i++) {
             double s = 0;
-            for (int k = j; k < i; k++) s += L[i * n + k] * Linv[k * n + j];
+            UNROLL for (int k = j; k < i; k++) s += L[i * n + k] * Linv[k * n + j];
             Linv[i * n + j] = -s * L[i * n + i];
         }
     }
     // sor_w B^-1 = sor_w Linv^T Linv.
-    for (int i = 0; i < n; i++) {
-        for (int j = 0; j <= i; j++) {
+    UNROLL for (int i = 0; i < n; i++) {
+        UNROLL for (int j = 0; j <= i; j++) {
             double s = 0;
-            for (int k = i; k < n; k++) s += Linv[k * n + i] * Linv[k * n + j];
+            UNROLL for (int k = i; k < n; k++) s += Linv[k * n + i] * Linv[k * n + j];
             Ainv[i * w + j] = Ainv[j * w + i] = (dReal)(sor_w * s);
         }
-        for (int j = n; j < w; j++) Ainv[i * w + j] = 0;
+        UNROLL for (int j = n; j < w; j++) Ainv[i * w + j] = 0;
     }
 }
 
@@ -345,17 +355,17 @@ static qs_block *make_blocks(dxArena *a, const qs_input *in, const qs_jrows *jr,
 QS_INLINE const dReal *couple_n(qs_jblock *jb, int n, qs_v2 *iMJ, double *diag)
 {
     double c[QS_MAX_BLOCK], t[QS_MAX_BLOCK];
-    for (int k = 0; k < n; k++) t[k] = c[k] = dot12(jb->J + 6 * k, iMJ);
+    UNROLL for (int k = 0; k < n; k++) t[k] = c[k] = dot12(jb->J + 6 * k, iMJ);
     cholesky_solve(jb->L, n, t);
     double schur = *diag;
-    for (int k = 0; k < n; k++) schur -= c[k] * t[k];
+    UNROLL for (int k = 0; k < n; k++) schur -= c[k] * t[k];
     if (!(schur > PIVOT_EPS * *diag)) return NULL;
     dReal *g = jb->g;
     jb->g += n;
-    for (int k = 0; k < n; k++) {
+    UNROLL for (int k = 0; k < n; k++) {
         g[k] = (dReal)-t[k];
         const qs_v2 gk = qs_splat(g[k]);
-        for (int e = 0; e < 6; e++) iMJ[e] = qs_add(iMJ[e], qs_mul(gk, jb->iMJ[6 * k + e]));
+        UNROLL for (int e = 0; e < 6; e++) iMJ[e] = qs_add(iMJ[e], qs_mul(gk, jb->iMJ[6 * k + e]));
     }
     *diag = schur;
     return g;
