@@ -23,6 +23,7 @@ typedef struct dxJointUniversal {
     dVector3 axis[2];            // axis k in the frame of user body k+1 (or world)
     int axes_reversed;           // DX_JOINT_REVERSE when the axes were stored
     dQuaternion qrel;            // r0 = conj(q2) q1 at zero angles (user bodies)
+    dVector3 e1, n;              // the angles' frame (e1, axis 2, n) from qrel and the axes
     dxLimot limot[2];
 } dxJointUniversal;
 
@@ -59,25 +60,31 @@ static dReal angle_from_pairs(dReal w, dReal x, dReal y, dReal z)
     return theta;
 }
 
+// The frame the angles are measured in (body 2's): with a1' = r0 a1 conj(r0)
+// and a2, n = a2 x a1' normalised and e1 = n x a2, orthonormal in case the
+// axes were set not quite perpendicular. It depends only on qrel and the
+// axes: made again whenever they change.
+static void set_frame(dxJointUniversal *u)
+{
+    dMatrix3 R0;
+    dVector3 a1;
+    dRfromQ(R0, u->qrel);
+    dMultiply0_331(a1, R0, u->axis[0]);   // a1' in body 2's frame
+    dCalcVectorCross3(u->n, u->axis[1], a1);
+    if (!dSafeNormalize3(u->n)) dPlaneSpace(u->axis[1], u->n, u->e1);
+    dCalcVectorCross3(u->e1, u->n, u->axis[1]);
+}
+
 // The two angles (-pi..pi); see the file comment. With
 // D = Q(a2, t2) Q(a1', t1) = c1c2 + c2 s1 a1' + c1 s2 a2 + s1 s2 (a2 x a1')
 // for perpendicular unit a1', a2 (c = cos(t/2), s = sin(t/2)).
 static void universal_angles(const dxJointUniversal *u, dReal *angle1, dReal *angle2)
 {
     dQuaternion r, d;
-    dMatrix3 R0;
-    dVector3 a1, a2, n, e1;
     user_relative_quaternion(&u->base, r);
     dQMultiply2(d, r, u->qrel);
-    dRfromQ(R0, u->qrel);
-    dMultiply0_331(a1, R0, u->axis[0]);   // a1' in body 2's frame
-    dCopyVector3(a2, u->axis[1]);
-    // Make the frame orthonormal in case the axes were set not quite perpendicular.
-    dCalcVectorCross3(n, a2, a1);
-    if (!dSafeNormalize3(n)) dPlaneSpace(a2, n, e1);
-    dCalcVectorCross3(e1, n, a2);
-    const dReal w = d[0], x1 = dCalcVectorDot3(d + 1, e1), x2 = dCalcVectorDot3(d + 1, a2);
-    const dReal xn = dCalcVectorDot3(d + 1, n);
+    const dReal w = d[0], x1 = dCalcVectorDot3(d + 1, u->e1);
+    const dReal x2 = dCalcVectorDot3(d + 1, u->axis[1]), xn = dCalcVectorDot3(d + 1, u->n);
     *angle1 = angle_from_pairs(w, x1, x2, xn);   // c2 (c1, s1) and s2 (c1, s1)
     *angle2 = angle_from_pairs(w, x2, x1, xn);   // c1 (c2, s2) and s1 (c2, s2)
 }
@@ -101,6 +108,7 @@ static void universal_init(dxJoint *j)
     u->axis[0][0] = 1;
     u->axis[1][1] = 1;
     dQSetIdentity(u->qrel);
+    set_frame(u);
     dxLimotInit(&u->limot[0], j->world);
     dxLimotInit(&u->limot[1], j->world);
 }
@@ -173,6 +181,7 @@ static void universal_attached(dxJoint *j)
     dJointGetUniversalAnchor(j, p);
     dxJointSetAnchors(j, p[0], p[1], p[2], u->anchor1, u->anchor2);
     user_relative_quaternion(j, u->qrel);
+    set_frame(u);
 }
 
 static const dxJointClass universal_class = {
@@ -197,6 +206,7 @@ void dJointSetUniversalAnchor(dJointID j, dReal x, dReal y, dReal z)
     if (!dxJointBody(j, 0)) return;
     dxJointSetAnchors(j, x, y, z, u->anchor1, u->anchor2);
     user_relative_quaternion(j, u->qrel);
+    set_frame(u);
 }
 
 // Store world direction (x,y,z) as axis k in the frame of user body k+1.
@@ -212,6 +222,7 @@ static int set_axis(dxJoint *j, const char *function, int k, dReal x, dReal y, d
                          : dxJointSetAxes(j, function, x, y, z, unused, u->axis[k]);
     if (!ok || !dxJointBody(j, 0)) return 0;
     user_relative_quaternion(j, u->qrel);
+    set_frame(u);
     return 1;
 }
 
@@ -237,6 +248,7 @@ static void set_offsets(dxJointUniversal *u, dReal offset1, dReal offset2)
     dQFromAxisAndAngle(turn2, a2[0], a2[1], a2[2], -offset2);
     dQMultiply0(t, u->qrel, turn1);
     dQMultiply0(u->qrel, turn2, t);
+    set_frame(u);
 }
 
 void dJointSetUniversalAxis1Offset(dJointID j, dReal x, dReal y, dReal z, dReal offset1,
