@@ -77,6 +77,21 @@ static inline void midpoint_jacobian(const dReal *I, int diag, const dReal *m, c
     }
 }
 
+// x scaled back to w's energy if it has more (an iteration that did not
+// converge, a huge spin for the step, or rounding), or set to w if it is not
+// finite: the term never adds energy.
+static inline void keep_energy(const dReal *I, int diag, const dReal *w, dReal *x)
+{
+    dVector3 Iw, Ix;
+    inertia_times(I, diag, w, Iw);
+    inertia_times(I, diag, x, Ix);
+    const dReal e0 = dCalcVectorDot3(w, Iw), e1 = dCalcVectorDot3(x, Ix);
+    if (!(e1 <= e0)) {
+        if (e1 > 0 && dxIsFinite(e1)) dScaleVector3(x, dSqrt(e0 / e1));
+        else dCopyVector3(x, w);
+    }
+}
+
 // The torque-free motion of a body over one step, in the body frame: the
 // implicit midpoint rule for Euler's equation,
 //   I (x - w) + h m x (I m) = 0,   m = (w + x) / 2,
@@ -117,14 +132,38 @@ static inline void gyroscopic_midpoint(const dReal *I, int diag, const dReal *w,
         if (s2 <= tol * tol * x2 || s2 * s2 * s2 <= tol * tol * x2 * last2 * last2) break;
         last2 = s2;
     }
-    dVector3 Iw, Ix;
-    inertia_times(I, diag, w, Iw);
-    inertia_times(I, diag, x, Ix);
-    const dReal e0 = dCalcVectorDot3(w, Iw), e1 = dCalcVectorDot3(x, Ix);
-    if (!(e1 <= e0)) {
-        if (e1 > 0 && dxIsFinite(e1)) dScaleVector3(x, dSqrt(e0 / e1));
-        else dCopyVector3(x, w);
-    }
+    keep_energy(I, diag, w, x);
+}
+
+// The implicit midpoint step of an axisymmetric body in closed form: I =
+// diag with I_p = I_q = a and I_s = c for the axes (p, q, s) in cyclic
+// order. Then w x I w = (c - a) w_s (w_q, -w_p, 0) in (p, q, s), so the
+// midpoint equation keeps x_s = w_s and is linear in (x_p, x_q):
+//   x_p - w_p + k (w_q + x_q) = 0,  x_q - w_q - k (w_p + x_p) = 0,
+// k = h (c - a) w_s / (2 a): (x_p, x_q) is (w_p, w_q) turned by the Cayley
+// rotation of angle 2 atan k (the exact precession rate (c - a) w_s / a, to
+// second order in h). The same solution Newton's method converges to in
+// gyroscopic_midpoint, up to rounding, without its iteration.
+static void gyroscopic_axisymmetric(const dReal *I, int s, const dReal *w, dReal h, dReal *x)
+{
+    const int p = (s + 1) % 3, q = (s + 2) % 3;
+    const dReal a = I[5 * p], c = I[5 * s];
+    const dReal k = REAL(0.5) * h * (c - a) * w[s] / a, k2 = k * k;
+    const dReal r = dRecip(1 + k2);
+    x[p] = ((1 - k2) * w[p] - 2 * k * w[q]) * r;
+    x[q] = ((1 - k2) * w[q] + 2 * k * w[p]) * r;
+    x[s] = w[s];
+    keep_energy(I, 1, w, x);
+}
+
+// The symmetry axis s of a diagonal inertia with exactly two equal moments
+// (I_p = I_q != I_s), or -1.
+static int symmetry_axis(const dReal *I)
+{
+    if (I[0] == I[5]) return I[0] != I[10] ? 2 : -1;
+    if (I[5] == I[10]) return 0;
+    if (I[10] == I[0]) return 1;
+    return -1;
 }
 
 // Body b's gyroscopic change x - w (body frame) over a step h, or 0 when it
@@ -137,7 +176,9 @@ static int gyroscopic_change(const struct dxBody *b, dReal h, dReal *d, dReal *w
     if ((b->flags & DX_BODY_NO_GYROSCOPIC) || (*diag && I[0] == I[5] && I[0] == I[10])) return 0;
     dVector3 x;
     dMultiply1_331(w, b->R, b->avel);   // body frame
-    if (*diag) gyroscopic_midpoint(I, 1, w, h, x);
+    const int s = *diag ? symmetry_axis(I) : -1;
+    if (s >= 0) gyroscopic_axisymmetric(I, s, w, h, x);
+    else if (*diag) gyroscopic_midpoint(I, 1, w, h, x);
     else gyroscopic_midpoint(I, 0, w, h, x);
     dSubtractVectors3(d, x, w);
     return 1;
@@ -288,12 +329,13 @@ static inline dxRealPair load_pair(const dReal *x)
     return v;
 }
 
-int dxJointRowsKeepFinite(const dxJoint *j, int m, dReal *J, int skip, dReal *c, dReal *cfm,
-                          dReal *lo, dReal *hi, int *findex)
+// Are the m rows' J (row skip `skip`), c and cfm finite and their bounds not
+// NaN? x * 0 is 0 for a finite x and NaN for an infinite or NaN one, so the
+// sums of the products stay 0 exactly when every number is finite (a
+// multiply and an add a pair, no branch).
+static int rows_finite(int m, const dReal *J, int skip, const dReal *c, const dReal *cfm,
+                       const dReal *lo, const dReal *hi)
 {
-    // x * 0 is 0 for a finite x and NaN for an infinite or NaN one, so the
-    // sums of the products stay 0 exactly when every number is finite (a
-    // multiply and an add a pair, no branch).
     const dxRealPair zero = { 0, 0 };
     dxRealPair sum = zero;
     dReal sum1 = 0;
@@ -304,8 +346,27 @@ int dxJointRowsKeepFinite(const dxJoint *j, int m, dReal *J, int skip, dReal *c,
         sum1 += c[i] * zero[0] + cfm[i] * zero[0];
         nan_bound |= (lo[i] != lo[i]) | (hi[i] != hi[i]);   // infinite bounds are fine
     }
-    const int finite = sum[0] + sum[1] + sum1 == 0 && !nan_bound;
-    if (finite) return 1;
+    return sum[0] + sum[1] + sum1 == 0 && !nan_bound;
+}
+
+int dxJointRowsKeepFinite(const dxJoint *j, int m, dReal *J, int skip, dReal *c, dReal *cfm,
+                          dReal *lo, dReal *hi, int *findex)
+{
+    // First the plain sums (an add a pair): finite numbers have a finite sum
+    // unless it overflows, so a finite sum settles it; otherwise (a number
+    // is not finite, or the sum overflowed) rows_finite decides.
+    dxRealPair sum = { 0, 0 };
+    dReal sum1 = 0;
+    int nan_bound = 0;
+    for (int i = 0; i < m; i++) {
+        const dReal *Ji = J + i * skip;
+        for (int e = 0; e < 12; e += 2) sum += load_pair(Ji + e);
+        sum1 += c[i] + cfm[i];
+        nan_bound |= (lo[i] != lo[i]) | (hi[i] != hi[i]);
+    }
+    const dReal total = sum[0] + sum[1] + sum1;
+    if (total - total == 0 && !nan_bound) return 1;   // finite: x - x is 0, else NaN
+    if (!nan_bound && rows_finite(m, J, skip, c, cfm, lo, hi)) return 1;
     for (int i = 0; i < m; i++) {
         for (int e = 0; e < 12; e++) J[i * skip + e] = 0;
         c[i] = lo[i] = hi[i] = 0;
