@@ -335,9 +335,11 @@ static qs_block *make_blocks(dxArena *a, const qs_input *in, const qs_jrows *jr,
         if (n < QS_MAX_BLOCK && !last) continue;
         qs_block *blk = &sys->blocks[sys->nblocks];
         if (n >= 2 && fill_block(a, in, jr, idx, n, blk, jb)) {
-            blk->first = *next;
+            const int first = *next;
+            blk->first = first;
             blk->coupled = blk->ncoupled = 0;
-            for (int k = 0; k < n; k++) pos[idx[k]] = (*next)++;
+            for (int k = 0; k < n; k++) pos[idx[k]] = first + k;
+            *next = first + n;
             sys->nblocks++;
         }
         n = 0;
@@ -437,10 +439,12 @@ static void fill_row(const qs_input *in, const qs_jrows *jr, int i, const int *p
 static void make_rows(const qs_input *in, const qs_jrows *jr, qs_block *blk, qs_jblock *jb,
                       qs_system *sys, int *pos, int *next, char *done)
 {
+    int nx = *next;
     for (int i = 0; i < jr->m; i++) {
         done[i] = pos[i] >= 0;   // in a block
-        if (pos[i] < 0) pos[i] = (*next)++;
+        if (pos[i] < 0) pos[i] = nx++;
     }
+    *next = nx;
     if (blk) {
         blk->coupled = sys->nrows;
         for (int i = 0; i < jr->m; i++) {
