@@ -248,6 +248,36 @@ static void fit_boxes(dxTriMeshData *d)
     dFree(exact, size);
 }
 
+// Where the next cache line starts at or after p.
+static char *line_start(char *p)
+{
+    return p + ((64 - (uintptr_t)p % 64) % 64);
+}
+
+// The nodes (from lifted, node_count of them) and room for the leaf-order
+// vertices in one block, each at the start of a cache line: a node is read
+// as two lines, not three, and its vertices' lines are the fewest.
+static void place_tree(dxTriMeshData *d, const dxTriMeshNode *lifted)
+{
+    size_t node_size = (size_t)d->node_count * sizeof(dxTriMeshNode);
+    size_t node_room = (node_size + 63) / 64 * 64;
+    d->tree_block_size = 64 + node_room + 9 * (size_t)d->tri_count * sizeof(dReal);
+    d->tree_block = dAlloc(d->tree_block_size);
+    char *p = line_start((char *)d->tree_block);
+    d->nodes = (dxTriMeshNode *)p;
+    memcpy(d->nodes, lifted, node_size);
+    d->leaf_vertices = (dReal *)(p + node_room);
+}
+
+void dxTriMeshFreeTree(dxTriMeshData *d)
+{
+    if (d->tree_block) dFree(d->tree_block, d->tree_block_size);
+    d->tree_block = NULL;
+    d->tree_block_size = 0;
+    d->nodes = NULL;
+    d->leaf_vertices = NULL;
+}
+
 void dxTriMeshBuildTree(dxTriMeshData *d)
 {
     size_t n = (size_t)d->tri_count;
@@ -266,14 +296,14 @@ void dxTriMeshBuildTree(dxTriMeshData *d)
     int used = 1;
     build_node(d, bin, &used, 0, centre, 0, d->tri_count);
     dFree(centre, 3 * n * sizeof(dReal));
-    size_t cap = (size_t)used / 2 + 1;
-    d->nodes = (dxTriMeshNode *)dAlloc(cap * sizeof(dxTriMeshNode));
+    size_t lifted_size = ((size_t)used / 2 + 1) * sizeof(dxTriMeshNode);
+    dxTriMeshNode *lifted = (dxTriMeshNode *)dAlloc(lifted_size);
+    d->nodes = lifted;
     d->node_count = 1;
     lift_node(d, bin, 0, 0, &d->node_count);
     dFree(bin, bin_size);
-    d->nodes = (dxTriMeshNode *)dRealloc(d->nodes, cap * sizeof(dxTriMeshNode),
-                                         (size_t)d->node_count * sizeof(dxTriMeshNode));
-    d->leaf_vertices = (dReal *)dAlloc(9 * n * sizeof(dReal));
+    place_tree(d, lifted);
+    dFree(lifted, lifted_size);
     copy_leaf_vertices(d);
     fit_boxes(d);
     d->tree_stamp = dxTriMeshNewStamp();
