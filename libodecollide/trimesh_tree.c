@@ -25,8 +25,7 @@
 
 // A median split halves the triangles, so the binary depth stays below
 // log2(tri_count) + 2 and the four-way depth below half that: a walk
-// stacks at most 3 slots a level (and writes one past them), far below
-// STACK.
+// stacks at most 3 slots a level, far below STACK.
 enum { LEAF = 4, STACK = 128 };
 
 void dxTriMeshBuildTree(dxTriMeshData *d);
@@ -382,16 +381,12 @@ typedef struct tree_walk {
 } tree_walk;
 
 // Stack node's slots that overlap q, the last first (so the first slot's
-// subtree comes out before the second slot: leaf order). Without
-// branches (which slots overlap is random to a predictor): each slot is
-// written at the top, which moves up only past those that overlap.
+// subtree comes out before the second slot: leaf order).
 static inline void push_slots(const dxTriMeshData *d, const query_box *q, tree_walk *w, int node)
 {
     unsigned m = overlapping_slots(&d->nodes[node], q);
-    for (int s = 3; s >= 0; s--) {
-        w->stack[w->top] = 4 * node + s;
-        w->top += (int)(m >> s & 1);
-    }
+    for (int s = 3; s >= 0; s--)
+        if (m >> s & 1) w->stack[w->top++] = 4 * node + s;
 }
 
 // The next leaf (node * 4 + slot) whose box overlaps q, in leaf order, or

@@ -236,9 +236,11 @@ static inline __attribute__((always_inline)) void prefetch_slot(const dxTriMeshD
     } else {
         return;
     }
-    // Every line the bytes [p, p + size) touch (they need not start a line).
-    const char *end = p + size;
-    for (p -= (uintptr_t)p % 64; p < end; p += 64) __builtin_prefetch(p);
+    // Every line the bytes [p, p + size) touch: they need not start a line,
+    // so the last byte's line too (a loop from p's line would run a count
+    // of times that varies with the alignment, which a predictor misses).
+    for (size_t k = 0; k < size; k += 64) __builtin_prefetch(p + k);
+    __builtin_prefetch(p + size - 1);
 }
 
 // Keep the nearest `max` hits in m->raw (a scratch set) sorted by distance (then triangle):
