@@ -31,7 +31,8 @@ enum { DX_TRI_EDGE_FEATURE = 0x01, DX_TRI_VERTEX_FEATURE = 0x08 };
 
 // A node of the box tree: up to four children ("slots") with their boxes
 // side by side per axis, so that a query or a ray tests the four at once
-// (128 bytes: two cache lines, the nodes starting at a line's start). Slot s is a leaf of count[s] > 0
+// (128 bytes: two cache lines, the nodes starting at a line's start).
+// Slot s is a leaf of count[s] > 0
 // triangles order[first[s] ..], an inner node (count 0) at nodes[first[s]],
 // after this one, or unused (count -1; unused slots come last). The boxes
 // are in float, rounded outwards: each contains the exact one. The tree is
