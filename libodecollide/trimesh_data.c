@@ -20,6 +20,7 @@
 
 void dxTriMeshBuildTree(dxTriMeshData *d);   // trimesh_tree.c
 void dxTriMeshRefitTree(dxTriMeshData *d);
+void dxTriMeshFreeTree(dxTriMeshData *d);
 
 #define CHECK_DATA(d, on_fail) \
     DX_CHECK_ARG(dxTriMeshDataIsLive(d) && !(d)->destroy_pending, on_fail, \
@@ -59,8 +60,7 @@ static void clear_derived(dxTriMeshData *d)
         dFree(d->neighbour, 3 * n * sizeof(int));
         dFree(d->features, n);
         dFree(d->order, n * sizeof(int));
-        dFree(d->leaf_vertices, 9 * n * sizeof(dReal));
-        dFree(d->nodes, (size_t)d->node_count * sizeof(dxTriMeshNode));
+        dxTriMeshFreeTree(d);
         if (d->built_flags) dFree(d->built_flags, n);
         dFree(d->weld, (size_t)d->vertex_count * sizeof(int));
         dFree(d->vertex_first, ((size_t)d->vertex_count + 1) * sizeof(int));

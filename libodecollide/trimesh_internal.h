@@ -31,7 +31,8 @@ enum { DX_TRI_EDGE_FEATURE = 0x01, DX_TRI_VERTEX_FEATURE = 0x08 };
 
 // A node of the box tree: up to four children ("slots") with their boxes
 // side by side per axis, so that a query or a ray tests the four at once
-// (128 bytes, two cache lines). Slot s is a leaf of count[s] > 0
+// (128 bytes: two cache lines, the nodes starting at a line's start).
+// Slot s is a leaf of count[s] > 0
 // triangles order[first[s] ..], an inner node (count 0) at nodes[first[s]],
 // after this one, or unused (count -1; unused slots come last). The boxes
 // are in float, rounded outwards: each contains the exact one. The tree is
@@ -99,6 +100,8 @@ struct dxTriMeshData {
     int *order;                           // triangles in leaf order
     dReal *leaf_vertices;                 // 9 per triangle in leaf order: the
                                           // vertices of order[j] at 9 j (rays)
+    void *tree_block;                     // one allocation holding nodes and
+    size_t tree_block_size;               // leaf_vertices, each at a cache line
     uint64_t tree_stamp;                  // unique per build and refit; 0: no
                                           // temporal coherence (a heightfield patch)
     unsigned char *built_flags;           // Preprocess: use flags

@@ -166,18 +166,17 @@ static void build_node(dxTriMeshData *d, bin_node *bin, int *used, int i, const 
     bin[i] = (bin_node){ first, 0, h + 1 };
 }
 
-// The four-way node w from binary inner node b (or a leaf, as the root of
-// a small mesh): b's children become the slots in order, and while there
-// is room, the first inner slot of odd height gives way to its two
-// children. So the slots below are of even height, whose grandchildren
-// fill a node's four slots: about a third as many nodes as leaves, where
-// lifting every second level from the root would make half-empty nodes
-// over the leaves when the tree's height is odd. Inner slots take the next
-// free nodes (*used) and are made at once (depth first: a node's children
-// come after it).
-static void lift_node(dxTriMeshData *d, const bin_node *bin, int b, int w, int *used)
+// The slots of the four-way node made from binary inner node b (or a
+// leaf, as the root of a small mesh) into slot[]; returns their count:
+// b's children in order, and while there is room, the first inner slot of
+// odd height gives way to its two children. So the slots below are of
+// even height, whose grandchildren fill a node's four slots: about a third
+// as many nodes as leaves, where lifting every second level from the root
+// would make half-empty nodes over the leaves when the tree's height is
+// odd.
+static int lift_slots(const bin_node *bin, int b, int slot[4])
 {
-    int slot[4], n = 0;
+    int n = 0;
     if (bin[b].count > 0) {
         slot[n++] = b;
     } else {
@@ -194,6 +193,25 @@ static void lift_node(dxTriMeshData *d, const bin_node *bin, int b, int w, int *
         slot[e + 1] = first + 1;
         n++;
     }
+    return n;
+}
+
+// How many four-way nodes lifting makes from binary node b down (the tree
+// is placed once, at its size).
+static int count_lifted(const bin_node *bin, int b)
+{
+    int slot[4], n = lift_slots(bin, b, slot), nodes = 1;
+    for (int s = 0; s < n; s++)
+        if (bin[slot[s]].count == 0) nodes += count_lifted(bin, slot[s]);
+    return nodes;
+}
+
+// The four-way node w from binary node b (lift_slots). Inner slots take
+// the next free nodes (*used) and are made at once (depth first: a node's
+// children come after it).
+static void lift_node(dxTriMeshData *d, const bin_node *bin, int b, int w, int *used)
+{
+    int slot[4], n = lift_slots(bin, b, slot);
     clear_node(&d->nodes[w]);
     for (int s = 0; s < n; s++) {
         const bin_node *e = &bin[slot[s]];
@@ -248,6 +266,34 @@ static void fit_boxes(dxTriMeshData *d)
     dFree(exact, size);
 }
 
+// Where the next cache line starts at or after p.
+static char *line_start(char *p)
+{
+    return p + ((64 - (uintptr_t)p % 64) % 64);
+}
+
+// One block for the nodes (node_count of them) and the leaf-order
+// vertices, each at the start of a cache line: a node is read as two
+// lines, not three, and a leaf's vertices touch the fewest lines.
+static void place_tree(dxTriMeshData *d)
+{
+    size_t node_room = ((size_t)d->node_count * sizeof(dxTriMeshNode) + 63) / 64 * 64;
+    d->tree_block_size = 64 + node_room + 9 * (size_t)d->tri_count * sizeof(dReal);
+    d->tree_block = dAlloc(d->tree_block_size);
+    char *p = line_start((char *)d->tree_block);
+    d->nodes = (dxTriMeshNode *)p;
+    d->leaf_vertices = (dReal *)(p + node_room);
+}
+
+void dxTriMeshFreeTree(dxTriMeshData *d)
+{
+    if (d->tree_block) dFree(d->tree_block, d->tree_block_size);
+    d->tree_block = NULL;
+    d->tree_block_size = 0;
+    d->nodes = NULL;
+    d->leaf_vertices = NULL;
+}
+
 void dxTriMeshBuildTree(dxTriMeshData *d)
 {
     size_t n = (size_t)d->tri_count;
@@ -259,21 +305,17 @@ void dxTriMeshBuildTree(dxTriMeshData *d)
         triangle_box(d, t, lo, hi);
         for (int k = 0; k < 3; k++) centre[3 * t + k] = (lo[k] + hi[k]) / 2;
     }
-    // At most 2 n - 1 binary nodes, of which fewer than n inner ones: each
-    // four-way node but a root leaf's holds at least one inner binary node.
+    // At most 2 n - 1 binary nodes.
     size_t bin_size = 2 * n * sizeof(bin_node);
     bin_node *bin = (bin_node *)dAlloc(bin_size);
     int used = 1;
     build_node(d, bin, &used, 0, centre, 0, d->tri_count);
     dFree(centre, 3 * n * sizeof(dReal));
-    size_t cap = (size_t)used / 2 + 1;
-    d->nodes = (dxTriMeshNode *)dAlloc(cap * sizeof(dxTriMeshNode));
-    d->node_count = 1;
-    lift_node(d, bin, 0, 0, &d->node_count);
+    d->node_count = count_lifted(bin, 0);
+    place_tree(d);
+    used = 1;
+    lift_node(d, bin, 0, 0, &used);
     dFree(bin, bin_size);
-    d->nodes = (dxTriMeshNode *)dRealloc(d->nodes, cap * sizeof(dxTriMeshNode),
-                                         (size_t)d->node_count * sizeof(dxTriMeshNode));
-    d->leaf_vertices = (dReal *)dAlloc(9 * n * sizeof(dReal));
     copy_leaf_vertices(d);
     fit_boxes(d);
     d->tree_stamp = dxTriMeshNewStamp();

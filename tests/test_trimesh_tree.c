@@ -144,6 +144,10 @@ static int check_node(const dxTriMeshData *d, int i, int *next_first, int *leave
 static int check_shape(const dxTriMeshData *d)
 {
     int next_first = 0, leaves = 0;
+    // the nodes and the leaf-order vertices start at cache lines
+    CHECK((uintptr_t)d->nodes % 64 == 0 && (uintptr_t)d->leaf_vertices % 64 == 0);
+    CHECK((const char *)d->leaf_vertices >=
+          (const char *)(d->nodes + d->node_count));   // one block, not overlapping
     if (check_node(d, 0, &next_first, &leaves)) return 1;
     CHECK(next_first == d->tri_count);
     // nodes mostly full: about a third as many as leaves

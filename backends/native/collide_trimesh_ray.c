@@ -123,29 +123,40 @@ static inline unsigned ray_triangle_pair(const dReal s[3], const dReal v[3], dRe
 // walk. An
 // axis the ray runs along (|v| under 1e-30, or 0) is tested as a slab the
 // start must lie in, [s_lo, s_hi]: the start widened by how far the ray
-// moves along that axis, and a float step more each side.
+// moves along that axis, and a float step more each side. Each number is
+// there four times, as the four slots take it (one load, not a load and a
+// shuffle per node).
 typedef struct ray_lanes {
-    float s[3], inv[3], slack[3], s_lo[3], s_hi[3];
+    float s[3][4], inv[3][4], slack[3][4], s_lo[3][4], s_hi[3][4];
     int along[3];
 } ray_lanes;
+
+// Set the four lanes of a ray_lanes number.
+static void set_lanes(float lanes[4], float f)
+{
+    for (int j = 0; j < 4; j++) lanes[j] = f;
+}
 
 static void ray_setup(ray_lanes *r, const dxTriMeshData *d, const dReal s[3], const dReal v[3],
                       dReal len)
 {
     for (int k = 0; k < 3; k++) {
-        r->s[k] = (float)s[k];
+        set_lanes(r->s[k], (float)s[k]);
         r->along[k] = !(dFabs(v[k]) >= (dReal)1e-30);
-        r->inv[k] = r->slack[k] = 0;
+        set_lanes(r->inv[k], 0);
+        set_lanes(r->slack[k], 0);
+        set_lanes(r->s_lo[k], 0);
+        set_lanes(r->s_hi[k], 0);
         if (r->along[k]) {
             dReal reach = dFabs(v[k]) * len;
-            r->s_lo[k] = nextafterf(dxFloatBelow(s[k] - reach), -INFINITY);
-            r->s_hi[k] = nextafterf(dxFloatAbove(s[k] + reach), INFINITY);
+            set_lanes(r->s_lo[k], nextafterf(dxFloatBelow(s[k] - reach), -INFINITY));
+            set_lanes(r->s_hi[k], nextafterf(dxFloatAbove(s[k] + reach), INFINITY));
             continue;
         }
         dReal m = dMax(dFabs(s[k]), dMax(dFabs(d->lo[k]), dFabs(d->hi[k])));
         dReal inv = 1 / v[k], slack = 32 * (dReal)FLT_EPSILON * m * dFabs(inv) + FLT_MIN;
-        r->inv[k] = (float)inv;
-        r->slack[k] = slack < FLT_MAX ? (float)slack : FLT_MAX;
+        set_lanes(r->inv[k], (float)inv);
+        set_lanes(r->slack[k], slack < FLT_MAX ? (float)slack : FLT_MAX);
     }
 }
 
@@ -164,12 +175,12 @@ static inline unsigned ray_slots(const ray_lanes *r, const dxTriMeshNode *node, 
     for (int k = 0; k < 3; k++) {
         __m128 lo = _mm_loadu_ps(node->lo[k]), hi = _mm_loadu_ps(node->hi[k]);
         if (r->along[k]) {
-            ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmple_ps(lo, _mm_set1_ps(r->s_hi[k])),
-                                           _mm_cmpge_ps(hi, _mm_set1_ps(r->s_lo[k]))));
+            ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmple_ps(lo, _mm_loadu_ps(r->s_hi[k])),
+                                           _mm_cmpge_ps(hi, _mm_loadu_ps(r->s_lo[k]))));
             continue;
         }
-        __m128 sk = _mm_set1_ps(r->s[k]), ik = _mm_set1_ps(r->inv[k]);
-        __m128 slack = _mm_set1_ps(r->slack[k]);
+        __m128 sk = _mm_loadu_ps(r->s[k]), ik = _mm_loadu_ps(r->inv[k]);
+        __m128 slack = _mm_loadu_ps(r->slack[k]);
         __m128 a = _mm_mul_ps(_mm_sub_ps(lo, sk), ik), b = _mm_mul_ps(_mm_sub_ps(hi, sk), ik);
         t0 = _mm_max_ps(t0, _mm_sub_ps(_mm_min_ps(a, b), slack));
         t1 = _mm_min_ps(t1, _mm_add_ps(_mm_max_ps(a, b), slack));
@@ -187,13 +198,13 @@ static inline unsigned ray_slots(const ray_lanes *r, const dxTriMeshNode *node, 
     for (int k = 0; k < 3; k++) {
         if (r->along[k]) {
             for (int j = 0; j < 4; j++)
-                ok[j] &= node->lo[k][j] <= r->s_hi[k] && node->hi[k][j] >= r->s_lo[k];
+                ok[j] &= node->lo[k][j] <= r->s_hi[k][j] && node->hi[k][j] >= r->s_lo[k][j];
             continue;
         }
         for (int j = 0; j < 4; j++) {
-            float a = (node->lo[k][j] - r->s[k]) * r->inv[k];
-            float b = (node->hi[k][j] - r->s[k]) * r->inv[k];
-            float near = (a < b ? a : b) - r->slack[k], far = (a < b ? b : a) + r->slack[k];
+            float a = (node->lo[k][j] - r->s[k][j]) * r->inv[k][j];
+            float b = (node->hi[k][j] - r->s[k][j]) * r->inv[k][j];
+            float near = (a < b ? a : b) - r->slack[k][j], far = (a < b ? b : a) + r->slack[k][j];
             t0[j] = near > t0[j] ? near : t0[j];
             t1[j] = far < t1[j] ? far : t1[j];
         }
@@ -225,7 +236,11 @@ static inline __attribute__((always_inline)) void prefetch_slot(const dxTriMeshD
     } else {
         return;
     }
+    // Every line the bytes [p, p + size) touch: they need not start a line,
+    // so the last byte's line too (a loop from p's line would run a count
+    // of times that varies with the alignment, which a predictor misses).
     for (size_t k = 0; k < size; k += 64) __builtin_prefetch(p + k);
+    __builtin_prefetch(p + size - 1);
 }
 
 // Keep the nearest `max` hits in m->raw (a scratch set) sorted by distance (then triangle):
