@@ -33,6 +33,13 @@
 
 #include "quickstep.h"
 #include "snapshot_io.h"
+#include "dx_clones.h"
+
+#ifdef DX_AVX2_CLONES
+#define DX_AVX2_CLONES_OR_NOT DX_AVX2_CLONES
+#else
+#define DX_AVX2_CLONES_OR_NOT
+#endif
 
 #include <ode/memory.h>
 #include <string.h>
@@ -247,7 +254,7 @@ static const warm_point *find(const dxWarmCache *c, const warm_pair *q, const dR
     }
 }
 
-qs_warm_entry *dxQuickWarmContact(dxWarmCache *c, const struct dxBody *b0,
+DX_AVX2_CLONES_OR_NOT qs_warm_entry *dxQuickWarmContact(dxWarmCache *c, const struct dxBody *b0,
                                   const struct dxBody *b1, const dReal *point, const dReal *n,
                                   const dReal *t1, const dReal *t2, int *found, dReal *ln,
                                   dReal *f)
@@ -301,7 +308,7 @@ void dxQuickWarmPositions(qs_warm_entry *e, const int pos[3])
     memcpy(e->pos, pos, sizeof e->pos);
 }
 
-void dxQuickWarmEnd(struct dxWorld *w, dxWarmCache *c, const dReal *lambda)
+DX_AVX2_CLONES_OR_NOT void dxQuickWarmEnd(struct dxWorld *w, dxWarmCache *c, const dReal *lambda)
 {
     if (!c) return;
     for (int k = 0; k < c->ncur; k++) {
