@@ -3,7 +3,7 @@
 // dx_clones.h -- building a hot function twice, for AVX2 and for the
 // baseline, with the version picked when the library is loaded (GNU ifunc:
 // x86-64, ELF, glibc): DX_AVX2_CLONES, defined only where that works. Used
-// by QuickStep's sweeps and contact rows and by box-box.
+// by QuickStep's sweeps, contact rows and warm-start match and by box-box.
 //
 // Including it also silences the ABI note on vector types wider than the
 // baseline's registers: the users pass their fours only between inlined

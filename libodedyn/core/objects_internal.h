@@ -117,7 +117,8 @@ enum {
     DX_JOINT_IN_GROUP = 1 << 0,
     DX_JOINT_REVERSE = 1 << 1,    // attached as (0, b): b is stored as body 0
     DX_JOINT_DISABLED = 1 << 2,
-    DX_JOINT_DEAD_WORLD = 1 << 3  // the world was destroyed; only the group may free it
+    DX_JOINT_DEAD_WORLD = 1 << 3, // the world was destroyed; only the group may free it
+    DX_JOINT_PLAIN_CONTACT = 1 << 4 // a contact whose rows dxJointContactRows gives (set at creation)
 };
 
 // How many constraint rows a joint adds this step; the first `nub` are

@@ -65,7 +65,6 @@ typedef struct dxJointContact {
     unsigned rows_present; // ROW_... ; computed once at creation
     int inert;             // bad geometry: no rows at all
     int m;                 // its number of rows (0 when inert)
-    int plain;             // dxJointContactIsPlain's answer, kept from creation
     // The bodies' poses at the contact's first step, and the arms from
     // their origins to the contact point then (world frame).
     const struct dxBody *anchor_body[2];
@@ -261,10 +260,15 @@ static void contact_rows(dxJointContact *c, dReal fps, dReal erp, dxContactRows 
     const int mode = s->mode;
     // Stored sense: the user's directions, negated when the joint is stored
     // reversed (user body 2 as body 0).
-    const dReal sign = (c->base.flags & DX_JOINT_REVERSE) ? -1 : 1;
-    dCopyScaledVector3(r->n, c->n, sign);
-    dCopyScaledVector3(r->t1, c->t1, sign);
-    dCopyScaledVector3(r->t2, c->t2, sign);
+    if (c->base.flags & DX_JOINT_REVERSE) {
+        dCopyNegatedVector3(r->n, c->n);
+        dCopyNegatedVector3(r->t1, c->t1);
+        dCopyNegatedVector3(r->t2, c->t2);
+    } else {
+        dCopyVector3(r->n, c->n);
+        dCopyVector3(r->t1, c->t1);
+        dCopyVector3(r->t2, c->t2);
+    }
     r->n[3] = r->t1[3] = r->t2[3] = 0;
     r->d[0] = r->n;
     r->c[0] = normal_target(c, r->n, fps, erp);   // first: it may record the arms
@@ -324,11 +328,6 @@ static void contact_fill_rows(dxJoint *j, dxJointRows *rows)
         angular_row(j, rows, row, r.n);
         friction_bounds(rows, row, c->rhoN, mode & dContactApprox1_N);
     }
-}
-
-int dxJointContactIsPlain(const dxJoint *j)
-{
-    return j->cls->type == dJointTypeContact && ((const dxJointContact *)j)->plain;
 }
 
 void dxJointContactRows(dxJoint *j, dReal fps, dReal erp, dxContactRows *r)
@@ -478,33 +477,26 @@ static void choose_rows(dxJointContact *c)
     c->mu2 = axis_dep ? s->mu2 : s->mu;
     c->rho2 = axis_dep ? s->rho2 : s->rho;
     c->rhoN = axis_dep ? s->rhoN : s->rho;
-    unsigned p = 0;
-    if (s->mu > 0) p |= ROW_T1;
-    if (c->mu2 > 0) p |= ROW_T2;
+    const int t1 = s->mu > 0, t2 = c->mu2 > 0;
+    unsigned p = (t1 ? ROW_T1 : 0) | (t2 ? ROW_T2 : 0);
+    int m = 1 + t1 + t2;
     if (s->mode & dContactRolling) {
-        if (s->rho > 0) p |= ROW_R1;
-        if (c->rho2 > 0) p |= ROW_R2;
-        if (c->rhoN > 0) p |= ROW_RN;
+        if (s->rho > 0) p |= ROW_R1, m++;
+        if (c->rho2 > 0) p |= ROW_R2, m++;
+        if (c->rhoN > 0) p |= ROW_RN, m++;
     }
     c->rows_present = p;
-    c->m = 1;
-    for (unsigned bits = p; bits; bits &= bits - 1) c->m++;
+    c->m = m;
     // Plain: no rolling rows, and not two unbounded friction rows (those
     // would be solved as a block, quickstep_build.c).
-    const int t1 = (p & ROW_T1) && s->mu == dInfinity, t2 = (p & ROW_T2) && c->mu2 == dInfinity;
-    c->plain = !(p & (ROW_R1 | ROW_R2 | ROW_RN)) && !(t1 && t2);
+    if (m == 1 + t1 + t2 && !(s->mu == dInfinity && c->mu2 == dInfinity))
+        c->base.flags |= DX_JOINT_PLAIN_CONTACT;
 }
 
-dJointID dJointCreateContact(dWorldID w, dJointGroupID g, const dContact *contact)
+// Every field of the contact's part (no zeroing first): the pose record
+// only says "none yet"; anchor() fills it at the first step.
+static void contact_init(dxJointContact *c, const dContact *contact)
 {
-    DX_CHECK_ARG(dxWorldIsLive(w), return NULL, "world is NULL or was destroyed");
-    DX_CHECK_ARG(g == NULL || g->hdr.magic == DX_MAGIC_GROUP, return NULL,
-                 "joint group was destroyed");
-    DX_CHECK_ARG(contact != NULL, return NULL, "contact is NULL");
-    // Every field of the contact's part is written below (no zeroing first):
-    // the pose record only says "none yet"; anchor() fills it at the first step.
-    dxJoint *j = dxJointCreateBare(w, g, &contact_class);
-    dxJointContact *c = (dxJointContact *)j;
     c->contact = *contact;
     c->anchor_body[0] = c->anchor_body[1] = NULL;
     if (!check_geometry(c)) {
@@ -513,13 +505,27 @@ dJointID dJointCreateContact(dWorldID w, dJointGroupID g, const dContact *contac
         dZeroVector3(c->t2);
         c->mu2 = c->rho2 = c->rhoN = 0;
         c->rows_present = 0;
-        c->m = c->plain = 0;
+        c->m = 0;
         c->inert = 1;
-        return j;
+        return;
     }
     c->inert = 0;
     sanitise_surface(&c->contact.surface);
     friction_directions(c);
     choose_rows(c);
+    // count_rows' answer, which never changes, kept where the steppers
+    // read it (dWorldQuickStep's set-up does not ask again).
+    c->base.rows.m = c->m;
+    c->base.rows.nub = 0;
+}
+
+dJointID dJointCreateContact(dWorldID w, dJointGroupID g, const dContact *contact)
+{
+    DX_CHECK_ARG(dxWorldIsLive(w), return NULL, "world is NULL or was destroyed");
+    DX_CHECK_ARG(g == NULL || g->hdr.magic == DX_MAGIC_GROUP, return NULL,
+                 "joint group was destroyed");
+    DX_CHECK_ARG(contact != NULL, return NULL, "contact is NULL");
+    dxJoint *j = dxJointCreateBare(w, g, &contact_class);
+    contact_init((dxJointContact *)j, contact);
     return j;
 }

@@ -217,10 +217,17 @@ void dxQuickWarmEnd(struct dxWorld *w, dxWarmCache *c, const dReal *lambda);
 // (quickstep_contact.c): 1 (the default) or 0, every contact through the
 // generic joint rows (for tests that compare the two: the same results).
 extern int dxQuickContactDirect;
-// Does contact joint j take the direct way: a plain contact
-// (dxJointContactIsPlain) without feedback between island bodies (no
-// kinematic body, whose motion the generic rows fold in)?
-int dxQuickContactIsDirect(const dxJoint *j);
+// Does joint j take the direct way: a plain contact (DX_JOINT_PLAIN_CONTACT,
+// step_internal.h) without feedback between island bodies (no
+// kinematic body, whose motion the generic rows fold in)? Inline: it is
+// asked of every contact of every step.
+static inline int dxQuickContactIsDirect(const dxJoint *j)
+{
+    if (!dxQuickContactDirect || !(j->flags & DX_JOINT_PLAIN_CONTACT) || j->feedback) return 0;
+    const struct dxBody *b1 = dxJointBody(j, 1);
+    return !(dxJointBody(j, 0)->flags & DX_BODY_KINEMATIC) &&
+           !(b1 && (b1->flags & DX_BODY_KINEMATIC));
+}
 // Append the rows of such a contact to the system (lambda positions from
 // sys->next on), enter it in the warm-start cache and start it from the
 // last step's forces if it was there; the same rows, bit for bit, as the

@@ -631,11 +631,13 @@ void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_syst
         nbodies += is->nb + 1;   // and the island's dummy
         for (int k = 0; k < is->nj; k++) {
             dxJoint *j = is->joints[k];
-            j->cls->count_rows(j, &j->rows);
+            // A contact's count is fixed at its creation and kept in
+            // j->rows there (joint_contact.c): no call for it.
+            if (j->cls->type == dJointTypeContact) ncontacts++;
+            else j->cls->count_rows(j, &j->rows);
             m += j->rows.m;
             if (j->rows.m > max_m) max_m = j->rows.m;
             nfeedback += j->feedback != NULL;
-            ncontacts += j->cls->type == dJointTypeContact;
         }
     }
     sys->warm = dxQuickWarmBegin(w, ncontacts);

@@ -99,6 +99,16 @@ static inline qc_v4 qc_splat(dReal a)
 }
 #endif
 
+// Lane i of v in all four lanes. A number that sits among others in memory
+// is loaded with them as a four and spread from there: one AVX2 vpermpd (its
+// load folded in), where GCC makes qc_splat of a loaded number as a load, an
+// unpack and an insert.
+#if defined(__GNUC__)
+#define qc_spread(v, i) __builtin_shufflevector(v, v, i, i, i, i)
+#else
+#define qc_spread(v, i) qc_splat(qc_lane(v, i))
+#endif
+
 // D = sor_w / diag per lane, in double as fill_row makes it (diag =
 // (double)ms + cfm), 0 where diag is not positive (an empty row without
 // cfm leaves its force at 0; the absent rows' lanes).
@@ -181,12 +191,12 @@ typedef struct qs_cbodies {
 } qs_cbodies;
 
 // x = I a for the lanes' a (I: a world inverse inertia, dMatrix3), each
-// entry of I broadcast once: I0 a0 + I1 a1 + I2 a2, in that order.
+// entry of I spread once: I0 a0 + I1 a1 + I2 a2, in that order.
 QS_INLINE void inertia_lanes(const dReal *I, qc_v4 ax, qc_v4 ay, qc_v4 az, qc_v4 x[3])
 {
     for (int i = 0; i < 3; i++) {
-        const qc_v4 c0 = qc_splat(I[4 * i]), c1 = qc_splat(I[4 * i + 1]),
-                    c2 = qc_splat(I[4 * i + 2]);
+        const qc_v4 row = qc_load(I + 4 * i);
+        const qc_v4 c0 = qc_spread(row, 0), c1 = qc_spread(row, 1), c2 = qc_spread(row, 2);
         x[i] = qc_add(qc_add(qc_mul(c0, ax), qc_mul(c1, ay)), qc_mul(c2, az));
     }
 }
@@ -208,8 +218,8 @@ QS_INLINE void lanes_rows(const qs_input *in, const qs_cbodies *cb, const dxCont
     qc_transpose(qc_load(r->d[0]), qc_load(r->d[1]), qc_load(r->d[2]), qc_splat(0), d);
     const qc_v4 dx = d[0], dy = d[1], dz = d[2];
     // Body 0: J = [d, arm0 x d], M^-1 J^T = [im0 d, I0 (arm0 x d)].
-    const qc_v4 A0 = qc_splat(r->arm[0][0]), A1 = qc_splat(r->arm[0][1]),
-                A2 = qc_splat(r->arm[0][2]);
+    const qc_v4 A = qc_load(r->arm[0]);   // (a dVector3: four numbers)
+    const qc_v4 A0 = qc_spread(A, 0), A1 = qc_spread(A, 1), A2 = qc_spread(A, 2);
     const qc_v4 ax = qc_sub(qc_mul(A1, dz), qc_mul(A2, dy));
     const qc_v4 ay = qc_sub(qc_mul(A2, dx), qc_mul(A0, dz));
     const qc_v4 az = qc_sub(qc_mul(A0, dy), qc_mul(A1, dx));
@@ -219,12 +229,13 @@ QS_INLINE void lanes_rows(const qs_input *in, const qs_cbodies *cb, const dxCont
     inertia_lanes(cb->I0, ax, ay, az, ia);
     const qc_v4 m3 = ia[0], m4 = ia[1], m5 = ia[2];
     qc_store(rows, m, J + 8 * n, m2, m3, m4, m5);
-    const dReal *R = cb->R0;
-    const qc_v4 ra = qc_add(qc_mul(dx, qc_splat(R[0])), qc_mul(dz, qc_splat(R[2])));
-    const qc_v4 rb = qc_add(qc_mul(dy, qc_splat(R[1])), qc_mul(ax, qc_splat(R[3])));
+    // The rates: R[0..3] and R[2..5] as fours (a body's six numbers).
+    const qc_v4 R = qc_load(cb->R0), R2 = qc_load(cb->R0 + 2);
+    const qc_v4 ra = qc_add(qc_mul(dx, qc_spread(R, 0)), qc_mul(dz, qc_spread(R, 2)));
+    const qc_v4 rb = qc_add(qc_mul(dy, qc_spread(R, 1)), qc_mul(ax, qc_spread(R, 3)));
     const qc_v4 ma = qc_add(qc_mul(dx, m0), qc_mul(dz, m2));
     const qc_v4 mb = qc_add(qc_mul(dy, m1), qc_mul(ax, m3));
-    qc_v4 rc = qc_mul(ay, qc_splat(R[4])), rd = qc_mul(az, qc_splat(R[5]));
+    qc_v4 rc = qc_mul(ay, qc_spread(R2, 2)), rd = qc_mul(az, qc_spread(R2, 3));
     qc_v4 mc = qc_mul(ay, m4), md = qc_mul(az, m5);
     // Body 1: J = [-d, d x arm1], M^-1 J^T = [im1 (-d), I1 (d x arm1)].
     qc_v4 lx, ly, lz, bx, by, bz, n0, n1;
@@ -232,8 +243,8 @@ QS_INLINE void lanes_rows(const qs_input *in, const qs_cbodies *cb, const dxCont
         lx = qc_neg(dx);
         ly = qc_neg(dy);
         lz = qc_neg(dz);
-        const qc_v4 B0 = qc_splat(r->arm[1][0]), B1 = qc_splat(r->arm[1][1]),
-                    B2 = qc_splat(r->arm[1][2]);
+        const qc_v4 B = qc_load(r->arm[1]);
+        const qc_v4 B0 = qc_spread(B, 0), B1 = qc_spread(B, 1), B2 = qc_spread(B, 2);
         bx = qc_sub(qc_mul(dy, B2), qc_mul(dz, B1));
         by = qc_sub(qc_mul(dz, B0), qc_mul(dx, B2));
         bz = qc_sub(qc_mul(dx, B1), qc_mul(dy, B0));
@@ -245,11 +256,11 @@ QS_INLINE void lanes_rows(const qs_input *in, const qs_cbodies *cb, const dxCont
         inertia_lanes(cb->I1, bx, by, bz, ib);
         const qc_v4 n3 = ib[0], n4 = ib[1], n5 = ib[2];
         qc_store(rows, m, J + 20 * n, n2, n3, n4, n5);
-        const dReal *S = cb->R1;
-        rc = qc_add(qc_add(rc, qc_mul(lx, qc_splat(S[0]))),
-                    qc_add(qc_mul(lz, qc_splat(S[2])), qc_mul(by, qc_splat(S[4]))));
-        rd = qc_add(qc_add(rd, qc_mul(ly, qc_splat(S[1]))),
-                    qc_add(qc_mul(bx, qc_splat(S[3])), qc_mul(bz, qc_splat(S[5]))));
+        const qc_v4 S = qc_load(cb->R1), S2 = qc_load(cb->R1 + 2);
+        rc = qc_add(qc_add(rc, qc_mul(lx, qc_spread(S, 0))),
+                    qc_add(qc_mul(lz, qc_spread(S, 2)), qc_mul(by, qc_spread(S2, 2))));
+        rd = qc_add(qc_add(rd, qc_mul(ly, qc_spread(S, 1))),
+                    qc_add(qc_mul(bx, qc_spread(S, 3)), qc_mul(bz, qc_spread(S2, 3))));
         mc = qc_add(qc_add(mc, qc_mul(lx, n0)), qc_add(qc_mul(lz, n2), qc_mul(by, n4)));
         md = qc_add(qc_add(md, qc_mul(ly, n1)), qc_add(qc_mul(bx, n3), qc_mul(bz, n5)));
     } else {
@@ -338,14 +349,6 @@ QS_CONTACT_CLONES static void append_rows(const qs_input *in, const qs_cbodies *
         if (warm[i] != 0) sys->lambda[first + i] = warm[i];
     start_body(sys->fc + cb->o0, rows, m, offsetof(qs_row, M), warm);
     if (two) start_body(sys->fc + cb->o1, rows, m, offsetof(qs_row, M1), warm);
-}
-
-int dxQuickContactIsDirect(const dxJoint *j)
-{
-    if (!dxQuickContactDirect || j->feedback || !dxJointContactIsPlain(j)) return 0;
-    const struct dxBody *b1 = dxJointBody(j, 1);
-    return !(dxJointBody(j, 0)->flags & DX_BODY_KINEMATIC) &&
-           !(b1 && (b1->flags & DX_BODY_KINEMATIC));
 }
 
 void dxQuickContact(const qs_input *in, dxJoint *j, qs_system *sys)

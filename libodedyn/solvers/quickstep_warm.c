@@ -33,6 +33,16 @@
 
 #include "quickstep.h"
 #include "snapshot_io.h"
+#include "dx_clones.h"
+
+// The match and the end pass are built for AVX2 too where the compiler can
+// pick a version at load time (dx_clones.h): the changes of frame in wider
+// operations, the same numbers.
+#ifdef DX_AVX2_CLONES
+#define WARM_CLONES DX_AVX2_CLONES
+#else
+#define WARM_CLONES
+#endif
 
 #include <ode/memory.h>
 #include <string.h>
@@ -247,7 +257,7 @@ static const warm_point *find(const dxWarmCache *c, const warm_pair *q, const dR
     }
 }
 
-qs_warm_entry *dxQuickWarmContact(dxWarmCache *c, const struct dxBody *b0,
+WARM_CLONES qs_warm_entry *dxQuickWarmContact(dxWarmCache *c, const struct dxBody *b0,
                                   const struct dxBody *b1, const dReal *point, const dReal *n,
                                   const dReal *t1, const dReal *t2, int *found, dReal *ln,
                                   dReal *f)
@@ -301,7 +311,7 @@ void dxQuickWarmPositions(qs_warm_entry *e, const int pos[3])
     memcpy(e->pos, pos, sizeof e->pos);
 }
 
-void dxQuickWarmEnd(struct dxWorld *w, dxWarmCache *c, const dReal *lambda)
+WARM_CLONES void dxQuickWarmEnd(struct dxWorld *w, dxWarmCache *c, const dReal *lambda)
 {
     if (!c) return;
     for (int k = 0; k < c->ncur; k++) {

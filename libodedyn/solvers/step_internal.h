@@ -87,10 +87,9 @@ typedef struct dxContactRows {
     dReal c[4], cfm[4], lo[4], hi[4];
     int pyramid[3];           // bounded by the normal force (k finite)
 } dxContactRows;
-// 1 if j is a live contact whose rows are all in dxContactRows: no rolling
-// friction, and not both friction rows unbounded (the generic path solves
-// those two as a block).
-int dxJointContactIsPlain(const dxJoint *j);
+// A live contact whose rows are all in dxContactRows (no rolling friction,
+// and not both friction rows unbounded: the generic path solves those two as
+// a block) has DX_JOINT_PLAIN_CONTACT in its flags, set at creation.
 // The rows of a plain contact for a step with 1/h = fps and the world's
 // erp (as its fill_rows makes them: the same numbers; it may record the
 // contact's anchor on its first step). Kinematic bodies are not folded in.
