@@ -779,7 +779,6 @@ int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, dReal a[][3], int 
     // it ended in b).
     dReal b[DX_TRI_POLY_MAX][3];
     int tb[DX_TRI_POLY_MAX], in_a = 1;
-    for (int i = 0; i < n; i++) made[i] = DX_TRI_MADE_NOT;
     for (int k = 0; k < 3 && n > 0; k++) {
         if (inside & (1u << k)) continue;
         int c = in_a ? clip_polygon(a, made, n, p->m[k], t->v[k], p->slack[k], p->made[k], b, tb)
@@ -800,6 +799,7 @@ int dxTriClipToPrism(const dxTriQuery *q, const dxTri *t, dReal a[][3], int n, i
 {
     dxTriPrism p;
     dxTriPrismInit(q, t, &p);
+    for (int i = 0; i < n; i++) made[i] = DX_TRI_MADE_NOT;
     return dxTriClipToPrismWith(&p, t, a, n, made, 0);
 }
 

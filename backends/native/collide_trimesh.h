@@ -158,8 +158,11 @@ void dxTriSideNormal(const dxTri *t, int k, dReal m[3]);
 // for each corner in made[] whether it was made on a side of the prism, at
 // an edge between coplanar faces (then a corner of the triangulation only,
 // not of a contact patch; never if q->data is NULL) or another edge.
+// dxTriClipToPrismWith takes made[] in and out: on entry the n corners'
+// tags (DX_TRI_MADE_NOT, or DX_TRI_MADE_CORNER + i to follow corner i:
+// a corner kept keeps its tag and its coordinates' bits).
 enum { DX_TRI_POLY_MAX = 36 };
-enum { DX_TRI_MADE_NOT, DX_TRI_MADE_AT_EDGE, DX_TRI_MADE_AT_FLAT_EDGE };
+enum { DX_TRI_MADE_NOT, DX_TRI_MADE_AT_EDGE, DX_TRI_MADE_AT_FLAT_EDGE, DX_TRI_MADE_CORNER };
 int dxTriClipToPrism(const dxTriQuery *q, const dxTri *t, dReal a[][3], int n, int *made);
 
 // The prism of a triangle made once for many clips: each side's inward
@@ -171,9 +174,10 @@ typedef struct dxTriPrism {
     int made[3];
 } dxTriPrism;
 void dxTriPrismInit(const dxTriQuery *q, const dxTri *t, dxTriPrism *p);
-// dxTriClipToPrism with the prism made by dxTriPrismInit(q, t, p); the
-// sides k with bit k of `inside` set are known to keep every point (a
-// polygon within them by more than rounding) and are not clipped against.
+// dxTriClipToPrism with the prism made by dxTriPrismInit(q, t, p) and the
+// corners' tags given in made[]; the sides k with bit k of `inside` set
+// are known to keep every point (a polygon within them by more than
+// rounding) and are not clipped against.
 int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, dReal a[][3], int n, int *made,
                          unsigned inside);
 

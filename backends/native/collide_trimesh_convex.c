@@ -301,17 +301,26 @@ enum { CYL_SIDES = 32, POLY_MAX = DX_TRI_POLY_MAX };
 // and adds nothing). Points made on the prism's side at a flat edge are
 // left out: they are corners of the triangulation, not of the contact
 // patch (the corners of the solid over the neighbour come from it).
-// Returns 1 if any was added.
+// made[]: the corners' tags (dxTriClipToPrismWith); with `seen`, a corner
+// tagged DX_TRI_MADE_CORNER + v that bit v of *seen says was added already
+// (by another face of the solid, against the same triangle: the same
+// point, depth and normal to the bit) is not added again, and a corner
+// added sets its bit. Returns 1 if any was added.
 static int clipped_face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p,
-                                 dReal a[][3], int n, unsigned inside)
+                                 dReal a[][3], int n, int *made, unsigned inside,
+                                 unsigned *seen)
 {
     dReal eps = DX_COLLIDE_EPS * q->scale;
-    int made[POLY_MAX];
     n = dxTriClipToPrismWith(p, t, a, n, made, inside);
     int added = 0;
     for (int i = 0; i < n; i++) {
         dReal depth = -height(t, a[i]);
         if (depth < -eps || made[i] == DX_TRI_MADE_AT_FLAT_EDGE) continue;
+        if (seen && made[i] >= DX_TRI_MADE_CORNER) {
+            unsigned bit = 1u << (made[i] - DX_TRI_MADE_CORNER);
+            if (*seen & bit) continue;
+            *seen |= bit;
+        }
         dxTriAdd(q, a[i], t->n, dMax(depth, 0), t->index);
         added = 1;
     }
@@ -326,7 +335,10 @@ static int face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p, dRe
     dReal eps = DX_COLLIDE_EPS * q->scale;
     int behind = 0;
     for (int i = 0; i < n && !behind; i++) behind = height(t, a[i]) <= eps;
-    return behind ? clipped_face_contacts(q, t, p, a, n, 0) : 0;
+    if (!behind) return 0;
+    int made[POLY_MAX];
+    for (int i = 0; i < n; i++) made[i] = DX_TRI_MADE_NOT;
+    return clipped_face_contacts(q, t, p, a, n, made, 0, NULL);
 }
 
 // A box's values for a pair, worked out on its first triangle (in q->s->pair):
@@ -467,7 +479,9 @@ static int box_test(dxTriQuery *q, const dxTri *t)
             if (f >= 3 * p.slack[k]) inside[k] |= 1u << v;
         }
     }
+    // seen: the corners added already (each is in three faces).
     int added = 0;
+    unsigned seen = 0;
     for (int f = 0; f < 6; f++) {
         const int *fv = faces[f];
         unsigned mask = 1u << fv[0] | 1u << fv[1] | 1u << fv[2] | 1u << fv[3];
@@ -476,12 +490,15 @@ static int box_test(dxTriQuery *q, const dxTri *t)
             (outside[2] & mask) == mask)
             continue;
         dReal a[POLY_MAX][3];
-        for (int i = 0; i < 4; i++)
+        int made[POLY_MAX];
+        for (int i = 0; i < 4; i++) {
             for (int j = 0; j < 3; j++) a[i][j] = b->corner[fv[i]][j];
+            made[i] = DX_TRI_MADE_CORNER + fv[i];
+        }
         unsigned within = 0;
         for (int k = 0; k < 3; k++)
             if ((inside[k] & mask) == mask) within |= 1u << k;
-        added |= clipped_face_contacts(q, t, &p, a, 4, within);
+        added |= clipped_face_contacts(q, t, &p, a, 4, made, within, &seen);
     }
     return added;
 }
