@@ -344,9 +344,11 @@ static int face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p, dRe
 // A box's values for a pair, worked out on its first triangle (in q->s->pair):
 // unit axes, half sides and corners (bit j of the index picks the sign of
 // axis j); inner[j]: h[j] less the margin within which a point counts as
-// inside the box whatever the rounding (box_separated).
+// inside the box whatever the rounding (box_separated); through[j] the
+// same with a wider margin, for a point of a triangle's edge whose ends are
+// at most `reach` from the centre along each axis.
 typedef struct box_pair {
-    dReal ax[3][3], h[3], corner[8][3], inner[3];
+    dReal ax[3][3], h[3], corner[8][3], inner[3], through[3], reach;
 } box_pair;
 _Static_assert(sizeof(box_pair) <= sizeof(((dxTriScratch *)0)->pair), "box_pair fits");
 
@@ -364,7 +366,11 @@ static const box_pair *prepare_box(dxTriQuery *q)
     // sums (a point inside the box is within |c| + h of 0).
     dReal eps = sizeof(dReal) == sizeof(double) ? (dReal)DBL_EPSILON : (dReal)FLT_EPSILON;
     dReal size = dMax(dFabs(c[0]), dMax(dFabs(c[1]), dFabs(c[2]))) + h[0] + h[1] + h[2];
-    for (int j = 0; j < 3; j++) b->inner[j] = h[j] - 128 * eps * size;
+    for (int j = 0; j < 3; j++) {
+        b->inner[j] = h[j] - 128 * eps * size;
+        b->through[j] = h[j] - 1024 * eps * size;
+    }
+    b->reach = 2 * (h[0] + h[1] + h[2]);
     for (int v = 0; v < 8; v++)
         for (int i = 0; i < 3; i++)
             b->corner[v][i] = c[i] + (v & 1 ? h[0] : -h[0]) * b->ax[0][i] +
@@ -384,6 +390,38 @@ static int separates_box(const dxTri *t, const dReal L[3], const dReal c[3],
     triangle_interval(t, L, &lo, &hi);
     for (int j = 0; j < 3; j++) br += h[j] * dFabs(dx_dot(L, ax[j]));
     return hi < bc - br || lo > bc + br;
+}
+
+// Whether the triangle's edge from a to b (box frame) has a point inside
+// the box by more than the margin b->through: then, as for a vertex inside
+// (box_separated), no axis can part them. The point is the middle of the
+// edge's part within the three slabs |x_j| <= through[j], checked where it
+// is worked out. Only for an edge whose ends are within b->reach of the
+// centre along each axis, so that its ends' coordinates (and the sums
+// that test an axis) are rounded by far less than the margin: 1024
+// roundings of |c| + h, where the ends are within 3.5 (h0 + h1 + h2) of c.
+static int edge_through(const box_pair *b, const dReal a[3], const dReal e[3])
+{
+    dReal d[3], s0 = 0, s1 = 1;
+    for (int j = 0; j < 3; j++) {
+        if (!(dFabs(a[j]) <= b->reach && dFabs(e[j]) <= b->reach)) return 0;
+        d[j] = e[j] - a[j];
+    }
+    for (int j = 0; j < 3; j++) {
+        dReal w = b->through[j];
+        if (d[j] == 0) {
+            if (!(dFabs(a[j]) <= w)) return 0;
+            continue;
+        }
+        dReal inv = 1 / d[j], t0 = (-w - a[j]) * inv, t1 = (w - a[j]) * inv;
+        s0 = dMax(s0, dMin(t0, t1));
+        s1 = dMin(s1, dMax(t0, t1));
+    }
+    if (!(s0 <= s1)) return 0;
+    dReal s = (s0 + s1) / 2;
+    for (int j = 0; j < 3; j++)
+        if (!(dFabs(a[j] + s * d[j]) <= b->through[j])) return 0;
+    return 1;
 }
 
 // Whether a separating axis parts the box b (centre c) from triangle t,
@@ -420,6 +458,8 @@ static int box_separated(const box_pair *b, const dxTri *t, const dReal c[3], dR
     for (int i = 0; i < 3; i++)
         if (dFabs(p[i][0]) <= in[0] && dFabs(p[i][1]) <= in[1] && dFabs(p[i][2]) <= in[2])
             return 0;
+    for (int k = 0; k < 3; k++)
+        if (edge_through(b, p[k], p[(k + 1) % 3])) return 0;
     for (int k = 0; k < 3; k++) {
         dReal e[3], L[3];
         sub3(e, t->v[(k + 1) % 3], t->v[k]);
