@@ -44,26 +44,6 @@ void dxTriLoad(const dxTriMeshData *d, int t, dxTri *out)
     for (int k = 0; k < 3; k++) dxTriMeshVertex(d, tri_vertex(d, t, k), out->v[k]);
 }
 
-void dxTriAdd(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth, int tri)
-{
-    dxTriAdd2(q, pos, n, depth, tri, -1);
-}
-
-void dxTriAdd2(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth, int tri,
-               int tri2)
-{
-    dxTriScratch *s = q->s;
-    if (s->raw_count >= s->raw_cap) dxTriScratchAddRaw(s, 1);
-    dxTriMeshRaw *r = &s->raw[s->raw_count++];
-    for (int k = 0; k < 3; k++) {
-        r->pos[k] = pos[k];
-        r->n[k] = n[k];
-    }
-    r->depth = depth;
-    r->tri = tri;
-    r->tri2 = tri2;
-}
-
 static dReal dist2(const dReal a[3], const dReal b[3])
 {
     dReal d[3] = { a[0] - b[0], a[1] - b[1], a[2] - b[2] };

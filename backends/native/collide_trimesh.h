@@ -101,13 +101,31 @@ typedef struct dxTri {
 // if the triangle touches the other geom.
 typedef int dxTriTest(dxTriQuery *q, const dxTri *t);
 
-// Add a contact: pos in the overlap, n the unit direction in which the other
-// geom leaves the mesh, depth >= 0 (mesh frame).
-void dxTriAdd(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth, int tri);
+// Add a contact with the other's triangle (the other geom being a
+// trimesh; else -1): pos in the overlap, n the unit direction in which the
+// other geom leaves the mesh, depth >= 0 (mesh frame). Inline: the box
+// test adds a few a triangle.
+static inline void dxTriAdd2(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth,
+                             int tri, int tri2)
+{
+    dxTriScratch *s = q->s;
+    if (s->raw_count >= s->raw_cap) dxTriScratchAddRaw(s, 1);
+    dxTriMeshRaw *r = &s->raw[s->raw_count++];
+    for (int k = 0; k < 3; k++) {
+        r->pos[k] = pos[k];
+        r->n[k] = n[k];
+    }
+    r->depth = depth;
+    r->tri = tri;
+    r->tri2 = tri2;
+}
 
-// The same with the other's triangle (the other geom being a trimesh).
-void dxTriAdd2(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth, int tri,
-               int tri2);
+// The same with no other triangle.
+static inline void dxTriAdd(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth,
+                            int tri)
+{
+    dxTriAdd2(q, pos, n, depth, tri, -1);
+}
 
 // The collider body: every triangle whose box meets the other geom's box
 // (mesh frame) and that the per-triangle callback accepts goes through

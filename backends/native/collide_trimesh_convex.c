@@ -314,13 +314,14 @@ static int clipped_face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism
     n = dxTriClipToPrismWith(p, t, a, n, made, inside);
     int added = 0;
     for (int i = 0; i < n; i++) {
+        unsigned bit = 0;
+        if (seen && made[i] >= DX_TRI_MADE_CORNER) {
+            bit = 1u << (made[i] - DX_TRI_MADE_CORNER);
+            if (*seen & bit) continue;
+        }
         dReal depth = -height(t, a[i]);
         if (depth < -eps || made[i] == DX_TRI_MADE_AT_FLAT_EDGE) continue;
-        if (seen && made[i] >= DX_TRI_MADE_CORNER) {
-            unsigned bit = 1u << (made[i] - DX_TRI_MADE_CORNER);
-            if (*seen & bit) continue;
-            *seen |= bit;
-        }
+        if (seen) *seen |= bit;
         dxTriAdd(q, a[i], t->n, dMax(depth, 0), t->index);
         added = 1;
     }
