@@ -430,15 +430,23 @@ int dxTriMeshFinish(dxTriQuery *q, int flags, dContactGeom *c, int skip)
     return n;
 }
 
+// R^T v (R row-major 3x4): dxTriMeshDirToLocal's sums, inline.
+static inline void turn_back(const dReal *R, const dReal v[3], dReal out[3])
+{
+    for (int i = 0; i < 3; i++) out[i] = R[i] * v[0] + R[4 + i] * v[1] + R[8 + i] * v[2];
+}
+
 // The other geom's pose in the mesh frame, and its box there.
 static void pose_other(dxTriQuery *q, dReal lo[3], dReal hi[3])
 {
     dxGeom *mesh = &q->mesh->g, *o = q->other;
+    const dReal *R = mesh->R, *mp = mesh->pos;
     if (o->flags & DX_GEOM_PLACEABLE) {
-        dxTriMeshToLocal(mesh, o->pos, q->pos);
+        dReal d[3] = { o->pos[0] - mp[0], o->pos[1] - mp[1], o->pos[2] - mp[2] };
+        turn_back(R, d, q->pos);
         for (int j = 0; j < 3; j++) {
             dReal col[3] = { o->R[j], o->R[4 + j], o->R[8 + j] }, lc[3];
-            dxTriMeshDirToLocal(mesh, col, lc);
+            turn_back(R, col, lc);
             for (int i = 0; i < 3; i++) q->R[4 * i + j] = lc[i];
         }
         for (int i = 0; i < 3; i++) q->R[4 * i + 3] = 0;
@@ -455,8 +463,8 @@ static void pose_other(dxTriQuery *q, dReal lo[3], dReal hi[3])
         cw[k] = (o->aabb[2 * k] + o->aabb[2 * k + 1]) / 2;
         hw[k] = (o->aabb[2 * k + 1] - o->aabb[2 * k]) / 2;
     }
-    dxTriMeshToLocal(mesh, cw, cl);
-    const dReal *R = mesh->R;
+    dReal dc[3] = { cw[0] - mp[0], cw[1] - mp[1], cw[2] - mp[2] };
+    turn_back(R, dc, cl);
     q->scale = 0;
     for (int i = 0; i < 3; i++) {
         dReal e = dFabs(R[i]) * hw[0] + dFabs(R[4 + i]) * hw[1] + dFabs(R[8 + i]) * hw[2];
