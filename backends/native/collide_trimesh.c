@@ -26,19 +26,16 @@ static inline int tri_vertex(const dxTriMeshData *d, int t, int k)
     return (int)idx;
 }
 
-// Triangle t's normal, features and neighbours into out (all but its
-// vertices).
-static inline void load_topology(const dxTriMeshData *d, int t, dxTri *out)
+// Triangle t's index and normal into out (all but its vertices).
+static inline void load_normal(const dxTriMeshData *d, int t, dxTri *out)
 {
     out->index = t;
     for (int k = 0; k < 3; k++) out->n[k] = d->normal[3 * t + k];
-    out->features = dxTriMeshFeatures(d, t);
-    out->neighbour = d->neighbour + 3 * t;
 }
 
 void dxTriLoad(const dxTriMeshData *d, int t, dxTri *out)
 {
-    load_topology(d, t, out);
+    load_normal(d, t, out);
     // The triangle's own vertices, as the leaf-order copy holds them (a
     // welded one is at the same position, but for the sign of a zero).
     for (int k = 0; k < 3; k++) dxTriMeshVertex(d, tri_vertex(d, t, k), out->v[k]);
@@ -534,12 +531,14 @@ static inline int gather_one(dxTriQuery *q, int t, const dReal *v, const dReal l
     // that is not degenerate) the box test comes first: it rejects more,
     // from memory the walk reads anyway.
     if (v && !m->callback && tri_off_box(v, lo, hi)) return 0;
-    if (dxTriMeshIsDegenerate(q->data, t)) return 0;
-    if (m->callback && !m->callback(&m->g, q->other, t)) return 0;
+    // A degenerate triangle has a zero normal (dxTriMeshIsDegenerate),
+    // tested where it is loaded.
     dxTri tri;
+    load_normal(q->data, t, &tri);
+    if (tri.n[0] == 0 && tri.n[1] == 0 && tri.n[2] == 0) return 0;
+    if (m->callback && !m->callback(&m->g, q->other, t)) return 0;
     if (v) {
         if (m->callback && tri_off_box(v, lo, hi)) return 0;
-        load_topology(q->data, t, &tri);
         memcpy(tri.v, v, sizeof tri.v);
     } else {
         dxTriLoad(q->data, t, &tri);
@@ -671,8 +670,8 @@ int dxTriFeatureNormal(const dxTriQuery *q, const dxTri *t, int feature, const d
         // A vertex's region: no edge from it may lean towards dir (exact
         // for a convex vertex).
         int k = feature - 4;
-        if (!(t->features & (DX_TRI_VERTEX_FEATURE << k))) return 0;
         const dxTriMeshData *d = q->data;
+        if (!(dxTriMeshFeatures(d, t->index) & (DX_TRI_VERTEX_FEATURE << k))) return 0;
         int welded = d->weld[tri_vertex(d, t->index, k)];
         for (int j = d->vertex_first[welded]; j < d->vertex_first[welded + 1]; j++) {
             dReal w[3], e[3];
@@ -683,8 +682,8 @@ int dxTriFeatureNormal(const dxTriQuery *q, const dxTri *t, int feature, const d
         return 1;
     }
     int k = feature - 1;
-    if (!(t->features & (DX_TRI_EDGE_FEATURE << k))) return 0;
-    int u = t->neighbour[k];
+    if (!(dxTriMeshFeatures(q->data, t->index) & (DX_TRI_EDGE_FEATURE << k))) return 0;
+    int u = q->data->neighbour[3 * t->index + k];
     if (u < 0) return 1;
     // The neighbour's in-plane direction away from itself across the edge
     // (towards this triangle's side): dir must not point back over it.
@@ -745,8 +744,8 @@ static int clip_polygon(dReal p[][3], const int *tp, int n, const dReal m[3], co
 static int flat_edge(const dxTriQuery *q, const dxTri *t, int k)
 {
     if (!q->data) return 0;
-    if (t->features & (DX_TRI_EDGE_FEATURE << k)) return 0;
-    int u = t->neighbour[k];
+    if (dxTriMeshFeatures(q->data, t->index) & (DX_TRI_EDGE_FEATURE << k)) return 0;
+    int u = q->data->neighbour[3 * t->index + k];
     return u >= 0 && dx_dot(t->n, q->data->normal + 3 * u) > 1 - 10 * DX_COLLIDE_EPS;
 }
 

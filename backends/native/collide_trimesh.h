@@ -86,15 +86,13 @@ typedef struct dxTriQuery {
     int prepared;
 } dxTriQuery;
 
-// One triangle: its vertices, unit normal, feature bits (DX_TRI_*_FEATURE)
-// and neighbours across its edges (its welded vertex indices, needed only
-// at a vertex feature, are read from the data: dxTriFeatureNormal).
+// One triangle: its index, vertices and unit normal (its feature bits,
+// neighbours and welded vertex indices, needed only at an edge or vertex,
+// are read from the data there: dxTriFeatureNormal, dxTriPrismInit).
 typedef struct dxTri {
     int index;
     dReal v[3][3];
     dReal n[3];
-    unsigned features;
-    const int *neighbour;
 } dxTri;
 
 // A triangle test: adds the triangle's contacts with dxTriAdd and returns 1
