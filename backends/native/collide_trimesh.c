@@ -433,20 +433,24 @@ static inline void turn_back(const dReal *R, const dReal v[3], dReal out[3])
     for (int i = 0; i < 3; i++) out[i] = R[i] * v[0] + R[4 + i] * v[1] + R[8 + i] * v[2];
 }
 
-// The other geom's pose in the mesh frame, and its box there.
+// The other geom's pose in the mesh frame (a sphere's rotation, which no
+// test reads, is left out), and its box there.
 static void pose_other(dxTriQuery *q, dReal lo[3], dReal hi[3])
 {
     dxGeom *mesh = &q->mesh->g, *o = q->other;
     const dReal *R = mesh->R, *mp = mesh->pos;
+    int cls = o->ops->cls;
     if (o->flags & DX_GEOM_PLACEABLE) {
         dReal d[3] = { o->pos[0] - mp[0], o->pos[1] - mp[1], o->pos[2] - mp[2] };
         turn_back(R, d, q->pos);
-        for (int j = 0; j < 3; j++) {
+        for (int j = 0; j < 3 && cls != dSphereClass; j++) {
             dReal col[3] = { o->R[j], o->R[4 + j], o->R[8 + j] }, lc[3];
             turn_back(R, col, lc);
             for (int i = 0; i < 3; i++) q->R[4 * i + j] = lc[i];
         }
         for (int i = 0; i < 3; i++) q->R[4 * i + 3] = 0;
+    } else {
+        q->pos[0] = q->pos[1] = q->pos[2] = 0;
     }
     dxGeomUpdateAABB(o);
     if (!(o->flags & DX_GEOM_PLACEABLE)) {   // a plane: the whole mesh
@@ -471,7 +475,6 @@ static void pose_other(dxTriQuery *q, dReal lo[3], dReal hi[3])
     }
     // A sphere's or a box's own box in the mesh frame is tighter where the
     // mesh is turned (the world box turned with it holds it).
-    int cls = o->ops->cls;
     if (cls == dSphereClass || cls == dBoxClass) {
         dReal e[3];
         for (int i = 0; i < 3; i++) {
@@ -562,7 +565,11 @@ int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dxTriTest *test)
 {
     dxTriMesh *m = (dxTriMesh *)mesh;
     dxTriScratch *s = q->s;
-    *q = (dxTriQuery){ .s = s, .mesh = m, .data = m->data, .other = other };
+    q->mesh = m;
+    q->data = m->data;
+    q->other = other;
+    q->scale = 0;
+    q->prepared = 0;
     s->raw_count = 0;
     const dxTriMeshData *d = m->data;
     if (!d || d->tri_count == 0) return 0;
@@ -603,7 +610,8 @@ int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dxTriTest *test)
 int dxTriMeshCollide(dxGeom *mesh, dxGeom *other, int flags, dContactGeom *c, int skip,
                      dxTriTest *test)
 {
-    dxTriQuery q = { .s = dxTriScratchAcquire() };
+    dxTriQuery q;
+    q.s = dxTriScratchAcquire();
     if (!q.s) return 0;
     int n = dxTriMeshGather(&q, mesh, other, test) ? dxTriMeshFinish(&q, flags, c, skip) : 0;
     dxTriScratchRelease(q.s);

@@ -79,7 +79,7 @@ typedef struct dxTriQuery {
     const dxTriMeshData *data;   // the mesh's data (NULL: see dxTriClipToPrism)
     dxGeom *other;
     dReal pos[3];      // the other geom's position ...
-    dReal R[12];       // ... and rotation (row-major 3x4) in the mesh frame
+    dReal R[12];       // ... and rotation (row-major 3x4; not for a sphere) in the mesh frame
     dReal scale;       // the other geom's size (tolerances)
     // Whether the triangle test has worked out what it needs once per pair
     // (into s->pair) on an earlier triangle: dxTriMeshGather clears it.
@@ -140,9 +140,10 @@ int dxTriMeshCollide(dxGeom *mesh, dxGeom *other, int flags, dContactGeom *c, in
 // then the spread) and write them in world coordinates; returns the count.
 int dxTriMeshFinish(dxTriQuery *q, int flags, dContactGeom *c, int skip);
 
-// The walk of dxTriMeshCollide alone: sets q up for the pair (q->s, an
-// acquired scratch set, is kept), gathers the triangles' contacts into
-// q->s->raw (callbacks honoured) and returns their count.
+// The walk of dxTriMeshCollide alone: sets q up for the pair (every field
+// but a sphere's R; q->s, an acquired scratch set, is kept), gathers the
+// triangles' contacts into q->s->raw (callbacks honoured) and returns
+// their count.
 int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dxTriTest *test);
 // Keep at most flags & 0xffff of the first n gathered contacts (the deepest
 // first, then the spread) at the front; returns the count kept.

@@ -149,7 +149,8 @@ static int merge_fully(dxTriMesh *m, dxTriMeshRaw *r, int n, const dReal N[3])
 // any shape's.
 int dxCollideTriMeshSphere(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
 {
-    dxTriQuery q = { .s = dxTriScratchAcquire() };
+    dxTriQuery q;
+    q.s = dxTriScratchAcquire();
     if (!q.s) return 0;
     int n = dxTriMeshGather(&q, o1, o2, sphere_test);
     dxTriMesh *m = q.mesh;
