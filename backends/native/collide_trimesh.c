@@ -117,7 +117,7 @@ static int merge_duplicates(dxTriScratch *s, dxTriMesh *m, dxGeom *other, dReal 
     for (int i = 0; i < s->raw_count; i++) {
         int j = kept_duplicate(s, n, i, tol, grid);
         if (j == n) {
-            r[n] = r[i];
+            if (n != i) r[n] = r[i];
             if (grid && finite3(r[n].pos)) dxTriGridAdd(&s->grid, r[n].pos, n);
             n++;
             continue;
@@ -295,7 +295,10 @@ static int prune_flat_groups(dxTriScratch *s, int n, dReal tol)
     }
     int k = 0;
     for (int i = 0; i < n; i++)
-        if (keep[i]) s->raw[k++] = s->raw[i];
+        if (keep[i]) {
+            if (k != i) s->raw[k] = s->raw[i];
+            k++;
+        }
     return k;
 }
 
