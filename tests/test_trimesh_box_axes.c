@@ -279,8 +279,104 @@ static int test_box_holding_a_vertex(void)
     return 0;
 }
 
+// A triangle none of whose vertices is in the box but one of whose edges
+// passes through it (the collider then also skips the edge pairs' axes),
+// the box's centre in front of it: the box reaches behind the triangle
+// where the edge runs through, so there are contacts, judged as above; and
+// both argument orders agree. The edge's point in the box from deep inside
+// to a millionth of the box's size from a face (a thousandth in single
+// precision), its ends from just outside the box to beyond its size.
+static int test_box_crossed_by_an_edge(void)
+{
+    srand(13);
+    const double margin = TOL(1e-6, 2e-3);
+    int judged = 0;
+    for (int round = 0; round < 4000; round++) {
+        double h[3] = { urand(0.05, 0.6), urand(0.05, 0.6), urand(0.05, 0.6) };
+        dGeomID box = dCreateBox(0, 2 * h[0], 2 * h[1], 2 * h[2]);
+        dMatrix3 Rb;
+        dRFromAxisAndAngle(Rb, urand(-1, 1), urand(-1, 1), urand(-1, 1), urand(0, 3));
+        dGeomSetRotation(box, Rb);
+        dGeomSetPosition(box, urand(-1, 1), urand(-1, 1), urand(-1, 1));
+        const dReal *R = dGeomGetRotation(box), *P = dGeomGetPosition(box);
+        double ax[3][3], c[3];
+        for (int j = 0; j < 3; j++)
+            for (int i = 0; i < 3; i++) ax[j][i] = R[4 * i + j];
+        for (int i = 0; i < 3; i++) c[i] = P[i];
+        // x: the edge's point in the box; d: the edge's direction.
+        double inset = round % 4 == 0 ? TOL(1e-6, 1e-3) : urand(0.01, 1), x[3], d[3];
+        for (int i = 0; i < 3; i++) x[i] = c[i];
+        for (int j = 0; j < 3; j++) {
+            double u = (urand(-1, 1) < 0 ? -1 : 1) * (1 - inset * urand(0.5, 1)) * h[j];
+            for (int i = 0; i < 3; i++) x[i] += u * ax[j][i];
+        }
+        for (int i = 0; i < 3; i++) d[i] = urand(-1, 1);
+        double dl = sqrt(dot3(d, d)), size = h[0] + h[1] + h[2];
+        double v[3][3], back = urand(0.2, 1.2) * size / dl, on = urand(0.2, 1.2) * size / dl;
+        for (int i = 0; i < 3; i++) {
+            v[0][i] = x[i] - back * d[i];
+            v[1][i] = x[i] + on * d[i];
+            v[2][i] = x[i] + urand(-1, 1);
+        }
+        int inside = 0;   // a vertex in the box: another test's case
+        for (int k = 0; k < 3; k++) {
+            double r[3];
+            for (int i = 0; i < 3; i++) r[i] = v[k][i] - c[i];
+            int in = 1;
+            for (int j = 0; j < 3; j++) in &= fabs(dot3(r, ax[j])) <= h[j];
+            inside |= in;
+        }
+        double e1[3], e2[3], nrm[3];
+        for (int i = 0; i < 3; i++) {
+            e1[i] = v[1][i] - v[0][i];
+            e2[i] = v[2][i] - v[0][i];
+        }
+        cross3(nrm, e1, e2);
+        double nl = sqrt(dot3(nrm, nrm));
+        double hc = nl > 0 ? (dot3(nrm, c) - dot3(nrm, v[0])) / nl : 0;
+        if (inside || nl < 0.05 || hc < margin) {   // a sliver, or the centre not in front
+            dGeomDestroy(box);
+            continue;
+        }
+        for (int i = 0; i < 3; i++) nrm[i] /= nl;
+        dReal fv[9];
+        for (int k = 0; k < 9; k++) fv[k] = (dReal)v[k / 3][k % 3];
+        static const dTriIndex idx[3] = { 0, 1, 2 };
+        dTriMeshDataID data = dGeomTriMeshDataCreate();
+#ifdef dDOUBLE
+        dGeomTriMeshDataBuildDouble(data, fv, 3 * sizeof(dReal), 3, idx, 3, 3 * sizeof(dTriIndex));
+#else
+        dGeomTriMeshDataBuildSingle(data, fv, 3 * sizeof(dReal), 3, idx, 3, 3 * sizeof(dTriIndex));
+#endif
+        dGeomID mesh = dCreateTriMesh(0, data, 0, 0, 0);
+
+        dContactGeom k[8], kr[8];
+        int n = dCollide(mesh, box, 8, k, sizeof k[0]);
+        int nr = dCollide(box, mesh, 8, kr, sizeof kr[0]);
+        CHECK(n >= 1 && nr == n);
+        for (int j = 0; j < n; j++) {
+            CHECK(k[j].g1 == mesh && k[j].g2 == box && k[j].side1 == 0);
+            CHECK(kr[j].g1 == box && kr[j].g2 == mesh && kr[j].side2 == 0);
+            CHECK_VEC(k[j].normal, -nrm[0], -nrm[1], -nrm[2], TOL(1e-9, 1e-4));
+            CHECK(k[j].depth >= 0 && kr[j].depth == k[j].depth);
+            double p[3] = { k[j].pos[0], k[j].pos[1], k[j].pos[2] }, r[3];
+            for (int i = 0; i < 3; i++) r[i] = p[i] - c[i];
+            for (int a = 0; a < 3; a++) CHECK(fabs(dot3(r, ax[a])) <= h[a] + margin);
+            CHECK(over_triangle(v, nrm, p, -margin));
+            CHECK_NEAR(dot3(nrm, p) - dot3(nrm, v[0]), -k[j].depth, TOL(1e-8, 1e-4));
+        }
+        judged++;
+        dGeomDestroy(box);
+        dGeomDestroy(mesh);
+        dGeomTriMeshDataDestroy(data);
+    }
+    CHECK(judged > 1000);
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_box_against_one_triangle),
     TEST_CASE(test_box_holding_a_vertex),
+    TEST_CASE(test_box_crossed_by_an_edge),
     TEST_END,
 };

@@ -26,42 +26,19 @@ static inline int tri_vertex(const dxTriMeshData *d, int t, int k)
     return (int)idx;
 }
 
-// Triangle t's normal, features and neighbours into out (all but its
-// vertices).
-static inline void load_topology(const dxTriMeshData *d, int t, dxTri *out)
+// Triangle t's index and normal into out (all but its vertices).
+static inline void load_normal(const dxTriMeshData *d, int t, dxTri *out)
 {
     out->index = t;
     for (int k = 0; k < 3; k++) out->n[k] = d->normal[3 * t + k];
-    out->features = dxTriMeshFeatures(d, t);
-    out->neighbour = d->neighbour + 3 * t;
 }
 
 void dxTriLoad(const dxTriMeshData *d, int t, dxTri *out)
 {
-    load_topology(d, t, out);
+    load_normal(d, t, out);
     // The triangle's own vertices, as the leaf-order copy holds them (a
     // welded one is at the same position, but for the sign of a zero).
     for (int k = 0; k < 3; k++) dxTriMeshVertex(d, tri_vertex(d, t, k), out->v[k]);
-}
-
-void dxTriAdd(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth, int tri)
-{
-    dxTriAdd2(q, pos, n, depth, tri, -1);
-}
-
-void dxTriAdd2(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth, int tri,
-               int tri2)
-{
-    dxTriScratch *s = q->s;
-    if (s->raw_count >= s->raw_cap) dxTriScratchAddRaw(s, 1);
-    dxTriMeshRaw *r = &s->raw[s->raw_count++];
-    for (int k = 0; k < 3; k++) {
-        r->pos[k] = pos[k];
-        r->n[k] = n[k];
-    }
-    r->depth = depth;
-    r->tri = tri;
-    r->tri2 = tri2;
 }
 
 static dReal dist2(const dReal a[3], const dReal b[3])
@@ -140,7 +117,7 @@ static int merge_duplicates(dxTriScratch *s, dxTriMesh *m, dxGeom *other, dReal 
     for (int i = 0; i < s->raw_count; i++) {
         int j = kept_duplicate(s, n, i, tol, grid);
         if (j == n) {
-            r[n] = r[i];
+            if (n != i) r[n] = r[i];
             if (grid && finite3(r[n].pos)) dxTriGridAdd(&s->grid, r[n].pos, n);
             n++;
             continue;
@@ -318,7 +295,10 @@ static int prune_flat_groups(dxTriScratch *s, int n, dReal tol)
     }
     int k = 0;
     for (int i = 0; i < n; i++)
-        if (keep[i]) s->raw[k++] = s->raw[i];
+        if (keep[i]) {
+            if (k != i) s->raw[k] = s->raw[i];
+            k++;
+        }
     return k;
 }
 
@@ -450,18 +430,30 @@ int dxTriMeshFinish(dxTriQuery *q, int flags, dContactGeom *c, int skip)
     return n;
 }
 
-// The other geom's pose in the mesh frame, and its box there.
+// R^T v (R row-major 3x4): dxTriMeshDirToLocal's sums, inline.
+static inline void turn_back(const dReal *R, const dReal v[3], dReal out[3])
+{
+    for (int i = 0; i < 3; i++) out[i] = R[i] * v[0] + R[4 + i] * v[1] + R[8 + i] * v[2];
+}
+
+// The other geom's pose in the mesh frame (a sphere's rotation, which no
+// test reads, is left out), and its box there.
 static void pose_other(dxTriQuery *q, dReal lo[3], dReal hi[3])
 {
     dxGeom *mesh = &q->mesh->g, *o = q->other;
+    const dReal *R = mesh->R, *mp = mesh->pos;
+    int cls = o->ops->cls;
     if (o->flags & DX_GEOM_PLACEABLE) {
-        dxTriMeshToLocal(mesh, o->pos, q->pos);
-        for (int j = 0; j < 3; j++) {
+        dReal d[3] = { o->pos[0] - mp[0], o->pos[1] - mp[1], o->pos[2] - mp[2] };
+        turn_back(R, d, q->pos);
+        for (int j = 0; j < 3 && cls != dSphereClass; j++) {
             dReal col[3] = { o->R[j], o->R[4 + j], o->R[8 + j] }, lc[3];
-            dxTriMeshDirToLocal(mesh, col, lc);
+            turn_back(R, col, lc);
             for (int i = 0; i < 3; i++) q->R[4 * i + j] = lc[i];
         }
         for (int i = 0; i < 3; i++) q->R[4 * i + 3] = 0;
+    } else {
+        q->pos[0] = q->pos[1] = q->pos[2] = 0;
     }
     dxGeomUpdateAABB(o);
     if (!(o->flags & DX_GEOM_PLACEABLE)) {   // a plane: the whole mesh
@@ -475,8 +467,8 @@ static void pose_other(dxTriQuery *q, dReal lo[3], dReal hi[3])
         cw[k] = (o->aabb[2 * k] + o->aabb[2 * k + 1]) / 2;
         hw[k] = (o->aabb[2 * k + 1] - o->aabb[2 * k]) / 2;
     }
-    dxTriMeshToLocal(mesh, cw, cl);
-    const dReal *R = mesh->R;
+    dReal dc[3] = { cw[0] - mp[0], cw[1] - mp[1], cw[2] - mp[2] };
+    turn_back(R, dc, cl);
     q->scale = 0;
     for (int i = 0; i < 3; i++) {
         dReal e = dFabs(R[i]) * hw[0] + dFabs(R[4 + i]) * hw[1] + dFabs(R[8 + i]) * hw[2];
@@ -486,7 +478,6 @@ static void pose_other(dxTriQuery *q, dReal lo[3], dReal hi[3])
     }
     // A sphere's or a box's own box in the mesh frame is tighter where the
     // mesh is turned (the world box turned with it holds it).
-    int cls = o->ops->cls;
     if (cls == dSphereClass || cls == dBoxClass) {
         dReal e[3];
         for (int i = 0; i < 3; i++) {
@@ -546,12 +537,14 @@ static inline int gather_one(dxTriQuery *q, int t, const dReal *v, const dReal l
     // that is not degenerate) the box test comes first: it rejects more,
     // from memory the walk reads anyway.
     if (v && !m->callback && tri_off_box(v, lo, hi)) return 0;
-    if (dxTriMeshIsDegenerate(q->data, t)) return 0;
-    if (m->callback && !m->callback(&m->g, q->other, t)) return 0;
+    // A degenerate triangle has a zero normal (dxTriMeshIsDegenerate),
+    // tested where it is loaded.
     dxTri tri;
+    load_normal(q->data, t, &tri);
+    if (tri.n[0] == 0 && tri.n[1] == 0 && tri.n[2] == 0) return 0;
+    if (m->callback && !m->callback(&m->g, q->other, t)) return 0;
     if (v) {
         if (m->callback && tri_off_box(v, lo, hi)) return 0;
-        load_topology(q->data, t, &tri);
         memcpy(tri.v, v, sizeof tri.v);
     } else {
         dxTriLoad(q->data, t, &tri);
@@ -575,7 +568,11 @@ int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dxTriTest *test)
 {
     dxTriMesh *m = (dxTriMesh *)mesh;
     dxTriScratch *s = q->s;
-    *q = (dxTriQuery){ .s = s, .mesh = m, .data = m->data, .other = other };
+    q->mesh = m;
+    q->data = m->data;
+    q->other = other;
+    q->scale = 0;
+    q->prepared = 0;
     s->raw_count = 0;
     const dxTriMeshData *d = m->data;
     if (!d || d->tri_count == 0) return 0;
@@ -616,7 +613,8 @@ int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dxTriTest *test)
 int dxTriMeshCollide(dxGeom *mesh, dxGeom *other, int flags, dContactGeom *c, int skip,
                      dxTriTest *test)
 {
-    dxTriQuery q = { .s = dxTriScratchAcquire() };
+    dxTriQuery q;
+    q.s = dxTriScratchAcquire();
     if (!q.s) return 0;
     int n = dxTriMeshGather(&q, mesh, other, test) ? dxTriMeshFinish(&q, flags, c, skip) : 0;
     dxTriScratchRelease(q.s);
@@ -683,8 +681,8 @@ int dxTriFeatureNormal(const dxTriQuery *q, const dxTri *t, int feature, const d
         // A vertex's region: no edge from it may lean towards dir (exact
         // for a convex vertex).
         int k = feature - 4;
-        if (!(t->features & (DX_TRI_VERTEX_FEATURE << k))) return 0;
         const dxTriMeshData *d = q->data;
+        if (!(dxTriMeshFeatures(d, t->index) & (DX_TRI_VERTEX_FEATURE << k))) return 0;
         int welded = d->weld[tri_vertex(d, t->index, k)];
         for (int j = d->vertex_first[welded]; j < d->vertex_first[welded + 1]; j++) {
             dReal w[3], e[3];
@@ -695,8 +693,8 @@ int dxTriFeatureNormal(const dxTriQuery *q, const dxTri *t, int feature, const d
         return 1;
     }
     int k = feature - 1;
-    if (!(t->features & (DX_TRI_EDGE_FEATURE << k))) return 0;
-    int u = t->neighbour[k];
+    if (!(dxTriMeshFeatures(q->data, t->index) & (DX_TRI_EDGE_FEATURE << k))) return 0;
+    int u = q->data->neighbour[3 * t->index + k];
     if (u < 0) return 1;
     // The neighbour's in-plane direction away from itself across the edge
     // (towards this triangle's side): dir must not point back over it.
@@ -757,8 +755,8 @@ static int clip_polygon(dReal p[][3], const int *tp, int n, const dReal m[3], co
 static int flat_edge(const dxTriQuery *q, const dxTri *t, int k)
 {
     if (!q->data) return 0;
-    if (t->features & (DX_TRI_EDGE_FEATURE << k)) return 0;
-    int u = t->neighbour[k];
+    if (dxTriMeshFeatures(q->data, t->index) & (DX_TRI_EDGE_FEATURE << k)) return 0;
+    int u = q->data->neighbour[3 * t->index + k];
     return u >= 0 && dx_dot(t->n, q->data->normal + 3 * u) > 1 - 10 * DX_COLLIDE_EPS;
 }
 
@@ -779,7 +777,6 @@ int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, dReal a[][3], int 
     // it ended in b).
     dReal b[DX_TRI_POLY_MAX][3];
     int tb[DX_TRI_POLY_MAX], in_a = 1;
-    for (int i = 0; i < n; i++) made[i] = DX_TRI_MADE_NOT;
     for (int k = 0; k < 3 && n > 0; k++) {
         if (inside & (1u << k)) continue;
         int c = in_a ? clip_polygon(a, made, n, p->m[k], t->v[k], p->slack[k], p->made[k], b, tb)
@@ -800,6 +797,7 @@ int dxTriClipToPrism(const dxTriQuery *q, const dxTri *t, dReal a[][3], int n, i
 {
     dxTriPrism p;
     dxTriPrismInit(q, t, &p);
+    for (int i = 0; i < n; i++) made[i] = DX_TRI_MADE_NOT;
     return dxTriClipToPrismWith(&p, t, a, n, made, 0);
 }
 

@@ -79,35 +79,51 @@ typedef struct dxTriQuery {
     const dxTriMeshData *data;   // the mesh's data (NULL: see dxTriClipToPrism)
     dxGeom *other;
     dReal pos[3];      // the other geom's position ...
-    dReal R[12];       // ... and rotation (row-major 3x4) in the mesh frame
+    dReal R[12];       // ... and rotation (row-major 3x4; not for a sphere) in the mesh frame
     dReal scale;       // the other geom's size (tolerances)
     // Whether the triangle test has worked out what it needs once per pair
     // (into s->pair) on an earlier triangle: dxTriMeshGather clears it.
     int prepared;
 } dxTriQuery;
 
-// One triangle: its vertices, unit normal, feature bits (DX_TRI_*_FEATURE)
-// and neighbours across its edges (its welded vertex indices, needed only
-// at a vertex feature, are read from the data: dxTriFeatureNormal).
+// One triangle: its index, vertices and unit normal (its feature bits,
+// neighbours and welded vertex indices, needed only at an edge or vertex,
+// are read from the data there: dxTriFeatureNormal, dxTriPrismInit).
 typedef struct dxTri {
     int index;
     dReal v[3][3];
     dReal n[3];
-    unsigned features;
-    const int *neighbour;
 } dxTri;
 
 // A triangle test: adds the triangle's contacts with dxTriAdd and returns 1
 // if the triangle touches the other geom.
 typedef int dxTriTest(dxTriQuery *q, const dxTri *t);
 
-// Add a contact: pos in the overlap, n the unit direction in which the other
-// geom leaves the mesh, depth >= 0 (mesh frame).
-void dxTriAdd(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth, int tri);
+// Add a contact with the other's triangle (the other geom being a
+// trimesh; else -1): pos in the overlap, n the unit direction in which the
+// other geom leaves the mesh, depth >= 0 (mesh frame). Inline: the box
+// test adds a few a triangle.
+static inline void dxTriAdd2(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth,
+                             int tri, int tri2)
+{
+    dxTriScratch *s = q->s;
+    if (s->raw_count >= s->raw_cap) dxTriScratchAddRaw(s, 1);
+    dxTriMeshRaw *r = &s->raw[s->raw_count++];
+    for (int k = 0; k < 3; k++) {
+        r->pos[k] = pos[k];
+        r->n[k] = n[k];
+    }
+    r->depth = depth;
+    r->tri = tri;
+    r->tri2 = tri2;
+}
 
-// The same with the other's triangle (the other geom being a trimesh).
-void dxTriAdd2(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth, int tri,
-               int tri2);
+// The same with no other triangle.
+static inline void dxTriAdd(dxTriQuery *q, const dReal pos[3], const dReal n[3], dReal depth,
+                            int tri)
+{
+    dxTriAdd2(q, pos, n, depth, tri, -1);
+}
 
 // The collider body: every triangle whose box meets the other geom's box
 // (mesh frame) and that the per-triangle callback accepts goes through
@@ -124,9 +140,10 @@ int dxTriMeshCollide(dxGeom *mesh, dxGeom *other, int flags, dContactGeom *c, in
 // then the spread) and write them in world coordinates; returns the count.
 int dxTriMeshFinish(dxTriQuery *q, int flags, dContactGeom *c, int skip);
 
-// The walk of dxTriMeshCollide alone: sets q up for the pair (q->s, an
-// acquired scratch set, is kept), gathers the triangles' contacts into
-// q->s->raw (callbacks honoured) and returns their count.
+// The walk of dxTriMeshCollide alone: sets q up for the pair (every field
+// but a sphere's R; q->s, an acquired scratch set, is kept), gathers the
+// triangles' contacts into q->s->raw (callbacks honoured) and returns
+// their count.
 int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dxTriTest *test);
 // Keep at most flags & 0xffff of the first n gathered contacts (the deepest
 // first, then the spread) at the front; returns the count kept.
@@ -158,8 +175,11 @@ void dxTriSideNormal(const dxTri *t, int k, dReal m[3]);
 // for each corner in made[] whether it was made on a side of the prism, at
 // an edge between coplanar faces (then a corner of the triangulation only,
 // not of a contact patch; never if q->data is NULL) or another edge.
+// dxTriClipToPrismWith takes made[] in and out: on entry the n corners'
+// tags (DX_TRI_MADE_NOT, or DX_TRI_MADE_CORNER + i to follow corner i:
+// a corner kept keeps its tag and its coordinates' bits).
 enum { DX_TRI_POLY_MAX = 36 };
-enum { DX_TRI_MADE_NOT, DX_TRI_MADE_AT_EDGE, DX_TRI_MADE_AT_FLAT_EDGE };
+enum { DX_TRI_MADE_NOT, DX_TRI_MADE_AT_EDGE, DX_TRI_MADE_AT_FLAT_EDGE, DX_TRI_MADE_CORNER };
 int dxTriClipToPrism(const dxTriQuery *q, const dxTri *t, dReal a[][3], int n, int *made);
 
 // The prism of a triangle made once for many clips: each side's inward
@@ -171,9 +191,10 @@ typedef struct dxTriPrism {
     int made[3];
 } dxTriPrism;
 void dxTriPrismInit(const dxTriQuery *q, const dxTri *t, dxTriPrism *p);
-// dxTriClipToPrism with the prism made by dxTriPrismInit(q, t, p); the
-// sides k with bit k of `inside` set are known to keep every point (a
-// polygon within them by more than rounding) and are not clipped against.
+// dxTriClipToPrism with the prism made by dxTriPrismInit(q, t, p) and the
+// corners' tags given in made[]; the sides k with bit k of `inside` set
+// are known to keep every point (a polygon within them by more than
+// rounding) and are not clipped against.
 int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, dReal a[][3], int n, int *made,
                          unsigned inside);
 

@@ -149,7 +149,8 @@ static int merge_fully(dxTriMesh *m, dxTriMeshRaw *r, int n, const dReal N[3])
 // any shape's.
 int dxCollideTriMeshSphere(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
 {
-    dxTriQuery q = { .s = dxTriScratchAcquire() };
+    dxTriQuery q;
+    q.s = dxTriScratchAcquire();
     if (!q.s) return 0;
     int n = dxTriMeshGather(&q, o1, o2, sphere_test);
     dxTriMesh *m = q.mesh;
@@ -301,17 +302,27 @@ enum { CYL_SIDES = 32, POLY_MAX = DX_TRI_POLY_MAX };
 // and adds nothing). Points made on the prism's side at a flat edge are
 // left out: they are corners of the triangulation, not of the contact
 // patch (the corners of the solid over the neighbour come from it).
-// Returns 1 if any was added.
+// made[]: the corners' tags (dxTriClipToPrismWith); with `seen`, a corner
+// tagged DX_TRI_MADE_CORNER + v that bit v of *seen says was added already
+// (by another face of the solid, against the same triangle: the same
+// point, depth and normal to the bit) is not added again, and a corner
+// added sets its bit. Returns 1 if any was added.
 static int clipped_face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p,
-                                 dReal a[][3], int n, unsigned inside)
+                                 dReal a[][3], int n, int *made, unsigned inside,
+                                 unsigned *seen)
 {
     dReal eps = DX_COLLIDE_EPS * q->scale;
-    int made[POLY_MAX];
     n = dxTriClipToPrismWith(p, t, a, n, made, inside);
     int added = 0;
     for (int i = 0; i < n; i++) {
+        unsigned bit = 0;
+        if (seen && made[i] >= DX_TRI_MADE_CORNER) {
+            bit = 1u << (made[i] - DX_TRI_MADE_CORNER);
+            if (*seen & bit) continue;
+        }
         dReal depth = -height(t, a[i]);
         if (depth < -eps || made[i] == DX_TRI_MADE_AT_FLAT_EDGE) continue;
+        if (seen) *seen |= bit;
         dxTriAdd(q, a[i], t->n, dMax(depth, 0), t->index);
         added = 1;
     }
@@ -326,15 +337,20 @@ static int face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p, dRe
     dReal eps = DX_COLLIDE_EPS * q->scale;
     int behind = 0;
     for (int i = 0; i < n && !behind; i++) behind = height(t, a[i]) <= eps;
-    return behind ? clipped_face_contacts(q, t, p, a, n, 0) : 0;
+    if (!behind) return 0;
+    int made[POLY_MAX];
+    for (int i = 0; i < n; i++) made[i] = DX_TRI_MADE_NOT;
+    return clipped_face_contacts(q, t, p, a, n, made, 0, NULL);
 }
 
 // A box's values for a pair, worked out on its first triangle (in q->s->pair):
 // unit axes, half sides and corners (bit j of the index picks the sign of
 // axis j); inner[j]: h[j] less the margin within which a point counts as
-// inside the box whatever the rounding (box_separated).
+// inside the box whatever the rounding (box_separated); through[j] the
+// same with a wider margin, for a point of a triangle's edge whose ends are
+// at most `reach` from the centre along each axis.
 typedef struct box_pair {
-    dReal ax[3][3], h[3], corner[8][3], inner[3];
+    dReal ax[3][3], h[3], corner[8][3], inner[3], through[3], reach;
 } box_pair;
 _Static_assert(sizeof(box_pair) <= sizeof(((dxTriScratch *)0)->pair), "box_pair fits");
 
@@ -352,7 +368,11 @@ static const box_pair *prepare_box(dxTriQuery *q)
     // sums (a point inside the box is within |c| + h of 0).
     dReal eps = sizeof(dReal) == sizeof(double) ? (dReal)DBL_EPSILON : (dReal)FLT_EPSILON;
     dReal size = dMax(dFabs(c[0]), dMax(dFabs(c[1]), dFabs(c[2]))) + h[0] + h[1] + h[2];
-    for (int j = 0; j < 3; j++) b->inner[j] = h[j] - 128 * eps * size;
+    for (int j = 0; j < 3; j++) {
+        b->inner[j] = h[j] - 128 * eps * size;
+        b->through[j] = h[j] - 1024 * eps * size;
+    }
+    b->reach = 2 * (h[0] + h[1] + h[2]);
     for (int v = 0; v < 8; v++)
         for (int i = 0; i < 3; i++)
             b->corner[v][i] = c[i] + (v & 1 ? h[0] : -h[0]) * b->ax[0][i] +
@@ -372,6 +392,38 @@ static int separates_box(const dxTri *t, const dReal L[3], const dReal c[3],
     triangle_interval(t, L, &lo, &hi);
     for (int j = 0; j < 3; j++) br += h[j] * dFabs(dx_dot(L, ax[j]));
     return hi < bc - br || lo > bc + br;
+}
+
+// Whether the triangle's edge from a to b (box frame) has a point inside
+// the box by more than the margin b->through: then, as for a vertex inside
+// (box_separated), no axis can part them. The point is the middle of the
+// edge's part within the three slabs |x_j| <= through[j], checked where it
+// is worked out. Only for an edge whose ends are within b->reach of the
+// centre along each axis, so that its ends' coordinates (and the sums
+// that test an axis) are rounded by far less than the margin: 1024
+// roundings of |c| + h, where the ends are within 3.5 (h0 + h1 + h2) of c.
+static int edge_through(const box_pair *b, const dReal a[3], const dReal e[3])
+{
+    dReal d[3], s0 = 0, s1 = 1;
+    for (int j = 0; j < 3; j++) {
+        if (!(dFabs(a[j]) <= b->reach && dFabs(e[j]) <= b->reach)) return 0;
+        d[j] = e[j] - a[j];
+    }
+    for (int j = 0; j < 3; j++) {
+        dReal w = b->through[j];
+        if (d[j] == 0) {
+            if (!(dFabs(a[j]) <= w)) return 0;
+            continue;
+        }
+        dReal inv = 1 / d[j], t0 = (-w - a[j]) * inv, t1 = (w - a[j]) * inv;
+        s0 = dMax(s0, dMin(t0, t1));
+        s1 = dMin(s1, dMax(t0, t1));
+    }
+    if (!(s0 <= s1)) return 0;
+    dReal s = (s0 + s1) / 2;
+    for (int j = 0; j < 3; j++)
+        if (!(dFabs(a[j] + s * d[j]) <= b->through[j])) return 0;
+    return 1;
 }
 
 // Whether a separating axis parts the box b (centre c) from triangle t,
@@ -408,6 +460,8 @@ static int box_separated(const box_pair *b, const dxTri *t, const dReal c[3], dR
     for (int i = 0; i < 3; i++)
         if (dFabs(p[i][0]) <= in[0] && dFabs(p[i][1]) <= in[1] && dFabs(p[i][2]) <= in[2])
             return 0;
+    for (int k = 0; k < 3; k++)
+        if (edge_through(b, p[k], p[(k + 1) % 3])) return 0;
     for (int k = 0; k < 3; k++) {
         dReal e[3], L[3];
         sub3(e, t->v[(k + 1) % 3], t->v[k]);
@@ -467,7 +521,9 @@ static int box_test(dxTriQuery *q, const dxTri *t)
             if (f >= 3 * p.slack[k]) inside[k] |= 1u << v;
         }
     }
+    // seen: the corners added already (each is in three faces).
     int added = 0;
+    unsigned seen = 0;
     for (int f = 0; f < 6; f++) {
         const int *fv = faces[f];
         unsigned mask = 1u << fv[0] | 1u << fv[1] | 1u << fv[2] | 1u << fv[3];
@@ -476,12 +532,15 @@ static int box_test(dxTriQuery *q, const dxTri *t)
             (outside[2] & mask) == mask)
             continue;
         dReal a[POLY_MAX][3];
-        for (int i = 0; i < 4; i++)
+        int made[POLY_MAX];
+        for (int i = 0; i < 4; i++) {
             for (int j = 0; j < 3; j++) a[i][j] = b->corner[fv[i]][j];
+            made[i] = DX_TRI_MADE_CORNER + fv[i];
+        }
         unsigned within = 0;
         for (int k = 0; k < 3; k++)
             if ((inside[k] & mask) == mask) within |= 1u << k;
-        added |= clipped_face_contacts(q, t, &p, a, 4, within);
+        added |= clipped_face_contacts(q, t, &p, a, 4, made, within, &seen);
     }
     return added;
 }
