@@ -7,8 +7,9 @@
 // Under each backend that is built (the others skip): a terrain bump
 // growing and a sheet lifted and curving, Update after each move, give the
 // contacts of a freshly built data object with the moved vertices (the same
-// points, normals, depths and triangles, as sets) and native's within the
-// cross-backend tolerances of test_backend_trimesh.c; the adapters' trace
+// points, normals, depths and triangles, as sets) and native's deepest
+// contact (its depth within test_backend_trimesh.c's depth tolerance, its
+// normal within 0.05 rad), both argument orders; the adapters' trace
 // (ODE_BACKEND_TRACE_TRIMESH, set by meson) counts one build, then one refit
 // per Update shared by two geoms on the data, nothing for an Update that
 // moved nothing, a build when the triangles change, and the model kept for
