@@ -2,9 +2,10 @@
 //
 // trimesh_adapter.h -- what the FCL and Bullet adapters (C++, header only,
 // never installed) share for triangle meshes: asking the per-triangle
-// callback about the triangles their engine reports, and per-call contact
+// callback about the triangles their engine reports, per-call contact
 // buffers that allocate nothing once warm and survive a callback that
-// collides again.
+// collides again, and the registry of mesh models (one per data object,
+// refit when Update moved the vertices).
 
 #ifndef DX_TRIMESH_ADAPTER_H
 #define DX_TRIMESH_ADAPTER_H
