@@ -2,14 +2,17 @@
 //
 // trimesh_adapter.h -- what the FCL and Bullet adapters (C++, header only,
 // never installed) share for triangle meshes: asking the per-triangle
-// callback about the triangles their engine reports, and per-call contact
+// callback about the triangles their engine reports, per-call contact
 // buffers that allocate nothing once warm and survive a callback that
-// collides again.
+// collides again, and the registry of mesh models (one per data object,
+// refit when Update moved the vertices).
 
 #ifndef DX_TRIMESH_ADAPTER_H
 #define DX_TRIMESH_ADAPTER_H
 
 #include "../libodecollide/backend_support.h"
+
+#include <ode/error.h>
 
 #include <cstdlib>
 #include <deque>
@@ -84,12 +87,43 @@ private:
     std::vector<dxRawContact> &buffer_;
 };
 
+// ODE_BACKEND_TRACE_TRIMESH set (to anything): the adapters say through
+// dMessage each mesh model they build or refit, so that tests can count
+// them (tests/test_backend_trimesh_refit.c). Read once.
+inline bool tracing_mesh_models()
+{
+    static const bool on = std::getenv("ODE_BACKEND_TRACE_TRIMESH") != nullptr;
+    return on;
+}
+
+// Says (when tracing) that `engine` built or refit a model of `count` triangles.
+inline void trace_mesh_model(const char *engine, const char *what, int count)
+{
+    if (tracing_mesh_models())
+        dMessage(d_ERR_UNKNOWN, "%s backend: trimesh model %s (%d triangles)", engine, what,
+                 count);
+}
+
 // One engine's live mesh models by trimesh data object, weakly held: the
-// geoms' cache slots own them. shared(key, build) gives the live model of
-// the data object `key`, or makes one with build() (a std::unique_ptr);
-// the last owner's release removes the entry, unless a newer model of the
-// same data took it. One registry per model type, never destroyed, so a
-// model released during the program's exit still finds it.
+// geoms' cache slots own them. shared(g, key, build, refit) gives mesh geom
+// g the live model of the data object `key`, or makes one with build() (a
+// std::unique_ptr). A data object that changes (Build, Update, SetData)
+// drops every geom's cache (geom_changed); a geom that held the data's
+// model hands it to park() first, which keeps it (for that geom, until its
+// next shared() or forget()) and marks it stale, so that the next shared()
+// on the data brings the same model up to date with refit(model) -- true
+// when it could (the same triangles: the vertices refit in place, or
+// nothing moved), false when the triangles differ, and a new model is
+// built. The last owner's release removes the entry, unless a newer model
+// of the same data took it. One registry per model type, never destroyed,
+// so a model released during the program's exit still finds it.
+//
+// Threads: every call locks the registry; a refit runs under that lock, so
+// the first collision after a change refits once and the others wait for
+// it. A refit writes the model that other collisions read: Build, Update
+// and SetData must not run while a collision uses the data (ODE's rule too:
+// they are called between steps), after which collisions on any threads
+// are safe.
 template <class Model>
 class ModelRegistry {
 public:
@@ -99,33 +133,81 @@ public:
         return *r;
     }
 
-    template <class Build>
-    std::shared_ptr<Model> shared(const void *key, Build build)
+    template <class Build, class Refit>
+    std::shared_ptr<Model> shared(dGeomID g, const void *key, Build build, Refit refit)
     {
+        std::shared_ptr<Model> replaced;   // these released after the lock (deleters lock)
+        std::shared_ptr<const void> kept;
         std::lock_guard<std::mutex> lock(mutex_);
-        std::weak_ptr<Model> &slot = live_[key];
-        std::shared_ptr<Model> model = slot.lock();
+        Entry &e = live_[key];
+        std::shared_ptr<Model> model = e.model.lock();
+        if (model && e.stale && !refit(*model)) replaced = std::move(model);
         if (!model) {
             model = std::shared_ptr<Model>(build().release(), [this, key](Model *m) {
-                forget(key);
+                forget_model(key);
                 delete m;
             });
-            slot = model;
+            e.model = model;
         }
+        e.stale = false;
+        kept = take_parked(g);
         return model;
     }
 
+    // Geom g's data changed (geom_changed), g holding `held` (or NULL: a
+    // pointer that owns a model, or part of one), g's data now `key` with
+    // triangles (else NULL): if held owns that data's model, it is kept for
+    // g and the model marked stale.
+    void park(dGeomID g, std::shared_ptr<const void> held, const void *key)
+    {
+        std::shared_ptr<const void> released = std::move(held), kept;   // after the lock
+        std::lock_guard<std::mutex> lock(mutex_);
+        kept = take_parked(g);
+        auto it = key ? live_.find(key) : live_.end();
+        if (!released || it == live_.end()) return;
+        const std::weak_ptr<Model> &live = it->second.model;
+        if (released.owner_before(live) || live.owner_before(released)) return;   // another
+        it->second.stale = true;
+        parked_[g] = std::move(released);
+    }
+
+    // Geom g is destroyed: what it kept goes.
+    void forget(dGeomID g)
+    {
+        std::shared_ptr<const void> kept;   // released after the lock
+        std::lock_guard<std::mutex> lock(mutex_);
+        kept = take_parked(g);
+    }
+
 private:
+    struct Entry {
+        std::weak_ptr<Model> model;
+        bool stale = false;   // the data changed since the model was made or refit
+    };
+
     ModelRegistry() = default;
-    void forget(const void *key)
+
+    // What g kept (NULL if nothing), no longer kept: the caller releases it
+    // after the lock.
+    std::shared_ptr<const void> take_parked(dGeomID g)
+    {
+        auto it = parked_.find(g);
+        if (it == parked_.end()) return nullptr;
+        std::shared_ptr<const void> kept = std::move(it->second);
+        parked_.erase(it);
+        return kept;
+    }
+
+    void forget_model(const void *key)
     {
         std::lock_guard<std::mutex> lock(mutex_);
         auto it = live_.find(key);
-        if (it != live_.end() && it->second.expired()) live_.erase(it);
+        if (it != live_.end() && it->second.model.expired()) live_.erase(it);
     }
 
     std::mutex mutex_;
-    std::unordered_map<const void *, std::weak_ptr<Model>> live_;
+    std::unordered_map<const void *, Entry> live_;
+    std::unordered_map<dGeomID, std::shared_ptr<const void>> parked_;
 };
 
 // The contacts gathered (more than a sink holds, for a mesh) into the sink:

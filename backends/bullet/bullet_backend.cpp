@@ -349,20 +349,22 @@ int bullet_collide(dGeomID o1, dGeomID o2, int flags, dContactGeom *out, int ski
     return 0;
 }
 
-// Frees the geom's object if this backend made it.
-void drop_object(dGeomID g)
+// Frees the geom's object if this backend made it; a changed mesh's shape
+// goes to the registry first, to be refit (bullet_trimesh.cpp).
+void drop_object(dGeomID g, bool changed)
 {
-    auto *obj = static_cast<GeomObject *>(dxGeomOwnedCache(g, OWNER));
-    if (!obj) return;
-    dxGeomSetCache(g, OWNER, nullptr);
-    delete obj;
+    std::unique_ptr<GeomObject> obj(static_cast<GeomObject *>(dxGeomOwnedCache(g, OWNER)));
+    if (obj) dxGeomSetCache(g, OWNER, nullptr);
+    if (dGeomGetClass(g) != dTriMeshClass) return;
+    if (changed) dxbullet::mesh_changed(g, obj ? std::move(obj->shape) : nullptr);
+    else dxbullet::mesh_destroyed(g);
 }
 
 // The geom's size changed: its object goes (rebuilt at the next collision).
 void bullet_geom_changed(dGeomID g)
 {
     try {
-        drop_object(g);
+        drop_object(g, true);
     } catch (...) {
         report("geom_changed", "unknown exception");
     }
@@ -372,7 +374,7 @@ void bullet_geom_changed(dGeomID g)
 void bullet_geom_destroyed(dGeomID g)
 {
     try {
-        drop_object(g);
+        drop_object(g, false);
     } catch (...) {
         report("geom_destroyed", "unknown exception");
     }

@@ -5,10 +5,13 @@
 // Bullet's mesh interface over them and a btBvhTriangleMeshShape), shared
 // by the geoms on the same data through their cache slots. When the data
 // changes (Build, Update, SetData) each geom on it drops its object
-// (geom_changed); the last one frees the model and the next collision
-// builds a new one. Bullet collides the shape with a convex one triangle by
-// triangle (btConvexConcaveCollisionAlgorithm); bullet_backend.cpp keeps
-// each triangle's first point, on the triangle, with its index
+// (geom_changed) but hands the model to the registry (trimesh_adapter.h),
+// which keeps it stale: the next collision rewrites the copied vertices in
+// place and refits the shape's tree when the triangles are the same
+// (Update: the vertices moved), and builds a new model only when they are
+// not. Bullet collides the shape with a convex one triangle by triangle
+// (btConvexConcaveCollisionAlgorithm); bullet_backend.cpp keeps each
+// triangle's first point, on the triangle, with its index
 // (btManifoldResult's m_index0 / m_index1) as side1 / side2.
 //
 // One shape for every mesh, moving or not: a collision query takes the
@@ -26,12 +29,26 @@ namespace dxbullet {
 
 namespace {
 
+// Bullet's BVH mesh shape, refit to bounds its caller found (the shape's
+// own refitTree would find its box by six walks over every triangle).
+ATTRIBUTE_ALIGNED16(struct) MeshShape : btBvhTriangleMeshShape {
+    using btBvhTriangleMeshShape::btBvhTriangleMeshShape;
+    // The tree's boxes refit to the mesh's vertices, quantised within
+    // [lo, hi] (the box of every triangle's vertices, as a build takes).
+    void refit(const btVector3 &lo, const btVector3 &hi)
+    {
+        getOptimizedBvh()->refit(m_meshInterface, lo, hi);
+        m_localAabbMin = lo;   // (the margin is 0)
+        m_localAabbMax = hi;
+    }
+};
+
 // A data object's arrays and shape (Bullet's shape points into the arrays).
 struct Model {
     std::vector<btScalar> vertices;   // 3 per vertex
     std::vector<int> indices;         // 3 per triangle
     btTriangleIndexVertexArray arrays;
-    std::unique_ptr<btBvhTriangleMeshShape> shape;
+    std::unique_ptr<MeshShape> shape;
 };
 
 // A new model of the data of g (info: its counts). Margin 0: Bullet would
@@ -58,9 +75,48 @@ std::unique_ptr<Model> build_model(dGeomID g, const dxTriMeshInfo &info)
     part.m_vertexBase = reinterpret_cast<const unsigned char *>(m->vertices.data());
     part.m_vertexStride = 3 * sizeof(btScalar);
     m->arrays.addIndexedMesh(part, PHY_INTEGER);
-    m->shape = std::make_unique<btBvhTriangleMeshShape>(&m->arrays, true);
+    m->shape = std::make_unique<MeshShape>(&m->arrays, true);
     m->shape->setMargin(0);
+    dxadapter::trace_mesh_model("bullet", "built", info.tri_count);
     return m;
+}
+
+// Brings the model up to the data of g (info: its counts) if the data has
+// the model's triangles: the copied vertices rewritten in place and the
+// tree's boxes refit, keeping its structure (nothing done if no vertex
+// moved). False if the triangles differ: the model must be rebuilt.
+bool refit_model(Model &m, dGeomID g, const dxTriMeshInfo &info)
+{
+    const std::size_t nv = static_cast<std::size_t>(info.vertex_count);
+    const std::size_t nt = static_cast<std::size_t>(info.tri_count);
+    if (m.vertices.size() != 3 * nv || m.indices.size() != 3 * nt) return false;
+    for (std::size_t t = 0; t < nt; t++) {
+        int idx[3];
+        dxTriMeshGetTriangle(g, static_cast<int>(t), idx);
+        for (std::size_t k = 0; k < 3; k++)
+            if (m.indices[3 * t + k] != idx[k]) return false;
+    }
+    bool moved = false;
+    for (std::size_t i = 0; i < nv; i++) {
+        dReal v[3];
+        dxTriMeshGetVertex(g, static_cast<int>(i), v);
+        for (std::size_t k = 0; k < 3; k++) {
+            const btScalar x = static_cast<btScalar>(v[k]);
+            moved = moved || x != m.vertices[3 * i + k];
+            m.vertices[3 * i + k] = x;
+        }
+    }
+    if (!moved) return true;
+    btVector3 lo(BT_LARGE_FLOAT, BT_LARGE_FLOAT, BT_LARGE_FLOAT), hi = -lo;
+    for (int i : m.indices) {
+        const btScalar *p = &m.vertices[3 * static_cast<std::size_t>(i)];
+        const btVector3 point(p[0], p[1], p[2]);
+        lo.setMin(point);
+        hi.setMax(point);
+    }
+    m.shape->refit(lo, hi);
+    dxadapter::trace_mesh_model("bullet", "refit", info.tri_count);
+    return true;
 }
 
 } // namespace
@@ -71,9 +127,20 @@ std::shared_ptr<btCollisionShape> mesh_shape(dGeomID g)
     dxTriMeshGetInfo(g, &info);
     if (!info.data || info.tri_count == 0) return nullptr;
     std::shared_ptr<Model> model = dxadapter::ModelRegistry<Model>::instance().shared(
-        info.data, [&] { return build_model(g, info); });
+        g, info.data, [&] { return build_model(g, info); },
+        [&](Model &m) { return refit_model(m, g, info); });
     return std::shared_ptr<btCollisionShape>(model, model->shape.get());   // owns the model
 }
+
+void mesh_changed(dGeomID g, std::shared_ptr<btCollisionShape> held)
+{
+    dxTriMeshInfo info;
+    dxTriMeshGetInfo(g, &info);
+    dxadapter::ModelRegistry<Model>::instance().park(g, std::move(held),
+                                                      info.tri_count > 0 ? info.data : nullptr);
+}
+
+void mesh_destroyed(dGeomID g) { dxadapter::ModelRegistry<Model>::instance().forget(g); }
 
 // Measured against the contract and native (tests/test_backend_trimesh.c,
 // 40 poses per pair and mesh, both orders; the grid terrain, icosphere,

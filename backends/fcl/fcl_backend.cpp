@@ -41,10 +41,11 @@ constexpr std::size_t RAW_CONTACTS = DX_SINK_CAPACITY;
 
 int fcl_supports(int c1, int c2) noexcept;
 int fcl_collide(dGeomID o1, dGeomID o2, int flags, dContactGeom *out, int skip);
-void fcl_drop_cache(dGeomID g);
+void fcl_geom_changed(dGeomID g);
+void fcl_geom_destroyed(dGeomID g);
 
-const dCollisionBackend table = { "fcl", fcl_supports, fcl_collide, fcl_drop_cache,
-                                  fcl_drop_cache };
+const dCollisionBackend table = { "fcl", fcl_supports, fcl_collide, fcl_geom_changed,
+                                  fcl_geom_destroyed };
 
 // Classes with an FCL shape here (rays are native only: FCL has no ray).
 bool is_primitive(int cls)
@@ -236,17 +237,33 @@ int fcl_collide(dGeomID o1, dGeomID o2, int flags, dContactGeom *out, int skip)
     return 0;
 }
 
-// geom_changed and geom_destroyed: free the geom's shape if this backend
-// made it (a changed geom gets a new one at its next collision).
-void fcl_drop_cache(dGeomID g)
+// Frees the geom's shape if this backend made it (a changed geom gets a new
+// one at its next collision); a changed mesh's model goes to the registry
+// first, to be refit (fcl_trimesh.cpp).
+void drop_cache(dGeomID g, bool changed)
+{
+    std::unique_ptr<ShapeCache> c(static_cast<ShapeCache *>(dxGeomOwnedCache(g, &table)));
+    if (c) dxGeomSetCache(g, &table, nullptr);
+    if (dGeomGetClass(g) != dTriMeshClass) return;
+    if (changed) dxfcl::mesh_changed(g, c ? std::move(c->shape) : nullptr);
+    else dxfcl::mesh_destroyed(g);
+}
+
+void fcl_geom_changed(dGeomID g)
 {
     try {
-        auto *c = static_cast<ShapeCache *>(dxGeomOwnedCache(g, &table));
-        if (!c) return;
-        dxGeomSetCache(g, &table, nullptr);
-        delete c;
+        drop_cache(g, true);
     } catch (...) {
-        report("dropping a cached shape", "unknown exception");
+        report("dropping a changed shape", "unknown exception");
+    }
+}
+
+void fcl_geom_destroyed(dGeomID g)
+{
+    try {
+        drop_cache(g, false);
+    } catch (...) {
+        report("dropping a destroyed geom's shape", "unknown exception");
     }
 }
 

@@ -3,13 +3,16 @@
 // fcl_trimesh.cpp -- triangle meshes in the FCL adapter: one
 // BVHModel<OBBRSS> per trimesh data object (BACKENDS.md section 4), built at
 // the first collision of a geom on it and shared by every geom on the same
-// data through their cache slots; when the data changes (Build, Update,
-// SetData) each geom on it drops its cache (geom_changed), the last drop
-// frees the model and the next collision builds a new one. FCL reports one
-// contact per triangle (Contact::b1 / b2 its index), which become the
-// pair's contacts with side1 / side2 = that index, the per-triangle callback
-// vetoing a triangle's contacts; meshes with an array or merge callback or a
-// merge setting go to native (backend_support.h: dxTriMeshNeedsNative).
+// data through their cache slots. When the data changes (Build, Update,
+// SetData) each geom on it drops its cache (geom_changed) but hands the
+// model to the registry (trimesh_adapter.h), which keeps it stale: the next
+// collision refits it in place when the triangles are the same (Update:
+// the vertices moved), and builds a new one only when they are not. FCL
+// reports one contact per triangle (Contact::b1 / b2 its index), which
+// become the pair's contacts with side1 / side2 = that index, the
+// per-triangle callback vetoing a triangle's contacts; meshes with an array
+// or merge callback or a merge setting go to native (backend_support.h:
+// dxTriMeshNeedsNative).
 
 #include "fcl_trimesh.h"
 
@@ -54,7 +57,45 @@ std::unique_ptr<Model> build_model(dGeomID g, const dxTriMeshInfo &info)
     model->addSubModel(vertices, triangles);
     model->endModel();
     model->computeLocalAABB();
+    dxadapter::trace_mesh_model("fcl", "built", info.tri_count);
     return model;
+}
+
+// Brings `model` up to the data of g (info: its counts) if the data has the
+// model's triangles: the vertices replaced and the tree refit, keeping its
+// structure (nothing done if no vertex moved). False if the triangles
+// differ: the model must be rebuilt. FCL's replace (not its update, which
+// keeps the previous vertices for continuous collision and fits each leaf
+// round both frames) with a bottom-up refit: each leaf's box fit to its
+// triangle, each parent's the merge of its children's.
+bool refit_model(Model &model, dGeomID g, const dxTriMeshInfo &info)
+{
+    if (model.num_vertices != info.vertex_count || model.num_tris != info.tri_count) return false;
+    for (int t = 0; t < info.tri_count; t++) {
+        int idx[3];
+        dxTriMeshGetTriangle(g, t, idx);
+        const fcl::Triangle &tri = model.tri_indices[t];
+        for (int k = 0; k < 3; k++)
+            if (tri[static_cast<std::size_t>(k)] != static_cast<std::size_t>(idx[k])) return false;
+    }
+    bool moved = false;
+    for (int i = 0; i < info.vertex_count; i++) {
+        dReal v[3];
+        dxTriMeshGetVertex(g, i, v);
+        const fcl::Vector3d p(v[0], v[1], v[2]);
+        if (!moved && p == model.vertices[i]) continue;
+        if (!moved) {   // the first vertex that moved: the ones before it stay
+            moved = true;
+            model.beginReplaceModel();
+            for (int j = 0; j < i; j++) model.replaceVertex(fcl::Vector3d(model.vertices[j]));
+        }
+        model.replaceVertex(p);
+    }
+    if (!moved) return true;
+    model.endReplaceModel(true, true);
+    model.computeLocalAABB();
+    dxadapter::trace_mesh_model("fcl", "refit", info.tri_count);
+    return true;
 }
 
 const fcl::CollisionRequestd &mesh_request()
@@ -72,9 +113,20 @@ std::shared_ptr<Geometry> mesh_model(dGeomID g)
     dxTriMeshInfo info;
     dxTriMeshGetInfo(g, &info);
     if (!info.data || info.tri_count == 0) return nullptr;
-    return dxadapter::ModelRegistry<Model>::instance().shared(info.data,
-                                                             [&] { return build_model(g, info); });
+    return dxadapter::ModelRegistry<Model>::instance().shared(
+        g, info.data, [&] { return build_model(g, info); },
+        [&](Model &model) { return refit_model(model, g, info); });
 }
+
+void mesh_changed(dGeomID g, std::shared_ptr<Geometry> held)
+{
+    dxTriMeshInfo info;
+    dxTriMeshGetInfo(g, &info);
+    dxadapter::ModelRegistry<Model>::instance().park(g, std::move(held),
+                                                      info.tri_count > 0 ? info.data : nullptr);
+}
+
+void mesh_destroyed(dGeomID g) { dxadapter::ModelRegistry<Model>::instance().forget(g); }
 
 // Measured against the contract and native (tests/test_backend_trimesh.c,
 // 40 poses per pair and mesh, both orders; the grid terrain, icosphere,

@@ -25,8 +25,14 @@ fcl::Transform3d pose_of(dGeomID g);
 bool in_fcl_order(dGeomID g1, dGeomID g2);
 
 // fcl_trimesh.cpp: the BVH model of a trimesh geom's data, built once per
-// data object and shared by the geoms on it (NULL without triangles).
+// data object and shared by the geoms on it (NULL without triangles),
+// refit when the data's vertices moved.
 std::shared_ptr<Geometry> mesh_model(dGeomID g);
+// A trimesh geom's shape changed (geom_changed, its cache about to be
+// freed): the model it held (or NULL) is kept for the refit.
+void mesh_changed(dGeomID g, std::shared_ptr<Geometry> held);
+// A trimesh geom is destroyed: the model kept for it goes.
+void mesh_destroyed(dGeomID g);
 // Whether the adapter answers a trimesh against a geom of class `other`.
 bool mesh_pair_supported(int other);
 // Contacts of a supported pair with a trimesh in it (either or both).
