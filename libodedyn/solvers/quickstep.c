@@ -207,11 +207,14 @@ static void normals_before_friction(qs_system *sys, const qs_island *p, int *at)
 
 // `iterations` sweeps over all islands, each island's rows reshuffled every
 // REORDER_PERIOD with its own generator, the odd sweeps going through the
-// rows before the blocks. list, tmp: scratch for count islands.
-static void solve(qs_system *sys, qs_island *parts, int count, int iterations, int *list,
-                  int *tmp)
+// rows before the blocks, the blocks in batches (a: the world arena). list,
+// tmp: scratch for count islands.
+static void solve(dxArena *a, qs_system *sys, qs_island *parts, int count, int iterations,
+                  int *list, int *tmp)
 {
-    interleave_blocks(sys, parts, list, islands_by_length(parts, count, 1, list, tmp));
+    const int with_blocks = islands_by_length(parts, count, 1, list, tmp);
+    interleave_blocks(sys, parts, list, with_blocks);
+    dxQuickBatchBlocks(a, sys, with_blocks);
     const int n = islands_by_length(parts, count, 0, list, tmp);
     for (int it = 0; it < iterations; it++) {
         if (it % REORDER_PERIOD == 0) {
@@ -247,6 +250,8 @@ static void solve_island(void *context, int item, dxArena *arena)
     qs_system one = *s->sys;   // this island's blocks and rows only
     one.nblocks = p->nblocks;
     one.bseq = s->sys->bseq + p->block0;
+    one.batches = NULL;   // one island's blocks mostly share bodies
+    one.nbatches = 0;
     for (int t = 0; t < p->nblocks; t++) one.bseq[t] = &s->sys->blocks[p->block0 + t];
     one.norder = p->norder;
     one.seq = s->sys->order + p->order0;
@@ -317,7 +322,7 @@ int dWorldQuickStep(dWorldID w, dReal stepsize)
         solve_islands s = { &sys, parts, w->qs_iterations };
         dxStepRunParallel(w, threads, count, solve_island, &s);
     } else if (sys.m > 0) {
-        solve(&sys, parts, count, w->qs_iterations, list, tmp);
+        solve(a, &sys, parts, count, w->qs_iterations, list, tmp);
     }
     for (int k = 0; k < sys.nfeedback; k++) joint_feedback(&sys.feedback[k], sys.lambda);
     dxQuickWarmEnd(w, sys.warm, sys.lambda);   // before the bodies move

@@ -95,6 +95,21 @@ typedef struct qs_block {
     int coupled, ncoupled;   // the joint's rows coupled to the block: rows[coupled...]
 } qs_block;
 
+// Up to QS_LANES blocks of the same size and number of bodies that share no
+// body, updated side by side, one block a lane (quickstep_block_batch.c).
+// A full batch has its blocks' numbers copied by lane (soa: each number of
+// J, M, Ainv, rhs and cfm as QS_LANES consecutive numbers, one a lane; then
+// those of the coupled rows); a batch of one block (soa NULL) is updated on
+// its own as in bseq.
+#define QS_LANES 4
+typedef struct qs_batch {
+    const qs_block *blk[QS_LANES];
+    const dReal *soa;   // NULL: a single block, blk[0]
+    int ncoupled;       // each lane's coupled rows, side by side too (their
+                        // numbers after the blocks' in soa); -1: the lanes
+                        // differ, each lane's are updated on their own
+} qs_batch;
+
 // A row updated on its own. With D = sor_w / A_ii and s = |lambda[f]|:
 //   lambda[pos] += rhs - cfm lambda[pos] - J . fc, clamped to lo s .. hi s,
 //   fc += delta M for the change delta.
@@ -156,6 +171,8 @@ typedef struct qs_system {
     qs_row *rows;          // the rows coupled to blocks, and the others
     int *order;            // each island's other rows, in the order of its sweeps
     const qs_block **bseq; // the blocks of all islands, interleaved
+    const qs_batch *batches; // bseq packed in batches (NULL: sweep bseq)
+    int nbatches;
     int *seq;              // order of all islands, interleaved
     int *at;               // m + 1: the place in order per lambda position (-1: not there)
     int *row_pos, *row_f;  // per row: its pos and f (compact copies for the reordering)
@@ -233,6 +250,22 @@ static inline int dxQuickContactIsDirect(const dxJoint *j)
 // last step's forces if it was there; the same rows, bit for bit, as the
 // generic build makes from its joint rows.
 void dxQuickContact(const qs_input *in, dxJoint *j, qs_system *sys);
+
+// Pack sys->bseq in batches (sys->batches; NULL when there would be no full
+// batch): each block in the first batch after every batch holding an earlier
+// block on one of its bodies, so that blocks sharing a body keep their order
+// and each is updated exactly as in bseq (the same bits). Once per step,
+// for the blocks of `islands` islands: one island's blocks (a chain) mostly
+// share bodies, so its are left in bseq.
+void dxQuickBatchBlocks(dxArena *a, qs_system *sys, int islands);
+// 1 (the default): dxQuickBatchBlocks packs; 0: it leaves bseq alone (for
+// tests that compare the two: the same results).
+extern int dxQuickBlockBatches;
+// A full batch's update: each lane's block and then its coupled rows.
+void dxQuickBatchUpdate(const qs_batch *b, const qs_row *rows, dReal *lambda, dReal *fc);
+// The coupled rows of one block (quickstep_sweep.c), its bodies' fc read
+// from fc and stored back.
+void dxQuickCoupledRows(const qs_block *blk, const qs_row *rows, dReal *lambda, dReal *fc);
 
 // One sweep over all blocks in bseq (each followed by its coupled rows) and
 // all rows in seq: the blocks first, or (rows_first) the rows.

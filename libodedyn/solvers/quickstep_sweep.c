@@ -290,21 +290,66 @@ QS_INLINE void prefetch_row(const qs_row *q)
 #endif
 }
 
-// The blocks in bseq, each followed by its coupled rows.
+// One block of any size and its coupled rows.
+QS_INLINE void update_any_block(const qs_block *blk, const qs_row *rows, dReal *lambda,
+                                dReal *fc)
+{
+    const qs_row *coupled = rows + blk->coupled;
+    switch (blk->n) {   // constant sizes let the compiler unroll
+    case 2: update_block_n(blk, coupled, 2, lambda, fc); break;
+    case 3: update_block_n(blk, coupled, 3, lambda, fc); break;
+    case 4: update_block_n(blk, coupled, 4, lambda, fc); break;
+    case 5: update_block_n(blk, coupled, 5, lambda, fc); break;
+    default: update_block_n(blk, coupled, QS_MAX_BLOCK, lambda, fc); break;
+    }
+}
+
+// The coupled rows of one block of n rows (np as for the block), its
+// bodies' fc loaded and stored back.
+QS_INLINE void coupled_rows(const qs_block *blk, const qs_row *coupled, int n, int np,
+                            dReal *lambda, dReal *fc)
+{
+    dReal *f0 = fc + blk->o0, *f1 = fc + blk->o1;
+    qs_b6 x0 = b6_load(f0), x1 = x0;
+    if (np == 6) x1 = b6_load(f1);
+    for (int c = 0; c < blk->ncoupled; c++) coupled_row(&coupled[c], n, np, lambda, &x0, &x1);
+    b6_store(x0, f0);
+    if (np == 6) b6_store(x1, f1);
+}
+
+QS_INLINE void coupled_rows_n(const qs_block *blk, const qs_row *coupled, int n, dReal *lambda,
+                              dReal *fc)
+{
+    if (blk->two) coupled_rows(blk, coupled, n, 6, lambda, fc);
+    else coupled_rows(blk, coupled, n, 3, lambda, fc);
+}
+
+QS_SWEEP_CLONES void dxQuickCoupledRows(const qs_block *blk, const qs_row *rows, dReal *lambda,
+                                        dReal *fc)
+{
+    const qs_row *coupled = rows + blk->coupled;
+    switch (blk->n) {
+    case 2: coupled_rows_n(blk, coupled, 2, lambda, fc); break;
+    case 3: coupled_rows_n(blk, coupled, 3, lambda, fc); break;
+    case 4: coupled_rows_n(blk, coupled, 4, lambda, fc); break;
+    case 5: coupled_rows_n(blk, coupled, 5, lambda, fc); break;
+    default: coupled_rows_n(blk, coupled, QS_MAX_BLOCK, lambda, fc); break;
+    }
+}
+
+// The blocks in bseq, each followed by its coupled rows; or their batches.
 QS_SWEEP_CLONES static void sweep_blocks(const qs_system *sys)
 {
     dReal *lambda = sys->lambda, *fc = sys->fc;
-    for (int k = 0; k < sys->nblocks; k++) {
-        const qs_block *blk = sys->bseq[k];
-        const qs_row *coupled = sys->rows + blk->coupled;
-        switch (blk->n) {   // constant sizes let the compiler unroll
-        case 2: update_block_n(blk, coupled, 2, lambda, fc); break;
-        case 3: update_block_n(blk, coupled, 3, lambda, fc); break;
-        case 4: update_block_n(blk, coupled, 4, lambda, fc); break;
-        case 5: update_block_n(blk, coupled, 5, lambda, fc); break;
-        default: update_block_n(blk, coupled, QS_MAX_BLOCK, lambda, fc); break;
+    if (sys->batches) {
+        for (int k = 0; k < sys->nbatches; k++) {
+            const qs_batch *b = &sys->batches[k];
+            if (b->soa) dxQuickBatchUpdate(b, sys->rows, lambda, fc);
+            else update_any_block(b->blk[0], sys->rows, lambda, fc);
         }
+        return;
     }
+    for (int k = 0; k < sys->nblocks; k++) update_any_block(sys->bseq[k], sys->rows, lambda, fc);
 }
 
 // The rows in seq; those of a big system (beyond PREFETCH_BYTES) fetched

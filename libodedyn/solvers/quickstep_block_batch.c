@@ -1,0 +1,392 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// quickstep_block_batch.c -- QuickStep's joint blocks four at a time
+// (quickstep.h: qs_batch). A block update is one long chain of dependent
+// operations (its residuals wait for its dots, delta for the Ainv sums, fc
+// for n multiply-adds), so a sweep over blocks one by one waits on it. But
+// Gauss-Seidel's result depends only on the order of the updates that share
+// a body: blocks of different bodies can go side by side. bseq interleaves
+// the islands (identical ragdolls or cars give the same joint kind at the
+// same place in turn), so its blocks are packed once per step in batches of
+// four blocks of the same size and number of bodies, one block a SIMD lane.
+//
+// Each lane does exactly its block's operations in the order of the block
+// update of quickstep_sweep.c (the same products, the same order of sums,
+// no contraction to multiply-adds), so the results are the same bits as
+// there: fc's numbers e and e + 2 are summed first, then e + 4, a second
+// body's sum is added to the first's, then lane 0's sum to lane 1's; delta
+// is Ainv's column products summed in row order. The blocks' coupled rows
+// (they touch only their block's bodies and lambdas) follow side by side
+// when every lane has as many, else each lane's on their own.
+
+#include "quickstep.h"
+#include "dx_clones.h"
+
+#include <stdint.h>
+#include <string.h>
+
+int dxQuickBlockBatches = 1;
+
+// Built for AVX2 and for the baseline, as the sweeps (quickstep_sweep.c);
+// the same numbers either way. -DQS_BATCH_CLONES= builds the baseline
+// alone. Clang builds the baseline alone, as quickstep_contact.c does (it
+// refuses fours passed between the baseline clone's inlined functions).
+#if !defined(QS_BATCH_CLONES) && !defined(__clang__) && defined(DX_AVX2_CLONES)
+#define QS_BATCH_CLONES DX_AVX2_CLONES
+#endif
+#ifndef QS_BATCH_CLONES
+#define QS_BATCH_CLONES
+#endif
+
+// ---- packing -------------------------------------------------------------------
+
+// The numbers of a full batch of blocks of n rows on `two` + 1 bodies:
+// J and M (n rows of ne = 6 or 12 numbers), Ainv (n x n, its padding
+// left out), rhs and cfm (n); then per coupled row (ncoupled of each lane)
+// its J and M (ne), rhs, cfm, lo, hi and g (n). Each number QS_LANES times,
+// one a lane.
+static size_t soa_size(int n, int two, int ncoupled)
+{
+    const size_t ne = two ? 12 : 6;
+    return QS_LANES * ((size_t)n * (2 * ne + (size_t)n + 2) +
+                       (size_t)ncoupled * (2 * ne + 4 + (size_t)n));
+}
+
+// Copy block blk's numbers (n rows, ne numbers of J a row, nc coupled rows:
+// constants after inlining) into lane i of a full batch's soa.
+QS_INLINE void soa_fill(dReal *soa, const qs_block *blk, const qs_row *rows, int i, int n,
+                        int ne, int nc)
+{
+    const int w = QS_PAD(n);
+    const dReal *J = (const dReal *)blk->J, *M = (const dReal *)blk->M;
+    dReal *s = soa + i;
+    for (int a = 0; a < n; a++)   // rows of 12 numbers (quickstep.h)
+        for (int e = 0; e < ne; e++) s[QS_LANES * (a * ne + e)] = J[12 * a + e];
+    s += QS_LANES * n * ne;
+    for (int a = 0; a < n; a++)
+        for (int e = 0; e < ne; e++) s[QS_LANES * (a * ne + e)] = M[12 * a + e];
+    s += QS_LANES * n * ne;
+    for (int c = 0; c < n; c++)
+        for (int a = 0; a < n; a++) s[QS_LANES * (c * n + a)] = blk->Ainv[c * w + a];
+    s += QS_LANES * n * n;
+    for (int a = 0; a < n; a++) {
+        s[QS_LANES * a] = blk->rhs[a];
+        s[QS_LANES * (n + a)] = blk->cfm[a];
+    }
+    s += QS_LANES * 2 * n;
+    for (int c = 0; c < nc; c++) {
+        const qs_row *q = rows + blk->coupled + c;
+        const dReal *qJ0 = (const dReal *)q->J, *qJ1 = (const dReal *)q->J1;
+        const dReal *qM0 = (const dReal *)q->M, *qM1 = (const dReal *)q->M1;
+        for (int e = 0; e < ne; e++) {
+            s[QS_LANES * e] = e < 6 ? qJ0[e] : qJ1[e - 6];
+            s[QS_LANES * (ne + e)] = e < 6 ? qM0[e] : qM1[e - 6];
+        }
+        s += QS_LANES * 2 * ne;
+        s[0] = q->rhs;
+        s[QS_LANES] = q->cfm;
+        s[2 * QS_LANES] = q->lo;
+        s[3 * QS_LANES] = q->hi;
+        s += 4 * QS_LANES;
+        for (int a = 0; a < n; a++) s[QS_LANES * a] = q->g[a];
+        s += QS_LANES * n;
+    }
+}
+
+QS_INLINE void soa_fill_n(dReal *soa, const qs_block *blk, const qs_row *rows, int i, int n,
+                          int nc)
+{
+    if (blk->two) soa_fill(soa, blk, rows, i, n, 12, nc);
+    else soa_fill(soa, blk, rows, i, n, 6, nc);
+}
+
+// Into lane i of soa: its block's numbers and nc coupled rows' (nc: the
+// batch's ncoupled, or 0 when its lanes differ).
+static void soa_copy(dReal *soa, const qs_block *blk, const qs_row *rows, int i, int nc)
+{
+    switch (blk->n) {   // constant sizes let the compiler unroll
+    case 2: soa_fill_n(soa, blk, rows, i, 2, nc); break;
+    case 3: soa_fill_n(soa, blk, rows, i, 3, nc); break;
+    case 4: soa_fill_n(soa, blk, rows, i, 4, nc); break;
+    case 5: soa_fill_n(soa, blk, rows, i, 5, nc); break;
+    default: soa_fill_n(soa, blk, rows, i, QS_MAX_BLOCK, nc); break;
+    }
+}
+
+// Can block blk's coupled rows go side by side with other lanes': none reads
+// its bound from the block's own lambdas (the block's lambdas stay in
+// registers while its coupled rows are updated)?
+static int coupled_apart(const qs_block *blk, const qs_row *rows)
+{
+    for (int c = 0; c < blk->ncoupled; c++) {
+        const int f = rows[blk->coupled + c].f;
+        if (f >= blk->first && f < blk->first + blk->n) return 0;
+    }
+    return 1;
+}
+
+void dxQuickBatchBlocks(dxArena *a, qs_system *sys, int islands)
+{
+    sys->batches = NULL;
+    sys->nbatches = 0;
+    const int nb = sys->nblocks;
+    if (!dxQuickBlockBatches || islands < 2 || nb < QS_LANES) return;
+    // Each block's batch (slot) by bseq's order: the latest batch of its kind
+    // (size, bodies) if that has a free lane and comes after every batch
+    // holding an earlier block on one of its bodies (last), else a new one.
+    // Per batch: its blocks (count) and their common number of coupled rows
+    // (nc; -1: they differ).
+    int *last = DX_ARENA_ARRAY(a, int, sys->nbodies);
+    int *slot = DX_ARENA_ARRAY(a, int, nb);
+    int *count = DX_ARENA_ARRAY(a, int, nb), *nc = DX_ARENA_ARRAY(a, int, nb);
+    int open[2 * (QS_MAX_BLOCK + 1)];   // per kind: its latest batch
+    for (int b = 0; b < sys->nbodies; b++) last[b] = -1;
+    for (int k = 0; k < 2 * (QS_MAX_BLOCK + 1); k++) open[k] = -1;
+    int nbatch = 0, full = 0;
+    for (int k = 0; k < nb; k++) {
+        const qs_block *blk = sys->bseq[k];
+        const int b0 = blk->o0 / 6, b1 = blk->o1 / 6;
+        int after = last[b0];
+        if (blk->two && last[b1] > after) after = last[b1];
+        const int kind = 2 * blk->n + blk->two;
+        int t = open[kind];
+        const int ncoupled = coupled_apart(blk, sys->rows) ? blk->ncoupled : -1;
+        if (t < 0 || t <= after || count[t] == QS_LANES) {
+            t = open[kind] = nbatch++;
+            count[t] = 0;
+            nc[t] = ncoupled;
+        }
+        if (nc[t] != ncoupled) nc[t] = -1;
+        if (++count[t] == QS_LANES) full++;
+        slot[k] = t;
+        last[b0] = t;
+        if (blk->two) last[b1] = t;
+    }
+    if (full == 0) return;
+    // The sweep's entries: a full batch is one, a partial one's blocks are
+    // one each (start: each batch's first entry; fill: its blocks so far).
+    int *start = DX_ARENA_ARRAY(a, int, nbatch), *fill = DX_ARENA_ARRAY(a, int, nbatch);
+    sys->nbatches = 0;
+    for (int t = 0; t < nbatch; t++) {
+        start[t] = sys->nbatches;
+        sys->nbatches += count[t] == QS_LANES ? 1 : count[t];
+        fill[t] = 0;
+    }
+    qs_batch *out = DX_ARENA_ARRAY(a, qs_batch, sys->nbatches);
+    for (int k = 0; k < nb; k++) {
+        const qs_block *blk = sys->bseq[k];
+        const int t = slot[k];
+        if (count[t] < QS_LANES) {
+            qs_batch *one = &out[start[t] + fill[t]++];
+            memset(one, 0, sizeof *one);
+            one->blk[0] = blk;
+            continue;
+        }
+        qs_batch *b = &out[start[t]];
+        const int i = fill[t]++, c = nc[t] > 0 ? nc[t] : 0;
+        if (i == 0) {
+            b->soa = DX_ARENA_ARRAY(a, dReal, soa_size(blk->n, blk->two, c));
+            b->ncoupled = nc[t];
+        }
+        b->blk[i] = blk;
+        soa_copy((dReal *)b->soa, blk, sys->rows, i, c);
+    }
+    sys->batches = out;
+}
+
+// ---- the update ----------------------------------------------------------------
+
+// Fours of numbers, one a lane (GNU vector extensions: one AVX operation
+// for doubles in the AVX2 build, two SSE2 ones in the baseline; elsewhere
+// four scalar operations).
+#if defined(__GNUC__)
+typedef dReal qb_v4 __attribute__((vector_size(QS_LANES * sizeof(dReal))));
+#define qb_add(x, y) ((x) + (y))
+#define qb_sub(x, y) ((x) - (y))
+#define qb_mul(x, y) ((x) * (y))
+#define qb_lane(v, i) ((v)[i])
+#if defined(dSINGLE)
+typedef int32_t qb_m4 __attribute__((vector_size(QS_LANES * sizeof(dReal))));
+#else
+typedef int64_t qb_m4 __attribute__((vector_size(QS_LANES * sizeof(dReal))));
+#endif
+// l projected on lo..hi in each lane, as the scalar update does: hi where
+// l > hi, then lo where l < lo (comparisons are masks of all ones).
+QS_INLINE qb_v4 qb_clamp(qb_v4 l, qb_v4 lo, qb_v4 hi)
+{
+    qb_m4 m = l > hi;
+    l = (qb_v4)(((qb_m4)hi & m) | ((qb_m4)l & ~m));
+    m = l < lo;
+    return (qb_v4)(((qb_m4)lo & m) | ((qb_m4)l & ~m));
+}
+#else
+typedef struct qb_v4 {
+    dReal e[QS_LANES];
+} qb_v4;
+static inline qb_v4 qb_add(qb_v4 x, qb_v4 y)
+{
+    qb_v4 v = { { x.e[0] + y.e[0], x.e[1] + y.e[1], x.e[2] + y.e[2], x.e[3] + y.e[3] } };
+    return v;
+}
+static inline qb_v4 qb_sub(qb_v4 x, qb_v4 y)
+{
+    qb_v4 v = { { x.e[0] - y.e[0], x.e[1] - y.e[1], x.e[2] - y.e[2], x.e[3] - y.e[3] } };
+    return v;
+}
+static inline qb_v4 qb_mul(qb_v4 x, qb_v4 y)
+{
+    qb_v4 v = { { x.e[0] * y.e[0], x.e[1] * y.e[1], x.e[2] * y.e[2], x.e[3] * y.e[3] } };
+    return v;
+}
+#define qb_lane(v, i) ((v).e[i])
+static inline qb_v4 qb_clamp(qb_v4 l, qb_v4 lo, qb_v4 hi)
+{
+    for (int i = 0; i < QS_LANES; i++) {
+        l.e[i] = l.e[i] > hi.e[i] ? hi.e[i] : l.e[i];
+        l.e[i] = l.e[i] < lo.e[i] ? lo.e[i] : l.e[i];
+    }
+    return l;
+}
+#endif
+
+QS_INLINE qb_v4 qb_load(const dReal *p)
+{
+    qb_v4 v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+
+// p[0][e], p[1][e], p[2][e], p[3][e].
+QS_INLINE qb_v4 qb_gather(dReal *const *p, int e)
+{
+    qb_v4 v;
+    for (int i = 0; i < QS_LANES; i++) qb_lane(v, i) = p[i][e];
+    return v;
+}
+
+QS_INLINE void qb_scatter(qb_v4 v, dReal *const *p, int e)
+{
+    for (int i = 0; i < QS_LANES; i++) p[i][e] = qb_lane(v, i);
+}
+
+// Row a's J . fc in every lane (x: the bodies' numbers by lane), summed as
+// the block update does (quickstep_sweep.c: block_dot, then its two lanes).
+QS_INLINE qb_v4 batch_dot(const dReal *J, const qb_v4 *x, int two)
+{
+#define JX(e) qb_mul(qb_load(J + QS_LANES * (e)), x[e])
+    qb_v4 s0 = qb_add(qb_add(JX(0), JX(2)), JX(4));
+    qb_v4 s1 = qb_add(qb_add(JX(1), JX(3)), JX(5));
+    if (two) {
+        s0 = qb_add(s0, qb_add(qb_add(JX(6), JX(8)), JX(10)));
+        s1 = qb_add(s1, qb_add(qb_add(JX(7), JX(9)), JX(11)));
+    }
+#undef JX
+    return qb_add(s0, s1);
+}
+
+// The coupled rows of a full batch whose lanes have nc each (the block
+// part done: x its bodies' numbers, L its lambdas, by lane), side by side:
+// each lane coupled_row of quickstep_sweep.c. cs: their numbers (soa).
+QS_INLINE void batch_coupled(const qs_batch *b, int n, int two, int nc, const dReal *cs,
+                             const qs_row *rows, dReal *lambda, qb_v4 *x, qb_v4 *L)
+{
+    const int ne = two ? 12 : 6;
+    for (int c = 0; c < nc; c++) {
+        dReal *pos[QS_LANES];
+        qb_v4 s, old;
+        for (int i = 0; i < QS_LANES; i++) {
+            const qs_row *q = rows + b->blk[i]->coupled + c;
+            pos[i] = lambda + q->pos;
+            qb_lane(s, i) = dFabs(lambda[q->f]);
+            qb_lane(old, i) = *pos[i];
+        }
+        const dReal *M = cs + QS_LANES * ne, *k = M + QS_LANES * ne, *g = k + 4 * QS_LANES;
+        const qb_v4 r = qb_sub(qb_add(old, qb_load(k)), qb_mul(qb_load(k + QS_LANES), old));
+        const qb_v4 now = qb_clamp(qb_sub(r, batch_dot(cs, x, two)),
+                                   qb_mul(qb_load(k + 2 * QS_LANES), s),
+                                   qb_mul(qb_load(k + 3 * QS_LANES), s));
+        for (int i = 0; i < QS_LANES; i++) *pos[i] = qb_lane(now, i);
+        const qb_v4 delta = qb_sub(now, old);
+        for (int e = 0; e < ne; e++) x[e] = qb_add(x[e], qb_mul(delta, qb_load(M + QS_LANES * e)));
+        for (int a = 0; a < n; a++) L[a] = qb_add(L[a], qb_mul(delta, qb_load(g + QS_LANES * a)));
+        cs = g + QS_LANES * n;
+    }
+}
+
+// A full batch of blocks of n rows on two + 1 bodies (constants after
+// inlining): each lane the update_block of its block, then its coupled rows
+// (side by side when the lanes have as many, nc >= 0; else each lane's on
+// its own).
+QS_INLINE void batch_update(const qs_batch *b, int n, int two, int nc, const qs_row *rows,
+                            dReal *lambda, dReal *fc)
+{
+    const int ne = two ? 12 : 6;
+    dReal *f0[QS_LANES], *f1[QS_LANES], *l[QS_LANES];
+    for (int i = 0; i < QS_LANES; i++) {
+        f0[i] = fc + b->blk[i]->o0;
+        f1[i] = fc + b->blk[i]->o1;
+        l[i] = lambda + b->blk[i]->first;
+    }
+    qb_v4 x[12], res[QS_MAX_BLOCK], L[QS_MAX_BLOCK];
+    for (int e = 0; e < 6; e++) x[e] = qb_gather(f0, e);
+    if (two)
+        for (int e = 0; e < 6; e++) x[6 + e] = qb_gather(f1, e);
+    const dReal *J = b->soa, *M = J + QS_LANES * n * ne, *A = M + QS_LANES * n * ne;
+    const dReal *rhs = A + QS_LANES * n * n, *cfm = rhs + QS_LANES * n;
+    for (int a = 0; a < n; a++) {
+        L[a] = qb_gather(l, a);
+        const qb_v4 r = qb_sub(qb_load(rhs + QS_LANES * a), qb_mul(qb_load(cfm + QS_LANES * a), L[a]));
+        res[a] = qb_sub(r, batch_dot(J + QS_LANES * ne * a, x, two));
+    }
+    // delta = Ainv res, column products summed in row order; lambda +=
+    // delta; fc += M^-1 J^T delta, row by row.
+    qb_v4 d[QS_MAX_BLOCK];
+    for (int a = 0; a < n; a++) {
+        d[a] = qb_mul(qb_load(A + QS_LANES * a), res[0]);
+        for (int c = 1; c < n; c++) d[a] = qb_add(d[a], qb_mul(qb_load(A + QS_LANES * (c * n + a)), res[c]));
+        L[a] = qb_add(L[a], d[a]);
+    }
+    for (int a = 0; a < n; a++)
+        for (int e = 0; e < ne; e++)
+            x[e] = qb_add(x[e], qb_mul(d[a], qb_load(M + QS_LANES * (a * ne + e))));
+    if (nc > 0) batch_coupled(b, n, two, nc, cfm + QS_LANES * n, rows, lambda, x, L);
+    for (int a = 0; a < n; a++) qb_scatter(L[a], l, a);
+    for (int e = 0; e < 6; e++) qb_scatter(x[e], f0, e);
+    if (two)
+        for (int e = 0; e < 6; e++) qb_scatter(x[6 + e], f1, e);
+    if (nc < 0)
+        for (int i = 0; i < QS_LANES; i++)
+            if (b->blk[i]->ncoupled) dxQuickCoupledRows(b->blk[i], rows, lambda, fc);
+}
+
+// nc: the batch's coupled rows a lane, a constant for the common cases.
+QS_INLINE void batch_update_c(const qs_batch *b, int n, int two, const qs_row *rows,
+                              dReal *lambda, dReal *fc)
+{
+    switch (b->ncoupled) {
+    case 0: batch_update(b, n, two, 0, rows, lambda, fc); break;
+    case 1: batch_update(b, n, two, 1, rows, lambda, fc); break;
+    case 2: batch_update(b, n, two, 2, rows, lambda, fc); break;
+    case -1: batch_update(b, n, two, -1, rows, lambda, fc); break;
+    default: batch_update(b, n, two, b->ncoupled, rows, lambda, fc); break;
+    }
+}
+
+QS_INLINE void batch_update_n(const qs_batch *b, int n, const qs_row *rows, dReal *lambda,
+                              dReal *fc)
+{
+    if (b->blk[0]->two) batch_update_c(b, n, 1, rows, lambda, fc);
+    else batch_update_c(b, n, 0, rows, lambda, fc);
+}
+
+QS_BATCH_CLONES void dxQuickBatchUpdate(const qs_batch *b, const qs_row *rows, dReal *lambda,
+                                        dReal *fc)
+{
+    switch (b->blk[0]->n) {   // constant sizes let the compiler unroll
+    case 2: batch_update_n(b, 2, rows, lambda, fc); break;
+    case 3: batch_update_n(b, 3, rows, lambda, fc); break;
+    case 4: batch_update_n(b, 4, rows, lambda, fc); break;
+    case 5: batch_update_n(b, 5, rows, lambda, fc); break;
+    default: batch_update_n(b, QS_MAX_BLOCK, rows, lambda, fc); break;
+    }
+}
