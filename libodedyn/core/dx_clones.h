@@ -19,6 +19,15 @@
 #endif
 #endif
 
+// DX_AVX2_CLONES_EXTERN: the same for a function called from other files.
+// Clang 14 gives the versions of such a function names that callers in
+// other files do not link to, so under clang it is built once, baseline.
+#if defined(DX_AVX2_CLONES) && !defined(__clang__)
+#define DX_AVX2_CLONES_EXTERN DX_AVX2_CLONES
+#else
+#define DX_AVX2_CLONES_EXTERN
+#endif
+
 #if defined(__clang__)
 #if __has_warning("-Wpsabi")
 #pragma clang diagnostic ignored "-Wpsabi"

@@ -23,6 +23,13 @@
 #ifndef QS_SWEEP_CLONES
 #define QS_SWEEP_CLONES
 #endif
+// The same for dxQuickCoupledRows, called from quickstep_block_batch.c
+// (dx_clones.h: clang builds such a function once).
+#if defined(__clang__)
+#define QS_SWEEP_EXTERN_CLONES
+#else
+#define QS_SWEEP_EXTERN_CLONES QS_SWEEP_CLONES
+#endif
 
 // The rows are read in a random order that hardware prefetchers cannot
 // guess, and a big island's rows do not fit in the caches: the row this many
@@ -324,8 +331,8 @@ QS_INLINE void coupled_rows_n(const qs_block *blk, const qs_row *coupled, int n,
     else coupled_rows(blk, coupled, n, 3, lambda, fc);
 }
 
-QS_SWEEP_CLONES void dxQuickCoupledRows(const qs_block *blk, const qs_row *rows, dReal *lambda,
-                                        dReal *fc)
+QS_SWEEP_EXTERN_CLONES void dxQuickCoupledRows(const qs_block *blk, const qs_row *rows,
+                                               dReal *lambda, dReal *fc)
 {
     const qs_row *coupled = rows + blk->coupled;
     switch (blk->n) {

@@ -37,12 +37,8 @@
 
 // The match and the end pass are built for AVX2 too where the compiler can
 // pick a version at load time (dx_clones.h): the changes of frame in wider
-// operations, the same numbers.
-#ifdef DX_AVX2_CLONES
-#define WARM_CLONES DX_AVX2_CLONES
-#else
-#define WARM_CLONES
-#endif
+// operations, the same numbers (both are called from other files).
+#define WARM_CLONES DX_AVX2_CLONES_EXTERN
 
 #include <ode/memory.h>
 #include <string.h>
