@@ -192,6 +192,23 @@ static int test_box_against_one_triangle(void)
     return 0;
 }
 
+// A box of random half sides h (5 to 60 cm), turned and placed at random:
+// its axes ax[j] and centre c as the geom holds them.
+static dGeomID random_box(double h[3], double ax[3][3], double c[3])
+{
+    for (int j = 0; j < 3; j++) h[j] = urand(0.05, 0.6);
+    dGeomID box = dCreateBox(0, 2 * h[0], 2 * h[1], 2 * h[2]);
+    dMatrix3 Rb;
+    dRFromAxisAndAngle(Rb, urand(-1, 1), urand(-1, 1), urand(-1, 1), urand(0, 3));
+    dGeomSetRotation(box, Rb);
+    dGeomSetPosition(box, urand(-1, 1), urand(-1, 1), urand(-1, 1));
+    const dReal *R = dGeomGetRotation(box), *P = dGeomGetPosition(box);
+    for (int j = 0; j < 3; j++)
+        for (int i = 0; i < 3; i++) ax[j][i] = R[4 * i + j];
+    for (int i = 0; i < 3; i++) c[i] = P[i];
+    return box;
+}
+
 // A triangle with a vertex inside the box (the collider then skips the
 // edge pairs' axes: no axis can part them) and the box's centre in front of
 // it: the box reaches behind the triangle near that vertex, so there are
@@ -205,17 +222,8 @@ static int test_box_holding_a_vertex(void)
     const double margin = TOL(1e-6, 2e-3);
     int judged = 0;
     for (int round = 0; round < 4000; round++) {
-        double h[3] = { urand(0.05, 0.6), urand(0.05, 0.6), urand(0.05, 0.6) };
-        dGeomID box = dCreateBox(0, 2 * h[0], 2 * h[1], 2 * h[2]);
-        dMatrix3 Rb;
-        dRFromAxisAndAngle(Rb, urand(-1, 1), urand(-1, 1), urand(-1, 1), urand(0, 3));
-        dGeomSetRotation(box, Rb);
-        dGeomSetPosition(box, urand(-1, 1), urand(-1, 1), urand(-1, 1));
-        const dReal *R = dGeomGetRotation(box), *P = dGeomGetPosition(box);
-        double ax[3][3], c[3];
-        for (int j = 0; j < 3; j++)
-            for (int i = 0; i < 3; i++) ax[j][i] = R[4 * i + j];
-        for (int i = 0; i < 3; i++) c[i] = P[i];
+        double h[3], ax[3][3], c[3];
+        dGeomID box = random_box(h, ax, c);
         // Vertex 0 in the box (a quarter of them within a millionth of a
         // face; in single precision, where the box then reaches behind the
         // triangle by less than rounding, a thousandth), the others around it.
@@ -292,17 +300,8 @@ static int test_box_crossed_by_an_edge(void)
     const double margin = TOL(1e-6, 2e-3);
     int judged = 0;
     for (int round = 0; round < 4000; round++) {
-        double h[3] = { urand(0.05, 0.6), urand(0.05, 0.6), urand(0.05, 0.6) };
-        dGeomID box = dCreateBox(0, 2 * h[0], 2 * h[1], 2 * h[2]);
-        dMatrix3 Rb;
-        dRFromAxisAndAngle(Rb, urand(-1, 1), urand(-1, 1), urand(-1, 1), urand(0, 3));
-        dGeomSetRotation(box, Rb);
-        dGeomSetPosition(box, urand(-1, 1), urand(-1, 1), urand(-1, 1));
-        const dReal *R = dGeomGetRotation(box), *P = dGeomGetPosition(box);
-        double ax[3][3], c[3];
-        for (int j = 0; j < 3; j++)
-            for (int i = 0; i < 3; i++) ax[j][i] = R[4 * i + j];
-        for (int i = 0; i < 3; i++) c[i] = P[i];
+        double h[3], ax[3][3], c[3];
+        dGeomID box = random_box(h, ax, c);
         // x: the edge's point in the box; d: the edge's direction.
         double inset = round % 4 == 0 ? TOL(1e-6, 1e-3) : urand(0.01, 1), x[3], d[3];
         for (int i = 0; i < 3; i++) x[i] = c[i];
