@@ -245,3 +245,21 @@ void scene_destroy(scene *s)
     dSpaceDestroy(s->space);
     dWorldDestroy(s->w);
 }
+
+void scene_quick_states(int kind, int steps, dReal *states)
+{
+    scene s;
+    scene_build(&s, kind, STEP_QUICK, NULL, 0);
+    for (int k = 0; k < steps; k++) {
+        scene_step(&s);
+        scene_state(&s, states + (size_t)k * SCENE_STATE_SIZE);
+    }
+    scene_destroy(&s);
+}
+
+int first_state_difference(const dReal *a, const dReal *b, int steps, size_t size)
+{
+    for (int k = 0; k < steps; k++)
+        if (memcmp(a + (size_t)k * size, b + (size_t)k * size, size * sizeof(dReal))) return k;
+    return -1;
+}

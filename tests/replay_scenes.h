@@ -10,6 +10,7 @@
 #define REPLAY_SCENES_H
 
 #include <ode/ode.h>
+#include <stddef.h>
 #include <stdint.h>
 
 enum { SCENE_PYRAMID, SCENE_SPHERES, SCENE_RAGDOLLS, SCENE_CHAIN, SCENE_KINDS };
@@ -44,5 +45,13 @@ void scene_state(const scene *s, dReal *out);
 #define SCENE_STATE_SIZE (13 * SCENE_MAX_BODIES)
 uint64_t scene_hash(const scene *s);
 void scene_destroy(scene *s);
+
+// Scene `kind` built alone and stepped `steps` times under QuickStep, the
+// state after each step into states (steps x SCENE_STATE_SIZE): for tests
+// that run a scene two ways (an internal switch) and compare.
+void scene_quick_states(int kind, int steps, dReal *states);
+// The first step at which two runs' states a and b (steps states of size
+// numbers each) differ, or -1.
+int first_state_difference(const dReal *a, const dReal *b, int steps, size_t size);
 
 #endif

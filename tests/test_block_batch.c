@@ -16,14 +16,6 @@
 
 #include <string.h>
 
-// The first step at which a and b (steps states of size numbers) differ, or -1.
-static int first_difference(const dReal *a, const dReal *b, int steps, size_t size)
-{
-    for (int k = 0; k < steps; k++)
-        if (memcmp(a + (size_t)k * size, b + (size_t)k * size, size * sizeof(dReal))) return k;
-    return -1;
-}
-
 // ---- the bench-like scenes ------------------------------------------------------
 
 #define REPLAY_STEPS 150
@@ -32,13 +24,7 @@ static dReal state_a[REPLAY_STEPS * SCENE_STATE_SIZE], state_b[REPLAY_STEPS * SC
 static void run_replay_scene(int kind, int batches, dReal *states)
 {
     dxQuickBlockBatches = batches;
-    scene s;
-    scene_build(&s, kind, STEP_QUICK, NULL, 0);
-    for (int k = 0; k < REPLAY_STEPS; k++) {
-        scene_step(&s);
-        scene_state(&s, states + (size_t)k * SCENE_STATE_SIZE);
-    }
-    scene_destroy(&s);
+    scene_quick_states(kind, REPLAY_STEPS, states);
     dxQuickBlockBatches = 1;
 }
 
@@ -46,7 +32,7 @@ static int check_replay_scene(int kind)
 {
     run_replay_scene(kind, 1, state_a);
     run_replay_scene(kind, 0, state_b);
-    const int k = first_difference(state_a, state_b, REPLAY_STEPS, SCENE_STATE_SIZE);
+    const int k = first_state_difference(state_a, state_b, REPLAY_STEPS, SCENE_STATE_SIZE);
     if (k >= 0) test_fail(__FILE__, __LINE__, "%s: states differ from step %d", scene_names[kind], k);
     CHECK(k < 0);
     return 0;
@@ -279,7 +265,7 @@ static int test_machines_step_the_same_either_way(void)
     run_machines(1, machine_a);
     run_machines(0, machine_b);
     dCloseODE();
-    const int k = first_difference(machine_a, machine_b, MACHINE_STEPS, MACHINE_STATE);
+    const int k = first_state_difference(machine_a, machine_b, MACHINE_STEPS, MACHINE_STATE);
     if (k >= 0) test_fail(__FILE__, __LINE__, "machines: states differ from step %d", k);
     CHECK(k < 0);
     // The scene is alive: the machines moved and stayed finite.

@@ -19,27 +19,13 @@
 
 // ---- the bench-like scenes ------------------------------------------------------
 
-// Steps of scene `kind` under QuickStep with the direct way on or off; the
-// state after each step into states (steps x SCENE_STATE_SIZE).
+// Steps of scene `kind` under QuickStep with the direct way on or off
+// (replay_scenes.h).
 static void run_replay_scene(int kind, int direct, int steps, dReal *states)
 {
     dxQuickContactDirect = direct;
-    scene s;
-    scene_build(&s, kind, STEP_QUICK, NULL, 0);
-    for (int k = 0; k < steps; k++) {
-        scene_step(&s);
-        scene_state(&s, states + (size_t)k * SCENE_STATE_SIZE);
-    }
-    scene_destroy(&s);
+    scene_quick_states(kind, steps, states);
     dxQuickContactDirect = 1;
-}
-
-// The first step at which a and b (steps states each) differ, or -1.
-static int first_difference(const dReal *a, const dReal *b, int steps, size_t size)
-{
-    for (int k = 0; k < steps; k++)
-        if (memcmp(a + (size_t)k * size, b + (size_t)k * size, size * sizeof(dReal))) return k;
-    return -1;
 }
 
 #define REPLAY_STEPS 150
@@ -50,7 +36,7 @@ static int check_replay_scene(int kind)
     run_replay_scene(kind, 1, REPLAY_STEPS, state_a);
     run_replay_scene(kind, 0, REPLAY_STEPS, state_b);
 
-    const int k = first_difference(state_a, state_b, REPLAY_STEPS, SCENE_STATE_SIZE);
+    const int k = first_state_difference(state_a, state_b, REPLAY_STEPS, SCENE_STATE_SIZE);
     if (k >= 0) test_fail(__FILE__, __LINE__, "%s: states differ from step %d", scene_names[kind], k);
     CHECK(k < 0);
     return 0;
@@ -261,7 +247,7 @@ static int test_every_surface_mode_steps_the_same_either_way(void)
         run_mode(surface, 1, mode_a, fa, &made_a, &direct_a);
         run_mode(surface, 0, mode_b, fb, &made_b, &direct_b);
 
-        const int k = first_difference(mode_a, mode_b, MODE_STEPS, MODE_STATE);
+        const int k = first_state_difference(mode_a, mode_b, MODE_STEPS, MODE_STATE);
         if (k >= 0) test_fail(__FILE__, __LINE__, "surface %d: states differ from step %d",
                               surface, k);
         CHECK(k < 0);

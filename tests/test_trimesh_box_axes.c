@@ -209,13 +209,82 @@ static dGeomID random_box(double h[3], double ax[3][3], double c[3])
     return box;
 }
 
+// A random point x of the box, each coordinate short of the face it is
+// nearer by inset (0 to 1) times half to all of the box's half side.
+static void point_in_box(const double c[3], const double ax[3][3], const double h[3],
+                         double inset, double x[3])
+{
+    for (int i = 0; i < 3; i++) x[i] = c[i];
+    for (int j = 0; j < 3; j++) {
+        double u = (urand(-1, 1) < 0 ? -1 : 1) * (1 - inset * urand(0.5, 1)) * h[j];
+        for (int i = 0; i < 3; i++) x[i] += u * ax[j][i];
+    }
+}
+
+// Triangle v's unit normal, if it is no sliver and c lies in front of it
+// by more than margin: 1; else 0.
+static int front_normal(double v[3][3], const double c[3], double margin, double nrm[3])
+{
+    double e1[3], e2[3];
+    for (int i = 0; i < 3; i++) {
+        e1[i] = v[1][i] - v[0][i];
+        e2[i] = v[2][i] - v[0][i];
+    }
+    cross3(nrm, e1, e2);
+    double nl = sqrt(dot3(nrm, nrm));
+    if (nl < 0.05 || (dot3(nrm, c) - dot3(nrm, v[0])) / nl < margin) return 0;
+    for (int i = 0; i < 3; i++) nrm[i] /= nl;
+    return 1;
+}
+
+// The box (centre c, axes ax, half sides h) against a mesh of triangle v
+// alone (unit normal nrm, c in front), both argument orders: contacts, the
+// same each way, each along the triangle's normal, a point of the box over
+// the triangle as deep below its plane as it says. 0, or 1 after a failed
+// check.
+static int judge_box_on_triangle(dGeomID box, double v[3][3], const double nrm[3],
+                                 const double c[3], const double ax[3][3], const double h[3],
+                                 double margin)
+{
+    dReal fv[9];
+    for (int k = 0; k < 9; k++) fv[k] = (dReal)v[k / 3][k % 3];
+    static const dTriIndex idx[3] = { 0, 1, 2 };
+    dTriMeshDataID data = dGeomTriMeshDataCreate();
+#ifdef dDOUBLE
+    dGeomTriMeshDataBuildDouble(data, fv, 3 * sizeof(dReal), 3, idx, 3, 3 * sizeof(dTriIndex));
+#else
+    dGeomTriMeshDataBuildSingle(data, fv, 3 * sizeof(dReal), 3, idx, 3, 3 * sizeof(dTriIndex));
+#endif
+    dGeomID mesh = dCreateTriMesh(0, data, 0, 0, 0);
+
+    dContactGeom k[8], kr[8];
+    int n = dCollide(mesh, box, 8, k, sizeof k[0]);
+    int nr = dCollide(box, mesh, 8, kr, sizeof kr[0]);
+    CHECK(n >= 1 && nr == n);
+    for (int j = 0; j < n; j++) {
+        CHECK(k[j].g1 == mesh && k[j].g2 == box && k[j].side1 == 0);
+        CHECK(kr[j].g1 == box && kr[j].g2 == mesh && kr[j].side2 == 0);
+        CHECK_VEC(k[j].normal, -nrm[0], -nrm[1], -nrm[2], TOL(1e-9, 1e-4));
+        CHECK_VEC(kr[j].normal, nrm[0], nrm[1], nrm[2], TOL(1e-9, 1e-4));
+        CHECK(k[j].depth >= 0 && kr[j].depth == k[j].depth);
+        double p[3] = { k[j].pos[0], k[j].pos[1], k[j].pos[2] }, d[3];
+        for (int i = 0; i < 3; i++) d[i] = p[i] - c[i];
+        for (int a = 0; a < 3; a++) CHECK(fabs(dot3(d, ax[a])) <= h[a] + margin);
+        CHECK(over_triangle(v, nrm, p, -margin));
+        CHECK_NEAR(dot3(nrm, p) - dot3(nrm, v[0]), -k[j].depth, TOL(1e-8, 1e-4));
+    }
+    dGeomDestroy(mesh);
+    dGeomTriMeshDataDestroy(data);
+    return 0;
+}
+
 // A triangle with a vertex inside the box (the collider then skips the
 // edge pairs' axes: no axis can part them) and the box's centre in front of
 // it: the box reaches behind the triangle near that vertex, so there are
-// contacts, each along the triangle's normal, a point of the box over the
-// triangle as deep below its plane as it says. Vertices from deep inside
-// to a millionth of the box's size from its faces (a thousandth in single
-// precision).
+// contacts, judged by judge_box_on_triangle. Vertices from deep inside to a
+// millionth of the box's size from its faces (a thousandth in single
+// precision, where the box then reaches behind the triangle by less than
+// rounding).
 static int test_box_holding_a_vertex(void)
 {
     srand(12);
@@ -225,63 +294,16 @@ static int test_box_holding_a_vertex(void)
         double h[3], ax[3][3], c[3];
         dGeomID box = random_box(h, ax, c);
         // Vertex 0 in the box (a quarter of them within a millionth of a
-        // face; in single precision, where the box then reaches behind the
-        // triangle by less than rounding, a thousandth), the others around it.
-        double inset = round % 4 == 0 ? TOL(1e-6, 1e-3) : urand(0.01, 1);
-        double v[3][3];
-        for (int i = 0; i < 3; i++) v[0][i] = c[i];
-        for (int j = 0; j < 3; j++) {
-            double u = (urand(-1, 1) < 0 ? -1 : 1) * (1 - inset * urand(0.5, 1)) * h[j];
-            for (int i = 0; i < 3; i++) v[0][i] += u * ax[j][i];
-        }
+        // face), the others around it.
+        double inset = round % 4 == 0 ? TOL(1e-6, 1e-3) : urand(0.01, 1), v[3][3], nrm[3];
+        point_in_box(c, ax, h, inset, v[0]);
         for (int k = 1; k < 3; k++)
             for (int i = 0; i < 3; i++) v[k][i] = v[0][i] + urand(-1, 1);
-        double e1[3], e2[3], nrm[3];
-        for (int i = 0; i < 3; i++) {
-            e1[i] = v[1][i] - v[0][i];
-            e2[i] = v[2][i] - v[0][i];
+        if (front_normal(v, c, margin, nrm)) {
+            if (judge_box_on_triangle(box, v, nrm, c, ax, h, margin)) return 1;
+            judged++;
         }
-        cross3(nrm, e1, e2);
-        double nl = sqrt(dot3(nrm, nrm));
-        double hc = (dot3(nrm, c) - dot3(nrm, v[0])) / nl;
-        if (nl < 0.05 || hc < margin) {   // a sliver, or the centre not in front
-            dGeomDestroy(box);
-            continue;
-        }
-        for (int i = 0; i < 3; i++) nrm[i] /= nl;
-        dReal fv[9];
-        for (int k = 0; k < 9; k++) fv[k] = (dReal)v[k / 3][k % 3];
-        static const dTriIndex idx[3] = { 0, 1, 2 };
-        dTriMeshDataID data = dGeomTriMeshDataCreate();
-#ifdef dDOUBLE
-        dGeomTriMeshDataBuildDouble(data, fv, 3 * sizeof(dReal), 3, idx, 3, 3 * sizeof(dTriIndex));
-#else
-        dGeomTriMeshDataBuildSingle(data, fv, 3 * sizeof(dReal), 3, idx, 3, 3 * sizeof(dTriIndex));
-#endif
-        dGeomID mesh = dCreateTriMesh(0, data, 0, 0, 0);
-
-        dContactGeom k[8];
-        int n = dCollide(mesh, box, 8, k, sizeof k[0]);
-        dContactGeom kr[8];
-        int nr = dCollide(box, mesh, 8, kr, sizeof kr[0]);
-
-        CHECK(n >= 1 && nr == n);
-        for (int j = 0; j < n; j++) {
-            CHECK(k[j].g1 == mesh && k[j].g2 == box && k[j].side1 == 0);
-            CHECK(kr[j].g1 == box && kr[j].g2 == mesh && kr[j].side2 == 0);
-            CHECK_VEC(k[j].normal, -nrm[0], -nrm[1], -nrm[2], TOL(1e-9, 1e-4));
-            CHECK_VEC(kr[j].normal, nrm[0], nrm[1], nrm[2], TOL(1e-9, 1e-4));
-            CHECK(k[j].depth >= 0 && kr[j].depth == k[j].depth);
-            double p[3] = { k[j].pos[0], k[j].pos[1], k[j].pos[2] }, d[3];
-            for (int i = 0; i < 3; i++) d[i] = p[i] - c[i];
-            for (int a = 0; a < 3; a++) CHECK(fabs(dot3(d, ax[a])) <= h[a] + margin);
-            CHECK(over_triangle(v, nrm, p, -margin));
-            CHECK_NEAR(dot3(nrm, p) - dot3(nrm, v[0]), -k[j].depth, TOL(1e-8, 1e-4));
-        }
-        judged++;
         dGeomDestroy(box);
-        dGeomDestroy(mesh);
-        dGeomTriMeshDataDestroy(data);
     }
     CHECK(judged > 1000);
     return 0;
@@ -290,10 +312,10 @@ static int test_box_holding_a_vertex(void)
 // A triangle none of whose vertices is in the box but one of whose edges
 // passes through it (the collider then also skips the edge pairs' axes),
 // the box's centre in front of it: the box reaches behind the triangle
-// where the edge runs through, so there are contacts, judged as above; and
-// both argument orders agree. The edge's point in the box from deep inside
-// to a millionth of the box's size from a face (a thousandth in single
-// precision), its ends from just outside the box to beyond its size.
+// where the edge runs through, so there are contacts, judged as above. The
+// edge's point in the box from deep inside to a millionth of the box's size
+// from a face (a thousandth in single precision), its ends from just
+// outside the box to beyond its size.
 static int test_box_crossed_by_an_edge(void)
 {
     srand(13);
@@ -304,11 +326,7 @@ static int test_box_crossed_by_an_edge(void)
         dGeomID box = random_box(h, ax, c);
         // x: the edge's point in the box; d: the edge's direction.
         double inset = round % 4 == 0 ? TOL(1e-6, 1e-3) : urand(0.01, 1), x[3], d[3];
-        for (int i = 0; i < 3; i++) x[i] = c[i];
-        for (int j = 0; j < 3; j++) {
-            double u = (urand(-1, 1) < 0 ? -1 : 1) * (1 - inset * urand(0.5, 1)) * h[j];
-            for (int i = 0; i < 3; i++) x[i] += u * ax[j][i];
-        }
+        point_in_box(c, ax, h, inset, x);
         for (int i = 0; i < 3; i++) d[i] = urand(-1, 1);
         double dl = sqrt(dot3(d, d)), size = h[0] + h[1] + h[2];
         double v[3][3], back = urand(0.2, 1.2) * size / dl, on = urand(0.2, 1.2) * size / dl;
@@ -317,7 +335,7 @@ static int test_box_crossed_by_an_edge(void)
             v[1][i] = x[i] + on * d[i];
             v[2][i] = x[i] + urand(-1, 1);
         }
-        int inside = 0;   // a vertex in the box: another test's case
+        int inside = 0;   // a vertex in the box: the other test's case
         for (int k = 0; k < 3; k++) {
             double r[3];
             for (int i = 0; i < 3; i++) r[i] = v[k][i] - c[i];
@@ -325,49 +343,12 @@ static int test_box_crossed_by_an_edge(void)
             for (int j = 0; j < 3; j++) in &= fabs(dot3(r, ax[j])) <= h[j];
             inside |= in;
         }
-        double e1[3], e2[3], nrm[3];
-        for (int i = 0; i < 3; i++) {
-            e1[i] = v[1][i] - v[0][i];
-            e2[i] = v[2][i] - v[0][i];
+        double nrm[3];
+        if (!inside && front_normal(v, c, margin, nrm)) {
+            if (judge_box_on_triangle(box, v, nrm, c, ax, h, margin)) return 1;
+            judged++;
         }
-        cross3(nrm, e1, e2);
-        double nl = sqrt(dot3(nrm, nrm));
-        double hc = nl > 0 ? (dot3(nrm, c) - dot3(nrm, v[0])) / nl : 0;
-        if (inside || nl < 0.05 || hc < margin) {   // a sliver, or the centre not in front
-            dGeomDestroy(box);
-            continue;
-        }
-        for (int i = 0; i < 3; i++) nrm[i] /= nl;
-        dReal fv[9];
-        for (int k = 0; k < 9; k++) fv[k] = (dReal)v[k / 3][k % 3];
-        static const dTriIndex idx[3] = { 0, 1, 2 };
-        dTriMeshDataID data = dGeomTriMeshDataCreate();
-#ifdef dDOUBLE
-        dGeomTriMeshDataBuildDouble(data, fv, 3 * sizeof(dReal), 3, idx, 3, 3 * sizeof(dTriIndex));
-#else
-        dGeomTriMeshDataBuildSingle(data, fv, 3 * sizeof(dReal), 3, idx, 3, 3 * sizeof(dTriIndex));
-#endif
-        dGeomID mesh = dCreateTriMesh(0, data, 0, 0, 0);
-
-        dContactGeom k[8], kr[8];
-        int n = dCollide(mesh, box, 8, k, sizeof k[0]);
-        int nr = dCollide(box, mesh, 8, kr, sizeof kr[0]);
-        CHECK(n >= 1 && nr == n);
-        for (int j = 0; j < n; j++) {
-            CHECK(k[j].g1 == mesh && k[j].g2 == box && k[j].side1 == 0);
-            CHECK(kr[j].g1 == box && kr[j].g2 == mesh && kr[j].side2 == 0);
-            CHECK_VEC(k[j].normal, -nrm[0], -nrm[1], -nrm[2], TOL(1e-9, 1e-4));
-            CHECK(k[j].depth >= 0 && kr[j].depth == k[j].depth);
-            double p[3] = { k[j].pos[0], k[j].pos[1], k[j].pos[2] }, r[3];
-            for (int i = 0; i < 3; i++) r[i] = p[i] - c[i];
-            for (int a = 0; a < 3; a++) CHECK(fabs(dot3(r, ax[a])) <= h[a] + margin);
-            CHECK(over_triangle(v, nrm, p, -margin));
-            CHECK_NEAR(dot3(nrm, p) - dot3(nrm, v[0]), -k[j].depth, TOL(1e-8, 1e-4));
-        }
-        judged++;
         dGeomDestroy(box);
-        dGeomDestroy(mesh);
-        dGeomTriMeshDataDestroy(data);
     }
     CHECK(judged > 1000);
     return 0;
