@@ -154,12 +154,15 @@ public:
         return model;
     }
 
-    // Geom g's data changed (geom_changed), g holding `held` (or NULL: a
-    // pointer that owns a model, or part of one), g's data now `key` with
-    // triangles (else NULL): if held owns that data's model, it is kept for
-    // g and the model marked stale.
-    void park(dGeomID g, std::shared_ptr<const void> held, const void *key)
+    // Mesh geom g's data changed (geom_changed), g holding `held` (or NULL:
+    // a pointer that owns a model, or part of one): if held owns the model
+    // of g's data as it is now (with triangles), it is kept for g and the
+    // model marked stale.
+    void park(dGeomID g, std::shared_ptr<const void> held)
     {
+        dxTriMeshInfo info;
+        dxTriMeshGetInfo(g, &info);
+        const void *key = info.tri_count > 0 ? info.data : nullptr;
         std::shared_ptr<const void> released = std::move(held), kept;   // after the lock
         std::lock_guard<std::mutex> lock(mutex_);
         kept = take_parked(g);

@@ -134,10 +134,7 @@ std::shared_ptr<btCollisionShape> mesh_shape(dGeomID g)
 
 void mesh_changed(dGeomID g, std::shared_ptr<btCollisionShape> held)
 {
-    dxTriMeshInfo info;
-    dxTriMeshGetInfo(g, &info);
-    dxadapter::ModelRegistry<Model>::instance().park(g, std::move(held),
-                                                      info.tri_count > 0 ? info.data : nullptr);
+    dxadapter::ModelRegistry<Model>::instance().park(g, std::move(held));
 }
 
 void mesh_destroyed(dGeomID g) { dxadapter::ModelRegistry<Model>::instance().forget(g); }

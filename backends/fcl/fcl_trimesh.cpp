@@ -120,10 +120,7 @@ std::shared_ptr<Geometry> mesh_model(dGeomID g)
 
 void mesh_changed(dGeomID g, std::shared_ptr<Geometry> held)
 {
-    dxTriMeshInfo info;
-    dxTriMeshGetInfo(g, &info);
-    dxadapter::ModelRegistry<Model>::instance().park(g, std::move(held),
-                                                      info.tri_count > 0 ? info.data : nullptr);
+    dxadapter::ModelRegistry<Model>::instance().park(g, std::move(held));
 }
 
 void mesh_destroyed(dGeomID g) { dxadapter::ModelRegistry<Model>::instance().forget(g); }
