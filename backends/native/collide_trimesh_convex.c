@@ -26,6 +26,10 @@
 
 #include <float.h>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "collide_trimesh.h"
 #include "../../libodecollide/geom_convex.h"
 
@@ -473,6 +477,99 @@ static int box_separated(const box_pair *b, const dxTri *t, const dReal c[3], dR
     return 0;
 }
 
+// The eight sums x + (+-d0) + (+-d1) + (+-d2), bit j of the index picking
+// the sign of d_j, into out: each summed left to right as written, the
+// partial sums shared (the same numbers as the eight sums one by one).
+// With SSE2 (double) two neighbouring corners at a time: the same sums.
+static inline void corner_sums(dReal x, const dReal d[3], dReal out[8])
+{
+#if defined(__SSE2__) && !defined(dSINGLE)
+    const __m128d a = _mm_add_pd(_mm_set1_pd(x), _mm_set_pd(d[0], -d[0]));
+    const __m128d d1 = _mm_set1_pd(d[1]), d2 = _mm_set1_pd(d[2]);
+    const __m128d b0 = _mm_sub_pd(a, d1), b1 = _mm_add_pd(a, d1);
+    _mm_storeu_pd(out, _mm_sub_pd(b0, d2));
+    _mm_storeu_pd(out + 2, _mm_sub_pd(b1, d2));
+    _mm_storeu_pd(out + 4, _mm_add_pd(b0, d2));
+    _mm_storeu_pd(out + 6, _mm_add_pd(b1, d2));
+#else
+    dReal a[2] = { x - d[0], x + d[0] }, b[4];
+    for (int v = 0; v < 4; v++) b[v] = a[v & 1] + (v & 2 ? d[1] : -d[1]);
+    for (int v = 0; v < 8; v++) out[v] = b[v & 3] + (v & 4 ? d[2] : -d[2]);
+#endif
+}
+
+// Bit v set where x[v] < lim (of eight numbers), where x[v] >= lim, where
+// x[v] <= lim (false for NaN, as the comparisons one by one).
+#if defined(__SSE2__) && !defined(dSINGLE)
+#define EIGHT_BITS(x, lim, cmp)                                                            \
+    ((unsigned)_mm_movemask_pd(cmp(_mm_loadu_pd(x), lim)) |                                 \
+     (unsigned)_mm_movemask_pd(cmp(_mm_loadu_pd((x) + 2), lim)) << 2 |                      \
+     (unsigned)_mm_movemask_pd(cmp(_mm_loadu_pd((x) + 4), lim)) << 4 |                      \
+     (unsigned)_mm_movemask_pd(cmp(_mm_loadu_pd((x) + 6), lim)) << 6)
+static inline unsigned bits_below(const dReal x[8], dReal lim)
+{
+    return EIGHT_BITS(x, _mm_set1_pd(lim), _mm_cmplt_pd);
+}
+static inline unsigned bits_at_least(const dReal x[8], dReal lim)
+{
+    return EIGHT_BITS(x, _mm_set1_pd(lim), _mm_cmpge_pd);
+}
+static inline unsigned bits_at_most(const dReal x[8], dReal lim)
+{
+    return EIGHT_BITS(x, _mm_set1_pd(lim), _mm_cmple_pd);
+}
+#undef EIGHT_BITS
+#else
+static inline unsigned bits_below(const dReal x[8], dReal lim)
+{
+    unsigned bits = 0;
+    for (int v = 0; v < 8; v++)
+        if (x[v] < lim) bits |= 1u << v;
+    return bits;
+}
+static inline unsigned bits_at_least(const dReal x[8], dReal lim)
+{
+    unsigned bits = 0;
+    for (int v = 0; v < 8; v++)
+        if (x[v] >= lim) bits |= 1u << v;
+    return bits;
+}
+static inline unsigned bits_at_most(const dReal x[8], dReal lim)
+{
+    unsigned bits = 0;
+    for (int v = 0; v < 8; v++)
+        if (x[v] <= lim) bits |= 1u << v;
+    return bits;
+}
+#endif
+
+// A box's faces as corner numbers (in order round the face) and as bit
+// masks of those corners.
+static const int box_faces[6][4] = { { 0, 2, 6, 4 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
+                                     { 2, 3, 7, 6 }, { 0, 1, 3, 2 }, { 4, 5, 7, 6 } };
+static const unsigned box_face_mask[6] = { 0x55, 0xaa, 0x33, 0xcc, 0x0f, 0xf0 };
+
+// Whether box face f, some of whose corners are above the level H (heights
+// hv, bit v of `low` set for a corner at or below it), has its part at or
+// below H wholly beyond one side k of the prism: its low corners and the
+// two points where its edges cross the level all have fk[k] (the side's
+// measure, affine) below zero. Then no point its clip keeps is that low.
+// away: bit k for the sides its low corners are all beyond.
+static int low_part_outside(int f, const dReal hv[8], unsigned low, dReal H,
+                            const dReal fk[3][8], unsigned away)
+{
+    const int *fv = box_faces[f];
+    for (int i = 0; i < 4 && away; i++) {
+        int u = fv[i], w = fv[(i + 1) & 3];
+        if ((low >> u & 1) == (low >> w & 1)) continue;
+        dReal s = (H - hv[u]) / (hv[w] - hv[u]);
+        for (int k = 0; k < 3; k++)
+            if ((away >> k & 1) && !(fk[k][u] + s * (fk[k][w] - fk[k][u]) < 0))
+                away &= ~(1u << k);
+    }
+    return away != 0;
+}
+
 static int box_test(dxTriQuery *q, const dxTri *t)
 {
     const dReal *c = q->pos;
@@ -484,62 +581,63 @@ static int box_test(dxTriQuery *q, const dxTri *t)
     dReal nb[3];
     if (box_separated(b, t, c, hc, nb)) return 0;
     // A face is clipped if one of its corners is on or behind the plane.
-    static const int faces[6][4] = { { 0, 2, 6, 4 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
-                                     { 2, 3, 7, 6 }, { 0, 1, 3, 2 }, { 4, 5, 7, 6 } };
     // Bit v: corner v is on or behind the plane (height <= eps), from the
     // centre's height and the axes; one eps more covers that sum's
     // rounding (a face clipped needlessly adds nothing: its points are all
     // above the plane).
-    dReal eps = DX_COLLIDE_EPS * q->scale, up[3];
+    dReal eps = DX_COLLIDE_EPS * q->scale, up[3], hv[8];
     for (int j = 0; j < 3; j++) up[j] = b->h[j] * nb[j];
-    unsigned behind = 0;
-    for (int v = 0; v < 8; v++) {
-        dReal hv = hc + (v & 1 ? up[0] : -up[0]) + (v & 2 ? up[1] : -up[1]) +
-                   (v & 4 ? up[2] : -up[2]);
-        if (hv <= 2 * eps) behind |= 1u << v;
-    }
+    corner_sums(hc, up, hv);
+    const unsigned behind = bits_at_most(hv, 2 * eps);
     dxTriPrism p;
     dxTriPrismInit(q, t, &p);
     // Bit v of outside[k]: corner v is beyond side k of the prism by more
     // than rounding (the clip's measure m . (x - v_k) + slack below zero by
     // one slack more, a margin for working it out from the centre and the
-    // axes instead). A face with its four corners beyond one side clips to
-    // nothing.
+    // axes instead: fk[k][v] < 0). A face with its four corners beyond one
+    // side clips to nothing.
     // Bit v of inside[k]: corner v is within side k by more than rounding
     // (the measure at least one slack: with the clip's own slack, two), so
     // a face with its four corners within needs no clip against side k.
     unsigned outside[3] = { 0, 0, 0 }, inside[3] = { 0, 0, 0 };
+    dReal fk[3][8];
     for (int k = 0; k < 3; k++) {
         dReal d[3], off[3];
         sub3(d, c, t->v[k]);
         dReal f0 = dx_dot(p.m[k], d) + 2 * p.slack[k];
         for (int j = 0; j < 3; j++) off[j] = b->h[j] * dx_dot(p.m[k], b->ax[j]);
-        for (int v = 0; v < 8; v++) {
-            dReal f = f0 + (v & 1 ? off[0] : -off[0]) + (v & 2 ? off[1] : -off[1]) +
-                      (v & 4 ? off[2] : -off[2]);
-            if (f < 0) outside[k] |= 1u << v;
-            if (f >= 3 * p.slack[k]) inside[k] |= 1u << v;
-        }
+        corner_sums(f0, off, fk[k]);
+        outside[k] = bits_below(fk[k], 0);
+        inside[k] = bits_at_least(fk[k], 3 * p.slack[k]);
     }
     // seen: the corners added already (each is in three faces).
     int added = 0;
     unsigned seen = 0;
     for (int f = 0; f < 6; f++) {
-        const int *fv = faces[f];
-        unsigned mask = 1u << fv[0] | 1u << fv[1] | 1u << fv[2] | 1u << fv[3];
+        const unsigned mask = box_face_mask[f];
         if (!(behind & mask)) continue;
         if ((outside[0] & mask) == mask || (outside[1] & mask) == mask ||
             (outside[2] & mask) == mask)
             continue;
+        // A face partly above the plane whose low part (at or below 2 eps,
+        // where every point it could add lies) is beyond a side adds nothing.
+        const unsigned low = behind & mask;
+        if (low != mask) {
+            unsigned away = (outside[0] & low) == low;
+            away |= (unsigned)((outside[1] & low) == low) << 1;
+            away |= (unsigned)((outside[2] & low) == low) << 2;
+            if (away && low_part_outside(f, hv, behind, 2 * eps, fk, away)) continue;
+        }
+        const int *fv = box_faces[f];
         dReal a[POLY_MAX][3];
         int made[POLY_MAX];
         for (int i = 0; i < 4; i++) {
             for (int j = 0; j < 3; j++) a[i][j] = b->corner[fv[i]][j];
             made[i] = DX_TRI_MADE_CORNER + fv[i];
         }
-        unsigned within = 0;
-        for (int k = 0; k < 3; k++)
-            if ((inside[k] & mask) == mask) within |= 1u << k;
+        unsigned within = (inside[0] & mask) == mask;
+        within |= (unsigned)((inside[1] & mask) == mask) << 1;
+        within |= (unsigned)((inside[2] & mask) == mask) << 2;
         added |= clipped_face_contacts(q, t, &p, a, 4, made, within, &seen);
     }
     return added;
