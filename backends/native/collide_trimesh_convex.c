@@ -298,43 +298,45 @@ static int separates_cylinder(const dxTri *t, const dReal L[3], const dReal c[3]
 // gains at most three).
 enum { CYL_SIDES = 32, POLY_MAX = DX_TRI_POLY_MAX };
 
-// One face (polygon a, n corners, at least one of them on or behind the
-// triangle's plane) of a convex solid against triangle t (prism p):
-// clipped to the triangle's prism (widened by rounding), its points on or
-// behind the triangle's plane are contacts with the face normal and their
-// depth below the plane (where the face crosses the plane the depth is zero
-// and adds nothing). Points made on the prism's side at a flat edge are
-// left out: they are corners of the triangulation, not of the contact
-// patch (the corners of the solid over the neighbour come from it).
-// made[]: the corners' tags (dxTriClipToPrismWith); with `seen`, a corner
-// tagged DX_TRI_MADE_CORNER + v that bit v of *seen says was added already
-// (by another face of the solid, against the same triangle: the same
-// point, depth and normal to the bit) is not added again, and a corner
-// added sets its bit. Returns 1 if any was added.
+// One face (n corners, pointers to them in corner[], at least one of them
+// on or behind the triangle's plane) of a convex solid against triangle t
+// (prism p): clipped to the triangle's prism (widened by rounding), its
+// points on or behind the triangle's plane are contacts with the face
+// normal and their depth below the plane (where the face crosses the plane
+// the depth is zero and adds nothing). Points made on the prism's side at
+// a flat edge are left out: they are corners of the triangulation, not of
+// the contact patch (the corners of the solid over the neighbour come from
+// it). made[]: the corners' tags (dxTriClipToPrismWith); with `seen`, a
+// corner tagged DX_TRI_MADE_CORNER + v that bit v of *seen says was added
+// already (by another face of the solid, against the same triangle: the
+// same point, depth and normal to the bit) is not added again, and a
+// corner added sets its bit. Returns 1 if any was added.
 static int clipped_face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p,
-                                 dReal a[][3], int n, int *made, unsigned inside,
-                                 unsigned *seen)
+                                 const dReal *const *corner, const int *made, int n,
+                                 unsigned inside, unsigned *seen)
 {
     dReal eps = DX_COLLIDE_EPS * q->scale;
-    n = dxTriClipToPrismWith(p, t, a, n, made, inside);
+    dxTriClipped c;
+    n = dxTriClipToPrismWith(p, t, corner, made, n, inside, &c);
     int added = 0;
     for (int i = 0; i < n; i++) {
         unsigned bit = 0;
-        if (seen && made[i] >= DX_TRI_MADE_CORNER) {
-            bit = 1u << (made[i] - DX_TRI_MADE_CORNER);
+        int tag = c.made[i];
+        if (seen && tag >= DX_TRI_MADE_CORNER) {
+            bit = 1u << (tag - DX_TRI_MADE_CORNER);
             if (*seen & bit) continue;
         }
-        dReal depth = -height(t, a[i]);
-        if (depth < -eps || made[i] == DX_TRI_MADE_AT_FLAT_EDGE) continue;
+        dReal depth = -height(t, c.pt[i]);
+        if (depth < -eps || tag == DX_TRI_MADE_AT_FLAT_EDGE) continue;
         if (seen) *seen |= bit;
-        dxTriAdd(q, a[i], t->n, dMax(depth, 0), t->index);
+        dxTriAdd(q, c.pt[i], t->n, dMax(depth, 0), t->index);
         added = 1;
     }
     return added;
 }
 
-// The same for any face: one wholly in front of the plane adds nothing
-// (clipping keeps points within the polygon), so it is not clipped.
+// The same for any face (polygon a): one wholly in front of the plane adds
+// nothing (clipping keeps points within the polygon), so it is not clipped.
 static int face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p, dReal a[][3],
                          int n)
 {
@@ -342,9 +344,13 @@ static int face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p, dRe
     int behind = 0;
     for (int i = 0; i < n && !behind; i++) behind = height(t, a[i]) <= eps;
     if (!behind) return 0;
+    const dReal *corner[POLY_MAX];
     int made[POLY_MAX];
-    for (int i = 0; i < n; i++) made[i] = DX_TRI_MADE_NOT;
-    return clipped_face_contacts(q, t, p, a, n, made, 0, NULL);
+    for (int i = 0; i < n; i++) {
+        corner[i] = a[i];
+        made[i] = DX_TRI_MADE_NOT;
+    }
+    return clipped_face_contacts(q, t, p, corner, made, n, 0, NULL);
 }
 
 // A box's values for a pair, worked out on its first triangle (in q->s->pair):
@@ -629,16 +635,14 @@ static int box_test(dxTriQuery *q, const dxTri *t)
             if (away && low_part_outside(f, hv, behind, 2 * eps, fk, away)) continue;
         }
         const int *fv = box_faces[f];
-        dReal a[POLY_MAX][3];
-        int made[POLY_MAX];
-        for (int i = 0; i < 4; i++) {
-            for (int j = 0; j < 3; j++) a[i][j] = b->corner[fv[i]][j];
-            made[i] = DX_TRI_MADE_CORNER + fv[i];
-        }
+        const dReal *corner[4] = { b->corner[fv[0]], b->corner[fv[1]], b->corner[fv[2]],
+                                   b->corner[fv[3]] };
+        const int made[4] = { DX_TRI_MADE_CORNER + fv[0], DX_TRI_MADE_CORNER + fv[1],
+                              DX_TRI_MADE_CORNER + fv[2], DX_TRI_MADE_CORNER + fv[3] };
         unsigned within = (inside[0] & mask) == mask;
         within |= (unsigned)((inside[1] & mask) == mask) << 1;
         within |= (unsigned)((inside[2] & mask) == mask) << 2;
-        added |= clipped_face_contacts(q, t, &p, a, 4, made, within, &seen);
+        added |= clipped_face_contacts(q, t, &p, corner, made, 4, within, &seen);
     }
     return added;
 }
