@@ -358,9 +358,10 @@ static int face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p, dRe
 // axis j); inner[j]: h[j] less the margin within which a point counts as
 // inside the box whatever the rounding (box_separated); through[j] the
 // same with a wider margin, for a point of a triangle's edge whose ends are
-// at most `reach` from the centre along each axis.
+// at most `reach` from the centre along each axis. ax01[k]: component k of
+// axes 0 and 1 side by side.
 typedef struct box_pair {
-    dReal ax[3][3], h[3], corner[8][3], inner[3], through[3], reach;
+    dReal ax[3][3], h[3], corner[8][3], inner[3], through[3], reach, ax01[3][2];
 } box_pair;
 _Static_assert(sizeof(box_pair) <= sizeof(((dxTriScratch *)0)->pair), "box_pair fits");
 
@@ -372,6 +373,10 @@ static const box_pair *prepare_box(dxTriQuery *q)
     for (int j = 0; j < 3; j++) {
         b->h[j] = side[j] / 2;
         dx_axis(q->R, j, b->ax[j]);
+    }
+    for (int k = 0; k < 3; k++) {
+        b->ax01[k][0] = b->ax[0][k];
+        b->ax01[k][1] = b->ax[1][k];
     }
     const dReal *h = b->h;
     // The margin: 128 roundings of the largest number in the edge pairs
@@ -450,9 +455,39 @@ static int box_separated(const box_pair *b, const dxTri *t, const dReal c[3], dR
                          dReal nb[3])
 {
     const dReal *h = b->h;
+    dReal p[3][3];   // vertex i's coordinate j
+#if defined(__SSE2__) && !defined(dSINGLE)
+    // Axes 0 and 1 side by side, axis 2 alone: the same sums. dMax(x, y)
+    // is _mm_max_pd(y, x) and dMin(x, y) _mm_min_pd(x, y), NaN included
+    // (they differ only in the sign of a zero, which no comparison sees).
+    const __m128d a0 = _mm_loadu_pd(b->ax01[0]), a1 = _mm_loadu_pd(b->ax01[1]),
+                  a2 = _mm_loadu_pd(b->ax01[2]);
+    const __m128d n01 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(_mm_set1_pd(t->n[0]), a0),
+                                              _mm_mul_pd(_mm_set1_pd(t->n[1]), a1)),
+                                   _mm_mul_pd(_mm_set1_pd(t->n[2]), a2));
+    _mm_storeu_pd(nb, n01);
+    nb[2] = dx_dot(t->n, b->ax[2]);
+    if (hc > h[0] * dFabs(nb[0]) + h[1] * dFabs(nb[1]) + h[2] * dFabs(nb[2])) return 1;
+    __m128d p01[3];
+    for (int i = 0; i < 3; i++) {
+        dReal d[3];
+        sub3(d, t->v[i], c);
+        p01[i] = _mm_add_pd(_mm_add_pd(_mm_mul_pd(a0, _mm_set1_pd(d[0])),
+                                       _mm_mul_pd(a1, _mm_set1_pd(d[1]))),
+                            _mm_mul_pd(a2, _mm_set1_pd(d[2])));
+        _mm_storeu_pd(p[i], p01[i]);
+        p[i][2] = dx_dot(b->ax[2], d);
+    }
+    const __m128d hi01 = _mm_loadu_pd(h), lo01 = _mm_sub_pd(_mm_setzero_pd(), hi01);
+    const __m128d mx = _mm_max_pd(_mm_max_pd(p01[2], p01[1]), p01[0]);
+    const __m128d mn = _mm_min_pd(p01[0], _mm_min_pd(p01[1], p01[2]));
+    if (_mm_movemask_pd(_mm_or_pd(_mm_cmplt_pd(mx, lo01), _mm_cmpgt_pd(mn, hi01))) ||
+        dMax(p[0][2], dMax(p[1][2], p[2][2])) < -h[2] ||
+        dMin(p[0][2], dMin(p[1][2], p[2][2])) > h[2])
+        return 1;
+#else
     for (int j = 0; j < 3; j++) nb[j] = dx_dot(t->n, b->ax[j]);
     if (hc > h[0] * dFabs(nb[0]) + h[1] * dFabs(nb[1]) + h[2] * dFabs(nb[2])) return 1;
-    dReal p[3][3];   // vertex i's coordinate j
     for (int i = 0; i < 3; i++) {
         dReal d[3];
         sub3(d, t->v[i], c);
@@ -462,6 +497,7 @@ static int box_separated(const box_pair *b, const dxTri *t, const dReal c[3], dR
         if (dMax(p[0][j], dMax(p[1][j], p[2][j])) < -h[j] ||
             dMin(p[0][j], dMin(p[1][j], p[2][j])) > h[j])
             return 1;
+#endif
     // A vertex inside the box by more than the margin lies, on every axis
     // L, within the box's interval by at least the margin times |L| (the
     // box's |L . a_j| sum to at least |L|), far beyond the rounding of the
