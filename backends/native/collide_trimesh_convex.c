@@ -591,25 +591,32 @@ static const int box_faces[6][4] = { { 0, 2, 6, 4 }, { 1, 3, 7, 5 }, { 0, 1, 5, 
                                      { 2, 3, 7, 6 }, { 0, 1, 3, 2 }, { 4, 5, 7, 6 } };
 static const unsigned box_face_mask[6] = { 0x55, 0xaa, 0x33, 0xcc, 0x0f, 0xf0 };
 
-// Whether box face f, some of whose corners are above the level H (heights
-// hv, bit v of `low` set for a corner at or below it), has its part at or
-// below H wholly beyond one side k of the prism: its low corners and the
-// two points where its edges cross the level all have fk[k] (the side's
-// measure, affine) below zero. Then no point its clip keeps is that low.
-// away: bit k for the sides its low corners are all beyond.
-static int low_part_outside(int f, const dReal hv[8], unsigned low, dReal H,
-                            const dReal fk[3][8], unsigned away)
+// Which sides of the prism box face f's part at or below the level H
+// (corner heights hv, bit v of `low` set for a corner at or below it) lies
+// beyond (bit k of *away: fk[k], the side's measure, below zero at every
+// point of it) and within (bit k of *within: fk[k] at least lim[k]). The
+// part is a convex polygon, fk affine: its low corners and the points where
+// the face's edges cross the level decide. *away and *within come in with
+// the sides its low corners allow (the sides left out are not looked at).
+static void low_part_sides(int f, const dReal hv[8], unsigned low, dReal H,
+                           const dReal fk[3][8], const dReal lim[3], unsigned *away,
+                           unsigned *within)
 {
     const int *fv = box_faces[f];
-    for (int i = 0; i < 4 && away; i++) {
-        int u = fv[i], w = fv[(i + 1) & 3];
-        if ((low >> u & 1) == (low >> w & 1)) continue;
-        dReal s = (H - hv[u]) / (hv[w] - hv[u]);
-        for (int k = 0; k < 3; k++)
-            if ((away >> k & 1) && !(fk[k][u] + s * (fk[k][w] - fk[k][u]) < 0))
-                away &= ~(1u << k);
+    unsigned a = *away, w = *within;
+    for (int i = 0; i < 4 && (a | w); i++) {
+        int u = fv[i], x = fv[(i + 1) & 3];
+        if ((low >> u & 1) == (low >> x & 1)) continue;
+        dReal s = (H - hv[u]) / (hv[x] - hv[u]);
+        for (int k = 0; k < 3; k++) {
+            if (!((a | w) >> k & 1)) continue;
+            dReal fc = fk[k][u] + s * (fk[k][x] - fk[k][u]);
+            if (!(fc < 0)) a &= ~(1u << k);
+            if (!(fc >= lim[k])) w &= ~(1u << k);
+        }
     }
-    return away != 0;
+    *away = a;
+    *within = w;
 }
 
 static int box_test(dxTriQuery *q, const dxTri *t)
@@ -641,8 +648,10 @@ static int box_test(dxTriQuery *q, const dxTri *t)
     // Bit v of inside[k]: corner v is within side k by more than rounding
     // (the measure at least one slack: with the clip's own slack, two), so
     // a face with its four corners within needs no clip against side k.
-    unsigned outside[3] = { 0, 0, 0 }, inside[3] = { 0, 0, 0 };
-    dReal fk[3][8];
+    // Bit v of low_in[k]: fk[k][v] >= lim[k] = 2 slack, the clip's measure
+    // one slack over its crossing (the face's low part, see below).
+    unsigned outside[3] = { 0, 0, 0 }, inside[3] = { 0, 0, 0 }, low_in[3];
+    dReal fk[3][8], lim[3];
     for (int k = 0; k < 3; k++) {
         dReal d[3], off[3];
         sub3(d, c, t->v[k]);
@@ -651,6 +660,8 @@ static int box_test(dxTriQuery *q, const dxTri *t)
         corner_sums(f0, off, fk[k]);
         outside[k] = bits_below(fk[k], 0);
         inside[k] = bits_at_least(fk[k], 3 * p.slack[k]);
+        lim[k] = 2 * p.slack[k];
+        low_in[k] = bits_at_least(fk[k], lim[k]);
     }
     // seen: the corners added already (each is in three faces).
     int added = 0;
@@ -661,16 +672,38 @@ static int box_test(dxTriQuery *q, const dxTri *t)
         if ((outside[0] & mask) == mask || (outside[1] & mask) == mask ||
             (outside[2] & mask) == mask)
             continue;
-        // A face partly above the plane whose low part (at or below 2 eps,
-        // where every point it could add lies) is beyond a side adds nothing.
+        // Every point a face can add lies in its low part (at or below
+        // 2 eps). If that part is beyond a side, the face adds nothing. If
+        // it is within every side by one slack more than the clip's
+        // crossings, the clip keeps its low corners as they are and every
+        // point it makes is higher: the face adds its low corners (in its
+        // order, as the clip keeps them), and is not clipped.
         const unsigned low = behind & mask;
+        unsigned away = 0, low_within = (low_in[0] & low) == low;
+        low_within |= (unsigned)((low_in[1] & low) == low) << 1;
+        low_within |= (unsigned)((low_in[2] & low) == low) << 2;
+        if (low_within != 7) low_within = 0;
         if (low != mask) {
-            unsigned away = (outside[0] & low) == low;
+            away = (outside[0] & low) == low;
             away |= (unsigned)((outside[1] & low) == low) << 1;
             away |= (unsigned)((outside[2] & low) == low) << 2;
-            if (away && low_part_outside(f, hv, behind, 2 * eps, fk, away)) continue;
+            if (away || low_within)
+                low_part_sides(f, hv, behind, 2 * eps, fk, lim, &away, &low_within);
+            if (away) continue;
         }
         const int *fv = box_faces[f];
+        if (low_within == 7) {
+            for (int i = 0; i < 4; i++) {
+                const int v = fv[i];
+                if (!(low >> v & 1) || (seen >> v & 1)) continue;
+                dReal depth = -height(t, b->corner[v]);
+                if (depth < -eps) continue;
+                seen |= 1u << v;
+                dxTriAdd(q, b->corner[v], t->n, dMax(depth, 0), t->index);
+                added = 1;
+            }
+            continue;
+        }
         const dReal *corner[4] = { b->corner[fv[0]], b->corner[fv[1]], b->corner[fv[2]],
                                    b->corner[fv[3]] };
         const int made[4] = { DX_TRI_MADE_CORNER + fv[0], DX_TRI_MADE_CORNER + fv[1],
