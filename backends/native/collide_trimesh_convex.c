@@ -674,15 +674,25 @@ static int box_test(dxTriQuery *q, const dxTri *t)
             continue;
         // Every point a face can add lies in its low part (at or below
         // 2 eps). If that part is beyond a side, the face adds nothing. If
-        // it is within every side by one slack more than the clip's
-        // crossings, the clip keeps its low corners as they are and every
-        // point it makes is higher: the face adds its low corners (in its
-        // order, as the clip keeps them), and is not clipped.
+        // it is within the last side to clip against by one slack more
+        // than the clip's crossings, that clip keeps the low points as
+        // they are (their bits and order) and makes and drops only higher
+        // ones, which add nothing: it is left out (and then the one before
+        // it, the same way). A face left with no clip adds its low corners
+        // (in its order, as the clip keeps them).
         const unsigned low = behind & mask;
-        unsigned away = 0, low_within = (low_in[0] & low) == low;
-        low_within |= (unsigned)((low_in[1] & low) == low) << 1;
-        low_within |= (unsigned)((low_in[2] & low) == low) << 2;
-        if (low_within != 7) low_within = 0;
+        unsigned within = (inside[0] & mask) == mask;
+        within |= (unsigned)((inside[1] & mask) == mask) << 1;
+        within |= (unsigned)((inside[2] & mask) == mask) << 2;
+        // low_within: the sides, from the last on, that the low part's
+        // corners are within (or that need no clip), less those that need
+        // no clip.
+        unsigned away = 0, low_within = 0;
+        for (int k = 2; k >= 0; k--) {
+            if (within >> k & 1) continue;
+            if ((low_in[k] & low) != low) break;
+            low_within |= 1u << k;
+        }
         if (low != mask) {
             away = (outside[0] & low) == low;
             away |= (unsigned)((outside[1] & low) == low) << 1;
@@ -691,8 +701,9 @@ static int box_test(dxTriQuery *q, const dxTri *t)
                 low_part_sides(f, hv, behind, 2 * eps, fk, lim, &away, &low_within);
             if (away) continue;
         }
+        for (int k = 2; k >= 0 && ((within | low_within) >> k & 1); k--) within |= 1u << k;
         const int *fv = box_faces[f];
-        if (low_within == 7) {
+        if (within == 7) {
             for (int i = 0; i < 4; i++) {
                 const int v = fv[i];
                 if (!(low >> v & 1) || (seen >> v & 1)) continue;
@@ -708,9 +719,6 @@ static int box_test(dxTriQuery *q, const dxTri *t)
                                    b->corner[fv[3]] };
         const int made[4] = { DX_TRI_MADE_CORNER + fv[0], DX_TRI_MADE_CORNER + fv[1],
                               DX_TRI_MADE_CORNER + fv[2], DX_TRI_MADE_CORNER + fv[3] };
-        unsigned within = (inside[0] & mask) == mask;
-        within |= (unsigned)((inside[1] & mask) == mask) << 1;
-        within |= (unsigned)((inside[2] & mask) == mask) << 2;
         added |= clipped_face_contacts(q, t, &p, corner, made, 4, within, &seen);
     }
     return added;
