@@ -409,21 +409,18 @@ static int separates_box(const dxTri *t, const dReal L[3], const dReal c[3],
     return hi < bc - br || lo > bc + br;
 }
 
-// Whether the triangle's edge from a to b (box frame) has a point inside
+// Whether the triangle's edge from a to e (box frame) has a point inside
 // the box by more than the margin b->through: then, as for a vertex inside
 // (box_separated), no axis can part them. The point is the middle of the
 // edge's part within the three slabs |x_j| <= through[j], checked where it
-// is worked out. Only for an edge whose ends are within b->reach of the
-// centre along each axis, so that its ends' coordinates (and the sums
-// that test an axis) are rounded by far less than the margin: 1024
-// roundings of |c| + h, where the ends are within 3.5 (h0 + h1 + h2) of c.
+// is worked out. Only for an edge
+// whose ends are within b->reach of the centre along each axis (the
+// caller checks), so that its ends' coordinates (and the sums that test an
+// axis) are rounded by far less than the margin: 1024 roundings of
+// |c| + h, where the ends are within 3.5 (h0 + h1 + h2) of c.
 static int edge_through(const box_pair *b, const dReal a[3], const dReal e[3])
 {
-    dReal d[3], s0 = 0, s1 = 1;
-    for (int j = 0; j < 3; j++) {
-        if (!(dFabs(a[j]) <= b->reach && dFabs(e[j]) <= b->reach)) return 0;
-        d[j] = e[j] - a[j];
-    }
+    dReal d[3] = { e[0] - a[0], e[1] - a[1], e[2] - a[2] }, s0 = 0, s1 = 1;
     for (int j = 0; j < 3; j++) {
         dReal w = b->through[j];
         if (d[j] == 0) {
@@ -502,12 +499,19 @@ static int box_separated(const box_pair *b, const dxTri *t, const dReal c[3], dR
     // L, within the box's interval by at least the margin times |L| (the
     // box's |L . a_j| sum to at least |L|), far beyond the rounding of the
     // sums below: no edge pair can separate, and they are not worked out.
-    const dReal *in = b->inner;
-    for (int i = 0; i < 3; i++)
-        if (dFabs(p[i][0]) <= in[0] && dFabs(p[i][1]) <= in[1] && dFabs(p[i][2]) <= in[2])
-            return 0;
-    for (int k = 0; k < 3; k++)
-        if (edge_through(b, p[k], p[(k + 1) % 3])) return 0;
+    // Bit i of near: vertex i is within b->reach of the centre along each
+    // axis (an end edge_through takes).
+    const dReal *in = b->inner, reach = b->reach;
+    unsigned near = 0;
+    for (int i = 0; i < 3; i++) {
+        dReal x = dFabs(p[i][0]), y = dFabs(p[i][1]), z = dFabs(p[i][2]);
+        if (x <= in[0] && y <= in[1] && z <= in[2]) return 0;
+        near |= (unsigned)(x <= reach && y <= reach && z <= reach) << i;
+    }
+    for (int k = 0; k < 3; k++) {
+        int k1 = k < 2 ? k + 1 : 0;
+        if ((near >> k & near >> k1 & 1) && edge_through(b, p[k], p[k1])) return 0;
+    }
     for (int k = 0; k < 3; k++) {
         dReal e[3], L[3];
         sub3(e, t->v[(k + 1) % 3], t->v[k]);
