@@ -309,19 +309,17 @@ static void swap_raw(dxTriMeshRaw *r, int a, int b)
     r[b] = t;
 }
 
-// Twice the area by which the triangle (a, b, c) (normal direction N) grows
-// if it takes in p.
-static dReal hull_growth(const dReal *a, const dReal *b, const dReal *c, const dReal N[3],
+// Twice the area by which the triangle with corners x[k] and edges
+// e[k] = x[k + 1] - x[k] (normal direction N) grows if it takes in p.
+static dReal hull_growth(const dReal *const x[3], const dReal e[3][3], const dReal N[3],
                          const dReal *p)
 {
-    const dReal *v[3] = { a, b, c };
     dReal growth = 0;
     for (int k = 0; k < 3; k++) {
-        const dReal *x = v[k], *y = v[(k + 1) % 3];
-        dReal e[3] = { y[0] - x[0], y[1] - x[1], y[2] - x[2] };
-        dReal d[3] = { p[0] - x[0], p[1] - x[1], p[2] - x[2] };
-        dReal cr[3] = { e[1] * d[2] - e[2] * d[1], e[2] * d[0] - e[0] * d[2],
-                        e[0] * d[1] - e[1] * d[0] };
+        const dReal *xk = x[k], *ek = e[k];
+        dReal d[3] = { p[0] - xk[0], p[1] - xk[1], p[2] - xk[2] };
+        dReal cr[3] = { ek[1] * d[2] - ek[2] * d[1], ek[2] * d[0] - ek[0] * d[2],
+                        ek[0] * d[1] - ek[1] * d[0] };
         dReal s = dx_dot(cr, N);
         if (s < 0) growth -= s;
     }
@@ -339,7 +337,8 @@ static void select_spread(dxTriMeshRaw *r, dReal *near, int n, int keep)
     for (int i = 1; i < n; i++)
         if (r[i].depth > r[best].depth) best = i;
     swap_raw(r, 0, best);
-    dReal N[3] = { 0, 0, 0 };
+    dReal N[3] = { 0, 0, 0 }, e[3][3] = { { 0 } };   // e: the edges of the first three kept
+    const dReal *x[3] = { r[0].pos, r[1].pos, r[2].pos };
     int have_near = 0;
     for (int k = 1; k < keep; k++) {
         int by_near = k >= 3 && !(k == 3 && dx_dot(N, N) > 0);
@@ -350,6 +349,13 @@ static void select_spread(dxTriMeshRaw *r, dReal *near, int n, int keep)
             }
             have_near = 1;
         }
+        if (k == 2)
+            for (int j = 0; j < 3; j++) e[0][j] = r[1].pos[j] - r[0].pos[j];
+        if (k == 3 && !by_near)
+            for (int j = 0; j < 3; j++) {
+                e[1][j] = r[2].pos[j] - r[1].pos[j];
+                e[2][j] = r[0].pos[j] - r[2].pos[j];
+            }
         dReal score_best = -1;
         best = k;
         for (int i = k; i < n; i++) {
@@ -357,17 +363,14 @@ static void select_spread(dxTriMeshRaw *r, dReal *near, int n, int keep)
             if (k == 1) {
                 score = dist2(r[i].pos, r[0].pos);
             } else if (k == 2) {
-                dReal e[3], d[3], cr[3];
-                for (int j = 0; j < 3; j++) {
-                    e[j] = r[1].pos[j] - r[0].pos[j];
-                    d[j] = r[i].pos[j] - r[0].pos[j];
-                }
-                cr[0] = e[1] * d[2] - e[2] * d[1];
-                cr[1] = e[2] * d[0] - e[0] * d[2];
-                cr[2] = e[0] * d[1] - e[1] * d[0];
+                dReal d[3], cr[3];
+                for (int j = 0; j < 3; j++) d[j] = r[i].pos[j] - r[0].pos[j];
+                cr[0] = e[0][1] * d[2] - e[0][2] * d[1];
+                cr[1] = e[0][2] * d[0] - e[0][0] * d[2];
+                cr[2] = e[0][0] * d[1] - e[0][1] * d[0];
                 score = dx_dot(cr, cr);
             } else if (!by_near) {
-                score = hull_growth(r[0].pos, r[1].pos, r[2].pos, N, r[i].pos);
+                score = hull_growth(x, e, N, r[i].pos);
             } else {
                 score = near[i];
             }
@@ -384,14 +387,11 @@ static void select_spread(dxTriMeshRaw *r, dReal *near, int n, int keep)
             for (int i = k + 1; i < n; i++) near[i] = dMin(near[i], dist2(r[i].pos, r[k].pos));
         }
         if (k == 2) {
-            dReal e[3], d[3];
-            for (int j = 0; j < 3; j++) {
-                e[j] = r[1].pos[j] - r[0].pos[j];
-                d[j] = r[2].pos[j] - r[0].pos[j];
-            }
-            N[0] = e[1] * d[2] - e[2] * d[1];
-            N[1] = e[2] * d[0] - e[0] * d[2];
-            N[2] = e[0] * d[1] - e[1] * d[0];
+            dReal d[3];
+            for (int j = 0; j < 3; j++) d[j] = r[2].pos[j] - r[0].pos[j];
+            N[0] = e[0][1] * d[2] - e[0][2] * d[1];
+            N[1] = e[0][2] * d[0] - e[0][0] * d[2];
+            N[2] = e[0][0] * d[1] - e[0][1] * d[0];
         }
     }
 }
