@@ -409,6 +409,40 @@ static int separates_box(const dxTri *t, const dReal L[3], const dReal c[3],
     return hi < bc - br || lo > bc + br;
 }
 
+#if defined(__SSE2__) && !defined(dSINGLE)
+// separates_box for the axes e x ax[0] and e x ax[1] side by side (SSE2):
+// whether either separates, from the same sums (dMin(x, y) is
+// _mm_min_pd(x, y) and dMax(x, y) _mm_max_pd(y, x), NaN included).
+static int separates_box01(const box_pair *b, const dxTri *t, const dReal e[3],
+                           const dReal c[3])
+{
+    const __m128d a0 = _mm_loadu_pd(b->ax01[0]), a1 = _mm_loadu_pd(b->ax01[1]),
+                  a2 = _mm_loadu_pd(b->ax01[2]);
+    const __m128d e0 = _mm_set1_pd(e[0]), e1 = _mm_set1_pd(e[1]), e2 = _mm_set1_pd(e[2]);
+    // L = e x ax_j, component by component as cross3.
+    const __m128d l0 = _mm_sub_pd(_mm_mul_pd(e1, a2), _mm_mul_pd(e2, a1));
+    const __m128d l1 = _mm_sub_pd(_mm_mul_pd(e2, a0), _mm_mul_pd(e0, a2));
+    const __m128d l2 = _mm_sub_pd(_mm_mul_pd(e0, a1), _mm_mul_pd(e1, a0));
+#define DOT_L(x)                                                                           \
+    _mm_add_pd(_mm_add_pd(_mm_mul_pd(l0, _mm_set1_pd((x)[0])), _mm_mul_pd(l1, _mm_set1_pd((x)[1]))), \
+               _mm_mul_pd(l2, _mm_set1_pd((x)[2])))
+    const __m128d len2 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(l0, l0), _mm_mul_pd(l1, l1)),
+                                    _mm_mul_pd(l2, l2));
+    const __m128d live = _mm_cmpgt_pd(len2, _mm_set1_pd(DX_COLLIDE_EPS * DX_COLLIDE_EPS));
+    const __m128d bc = DOT_L(c), t0 = DOT_L(t->v[0]), t1 = DOT_L(t->v[1]), t2 = DOT_L(t->v[2]);
+    const __m128d lo = _mm_min_pd(t0, _mm_min_pd(t1, t2));
+    const __m128d hi = _mm_max_pd(_mm_max_pd(t2, t1), t0);
+    const __m128d sign = _mm_set1_pd(-0.0);
+    __m128d br = _mm_mul_pd(_mm_set1_pd(b->h[0]), _mm_andnot_pd(sign, DOT_L(b->ax[0])));
+    br = _mm_add_pd(br, _mm_mul_pd(_mm_set1_pd(b->h[1]), _mm_andnot_pd(sign, DOT_L(b->ax[1]))));
+    br = _mm_add_pd(br, _mm_mul_pd(_mm_set1_pd(b->h[2]), _mm_andnot_pd(sign, DOT_L(b->ax[2]))));
+#undef DOT_L
+    const __m128d apart = _mm_or_pd(_mm_cmplt_pd(hi, _mm_sub_pd(bc, br)),
+                                    _mm_cmpgt_pd(lo, _mm_add_pd(bc, br)));
+    return _mm_movemask_pd(_mm_and_pd(live, apart)) != 0;
+}
+#endif
+
 // Whether the triangle's edge from a to e (box frame) has a point inside
 // the box by more than the margin b->through: then, as for a vertex inside
 // (box_separated), no axis can part them. The point is the middle of the
@@ -515,10 +549,16 @@ static int box_separated(const box_pair *b, const dxTri *t, const dReal c[3], dR
     for (int k = 0; k < 3; k++) {
         dReal e[3], L[3];
         sub3(e, t->v[(k + 1) % 3], t->v[k]);
+#if defined(__SSE2__) && !defined(dSINGLE)
+        if (separates_box01(b, t, e, c)) return 1;
+        cross3(L, e, b->ax[2]);
+        if (separates_box(t, L, c, b->ax, h)) return 1;
+#else
         for (int j = 0; j < 3; j++) {
             cross3(L, e, b->ax[j]);
             if (separates_box(t, L, c, b->ax, h)) return 1;
         }
+#endif
     }
     return 0;
 }
