@@ -424,7 +424,8 @@ static int separates_box01(const box_pair *b, const dxTri *t, const dReal e[3],
     const __m128d l1 = _mm_sub_pd(_mm_mul_pd(e2, a0), _mm_mul_pd(e0, a2));
     const __m128d l2 = _mm_sub_pd(_mm_mul_pd(e0, a1), _mm_mul_pd(e1, a0));
 #define DOT_L(x)                                                                           \
-    _mm_add_pd(_mm_add_pd(_mm_mul_pd(l0, _mm_set1_pd((x)[0])), _mm_mul_pd(l1, _mm_set1_pd((x)[1]))), \
+    _mm_add_pd(_mm_add_pd(_mm_mul_pd(l0, _mm_set1_pd((x)[0])),                              \
+                          _mm_mul_pd(l1, _mm_set1_pd((x)[1]))),                             \
                _mm_mul_pd(l2, _mm_set1_pd((x)[2])))
     const __m128d len2 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(l0, l0), _mm_mul_pd(l1, l1)),
                                     _mm_mul_pd(l2, l2));
@@ -447,11 +448,11 @@ static int separates_box01(const box_pair *b, const dxTri *t, const dReal e[3],
 // the box by more than the margin b->through: then, as for a vertex inside
 // (box_separated), no axis can part them. The point is the middle of the
 // edge's part within the three slabs |x_j| <= through[j], checked where it
-// is worked out. Only for an edge
-// whose ends are within b->reach of the centre along each axis (the
-// caller checks), so that its ends' coordinates (and the sums that test an
-// axis) are rounded by far less than the margin: 1024 roundings of
-// |c| + h, where the ends are within 3.5 (h0 + h1 + h2) of c.
+// is worked out. Only for an edge whose ends are within b->reach of the
+// centre along each axis (the caller checks), so that its ends'
+// coordinates (and the sums that test an axis) are rounded by far less
+// than the margin: 1024 roundings of |c| + h, where the ends are within
+// 3.5 (h0 + h1 + h2) of c.
 static int edge_through(const box_pair *b, const dReal a[3], const dReal e[3])
 {
     dReal d[3] = { e[0] - a[0], e[1] - a[1], e[2] - a[2] }, s0 = 0, s1 = 1;
