@@ -354,9 +354,137 @@ static int test_box_crossed_by_an_edge(void)
     return 0;
 }
 
+// The distance of p's projection on the triangle's plane inside edge k's
+// line (negative: beyond it).
+static double inside_edge(double v[3][3], const double nrm[3], const double p[3], int k)
+{
+    double e[3], m[3], d[3];
+    for (int i = 0; i < 3; i++) {
+        e[i] = v[(k + 1) % 3][i] - v[k][i];
+        d[i] = p[i] - v[k][i];
+    }
+    cross3(m, nrm, e);
+    return dot3(m, d) / sqrt(dot3(m, m));
+}
+
+// A box whose part behind the triangle's plane (its corners there and the
+// points where its edges cross the plane, every corner off the plane by
+// more than a margin) lies over the triangle: its contacts are corners
+// behind the plane, each at most once, as deep as they are below it; with
+// up to three such corners (their shadows a triangle at most: corners of
+// the patch) every one of them. A box whose part behind the plane lies
+// beyond one of the triangle's edges has none. (The collider leaves out
+// the clips that can only make points above the plane, and every clip of
+// such a box's faces: these are the cases it must still get right.) Both
+// argument orders.
+static int test_box_low_part(void)
+{
+    srand(14);
+    const double margin = TOL(1e-6, 2e-3);
+    int over = 0, beyond = 0;
+    for (int round = 0; round < 12000; round++) {
+        double h[3], ax[3][3], c[3], v[3][3], nrm[3];
+        dGeomID box = random_box(h, ax, c);
+        // A large triangle under the box: its plane through a point of
+        // the box, so that some corners are behind it.
+        double x[3];
+        point_in_box(c, ax, h, urand(0.01, 1), x);
+        double size = h[0] + h[1] + h[2], spread = urand(0.5, 6) * size;
+        for (int k = 0; k < 3; k++)
+            for (int i = 0; i < 3; i++) v[k][i] = x[i] + urand(-spread, spread);
+        if (!front_normal(v, c, margin, nrm)) {
+            dGeomDestroy(box);
+            continue;
+        }
+        // The corners, their heights; the part behind the plane.
+        double corner[8][3], ch[8], part[8 + 12][3];
+        int low = 0, parts = 0, on_plane = 0;
+        for (int a = 0; a < 8; a++) {
+            for (int i = 0; i < 3; i++)
+                corner[a][i] = c[i] + (a & 1 ? h[0] : -h[0]) * ax[0][i] +
+                               (a & 2 ? h[1] : -h[1]) * ax[1][i] +
+                               (a & 4 ? h[2] : -h[2]) * ax[2][i];
+            ch[a] = dot3(nrm, corner[a]) - dot3(nrm, v[0]);
+            on_plane |= fabs(ch[a]) <= margin;
+            if (ch[a] < 0) {
+                low++;
+                for (int i = 0; i < 3; i++) part[parts][i] = corner[a][i];
+                parts++;
+            }
+        }
+        for (int a = 0; a < 8; a++)
+            for (int j = 0; j < 3; j++) {
+                int b = a | 1 << j;   // the edge from a along axis j
+                if (b == a || (ch[a] < 0) == (ch[b] < 0)) continue;
+                double s = ch[a] / (ch[a] - ch[b]);
+                for (int i = 0; i < 3; i++)
+                    part[parts][i] = corner[a][i] + s * (corner[b][i] - corner[a][i]);
+                parts++;
+            }
+        if (on_plane || low == 0) {
+            dGeomDestroy(box);
+            continue;
+        }
+        int all_over = 1, away = 0;
+        for (int p = 0; p < parts; p++) all_over &= over_triangle(v, nrm, part[p], margin);
+        for (int k = 0; k < 3; k++) {
+            int all_beyond = 1;
+            for (int p = 0; p < parts; p++) all_beyond &= inside_edge(v, nrm, part[p], k) < -margin;
+            away |= all_beyond;
+        }
+        if (all_over || away) {
+            dReal fv[9];
+            for (int k = 0; k < 9; k++) fv[k] = (dReal)v[k / 3][k % 3];
+            static const dTriIndex idx[3] = { 0, 1, 2 };
+            dTriMeshDataID data = dGeomTriMeshDataCreate();
+#ifdef dDOUBLE
+            dGeomTriMeshDataBuildDouble(data, fv, 3 * sizeof(dReal), 3, idx, 3,
+                                        3 * sizeof(dTriIndex));
+#else
+            dGeomTriMeshDataBuildSingle(data, fv, 3 * sizeof(dReal), 3, idx, 3,
+                                        3 * sizeof(dTriIndex));
+#endif
+            dGeomID mesh = dCreateTriMesh(0, data, 0, 0, 0);
+            dContactGeom k[16], kr[16];
+            int n = dCollide(mesh, box, 16, k, sizeof k[0]);
+            int nr = dCollide(box, mesh, 16, kr, sizeof kr[0]);
+            CHECK(nr == n);
+            if (away) {
+                CHECK(n == 0);
+                beyond++;
+            } else {
+                CHECK(n >= 1 && n <= low);
+                if (low <= 3) CHECK(n == low);
+                unsigned met = 0;
+                for (int j = 0; j < n; j++) {
+                    int at = -1;   // the corner behind the plane at this contact
+                    for (int a = 0; a < 8; a++) {
+                        double d[3];
+                        for (int i = 0; i < 3; i++) d[i] = k[j].pos[i] - corner[a][i];
+                        if (ch[a] < 0 && sqrt(dot3(d, d)) <= TOL(1e-9, 1e-4)) at = a;
+                    }
+                    CHECK(at >= 0 && !(met >> at & 1));
+                    met |= 1u << at;
+                    CHECK_NEAR(k[j].depth, -ch[at], TOL(1e-9, 1e-4));
+                    CHECK_VEC(k[j].normal, -nrm[0], -nrm[1], -nrm[2], TOL(1e-9, 1e-4));
+                    CHECK(kr[j].depth == k[j].depth);
+                    CHECK_VEC(kr[j].pos, k[j].pos[0], k[j].pos[1], k[j].pos[2], 0);
+                }
+                over++;
+            }
+            dGeomDestroy(mesh);
+            dGeomTriMeshDataDestroy(data);
+        }
+        dGeomDestroy(box);
+    }
+    CHECK(over > 300 && beyond > 300);
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_box_against_one_triangle),
     TEST_CASE(test_box_holding_a_vertex),
     TEST_CASE(test_box_crossed_by_an_edge),
+    TEST_CASE(test_box_low_part),
     TEST_END,
 };

@@ -309,19 +309,17 @@ static void swap_raw(dxTriMeshRaw *r, int a, int b)
     r[b] = t;
 }
 
-// Twice the area by which the triangle (a, b, c) (normal direction N) grows
-// if it takes in p.
-static dReal hull_growth(const dReal *a, const dReal *b, const dReal *c, const dReal N[3],
+// Twice the area by which the triangle with corners x[k] and edges
+// e[k] = x[k + 1] - x[k] (normal direction N) grows if it takes in p.
+static dReal hull_growth(const dReal *const x[3], const dReal e[3][3], const dReal N[3],
                          const dReal *p)
 {
-    const dReal *v[3] = { a, b, c };
     dReal growth = 0;
     for (int k = 0; k < 3; k++) {
-        const dReal *x = v[k], *y = v[(k + 1) % 3];
-        dReal e[3] = { y[0] - x[0], y[1] - x[1], y[2] - x[2] };
-        dReal d[3] = { p[0] - x[0], p[1] - x[1], p[2] - x[2] };
-        dReal cr[3] = { e[1] * d[2] - e[2] * d[1], e[2] * d[0] - e[0] * d[2],
-                        e[0] * d[1] - e[1] * d[0] };
+        const dReal *xk = x[k], *ek = e[k];
+        dReal d[3] = { p[0] - xk[0], p[1] - xk[1], p[2] - xk[2] };
+        dReal cr[3] = { ek[1] * d[2] - ek[2] * d[1], ek[2] * d[0] - ek[0] * d[2],
+                        ek[0] * d[1] - ek[1] * d[0] };
         dReal s = dx_dot(cr, N);
         if (s < 0) growth -= s;
     }
@@ -339,7 +337,8 @@ static void select_spread(dxTriMeshRaw *r, dReal *near, int n, int keep)
     for (int i = 1; i < n; i++)
         if (r[i].depth > r[best].depth) best = i;
     swap_raw(r, 0, best);
-    dReal N[3] = { 0, 0, 0 };
+    dReal N[3] = { 0, 0, 0 }, e[3][3] = { { 0 } };   // e: the edges of the first three kept
+    const dReal *x[3] = { r[0].pos, r[1].pos, r[2].pos };
     int have_near = 0;
     for (int k = 1; k < keep; k++) {
         int by_near = k >= 3 && !(k == 3 && dx_dot(N, N) > 0);
@@ -350,6 +349,13 @@ static void select_spread(dxTriMeshRaw *r, dReal *near, int n, int keep)
             }
             have_near = 1;
         }
+        if (k == 2)
+            for (int j = 0; j < 3; j++) e[0][j] = r[1].pos[j] - r[0].pos[j];
+        if (k == 3 && !by_near)
+            for (int j = 0; j < 3; j++) {
+                e[1][j] = r[2].pos[j] - r[1].pos[j];
+                e[2][j] = r[0].pos[j] - r[2].pos[j];
+            }
         dReal score_best = -1;
         best = k;
         for (int i = k; i < n; i++) {
@@ -357,17 +363,14 @@ static void select_spread(dxTriMeshRaw *r, dReal *near, int n, int keep)
             if (k == 1) {
                 score = dist2(r[i].pos, r[0].pos);
             } else if (k == 2) {
-                dReal e[3], d[3], cr[3];
-                for (int j = 0; j < 3; j++) {
-                    e[j] = r[1].pos[j] - r[0].pos[j];
-                    d[j] = r[i].pos[j] - r[0].pos[j];
-                }
-                cr[0] = e[1] * d[2] - e[2] * d[1];
-                cr[1] = e[2] * d[0] - e[0] * d[2];
-                cr[2] = e[0] * d[1] - e[1] * d[0];
+                dReal d[3], cr[3];
+                for (int j = 0; j < 3; j++) d[j] = r[i].pos[j] - r[0].pos[j];
+                cr[0] = e[0][1] * d[2] - e[0][2] * d[1];
+                cr[1] = e[0][2] * d[0] - e[0][0] * d[2];
+                cr[2] = e[0][0] * d[1] - e[0][1] * d[0];
                 score = dx_dot(cr, cr);
             } else if (!by_near) {
-                score = hull_growth(r[0].pos, r[1].pos, r[2].pos, N, r[i].pos);
+                score = hull_growth(x, e, N, r[i].pos);
             } else {
                 score = near[i];
             }
@@ -384,14 +387,11 @@ static void select_spread(dxTriMeshRaw *r, dReal *near, int n, int keep)
             for (int i = k + 1; i < n; i++) near[i] = dMin(near[i], dist2(r[i].pos, r[k].pos));
         }
         if (k == 2) {
-            dReal e[3], d[3];
-            for (int j = 0; j < 3; j++) {
-                e[j] = r[1].pos[j] - r[0].pos[j];
-                d[j] = r[2].pos[j] - r[0].pos[j];
-            }
-            N[0] = e[1] * d[2] - e[2] * d[1];
-            N[1] = e[2] * d[0] - e[0] * d[2];
-            N[2] = e[0] * d[1] - e[1] * d[0];
+            dReal d[3];
+            for (int j = 0; j < 3; j++) d[j] = r[2].pos[j] - r[0].pos[j];
+            N[0] = e[0][1] * d[2] - e[0][2] * d[1];
+            N[1] = e[0][2] * d[0] - e[0][0] * d[2];
+            N[2] = e[0][0] * d[1] - e[0][1] * d[0];
         }
     }
 }
@@ -718,16 +718,22 @@ void dxTriSideNormal(const dxTri *t, int k, dReal m[3])
     m[2] = t->n[0] * e[1] - t->n[1] * e[0];
 }
 
-// Keep the part of polygon p (n points, tags tp) where m . (x - o) >= -slack;
-// a point made on this boundary gets the tag `made`. Returns the new count,
-// or -1 (nothing written) if every point is kept as it is.
-static int clip_polygon(dReal p[][3], const int *tp, int n, const dReal m[3], const dReal o[3],
-                        dReal slack, int made, dReal out[][3], int *tout)
+// Keep the part of the polygon pt (n points, tags tp) where
+// m . (x - o) >= -slack, into npt and ntp: a point kept keeps its pointer
+// and tag, a point made on this boundary (into c->room) gets the tag
+// `made`. Returns the new count, or -1 (nothing written) if every point is
+// kept as it is; 0 if the result has more than DX_TRI_POLY_MAX points (a
+// polygon crossing the boundary more often than a convex one can; npt and
+// ntp have room for twice n).
+static int clip_polygon(const dReal *const *pt, const int *tp, int n, const dReal m[3],
+                        const dReal o[3], dReal slack, int made, dxTriClipped *c,
+                        const dReal **npt, int *ntp)
 {
     dReal f[DX_TRI_POLY_MAX];
     int inside = 0;
     for (int i = 0; i < n; i++) {
-        dReal d[3] = { p[i][0] - o[0], p[i][1] - o[1], p[i][2] - o[2] };
+        const dReal *x = pt[i];
+        dReal d[3] = { x[0] - o[0], x[1] - o[1], x[2] - o[2] };
         f[i] = dx_dot(m, d) + slack;
         inside += f[i] >= 0;
     }
@@ -735,19 +741,20 @@ static int clip_polygon(dReal p[][3], const int *tp, int n, const dReal m[3], co
     int k = 0;
     for (int i = 0; i < n; i++) {
         int next = i + 1 < n ? i + 1 : 0;
-        const dReal *a = p[i], *b = p[next];
         dReal fa = f[i], fb = f[next];
         if (fa >= 0) {
-            for (int j = 0; j < 3; j++) out[k][j] = a[j];
-            tout[k++] = tp[i];
+            npt[k] = pt[i];
+            ntp[k++] = tp[i];
         }
         if ((fa >= 0) != (fb >= 0)) {
-            dReal s = fa / (fa - fb);
-            for (int j = 0; j < 3; j++) out[k][j] = a[j] + s * (b[j] - a[j]);
-            tout[k++] = made;
+            const dReal *a = pt[i], *b = pt[next];
+            dReal s = fa / (fa - fb), *x = c->room[c->made_count++];
+            for (int j = 0; j < 3; j++) x[j] = a[j] + s * (b[j] - a[j]);
+            npt[k] = x;
+            ntp[k++] = made;
         }
     }
-    return k;
+    return k <= DX_TRI_POLY_MAX ? k : 0;
 }
 
 // Whether t's edge k joins two coplanar faces (an edge only of the
@@ -770,26 +777,32 @@ void dxTriPrismInit(const dxTriQuery *q, const dxTri *t, dxTriPrism *p)
     }
 }
 
-int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, dReal a[][3], int n, int *made,
-                         unsigned inside)
+int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, const dReal *const *corner,
+                         const int *made, int n, unsigned inside, dxTriClipped *c)
 {
-    // Side by side from a into b and back (the last result copied to a if
-    // it ended in b).
-    dReal b[DX_TRI_POLY_MAX][3];
-    int tb[DX_TRI_POLY_MAX], in_a = 1;
+    // Side by side from one list of pointers into the other and back.
+    const dReal *pb[2 * DX_TRI_POLY_MAX];
+    int tb[2 * DX_TRI_POLY_MAX], in_c = 0;
+    const dReal *const *pt = corner;
+    const int *tp = made;
+    c->made_count = 0;
     for (int k = 0; k < 3 && n > 0; k++) {
         if (inside & (1u << k)) continue;
-        int c = in_a ? clip_polygon(a, made, n, p->m[k], t->v[k], p->slack[k], p->made[k], b, tb)
-                     : clip_polygon(b, tb, n, p->m[k], t->v[k], p->slack[k], p->made[k], a, made);
-        if (c < 0) continue;   // unchanged
-        n = c;
-        in_a = !in_a;
+        const dReal **npt = in_c ? pb : c->pt;
+        int *ntp = in_c ? tb : c->made;
+        int m = clip_polygon(pt, tp, n, p->m[k], t->v[k], p->slack[k], p->made[k], c, npt, ntp);
+        if (m < 0) continue;   // unchanged
+        n = m;
+        pt = npt;
+        tp = ntp;
+        in_c = !in_c;
     }
-    if (!in_a)
+    if (pt != c->pt)
         for (int i = 0; i < n; i++) {
-            for (int j = 0; j < 3; j++) a[i][j] = b[i][j];
-            made[i] = tb[i];
+            c->pt[i] = pt[i];
+            c->made[i] = tp[i];
         }
+    c->n = n;
     return n;
 }
 
@@ -797,8 +810,23 @@ int dxTriClipToPrism(const dxTriQuery *q, const dxTri *t, dReal a[][3], int n, i
 {
     dxTriPrism p;
     dxTriPrismInit(q, t, &p);
-    for (int i = 0; i < n; i++) made[i] = DX_TRI_MADE_NOT;
-    return dxTriClipToPrismWith(&p, t, a, n, made, 0);
+    const dReal *corner[DX_TRI_POLY_MAX];
+    int tags[DX_TRI_POLY_MAX];
+    for (int i = 0; i < n; i++) {
+        corner[i] = a[i];
+        tags[i] = DX_TRI_MADE_NOT;
+    }
+    dxTriClipped c;
+    n = dxTriClipToPrismWith(&p, t, corner, tags, n, 0, &c);
+    // The kept corners point into a: gathered first, then written back.
+    dReal out[DX_TRI_POLY_MAX][3];
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < 3; j++) out[i][j] = c.pt[i][j];
+    for (int i = 0; i < n; i++) {
+        for (int j = 0; j < 3; j++) a[i][j] = out[i][j];
+        made[i] = c.made[i];
+    }
+    return n;
 }
 
 // ---- trimesh-plane ----------------------------------------------------------------

@@ -50,7 +50,7 @@ typedef struct dxTriScratch {
     dxTriGrid grid;
     dReal *score;      // the reduction's numbers per contact
     int score_cap;
-    dReal pair[48];   // a triangle test's per-pair values (dxTriQuery.prepared)
+    dReal pair[56];   // a triangle test's per-pair values (dxTriQuery.prepared)
 } dxTriScratch;
 
 // A free set of the calling thread's (NULL, reported, if collisions nest
@@ -175,9 +175,6 @@ void dxTriSideNormal(const dxTri *t, int k, dReal m[3]);
 // for each corner in made[] whether it was made on a side of the prism, at
 // an edge between coplanar faces (then a corner of the triangulation only,
 // not of a contact patch; never if q->data is NULL) or another edge.
-// dxTriClipToPrismWith takes made[] in and out: on entry the n corners'
-// tags (DX_TRI_MADE_NOT, or DX_TRI_MADE_CORNER + i to follow corner i:
-// a corner kept keeps its tag and its coordinates' bits).
 enum { DX_TRI_POLY_MAX = 36 };
 enum { DX_TRI_MADE_NOT, DX_TRI_MADE_AT_EDGE, DX_TRI_MADE_AT_FLAT_EDGE, DX_TRI_MADE_CORNER };
 int dxTriClipToPrism(const dxTriQuery *q, const dxTri *t, dReal a[][3], int n, int *made);
@@ -191,11 +188,25 @@ typedef struct dxTriPrism {
     int made[3];
 } dxTriPrism;
 void dxTriPrismInit(const dxTriQuery *q, const dxTri *t, dxTriPrism *p);
-// dxTriClipToPrism with the prism made by dxTriPrismInit(q, t, p) and the
-// corners' tags given in made[]; the sides k with bit k of `inside` set
-// are known to keep every point (a polygon within them by more than
-// rounding) and are not clipped against.
-int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, dReal a[][3], int n, int *made,
-                         unsigned inside);
+
+// A clip's result: its n corners as pointers (to the polygon's own
+// corners, which keep their bits, or to the points the clip made, in
+// room; pt and made have room for a clip's working list) with their tags
+// (as dxTriClipToPrism's made[], or the tag a corner was given).
+typedef struct dxTriClipped {
+    int n, made_count;
+    const dReal *pt[2 * DX_TRI_POLY_MAX];
+    int made[2 * DX_TRI_POLY_MAX];
+    dReal room[3 * DX_TRI_POLY_MAX][3];   // at most n points made by each of three clips
+} dxTriClipped;
+// dxTriClipToPrism with the prism made by dxTriPrismInit(q, t, p), the n
+// corners given as pointers with their tags (DX_TRI_MADE_NOT, or
+// DX_TRI_MADE_CORNER + i to follow corner i: a corner kept keeps its tag
+// and its bits), the result into c (nothing copied but the points made);
+// the sides k with bit k of `inside` set are known to keep every point (a
+// polygon within them by more than rounding) and are not clipped against.
+// Returns c->n.
+int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, const dReal *const *corner,
+                         const int *made, int n, unsigned inside, dxTriClipped *c);
 
 #endif

@@ -26,6 +26,10 @@
 
 #include <float.h>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "collide_trimesh.h"
 #include "../../libodecollide/geom_convex.h"
 
@@ -294,43 +298,45 @@ static int separates_cylinder(const dxTri *t, const dReal L[3], const dReal c[3]
 // gains at most three).
 enum { CYL_SIDES = 32, POLY_MAX = DX_TRI_POLY_MAX };
 
-// One face (polygon a, n corners, at least one of them on or behind the
-// triangle's plane) of a convex solid against triangle t (prism p):
-// clipped to the triangle's prism (widened by rounding), its points on or
-// behind the triangle's plane are contacts with the face normal and their
-// depth below the plane (where the face crosses the plane the depth is zero
-// and adds nothing). Points made on the prism's side at a flat edge are
-// left out: they are corners of the triangulation, not of the contact
-// patch (the corners of the solid over the neighbour come from it).
-// made[]: the corners' tags (dxTriClipToPrismWith); with `seen`, a corner
-// tagged DX_TRI_MADE_CORNER + v that bit v of *seen says was added already
-// (by another face of the solid, against the same triangle: the same
-// point, depth and normal to the bit) is not added again, and a corner
-// added sets its bit. Returns 1 if any was added.
+// One face (n corners, pointers to them in corner[], at least one of them
+// on or behind the triangle's plane) of a convex solid against triangle t
+// (prism p): clipped to the triangle's prism (widened by rounding), its
+// points on or behind the triangle's plane are contacts with the face
+// normal and their depth below the plane (where the face crosses the plane
+// the depth is zero and adds nothing). Points made on the prism's side at
+// a flat edge are left out: they are corners of the triangulation, not of
+// the contact patch (the corners of the solid over the neighbour come from
+// it). made[]: the corners' tags (dxTriClipToPrismWith); with `seen`, a
+// corner tagged DX_TRI_MADE_CORNER + v that bit v of *seen says was added
+// already (by another face of the solid, against the same triangle: the
+// same point, depth and normal to the bit) is not added again, and a
+// corner added sets its bit. Returns 1 if any was added.
 static int clipped_face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p,
-                                 dReal a[][3], int n, int *made, unsigned inside,
-                                 unsigned *seen)
+                                 const dReal *const *corner, const int *made, int n,
+                                 unsigned inside, unsigned *seen)
 {
     dReal eps = DX_COLLIDE_EPS * q->scale;
-    n = dxTriClipToPrismWith(p, t, a, n, made, inside);
+    dxTriClipped c;
+    n = dxTriClipToPrismWith(p, t, corner, made, n, inside, &c);
     int added = 0;
     for (int i = 0; i < n; i++) {
         unsigned bit = 0;
-        if (seen && made[i] >= DX_TRI_MADE_CORNER) {
-            bit = 1u << (made[i] - DX_TRI_MADE_CORNER);
+        int tag = c.made[i];
+        if (seen && tag >= DX_TRI_MADE_CORNER) {
+            bit = 1u << (tag - DX_TRI_MADE_CORNER);
             if (*seen & bit) continue;
         }
-        dReal depth = -height(t, a[i]);
-        if (depth < -eps || made[i] == DX_TRI_MADE_AT_FLAT_EDGE) continue;
+        dReal depth = -height(t, c.pt[i]);
+        if (depth < -eps || tag == DX_TRI_MADE_AT_FLAT_EDGE) continue;
         if (seen) *seen |= bit;
-        dxTriAdd(q, a[i], t->n, dMax(depth, 0), t->index);
+        dxTriAdd(q, c.pt[i], t->n, dMax(depth, 0), t->index);
         added = 1;
     }
     return added;
 }
 
-// The same for any face: one wholly in front of the plane adds nothing
-// (clipping keeps points within the polygon), so it is not clipped.
+// The same for any face (polygon a): one wholly in front of the plane adds
+// nothing (clipping keeps points within the polygon), so it is not clipped.
 static int face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p, dReal a[][3],
                          int n)
 {
@@ -338,9 +344,13 @@ static int face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p, dRe
     int behind = 0;
     for (int i = 0; i < n && !behind; i++) behind = height(t, a[i]) <= eps;
     if (!behind) return 0;
+    const dReal *corner[POLY_MAX];
     int made[POLY_MAX];
-    for (int i = 0; i < n; i++) made[i] = DX_TRI_MADE_NOT;
-    return clipped_face_contacts(q, t, p, a, n, made, 0, NULL);
+    for (int i = 0; i < n; i++) {
+        corner[i] = a[i];
+        made[i] = DX_TRI_MADE_NOT;
+    }
+    return clipped_face_contacts(q, t, p, corner, made, n, 0, NULL);
 }
 
 // A box's values for a pair, worked out on its first triangle (in q->s->pair):
@@ -348,9 +358,10 @@ static int face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p, dRe
 // axis j); inner[j]: h[j] less the margin within which a point counts as
 // inside the box whatever the rounding (box_separated); through[j] the
 // same with a wider margin, for a point of a triangle's edge whose ends are
-// at most `reach` from the centre along each axis.
+// at most `reach` from the centre along each axis. ax01[k]: component k of
+// axes 0 and 1 side by side.
 typedef struct box_pair {
-    dReal ax[3][3], h[3], corner[8][3], inner[3], through[3], reach;
+    dReal ax[3][3], h[3], corner[8][3], inner[3], through[3], reach, ax01[3][2];
 } box_pair;
 _Static_assert(sizeof(box_pair) <= sizeof(((dxTriScratch *)0)->pair), "box_pair fits");
 
@@ -362,6 +373,10 @@ static const box_pair *prepare_box(dxTriQuery *q)
     for (int j = 0; j < 3; j++) {
         b->h[j] = side[j] / 2;
         dx_axis(q->R, j, b->ax[j]);
+    }
+    for (int k = 0; k < 3; k++) {
+        b->ax01[k][0] = b->ax[0][k];
+        b->ax01[k][1] = b->ax[1][k];
     }
     const dReal *h = b->h;
     // The margin: 128 roundings of the largest number in the edge pairs
@@ -394,21 +409,53 @@ static int separates_box(const dxTri *t, const dReal L[3], const dReal c[3],
     return hi < bc - br || lo > bc + br;
 }
 
-// Whether the triangle's edge from a to b (box frame) has a point inside
+#if defined(__SSE2__) && !defined(dSINGLE)
+// separates_box for the axes e x ax[0] and e x ax[1] side by side (SSE2):
+// whether either separates, from the same sums (dMin(x, y) is
+// _mm_min_pd(x, y) and dMax(x, y) _mm_max_pd(y, x), NaN included).
+static int separates_box01(const box_pair *b, const dxTri *t, const dReal e[3],
+                           const dReal c[3])
+{
+    const __m128d a0 = _mm_loadu_pd(b->ax01[0]), a1 = _mm_loadu_pd(b->ax01[1]),
+                  a2 = _mm_loadu_pd(b->ax01[2]);
+    const __m128d e0 = _mm_set1_pd(e[0]), e1 = _mm_set1_pd(e[1]), e2 = _mm_set1_pd(e[2]);
+    // L = e x ax_j, component by component as cross3.
+    const __m128d l0 = _mm_sub_pd(_mm_mul_pd(e1, a2), _mm_mul_pd(e2, a1));
+    const __m128d l1 = _mm_sub_pd(_mm_mul_pd(e2, a0), _mm_mul_pd(e0, a2));
+    const __m128d l2 = _mm_sub_pd(_mm_mul_pd(e0, a1), _mm_mul_pd(e1, a0));
+#define DOT_L(x)                                                                           \
+    _mm_add_pd(_mm_add_pd(_mm_mul_pd(l0, _mm_set1_pd((x)[0])),                              \
+                          _mm_mul_pd(l1, _mm_set1_pd((x)[1]))),                             \
+               _mm_mul_pd(l2, _mm_set1_pd((x)[2])))
+    const __m128d len2 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(l0, l0), _mm_mul_pd(l1, l1)),
+                                    _mm_mul_pd(l2, l2));
+    const __m128d live = _mm_cmpgt_pd(len2, _mm_set1_pd(DX_COLLIDE_EPS * DX_COLLIDE_EPS));
+    const __m128d bc = DOT_L(c), t0 = DOT_L(t->v[0]), t1 = DOT_L(t->v[1]), t2 = DOT_L(t->v[2]);
+    const __m128d lo = _mm_min_pd(t0, _mm_min_pd(t1, t2));
+    const __m128d hi = _mm_max_pd(_mm_max_pd(t2, t1), t0);
+    const __m128d sign = _mm_set1_pd(-0.0);
+    __m128d br = _mm_mul_pd(_mm_set1_pd(b->h[0]), _mm_andnot_pd(sign, DOT_L(b->ax[0])));
+    br = _mm_add_pd(br, _mm_mul_pd(_mm_set1_pd(b->h[1]), _mm_andnot_pd(sign, DOT_L(b->ax[1]))));
+    br = _mm_add_pd(br, _mm_mul_pd(_mm_set1_pd(b->h[2]), _mm_andnot_pd(sign, DOT_L(b->ax[2]))));
+#undef DOT_L
+    const __m128d apart = _mm_or_pd(_mm_cmplt_pd(hi, _mm_sub_pd(bc, br)),
+                                    _mm_cmpgt_pd(lo, _mm_add_pd(bc, br)));
+    return _mm_movemask_pd(_mm_and_pd(live, apart)) != 0;
+}
+#endif
+
+// Whether the triangle's edge from a to e (box frame) has a point inside
 // the box by more than the margin b->through: then, as for a vertex inside
 // (box_separated), no axis can part them. The point is the middle of the
 // edge's part within the three slabs |x_j| <= through[j], checked where it
 // is worked out. Only for an edge whose ends are within b->reach of the
-// centre along each axis, so that its ends' coordinates (and the sums
-// that test an axis) are rounded by far less than the margin: 1024
-// roundings of |c| + h, where the ends are within 3.5 (h0 + h1 + h2) of c.
+// centre along each axis (the caller checks), so that its ends'
+// coordinates (and the sums that test an axis) are rounded by far less
+// than the margin: 1024 roundings of |c| + h, where the ends are within
+// 3.5 (h0 + h1 + h2) of c.
 static int edge_through(const box_pair *b, const dReal a[3], const dReal e[3])
 {
-    dReal d[3], s0 = 0, s1 = 1;
-    for (int j = 0; j < 3; j++) {
-        if (!(dFabs(a[j]) <= b->reach && dFabs(e[j]) <= b->reach)) return 0;
-        d[j] = e[j] - a[j];
-    }
+    dReal d[3] = { e[0] - a[0], e[1] - a[1], e[2] - a[2] }, s0 = 0, s1 = 1;
     for (int j = 0; j < 3; j++) {
         dReal w = b->through[j];
         if (d[j] == 0) {
@@ -440,9 +487,39 @@ static int box_separated(const box_pair *b, const dxTri *t, const dReal c[3], dR
                          dReal nb[3])
 {
     const dReal *h = b->h;
+    dReal p[3][3];   // vertex i's coordinate j
+#if defined(__SSE2__) && !defined(dSINGLE)
+    // Axes 0 and 1 side by side, axis 2 alone: the same sums. dMax(x, y)
+    // is _mm_max_pd(y, x) and dMin(x, y) _mm_min_pd(x, y), NaN included
+    // (they differ only in the sign of a zero, which no comparison sees).
+    const __m128d a0 = _mm_loadu_pd(b->ax01[0]), a1 = _mm_loadu_pd(b->ax01[1]),
+                  a2 = _mm_loadu_pd(b->ax01[2]);
+    const __m128d n01 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(_mm_set1_pd(t->n[0]), a0),
+                                              _mm_mul_pd(_mm_set1_pd(t->n[1]), a1)),
+                                   _mm_mul_pd(_mm_set1_pd(t->n[2]), a2));
+    _mm_storeu_pd(nb, n01);
+    nb[2] = dx_dot(t->n, b->ax[2]);
+    if (hc > h[0] * dFabs(nb[0]) + h[1] * dFabs(nb[1]) + h[2] * dFabs(nb[2])) return 1;
+    __m128d p01[3];
+    for (int i = 0; i < 3; i++) {
+        dReal d[3];
+        sub3(d, t->v[i], c);
+        p01[i] = _mm_add_pd(_mm_add_pd(_mm_mul_pd(a0, _mm_set1_pd(d[0])),
+                                       _mm_mul_pd(a1, _mm_set1_pd(d[1]))),
+                            _mm_mul_pd(a2, _mm_set1_pd(d[2])));
+        _mm_storeu_pd(p[i], p01[i]);
+        p[i][2] = dx_dot(b->ax[2], d);
+    }
+    const __m128d hi01 = _mm_loadu_pd(h), lo01 = _mm_sub_pd(_mm_setzero_pd(), hi01);
+    const __m128d mx = _mm_max_pd(_mm_max_pd(p01[2], p01[1]), p01[0]);
+    const __m128d mn = _mm_min_pd(p01[0], _mm_min_pd(p01[1], p01[2]));
+    if (_mm_movemask_pd(_mm_or_pd(_mm_cmplt_pd(mx, lo01), _mm_cmpgt_pd(mn, hi01))) ||
+        dMax(p[0][2], dMax(p[1][2], p[2][2])) < -h[2] ||
+        dMin(p[0][2], dMin(p[1][2], p[2][2])) > h[2])
+        return 1;
+#else
     for (int j = 0; j < 3; j++) nb[j] = dx_dot(t->n, b->ax[j]);
     if (hc > h[0] * dFabs(nb[0]) + h[1] * dFabs(nb[1]) + h[2] * dFabs(nb[2])) return 1;
-    dReal p[3][3];   // vertex i's coordinate j
     for (int i = 0; i < 3; i++) {
         dReal d[3];
         sub3(d, t->v[i], c);
@@ -452,25 +529,139 @@ static int box_separated(const box_pair *b, const dxTri *t, const dReal c[3], dR
         if (dMax(p[0][j], dMax(p[1][j], p[2][j])) < -h[j] ||
             dMin(p[0][j], dMin(p[1][j], p[2][j])) > h[j])
             return 1;
+#endif
     // A vertex inside the box by more than the margin lies, on every axis
     // L, within the box's interval by at least the margin times |L| (the
     // box's |L . a_j| sum to at least |L|), far beyond the rounding of the
     // sums below: no edge pair can separate, and they are not worked out.
-    const dReal *in = b->inner;
-    for (int i = 0; i < 3; i++)
-        if (dFabs(p[i][0]) <= in[0] && dFabs(p[i][1]) <= in[1] && dFabs(p[i][2]) <= in[2])
-            return 0;
-    for (int k = 0; k < 3; k++)
-        if (edge_through(b, p[k], p[(k + 1) % 3])) return 0;
+    // Bit i of near: vertex i is within b->reach of the centre along each
+    // axis (an end edge_through takes).
+    const dReal *in = b->inner, reach = b->reach;
+    unsigned near = 0;
+    for (int i = 0; i < 3; i++) {
+        dReal x = dFabs(p[i][0]), y = dFabs(p[i][1]), z = dFabs(p[i][2]);
+        if (x <= in[0] && y <= in[1] && z <= in[2]) return 0;
+        near |= (unsigned)(x <= reach && y <= reach && z <= reach) << i;
+    }
+    for (int k = 0; k < 3; k++) {
+        int k1 = k < 2 ? k + 1 : 0;
+        if ((near >> k & near >> k1 & 1) && edge_through(b, p[k], p[k1])) return 0;
+    }
     for (int k = 0; k < 3; k++) {
         dReal e[3], L[3];
         sub3(e, t->v[(k + 1) % 3], t->v[k]);
+#if defined(__SSE2__) && !defined(dSINGLE)
+        if (separates_box01(b, t, e, c)) return 1;
+        cross3(L, e, b->ax[2]);
+        if (separates_box(t, L, c, b->ax, h)) return 1;
+#else
         for (int j = 0; j < 3; j++) {
             cross3(L, e, b->ax[j]);
             if (separates_box(t, L, c, b->ax, h)) return 1;
         }
+#endif
     }
     return 0;
+}
+
+// The eight sums x + (+-d0) + (+-d1) + (+-d2), bit j of the index picking
+// the sign of d_j, into out: each summed left to right as written, the
+// partial sums shared (the same numbers as the eight sums one by one).
+// With SSE2 (double) two neighbouring corners at a time: the same sums.
+static inline void corner_sums(dReal x, const dReal d[3], dReal out[8])
+{
+#if defined(__SSE2__) && !defined(dSINGLE)
+    const __m128d a = _mm_add_pd(_mm_set1_pd(x), _mm_set_pd(d[0], -d[0]));
+    const __m128d d1 = _mm_set1_pd(d[1]), d2 = _mm_set1_pd(d[2]);
+    const __m128d b0 = _mm_sub_pd(a, d1), b1 = _mm_add_pd(a, d1);
+    _mm_storeu_pd(out, _mm_sub_pd(b0, d2));
+    _mm_storeu_pd(out + 2, _mm_sub_pd(b1, d2));
+    _mm_storeu_pd(out + 4, _mm_add_pd(b0, d2));
+    _mm_storeu_pd(out + 6, _mm_add_pd(b1, d2));
+#else
+    dReal a[2] = { x - d[0], x + d[0] }, b[4];
+    for (int v = 0; v < 4; v++) b[v] = a[v & 1] + (v & 2 ? d[1] : -d[1]);
+    for (int v = 0; v < 8; v++) out[v] = b[v & 3] + (v & 4 ? d[2] : -d[2]);
+#endif
+}
+
+// Bit v set where x[v] < lim (of eight numbers), where x[v] >= lim, where
+// x[v] <= lim (false for NaN, as the comparisons one by one).
+#if defined(__SSE2__) && !defined(dSINGLE)
+#define EIGHT_BITS(x, lim, cmp)                                                            \
+    ((unsigned)_mm_movemask_pd(cmp(_mm_loadu_pd(x), lim)) |                                 \
+     (unsigned)_mm_movemask_pd(cmp(_mm_loadu_pd((x) + 2), lim)) << 2 |                      \
+     (unsigned)_mm_movemask_pd(cmp(_mm_loadu_pd((x) + 4), lim)) << 4 |                      \
+     (unsigned)_mm_movemask_pd(cmp(_mm_loadu_pd((x) + 6), lim)) << 6)
+static inline unsigned bits_below(const dReal x[8], dReal lim)
+{
+    return EIGHT_BITS(x, _mm_set1_pd(lim), _mm_cmplt_pd);
+}
+static inline unsigned bits_at_least(const dReal x[8], dReal lim)
+{
+    return EIGHT_BITS(x, _mm_set1_pd(lim), _mm_cmpge_pd);
+}
+static inline unsigned bits_at_most(const dReal x[8], dReal lim)
+{
+    return EIGHT_BITS(x, _mm_set1_pd(lim), _mm_cmple_pd);
+}
+#undef EIGHT_BITS
+#else
+static inline unsigned bits_below(const dReal x[8], dReal lim)
+{
+    unsigned bits = 0;
+    for (int v = 0; v < 8; v++)
+        if (x[v] < lim) bits |= 1u << v;
+    return bits;
+}
+static inline unsigned bits_at_least(const dReal x[8], dReal lim)
+{
+    unsigned bits = 0;
+    for (int v = 0; v < 8; v++)
+        if (x[v] >= lim) bits |= 1u << v;
+    return bits;
+}
+static inline unsigned bits_at_most(const dReal x[8], dReal lim)
+{
+    unsigned bits = 0;
+    for (int v = 0; v < 8; v++)
+        if (x[v] <= lim) bits |= 1u << v;
+    return bits;
+}
+#endif
+
+// A box's faces as corner numbers (in order round the face) and as bit
+// masks of those corners.
+static const int box_faces[6][4] = { { 0, 2, 6, 4 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
+                                     { 2, 3, 7, 6 }, { 0, 1, 3, 2 }, { 4, 5, 7, 6 } };
+static const unsigned box_face_mask[6] = { 0x55, 0xaa, 0x33, 0xcc, 0x0f, 0xf0 };
+
+// Which sides of the prism box face f's part at or below the level H
+// (corner heights hv, bit v of `low` set for a corner at or below it) lies
+// beyond (bit k of *away: fk[k], the side's measure, below zero at every
+// point of it) and within (bit k of *within: fk[k] at least lim[k]). The
+// part is a convex polygon, fk affine: its low corners and the points where
+// the face's edges cross the level decide. *away and *within come in with
+// the sides its low corners allow (the sides left out are not looked at).
+static void low_part_sides(int f, const dReal hv[8], unsigned low, dReal H,
+                           const dReal fk[3][8], const dReal lim[3], unsigned *away,
+                           unsigned *within)
+{
+    const int *fv = box_faces[f];
+    unsigned a = *away, w = *within;
+    for (int i = 0; i < 4 && (a | w); i++) {
+        int u = fv[i], x = fv[(i + 1) & 3];
+        if ((low >> u & 1) == (low >> x & 1)) continue;
+        dReal s = (H - hv[u]) / (hv[x] - hv[u]);
+        for (int k = 0; k < 3; k++) {
+            if (!((a | w) >> k & 1)) continue;
+            dReal fc = fk[k][u] + s * (fk[k][x] - fk[k][u]);
+            if (!(fc < 0)) a &= ~(1u << k);
+            if (!(fc >= lim[k])) w &= ~(1u << k);
+        }
+    }
+    *away = a;
+    *within = w;
 }
 
 static int box_test(dxTriQuery *q, const dxTri *t)
@@ -484,63 +675,96 @@ static int box_test(dxTriQuery *q, const dxTri *t)
     dReal nb[3];
     if (box_separated(b, t, c, hc, nb)) return 0;
     // A face is clipped if one of its corners is on or behind the plane.
-    static const int faces[6][4] = { { 0, 2, 6, 4 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
-                                     { 2, 3, 7, 6 }, { 0, 1, 3, 2 }, { 4, 5, 7, 6 } };
     // Bit v: corner v is on or behind the plane (height <= eps), from the
     // centre's height and the axes; one eps more covers that sum's
     // rounding (a face clipped needlessly adds nothing: its points are all
     // above the plane).
-    dReal eps = DX_COLLIDE_EPS * q->scale, up[3];
+    dReal eps = DX_COLLIDE_EPS * q->scale, up[3], hv[8];
     for (int j = 0; j < 3; j++) up[j] = b->h[j] * nb[j];
-    unsigned behind = 0;
-    for (int v = 0; v < 8; v++) {
-        dReal hv = hc + (v & 1 ? up[0] : -up[0]) + (v & 2 ? up[1] : -up[1]) +
-                   (v & 4 ? up[2] : -up[2]);
-        if (hv <= 2 * eps) behind |= 1u << v;
-    }
+    corner_sums(hc, up, hv);
+    const unsigned behind = bits_at_most(hv, 2 * eps);
     dxTriPrism p;
     dxTriPrismInit(q, t, &p);
     // Bit v of outside[k]: corner v is beyond side k of the prism by more
     // than rounding (the clip's measure m . (x - v_k) + slack below zero by
     // one slack more, a margin for working it out from the centre and the
-    // axes instead). A face with its four corners beyond one side clips to
-    // nothing.
+    // axes instead: fk[k][v] < 0). A face with its four corners beyond one
+    // side clips to nothing.
     // Bit v of inside[k]: corner v is within side k by more than rounding
     // (the measure at least one slack: with the clip's own slack, two), so
     // a face with its four corners within needs no clip against side k.
-    unsigned outside[3] = { 0, 0, 0 }, inside[3] = { 0, 0, 0 };
+    // Bit v of low_in[k]: fk[k][v] >= lim[k] = 2 slack, the clip's measure
+    // one slack over its crossing (the face's low part, see below).
+    unsigned outside[3] = { 0, 0, 0 }, inside[3] = { 0, 0, 0 }, low_in[3];
+    dReal fk[3][8], lim[3];
     for (int k = 0; k < 3; k++) {
         dReal d[3], off[3];
         sub3(d, c, t->v[k]);
         dReal f0 = dx_dot(p.m[k], d) + 2 * p.slack[k];
         for (int j = 0; j < 3; j++) off[j] = b->h[j] * dx_dot(p.m[k], b->ax[j]);
-        for (int v = 0; v < 8; v++) {
-            dReal f = f0 + (v & 1 ? off[0] : -off[0]) + (v & 2 ? off[1] : -off[1]) +
-                      (v & 4 ? off[2] : -off[2]);
-            if (f < 0) outside[k] |= 1u << v;
-            if (f >= 3 * p.slack[k]) inside[k] |= 1u << v;
-        }
+        corner_sums(f0, off, fk[k]);
+        outside[k] = bits_below(fk[k], 0);
+        inside[k] = bits_at_least(fk[k], 3 * p.slack[k]);
+        lim[k] = 2 * p.slack[k];
+        low_in[k] = bits_at_least(fk[k], lim[k]);
     }
     // seen: the corners added already (each is in three faces).
     int added = 0;
     unsigned seen = 0;
     for (int f = 0; f < 6; f++) {
-        const int *fv = faces[f];
-        unsigned mask = 1u << fv[0] | 1u << fv[1] | 1u << fv[2] | 1u << fv[3];
+        const unsigned mask = box_face_mask[f];
         if (!(behind & mask)) continue;
         if ((outside[0] & mask) == mask || (outside[1] & mask) == mask ||
             (outside[2] & mask) == mask)
             continue;
-        dReal a[POLY_MAX][3];
-        int made[POLY_MAX];
-        for (int i = 0; i < 4; i++) {
-            for (int j = 0; j < 3; j++) a[i][j] = b->corner[fv[i]][j];
-            made[i] = DX_TRI_MADE_CORNER + fv[i];
+        // Every point a face can add lies in its low part (at or below
+        // 2 eps). If that part is beyond a side, the face adds nothing. If
+        // it is within the last side to clip against by one slack more
+        // than the clip's crossings, that clip keeps the low points as
+        // they are (their bits and order) and makes and drops only higher
+        // ones, which add nothing: it is left out (and then the one before
+        // it, the same way). A face left with no clip adds its low corners
+        // (in its order, as the clip keeps them).
+        const unsigned low = behind & mask;
+        unsigned within = (inside[0] & mask) == mask;
+        within |= (unsigned)((inside[1] & mask) == mask) << 1;
+        within |= (unsigned)((inside[2] & mask) == mask) << 2;
+        // low_within: the sides, from the last on, that the low part's
+        // corners are within (or that need no clip), less those that need
+        // no clip.
+        unsigned away = 0, low_within = 0;
+        for (int k = 2; k >= 0; k--) {
+            if (within >> k & 1) continue;
+            if ((low_in[k] & low) != low) break;
+            low_within |= 1u << k;
         }
-        unsigned within = 0;
-        for (int k = 0; k < 3; k++)
-            if ((inside[k] & mask) == mask) within |= 1u << k;
-        added |= clipped_face_contacts(q, t, &p, a, 4, made, within, &seen);
+        if (low != mask) {
+            away = (outside[0] & low) == low;
+            away |= (unsigned)((outside[1] & low) == low) << 1;
+            away |= (unsigned)((outside[2] & low) == low) << 2;
+            if (away || low_within)
+                low_part_sides(f, hv, behind, 2 * eps, fk, lim, &away, &low_within);
+            if (away) continue;
+        }
+        for (int k = 2; k >= 0 && ((within | low_within) >> k & 1); k--) within |= 1u << k;
+        const int *fv = box_faces[f];
+        if (within == 7) {
+            for (int i = 0; i < 4; i++) {
+                const int v = fv[i];
+                if (!(low >> v & 1) || (seen >> v & 1)) continue;
+                dReal depth = -height(t, b->corner[v]);
+                if (depth < -eps) continue;
+                seen |= 1u << v;
+                dxTriAdd(q, b->corner[v], t->n, dMax(depth, 0), t->index);
+                added = 1;
+            }
+            continue;
+        }
+        const dReal *corner[4] = { b->corner[fv[0]], b->corner[fv[1]], b->corner[fv[2]],
+                                   b->corner[fv[3]] };
+        const int made[4] = { DX_TRI_MADE_CORNER + fv[0], DX_TRI_MADE_CORNER + fv[1],
+                              DX_TRI_MADE_CORNER + fv[2], DX_TRI_MADE_CORNER + fv[3] };
+        added |= clipped_face_contacts(q, t, &p, corner, made, 4, within, &seen);
     }
     return added;
 }
