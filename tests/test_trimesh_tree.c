@@ -26,11 +26,15 @@ static double rnd(double a, double b)
 }
 
 // A mesh kept with its arrays: a wavy or flat (integer) grid, or a soup of
-// random triangles.
+// random triangles; its vertices in dReal, or (vf set) in float; shift: a
+// point of its frame that the tests place near the world's origin (a mesh
+// far from its frame's origin).
 typedef struct mesh {
     dReal *v;
+    float *vf;
     dTriIndex *idx;
     int nv, nt;
+    double shift[3];
     dTriMeshDataID data;
 } mesh;
 
@@ -38,6 +42,11 @@ typedef struct mesh {
 static dTriMeshDataID data_of(const mesh *m, const dTriIndex *idx, int n)
 {
     dTriMeshDataID data = dGeomTriMeshDataCreate();
+    if (m->vf) {
+        dGeomTriMeshDataBuildSingle(data, m->vf, 3 * sizeof(float), m->nv, idx, 3 * n,
+                                    3 * sizeof(dTriIndex));
+        return data;
+    }
 #ifdef dDOUBLE
     dGeomTriMeshDataBuildDouble(data, m->v, 3 * sizeof(dReal), m->nv, idx, 3 * n,
                                 3 * sizeof(dTriIndex));
@@ -53,18 +62,33 @@ static void mesh_build(mesh *m)
     m->data = data_of(m, m->idx, m->nt);
 }
 
-static void make_grid(mesh *m, int n, double cell, int wavy)
+// An n x n grid of cells, around (off, off / 2, off / 3) in its frame
+// (shift), its vertices in float if single.
+static void make_grid(mesh *m, int n, double cell, int wavy, double off, int single)
 {
     m->nv = (n + 1) * (n + 1);
     m->nt = 2 * n * n;
     m->v = malloc(sizeof(dReal) * 3 * (size_t)m->nv);
+    m->vf = single ? malloc(sizeof(float) * 3 * (size_t)m->nv) : NULL;
     m->idx = malloc(sizeof(dTriIndex) * 3 * (size_t)m->nt);
+    m->shift[0] = off;
+    m->shift[1] = off / 2;
+    m->shift[2] = off / 3;
     for (int j = 0; j <= n; j++)
         for (int i = 0; i <= n; i++) {
             dReal *p = m->v + 3 * (i + j * (n + 1));
             p[0] = (i - n / 2) * cell;
             p[1] = (j - n / 2) * cell;
-            p[2] = wavy ? 0.5 * sin(0.6 * p[0]) * cos(0.5 * p[1]) : 0;
+            // waves of a size in cells (the same numbers as 0.5 sin(0.6 x)
+            // cos(0.5 y) for cells of 0.5)
+            p[2] = wavy ? 2 * cell * 0.5 * sin(0.6 * p[0] / cell * 0.5) *
+                              cos(0.5 * p[1] / cell * 0.5)
+                        : 0;
+            for (int k = 0; k < 3; k++) p[k] += m->shift[k];
+            for (int k = 0; k < 3 && single; k++) {
+                m->vf[3 * (i + j * (n + 1)) + k] = (float)p[k];
+                p[k] = m->vf[3 * (i + j * (n + 1)) + k];
+            }
         }
     int t = 0;
     for (int j = 0; j < n; j++)
@@ -81,6 +105,8 @@ static void make_soup(mesh *m, int nt, double size)
 {
     m->nt = nt;
     m->nv = 3 * nt;
+    m->vf = NULL;
+    m->shift[0] = m->shift[1] = m->shift[2] = 0;
     m->v = malloc(sizeof(dReal) * 3 * (size_t)m->nv);
     m->idx = malloc(sizeof(dTriIndex) * 3 * (size_t)m->nt);
     for (int i = 0; i < nt; i++) {
@@ -97,6 +123,7 @@ static void mesh_destroy(mesh *m)
 {
     dGeomTriMeshDataDestroy(m->data);
     free(m->v);
+    free(m->vf);
     free(m->idx);
 }
 
@@ -186,14 +213,14 @@ static int scan_leaves(const dxTriMeshData *d, const dReal lo[3], const dReal hi
     return n;
 }
 
-static int check_queries(const dxTriMeshData *d, double size)
+static int check_queries(const dxTriMeshData *d, double size, const double centre[3])
 {
     int *expect = malloc(sizeof(int) * (size_t)d->tri_count);
     int *got = NULL, cap = 0, leaf[64];
     for (int q = 0; q < 400; q++) {
         dReal lo[3], hi[3];
         for (int k = 0; k < 3; k++) {
-            double c = rnd(-size, size), h = q % 4 == 0 ? 0 : rnd(0, size / 8);
+            double c = centre[k] + rnd(-size, size), h = q % 4 == 0 ? 0 : rnd(0, size / 8);
             lo[k] = c - h;
             hi[k] = c + h;
         }
@@ -246,22 +273,28 @@ static int hit_order(const void *a, const void *b)
 // are the least of the lone triangles' hits by distance then triangle, to
 // the bit; with BackfaceCull too. On the grid (not turned, so that
 // directions along its axes stay exact in its frame) the rays go through
-// vertices and edges, along the axes and nearly along the grid.
+// vertices and edges, along the axes and nearly along the grid; on the
+// other meshes a third of them are aimed at a triangle's vertex or a point
+// of its edge (the hits a filter of the leaves' triangles must not drop).
 static int check_rays(mesh *m, double size, int grid, int soup)
 {
     dMatrix3 R;
     if (grid) dRSetIdentity(R);
     else dRFromEulerAngles(R, 0.3, -0.2, 0.1);
+    // the mesh's shift point at (0.25, -0.5, 0.125)
+    double at[3] = { 0.25, -0.5, 0.125 };
+    for (int i = 0; i < 3; i++)
+        at[i] -= R[4 * i] * m->shift[0] + R[4 * i + 1] * m->shift[1] + R[4 * i + 2] * m->shift[2];
     dGeomID whole = dCreateTriMesh(0, m->data, NULL, NULL, NULL);
     dGeomSetRotation(whole, R);
-    dGeomSetPosition(whole, 0.25, -0.5, 0.125);
+    dGeomSetPosition(whole, at[0], at[1], at[2]);
     dTriMeshDataID *one = malloc(sizeof *one * (size_t)m->nt);
     dGeomID *lone = malloc(sizeof *lone * (size_t)m->nt);
     for (int t = 0; t < m->nt; t++) {
         one[t] = data_of(m, m->idx + 3 * t, 1);
         lone[t] = dCreateTriMesh(0, one[t], NULL, NULL, NULL);
         dGeomSetRotation(lone[t], R);
-        dGeomSetPosition(lone[t], 0.25, -0.5, 0.125);
+        dGeomSetPosition(lone[t], at[0], at[1], at[2]);
     }
     dGeomID ray = dCreateRay(0, 1);
     hit *all = malloc(sizeof *all * (size_t)m->nt);
@@ -275,6 +308,19 @@ static int check_rays(mesh *m, double size, int grid, int soup)
             len2 += dir[k] * dir[k];
         }
         double len = sqrt(len2) * rnd(0.3, 2);
+        if (!grid && r % 3 == 2) {   // at a vertex (every other one) or an edge
+            const dTriIndex *tri = m->idx + 3 * (int)rnd(0, m->nt);
+            const dReal *a = m->v + 3 * tri[0], *b = m->v + 3 * tri[1];
+            double w = r % 6 == 2 ? 0 : rnd(0, 1), q[3], aim[3];
+            for (int k = 0; k < 3; k++) q[k] = a[k] + w * (b[k] - a[k]);
+            len2 = 0;
+            for (int i = 0; i < 3; i++) {
+                aim[i] = at[i] + R[4 * i] * q[0] + R[4 * i + 1] * q[1] + R[4 * i + 2] * q[2];
+                dir[i] = aim[i] - p[i];
+                len2 += dir[i] * dir[i];
+            }
+            len = sqrt(len2) * rnd(1.01, 2);
+        }
         if (grid) {
             static const double offset[3] = { 0, 0.25, 0.5 };
             p[0] = floor(p[0]) + offset[r % 3] - 0.25;
@@ -323,7 +369,7 @@ static int check_rays(mesh *m, double size, int grid, int soup)
 static int check_mesh(mesh *m, double size, int grid, int soup)
 {
     const dxTriMeshData *d = (const dxTriMeshData *)m->data;
-    int bad = check_shape(d) || check_queries(d, size) || check_rays(m, size, grid, soup);
+    int bad = check_shape(d) || check_queries(d, size, m->shift) || check_rays(m, size, grid, soup);
     mesh_destroy(m);
     return bad;
 }
@@ -331,14 +377,30 @@ static int check_mesh(mesh *m, double size, int grid, int soup)
 static int test_tree_wavy_grid(void)
 {
     mesh m;
-    make_grid(&m, 24, 0.5, 1);
+    make_grid(&m, 24, 0.5, 1, 0, 0);
     return check_mesh(&m, 7, 0, 0);
+}
+
+// Far from its frame's origin (3000 m, cells of 5 cm: the vertices' floats
+// are 2.4e-4 m apart), and with float vertex arrays.
+static int test_tree_far_grid(void)
+{
+    mesh m;
+    make_grid(&m, 24, 0.05, 1, 3000.3, 0);
+    return check_mesh(&m, 0.7, 0, 0);
+}
+
+static int test_tree_float_vertices(void)
+{
+    mesh m;
+    make_grid(&m, 20, 0.5, 1, 0.3, 1);
+    return check_mesh(&m, 6, 0, 0);
 }
 
 static int test_tree_flat_integer_grid(void)
 {
     mesh m;
-    make_grid(&m, 20, 1, 0);
+    make_grid(&m, 20, 1, 0, 0, 0);
     return check_mesh(&m, 11, 1, 0);
 }
 
@@ -394,6 +456,8 @@ const test_case test_cases[] = {
     TEST_CASE(test_float_steps_match_nextafterf),
     TEST_CASE(test_tree_wavy_grid),
     TEST_CASE(test_tree_flat_integer_grid),
+    TEST_CASE(test_tree_far_grid),
+    TEST_CASE(test_tree_float_vertices),
     TEST_CASE(test_tree_soup),
     TEST_CASE(test_tree_small),
     TEST_END,
