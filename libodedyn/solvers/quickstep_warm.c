@@ -23,11 +23,17 @@
 // normal, forces: warm_point). After the solve the runs become the last
 // step's, indexed by an open-addressing table on the body pair; a contact
 // then looks its pair up once per run (a contact of the same pair as the one
-// before reuses the answer) and compares only that pair's old contacts, in
-// their order. A pair met in two runs has its runs chained, so every old
-// contact of the pair is still a candidate. The arrays grow geometrically
-// (dAlloc) and are swapped, never freed, between steps, so that a warm step
-// allocates nothing; dWorldDestroy frees them. The last step's entries are
+// before reuses the answer) and compares only that pair's old contacts. A
+// pair met in two runs has its runs chained, so every old contact of the
+// pair is still a candidate. Each pair also gets its isolation, the smallest
+// squared distance between two of its old contacts: an old contact that fits
+// and lies within a third of that is the nearest beyond doubt, so a contact
+// usually tries one or two old contacts (match) instead of scanning all
+// (find); the same answer either way. The end pass goes run by run, and the
+// changes of frame are made in fours (a rotation's rows times a vector's
+// numbers: the same operations as one number at a time). The arrays grow
+// geometrically (dAlloc) and are swapped, never freed, between steps, so that
+// a warm step allocates nothing; dWorldDestroy frees them. The last step's entries are
 // used only right after the quick step that made them (another stepper in
 // between, or none yet: a cold start).
 
@@ -87,7 +93,8 @@ struct dxWarmCache {
     const warm_pair *match;         // its pair's first old run, NULL: none
     int shift;                      // where in match the run's last found contact
                                     // was, less where it is in the run (mod count)
-    dReal cols[3][4];               // the columns of the run's b0->R (with match)
+    dReal cols[3][4];               // the columns of cols_of's b0->R
+    const warm_pair *cols_of;       // the run whose they are (NULL: none)
     // The index of the old runs by pair: nslots (a power of 2) slots, those
     // whose stamp is slot_stamp in use (so the table is never cleared).
     struct warm_slot *slots;
@@ -132,17 +139,7 @@ void dxWarmCacheFree(struct dxWorld *w)
     w->qs_warm = NULL;
 }
 
-// x = R^T v and x = R v for a rotation R (dMatrix3: rows of 4).
-QS_INLINE void to_body(dReal *x, const dReal *R, const dReal *v)
-{
-    const dReal a = v[0], b = v[1], c = v[2];
-    const dReal x0 = R[0] * a + R[4] * b + R[8] * c, x1 = R[1] * a + R[5] * b + R[9] * c,
-                x2 = R[2] * a + R[6] * b + R[10] * c;
-    x[0] = x0;
-    x[1] = x1;
-    x[2] = x2;
-}
-
+// x = R v for a rotation R (dMatrix3: rows of 4).
 QS_INLINE void to_world(dReal *x, const dReal *R, const dReal *v)
 {
     const dReal a = v[0], b = v[1], c = v[2];
@@ -153,9 +150,10 @@ QS_INLINE void to_world(dReal *x, const dReal *R, const dReal *v)
     x[2] = x2;
 }
 
-// x = R^T v for x and v of four numbers (the fourth of x whatever R's
-// padding makes it): the rows of R as fours times v's numbers, the same
-// operations in the same order as to_body for each of the first three.
+// x = R^T v, x[i] = R[i] v[0] + R[4 + i] v[1] + R[8 + i] v[2] for i < 3; with
+// GNU vectors the rows of R as fours times v's numbers (the same operations
+// in the same order), x and v four numbers (the fourth of x whatever R's
+// padding makes it).
 #if defined(__GNUC__)
 typedef dReal warm_v4 __attribute__((vector_size(4 * sizeof(dReal))));
 
@@ -173,16 +171,22 @@ QS_INLINE void to_body4_v(dReal *x, const dReal *R, warm_v4 v)
                       load4(R + 8) * __builtin_shufflevector(v, v, 2, 2, 2, 2);
     memcpy(x, &r, sizeof r);
 }
-#endif
 
 QS_INLINE void to_body4(dReal *x, const dReal *R, const dReal *v)
 {
-#if defined(__GNUC__)
     to_body4_v(x, R, load4(v));
-#else
-    to_body(x, R, v);
-#endif
 }
+#else
+static inline void to_body4(dReal *x, const dReal *R, const dReal *v)
+{
+    const dReal a = v[0], b = v[1], c = v[2];
+    const dReal x0 = R[0] * a + R[4] * b + R[8] * c, x1 = R[1] * a + R[5] * b + R[9] * c,
+                x2 = R[2] * a + R[6] * b + R[10] * c;
+    x[0] = x0;
+    x[1] = x1;
+    x[2] = x2;
+}
+#endif
 
 static uint32_t pair_hash(const struct dxBody *b0, const struct dxBody *b1)
 {
@@ -247,8 +251,9 @@ QS_INLINE dReal isolation4(const warm_point *e)
     const warm_v4 cd = __builtin_shufflevector(c, d, 0, 4, 1, 5);
     const warm_v4 X = __builtin_shufflevector(ab, cd, 0, 1, 4, 5);
     const warm_v4 Y = __builtin_shufflevector(ab, cd, 2, 3, 6, 7);
-    const warm_v4 Z = __builtin_shufflevector(__builtin_shufflevector(a, b, 2, 6, 2, 6),
-                                              __builtin_shufflevector(c, d, 2, 6, 2, 6), 0, 1, 4, 5);
+    const warm_v4 ab2 = __builtin_shufflevector(a, b, 2, 6, 2, 6);   // a2 b2 a2 b2
+    const warm_v4 cd2 = __builtin_shufflevector(c, d, 2, 6, 2, 6);
+    const warm_v4 Z = __builtin_shufflevector(ab2, cd2, 0, 1, 4, 5);
     const warm_v4 x1 = X - __builtin_shufflevector(X, X, 1, 2, 3, 0);
     const warm_v4 y1 = Y - __builtin_shufflevector(Y, Y, 1, 2, 3, 0);
     const warm_v4 z1 = Z - __builtin_shufflevector(Z, Z, 1, 2, 3, 0);
@@ -263,18 +268,26 @@ QS_INLINE dReal isolation4(const warm_point *e)
 }
 #endif
 
+// iso, or 0 below WARM_ISO_MIN (and not a number).
+static inline dReal isolation_min(dReal iso)
+{
+    return iso >= WARM_ISO_MIN ? iso : 0;
+}
+
 // Of the n contacts e, each two of them.
 QS_INLINE dReal isolation(const warm_point *e, int n)
 {
+    if (n < 2) return dInfinity;
 #if defined(__GNUC__)
-    if (n == 4) return isolation4(e);
+    if (n == 4) return isolation_min(isolation4(e));
 #endif
     dReal iso = dInfinity;
     for (int i = 0; i + 1 < n; i++) {
         const dReal p[3] = { e[i].p[0], e[i].p[1], e[i].p[2] };
-        for (const warm_point *o = e + i + 1; o < e + n; o++) iso = isolation_by(iso, dist2(o->p, p));
+        for (const warm_point *o = e + i + 1; o < e + n; o++)
+            iso = isolation_by(iso, dist2(o->p, p));
     }
-    return iso;
+    return isolation_min(iso);
 }
 
 // Of the contacts e[0..n) against o[0..no), down from iso.
@@ -335,10 +348,7 @@ QS_INLINE void index_old(dxWarmCache *c)
                 if (y->next < 0) break;
             }
         }
-    }
-    for (int r = 0; r < c->nold_pairs; r++) {
-        warm_pair *h = &c->old_pairs[r];
-        if (!(h->iso >= WARM_ISO_MIN)) h->iso = 0;
+        h->iso = isolation_min(h->iso);
     }
 }
 
@@ -359,6 +369,7 @@ dxWarmCache *dxQuickWarmBegin(struct dxWorld *w, int ncontacts)
     }
     c->ncur = c->ncur_pairs = 0;
     c->run = NULL;
+    c->cols_of = NULL;
     if (c->stamp + 1 != w->step_count) c->nold = c->nold_pairs = 0;   // not the step just before
     return c;
 }
@@ -409,15 +420,6 @@ QS_INLINE int enter(dxWarmCache *c, const struct dxBody *b0, const struct dxBody
     c->match = find_pair(c, run);
     c->shift = 0;
     c->run = run;
-    if (c->match) {   // R's columns, for the forces found (dxQuickWarmContactRows)
-        const dReal *R = b0->R;
-        for (int i = 0; i < 3; i++) {
-            c->cols[i][0] = R[i];
-            c->cols[i][1] = R[4 + i];
-            c->cols[i][2] = R[8 + i];
-            c->cols[i][3] = 0;
-        }
-    }
     return k;
 }
 
@@ -453,7 +455,7 @@ QS_INLINE const warm_point *match(dxWarmCache *c, int k, const struct dxBody *b0
 #else
     dVector3 arm;
     dSubtractVectors3(arm, point, b0->pos);
-    to_body(e->p, b0->R, arm);
+    to_body4(e->p, b0->R, arm);
     reach2 = dCalcVectorDot3(arm, arm);
     if (b1) {
         dVector3 arm1;
@@ -523,6 +525,16 @@ WARM_CLONES int dxQuickWarmContactRows(dxWarmCache *c, const struct dxBody *b0,
     // Back to the world frame: R's columns times f's numbers, the same
     // operations as to_world.
 #if defined(__GNUC__)
+    if (c->cols_of != c->run) {   // R's columns, once a run
+        const dReal *R = b0->R;
+        for (int i = 0; i < 3; i++) {
+            c->cols[i][0] = R[i];
+            c->cols[i][1] = R[4 + i];
+            c->cols[i][2] = R[8 + i];
+            c->cols[i][3] = 0;
+        }
+        c->cols_of = c->run;
+    }
     const warm_v4 F = load4(old->f);
     const warm_v4 x = load4(c->cols[0]) * __builtin_shufflevector(F, F, 0, 0, 0, 0) +
                       load4(c->cols[1]) * __builtin_shufflevector(F, F, 1, 1, 1, 1) +
@@ -545,9 +557,9 @@ WARM_CLONES void dxQuickWarmEnd(struct dxWorld *w, dxWarmCache *c, const dReal *
     if (!c) return;
     // Each run's forces into its first body's frame (the bodies have not
     // moved yet).
-    for (const warm_pair *q = c->cur_pairs; q < c->cur_pairs + c->ncur_pairs; q++) {
+    for (const warm_pair *q = c->cur_pairs, *qend = q + c->ncur_pairs; q < qend; q++) {
         const dReal *R = q->b0->R;
-        for (int k = q->first; k < q->first + q->count; k++) {
+        for (int k = q->first, kend = k + q->count; k < kend; k++) {
             const qs_warm_entry *pend = &c->pending[k];
             warm_point *e = &c->cur[k];
             const dReal l1 = pend->pos[1] >= 0 ? lambda[pend->pos[1]] : 0;
@@ -559,7 +571,7 @@ WARM_CLONES void dxQuickWarmEnd(struct dxWorld *w, dxWarmCache *c, const dReal *
 #else
             dVector3 fw;
             for (int i = 0; i < 3; i++) fw[i] = l1 * pend->t1[i] + l2 * pend->t2[i];
-            to_body(e->f, R, fw);
+            to_body4(e->f, R, fw);
 #endif
         }
     }
