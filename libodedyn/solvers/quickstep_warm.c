@@ -514,7 +514,8 @@ WARM_CLONES int dxQuickWarmContactRows(dxWarmCache *c, const struct dxBody *b0,
     static const dReal zero[4] = { 0, 0, 0, 0 };
     const int k = enter(c, b0, b1);
     qs_warm_entry *pend = &c->pending[k];
-    const int t1 = r->friction & 1, t2 = r->friction & 2;   // rows 1 + t1 - 1, 1 + t1
+    // The friction rows follow the normal row, t1's first (r->friction).
+    const int t1 = r->friction & 1, t2 = r->friction & 2;
     pend->pos[0] = first;
     pend->pos[1] = t1 ? first + 1 : -1;
     pend->pos[2] = t2 ? first + 1 + t1 : -1;
