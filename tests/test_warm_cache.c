@@ -3,7 +3,8 @@
 // test_warm_cache.c -- the warm start's contact cache (quickstep_warm.c)
 // driven directly, as dWorldQuickStep's build does: contacts entered one by
 // one with their bodies, point, normal and friction directions, given lambda
-// positions, then the solve's forces. Its answers (found or not, the old
+// positions (every other one as a plain contact's numbers, the direct way),
+// then the solve's forces. Its answers (found or not, the old
 // normal force, the friction force in the world frame) are compared with a
 // plain matcher written here from the rule alone: every old contact of the
 // same body pair (pointers and generations) is a candidate; the point, in
@@ -11,7 +12,9 @@
 // normal within WARM_COS; the nearest wins, ties to the smaller normal force,
 // then to the earlier contact. The cases: random scenes whose pairs come in
 // runs, split runs and any order; a body reused under a new generation; a
-// step of another stepper in between.
+// step of another stepper in between. The random scenes come in runs whose
+// contacts lie apart (the quick match), close together, twice (ties), and
+// in the next step in the same order or each pair's from another start.
 
 #include "test.h"
 #include "objects_internal.h"
@@ -119,11 +122,23 @@ static int run_step(dWorldID w, tstep *s, const tstep *old, int *mismatches)
     for (int k = 0; k < s->n; k++) {
         tcontact *c = &s->c[k];
         int found;
-        dReal ln = -1, f[3] = { 0, 0, 0 };
-        qs_warm_entry *e = dxQuickWarmContact(cache, c->b0, c->b1, c->p, c->n, c->t1, c->t2,
-                                              &found, &ln, f);
-        const int pos[3] = { 3 * k, 3 * k + 1, 3 * k + 2 };
-        dxQuickWarmPositions(e, pos);
+        dReal ln = -1, f[4] = { 0, 0, 0, 0 };
+        if (k % 2) {   // as a plain contact's numbers (quickstep_contact.c)
+            dxContactRows r;
+            memset(&r, 0, sizeof r);
+            r.friction = 3;   // both friction rows, after the normal row
+            dCopyVector3(r.n, c->n);
+            dCopyVector3(r.t1, c->t1);
+            dCopyVector3(r.t2, c->t2);
+            r.point = c->p;
+            found = dxQuickWarmContactRows(cache, c->b0, c->b1, &r, 3 * k, f);
+            if (found) ln = f[3];
+        } else {   // as a contact through the generic rows (quickstep_build.c)
+            qs_warm_entry *e = dxQuickWarmContact(cache, c->b0, c->b1, c->p, c->n, c->t1,
+                                                  c->t2, &found, &ln, f);
+            const int pos[3] = { 3 * k, 3 * k + 1, 3 * k + 2 };
+            dxQuickWarmPositions(e, pos);
+        }
         lambda[3 * k] = c->ln;
         lambda[3 * k + 1] = c->l1;
         lambda[3 * k + 2] = c->l2;
@@ -240,6 +255,19 @@ static int test_matches_the_plain_rule(void)
             make_contact(c, a.c[k].b0, a.c[k].b1, p, n);
             if (urand() < 0.05 && b.n < MAXC) b.c[b.n++] = *c;   // a duplicate
         }
+        // Each pair's run started elsewhere, as box-box does now and then
+        // (the quick match's guess then moves along).
+        if (scene % 4 == 3)
+            for (int k = 0; k < b.n;) {
+                int n = 1;
+                while (k + n < b.n && b.c[k + n].b0 == b.c[k].b0 && b.c[k + n].b1 == b.c[k].b1)
+                    n++;
+                static tcontact t[MAXC];
+                const int shift = (int)(urand() * n);
+                for (int i = 0; i < n; i++) t[i] = b.c[k + (i + shift) % n];
+                memcpy(&b.c[k], t, sizeof(tcontact) * (size_t)n);
+                k += n;
+            }
         total += b.n;
         total_found += run_step(w, &b, &a, &mismatches);
     }

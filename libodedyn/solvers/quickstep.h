@@ -161,6 +161,10 @@ typedef struct qs_island {
 #define WARM_TOL ((dReal)0.03)
 #define WARM_COS ((dReal)0.95)
 #define WARM_SCALE ((dReal)0.8)
+// Old contacts nearer to each other than sqrt(WARM_ISO_MIN) are matched by
+// the full scan alone (quickstep_warm.c: far above the underflow in either
+// precision).
+#define WARM_ISO_MIN ((dReal)1e-20)
 
 typedef struct dxWarmCache dxWarmCache;
 typedef struct qs_warm_entry qs_warm_entry;
@@ -226,6 +230,12 @@ qs_warm_entry *dxQuickWarmContact(dxWarmCache *c, const struct dxBody *b0,
                                   dReal *f);
 // The lambda positions of the entry's normal and friction rows (-1: none).
 void dxQuickWarmPositions(qs_warm_entry *e, const int pos[3]);
+// Both for a plain contact's numbers r (dxJointContactRows) whose rows take
+// the lambda positions from `first` on in r's order: 1 if it matches one of
+// the last step, whose friction force (world frame) goes to f[0..3) and
+// normal force to f[3].
+int dxQuickWarmContactRows(dxWarmCache *c, const struct dxBody *b0, const struct dxBody *b1,
+                           const dxContactRows *r, int first, dReal f[4]);
 // After the solve: this step's contacts get their forces and become the last
 // step's.
 void dxQuickWarmEnd(struct dxWorld *w, dxWarmCache *c, const dReal *lambda);

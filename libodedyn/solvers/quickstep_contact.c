@@ -368,23 +368,14 @@ void dxQuickContact(const qs_input *in, dxJoint *j, qs_system *sys)
     cb.o1 = 6 * (in->body0 + (b1 ? b1->tag : in->nb));
 
     // The warm start's lookup first: a warm normal row is relaxed with 1.
-    static const dReal zero[3] = { 0, 0, 0 };
-    const int t1 = r.friction & 1 ? 1 : -1, t2 = r.friction & 2 ? 1 + (r.friction & 1) : -1;
-    int found;
-    dReal ln, f[3];
-    qs_warm_entry *entry =
-        dxQuickWarmContact(sys->warm, b0, b1, r.point, r.n, t1 > 0 ? r.d[t1] : zero,
-                           t2 > 0 ? r.d[t2] : zero, &found, &ln, f);
-    const int first = sys->next;
-    const int p[3] = { first, t1 > 0 ? first + t1 : -1, t2 > 0 ? first + t2 : -1 };
-    dxQuickWarmPositions(entry, p);
-    if (!found) {
+    dReal f[4];   // the friction force, then the normal force
+    if (!dxQuickWarmContactRows(sys->warm, b0, b1, &r, sys->next, f)) {
         append_rows(in, &cb, &r, NULL, sys);
         return;
     }
     // The last step's forces, scaled and projected on this step's bounds.
     dReal l[3];
-    l[0] = WARM_SCALE * (ln > 0 ? ln : 0);
+    l[0] = WARM_SCALE * (f[3] > 0 ? f[3] : 0);
     for (int i = 1; i < r.m; i++) {
         dReal lo = r.lo[i], hi = r.hi[i];
         if (r.pyramid[i]) {

@@ -23,11 +23,17 @@
 // normal, forces: warm_point). After the solve the runs become the last
 // step's, indexed by an open-addressing table on the body pair; a contact
 // then looks its pair up once per run (a contact of the same pair as the one
-// before reuses the answer) and compares only that pair's old contacts, in
-// their order. A pair met in two runs has its runs chained, so every old
-// contact of the pair is still a candidate. The arrays grow geometrically
-// (dAlloc) and are swapped, never freed, between steps, so that a warm step
-// allocates nothing; dWorldDestroy frees them. The last step's entries are
+// before reuses the answer) and compares only that pair's old contacts. A
+// pair met in two runs has its runs chained, so every old contact of the
+// pair is still a candidate. Each pair also gets its isolation, the smallest
+// squared distance between two of its old contacts: an old contact that fits
+// and lies within a third of that is the nearest beyond doubt, so a contact
+// usually tries one or two old contacts (match) instead of scanning all
+// (find); the same answer either way. The end pass goes run by run, and the
+// changes of frame are made in fours (a rotation's rows times a vector's
+// numbers: the same operations as one number at a time). The arrays grow
+// geometrically (dAlloc) and are swapped, never freed, between steps, so that
+// a warm step allocates nothing; dWorldDestroy frees them. The last step's entries are
 // used only right after the quick step that made them (another stepper in
 // between, or none yet: a cold start).
 
@@ -41,20 +47,22 @@
 #define WARM_CLONES DX_AVX2_CLONES_EXTERN
 
 #include <ode/memory.h>
+#include <stddef.h>
 #include <string.h>
 
-// A contact as the next step compares and carries it (b0's frame).
+// A contact as the next step compares and carries it (b0's frame), in fours
+// (to_body4 writes four numbers; the fourth of p and f is unused).
 typedef struct warm_point {
-    dReal p[3], n[3];               // point (from b0's origin) and normal
-    dReal ln, f[3];                 // normal force, friction force
+    dReal p[4];                     // point (from b0's origin)
+    dReal n[3], ln;                 // normal, normal force
+    dReal f[4];                     // friction force
 } warm_point;
 
 // What a contact of this step needs until its forces are known: the handle
-// dxQuickWarmContact returns.
+// dxQuickWarmContact returns (its first body is its run's).
 struct qs_warm_entry {
-    const struct dxBody *b0;        // its first body
     int pos[3];                     // lambda positions: normal, t1, t2 (-1: none)
-    dReal t1[3], t2[3];             // friction directions (world frame)
+    dReal t1[4], t2[4];             // friction directions (world frame; 0 fourth)
 };
 
 // A slot of the index: run `run` if stamp is the table's, else empty.
@@ -70,6 +78,8 @@ typedef struct warm_pair {
     uint32_t hash;                  // of b0 and b1 (pair_hash)
     int first, count;               // its contacts
     int next;                       // (old runs) the pair's next run, -1 at the end
+    int head;                       // (old runs) the pair's first run
+    dReal iso;                      // (old first runs) the pair's isolation (isolation)
 } warm_pair;
 
 struct dxWarmCache {
@@ -81,6 +91,10 @@ struct dxWarmCache {
     int ncur_pairs, nold_pairs;
     warm_pair *run;                 // the current run (NULL before the first)
     const warm_pair *match;         // its pair's first old run, NULL: none
+    int shift;                      // where in match the run's last found contact
+                                    // was, less where it is in the run (mod count)
+    dReal cols[3][4];               // the columns of cols_of's b0->R
+    const warm_pair *cols_of;       // the run whose they are (NULL: none)
     // The index of the old runs by pair: nslots (a power of 2) slots, those
     // whose stamp is slot_stamp in use (so the table is never cleared).
     struct warm_slot *slots;
@@ -125,18 +139,8 @@ void dxWarmCacheFree(struct dxWorld *w)
     w->qs_warm = NULL;
 }
 
-// x = R^T v and x = R v for a rotation R (dMatrix3: rows of 4).
-static inline void to_body(dReal *x, const dReal *R, const dReal *v)
-{
-    const dReal a = v[0], b = v[1], c = v[2];
-    const dReal x0 = R[0] * a + R[4] * b + R[8] * c, x1 = R[1] * a + R[5] * b + R[9] * c,
-                x2 = R[2] * a + R[6] * b + R[10] * c;
-    x[0] = x0;
-    x[1] = x1;
-    x[2] = x2;
-}
-
-static inline void to_world(dReal *x, const dReal *R, const dReal *v)
+// x = R v for a rotation R (dMatrix3: rows of 4).
+QS_INLINE void to_world(dReal *x, const dReal *R, const dReal *v)
 {
     const dReal a = v[0], b = v[1], c = v[2];
     const dReal x0 = R[0] * a + R[1] * b + R[2] * c, x1 = R[4] * a + R[5] * b + R[6] * c,
@@ -145,6 +149,44 @@ static inline void to_world(dReal *x, const dReal *R, const dReal *v)
     x[1] = x1;
     x[2] = x2;
 }
+
+// x = R^T v, x[i] = R[i] v[0] + R[4 + i] v[1] + R[8 + i] v[2] for i < 3; with
+// GNU vectors the rows of R as fours times v's numbers (the same operations
+// in the same order), x and v four numbers (the fourth of x whatever R's
+// padding makes it).
+#if defined(__GNUC__)
+typedef dReal warm_v4 __attribute__((vector_size(4 * sizeof(dReal))));
+
+QS_INLINE warm_v4 load4(const dReal *p)
+{
+    warm_v4 v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+
+QS_INLINE void to_body4_v(dReal *x, const dReal *R, warm_v4 v)
+{
+    const warm_v4 r = load4(R) * __builtin_shufflevector(v, v, 0, 0, 0, 0) +
+                      load4(R + 4) * __builtin_shufflevector(v, v, 1, 1, 1, 1) +
+                      load4(R + 8) * __builtin_shufflevector(v, v, 2, 2, 2, 2);
+    memcpy(x, &r, sizeof r);
+}
+
+QS_INLINE void to_body4(dReal *x, const dReal *R, const dReal *v)
+{
+    to_body4_v(x, R, load4(v));
+}
+#else
+static inline void to_body4(dReal *x, const dReal *R, const dReal *v)
+{
+    const dReal a = v[0], b = v[1], c = v[2];
+    const dReal x0 = R[0] * a + R[4] * b + R[8] * c, x1 = R[1] * a + R[5] * b + R[9] * c,
+                x2 = R[2] * a + R[6] * b + R[10] * c;
+    x[0] = x0;
+    x[1] = x1;
+    x[2] = x2;
+}
+#endif
 
 static uint32_t pair_hash(const struct dxBody *b0, const struct dxBody *b1)
 {
@@ -174,9 +216,92 @@ static const warm_pair *find_pair(const dxWarmCache *c, const warm_pair *key)
     }
 }
 
+// The squared distance of two points, as the match measures it.
+QS_INLINE dReal dist2(const dReal *a, const dReal *b)
+{
+    const dReal d[3] = { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+    return d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+}
+
+// The isolation of the old contacts of a pair: the smallest squared
+// distance between two of them (dInfinity for a lone one), 0 where that is
+// below WARM_ISO_MIN or not a number, so that the quick match (match) never
+// rests on distances near the underflow, nor on a point that is not a
+// number (find's scan lets such a contact win). iso after d2:
+static inline dReal isolation_by(dReal iso, dReal d2)
+{
+    return d2 >= iso ? iso : d2 < iso ? d2 : 0;   // (not a number: 0)
+}
+
+#if defined(__GNUC__)
+// The smaller of x and y in each lane.
+QS_INLINE warm_v4 min4(warm_v4 x, warm_v4 y)
+{
+    typedef __typeof__(x < y) mask;
+    const mask lt = x < y;
+    return (warm_v4)(((mask)x & lt) | ((mask)y & ~lt));
+}
+
+// Of four contacts (a box face's): their points as x, y and z fours, each
+// against the next and the one after that (all six pairs), a lane a pair.
+QS_INLINE dReal isolation4(const warm_point *e)
+{
+    const warm_v4 a = load4(e[0].p), b = load4(e[1].p), c = load4(e[2].p), d = load4(e[3].p);
+    const warm_v4 ab = __builtin_shufflevector(a, b, 0, 4, 1, 5);   // a0 b0 a1 b1
+    const warm_v4 cd = __builtin_shufflevector(c, d, 0, 4, 1, 5);
+    const warm_v4 X = __builtin_shufflevector(ab, cd, 0, 1, 4, 5);
+    const warm_v4 Y = __builtin_shufflevector(ab, cd, 2, 3, 6, 7);
+    const warm_v4 ab2 = __builtin_shufflevector(a, b, 2, 6, 2, 6);   // a2 b2 a2 b2
+    const warm_v4 cd2 = __builtin_shufflevector(c, d, 2, 6, 2, 6);
+    const warm_v4 Z = __builtin_shufflevector(ab2, cd2, 0, 1, 4, 5);
+    const warm_v4 x1 = X - __builtin_shufflevector(X, X, 1, 2, 3, 0);
+    const warm_v4 y1 = Y - __builtin_shufflevector(Y, Y, 1, 2, 3, 0);
+    const warm_v4 z1 = Z - __builtin_shufflevector(Z, Z, 1, 2, 3, 0);
+    const warm_v4 x2 = X - __builtin_shufflevector(X, X, 2, 3, 0, 1);
+    const warm_v4 y2 = Y - __builtin_shufflevector(Y, Y, 2, 3, 0, 1);
+    const warm_v4 z2 = Z - __builtin_shufflevector(Z, Z, 2, 3, 0, 1);
+    const warm_v4 d1 = x1 * x1 + y1 * y1 + z1 * z1, d2 = x2 * x2 + y2 * y2 + z2 * z2;
+    const warm_v4 sum = d1 + d2;   // not a number if one of them is not
+    if (!(sum[0] + sum[1] + sum[2] + sum[3] >= 0)) return 0;
+    const warm_v4 m = min4(d1, d2), m2 = min4(m, __builtin_shufflevector(m, m, 2, 3, 0, 1));
+    return m2[0] < m2[1] ? m2[0] : m2[1];
+}
+#endif
+
+// iso, or 0 below WARM_ISO_MIN (and not a number).
+static inline dReal isolation_min(dReal iso)
+{
+    return iso >= WARM_ISO_MIN ? iso : 0;
+}
+
+// Of the n contacts e, each two of them.
+QS_INLINE dReal isolation(const warm_point *e, int n)
+{
+    if (n < 2) return dInfinity;
+#if defined(__GNUC__)
+    if (n == 4) return isolation_min(isolation4(e));
+#endif
+    dReal iso = dInfinity;
+    for (int i = 0; i + 1 < n; i++) {
+        const dReal p[3] = { e[i].p[0], e[i].p[1], e[i].p[2] };
+        for (const warm_point *o = e + i + 1; o < e + n; o++)
+            iso = isolation_by(iso, dist2(o->p, p));
+    }
+    return isolation_min(iso);
+}
+
+// Of the contacts e[0..n) against o[0..no), down from iso.
+static dReal isolation_across(const warm_point *e, int n, const warm_point *o, int no, dReal iso)
+{
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < no; j++) iso = isolation_by(iso, dist2(o[j].p, e[i].p));
+    return iso;
+}
+
 // Index the old runs by pair (slots at least twice the runs, so probes are
-// short); a pair's later runs are chained after its first.
-static void index_old(dxWarmCache *c)
+// short); a pair's later runs are chained after its first. Then the old
+// contacts' isolation, pair by pair.
+QS_INLINE void index_old(dxWarmCache *c)
 {
     if (c->nslots < 2 * c->nold_pairs) {
         int n = c->nslots > 0 ? c->nslots : 64;
@@ -191,13 +316,16 @@ static void index_old(dxWarmCache *c)
         c->slot_stamp = 1;
     }
     const unsigned mask = (unsigned)c->nslots - 1;
+    int chained = 0;
     for (int r = 0; r < c->nold_pairs; r++) {
         warm_pair *q = &c->old_pairs[r];
         q->next = -1;
         unsigned s = q->hash & mask;
         while (c->slots[s].stamp == c->slot_stamp && !same_pair(&c->old_pairs[c->slots[s].run], q))
             s = (s + 1) & mask;
-        if (c->slots[s].stamp != c->slot_stamp) {
+        q->head = c->slots[s].stamp != c->slot_stamp;
+        q->iso = isolation(c->old + q->first, q->count);
+        if (q->head) {
             c->slots[s].stamp = c->slot_stamp;
             c->slots[s].run = r;
             continue;
@@ -205,6 +333,22 @@ static void index_old(dxWarmCache *c)
         int last = c->slots[s].run;   // the same pair in an earlier run
         while (c->old_pairs[last].next >= 0) last = c->old_pairs[last].next;
         c->old_pairs[last].next = r;
+        chained = 1;
+    }
+    // A pair met in several runs: the distances between the runs too.
+    for (int r = 0; chained && r < c->nold_pairs; r++) {
+        warm_pair *h = &c->old_pairs[r];
+        if (!h->head || h->next < 0) continue;
+        for (const warm_pair *x = h;; x = &c->old_pairs[x->next]) {
+            h->iso = dMin(h->iso, x->iso);
+            if (x->next < 0) break;
+            for (const warm_pair *y = &c->old_pairs[x->next];; y = &c->old_pairs[y->next]) {
+                h->iso = isolation_across(c->old + x->first, x->count, c->old + y->first,
+                                          y->count, h->iso);
+                if (y->next < 0) break;
+            }
+        }
+        h->iso = isolation_min(h->iso);
     }
 }
 
@@ -225,6 +369,7 @@ dxWarmCache *dxQuickWarmBegin(struct dxWorld *w, int ncontacts)
     }
     c->ncur = c->ncur_pairs = 0;
     c->run = NULL;
+    c->cols_of = NULL;
     if (c->stamp + 1 != w->step_count) c->nold = c->nold_pairs = 0;   // not the step just before
     return c;
 }
@@ -242,8 +387,7 @@ static const warm_point *find(const dxWarmCache *c, const warm_pair *q, const dR
         for (; e < end; e++) {
             // The point first: most of a pair's other contacts are too far,
             // and their normals the same.
-            const dReal d[3] = { e->p[0] - p[0], e->p[1] - p[1], e->p[2] - p[2] };
-            const dReal d2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            const dReal d2 = dist2(e->p, p);
             if (d2 > best_d2 || (best && d2 == best_d2 && !(e->ln < best->ln))) continue;
             if (e->n[0] * n[0] + e->n[1] * n[1] + e->n[2] * n[2] < WARM_COS) continue;
             best = e;
@@ -253,53 +397,155 @@ static const warm_point *find(const dxWarmCache *c, const warm_pair *q, const dR
     }
 }
 
-WARM_CLONES qs_warm_entry *dxQuickWarmContact(dxWarmCache *c, const struct dxBody *b0,
-                                  const struct dxBody *b1, const dReal *point, const dReal *n,
-                                  const dReal *t1, const dReal *t2, int *found, dReal *ln,
-                                  dReal *f)
+// Contact k of this step, of bodies b0, b1 (stored order), in its run: the
+// run goes on, or a new one starts and looks its pair up in the last step's.
+QS_INLINE int enter(dxWarmCache *c, const struct dxBody *b0, const struct dxBody *b1)
 {
     const int k = c->ncur++;
     warm_pair *run = c->run;
-    if (!run || run->b0 != b0 || run->b1 != b1) {
-        // A new run (within a step a body pointer names one body: no
-        // generation can change while the system is built).
-        run = &c->cur_pairs[c->ncur_pairs++];
-        run->b0 = b0;
-        run->b1 = b1;
-        run->g0 = b0->hdr.generation;
-        run->g1 = b1 ? b1->hdr.generation : 0;
-        run->hash = pair_hash(b0, b1);
-        run->first = k;
-        run->count = 1;
-        c->match = find_pair(c, run);
-        c->run = run;
-    } else {
+    if (run && run->b0 == b0 && run->b1 == b1) {
         run->count++;
+        return k;
     }
+    // A new run (within a step a body pointer names one body: no generation
+    // can change while the system is built).
+    run = &c->cur_pairs[c->ncur_pairs++];
+    run->b0 = b0;
+    run->b1 = b1;
+    run->g0 = b0->hdr.generation;
+    run->g1 = b1 ? b1->hdr.generation : 0;
+    run->hash = pair_hash(b0, b1);
+    run->first = k;
+    run->count = 1;
+    c->match = find_pair(c, run);
+    c->shift = 0;
+    c->run = run;
+    return k;
+}
+
+// Contact k (entered) at world point `point` with normal n (dVector3s):
+// kept in b0's frame for the next step, and matched against the last step's:
+// the old contact, or NULL.
+//
+// The quick match: an old contact of the pair that fits and lies closer
+// than a third of the pair's isolation (9 d2 < iso) is the one find's scan
+// would take: every other old contact of the pair is at least twice as far
+// (the triangle inequality), whatever the rounding of the squared distances
+// (a few units in the last place against a factor of 4). It is looked for
+// in the pair's first old run from a guess on: a collider reports a pair's
+// contacts in a steady order, though not always from the same start (box-box
+// starts from another corner now and then), so the guess is the old contact
+// at the run's place, shifted as the run's last found contact was. Where
+// none is that near (contacts close together, a new one, a chained run),
+// find scans them all.
+QS_INLINE const warm_point *match(dxWarmCache *c, int k, const struct dxBody *b0,
+                                  const struct dxBody *b1, const dReal *point, const dReal *n)
+{
     warm_point *e = &c->cur[k];
-    qs_warm_entry *pend = &c->pending[k];
-    pend->b0 = b0;
-    dCopyVector3(pend->t1, t1);
-    dCopyVector3(pend->t2, t2);
+    dReal reach2, r2 = 0;   // the lever arms, squared
+#if defined(__GNUC__)
+    const warm_v4 a = load4(point) - load4(b0->pos);   // (the fourth: whatever)
+    to_body4_v(e->p, b0->R, a);
+    const warm_v4 aa = a * a;
+    reach2 = aa[0] + aa[1] + aa[2];
+    if (b1) {
+        const warm_v4 a1 = load4(point) - load4(b1->pos), bb = a1 * a1;
+        r2 = bb[0] + bb[1] + bb[2];
+    }
+#else
     dVector3 arm;
     dSubtractVectors3(arm, point, b0->pos);
-    to_body(e->p, b0->R, arm);
-    to_body(e->n, b0->R, n);
-    *found = 0;
-    if (!c->match) return pend;
-    dReal reach2 = dCalcVectorDot3(arm, arm);   // the longer lever arm, squared
+    to_body4(e->p, b0->R, arm);
+    reach2 = dCalcVectorDot3(arm, arm);
     if (b1) {
         dVector3 arm1;
         dSubtractVectors3(arm1, point, b1->pos);
-        const dReal r2 = dCalcVectorDot3(arm1, arm1);
-        if (r2 > reach2) reach2 = r2;
+        r2 = dCalcVectorDot3(arm1, arm1);
     }
-    const warm_point *old = find(c, c->match, e->p, e->n, WARM_TOL * WARM_TOL * reach2);
-    if (!old) return pend;
-    *found = 1;
-    *ln = old->ln;
-    to_world(f, b0->R, old->f);   // back to the world frame
+#endif
+    // The normal's four numbers over n and ln (ln is set at the end).
+    to_body4((dReal *)((char *)e + offsetof(warm_point, n)), b0->R, n);
+    const warm_pair *q = c->match;
+    if (!q) return NULL;
+    if (r2 > reach2) reach2 = r2;
+    const dReal tol2 = WARM_TOL * WARM_TOL * reach2;
+    // The quick match: from the guess on through the pair's first old run.
+    const int i = k - c->run->first, count = q->count;
+    const warm_point *first = c->old + q->first;
+    int j = i + c->shift;   // (the shift is 0 at a run's start)
+    if (j >= count) j -= count;
+    for (int left = j < count ? count : 0; left > 0; left--) {
+        const warm_point *o = first + j;
+        const dReal d2 = dist2(o->p, e->p);
+        if (d2 <= tol2 && 9 * d2 < q->iso &&
+            !(o->n[0] * e->n[0] + o->n[1] * e->n[1] + o->n[2] * e->n[2] < WARM_COS)) {
+            c->shift = j >= i ? j - i : j - i + count;
+            return o;
+        }
+        if (++j == count) j = 0;
+    }
+    return find(c, q, e->p, e->n, tol2);
+}
+
+WARM_CLONES qs_warm_entry *dxQuickWarmContact(dxWarmCache *c, const struct dxBody *b0,
+                                              const struct dxBody *b1, const dReal *point,
+                                              const dReal *n, const dReal *t1, const dReal *t2,
+                                              int *found, dReal *ln, dReal *f)
+{
+    const int k = enter(c, b0, b1);
+    qs_warm_entry *pend = &c->pending[k];
+    dCopyVector3(pend->t1, t1);
+    dCopyVector3(pend->t2, t2);
+    pend->t1[3] = pend->t2[3] = 0;
+    const dVector3 p4 = { point[0], point[1], point[2], 0 }, n4 = { n[0], n[1], n[2], 0 };
+    const warm_point *old = match(c, k, b0, b1, p4, n4);
+    *found = old != NULL;
+    if (old) {
+        *ln = old->ln;
+        to_world(f, b0->R, old->f);   // back to the world frame
+    }
     return pend;
+}
+
+WARM_CLONES int dxQuickWarmContactRows(dxWarmCache *c, const struct dxBody *b0,
+                                       const struct dxBody *b1, const dxContactRows *r,
+                                       int first, dReal f[4])
+{
+    static const dReal zero[4] = { 0, 0, 0, 0 };
+    const int k = enter(c, b0, b1);
+    qs_warm_entry *pend = &c->pending[k];
+    // The friction rows follow the normal row, t1's first (r->friction).
+    const int t1 = r->friction & 1, t2 = r->friction & 2;
+    pend->pos[0] = first;
+    pend->pos[1] = t1 ? first + 1 : -1;
+    pend->pos[2] = t2 ? first + 1 + t1 : -1;
+    memcpy(pend->t1, t1 ? r->t1 : zero, sizeof pend->t1);   // (r's fourths are 0)
+    memcpy(pend->t2, t2 ? r->t2 : zero, sizeof pend->t2);
+    const warm_point *old = match(c, k, b0, b1, r->point, r->n);
+    if (!old) return 0;
+    // Back to the world frame: R's columns times f's numbers, the same
+    // operations as to_world.
+#if defined(__GNUC__)
+    if (c->cols_of != c->run) {   // R's columns, once a run
+        const dReal *R = b0->R;
+        for (int i = 0; i < 3; i++) {
+            c->cols[i][0] = R[i];
+            c->cols[i][1] = R[4 + i];
+            c->cols[i][2] = R[8 + i];
+            c->cols[i][3] = 0;
+        }
+        c->cols_of = c->run;
+    }
+    const warm_v4 F = load4(old->f);
+    const warm_v4 x = load4(c->cols[0]) * __builtin_shufflevector(F, F, 0, 0, 0, 0) +
+                      load4(c->cols[1]) * __builtin_shufflevector(F, F, 1, 1, 1, 1) +
+                      load4(c->cols[2]) * __builtin_shufflevector(F, F, 2, 2, 2, 2);
+    memcpy(f, &x, sizeof x);
+#else
+    to_world(f, b0->R, old->f);
+#endif
+    f[3] = old->ln;
+    return 1;
 }
 
 void dxQuickWarmPositions(qs_warm_entry *e, const int pos[3])
@@ -310,15 +556,25 @@ void dxQuickWarmPositions(qs_warm_entry *e, const int pos[3])
 WARM_CLONES void dxQuickWarmEnd(struct dxWorld *w, dxWarmCache *c, const dReal *lambda)
 {
     if (!c) return;
-    for (int k = 0; k < c->ncur; k++) {
-        const qs_warm_entry *pend = &c->pending[k];
-        warm_point *e = &c->cur[k];
-        const dReal l1 = pend->pos[1] >= 0 ? lambda[pend->pos[1]] : 0;
-        const dReal l2 = pend->pos[2] >= 0 ? lambda[pend->pos[2]] : 0;
-        e->ln = lambda[pend->pos[0]];
-        dVector3 fw;   // into b0's frame (the bodies have not moved yet)
-        for (int i = 0; i < 3; i++) fw[i] = l1 * pend->t1[i] + l2 * pend->t2[i];
-        to_body(e->f, pend->b0->R, fw);
+    // Each run's forces into its first body's frame (the bodies have not
+    // moved yet).
+    for (const warm_pair *q = c->cur_pairs, *qend = q + c->ncur_pairs; q < qend; q++) {
+        const dReal *R = q->b0->R;
+        for (int k = q->first, kend = k + q->count; k < kend; k++) {
+            const qs_warm_entry *pend = &c->pending[k];
+            warm_point *e = &c->cur[k];
+            const dReal l1 = pend->pos[1] >= 0 ? lambda[pend->pos[1]] : 0;
+            const dReal l2 = pend->pos[2] >= 0 ? lambda[pend->pos[2]] : 0;
+            e->ln = lambda[pend->pos[0]];
+#if defined(__GNUC__)
+            const warm_v4 L1 = { l1, l1, l1, l1 }, L2 = { l2, l2, l2, l2 };
+            to_body4_v(e->f, R, L1 * load4(pend->t1) + L2 * load4(pend->t2));
+#else
+            dVector3 fw;
+            for (int i = 0; i < 3; i++) fw[i] = l1 * pend->t1[i] + l2 * pend->t2[i];
+            to_body4(e->f, R, fw);
+#endif
+        }
     }
     // Swap, and index the new old runs by body pair.
     warm_point *t = c->old;
