@@ -71,6 +71,7 @@ static void clear_derived(dxTriMeshData *d)
         dFree(d->normal, 3 * n * sizeof(dReal));
         dFree(d->neighbour, 3 * n * sizeof(int));
         dFree(d->welded, 3 * n * sizeof(int));
+        dFree(d->open_edges, n);
         dFree(d->features, n);
         dFree(d->order, n * sizeof(int));
         dxTriMeshFreeTree(d);
@@ -81,6 +82,7 @@ static void clear_derived(dxTriMeshData *d)
     d->normal = NULL;
     d->neighbour = NULL;
     d->welded = NULL;
+    d->open_edges = NULL;
     d->features = NULL;
     d->order = NULL;
     d->leaf_vertices = NULL;
@@ -294,8 +296,8 @@ static int far_corner(const int uidx[3], int a, int b)
 
 // Neighbours across edges: two triangles sharing the (welded) vertices of
 // an edge (an edge of more than two triangles has none), each such edge
-// listed once in edges[] (in the order of its ends); and the vertices'
-// neighbours. These depend on the weld and the indices only: an Update
+// listed once in edges[] (in the order of its ends), the others in
+// open_edges[]; and the vertices' neighbours. These depend on the weld and the indices only: an Update
 // whose weld is the build's keeps them.
 static void compute_neighbours(dxTriMeshData *d)
 {
@@ -341,8 +343,13 @@ static void compute_neighbours(dxTriMeshData *d)
     compute_vertex_adjacency(d, e, n);
     dFree(e, n * sizeof *e);
     d->closed = 1;
-    for (size_t i = 0; i < n; i++)
-        if (d->neighbour[i] < 0) d->closed = 0;
+    for (int t = 0; t < d->tri_count; t++) {
+        const int *u = d->neighbour + 3 * t;
+        d->open_edges[t] = (unsigned char)((u[0] < 0) * DX_TRI_EDGE_FEATURE |
+                                           (u[1] < 0) * (DX_TRI_EDGE_FEATURE << 1) |
+                                           (u[2] < 0) * (DX_TRI_EDGE_FEATURE << 2));
+        if (d->open_edges[t]) d->closed = 0;
+    }
 }
 
 // A bit of features[] while they are derived: the triangle has no area.
@@ -375,14 +382,11 @@ static void compute_normals(dxTriMeshData *d, const dReal *pos, unsigned char *m
         dReal len = dCalcVectorLength3(n);
         dReal scale = dCalcVectorLength3(a) * dCalcVectorLength3(b);
         dReal *out = d->normal + 3 * t;
-        const int *u = d->neighbour + 3 * t;
         if (len > 0 && len > scale * (dReal)1e-12 && dxIsFinite(len)) {
             for (int k = 0; k < 3; k++) out[k] = n[k] / len;
-            unsigned border = (u[0] < 0) * DX_TRI_EDGE_FEATURE |
-                              (u[1] < 0) * (DX_TRI_EDGE_FEATURE << 1) |
-                              (u[2] < 0) * (DX_TRI_EDGE_FEATURE << 2);
-            d->features[t] = (unsigned char)border;
-            if (border) mark_edge_ends(d, t, border, mark);
+            const unsigned open = d->open_edges[t];
+            d->features[t] = (unsigned char)open;
+            if (open) mark_edge_ends(d, t, open, mark);
         } else {
             out[0] = out[1] = out[2] = 0;
             d->features[t] = DEGENERATE | 7 * DX_TRI_EDGE_FEATURE;
@@ -502,6 +506,7 @@ static void build_checked(const char *fn, dxTriMeshData *d, const void *vertices
     d->normal = (dReal *)dAlloc(3 * n * sizeof(dReal));
     d->neighbour = (int *)dAlloc(3 * n * sizeof(int));
     d->welded = (int *)dAlloc(3 * n * sizeof(int));
+    d->open_edges = (unsigned char *)dAlloc(n);
     d->features = (unsigned char *)dAlloc(n);
     d->weld = (int *)dAlloc((size_t)vertex_count * sizeof(int));
     derive(d, &s, 0);

@@ -102,6 +102,8 @@ struct dxTriMeshData {
     int vertex_adj_count;
     int *neighbour;                       // 3 per triangle: across edge k, or -1
     int *welded;                          // 3 per triangle: its vertices welded
+    unsigned char *open_edges;            // per triangle: the edges k without a
+                                          // neighbour (DX_TRI_EDGE_FEATURE << k)
     struct dxTriMeshEdge *edges;          // the edges with two triangles, once
     int edge_count;
     int closed;                           // every edge has a neighbour

@@ -142,6 +142,7 @@ static int check_same_derived(const dxTriMeshData *a, const dxTriMeshData *b)
     CHECK(memcmp(a->features, b->features, (size_t)n) == 0);
     CHECK(same_ints(a->neighbour, b->neighbour, 3 * n));
     CHECK(same_ints(a->welded, b->welded, 3 * n));
+    CHECK(memcmp(a->open_edges, b->open_edges, (size_t)n) == 0);
     CHECK(same_ints(a->weld, b->weld, a->vertex_count));
     CHECK(a->closed == b->closed);
     CHECK(a->edge_count == b->edge_count);
