@@ -5,9 +5,14 @@
 // across edges and which edges and vertices are real features, the extra
 // data (Set / Get / Preprocess) and Update.
 
+#include <float.h>
 #include <ode/memory.h>
 #include <stdlib.h>
 #include <string.h>
+
+#if defined(__SSE2__) && !defined(dSINGLE)
+#include <emmintrin.h>
+#endif
 
 #include "trimesh_internal.h"
 
@@ -365,34 +370,90 @@ static inline void mark_edge_ends(const dxTriMeshData *d, int t, unsigned bits,
     if (bits & DX_TRI_EDGE_FEATURE << 2) mark[idx[2]] = mark[idx[0]] = 1;
 }
 
-// Unit face normals (zero for triangles without area), from the welded
-// vertices (the triangle's own: they are at the same positions); and
-// features[] started: the edges without a neighbour, or all three and
-// DEGENERATE for a triangle without area (their ends marked in mark[]).
+// Triangle t's normal has been found (unit, or none: 0): its features[]
+// started with the edges without a neighbour, or all three and DEGENERATE
+// for a triangle without area; those edges' ends marked in mark[].
+static inline void start_features(dxTriMeshData *d, int t, int has_area, unsigned char *mark)
+{
+    const unsigned bits = has_area ? d->open_edges[t] : 7 * DX_TRI_EDGE_FEATURE;
+    d->features[t] = (unsigned char)(has_area ? bits : DEGENERATE | bits);
+    if (bits) mark_edge_ends(d, t, bits, mark);
+}
+
+// Triangle t's unit normal (zero without area): the cross product of the
+// sides from corner 0, n = a x b, over its length, if that is above
+// |a| |b| 1e-12 and finite; from the welded vertices (the triangle's own:
+// they are at the same positions).
+static void triangle_normal(dxTriMeshData *d, const dReal *pos, int t, unsigned char *mark)
+{
+    const int *idx = d->welded + 3 * t;
+    const dReal *v0 = pos + 3 * idx[0], *v1 = pos + 3 * idx[1], *v2 = pos + 3 * idx[2];
+    dVector3 a, b, n;
+    dSubtractVectors3(a, v1, v0);
+    dSubtractVectors3(b, v2, v0);
+    dCalcVectorCross3(n, a, b);
+    dReal len = dCalcVectorLength3(n);
+    dReal scale = dCalcVectorLength3(a) * dCalcVectorLength3(b);
+    dReal *out = d->normal + 3 * t;
+    const int has_area = len > 0 && len > scale * (dReal)1e-12 && dxIsFinite(len);
+    for (int k = 0; k < 3; k++) out[k] = has_area ? n[k] / len : 0;
+    start_features(d, t, has_area, mark);
+}
+
+#if defined(__SSE2__) && !defined(dSINGLE)
+// Triangles t and t + 1 as triangle_normal, one in each lane: the same
+// operations in the same order, so the same bits (a lane without area
+// computes 0 / 0 and is cleared).
+static void triangle_normals2(dxTriMeshData *d, const dReal *pos, int t, unsigned char *mark)
+{
+    const int *i0 = d->welded + 3 * t, *i1 = i0 + 3;
+    __m128d v[3][3];   // corner, axis; lane 0 triangle t, lane 1 t + 1
+    for (int c = 0; c < 3; c++)
+        for (int k = 0; k < 3; k++)
+            v[c][k] = _mm_loadh_pd(_mm_load_sd(pos + 3 * i0[c] + k), pos + 3 * i1[c] + k);
+    __m128d a[3], b[3];
+    for (int k = 0; k < 3; k++) {
+        a[k] = _mm_sub_pd(v[1][k], v[0][k]);
+        b[k] = _mm_sub_pd(v[2][k], v[0][k]);
+    }
+    __m128d n0 = _mm_sub_pd(_mm_mul_pd(a[1], b[2]), _mm_mul_pd(a[2], b[1]));
+    __m128d n1 = _mm_sub_pd(_mm_mul_pd(a[2], b[0]), _mm_mul_pd(a[0], b[2]));
+    __m128d n2 = _mm_sub_pd(_mm_mul_pd(a[0], b[1]), _mm_mul_pd(a[1], b[0]));
+    __m128d len = _mm_sqrt_pd(_mm_add_pd(_mm_add_pd(_mm_mul_pd(n0, n0), _mm_mul_pd(n1, n1)),
+                                         _mm_mul_pd(n2, n2)));
+    __m128d la = _mm_sqrt_pd(_mm_add_pd(_mm_add_pd(_mm_mul_pd(a[0], a[0]), _mm_mul_pd(a[1], a[1])),
+                                        _mm_mul_pd(a[2], a[2])));
+    __m128d lb = _mm_sqrt_pd(_mm_add_pd(_mm_add_pd(_mm_mul_pd(b[0], b[0]), _mm_mul_pd(b[1], b[1])),
+                                        _mm_mul_pd(b[2], b[2])));
+    __m128d scale = _mm_mul_pd(la, lb);
+    // len > 0, len > scale 1e-12 and finite (len is not negative: finite
+    // is at most DBL_MAX; NaN fails every comparison).
+    __m128d area = _mm_and_pd(_mm_cmpgt_pd(len, _mm_setzero_pd()),
+                              _mm_and_pd(_mm_cmpgt_pd(len, _mm_mul_pd(scale, _mm_set1_pd(1e-12))),
+                                         _mm_cmple_pd(len, _mm_set1_pd(DBL_MAX))));
+    n0 = _mm_and_pd(_mm_div_pd(n0, len), area);
+    n1 = _mm_and_pd(_mm_div_pd(n1, len), area);
+    n2 = _mm_and_pd(_mm_div_pd(n2, len), area);
+    dReal *out = d->normal + 3 * t;   // x y z of t, then of t + 1
+    _mm_storeu_pd(out, _mm_unpacklo_pd(n0, n1));
+    _mm_storeu_pd(out + 2, _mm_shuffle_pd(n2, n0, 2));
+    _mm_storeu_pd(out + 4, _mm_unpackhi_pd(n1, n2));
+    const int lanes = _mm_movemask_pd(area);
+    start_features(d, t, lanes & 1, mark);
+    start_features(d, t + 1, lanes >> 1, mark);
+}
+#endif
+
+// Every triangle's normal (triangle_normal) and the start of its
+// features (start_features); two at a time with SSE2 in double.
 static void compute_normals(dxTriMeshData *d, const dReal *pos, unsigned char *mark)
 {
     memset(mark, 0, (size_t)d->vertex_count);
-    for (int t = 0; t < d->tri_count; t++) {
-        const int *idx = d->welded + 3 * t;
-        const dReal *v0 = pos + 3 * idx[0], *v1 = pos + 3 * idx[1], *v2 = pos + 3 * idx[2];
-        dVector3 a, b, n;
-        dSubtractVectors3(a, v1, v0);
-        dSubtractVectors3(b, v2, v0);
-        dCalcVectorCross3(n, a, b);
-        dReal len = dCalcVectorLength3(n);
-        dReal scale = dCalcVectorLength3(a) * dCalcVectorLength3(b);
-        dReal *out = d->normal + 3 * t;
-        if (len > 0 && len > scale * (dReal)1e-12 && dxIsFinite(len)) {
-            for (int k = 0; k < 3; k++) out[k] = n[k] / len;
-            const unsigned open = d->open_edges[t];
-            d->features[t] = (unsigned char)open;
-            if (open) mark_edge_ends(d, t, open, mark);
-        } else {
-            out[0] = out[1] = out[2] = 0;
-            d->features[t] = DEGENERATE | 7 * DX_TRI_EDGE_FEATURE;
-            mark_edge_ends(d, t, 7 * DX_TRI_EDGE_FEATURE, mark);
-        }
-    }
+    int t = 0;
+#if defined(__SSE2__) && !defined(dSINGLE)
+    for (; t + 2 <= d->tri_count; t += 2) triangle_normals2(d, pos, t, mark);
+#endif
+    for (; t < d->tri_count; t++) triangle_normal(d, pos, t, mark);
 }
 
 // Which edges and vertices are features (trimesh_internal.h): an edge is one

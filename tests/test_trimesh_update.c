@@ -217,11 +217,12 @@ static int check_tree_fits(const dxTriMeshData *d)
 
 // The normals and feature bits of d against the rule, worked out by brute
 // force (every pair of vertices compared for the weld, every triangle
-// searched for the neighbour): a normal is the unit cross product of the
-// sides (or 0); an edge is a feature unless exactly one other triangle
-// has it, both have area and the other's far corner lies on or over this
-// face's plane or the faces are coplanar; a vertex is one if an edge
-// of a triangle at it is.
+// searched for the neighbour): a normal is the cross product of the sides
+// from corner 0 over its length, to the bit (or 0 if that length is not
+// above 1e-12 times the sides' lengths' product); an edge is a feature
+// unless exactly one other triangle has it, both have area and the
+// other's far corner lies on or over this face's plane or the faces are
+// coplanar; a vertex is one if an edge of a triangle at it is.
 static int check_features_by_rule(const dxTriMeshData *d)
 {
     int nv = d->vertex_count, nt = d->tri_count;
@@ -249,10 +250,11 @@ static int check_features_by_rule(const dxTriMeshData *d)
         }
         dCalcVectorCross3(n, a, b);
         dReal len = dCalcVectorLength3(n);
+        dReal scale = dCalcVectorLength3(a) * dCalcVectorLength3(b);
+        int has_area = len > 0 && len > scale * (dReal)1e-12 && isfinite(len);
         const dReal *dn = d->normal + 3 * t;
-        if (dxTriMeshIsDegenerate(d, t)) fail |= len > 1e-6 * dCalcVectorLength3(a) * dCalcVectorLength3(b);
-        else
-            for (int k = 0; k < 3; k++) fail |= fabs(dn[k] - n[k] / len) > 1e-6;
+        fail |= dxTriMeshIsDegenerate(d, t) == has_area;
+        for (int k = 0; k < 3 && has_area; k++) fail |= dn[k] != n[k] / len;   // the same bits
     }
     for (int t = 0; t < nt && !fail; t++)
         for (int k = 0; k < 3; k++) {
