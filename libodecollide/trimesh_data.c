@@ -63,7 +63,8 @@ static void clear_adjacency(dxTriMeshData *d)
     d->edges = NULL;
     d->edge_count = 0;
     if (d->vertex_first) dFree(d->vertex_first, ((size_t)d->vertex_count + 1) * sizeof(int));
-    if (d->vertex_adj) dFree(d->vertex_adj, (size_t)d->vertex_adj_count * sizeof(int) + sizeof(int));
+    if (d->vertex_adj)
+        dFree(d->vertex_adj, (size_t)d->vertex_adj_count * sizeof(int) + sizeof(int));
     d->vertex_first = d->vertex_adj = NULL;
     d->vertex_adj_count = 0;
 }
@@ -302,8 +303,8 @@ static int far_corner(const int uidx[3], int a, int b)
 // Neighbours across edges: two triangles sharing the (welded) vertices of
 // an edge (an edge of more than two triangles has none), each such edge
 // listed once in edges[] (in the order of its ends), the others in
-// open_edges[]; and the vertices' neighbours. These depend on the weld and the indices only: an Update
-// whose weld is the build's keeps them.
+// open_edges[]; and the vertices' neighbours. These depend on the weld
+// and the indices only: an Update whose weld is the build's keeps them.
 static void compute_neighbours(dxTriMeshData *d)
 {
     size_t n = 3 * (size_t)d->tri_count;
