@@ -5,9 +5,14 @@
 // across edges and which edges and vertices are real features, the extra
 // data (Set / Get / Preprocess) and Update.
 
+#include <float.h>
 #include <ode/memory.h>
 #include <stdlib.h>
 #include <string.h>
+
+#if defined(__SSE2__) && !defined(dSINGLE)
+#include <emmintrin.h>
+#endif
 
 #include "trimesh_internal.h"
 
@@ -51,6 +56,19 @@ void dxTriMeshReserveInts(int **a, int *cap, int n)
 
 // ---- derived data ----------------------------------------------------------
 
+// Free what the weld decides (shared edges, vertex adjacency).
+static void clear_adjacency(dxTriMeshData *d)
+{
+    if (d->edges) dFree(d->edges, (size_t)d->edge_count * sizeof *d->edges + sizeof *d->edges);
+    d->edges = NULL;
+    d->edge_count = 0;
+    if (d->vertex_first) dFree(d->vertex_first, ((size_t)d->vertex_count + 1) * sizeof(int));
+    if (d->vertex_adj)
+        dFree(d->vertex_adj, (size_t)d->vertex_adj_count * sizeof(int) + sizeof(int));
+    d->vertex_first = d->vertex_adj = NULL;
+    d->vertex_adj_count = 0;
+}
+
 // Free what was derived from the arrays (the data keeps no triangles).
 static void clear_derived(dxTriMeshData *d)
 {
@@ -58,16 +76,19 @@ static void clear_derived(dxTriMeshData *d)
     if (n > 0) {
         dFree(d->normal, 3 * n * sizeof(dReal));
         dFree(d->neighbour, 3 * n * sizeof(int));
+        dFree(d->welded, 3 * n * sizeof(int));
+        dFree(d->open_edges, n);
         dFree(d->features, n);
         dFree(d->order, n * sizeof(int));
         dxTriMeshFreeTree(d);
         if (d->built_flags) dFree(d->built_flags, n);
         dFree(d->weld, (size_t)d->vertex_count * sizeof(int));
-        dFree(d->vertex_first, ((size_t)d->vertex_count + 1) * sizeof(int));
-        dFree(d->vertex_adj, (size_t)d->vertex_adj_count * sizeof(int) + sizeof(int));
+        clear_adjacency(d);
     }
     d->normal = NULL;
     d->neighbour = NULL;
+    d->welded = NULL;
+    d->open_edges = NULL;
     d->features = NULL;
     d->order = NULL;
     d->leaf_vertices = NULL;
@@ -85,24 +106,113 @@ static void clear_derived(dxTriMeshData *d)
     d->user_flags = NULL;
 }
 
-// Unit face normals (zero for triangles without area).
-static void compute_normals(dxTriMeshData *d)
+// Working memory of a build or an Update: every vertex in dReal (pos, 3 a
+// vertex, read by index without the user's stride and type), an open
+// hash table of vertex indices by position (slot, -1 free; a power of two
+// at least twice the vertices) and a byte a vertex (mark).
+typedef struct derive_scratch {
+    dReal *pos;
+    int *slot;
+    unsigned char *mark;
+    size_t slots;
+} derive_scratch;
+
+static void scratch_alloc(derive_scratch *s, int vertex_count)
+{
+    size_t n = (size_t)vertex_count;
+    s->slots = 2;
+    while (s->slots < 2 * n) s->slots *= 2;
+    s->pos = (dReal *)dAlloc(3 * n * sizeof(dReal) + sizeof(dReal));
+    s->slot = (int *)dAlloc(s->slots * sizeof(int));
+    s->mark = (unsigned char *)dAlloc(n + 1);
+}
+
+static void scratch_free(derive_scratch *s, int vertex_count)
+{
+    size_t n = (size_t)vertex_count;
+    dFree(s->pos, 3 * n * sizeof(dReal) + sizeof(dReal));
+    dFree(s->slot, s->slots * sizeof(int));
+    dFree(s->mark, n + 1);
+}
+
+// Every vertex into pos; 1 if all are finite, else 0 with the first bad
+// index in *bad.
+static int load_positions(const dxTriMeshData *d, dReal *pos, int *bad)
+{
+    const char *p = (const char *)d->vertices;
+    const size_t stride = (size_t)d->vertex_stride;
+    for (int i = 0; i < d->vertex_count; i++, p += stride) {
+        dReal *out = pos + 3 * i;
+        if (d->vertex_double) {
+            double v[3];
+            memcpy(v, p, sizeof v);
+            for (int k = 0; k < 3; k++) out[k] = (dReal)v[k];
+        } else {
+            float v[3];
+            memcpy(v, p, sizeof v);
+            for (int k = 0; k < 3; k++) out[k] = (dReal)v[k];
+        }
+        if (!dxIsFinite3(out[0], out[1], out[2])) {
+            *bad = i;
+            return 0;
+        }
+    }
+    return 1;
+}
+
+#ifdef dSINGLE
+typedef uint32_t real_bits;
+#else
+typedef uint64_t real_bits;
+#endif
+
+// A hash of a position in which -0 and +0 agree (they weld: == holds).
+static size_t position_hash(const dReal p[3])
+{
+    uint64_t h = 0;
+    for (int k = 0; k < 3; k++) {
+        dReal x = p[k] + (dReal)0;   // -0 + 0 is +0
+        real_bits b;
+        memcpy(&b, &x, sizeof b);
+        h = (h ^ (uint64_t)b) * 0x9e3779b97f4a7c15ull;
+    }
+    return (size_t)(h ^ (h >> 29));
+}
+
+// weld[i]: the first vertex at exactly the position of vertex i (a hash
+// of the positions, vertices entered in index order), so that meshes with
+// repeated vertices (per face, for normals or texture coordinates) still
+// know their neighbours. With check set, weld[] is compared instead of
+// written: 0 at the first vertex whose first is not weld[i], else 1.
+static int weld_positions(const dxTriMeshData *d, const derive_scratch *s, int *weld, int check)
+{
+    const size_t mask = s->slots - 1;
+    memset(s->slot, 0xff, s->slots * sizeof(int));
+    for (int i = 0; i < d->vertex_count; i++) {
+        const dReal *p = s->pos + 3 * i;
+        size_t h = position_hash(p) & mask;
+        int first = i;
+        for (; s->slot[h] >= 0; h = (h + 1) & mask) {
+            const dReal *q = s->pos + 3 * s->slot[h];
+            if (q[0] == p[0] && q[1] == p[1] && q[2] == p[2]) {
+                first = s->slot[h];
+                break;
+            }
+        }
+        if (first == i) s->slot[h] = i;
+        if (!check) weld[i] = first;
+        else if (weld[i] != first) return 0;
+    }
+    return 1;
+}
+
+// The welded vertex indices of every triangle (3 a triangle).
+static void compute_welded(dxTriMeshData *d)
 {
     for (int t = 0; t < d->tri_count; t++) {
-        dReal v[3][3];
-        dxTriMeshTriangle(d, t, v);
-        dVector3 a, b, n;
-        dSubtractVectors3(a, v[1], v[0]);
-        dSubtractVectors3(b, v[2], v[0]);
-        dCalcVectorCross3(n, a, b);
-        dReal len = dCalcVectorLength3(n);
-        dReal scale = dCalcVectorLength3(a) * dCalcVectorLength3(b);
-        dReal *out = d->normal + 3 * t;
-        if (len > 0 && len > scale * (dReal)1e-12 && dxIsFinite(len)) {
-            for (int k = 0; k < 3; k++) out[k] = n[k] / len;
-        } else {
-            out[0] = out[1] = out[2] = 0;
-        }
+        int *idx = d->welded + 3 * t;
+        dxTriMeshIndices(d, t, idx);
+        for (int k = 0; k < 3; k++) idx[k] = d->weld[idx[k]];
     }
 }
 
@@ -150,46 +260,6 @@ static void sort_edges(const edge_key *e, size_t n, int vertex_count, edge_key *
     dFree(start, ((size_t)vertex_count + 1) * sizeof(size_t));
 }
 
-typedef struct vertex_key {
-    dReal p[3];
-    int i;
-} vertex_key;
-
-static int compare_vertices(const void *pa, const void *pb)
-{
-    const vertex_key *a = pa, *b = pb;
-    for (int k = 0; k < 3; k++)
-        if (a->p[k] != b->p[k]) return a->p[k] < b->p[k] ? -1 : 1;
-    return a->i < b->i ? -1 : a->i > b->i;
-}
-
-// weld[i]: the first vertex at exactly the position of vertex i, so that
-// meshes with repeated vertices (per face, for normals or texture
-// coordinates) still know their neighbours.
-static void compute_weld(dxTriMeshData *d)
-{
-    size_t n = (size_t)d->vertex_count;
-    vertex_key *v = (vertex_key *)dAlloc(n * sizeof *v);
-    for (int i = 0; i < d->vertex_count; i++) {
-        dxTriMeshVertex(d, i, v[i].p);
-        v[i].i = i;
-    }
-    qsort(v, n, sizeof *v, compare_vertices);
-    for (size_t i = 0; i < n; i++) {
-        int same = i > 0 && v[i].p[0] == v[i - 1].p[0] && v[i].p[1] == v[i - 1].p[1] &&
-                   v[i].p[2] == v[i - 1].p[2];
-        d->weld[v[i].i] = same ? d->weld[v[i - 1].i] : v[i].i;
-    }
-    dFree(v, n * sizeof *v);
-}
-
-// The welded vertex indices of triangle t.
-static void welded_indices(const dxTriMeshData *d, int t, int idx[3])
-{
-    dxTriMeshIndices(d, t, idx);
-    for (int k = 0; k < 3; k++) idx[k] = d->weld[idx[k]];
-}
-
 // The vertices joined to each (welded) vertex by an edge, from the edges
 // sorted by their ends (CSR: vertex_adj[vertex_first[v] .. vertex_first[v + 1])).
 static void compute_vertex_adjacency(dxTriMeshData *d, const edge_key *e, size_t n)
@@ -220,16 +290,27 @@ static void compute_vertex_adjacency(dxTriMeshData *d, const edge_key *e, size_t
     d->vertex_adj_count = 2 * unique;
 }
 
+// The corner of triangle uidx (welded indices) across the edge a-b: the
+// last one that is neither end, or corner 0 if none is.
+static int far_corner(const int uidx[3], int a, int b)
+{
+    int far = 0;
+    for (int m = 0; m < 3; m++)
+        if (uidx[m] != a && uidx[m] != b) far = m;
+    return far;
+}
+
 // Neighbours across edges: two triangles sharing the (welded) vertices of
-// an edge (an edge of more than two triangles has none); and the vertices'
-// neighbours.
+// an edge (an edge of more than two triangles has none), each such edge
+// listed once in edges[] (in the order of its ends), the others in
+// open_edges[]; and the vertices' neighbours. These depend on the weld
+// and the indices only: an Update whose weld is the build's keeps them.
 static void compute_neighbours(dxTriMeshData *d)
 {
     size_t n = 3 * (size_t)d->tri_count;
     edge_key *unsorted = (edge_key *)dAlloc(n * sizeof *unsorted);
     for (int t = 0; t < d->tri_count; t++) {
-        int idx[3];
-        welded_indices(d, t, idx);
+        const int *idx = d->welded + 3 * t;
         for (int k = 0; k < 3; k++) {
             int a = idx[k], b = idx[(k + 1) % 3];
             unsorted[3 * t + k] = (edge_key){ a < b ? a : b, a < b ? b : a, t, k };
@@ -239,80 +320,197 @@ static void compute_neighbours(dxTriMeshData *d)
     edge_key *e = (edge_key *)dAlloc(n * sizeof *e);
     sort_edges(unsorted, n, d->vertex_count, e);
     dFree(unsorted, n * sizeof *unsorted);
-    for (size_t i = 0; i < n;) {
-        size_t j = i + 1;
-        while (j < n && e[j].lo == e[i].lo && e[j].hi == e[i].hi) j++;
-        if (j - i == 2 && e[i].tri != e[i + 1].tri) {
-            d->neighbour[3 * e[i].tri + e[i].k] = e[i + 1].tri;
-            d->neighbour[3 * e[i + 1].tri + e[i + 1].k] = e[i].tri;
+    clear_adjacency(d);
+    for (int pass = 0; pass < 2; pass++) {   // count the shared edges, then list them
+        int count = 0;
+        for (size_t i = 0; i < n;) {
+            size_t j = i + 1;
+            while (j < n && e[j].lo == e[i].lo && e[j].hi == e[i].hi) j++;
+            if (j - i == 2 && e[i].tri != e[i + 1].tri) {
+                const edge_key *x = &e[i], *y = &e[i + 1];
+                if (pass == 1) {
+                    d->neighbour[3 * x->tri + x->k] = y->tri;
+                    d->neighbour[3 * y->tri + y->k] = x->tri;
+                    d->edges[count] = (dxTriMeshEdge){
+                        x->tri, y->tri, (unsigned char)x->k, (unsigned char)y->k,
+                        (unsigned char)far_corner(d->welded + 3 * x->tri, x->lo, x->hi),
+                        (unsigned char)far_corner(d->welded + 3 * y->tri, x->lo, x->hi) };
+                }
+                count++;
+            }
+            i = j;
         }
-        i = j;
+        if (pass == 0) {
+            d->edge_count = count;
+            d->edges = (dxTriMeshEdge *)dAlloc((size_t)count * sizeof *d->edges +
+                                               sizeof *d->edges);
+        }
     }
     compute_vertex_adjacency(d, e, n);
     dFree(e, n * sizeof *e);
     d->closed = 1;
-    for (size_t i = 0; i < n; i++)
-        if (d->neighbour[i] < 0) d->closed = 0;
+    for (int t = 0; t < d->tri_count; t++) {
+        const int *u = d->neighbour + 3 * t;
+        d->open_edges[t] = (unsigned char)((u[0] < 0) * DX_TRI_EDGE_FEATURE |
+                                           (u[1] < 0) * (DX_TRI_EDGE_FEATURE << 1) |
+                                           (u[2] < 0) * (DX_TRI_EDGE_FEATURE << 2));
+        if (d->open_edges[t]) d->closed = 0;
+    }
+}
+
+// A bit of features[] while they are derived: the triangle has no area.
+enum { DEGENERATE = 0x80 };
+
+// Mark the ends of triangle t's feature edges (bits) in mark[].
+static inline void mark_edge_ends(const dxTriMeshData *d, int t, unsigned bits,
+                                  unsigned char *mark)
+{
+    const int *idx = d->welded + 3 * t;
+    if (bits & DX_TRI_EDGE_FEATURE) mark[idx[0]] = mark[idx[1]] = 1;
+    if (bits & DX_TRI_EDGE_FEATURE << 1) mark[idx[1]] = mark[idx[2]] = 1;
+    if (bits & DX_TRI_EDGE_FEATURE << 2) mark[idx[2]] = mark[idx[0]] = 1;
+}
+
+// Triangle t's normal has been found (unit, or none: 0): its features[]
+// started with the edges without a neighbour, or all three and DEGENERATE
+// for a triangle without area; those edges' ends marked in mark[].
+static inline void start_features(dxTriMeshData *d, int t, int has_area, unsigned char *mark)
+{
+    const unsigned bits = has_area ? d->open_edges[t] : 7 * DX_TRI_EDGE_FEATURE;
+    d->features[t] = (unsigned char)(has_area ? bits : DEGENERATE | bits);
+    if (bits) mark_edge_ends(d, t, bits, mark);
+}
+
+// Triangle t's unit normal (zero without area): the cross product of the
+// sides from corner 0, n = a x b, over its length, if that is above
+// |a| |b| 1e-12 and finite; from the welded vertices (the triangle's own:
+// they are at the same positions).
+static void triangle_normal(dxTriMeshData *d, const dReal *pos, int t, unsigned char *mark)
+{
+    const int *idx = d->welded + 3 * t;
+    const dReal *v0 = pos + 3 * idx[0], *v1 = pos + 3 * idx[1], *v2 = pos + 3 * idx[2];
+    dVector3 a, b, n;
+    dSubtractVectors3(a, v1, v0);
+    dSubtractVectors3(b, v2, v0);
+    dCalcVectorCross3(n, a, b);
+    dReal len = dCalcVectorLength3(n);
+    dReal scale = dCalcVectorLength3(a) * dCalcVectorLength3(b);
+    dReal *out = d->normal + 3 * t;
+    const int has_area = len > 0 && len > scale * (dReal)1e-12 && dxIsFinite(len);
+    for (int k = 0; k < 3; k++) out[k] = has_area ? n[k] / len : 0;
+    start_features(d, t, has_area, mark);
+}
+
+#if defined(__SSE2__) && !defined(dSINGLE)
+// Triangles t and t + 1 as triangle_normal, one in each lane: the same
+// operations in the same order, so the same bits (a lane without area
+// computes 0 / 0 and is cleared).
+static void triangle_normals2(dxTriMeshData *d, const dReal *pos, int t, unsigned char *mark)
+{
+    const int *i0 = d->welded + 3 * t, *i1 = i0 + 3;
+    __m128d v[3][3];   // corner, axis; lane 0 triangle t, lane 1 t + 1
+    for (int c = 0; c < 3; c++)
+        for (int k = 0; k < 3; k++)
+            v[c][k] = _mm_loadh_pd(_mm_load_sd(pos + 3 * i0[c] + k), pos + 3 * i1[c] + k);
+    __m128d a[3], b[3];
+    for (int k = 0; k < 3; k++) {
+        a[k] = _mm_sub_pd(v[1][k], v[0][k]);
+        b[k] = _mm_sub_pd(v[2][k], v[0][k]);
+    }
+    __m128d n0 = _mm_sub_pd(_mm_mul_pd(a[1], b[2]), _mm_mul_pd(a[2], b[1]));
+    __m128d n1 = _mm_sub_pd(_mm_mul_pd(a[2], b[0]), _mm_mul_pd(a[0], b[2]));
+    __m128d n2 = _mm_sub_pd(_mm_mul_pd(a[0], b[1]), _mm_mul_pd(a[1], b[0]));
+    __m128d len = _mm_sqrt_pd(_mm_add_pd(_mm_add_pd(_mm_mul_pd(n0, n0), _mm_mul_pd(n1, n1)),
+                                         _mm_mul_pd(n2, n2)));
+    __m128d la = _mm_sqrt_pd(_mm_add_pd(_mm_add_pd(_mm_mul_pd(a[0], a[0]), _mm_mul_pd(a[1], a[1])),
+                                        _mm_mul_pd(a[2], a[2])));
+    __m128d lb = _mm_sqrt_pd(_mm_add_pd(_mm_add_pd(_mm_mul_pd(b[0], b[0]), _mm_mul_pd(b[1], b[1])),
+                                        _mm_mul_pd(b[2], b[2])));
+    __m128d scale = _mm_mul_pd(la, lb);
+    // len > 0, len > scale 1e-12 and finite (len is not negative: finite
+    // is at most DBL_MAX; NaN fails every comparison).
+    __m128d area = _mm_and_pd(_mm_cmpgt_pd(len, _mm_setzero_pd()),
+                              _mm_and_pd(_mm_cmpgt_pd(len, _mm_mul_pd(scale, _mm_set1_pd(1e-12))),
+                                         _mm_cmple_pd(len, _mm_set1_pd(DBL_MAX))));
+    n0 = _mm_and_pd(_mm_div_pd(n0, len), area);
+    n1 = _mm_and_pd(_mm_div_pd(n1, len), area);
+    n2 = _mm_and_pd(_mm_div_pd(n2, len), area);
+    dReal *out = d->normal + 3 * t;   // x y z of t, then of t + 1
+    _mm_storeu_pd(out, _mm_unpacklo_pd(n0, n1));
+    _mm_storeu_pd(out + 2, _mm_shuffle_pd(n2, n0, 2));
+    _mm_storeu_pd(out + 4, _mm_unpackhi_pd(n1, n2));
+    const int lanes = _mm_movemask_pd(area);
+    start_features(d, t, lanes & 1, mark);
+    start_features(d, t + 1, lanes >> 1, mark);
+}
+#endif
+
+// Every triangle's normal (triangle_normal) and the start of its
+// features (start_features); two at a time with SSE2 in double.
+static void compute_normals(dxTriMeshData *d, const dReal *pos, unsigned char *mark)
+{
+    memset(mark, 0, (size_t)d->vertex_count);
+    int t = 0;
+#if defined(__SSE2__) && !defined(dSINGLE)
+    for (; t + 2 <= d->tri_count; t += 2) triangle_normals2(d, pos, t, mark);
+#endif
+    for (; t < d->tri_count; t++) triangle_normal(d, pos, t, mark);
 }
 
 // Which edges and vertices are features (trimesh_internal.h): an edge is one
 // if it has no neighbour (or either face has no area) or the neighbour's far
 // vertex lies behind this face's plane (convex) with the faces not
-// coplanar; a vertex is one if any edge of any triangle around it is.
-static void compute_features(dxTriMeshData *d)
+// coplanar; a vertex is one if any edge of any triangle around it is
+// (marked per welded vertex in mark[], begun by compute_normals). After
+// compute_normals; one pass over the shared edges (each judged from both
+// sides), one over the triangles: only the numbers are new.
+static void compute_features(dxTriMeshData *d, const dReal *pos, unsigned char *mark)
 {
-    unsigned char *vertex_feature = (unsigned char *)dAlloc((size_t)d->vertex_count + 1);
-    memset(vertex_feature, 0, (size_t)d->vertex_count + 1);
-    for (int t = 0; t < d->tri_count; t++) {
-        int idx[3];
-        welded_indices(d, t, idx);
-        const dReal *n = d->normal + 3 * t;
-        unsigned char f = 0;
-        for (int k = 0; k < 3; k++) {
-            int u = d->neighbour[3 * t + k], is_feature = 1;
-            if (u >= 0 && !dxTriMeshIsDegenerate(d, t) && !dxTriMeshIsDegenerate(d, u)) {
-                const dReal *nu = d->normal + 3 * u;
-                int uidx[3];
-                welded_indices(d, u, uidx);
-                int far = uidx[0];
-                for (int m = 0; m < 3; m++)
-                    if (uidx[m] != idx[k] && uidx[m] != idx[(k + 1) % 3]) far = uidx[m];
-                dReal a[3], w[3];
-                dxTriMeshVertex(d, idx[k], a);
-                dxTriMeshVertex(d, far, w);
-                dVector3 aw;
-                dSubtractVectors3(aw, w, a);
-                int flat = dCalcVectorDot3(n, nu) > FLAT_COS;
-                is_feature = !flat && dCalcVectorDot3(n, aw) < 0;
-            }
-            if (is_feature) {
-                f |= (unsigned char)(DX_TRI_EDGE_FEATURE << k);
-                vertex_feature[idx[k]] = vertex_feature[idx[(k + 1) % 3]] = 1;
-            }
+    unsigned char *f = d->features;
+    for (int i = 0; i < d->edge_count; i++) {
+        const dxTriMeshEdge *e = &d->edges[i];
+        const int t = e->t, u = e->u;
+        if ((f[t] | f[u]) & DEGENERATE) {   // the ends are marked already
+            f[t] |= (unsigned char)(DX_TRI_EDGE_FEATURE << e->kt);
+            f[u] |= (unsigned char)(DX_TRI_EDGE_FEATURE << e->ku);
+            continue;
         }
-        d->features[t] = f;
+        const dReal *nt = d->normal + 3 * t, *nu = d->normal + 3 * u;
+        if (dCalcVectorDot3(nt, nu) > FLAT_COS) continue;   // coplanar
+        const int *it = d->welded + 3 * t, *iu = d->welded + 3 * u;
+        dVector3 aw;
+        dSubtractVectors3(aw, pos + 3 * iu[e->cu], pos + 3 * it[e->kt]);
+        if (dCalcVectorDot3(nt, aw) < 0) {
+            f[t] |= (unsigned char)(DX_TRI_EDGE_FEATURE << e->kt);
+            mark[it[e->kt]] = mark[it[e->kt == 2 ? 0 : e->kt + 1]] = 1;
+        }
+        dSubtractVectors3(aw, pos + 3 * it[e->ct], pos + 3 * iu[e->ku]);
+        if (dCalcVectorDot3(nu, aw) < 0) {
+            f[u] |= (unsigned char)(DX_TRI_EDGE_FEATURE << e->ku);
+            mark[iu[e->ku]] = mark[iu[e->ku == 2 ? 0 : e->ku + 1]] = 1;
+        }
     }
     for (int t = 0; t < d->tri_count; t++) {
-        int idx[3];
-        welded_indices(d, t, idx);
-        for (int k = 0; k < 3; k++)
-            if (vertex_feature[idx[k]]) d->features[t] |= (unsigned char)(DX_TRI_VERTEX_FEATURE << k);
+        const int *idx = d->welded + 3 * t;
+        unsigned bits = f[t] & 7u * DX_TRI_EDGE_FEATURE;
+        for (int k = 0; k < 3; k++) bits |= (unsigned)mark[idx[k]] * (DX_TRI_VERTEX_FEATURE << k);
+        f[t] = (unsigned char)bits;
     }
-    dFree(vertex_feature, (size_t)d->vertex_count + 1);
 }
 
-// Every vertex finite: 1, else 0 with the first bad index in *bad.
-static int vertices_finite(const dxTriMeshData *d, int *bad)
+// Everything derived from the arrays but the tree, from the positions in
+// s: the weld and what follows from it (welded indices, neighbours, vertex
+// adjacency) unless keep_topology (an Update whose weld is the build's),
+// then the normals and features.
+static void derive(dxTriMeshData *d, derive_scratch *s, int keep_topology)
 {
-    for (int i = 0; i < d->vertex_count; i++) {
-        dReal v[3];
-        dxTriMeshVertex(d, i, v);
-        if (!dxIsFinite3(v[0], v[1], v[2])) {
-            *bad = i;
-            return 0;
-        }
+    if (!keep_topology) {
+        weld_positions(d, s, d->weld, 0);
+        compute_welded(d);
+        compute_neighbours(d);
     }
-    return 1;
+    compute_normals(d, s->pos, s->mark);
+    compute_features(d, s->pos, s->mark);
 }
 
 // The builds' shared body: check everything, then derive (on bad input
@@ -323,10 +521,12 @@ static void build_checked(const char *fn, dxTriMeshData *d, const void *vertices
 {
     clear_derived(d);
     size_t vsize = 3 * (vertex_double ? sizeof(double) : sizeof(float));
+    derive_scratch s = { 0 };
 #define BUILD_CHECK(cond, ...) \
     do { \
         if (!(cond)) { \
             dxReportBadArgument(fn, __VA_ARGS__); \
+            if (s.pos) scratch_free(&s, vertex_count); \
             clear_derived(d); \
             return; \
         } \
@@ -347,8 +547,9 @@ static void build_checked(const char *fn, dxTriMeshData *d, const void *vertices
     d->vertex_double = vertex_double;
     d->indices = indices;
     d->tri_stride = tri_stride;
+    scratch_alloc(&s, vertex_count);
     int bad;
-    BUILD_CHECK(vertices_finite(d, &bad), "vertex %d is not finite", bad);
+    BUILD_CHECK(load_positions(d, s.pos, &bad), "vertex %d is not finite", bad);
     int tris = index_count / 3;
     for (int t = 0; t < tris; t++) {
         dTriIndex v[3];
@@ -360,17 +561,18 @@ static void build_checked(const char *fn, dxTriMeshData *d, const void *vertices
     }
 #undef BUILD_CHECK
     d->user_normals = normals;
+    if (tris == 0) scratch_free(&s, vertex_count);
     DX_WARN_ARG(tris > 0, return, "the mesh has no triangles: it collides with nothing");
     d->tri_count = tris;
     size_t n = (size_t)tris;
     d->normal = (dReal *)dAlloc(3 * n * sizeof(dReal));
     d->neighbour = (int *)dAlloc(3 * n * sizeof(int));
+    d->welded = (int *)dAlloc(3 * n * sizeof(int));
+    d->open_edges = (unsigned char *)dAlloc(n);
     d->features = (unsigned char *)dAlloc(n);
     d->weld = (int *)dAlloc((size_t)vertex_count * sizeof(int));
-    compute_normals(d);
-    compute_weld(d);
-    compute_neighbours(d);
-    compute_features(d);
+    derive(d, &s, 0);
+    scratch_free(&s, vertex_count);
     dxTriMeshBuildTree(d);
 }
 
@@ -467,16 +669,19 @@ void dGeomTriMeshDataBuildSimple(dTriMeshDataID g, const dReal *Vertices, int Ve
 void dGeomTriMeshDataUpdate(dTriMeshDataID g)
 {
     CHECK_DATA(g, return);
+    derive_scratch s;
+    scratch_alloc(&s, g->vertex_count);
     int bad;
-    if (!vertices_finite(g, &bad)) {
+    if (!load_positions(g, s.pos, &bad)) {
+        scratch_free(&s, g->vertex_count);
         dxReportBadArgument(__func__, "vertex %d is not finite: the mesh is emptied", bad);
         clear_derived(g);
         dxTriMeshDataChanged(g);
         return;
     }
+    if (g->tri_count > 0) derive(g, &s, weld_positions(g, &s, g->weld, 1));
+    scratch_free(&s, g->vertex_count);
     if (g->tri_count == 0) return;
-    compute_normals(g);
-    compute_features(g);
     dxTriMeshRefitTree(g);
     dxTriMeshDataChanged(g);
 }

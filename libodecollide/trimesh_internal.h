@@ -77,6 +77,15 @@ void dxTriMeshNodeSetLeaf(dxTriMeshNode *node, const dReal lo[3], const dReal hi
 
 struct dxTriMesh;
 
+// An edge shared by triangles t and u (neighbours): its index in each (kt,
+// ku: edge k joins corners k and k + 1) and each one's corner off the edge
+// (ct, cu). What an Update needs to judge the edge from both sides
+// without looking the neighbours up again.
+typedef struct dxTriMeshEdge {
+    int t, u;
+    unsigned char kt, ku, ct, cu;
+} dxTriMeshEdge;
+
 struct dxTriMeshData {
     uint32_t magic;
     // The user's arrays (not copied).
@@ -92,6 +101,11 @@ struct dxTriMeshData {
     int *vertex_first, *vertex_adj;       // per welded vertex: the vertices joined to it
     int vertex_adj_count;
     int *neighbour;                       // 3 per triangle: across edge k, or -1
+    int *welded;                          // 3 per triangle: its vertices welded
+    unsigned char *open_edges;            // per triangle: the edges k without a
+                                          // neighbour (DX_TRI_EDGE_FEATURE << k)
+    struct dxTriMeshEdge *edges;          // the edges with two triangles, once
+    int edge_count;
     int closed;                           // every edge has a neighbour
     unsigned char *features;              // DX_TRI_*_FEATURE bits per triangle
     dxTriMeshNode *nodes;                 // the box tree, root first
