@@ -190,7 +190,6 @@ struct dxJointGroup {
     dxJointGroupChunk *chunks;    // joints are carved from these, freed on destroy
     dxJointGroupChunk *current;
     dxJoint *newest;              // the group's joints, newest first through group_prev
-    int num_joints;
 };
 
 // ---- world -------------------------------------------------------------

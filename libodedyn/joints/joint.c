@@ -180,7 +180,6 @@ void dJointGroupEmpty(dJointGroupID g)
         j = j->group_prev;
     }
     g->newest = NULL;
-    g->num_joints = 0;
     g->current = g->chunks;
     if (g->current) g->current->used = 0;
 }

@@ -178,8 +178,8 @@ static void anchor(dxJointContact *c)
         c->anchor_body[k] = b;
         if (!b) continue;
         c->anchor_generation[k] = b->hdr.generation;
-        dCopyVector3(c->pos0[k], b->pos);
-        dCopyVector4(c->q0[k], b->q);
+        memcpy(c->pos0[k], b->pos, sizeof c->pos0[k]);   // (with its 4th number: whole fours)
+        memcpy(c->q0[k], b->q, sizeof c->q0[k]);
         dSubtractVectors3(c->arm[k], c->contact.geom.pos, b->pos);
     }
 }
@@ -274,8 +274,9 @@ static void friction_row_own(const dxJointContact *c, dxContactRows *r, int row,
 }
 
 // The contact's normal and sliding friction rows (a live contact).
-static void contact_rows(dxJointContact *c, dReal fps, dReal erp, dxContactRows *r)
+void dxJointContactRows(dxJoint *j, dReal fps, dReal erp, dxContactRows *r)
 {
+    dxJointContact *c = (dxJointContact *)j;
     // Stored sense: the user's directions, negated when the joint is stored
     // reversed (user body 2 as body 0).
     if (((c->base.flags & DX_JOINT_REVERSE) != 0) != c->negated) flip_directions(c);
@@ -327,7 +328,7 @@ static void contact_fill_rows(dxJoint *j, dxJointRows *rows)
     const dSurfaceParameters *s = &c->contact.surface;
     const int mode = s->mode;
     dxContactRows r;
-    contact_rows(c, rows->fps, rows->erp, &r);
+    dxJointContactRows(j, rows->fps, rows->erp, &r);
     for (int i = 0; i < r.m; i++) {
         linear_row(&r, rows, i, r.d[i]);
         rows->c[i] = r.c[i];
@@ -354,11 +355,6 @@ static void contact_fill_rows(dxJoint *j, dxJointRows *rows)
         angular_row(j, rows, row, r.n);
         friction_bounds(rows, row, c->rhoN, mode & dContactApprox1_N);
     }
-}
-
-void dxJointContactRows(dxJoint *j, dReal fps, dReal erp, dxContactRows *r)
-{
-    contact_rows((dxJointContact *)j, fps, erp, r);
 }
 
 int dxJointContactWarmInfo(const dxJoint *j, dVector3 point)
@@ -556,11 +552,54 @@ static void choose_rows(dxJointContact *c)
         c->base.flags |= DX_JOINT_PLAIN_CONTACT;
 }
 
+// The rows and directions of the usual contact: a surface with mu >= 0 (0
+// to dInfinity: nothing to sanitise) and no mode but the pyramid's
+// (dContactApprox1_1/_2/_N): the numbers choose_rows, sliding_rows and
+// friction_directions give it, made straight.
+static void usual_surface(dxJointContact *c)
+{
+    const dSurfaceParameters *s = &c->contact.surface;
+    const dReal mu = s->mu;
+    c->mu2 = mu;
+    c->rho2 = c->rhoN = 0;   // (rolling friction's: no rolling rows)
+    c->own_numbers = 0;
+    dxPlaneSpaceUnit(c->n, c->t1, c->t2);
+    c->t1[3] = c->t2[3] = 0;
+    c->row_pyramid[0] = 0;
+    if (mu > 0) {
+        c->rows_present = ROW_T1 | ROW_T2;
+        c->m = c->sliding_m = 3;
+        c->row_lo[0] = c->row_lo[1] = -mu;
+        c->row_hi[0] = c->row_hi[1] = mu;
+        const int finite = mu < dInfinity;   // (two infinite rows: not plain, a block)
+        c->row_pyramid[1] = finite && (s->mode & dContactApprox1_1);
+        c->row_pyramid[2] = finite && (s->mode & dContactApprox1_2);
+        if (finite) c->base.flags |= DX_JOINT_PLAIN_CONTACT;
+    } else {
+        c->rows_present = 0;
+        c->m = c->sliding_m = 1;
+        c->row_lo[0] = c->row_lo[1] = c->row_hi[0] = c->row_hi[1] = 0;
+        c->row_pyramid[1] = c->row_pyramid[2] = 0;
+        c->base.flags |= DX_JOINT_PLAIN_CONTACT;
+    }
+}
+
 // Every field of the contact's part (no zeroing first): the pose record
-// only says "none yet"; anchor() fills it at the first step.
+// only says "none yet"; anchor() fills it at the first step. Of the usual
+// contact's dContact (see usual_surface) only what is ever read is kept:
+// the surface's mode and mu, and the point, normal and depth.
 static void contact_init(dxJointContact *c, const dContact *contact)
 {
-    c->contact = *contact;
+    const int usual = (contact->surface.mode & ~dContactApprox1) == 0 && contact->surface.mu >= 0;
+    if (usual) {
+        c->contact.surface.mode = contact->surface.mode;
+        c->contact.surface.mu = contact->surface.mu;
+        memcpy(c->contact.geom.pos, contact->geom.pos, sizeof contact->geom.pos);
+        memcpy(c->contact.geom.normal, contact->geom.normal, sizeof contact->geom.normal);
+        c->contact.geom.depth = contact->geom.depth;
+    } else {
+        c->contact = *contact;
+    }
     c->anchor_body[0] = c->anchor_body[1] = NULL;
     c->negated = 0;
     if (!check_geometry(c)) {
@@ -574,9 +613,13 @@ static void contact_init(dxJointContact *c, const dContact *contact)
         return;
     }
     c->inert = 0;
-    sanitise_surface(&c->contact.surface);
-    friction_directions(c);
-    choose_rows(c);
+    if (usual) {
+        usual_surface(c);
+    } else {
+        sanitise_surface(&c->contact.surface);
+        friction_directions(c);
+        choose_rows(c);
+    }
     // count_rows' answer, which never changes, kept where the steppers
     // read it (dWorldQuickStep's set-up does not ask again).
     c->base.rows.m = c->m;

@@ -50,7 +50,6 @@ static inline dxJoint *dxJointCreateBareInline(struct dxWorld *w, struct dxJoint
         }
         j->group_prev = g->newest;   // the group's list, newest first
         g->newest = j;
-        g->num_joints++;
     } else {
         j = dxJointPoolTake(cls->type, cls->size, &generation);
         j->group_prev = NULL;
