@@ -12,6 +12,7 @@
 
 #include "test.h"
 
+#include <float.h>
 #include <stddef.h>
 #include <string.h>
 
