@@ -60,7 +60,7 @@ enum {
 
 typedef struct dxJointContact {
     dxJoint base;
-    dContact contact;      // as given, with the surface sanitised
+    dContact contact;      // as given, with the surface sanitised (see contact_init)
     // Unit normal and friction directions (4th numbers 0), in the user's
     // body order, negated while `negated`: they are turned to the stored
     // sense (DX_JOINT_REVERSE) when the rows are made, and stay so.
@@ -467,8 +467,9 @@ static int check_geometry(dxJointContact *c)
     const dContactGeom *g = &c->contact.geom;
     dCopyVector3(c->n, g->normal);
     c->n[3] = 0;
-    // One test for the usual contact: a sum of finite numbers that is not
-    // finite (an overflow) only sends it to the tests of each number below.
+    // One test for the usual contact: the sum of the seven numbers is finite
+    // only if each is (a NaN or an infinity makes it NaN or infinite); finite
+    // numbers whose sum overflows go on to the tests of each number below.
     const dReal sum = g->pos[0] + g->pos[1] + g->pos[2] + g->depth + c->n[0] + c->n[1] + c->n[2];
     if (dxIsFinite(sum)) return dxUnitVector3(c->n) || bad_normal(g);
     if (!dxIsFinite3(g->pos[0], g->pos[1], g->pos[2]) || !dxIsFinite(g->depth)) {
