@@ -12,6 +12,7 @@
 
 #include "test.h"
 
+#include <float.h>
 #include <stddef.h>
 #include <string.h>
 
@@ -1031,6 +1032,60 @@ static int test_bad_geometry_gives_inert_joint(void)
     return 0;
 }
 
+// Each of the seven numbers of the geometry (point, depth, normal), NaN or
+// infinite alone, is reported by what it is, under the usual surface and
+// another; numbers that are each finite but whose sum overflows (the one test
+// dJointCreateContact makes first) are accepted without a report, and the
+// contact holds a box up.
+static int test_each_bad_number_of_the_geometry_is_reported(void)
+{
+    test_capture_reports();
+    dWorldID w = world_with_gravity();
+    dJointGroupID group = dJointGroupCreate(0);
+    dBodyID b = unit_box(w, 0, 0, 0);
+    const dReal bad[3] = { NAN, dInfinity, -dInfinity };
+    const int modes[2] = { dContactApprox1, dContactMu2 | dContactBounce };
+    for (int k = 0; k < 2; k++) {
+        dSurfaceParameters sp = surface_mode(modes[k], 1);
+        for (int field = 0; field < 7; field++) {
+            for (int v = 0; v < 3; v++) {
+                dVector3 p = { 0, 0, 0, 0 };
+                dContact c = ground_contact(&sp, p);
+                dReal *x = field < 3 ? &c.geom.pos[field] : field == 3 ? &c.geom.depth
+                                                                        : &c.geom.normal[field - 4];
+                *x = bad[v];
+                const int before = test_captured_count();
+                CHECK(dJointCreateContact(w, group, &c) != 0);
+                CHECK(test_captured_count() == before + 1);
+                CHECK(test_captured_contains(field < 4 ? "not finite" : "no direction"));
+            }
+        }
+    }
+    dJointGroupEmpty(group);
+
+    // Finite numbers near the largest, summed to infinity in the first test:
+    // a normal (0, big, big) is (0, 1, 1) / sqrt 2, and it holds the box.
+#ifdef dSINGLE
+    const dReal big = FLT_MAX;
+#else
+    const dReal big = DBL_MAX;
+#endif
+    dSurfaceParameters sp = surface_mode(dContactApprox1, 1);
+    dVector3 p = { 0, 0, 0, 0 };
+    dContact c = ground_contact(&sp, p);
+    c.geom.normal[1] = c.geom.normal[2] = big;
+    const int before = test_captured_count();
+    dJointAttach(dJointCreateContact(w, group, &c), b, 0);
+    CHECK(test_captured_count() == before);
+    dWorldStep(w, 0.01);
+    dVector3 v;
+    dBodyGetPointVel(b, 0, 0, 0, v);   // the contact point's
+    CHECK((v[1] + v[2]) / sqrt(2.0) > -1e-3);   // free fall: -0.069 m/s along n
+    dJointGroupDestroy(group);
+    dWorldDestroy(w);
+    return 0;
+}
+
 // Out-of-range surface numbers are reported and replaced by safe values.
 static int test_bad_surface_numbers_are_clamped(void)
 {
@@ -1174,6 +1229,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_world_contact_parameters),
     TEST_CASE(test_null_world_or_contact_creates_nothing),
     TEST_CASE(test_bad_geometry_gives_inert_joint),
+    TEST_CASE(test_each_bad_number_of_the_geometry_is_reported),
     TEST_CASE(test_bad_surface_numbers_are_clamped),
     TEST_CASE(test_fdir1_along_normal_falls_back),
     TEST_CASE(test_negative_depth_gives_no_correction),

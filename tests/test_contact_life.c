@@ -237,11 +237,71 @@ static int test_inert_contact_in_reused_memory(void)
     return 0;
 }
 
+// A group's contacts made among joints of another group, of no group and of
+// another world (one group may hold joints of two worlds): emptying it cuts
+// its runs out of each world's list and leaves every other joint listed, by
+// its bodies and by its world (which steps them and destroys the ungrouped
+// ones at dWorldDestroy without a report); contacts whose world was destroyed
+// first are dropped too.
+static int test_group_emptied_among_other_joints(void)
+{
+    dWorldID w[2] = { dWorldCreate(), dWorldCreate() };
+    dJointGroupID g = dJointGroupCreate(0), h = dJointGroupCreate(0);
+    dBodyID a[2], b[2];
+    for (int k = 0; k < 2; k++) {
+        dWorldSetGravity(w[k], 0, 0, -9.81);
+        a[k] = box(w[k], 0.1);
+        b[k] = box(w[k], 0.3);
+    }
+    dContact c = contact_at(0, 0, 0.2, 0.001);
+    // The order of making: g's contacts in runs of 1, 2 and 3, broken by a
+    // contact of h, an ungrouped ball joint, and a contact in the other world.
+    const char plan[] = "ghgg0ggg1gh0g";
+    int in_g[2] = { 0, 0 }, others[2] = { 0, 0 };
+    for (const char *p = plan; *p; p++) {
+        const int k = *p == '1';
+        dJointID j = *p == '0' ? dJointCreateBall(w[0], 0)
+                   : dJointCreateContact(w[k], *p == 'h' ? h : g, &c);
+        dJointAttach(j, b[k], a[k]);
+        if (*p == 'g' || *p == '1') in_g[k]++;
+        else others[k]++;
+    }
+    CHECK(dBodyGetNumJoints(a[0]) == in_g[0] + others[0]);
+    test_capture_reports();
+    dJointGroupEmpty(g);
+    CHECK(dBodyGetNumJoints(a[0]) == others[0] && dBodyGetNumJoints(b[0]) == others[0]);
+    CHECK(dBodyGetNumJoints(a[1]) == others[1] && dBodyGetNumJoints(b[1]) == others[1]);
+    for (int i = 0; i < dBodyGetNumJoints(a[0]); i++) {
+        const dJointType t = dJointGetType(dBodyGetJoint(a[0], i));
+        CHECK(t == dJointTypeBall || t == dJointTypeContact);
+    }
+    dWorldQuickStep(w[0], 0.01);
+    dWorldStep(w[1], 0.01);
+    // Made again in the emptied group, and emptied with h.
+    dJointAttach(dJointCreateContact(w[0], g, &c), a[0], 0);
+    dJointGroupEmpty(h);
+    CHECK(dBodyGetNumJoints(a[0]) == 1 + 2 && dBodyGetNumJoints(b[0]) == 2);
+    dJointGroupEmpty(g);
+    CHECK(dBodyGetNumJoints(a[0]) == 2);
+    dWorldQuickStep(w[0], 0.01);
+    dWorldDestroy(w[0]);   // the two ball joints with it
+    // Contacts whose world is destroyed before their group is emptied.
+    for (int k = 0; k < 3; k++) dJointAttach(dJointCreateContact(w[1], g, &c), a[1], b[1]);
+    dWorldDestroy(w[1]);
+    dJointGroupEmpty(g);
+    CHECK(test_captured_count() == 0);
+    test_release_reports();
+    dJointGroupDestroy(g);
+    dJointGroupDestroy(h);
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_contacts_listed_and_dropped),
     TEST_CASE(test_group_emptied_after_a_body_is_destroyed),
     TEST_CASE(test_contact_feedback),
     TEST_CASE(test_reused_memory_starts_afresh),
     TEST_CASE(test_inert_contact_in_reused_memory),
+    TEST_CASE(test_group_emptied_among_other_joints),
     TEST_END
 };

@@ -119,7 +119,132 @@ static int test_contact_rows_need_no_defaults(void)
     return 0;
 }
 
+// The numbers of a plain contact's rows (dxJointContactRows) from the rule
+// alone: the unit normal and dPlaneSpace's directions in the stored sense
+// (negated when the joint is stored reversed, also after it is attached the
+// other way round between two steps), the friction rows present in order t1,
+// t2 with bounds -k..k, the pyramid flag for a finite k under Approx1_1/_2,
+// Motion1/2's targets, Slip1/2's and SoftCFM's cfm or else the world's, and
+// zeros after the last row. The usual surface (no mode but the pyramid's) is
+// made on a path of its own at creation: both paths are covered.
+static int test_contact_numbers_follow_the_rule(void)
+{
+    static const int modes[] = {
+        0,
+        dContactApprox1_1,
+        dContactApprox1_2,
+        dContactApprox1,
+        dContactApprox1 | dContactSoftCFM,
+        dContactApprox1_1 | dContactMu2 | dContactMotion1 | dContactSlip2,
+        dContactMu2 | dContactApprox1_2 | dContactSlip1 | dContactMotion2,
+    };
+    static const dReal mus[] = { 0, 0.7, dInfinity };
+    static const dReal normals[][3] = { { 0.3, 0, 1 }, { 0, 0, -2 }, { 1, -0.5, 0.2 } };
+    dWorldID w = dWorldCreate();
+    dWorldSetCFM(w, 3e-6);
+    dBodyID a = dBodyCreate(w), b = dBodyCreate(w);
+    dBodySetPosition(b, 0.3, 0, -0.5);
+    const dVector3 zero = { 0, 0, 0, 0 };
+    int checked = 0;
+    for (size_t k = 0; k < sizeof modes / sizeof modes[0]; k++)
+    for (size_t u = 0; u < sizeof mus / sizeof mus[0]; u++)
+    for (size_t q = 0; q < sizeof normals / sizeof normals[0]; q++)
+    for (int two = 0; two < 2; two++)
+    for (int reversed = 0; reversed < 2; reversed++) {
+        const int mode = modes[k];
+        dContact ct;
+        memset(&ct, 0, sizeof ct);
+        ct.geom.pos[0] = 0.1;
+        ct.geom.pos[1] = -0.2;
+        ct.geom.pos[2] = 0.05;
+        for (int i = 0; i < 3; i++) ct.geom.normal[i] = normals[q][i];
+        ct.geom.depth = 0.02;
+        ct.surface.mode = mode;
+        ct.surface.mu = mus[u];
+        ct.surface.mu2 = 0.4;
+        ct.surface.soft_cfm = 1e-3;
+        ct.surface.motion1 = 0.2;
+        ct.surface.motion2 = -0.1;
+        ct.surface.slip1 = 1e-4;
+        ct.surface.slip2 = 2e-4;
+        dxJoint *j = (dxJoint *)dJointCreateContact(w, 0, &ct);
+        dBodyID other = two ? b : 0;
+        if (reversed) dJointAttach((dJointID)j, other, a);
+        else dJointAttach((dJointID)j, a, other);
+
+        const dReal mu = mus[u], mu2 = (mode & dContactMu2) ? ct.surface.mu2 : mu;
+        const int plain = !(mu == dInfinity && mu2 == dInfinity);
+        CHECK(((j->flags & DX_JOINT_PLAIN_CONTACT) != 0) == plain);
+        if (!plain) {
+            dJointDestroy((dJointID)j);
+            continue;
+        }
+        dVector3 n = { normals[q][0], normals[q][1], normals[q][2], 0 }, t1, t2;
+        dSafeNormalize3(n);
+        dPlaneSpace(n, t1, t2);
+        for (int flip = 0; flip < 2; flip++) {
+            // The second time attached the other way round; stored reversed
+            // (negated directions) is (0, a) alone.
+            const int swapped = reversed ^ flip, rev = !two && swapped;
+            if (flip) {
+                if (swapped) dJointAttach((dJointID)j, other, a);
+                else dJointAttach((dJointID)j, a, other);
+            }
+            dxContactRows r;
+            dxJointContactRows(j, 100, 0.2, &r);
+            const dReal sign = rev ? -1 : 1;
+            const dReal *dir[3] = { n, t1, t2 };
+            for (int d = 0; d < 3; d++) {
+                dVector3 e;
+                for (int i = 0; i < 3; i++) e[i] = sign * dir[d][i];
+                const dReal *got = d == 0 ? r.n : d == 1 ? r.t1 : r.t2;
+                CHECK(memcmp(got, e, 3 * sizeof(dReal)) == 0);
+            }
+            const dReal ks[2] = { mu, mu2 };
+            const int present[2] = { mu > 0, mu2 > 0 };
+            const int motion[2] = { dContactMotion1, dContactMotion2 };
+            const int slip[2] = { dContactSlip1, dContactSlip2 };
+            const int approx[2] = { dContactApprox1_1, dContactApprox1_2 };
+            const dReal motions[2] = { ct.surface.motion1, ct.surface.motion2 };
+            const dReal slips[2] = { ct.surface.slip1, ct.surface.slip2 };
+            const dReal *dirs[2] = { r.t1, r.t2 };
+            dReal c[4] = { r.c[0], 0, 0, 0 }, cfm[4] = { 0, 0, 0, 0 };
+            dReal lo[4] = { 0, 0, 0, 0 }, hi[4] = { dInfinity, 0, 0, 0 };
+            int pyramid[3] = { 0, 0, 0 };
+            const dReal *d[3] = { r.n, zero, zero };
+            cfm[0] = (mode & dContactSoftCFM) ? ct.surface.soft_cfm : dWorldGetCFM(w);
+            int m = 1;
+            for (int f = 0; f < 2; f++) {
+                if (!present[f]) continue;
+                c[m] = (mode & motion[f]) ? motions[f] : 0;
+                cfm[m] = (mode & slip[f]) ? slips[f] : dWorldGetCFM(w);
+                lo[m] = -ks[f];
+                hi[m] = ks[f];
+                pyramid[m] = (mode & approx[f]) && ks[f] < dInfinity;
+                d[m] = dirs[f];
+                m++;
+            }
+            CHECK(r.m == m);
+            CHECK(r.friction == (present[0] | present[1] << 1));
+            CHECK(memcmp(r.c, c, sizeof c) == 0);
+            CHECK(memcmp(r.cfm, cfm, sizeof cfm) == 0);
+            CHECK(memcmp(r.lo, lo, sizeof lo) == 0);
+            CHECK(memcmp(r.hi, hi, sizeof hi) == 0);
+            for (int i = 0; i < m; i++) CHECK(r.pyramid[i] == pyramid[i]);
+            for (int i = 0; i < 3; i++) CHECK(memcmp(r.d[i], d[i], 3 * sizeof(dReal)) == 0);
+            CHECK(memcmp(r.point, ct.geom.pos, 3 * sizeof(dReal)) == 0);
+            CHECK((r.arm[1] != NULL) == two);
+            checked++;
+        }
+        dJointDestroy((dJointID)j);
+    }
+    CHECK(checked > 100);
+    dWorldDestroy(w);
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_contact_rows_need_no_defaults),
+    TEST_CASE(test_contact_numbers_follow_the_rule),
     TEST_END
 };

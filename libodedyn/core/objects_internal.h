@@ -166,6 +166,7 @@ struct dxJoint {
     struct dxWorld *world;
     struct dxJoint *next, *prev;  // the world's joint list
     struct dxJointGroup *group;
+    struct dxJoint *group_prev;   // the group's next older joint (its list, newest first)
     void *userdata;
     unsigned flags;               // DX_JOINT_...
     dxJointNode node[2];          // node[k] is in the list of body k
@@ -188,8 +189,7 @@ struct dxJointGroup {
     dxObjectHeader hdr;
     dxJointGroupChunk *chunks;    // joints are carved from these, freed on destroy
     dxJointGroupChunk *current;
-    dxJoint **joints;             // every joint in the group, in creation order
-    int num_joints, cap_joints;
+    dxJoint *newest;              // the group's joints, newest first through group_prev
 };
 
 // ---- world -------------------------------------------------------------

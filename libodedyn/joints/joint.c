@@ -6,6 +6,7 @@
 // constraint rows are in joint_<type>.c.
 
 #include "objects_internal.h"
+#include "joint_group.h"
 #include "pool.h"
 
 #include <ode/memory.h>
@@ -17,25 +18,16 @@
                  "joint group is NULL or was destroyed")
 
 #define GROUP_CHUNK_BYTES (64 * 1024)
-#define JOINT_ALIGN 16
 
 // Non-grouped joints come from a pool per joint type (sizes differ).
 static dxPool joint_pools[dJointTypeTransmission + 1];
 static dxPool group_pool;
 
-struct dxJointGroupChunk {
-    dxJointGroupChunk *next;
-    size_t size, used;
-    size_t alloc_size;
-};
-
 static char *chunk_data(dxJointGroupChunk *c) { return (char *)(c + 1); }
 
-// Carve `size` bytes for a joint out of the group's chunks, reusing chunks
-// kept from before the last dJointGroupEmpty.
-static void *group_carve(struct dxJointGroup *g, size_t size)
+void *dxJointGroupCarveSlow(struct dxJointGroup *g, size_t size)
 {
-    size = (size + JOINT_ALIGN - 1) / JOINT_ALIGN * JOINT_ALIGN;
+    // The chunks kept from before the last dJointGroupEmpty first, in order.
     dxJointGroupChunk *c = g->current;
     while (c && c->size - c->used < size) {
         c = c->next;
@@ -64,49 +56,16 @@ static void *group_carve(struct dxJointGroup *g, size_t size)
     return p;
 }
 
-static void group_append(struct dxJointGroup *g, dxJoint *j)
+dxJoint *dxJointPoolTake(dJointType type, size_t size, uint32_t *generation)
 {
-    if (g->num_joints == g->cap_joints) {
-        int cap = g->cap_joints ? 2 * g->cap_joints : 64;
-        g->joints = dRealloc(g->joints, g->cap_joints * sizeof *g->joints, cap * sizeof *g->joints);
-        g->cap_joints = cap;
-    }
-    g->joints[g->num_joints++] = j;
+    dxJoint *j = dxPoolTake(&joint_pools[type], size);
+    *generation = j->hdr.generation;
+    return j;
 }
 
 dxJoint *dxJointCreateBare(struct dxWorld *w, struct dxJointGroup *g, const dxJointClass *cls)
 {
-    dxJoint *j;
-    uint32_t generation = 0;
-    if (g) {
-        j = group_carve(g, cls->size);
-    } else {
-        j = dxPoolTake(&joint_pools[cls->type], cls->size);
-        generation = j->hdr.generation;
-    }
-    // Every field of the common part, written once (no zeroing first).
-    j->hdr.magic = DX_MAGIC_JOINT;
-    j->hdr.generation = generation + 1;
-    j->cls = cls;
-    j->world = w;
-    j->next = w->joints;
-    j->prev = NULL;
-    j->group = g;
-    j->userdata = NULL;
-    j->flags = g ? DX_JOINT_IN_GROUP : 0;
-    for (int k = 0; k < 2; k++) {
-        j->node[k].joint = j;
-        j->node[k].other = NULL;
-        j->node[k].next = NULL;
-    }
-    j->feedback = NULL;
-    j->tag = 0;
-    j->rows.m = j->rows.nub = 0;
-    if (w->joints) w->joints->prev = j;
-    w->joints = j;
-    w->num_joints++;
-    if (g) group_append(g, j);
-    return j;
+    return dxJointCreateBareInline(w, g, cls);
 }
 
 dxJoint *dxJointCreate(struct dxWorld *w, struct dxJointGroup *g, const dxJointClass *cls)
@@ -122,18 +81,26 @@ dxJoint *dxJointCreate(struct dxWorld *w, struct dxJointGroup *g, const dxJointC
 static inline void unlink_node(struct dxBody *b, dxJointNode *n)
 {
     dxJointNode **p = &b->joints;
-    while (*p && *p != n) p = &(*p)->next;
-    if (!*p) return;
+    if (*p != n) {
+        while (*p && *p != n) p = &(*p)->next;
+        if (!*p) return;
+    }
     *p = n->next;
     b->num_joints--;
+}
+
+// Unlink j from its bodies' lists.
+static inline void unlink_bodies(dxJoint *j)
+{
+    struct dxBody *b0 = dxJointBody(j, 0), *b1 = dxJointBody(j, 1);
+    if (b0) unlink_node(b0, &j->node[0]);
+    if (b1) unlink_node(b1, &j->node[1]);
 }
 
 // Unlink j from its bodies' lists and its world's, and poison its handle.
 static inline void unlink_joint(dxJoint *j)
 {
-    struct dxBody *b0 = dxJointBody(j, 0), *b1 = dxJointBody(j, 1);
-    if (b0) unlink_node(b0, &j->node[0]);
-    if (b1) unlink_node(b1, &j->node[1]);
+    unlink_bodies(j);
     struct dxWorld *w = j->world;
     if (w) {
         if (j->prev) j->prev->next = j->next;
@@ -185,11 +152,34 @@ dJointGroupID dJointGroupCreate(int max_size)
 void dJointGroupEmpty(dJointGroupID g)
 {
     CHECK_GROUP(g, return);
-    // Newest first, so a body's joint list (newest at its head) unlinks in O(1).
-    // The group's memory is reused whole, so a joint is only unlinked and
-    // poisoned.
-    for (int i = g->num_joints - 1; i >= 0; i--) unlink_joint(g->joints[i]);
-    g->num_joints = 0;
+    // Newest first, so a body's joint list (newest at its head) unlinks in
+    // O(1). Joints made one after another are neighbours in their world's
+    // list too (each older than the one before): such a run is cut out of
+    // the world's list as a whole. The group's memory is reused whole, so a
+    // joint is only unlinked and poisoned.
+    dxJoint *j = g->newest;
+    while (j) {
+        dxJoint *const newest = j;
+        int run = 1;
+        unlink_bodies(j);
+        j->hdr.magic = DX_MAGIC_DEAD;
+        while (j->group_prev && j->next == j->group_prev) {
+            j = j->next;
+            unlink_bodies(j);
+            j->hdr.magic = DX_MAGIC_DEAD;
+            run++;
+        }
+        struct dxWorld *w = j->world;
+        if (w) {   // (NULL once the world is destroyed: the joint is in no list)
+            dxJoint *before = newest->prev, *after = j->next;
+            if (before) before->next = after;
+            else w->joints = after;
+            if (after) after->prev = before;
+            w->num_joints -= run;
+        }
+        j = j->group_prev;
+    }
+    g->newest = NULL;
     g->current = g->chunks;
     if (g->current) g->current->used = 0;
 }
@@ -202,7 +192,6 @@ void dJointGroupDestroy(dJointGroupID g)
         next = c->next;
         dFree(c, c->alloc_size);
     }
-    dFree(g->joints, g->cap_joints * sizeof *g->joints);
     g->hdr.magic = DX_MAGIC_DEAD;
     dxPoolGive(&group_pool, g);
 }

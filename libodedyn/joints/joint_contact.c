@@ -43,6 +43,7 @@
 // sanitise_surface). A negative depth (the shapes do not touch yet) is
 // accepted and gives no correction, like depth 0.
 
+#include "joint_group.h"
 #include "joint_kept.h"
 #include "joint_geometry.h"
 #include "step_internal.h"
@@ -59,12 +60,25 @@ enum {
 
 typedef struct dxJointContact {
     dxJoint base;
-    dContact contact;      // as given, with the surface sanitised
-    dVector3 n, t1, t2;    // unit normal and friction directions, user's body order
+    dContact contact;      // as given, with the surface sanitised (see contact_init)
+    // Unit normal and friction directions (4th numbers 0), in the user's
+    // body order, negated while `negated`: they are turned to the stored
+    // sense (DX_JOINT_REVERSE) when the rows are made, and stay so.
+    dVector3 n, t1, t2;
+    unsigned negated;
     dReal mu2, rho2, rhoN; // effective coefficients of direction 2 and spin
     unsigned rows_present; // ROW_... ; computed once at creation
     int inert;             // bad geometry: no rows at all
     int m;                 // its number of rows (0 when inert)
+    // The sliding friction rows' numbers that only the contact decides (set
+    // at creation; rows 1 and 2 of dxContactRows, 0 for a row it lacks): the
+    // bounds and pyramid flags. `own_numbers`: a mode gives a row its own
+    // target or cfm (Motion1/2, Slip1/2, SoftCFM); without, every row's
+    // target is 0 but the normal row's, and its cfm is the world's.
+    int sliding_m;         // 1 + the friction rows
+    int own_numbers;
+    dReal row_lo[2], row_hi[2];
+    int row_pyramid[3];
     // The bodies' poses at the contact's first step, and the arms from
     // their origins to the contact point then (world frame).
     const struct dxBody *anchor_body[2];
@@ -164,8 +178,8 @@ static void anchor(dxJointContact *c)
         c->anchor_body[k] = b;
         if (!b) continue;
         c->anchor_generation[k] = b->hdr.generation;
-        dCopyVector3(c->pos0[k], b->pos);
-        dCopyVector4(c->q0[k], b->q);
+        memcpy(c->pos0[k], b->pos, sizeof c->pos0[k]);   // (with its 4th number: whole fours)
+        memcpy(c->q0[k], b->q, sizeof c->q0[k]);
         dSubtractVectors3(c->arm[k], c->contact.geom.pos, b->pos);
     }
 }
@@ -236,62 +250,75 @@ static dReal normal_target(dxJointContact *c, const dVector3 n, dReal fps, dReal
     return target + motion;
 }
 
-// Friction row `row` of r along the stored direction t: coefficient k,
-// target tangential velocity `motion`, cfm `slip` (force-dependent slip:
-// velocity = slip * force) if set.
-static void friction_row(const dxJointContact *c, dxContactRows *r, int row, const dReal *t,
-                         dReal k, int pyramid, dReal motion, int has_slip, dReal slip)
-{
-    r->d[row] = t;
-    r->c[row] = motion;
-    r->cfm[row] = has_slip ? slip : c->base.world->cfm;
-    r->lo[row] = -k;
-    r->hi[row] = k;
-    r->pyramid[row] = pyramid && k < dInfinity;   // (an infinite k: no findex)
-}
-
 // A zero direction, for the rows a contact does not have.
 static const dVector3 no_direction = { 0, 0, 0, 0 };
 
-// The contact's normal and sliding friction rows (a live contact).
-static void contact_rows(dxJointContact *c, dReal fps, dReal erp, dxContactRows *r)
+// Turn n, t1, t2 to the other sense (the joint's stored sense changed).
+static void flip_directions(dxJointContact *c)
 {
-    const dSurfaceParameters *s = &c->contact.surface;
-    const int mode = s->mode;
+    dNegateVector3(c->n);
+    dNegateVector3(c->t1);
+    dNegateVector3(c->t2);
+    c->negated ^= 1;
+}
+
+// Friction row `row` of r along the stored direction t with its own
+// numbers: target tangential velocity `motion`, cfm `slip` (force-dependent
+// slip: velocity = slip * force) if set, the bounds and pyramid flag made at
+// creation.
+static void friction_row_own(const dxJointContact *c, dxContactRows *r, int row, dReal motion,
+                             int has_slip, dReal slip)
+{
+    r->c[row] = motion;
+    r->cfm[row] = has_slip ? slip : c->base.world->cfm;
+}
+
+// The contact's normal and sliding friction rows (a live contact).
+void dxJointContactRows(dxJoint *j, dReal fps, dReal erp, dxContactRows *r)
+{
+    dxJointContact *c = (dxJointContact *)j;
     // Stored sense: the user's directions, negated when the joint is stored
     // reversed (user body 2 as body 0).
-    if (c->base.flags & DX_JOINT_REVERSE) {
-        dCopyNegatedVector3(r->n, c->n);
-        dCopyNegatedVector3(r->t1, c->t1);
-        dCopyNegatedVector3(r->t2, c->t2);
-    } else {
-        dCopyVector3(r->n, c->n);
-        dCopyVector3(r->t1, c->t1);
-        dCopyVector3(r->t2, c->t2);
-    }
-    r->n[3] = r->t1[3] = r->t2[3] = 0;
+    if (((c->base.flags & DX_JOINT_REVERSE) != 0) != c->negated) flip_directions(c);
+    memcpy(r->n, c->n, sizeof r->n);
+    memcpy(r->t1, c->t1, sizeof r->t1);
+    memcpy(r->t2, c->t2, sizeof r->t2);
+    const unsigned friction = c->rows_present & (ROW_T1 | ROW_T2);
+    const int m = c->sliding_m;
+    r->m = m;
+    r->friction = (int)friction;
     r->d[0] = r->n;
-    r->c[0] = normal_target(c, r->n, fps, erp);   // first: it may record the arms
-    r->cfm[0] = (mode & dContactSoftCFM) ? s->soft_cfm : c->base.world->cfm;
+    r->d[1] = (friction & ROW_T1) ? r->t1 : (friction & ROW_T2) ? r->t2 : no_direction;
+    r->d[2] = friction == (ROW_T1 | ROW_T2) ? r->t2 : no_direction;
     r->lo[0] = 0;
+    r->lo[1] = c->row_lo[0];
+    r->lo[2] = c->row_lo[1];
     r->hi[0] = dInfinity;
-    r->pyramid[0] = 0;
+    r->hi[1] = c->row_hi[0];
+    r->hi[2] = c->row_hi[1];
+    r->lo[3] = r->hi[3] = r->c[3] = r->cfm[3] = 0;
+    memcpy(r->pyramid, c->row_pyramid, sizeof r->pyramid);
+    const dReal world_cfm = c->base.world->cfm;
+    r->c[1] = r->c[2] = 0;
+    r->cfm[0] = world_cfm;
+    r->cfm[1] = m > 1 ? world_cfm : 0;
+    r->cfm[2] = m > 2 ? world_cfm : 0;
+    if (c->own_numbers) {
+        const dSurfaceParameters *s = &c->contact.surface;
+        const int mode = s->mode;
+        if (mode & dContactSoftCFM) r->cfm[0] = s->soft_cfm;
+        int row = 1;
+        if (friction & ROW_T1)
+            friction_row_own(c, r, row++, (mode & dContactMotion1) ? s->motion1 : 0,
+                             mode & dContactSlip1, s->slip1);
+        if (friction & ROW_T2)
+            friction_row_own(c, r, row, (mode & dContactMotion2) ? s->motion2 : 0,
+                             mode & dContactSlip2, s->slip2);
+    }
+    r->c[0] = normal_target(c, r->n, fps, erp);   // first: it may record the arms
     r->arm[0] = c->arm[0];
     r->arm[1] = dxJointBody(&c->base, 1) ? c->arm[1] : NULL;
     r->point = c->contact.geom.pos;
-    r->friction = (int)(c->rows_present & (ROW_T1 | ROW_T2));
-    int row = 1;
-    if (c->rows_present & ROW_T1)
-        friction_row(c, r, row++, r->t1, s->mu, mode & dContactApprox1_1,
-                     (mode & dContactMotion1) ? s->motion1 : 0, mode & dContactSlip1, s->slip1);
-    if (c->rows_present & ROW_T2)
-        friction_row(c, r, row++, r->t2, c->mu2, mode & dContactApprox1_2,
-                     (mode & dContactMotion2) ? s->motion2 : 0, mode & dContactSlip2, s->slip2);
-    r->m = row;
-    for (; row < 4; row++) {
-        if (row < 3) r->d[row] = no_direction;
-        r->c[row] = r->cfm[row] = r->lo[row] = r->hi[row] = 0;
-    }
 }
 
 static void contact_fill_rows(dxJoint *j, dxJointRows *rows)
@@ -301,7 +328,7 @@ static void contact_fill_rows(dxJoint *j, dxJointRows *rows)
     const dSurfaceParameters *s = &c->contact.surface;
     const int mode = s->mode;
     dxContactRows r;
-    contact_rows(c, rows->fps, rows->erp, &r);
+    dxJointContactRows(j, rows->fps, rows->erp, &r);
     for (int i = 0; i < r.m; i++) {
         linear_row(&r, rows, i, r.d[i]);
         rows->c[i] = r.c[i];
@@ -328,11 +355,6 @@ static void contact_fill_rows(dxJoint *j, dxJointRows *rows)
         angular_row(j, rows, row, r.n);
         friction_bounds(rows, row, c->rhoN, mode & dContactApprox1_N);
     }
-}
-
-void dxJointContactRows(dxJoint *j, dReal fps, dReal erp, dxContactRows *r)
-{
-    contact_rows((dxJointContact *)j, fps, erp, r);
 }
 
 int dxJointContactWarmInfo(const dxJoint *j, dVector3 point)
@@ -430,22 +452,32 @@ static void sanitise_surface(dSurfaceParameters *s)
     if (mode & dContactSlip2) s->slip2 = check_slip("surface.slip2", s->slip2);
 }
 
+// Report a normal that is not finite or has no direction; 0.
+static int bad_normal(const dContactGeom *g)
+{
+    dxReportBadArgument("dJointCreateContact", "contact normal (%g, %g, %g) has no direction;"
+                        " the contact is ignored", (double)g->normal[0], (double)g->normal[1],
+                        (double)g->normal[2]);
+    return 0;
+}
+
 // Store the unit normal; 0 (after a report) if the geometry is unusable.
 static int check_geometry(dxJointContact *c)
 {
     const dContactGeom *g = &c->contact.geom;
+    dCopyVector3(c->n, g->normal);
+    c->n[3] = 0;
+    // One test for the usual contact: the sum of the seven numbers is finite
+    // only if each is (a NaN or an infinity makes it NaN or infinite); finite
+    // numbers whose sum overflows go on to the tests of each number below.
+    const dReal sum = g->pos[0] + g->pos[1] + g->pos[2] + g->depth + c->n[0] + c->n[1] + c->n[2];
+    if (dxIsFinite(sum)) return dxUnitVector3(c->n) || bad_normal(g);
     if (!dxIsFinite3(g->pos[0], g->pos[1], g->pos[2]) || !dxIsFinite(g->depth)) {
         dxReportBadArgument("dJointCreateContact",
                             "contact position or depth is not finite; the contact is ignored");
         return 0;
     }
-    dCopyVector3(c->n, g->normal);
-    if (!dxIsFinite3(c->n[0], c->n[1], c->n[2]) || !dxUnitVector3(c->n)) {
-        dxReportBadArgument("dJointCreateContact", "contact normal (%g, %g, %g) has no direction;"
-                            " the contact is ignored", (double)g->normal[0],
-                            (double)g->normal[1], (double)g->normal[2]);
-        return 0;
-    }
+    if (!dxIsFinite3(c->n[0], c->n[1], c->n[2]) || !dxUnitVector3(c->n)) return bad_normal(g);
     return 1;
 }
 
@@ -460,6 +492,7 @@ static void friction_directions(dxJointContact *c)
             dCalcVectorLength3(c->t1) > (dReal)1e-3 * dCalcVectorLength3(f) &&
             dSafeNormalize3(c->t1)) {
             dCalcVectorCross3(c->t2, c->n, c->t1);
+            c->t1[3] = c->t2[3] = 0;
             return;
         }
         dxReportBadArgument("dJointCreateContact", "fdir1 (%g, %g, %g) is not a direction "
@@ -467,6 +500,31 @@ static void friction_directions(dxJointContact *c)
                             (double)f[1], (double)f[2]);
     }
     dxPlaneSpaceUnit(c->n, c->t1, c->t2);   // t2 = n x t1 (dPlaneSpace's arithmetic)
+    c->t1[3] = c->t2[3] = 0;
+}
+
+// The bounds -k..k of friction row `row` (1, 2) with coefficient k, times
+// the normal force with `pyramid` (Approx1_1/2; an infinite k: never, whose
+// bound would be inf * force).
+static void friction_bounds_of(dxJointContact *c, int row, dReal k, int pyramid)
+{
+    c->row_lo[row - 1] = -k;
+    c->row_hi[row - 1] = k;
+    c->row_pyramid[row] = pyramid && k < dInfinity;
+}
+
+// The sliding friction rows' own numbers (see dxJointContact).
+static void sliding_rows(dxJointContact *c)
+{
+    const dSurfaceParameters *s = &c->contact.surface;
+    const int mode = s->mode;
+    c->own_numbers = (mode & (dContactSoftCFM | dContactMotion1 | dContactMotion2 |
+                              dContactSlip1 | dContactSlip2)) != 0;
+    c->row_lo[0] = c->row_lo[1] = c->row_hi[0] = c->row_hi[1] = 0;
+    c->row_pyramid[0] = c->row_pyramid[1] = c->row_pyramid[2] = 0;
+    int row = 1;
+    if (c->rows_present & ROW_T1) friction_bounds_of(c, row++, s->mu, mode & dContactApprox1_1);
+    if (c->rows_present & ROW_T2) friction_bounds_of(c, row, c->mu2, mode & dContactApprox1_2);
 }
 
 // Which rows exist, and the effective coefficients of direction 2 and spin.
@@ -487,18 +545,64 @@ static void choose_rows(dxJointContact *c)
     }
     c->rows_present = p;
     c->m = m;
+    c->sliding_m = 1 + t1 + t2;
+    sliding_rows(c);
     // Plain: no rolling rows, and not two unbounded friction rows (those
     // would be solved as a block, quickstep_build.c).
     if (m == 1 + t1 + t2 && !(s->mu == dInfinity && c->mu2 == dInfinity))
         c->base.flags |= DX_JOINT_PLAIN_CONTACT;
 }
 
+// The rows and directions of the usual contact: a surface with mu >= 0 (0
+// to dInfinity: nothing to sanitise) and no mode but the pyramid's
+// (dContactApprox1_1/_2/_N): the numbers choose_rows, sliding_rows and
+// friction_directions give it, made straight.
+static void usual_surface(dxJointContact *c)
+{
+    const dSurfaceParameters *s = &c->contact.surface;
+    const dReal mu = s->mu;
+    c->mu2 = mu;
+    c->rho2 = c->rhoN = 0;   // (rolling friction's: no rolling rows)
+    c->own_numbers = 0;
+    dxPlaneSpaceUnit(c->n, c->t1, c->t2);
+    c->t1[3] = c->t2[3] = 0;
+    c->row_pyramid[0] = 0;
+    if (mu > 0) {
+        c->rows_present = ROW_T1 | ROW_T2;
+        c->m = c->sliding_m = 3;
+        c->row_lo[0] = c->row_lo[1] = -mu;
+        c->row_hi[0] = c->row_hi[1] = mu;
+        const int finite = mu < dInfinity;   // (two infinite rows: not plain, a block)
+        c->row_pyramid[1] = finite && (s->mode & dContactApprox1_1);
+        c->row_pyramid[2] = finite && (s->mode & dContactApprox1_2);
+        if (finite) c->base.flags |= DX_JOINT_PLAIN_CONTACT;
+    } else {
+        c->rows_present = 0;
+        c->m = c->sliding_m = 1;
+        c->row_lo[0] = c->row_lo[1] = c->row_hi[0] = c->row_hi[1] = 0;
+        c->row_pyramid[1] = c->row_pyramid[2] = 0;
+        c->base.flags |= DX_JOINT_PLAIN_CONTACT;
+    }
+}
+
 // Every field of the contact's part (no zeroing first): the pose record
-// only says "none yet"; anchor() fills it at the first step.
+// only says "none yet"; anchor() fills it at the first step. Of the usual
+// contact's dContact (see usual_surface) only what is ever read is kept:
+// the surface's mode and mu, and the point, normal and depth.
 static void contact_init(dxJointContact *c, const dContact *contact)
 {
-    c->contact = *contact;
+    const int usual = (contact->surface.mode & ~dContactApprox1) == 0 && contact->surface.mu >= 0;
+    if (usual) {
+        c->contact.surface.mode = contact->surface.mode;
+        c->contact.surface.mu = contact->surface.mu;
+        memcpy(c->contact.geom.pos, contact->geom.pos, sizeof contact->geom.pos);
+        memcpy(c->contact.geom.normal, contact->geom.normal, sizeof contact->geom.normal);
+        c->contact.geom.depth = contact->geom.depth;
+    } else {
+        c->contact = *contact;
+    }
     c->anchor_body[0] = c->anchor_body[1] = NULL;
+    c->negated = 0;
     if (!check_geometry(c)) {
         dZeroVector3(c->n);
         dZeroVector3(c->t1);
@@ -510,9 +614,13 @@ static void contact_init(dxJointContact *c, const dContact *contact)
         return;
     }
     c->inert = 0;
-    sanitise_surface(&c->contact.surface);
-    friction_directions(c);
-    choose_rows(c);
+    if (usual) {
+        usual_surface(c);
+    } else {
+        sanitise_surface(&c->contact.surface);
+        friction_directions(c);
+        choose_rows(c);
+    }
     // count_rows' answer, which never changes, kept where the steppers
     // read it (dWorldQuickStep's set-up does not ask again).
     c->base.rows.m = c->m;
@@ -525,7 +633,7 @@ dJointID dJointCreateContact(dWorldID w, dJointGroupID g, const dContact *contac
     DX_CHECK_ARG(g == NULL || g->hdr.magic == DX_MAGIC_GROUP, return NULL,
                  "joint group was destroyed");
     DX_CHECK_ARG(contact != NULL, return NULL, "contact is NULL");
-    dxJoint *j = dxJointCreateBare(w, g, &contact_class);
+    dxJoint *j = dxJointCreateBareInline(w, g, &contact_class);
     contact_init((dxJointContact *)j, contact);
     return j;
 }

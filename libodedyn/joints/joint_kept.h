@@ -12,8 +12,10 @@
 #include <ode/contact.h>
 
 // The dContact a contact joint was made from, as dJointCreateContact kept it
-// (its out-of-range surface numbers replaced, as reported then); NULL if j
-// is not a contact joint.
+// (its out-of-range surface numbers replaced, as reported then): its point,
+// normal, depth, surface mode and mu, the surface numbers its mode uses and
+// fdir1 with dContactFDir1 (the rest is not kept: geom.g1, g2, side1, side2
+// are not set); NULL if j is not a contact joint.
 const dContact *dxJointContactGet(const dxJoint *j);
 
 // The rel dJointSetLMotorAxis was given for axis anum (0..2): 0 world, 1 the
