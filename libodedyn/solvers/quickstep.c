@@ -66,34 +66,109 @@
 // 1.99 m against 1.52 m cold), and ragdolls gained nothing.
 
 #include "quickstep.h"
+#include "dx_clones.h"
 #include "step_threads.h"
 
 #include <string.h>
 
 #define REORDER_PERIOD 8
 
-// A counter-based generator: the k-th number is a hash of the seed and k,
-// so that consecutive numbers do not wait for each other.
-static uint32_t next_random(uint32_t *state)
+// The generator is counter-based: the i-th number (i = 1, 2, ...) from a
+// state s is a hash of s + i * RANDOM_STEP, so that the numbers do not wait
+// for each other and a shuffle makes them RANDOM_BLOCK at a time (vectorized
+// where the machine allows) before its swaps, which must go one by one.
+#define RANDOM_STEP 0x9e3779b9u
+#define RANDOM_BLOCK 64
+
+// random_places is built for AVX2 (eight numbers at a time) and the
+// baseline, picked when the library is loaded (dx_clones.h; the same
+// numbers either way). -DQS_SHUFFLE_CLONES= builds the baseline alone.
+#if !defined(QS_SHUFFLE_CLONES) && defined(DX_AVX2_CLONES)
+#define QS_SHUFFLE_CLONES DX_AVX2_CLONES
+#endif
+#ifndef QS_SHUFFLE_CLONES
+#define QS_SHUFFLE_CLONES
+#endif
+
+// The places j[i] in [0, top - i] that a Fisher-Yates shuffle's steps
+// k = top, top - 1, ..., top - count + 1 swap with, from the state's next
+// count numbers: a uniform index in [0, k] by multiply-shift.
+QS_SHUFFLE_CLONES static void random_places(uint32_t state, int top, int count, int *j)
 {
-    uint32_t x = (*state += 0x9e3779b9u);
-    x ^= x >> 16;
-    x *= 0x7feb352du;
-    x ^= x >> 15;
-    x *= 0x846ca68bu;
-    return x ^ (x >> 16);
+    for (int i = 0; i < count; i++) {
+        uint32_t x = state + (uint32_t)(i + 1) * RANDOM_STEP;
+        x ^= x >> 16;
+        x *= 0x7feb352du;
+        x ^= x >> 15;
+        x *= 0x846ca68bu;
+        x ^= x >> 16;
+        j[i] = (int)(((uint64_t)x * (uint32_t)(top - i + 1)) >> 32);
+    }
 }
 
-// Fisher-Yates shuffle of order[0, n).
-static void shuffle(int *order, int n, uint32_t *state)
+// What the reshuffles of a step need, per row of the system (row index):
+// normal: the row that bounds it if that one is in its island's order (a
+// friction row's normal row), else -1; at: where the current reshuffle put
+// the row, plus that reshuffle's base (below).
+typedef struct qs_reorder {
+    const int *normal;
+    unsigned *at;
+} qs_reorder;
+
+// The base of an island's g-th reshuffle of a step, for its n rows: at[r]
+// minus it is below n exactly for the rows the reshuffle has placed (at[]
+// holds the last or this reshuffle's places, or ~0 from the step's start;
+// unsigned arithmetic wraps).
+static unsigned reshuffle_base(int g, int n)
 {
-    for (int k = n - 1; k > 0; k--) {
-        // A uniform index in [0, k] by multiply-shift.
-        const int j = (int)(((uint64_t)next_random(state) * (uint64_t)(k + 1)) >> 32);
-        const int t = order[k];
-        order[k] = order[j];
-        order[j] = t;
+    return (unsigned)g * (unsigned)n;
+}
+
+// Row r has just been put at place k by the shuffle (the places above k are
+// final; those below are not yet). A friction row must come after its
+// normal row: if r's normal row is already above, the normal row moves to k,
+// r to the place where the shuffle put the normal row, and the friction row
+// of the same contact that went there before (one above r) back to its own
+// place. So the normal row ends up at the lowest place of its rows, and the
+// friction row that had it at the normal row's: exactly what one pass
+// upwards swapping each friction row found before its normal row with it
+// gives (the two-pass form this replaced), as the contacts' rows are
+// disjoint groups (only a contact's friction rows are bounded by a row, and
+// a normal row by the constant 1).
+QS_INLINE void place(int *o, int k, int r, unsigned base, unsigned n, const qs_reorder *re)
+{
+    re->at[r] = base + (unsigned)k;
+    const int nr = re->normal[r];
+    if (nr < 0) return;
+    const unsigned a = re->at[nr] - base;
+    if (a >= n) return;   // the normal row comes below k
+    const int f = o[a];   // nr, or a friction row that took its place
+    o[re->at[f] - base] = f;
+    o[a] = r;
+    o[k] = nr;
+}
+
+// Shuffle an island's n rows o[0, n) (Fisher-Yates, downwards) with its
+// generator state, each friction row after its normal row (place); base:
+// reshuffle_base.
+static void reshuffle(int *o, int n, uint32_t *state, unsigned base, const qs_reorder *re)
+{
+    int j[RANDOM_BLOCK];
+    uint32_t s = *state;
+    int k = n - 1;
+    while (k > 0) {
+        const int count = k < RANDOM_BLOCK ? k : RANDOM_BLOCK;
+        random_places(s, k, count, j);
+        s += (uint32_t)count * RANDOM_STEP;
+        for (int i = 0; i < count; i++, k--) {
+            const int r = o[j[i]];
+            o[j[i]] = o[k];
+            o[k] = r;
+            place(o, k, r, base, (unsigned)n, re);
+        }
     }
+    if (n > 0) place(o, 0, o[0], base, (unsigned)n, re);
+    *state = s;
 }
 
 // A seed from the bits of the island's positions and velocities (FNV-1a
@@ -163,46 +238,54 @@ static void interleave_blocks(const qs_system *sys, const qs_island *parts, cons
     }
 }
 
-// The same for the rows in order (after every reshuffle). first: scratch
-// for n numbers.
-static void interleave_rows(const qs_system *sys, const qs_island *parts, const int *list, int n,
-                            int *first)
+// The reshuffles' data for the step (a: the world arena): each row's normal
+// row (through sys->at, lambda position to row, which stays -1 for the
+// positions of no row in order: the constant 1's and the blocks'), at[]
+// from ~0.
+static qs_reorder reorder_begin(dxArena *a, qs_system *sys)
 {
-    if (n == 1) {   // one island (a heap): its order as it is
-        const qs_island *p = &parts[list[0]];
-        memcpy(sys->seq, sys->order + p->order0, sizeof(int) * (size_t)p->norder);
-        return;
-    }
-    for (int k = 0; k < n; k++) first[k] = parts[list[k]].order0;
+    int *normal = DX_ARENA_ARRAY(a, int, sys->nrows + 1);
+    unsigned *at = DX_ARENA_ARRAY(a, unsigned, sys->nrows + 1);
     const int *order = sys->order;
-    int *seq = sys->seq, out = 0;
-    for (int t = 0; n > 0; t++) {
-        while (n > 0 && parts[list[n - 1]].norder <= t) n--;
-        for (int k = 0; k < n; k++) seq[out++] = order[first[k] + t];
+    for (int k = 0; k < sys->norder; k++) sys->at[sys->row_pos[order[k]]] = order[k];
+    for (int k = 0; k < sys->norder; k++) {
+        const int r = order[k];
+        normal[r] = sys->at[sys->row_f[r]];
+        at[r] = ~0u;
     }
+    qs_reorder re = { normal, at };
+    return re;
 }
 
-// Move every friction row of the island's order that comes before its
-// normal row to the normal row's place and the normal row to its own: the
-// rows stay in a random order, but each friction row is bounded by the
-// normal force of the same sweep. One pass suffices: a swap only moves a
-// normal row earlier. at: -1 for every lambda position but those of the
-// rows in order (the same rows at every reordering of a step: their places
-// are all written before they are read).
-static void normals_before_friction(qs_system *sys, const qs_island *p, int *at)
+// to[0, n) = from[0, n), eight at a time in vector moves (memcpy of a few
+// thousand numbers is `rep movsb`, which counts as an instruction a byte).
+static void copy_ints(int *to, const int *from, int n)
 {
-    int *o = sys->order + p->order0;
-    const int *pos = sys->row_pos, *f = sys->row_f;
-    for (int k = 0; k < p->norder; k++) at[pos[o[k]]] = k;
-    for (int k = 0; k < p->norder; k++) {
-        const int j = at[f[o[k]]];   // -1: no friction, or normal not here
-        if (j <= k) continue;
-        const int t = o[k];
-        o[k] = o[j];
-        o[j] = t;
-        at[pos[o[k]]] = k;
-        at[pos[o[j]]] = j;
+    int k = 0;
+    for (; k + 8 <= n; k += 8) memcpy(to + k, from + k, 8 * sizeof(int));
+    for (; k < n; k++) to[k] = from[k];
+}
+
+// After every reshuffle: seq gets the t-th row of each island in list
+// (longest first) that has one, for t = 0, 1, ...; c islands at a time for
+// the rows t0 to t1 of the c-th longest, the longest one's rows beyond the
+// second's in one copy (copy_ints). (One island is swept in place: solve.)
+static void interleave_rows(const qs_system *sys, const qs_island *parts, const int *list, int n)
+{
+    int out = 0, t0 = 0;
+    for (int c = n; c > 1; c--) {
+        const int t1 = parts[list[c - 1]].norder;
+        if (t1 <= t0) continue;
+        for (int k = 0; k < c; k++) {
+            const int *from = sys->order + parts[list[k]].order0;
+            int *to = sys->seq + out + k;
+            for (int t = t0; t < t1; t++, to += c) *to = from[t];
+        }
+        out += (t1 - t0) * c;
+        t0 = t1;
     }
+    const qs_island *p = &parts[list[0]];
+    copy_ints(sys->seq + out, sys->order + p->order0 + t0, p->norder - t0);
 }
 
 // `iterations` sweeps over all islands, each island's rows reshuffled every
@@ -216,14 +299,16 @@ static void solve(dxArena *a, qs_system *sys, qs_island *parts, int count, int i
     interleave_blocks(sys, parts, list, with_blocks);
     dxQuickBatchBlocks(a, sys, with_blocks);
     const int n = islands_by_length(parts, count, 0, list, tmp);
+    const qs_reorder re = reorder_begin(a, sys);
+    if (n == 1) sys->seq = sys->order + parts[list[0]].order0;   // swept as it is
     for (int it = 0; it < iterations; it++) {
         if (it % REORDER_PERIOD == 0) {
             for (int k = 0; k < n; k++) {
                 qs_island *p = &parts[list[k]];
-                shuffle(sys->order + p->order0, p->norder, &p->seed);
-                normals_before_friction(sys, p, sys->at);
+                reshuffle(sys->order + p->order0, p->norder, &p->seed,
+                          reshuffle_base(it / REORDER_PERIOD, p->norder), &re);
             }
-            interleave_rows(sys, parts, list, n, tmp);
+            if (n > 1) interleave_rows(sys, parts, list, n);
         }
         dxQuickSweep(sys, it & 1);
     }
@@ -238,6 +323,7 @@ static void solve(dxArena *a, qs_system *sys, qs_island *parts, int count, int i
 typedef struct solve_islands {
     qs_system *sys;
     qs_island *parts;
+    qs_reorder re;
     int iterations;
 } solve_islands;
 
@@ -256,10 +342,9 @@ static void solve_island(void *context, int item, dxArena *arena)
     one.norder = p->norder;
     one.seq = s->sys->order + p->order0;
     for (int it = 0; it < s->iterations; it++) {
-        if (it % REORDER_PERIOD == 0) {
-            shuffle(one.seq, p->norder, &p->seed);
-            normals_before_friction(s->sys, p, s->sys->at);
-        }
+        if (it % REORDER_PERIOD == 0)
+            reshuffle(one.seq, p->norder, &p->seed,
+                      reshuffle_base(it / REORDER_PERIOD, p->norder), &s->re);
         dxQuickSweep(&one, it & 1);
     }
 }
@@ -313,13 +398,15 @@ int dWorldQuickStep(dWorldID w, dReal stepsize)
     int *list = DX_ARENA_ARRAY(a, int, count + 1);
     int *tmp = DX_ARENA_ARRAY(a, int, count + 1);
     for (int i = 0; i < count; i++) {
-        parts[i].seed = island_seed(&islands[i]);
+        // (an island without joints has no rows to shuffle)
+        parts[i].seed = islands[i].nj > 0 ? island_seed(&islands[i]) : 0;
         dxIslandPrepare(w, a, &islands[i], h, &bd[i]);
         dxQuickBuild(w, &islands[i], &bd[i], h, &sys, &parts[i]);
     }
     const int threads = dxStepThreadCount(w, count, __func__);
     if (threads > 1 && sys.m > 0) {
-        solve_islands s = { &sys, parts, w->qs_iterations };
+        solve_islands s = { &sys, parts, reorder_begin(a, &sys),
+                            w->qs_iterations };
         dxStepRunParallel(w, threads, count, solve_island, &s);
     } else if (sys.m > 0) {
         solve(a, &sys, parts, count, w->qs_iterations, list, tmp);
