@@ -78,7 +78,7 @@
 // for each other and a shuffle makes them RANDOM_BLOCK at a time (vectorized
 // where the machine allows) before its swaps, which must go one by one.
 #define RANDOM_STEP 0x9e3779b9u
-#define RANDOM_BLOCK 64
+#define RANDOM_BLOCK 256
 
 // random_places is built for AVX2 (eight numbers at a time) and the
 // baseline, picked when the library is loaded (dx_clones.h; the same
@@ -90,28 +90,38 @@
 #define QS_SHUFFLE_CLONES
 #endif
 
-// The places j[i] in [0, top - i] that a Fisher-Yates shuffle's steps
-// k = top, top - 1, ..., top - count + 1 swap with, from the state's next
-// count numbers: a uniform index in [0, k] by multiply-shift.
-QS_SHUFFLE_CLONES static void random_places(uint32_t state, int top, int count, int *j)
+// The generator's number from state x (the state already advanced).
+QS_INLINE uint32_t random_hash(uint32_t x)
 {
-    for (int i = 0; i < count; i++) {
-        uint32_t x = state + (uint32_t)(i + 1) * RANDOM_STEP;
-        x ^= x >> 16;
-        x *= 0x7feb352du;
-        x ^= x >> 15;
-        x *= 0x846ca68bu;
-        x ^= x >> 16;
-        j[i] = (int)(((uint64_t)x * (uint32_t)(top - i + 1)) >> 32);
+    x ^= x >> 16;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    return x ^ (x >> 16);
+}
+
+// The places j[i] in [0, lo + i] that a Fisher-Yates shuffle's steps
+// k = lo + i (i = 0 .. count - 1) swap with, from the state's next count
+// numbers, the first for the highest k: a uniform index in [0, k] by
+// multiply-shift. (The compiler makes them eight at a time with AVX2:
+// vpmulld, and vpmuludq for the even and the odd lanes' products.)
+QS_SHUFFLE_CLONES static void random_places(uint32_t state, unsigned lo, unsigned count,
+                                            unsigned *j)
+{
+    for (unsigned i = 0; i < count; i++) {
+        const uint32_t x = random_hash(state + (count - i) * RANDOM_STEP);
+        j[i] = (unsigned)(((uint64_t)x * (lo + i + 1)) >> 32);
     }
 }
 
 // What the reshuffles of a step need, per row of the system (row index):
 // normal: the row that bounds it if that one is in its island's order (a
-// friction row's normal row), else -1; at: where the current reshuffle put
-// the row, plus that reshuffle's base (below).
+// friction row's normal row), else NO_ROW; at: where the current reshuffle
+// put the row, plus that reshuffle's base (below). Unsigned: row indices
+// index without widening.
+#define NO_ROW (~0u)
 typedef struct qs_reorder {
-    const int *normal;
+    const unsigned *normal;
     unsigned *at;
 } qs_reorder;
 
@@ -135,39 +145,46 @@ static unsigned reshuffle_base(int g, int n)
 // gives (the two-pass form this replaced), as the contacts' rows are
 // disjoint groups (only a contact's friction rows are bounded by a row, and
 // a normal row by the constant 1).
-QS_INLINE void place(int *o, int k, int r, unsigned base, unsigned n, const qs_reorder *re)
+QS_INLINE void place(unsigned *o, unsigned k, unsigned r, unsigned base, unsigned n,
+                     unsigned *at, const unsigned *normal)
 {
-    re->at[r] = base + (unsigned)k;
-    const int nr = re->normal[r];
-    if (nr < 0) return;
-    const unsigned a = re->at[nr] - base;
-    if (a >= n) return;   // the normal row comes below k
-    const int f = o[a];   // nr, or a friction row that took its place
-    o[re->at[f] - base] = f;
+    at[r] = base + k;
+    const unsigned nr = normal[r];
+    if (nr == NO_ROW) return;
+    const unsigned a = at[nr] - base;
+    if (a >= n) return;        // the normal row comes below k
+    const unsigned f = o[a];   // nr, or a friction row that took its place
+    o[at[f] - base] = f;
     o[a] = r;
     o[k] = nr;
 }
 
-// Shuffle an island's n rows o[0, n) (Fisher-Yates, downwards) with its
+// Shuffle an island's n rows order[0, n) (Fisher-Yates, downwards) with its
 // generator state, each friction row after its normal row (place); base:
 // reshuffle_base.
-static void reshuffle(int *o, int n, uint32_t *state, unsigned base, const qs_reorder *re)
+static void reshuffle(int *order, int n, uint32_t *state, unsigned base, const qs_reorder *re)
 {
-    int j[RANDOM_BLOCK];
+    unsigned j[RANDOM_BLOCK];
+    unsigned *o = (unsigned *)order, *at = re->at;
+    const unsigned *normal = re->normal;
     uint32_t s = *state;
-    int k = n - 1;
-    while (k > 0) {
-        const int count = k < RANDOM_BLOCK ? k : RANDOM_BLOCK;
-        random_places(s, k, count, j);
+    for (size_t top = n > 1 ? (size_t)n - 1 : 0; top > 0;) {
+        const size_t count = top < RANDOM_BLOCK ? top : RANDOM_BLOCK, lo = top - count + 1;
+        random_places(s, (unsigned)lo, (unsigned)count, j);
         s += (uint32_t)count * RANDOM_STEP;
-        for (int i = 0; i < count; i++, k--) {
-            const int r = o[j[i]];
-            o[j[i]] = o[k];
+        const unsigned *jk = j - lo;   // jk[k]: the place step k swaps with
+#if defined(__GNUC__)
+#pragma GCC unroll 2
+#endif
+        for (size_t k = top; k >= lo; k--) {
+            const unsigned r = o[jk[k]];
+            o[jk[k]] = o[k];
             o[k] = r;
-            place(o, k, r, base, (unsigned)n, re);
+            place(o, (unsigned)k, r, base, (unsigned)n, at, normal);
         }
+        top = lo - 1;
     }
-    if (n > 0) place(o, 0, o[0], base, (unsigned)n, re);
+    if (n > 0) place(o, 0, o[0], base, (unsigned)n, at, normal);
     *state = s;
 }
 
@@ -239,18 +256,20 @@ static void interleave_blocks(const qs_system *sys, const qs_island *parts, cons
 }
 
 // The reshuffles' data for the step (a: the world arena): each row's normal
-// row (through sys->at, lambda position to row, which stays -1 for the
-// positions of no row in order: the constant 1's and the blocks'), at[]
+// row, through sys->at (lambda position to row: set for the rows in order as
+// they come, a contact's normal row before its friction rows; -1 for the
+// positions of no row in order, the constant 1's and the blocks'), and at[]
 // from ~0.
 static qs_reorder reorder_begin(dxArena *a, qs_system *sys)
 {
-    int *normal = DX_ARENA_ARRAY(a, int, sys->nrows + 1);
+    unsigned *normal = DX_ARENA_ARRAY(a, unsigned, sys->nrows + 1);
     unsigned *at = DX_ARENA_ARRAY(a, unsigned, sys->nrows + 1);
-    const int *order = sys->order;
-    for (int k = 0; k < sys->norder; k++) sys->at[sys->row_pos[order[k]]] = order[k];
-    for (int k = 0; k < sys->norder; k++) {
+    const int *order = sys->order, *pos = sys->row_pos, *f = sys->row_f, n = sys->norder;
+    int *row = sys->at;
+    for (int k = 0; k < n; k++) {
         const int r = order[k];
-        normal[r] = sys->at[sys->row_f[r]];
+        row[pos[r]] = r;
+        normal[r] = (unsigned)row[f[r]];   // -1: NO_ROW
         at[r] = ~0u;
     }
     qs_reorder re = { normal, at };
