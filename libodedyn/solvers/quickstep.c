@@ -66,7 +66,6 @@
 // 1.99 m against 1.52 m cold), and ragdolls gained nothing.
 
 #include "quickstep.h"
-#include "dx_clones.h"
 #include "step_threads.h"
 
 #include <string.h>
@@ -80,14 +79,18 @@
 #define RANDOM_STEP 0x9e3779b9u
 #define RANDOM_BLOCK 256
 
-// random_places is built for AVX2 (eight numbers at a time) and the
-// baseline, picked when the library is loaded (dx_clones.h; the same
-// numbers either way). -DQS_SHUFFLE_CLONES= builds the baseline alone.
-#if !defined(QS_SHUFFLE_CLONES) && defined(DX_AVX2_CLONES)
-#define QS_SHUFFLE_CLONES DX_AVX2_CLONES
+// random_places has a version for AVX2 (x86-64, GCC or clang), taken when the
+// processor has it (the same numbers either way): -DQS_SHUFFLE_AVX2=0 leaves
+// the baseline alone, to compare the two.
+#if !defined(QS_SHUFFLE_AVX2)
+#if defined(__x86_64__) && defined(__GNUC__)
+#define QS_SHUFFLE_AVX2 1
+#else
+#define QS_SHUFFLE_AVX2 0
 #endif
-#ifndef QS_SHUFFLE_CLONES
-#define QS_SHUFFLE_CLONES
+#endif
+#if QS_SHUFFLE_AVX2
+#include <immintrin.h>
 #endif
 
 // The generator's number from state x (the state already advanced).
@@ -100,15 +103,48 @@ QS_INLINE uint32_t random_hash(uint32_t x)
     return x ^ (x >> 16);
 }
 
+#if QS_SHUFFLE_AVX2
+// random_places eight at a time: the hash with vpmulld, the products of the
+// even and the odd 32-bit lanes with vpmuludq, their high halves blended.
+__attribute__((target("avx2"))) static unsigned random_places_avx2(uint32_t state, unsigned lo,
+                                                                   unsigned count, unsigned *j)
+{
+    const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    const __m256i step = _mm256_set1_epi32((int)RANDOM_STEP);
+    const __m256i c1 = _mm256_set1_epi32(0x7feb352d), c2 = _mm256_set1_epi32((int)0x846ca68bu);
+    __m256i x = _mm256_sub_epi32(_mm256_set1_epi32((int)(state + count * RANDOM_STEP)),
+                                 _mm256_mullo_epi32(lane, step));
+    __m256i m = _mm256_add_epi32(_mm256_set1_epi32((int)(lo + 1)), lane);
+    const __m256i x8 = _mm256_set1_epi32((int)(8 * RANDOM_STEP)), m8 = _mm256_set1_epi32(8);
+    unsigned i = 0;
+    for (; i + 8 <= count; i += 8) {
+        __m256i h = _mm256_xor_si256(x, _mm256_srli_epi32(x, 16));
+        h = _mm256_mullo_epi32(h, c1);
+        h = _mm256_xor_si256(h, _mm256_srli_epi32(h, 15));
+        h = _mm256_mullo_epi32(h, c2);
+        h = _mm256_xor_si256(h, _mm256_srli_epi32(h, 16));
+        const __m256i even = _mm256_srli_epi64(_mm256_mul_epu32(h, m), 32);
+        const __m256i odd =
+            _mm256_mul_epu32(_mm256_srli_epi64(h, 32), _mm256_srli_epi64(m, 32));
+        _mm256_storeu_si256((__m256i *)(j + i), _mm256_blend_epi32(even, odd, 0xaa));
+        x = _mm256_sub_epi32(x, x8);
+        m = _mm256_add_epi32(m, m8);
+    }
+    return i;
+}
+#endif
+
 // The places j[i] in [0, lo + i] that a Fisher-Yates shuffle's steps
 // k = lo + i (i = 0 .. count - 1) swap with, from the state's next count
 // numbers, the first for the highest k: a uniform index in [0, k] by
-// multiply-shift. (The compiler makes them eight at a time with AVX2:
-// vpmulld, and vpmuludq for the even and the odd lanes' products.)
-QS_SHUFFLE_CLONES static void random_places(uint32_t state, unsigned lo, unsigned count,
-                                            unsigned *j)
+// multiply-shift.
+static void random_places(uint32_t state, unsigned lo, unsigned count, unsigned *j)
 {
-    for (unsigned i = 0; i < count; i++) {
+    unsigned i = 0;
+#if QS_SHUFFLE_AVX2
+    if (__builtin_cpu_supports("avx2")) i = random_places_avx2(state, lo, count, j);
+#endif
+    for (; i < count; i++) {
         const uint32_t x = random_hash(state + (count - i) * RANDOM_STEP);
         j[i] = (unsigned)(((uint64_t)x * (lo + i + 1)) >> 32);
     }
@@ -145,10 +181,10 @@ static unsigned reshuffle_base(int g, int n)
 // gives (the two-pass form this replaced), as the contacts' rows are
 // disjoint groups (only a contact's friction rows are bounded by a row, and
 // a normal row by the constant 1).
-QS_INLINE void place(unsigned *o, unsigned k, unsigned r, unsigned base, unsigned n,
+QS_INLINE void place(unsigned *o, size_t k, unsigned r, unsigned base, unsigned n,
                      unsigned *at, const unsigned *normal)
 {
-    at[r] = base + k;
+    at[r] = base + (unsigned)k;
     const unsigned nr = normal[r];
     if (nr == NO_ROW) return;
     const unsigned a = at[nr] - base;
@@ -174,13 +210,13 @@ static void reshuffle(int *order, int n, uint32_t *state, unsigned base, const q
         s += (uint32_t)count * RANDOM_STEP;
         const unsigned *jk = j - lo;   // jk[k]: the place step k swaps with
 #if defined(__GNUC__)
-#pragma GCC unroll 2
+#pragma GCC unroll 4
 #endif
         for (size_t k = top; k >= lo; k--) {
             const unsigned r = o[jk[k]];
             o[jk[k]] = o[k];
             o[k] = r;
-            place(o, (unsigned)k, r, base, (unsigned)n, at, normal);
+            place(o, k, r, base, (unsigned)n, at, normal);
         }
         top = lo - 1;
     }
@@ -391,14 +427,16 @@ static void update_velocities(const dxIsland *is, const dxIslandBodies *bd, cons
 {
     for (int b = 0; b < is->nb; b++) {
         struct dxBody *body = is->bodies[b];
-        const dReal *c = fc + 6 * b;
-        dVector3 dw;
-        dMultiply0_331(dw, bd->inv_inertia + 12 * b, body->torque);
+        const dReal *c = fc + 6 * b, *I = bd->inv_inertia + 12 * b, *t = body->torque;
         const dReal k = h * bd->inv_mass[b];
+        dReal v[6];   // all read before any is written, so the compiler may pair them
         for (int e = 0; e < 3; e++) {
-            body->lvel[e] += body->force[e] * k + h * c[e];
-            body->avel[e] += dw[e] * h + h * c[3 + e];
+            const dReal dw = dCalcVectorDot3(I + 4 * e, t);   // (I^-1 torque)_e
+            v[e] = body->lvel[e] + (body->force[e] * k + h * c[e]);
+            v[3 + e] = body->avel[e] + (dw * h + h * c[3 + e]);
         }
+        dCopyVector3(body->lvel, v);
+        dCopyVector3(body->avel, v + 3);
     }
 }
 
