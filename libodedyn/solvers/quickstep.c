@@ -134,6 +134,8 @@ __attribute__((target("avx2"))) static unsigned random_places_avx2(uint32_t stat
 }
 #endif
 
+int dxQuickShuffleAVX2 = 1;
+
 // The places j[i] in [0, lo + i] that a Fisher-Yates shuffle's steps
 // k = lo + i (i = 0 .. count - 1) swap with, from the state's next count
 // numbers, the first for the highest k: a uniform index in [0, k] by
@@ -142,7 +144,8 @@ static void random_places(uint32_t state, unsigned lo, unsigned count, unsigned 
 {
     unsigned i = 0;
 #if QS_SHUFFLE_AVX2
-    if (__builtin_cpu_supports("avx2")) i = random_places_avx2(state, lo, count, j);
+    if (dxQuickShuffleAVX2 && __builtin_cpu_supports("avx2"))
+        i = random_places_avx2(state, lo, count, j);
 #endif
     for (; i < count; i++) {
         const uint32_t x = random_hash(state + (count - i) * RANDOM_STEP);
@@ -222,6 +225,13 @@ static void reshuffle(int *order, int n, uint32_t *state, unsigned base, const q
     }
     if (n > 0) place(o, 0, o[0], base, (unsigned)n, at, normal);
     *state = s;
+}
+
+void dxQuickReshuffle(int *order, int n, uint32_t *state, unsigned base, const unsigned *normal,
+                      unsigned *at)
+{
+    const qs_reorder re = { normal, at };
+    reshuffle(order, n, state, base, &re);
 }
 
 // A seed from the bits of the island's positions and velocities (FNV-1a
