@@ -211,13 +211,12 @@ static void reshuffle(int *order, int n, uint32_t *state, unsigned base, const q
         const size_t count = top < RANDOM_BLOCK ? top : RANDOM_BLOCK, lo = top - count + 1;
         random_places(s, (unsigned)lo, (unsigned)count, j);
         s += (uint32_t)count * RANDOM_STEP;
-        const unsigned *jk = j - lo;   // jk[k]: the place step k swaps with
 #if defined(__GNUC__)
 #pragma GCC unroll 4
 #endif
         for (size_t k = top; k >= lo; k--) {
-            const unsigned r = o[jk[k]];
-            o[jk[k]] = o[k];
+            const unsigned r = o[j[k - lo]];
+            o[j[k - lo]] = o[k];
             o[k] = r;
             place(o, k, r, base, (unsigned)n, at, normal);
         }
@@ -472,8 +471,7 @@ int dWorldQuickStep(dWorldID w, dReal stepsize)
     }
     const int threads = dxStepThreadCount(w, count, __func__);
     if (threads > 1 && sys.m > 0) {
-        solve_islands s = { &sys, parts, reorder_begin(a, &sys),
-                            w->qs_iterations };
+        solve_islands s = { &sys, parts, reorder_begin(a, &sys), w->qs_iterations };
         dxStepRunParallel(w, threads, count, solve_island, &s);
     } else if (sys.m > 0) {
         solve(a, &sys, parts, count, w->qs_iterations, list, tmp);
