@@ -144,7 +144,7 @@ static void random_places(uint32_t state, unsigned lo, unsigned count, unsigned 
 {
     unsigned i = 0;
 #if QS_SHUFFLE_AVX2
-    if (dxQuickShuffleAVX2 && __builtin_cpu_supports("avx2"))
+    if (count >= 8 && dxQuickShuffleAVX2 && __builtin_cpu_supports("avx2"))
         i = random_places_avx2(state, lo, count, j);
 #endif
     for (; i < count; i++) {
@@ -331,25 +331,33 @@ static void copy_ints(int *to, const int *from, int n)
 }
 
 // After every reshuffle: seq gets the t-th row of each island in list
-// (longest first) that has one, for t = 0, 1, ...; c islands at a time for
-// the rows t0 to t1 of the c-th longest, the longest one's rows beyond the
-// second's in one copy (copy_ints). (One island is swept in place: solve.)
-static void interleave_rows(const qs_system *sys, const qs_island *parts, const int *list, int n)
+// (longest first) that has one, for t = 0, 1, ...: in runs of c islands for
+// the rows t0 to t1 of the c-th longest, island by island where the run is
+// long, else row by row (many short islands); the longest one's rows beyond
+// the second's in one copy (copy_ints). (One island is swept in place:
+// solve.) from: scratch for n pointers.
+static void interleave_rows(const qs_system *sys, const qs_island *parts, const int *list, int n,
+                            const int **from)
 {
+    for (int k = 0; k < n; k++) from[k] = sys->order + parts[list[k]].order0;
     int out = 0, t0 = 0;
     for (int c = n; c > 1; c--) {
         const int t1 = parts[list[c - 1]].norder;
         if (t1 <= t0) continue;
-        for (int k = 0; k < c; k++) {
-            const int *from = sys->order + parts[list[k]].order0;
-            int *to = sys->seq + out + k;
-            for (int t = t0; t < t1; t++, to += c) *to = from[t];
+        int *seq = sys->seq + out;
+        if (t1 - t0 >= c) {
+            for (int k = 0; k < c; k++) {
+                int *to = seq + k;
+                for (int t = t0; t < t1; t++, to += c) *to = from[k][t];
+            }
+        } else {
+            for (int t = t0; t < t1; t++)
+                for (int k = 0; k < c; k++) *seq++ = from[k][t];
         }
         out += (t1 - t0) * c;
         t0 = t1;
     }
-    const qs_island *p = &parts[list[0]];
-    copy_ints(sys->seq + out, sys->order + p->order0 + t0, p->norder - t0);
+    copy_ints(sys->seq + out, from[0] + t0, parts[list[0]].norder - t0);
 }
 
 // `iterations` sweeps over all islands, each island's rows reshuffled every
@@ -365,6 +373,7 @@ static void solve(dxArena *a, qs_system *sys, qs_island *parts, int count, int i
     const int n = islands_by_length(parts, count, 0, list, tmp);
     const qs_reorder re = reorder_begin(a, sys);
     if (n == 1) sys->seq = sys->order + parts[list[0]].order0;   // swept as it is
+    const int **from = n > 1 ? DX_ARENA_ARRAY(a, const int *, n) : NULL;
     for (int it = 0; it < iterations; it++) {
         if (it % REORDER_PERIOD == 0) {
             for (int k = 0; k < n; k++) {
@@ -372,7 +381,7 @@ static void solve(dxArena *a, qs_system *sys, qs_island *parts, int count, int i
                 reshuffle(sys->order + p->order0, p->norder, &p->seed,
                           reshuffle_base(it / REORDER_PERIOD, p->norder), &re);
             }
-            if (n > 1) interleave_rows(sys, parts, list, n);
+            if (n > 1) interleave_rows(sys, parts, list, n, from);
         }
         dxQuickSweep(sys, it & 1);
     }
