@@ -174,7 +174,7 @@ typedef struct qs_system {
     const qs_batch *batches; // bseq packed in batches (NULL: sweep bseq)
     int nbatches;
     int *seq;              // order of all islands, interleaved
-    int *at;               // m + 1: the place in order per lambda position (-1: not there)
+    int *at;               // m + 1: the row in order per lambda position (-1: none)
     int *row_pos, *row_f;  // per row: its pos and f (compact copies for the reordering)
     dReal *lambda;         // m + 1: the last holds the constant 1
     dReal *fc;             // 6 per body (and island dummy): M^-1 J^T lambda
