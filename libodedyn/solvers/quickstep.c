@@ -72,11 +72,30 @@
 
 #define REORDER_PERIOD 8
 
-// A counter-based generator: the k-th number is a hash of the seed and k,
-// so that consecutive numbers do not wait for each other.
-static uint32_t next_random(uint32_t *state)
+// The generator is counter-based: the i-th number (i = 1, 2, ...) from a
+// state s is a hash of s + i * RANDOM_STEP, so that the numbers do not wait
+// for each other and a shuffle makes them RANDOM_BLOCK at a time (vectorized
+// where the machine allows) before its swaps, which must go one by one.
+#define RANDOM_STEP 0x9e3779b9u
+#define RANDOM_BLOCK 256
+
+// random_places has a version for AVX2 (x86-64, GCC or clang), taken when the
+// processor has it (the same numbers either way): -DQS_SHUFFLE_AVX2=0 leaves
+// the baseline alone, to compare the two.
+#if !defined(QS_SHUFFLE_AVX2)
+#if defined(__x86_64__) && defined(__GNUC__)
+#define QS_SHUFFLE_AVX2 1
+#else
+#define QS_SHUFFLE_AVX2 0
+#endif
+#endif
+#if QS_SHUFFLE_AVX2
+#include <immintrin.h>
+#endif
+
+// The generator's number from state x (the state already advanced).
+QS_INLINE uint32_t random_hash(uint32_t x)
 {
-    uint32_t x = (*state += 0x9e3779b9u);
     x ^= x >> 16;
     x *= 0x7feb352du;
     x ^= x >> 15;
@@ -84,16 +103,134 @@ static uint32_t next_random(uint32_t *state)
     return x ^ (x >> 16);
 }
 
-// Fisher-Yates shuffle of order[0, n).
-static void shuffle(int *order, int n, uint32_t *state)
+#if QS_SHUFFLE_AVX2
+// random_places eight at a time: the hash with vpmulld, the products of the
+// even and the odd 32-bit lanes with vpmuludq, their high halves blended.
+__attribute__((target("avx2"))) static unsigned random_places_avx2(uint32_t state, unsigned lo,
+                                                                   unsigned count, unsigned *j)
 {
-    for (int k = n - 1; k > 0; k--) {
-        // A uniform index in [0, k] by multiply-shift.
-        const int j = (int)(((uint64_t)next_random(state) * (uint64_t)(k + 1)) >> 32);
-        const int t = order[k];
-        order[k] = order[j];
-        order[j] = t;
+    const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    const __m256i step = _mm256_set1_epi32((int)RANDOM_STEP);
+    const __m256i c1 = _mm256_set1_epi32(0x7feb352d), c2 = _mm256_set1_epi32((int)0x846ca68bu);
+    __m256i x = _mm256_sub_epi32(_mm256_set1_epi32((int)(state + count * RANDOM_STEP)),
+                                 _mm256_mullo_epi32(lane, step));
+    __m256i m = _mm256_add_epi32(_mm256_set1_epi32((int)(lo + 1)), lane);
+    const __m256i x8 = _mm256_set1_epi32((int)(8 * RANDOM_STEP)), m8 = _mm256_set1_epi32(8);
+    unsigned i = 0;
+    for (; i + 8 <= count; i += 8) {
+        __m256i h = _mm256_xor_si256(x, _mm256_srli_epi32(x, 16));
+        h = _mm256_mullo_epi32(h, c1);
+        h = _mm256_xor_si256(h, _mm256_srli_epi32(h, 15));
+        h = _mm256_mullo_epi32(h, c2);
+        h = _mm256_xor_si256(h, _mm256_srli_epi32(h, 16));
+        const __m256i even = _mm256_srli_epi64(_mm256_mul_epu32(h, m), 32);
+        const __m256i odd =
+            _mm256_mul_epu32(_mm256_srli_epi64(h, 32), _mm256_srli_epi64(m, 32));
+        _mm256_storeu_si256((__m256i *)(j + i), _mm256_blend_epi32(even, odd, 0xaa));
+        x = _mm256_sub_epi32(x, x8);
+        m = _mm256_add_epi32(m, m8);
     }
+    return i;
+}
+#endif
+
+int dxQuickShuffleAVX2 = 1;
+
+// The places j[i] in [0, lo + i] that a Fisher-Yates shuffle's steps
+// k = lo + i (i = 0 .. count - 1) swap with, from the state's next count
+// numbers, the first for the highest k: a uniform index in [0, k] by
+// multiply-shift.
+static void random_places(uint32_t state, unsigned lo, unsigned count, unsigned *j)
+{
+    unsigned i = 0;
+#if QS_SHUFFLE_AVX2
+    if (count >= 8 && dxQuickShuffleAVX2 && __builtin_cpu_supports("avx2"))
+        i = random_places_avx2(state, lo, count, j);
+#endif
+    for (; i < count; i++) {
+        const uint32_t x = random_hash(state + (count - i) * RANDOM_STEP);
+        j[i] = (unsigned)(((uint64_t)x * (lo + i + 1)) >> 32);
+    }
+}
+
+// What the reshuffles of a step need, per row of the system (row index):
+// normal: the row that bounds it if that one is in its island's order (a
+// friction row's normal row), else NO_ROW; at: where the current reshuffle
+// put the row, plus that reshuffle's base (below). Unsigned: row indices
+// index without widening.
+#define NO_ROW (~0u)
+typedef struct qs_reorder {
+    const unsigned *normal;
+    unsigned *at;
+} qs_reorder;
+
+// The base of an island's g-th reshuffle of a step, for its n rows: at[r]
+// minus it is below n exactly for the rows the reshuffle has placed (at[]
+// holds the last or this reshuffle's places, or ~0 from the step's start;
+// unsigned arithmetic wraps).
+static unsigned reshuffle_base(int g, int n)
+{
+    return (unsigned)g * (unsigned)n;
+}
+
+// Row r has just been put at place k by the shuffle (the places above k are
+// final; those below are not yet). A friction row must come after its
+// normal row: if r's normal row is already above, the normal row moves to k,
+// r to the place where the shuffle put the normal row, and the friction row
+// of the same contact that went there before (one above r) back to its own
+// place. So the normal row ends up at the lowest place of its rows, and the
+// friction row that had it at the normal row's: exactly what one pass
+// upwards swapping each friction row found before its normal row with it
+// gives (the two-pass form this replaced), as the contacts' rows are
+// disjoint groups (only a contact's friction rows are bounded by a row, and
+// a normal row by the constant 1).
+QS_INLINE void place(unsigned *o, size_t k, unsigned r, unsigned base, unsigned n,
+                     unsigned *at, const unsigned *normal)
+{
+    at[r] = base + (unsigned)k;
+    const unsigned nr = normal[r];
+    if (nr == NO_ROW) return;
+    const unsigned a = at[nr] - base;
+    if (a >= n) return;        // the normal row comes below k
+    const unsigned f = o[a];   // nr, or a friction row that took its place
+    o[at[f] - base] = f;
+    o[a] = r;
+    o[k] = nr;
+}
+
+// Shuffle an island's n rows order[0, n) (Fisher-Yates, downwards) with its
+// generator state, each friction row after its normal row (place); base:
+// reshuffle_base.
+static void reshuffle(int *order, int n, uint32_t *state, unsigned base, const qs_reorder *re)
+{
+    unsigned j[RANDOM_BLOCK];
+    unsigned *o = (unsigned *)order, *at = re->at;
+    const unsigned *normal = re->normal;
+    uint32_t s = *state;
+    for (size_t top = n > 1 ? (size_t)n - 1 : 0; top > 0;) {
+        const size_t count = top < RANDOM_BLOCK ? top : RANDOM_BLOCK, lo = top - count + 1;
+        random_places(s, (unsigned)lo, (unsigned)count, j);
+        s += (uint32_t)count * RANDOM_STEP;
+#if defined(__GNUC__)
+#pragma GCC unroll 4
+#endif
+        for (size_t k = top; k >= lo; k--) {
+            const unsigned r = o[j[k - lo]];
+            o[j[k - lo]] = o[k];
+            o[k] = r;
+            place(o, k, r, base, (unsigned)n, at, normal);
+        }
+        top = lo - 1;
+    }
+    if (n > 0) place(o, 0, o[0], base, (unsigned)n, at, normal);
+    *state = s;
+}
+
+void dxQuickReshuffle(int *order, int n, uint32_t *state, unsigned base, const unsigned *normal,
+                      unsigned *at)
+{
+    const qs_reorder re = { normal, at };
+    reshuffle(order, n, state, base, &re);
 }
 
 // A seed from the bits of the island's positions and velocities (FNV-1a
@@ -163,46 +300,64 @@ static void interleave_blocks(const qs_system *sys, const qs_island *parts, cons
     }
 }
 
-// The same for the rows in order (after every reshuffle). first: scratch
-// for n numbers.
-static void interleave_rows(const qs_system *sys, const qs_island *parts, const int *list, int n,
-                            int *first)
+// The reshuffles' data for the step (a: the world arena): each row's normal
+// row, through sys->at (lambda position to row: set for the rows in order as
+// they come, a contact's normal row before its friction rows; -1 for the
+// positions of no row in order, the constant 1's and the blocks'), and at[]
+// from ~0.
+static qs_reorder reorder_begin(dxArena *a, qs_system *sys)
 {
-    if (n == 1) {   // one island (a heap): its order as it is
-        const qs_island *p = &parts[list[0]];
-        memcpy(sys->seq, sys->order + p->order0, sizeof(int) * (size_t)p->norder);
-        return;
+    unsigned *normal = DX_ARENA_ARRAY(a, unsigned, sys->nrows + 1);
+    unsigned *at = DX_ARENA_ARRAY(a, unsigned, sys->nrows + 1);
+    const int *order = sys->order, *pos = sys->row_pos, *f = sys->row_f, n = sys->norder;
+    int *row = sys->at;
+    for (int k = 0; k < n; k++) {
+        const int r = order[k];
+        row[pos[r]] = r;
+        normal[r] = (unsigned)row[f[r]];   // -1: NO_ROW
+        at[r] = ~0u;
     }
-    for (int k = 0; k < n; k++) first[k] = parts[list[k]].order0;
-    const int *order = sys->order;
-    int *seq = sys->seq, out = 0;
-    for (int t = 0; n > 0; t++) {
-        while (n > 0 && parts[list[n - 1]].norder <= t) n--;
-        for (int k = 0; k < n; k++) seq[out++] = order[first[k] + t];
-    }
+    qs_reorder re = { normal, at };
+    return re;
 }
 
-// Move every friction row of the island's order that comes before its
-// normal row to the normal row's place and the normal row to its own: the
-// rows stay in a random order, but each friction row is bounded by the
-// normal force of the same sweep. One pass suffices: a swap only moves a
-// normal row earlier. at: -1 for every lambda position but those of the
-// rows in order (the same rows at every reordering of a step: their places
-// are all written before they are read).
-static void normals_before_friction(qs_system *sys, const qs_island *p, int *at)
+// to[0, n) = from[0, n), eight at a time in vector moves (memcpy of a few
+// thousand numbers is `rep movsb`, which counts as an instruction a byte).
+static void copy_ints(int *to, const int *from, int n)
 {
-    int *o = sys->order + p->order0;
-    const int *pos = sys->row_pos, *f = sys->row_f;
-    for (int k = 0; k < p->norder; k++) at[pos[o[k]]] = k;
-    for (int k = 0; k < p->norder; k++) {
-        const int j = at[f[o[k]]];   // -1: no friction, or normal not here
-        if (j <= k) continue;
-        const int t = o[k];
-        o[k] = o[j];
-        o[j] = t;
-        at[pos[o[k]]] = k;
-        at[pos[o[j]]] = j;
+    int k = 0;
+    for (; k + 8 <= n; k += 8) memcpy(to + k, from + k, 8 * sizeof(int));
+    for (; k < n; k++) to[k] = from[k];
+}
+
+// After every reshuffle: seq gets the t-th row of each island in list
+// (longest first) that has one, for t = 0, 1, ...: in runs of c islands for
+// the rows t0 to t1 of the c-th longest, island by island where the run is
+// long, else row by row (many short islands); the longest one's rows beyond
+// the second's in one copy (copy_ints). (One island is swept in place:
+// solve.) from: scratch for n pointers.
+static void interleave_rows(const qs_system *sys, const qs_island *parts, const int *list, int n,
+                            const int **from)
+{
+    for (int k = 0; k < n; k++) from[k] = sys->order + parts[list[k]].order0;
+    int out = 0, t0 = 0;
+    for (int c = n; c > 1; c--) {
+        const int t1 = parts[list[c - 1]].norder;
+        if (t1 <= t0) continue;
+        int *seq = sys->seq + out;
+        if (t1 - t0 >= c) {
+            for (int k = 0; k < c; k++) {
+                int *to = seq + k;
+                for (int t = t0; t < t1; t++, to += c) *to = from[k][t];
+            }
+        } else {
+            for (int t = t0; t < t1; t++)
+                for (int k = 0; k < c; k++) *seq++ = from[k][t];
+        }
+        out += (t1 - t0) * c;
+        t0 = t1;
     }
+    copy_ints(sys->seq + out, from[0] + t0, parts[list[0]].norder - t0);
 }
 
 // `iterations` sweeps over all islands, each island's rows reshuffled every
@@ -216,14 +371,17 @@ static void solve(dxArena *a, qs_system *sys, qs_island *parts, int count, int i
     interleave_blocks(sys, parts, list, with_blocks);
     dxQuickBatchBlocks(a, sys, with_blocks);
     const int n = islands_by_length(parts, count, 0, list, tmp);
+    const qs_reorder re = reorder_begin(a, sys);
+    if (n == 1) sys->seq = sys->order + parts[list[0]].order0;   // swept as it is
+    const int **from = n > 1 ? DX_ARENA_ARRAY(a, const int *, n) : NULL;
     for (int it = 0; it < iterations; it++) {
         if (it % REORDER_PERIOD == 0) {
             for (int k = 0; k < n; k++) {
                 qs_island *p = &parts[list[k]];
-                shuffle(sys->order + p->order0, p->norder, &p->seed);
-                normals_before_friction(sys, p, sys->at);
+                reshuffle(sys->order + p->order0, p->norder, &p->seed,
+                          reshuffle_base(it / REORDER_PERIOD, p->norder), &re);
             }
-            interleave_rows(sys, parts, list, n, tmp);
+            if (n > 1) interleave_rows(sys, parts, list, n, from);
         }
         dxQuickSweep(sys, it & 1);
     }
@@ -238,6 +396,7 @@ static void solve(dxArena *a, qs_system *sys, qs_island *parts, int count, int i
 typedef struct solve_islands {
     qs_system *sys;
     qs_island *parts;
+    qs_reorder re;
     int iterations;
 } solve_islands;
 
@@ -256,10 +415,9 @@ static void solve_island(void *context, int item, dxArena *arena)
     one.norder = p->norder;
     one.seq = s->sys->order + p->order0;
     for (int it = 0; it < s->iterations; it++) {
-        if (it % REORDER_PERIOD == 0) {
-            shuffle(one.seq, p->norder, &p->seed);
-            normals_before_friction(s->sys, p, s->sys->at);
-        }
+        if (it % REORDER_PERIOD == 0)
+            reshuffle(one.seq, p->norder, &p->seed,
+                      reshuffle_base(it / REORDER_PERIOD, p->norder), &s->re);
         dxQuickSweep(&one, it & 1);
     }
 }
@@ -287,14 +445,16 @@ static void update_velocities(const dxIsland *is, const dxIslandBodies *bd, cons
 {
     for (int b = 0; b < is->nb; b++) {
         struct dxBody *body = is->bodies[b];
-        const dReal *c = fc + 6 * b;
-        dVector3 dw;
-        dMultiply0_331(dw, bd->inv_inertia + 12 * b, body->torque);
+        const dReal *c = fc + 6 * b, *I = bd->inv_inertia + 12 * b, *t = body->torque;
         const dReal k = h * bd->inv_mass[b];
+        dReal v[6];   // all read before any is written, so the compiler may pair them
         for (int e = 0; e < 3; e++) {
-            body->lvel[e] += body->force[e] * k + h * c[e];
-            body->avel[e] += dw[e] * h + h * c[3 + e];
+            const dReal dw = dCalcVectorDot3(I + 4 * e, t);   // (I^-1 torque)_e
+            v[e] = body->lvel[e] + (body->force[e] * k + h * c[e]);
+            v[3 + e] = body->avel[e] + (dw * h + h * c[3 + e]);
         }
+        dCopyVector3(body->lvel, v);
+        dCopyVector3(body->avel, v + 3);
     }
 }
 
@@ -313,13 +473,14 @@ int dWorldQuickStep(dWorldID w, dReal stepsize)
     int *list = DX_ARENA_ARRAY(a, int, count + 1);
     int *tmp = DX_ARENA_ARRAY(a, int, count + 1);
     for (int i = 0; i < count; i++) {
-        parts[i].seed = island_seed(&islands[i]);
+        // (an island without joints has no rows to shuffle)
+        parts[i].seed = islands[i].nj > 0 ? island_seed(&islands[i]) : 0;
         dxIslandPrepare(w, a, &islands[i], h, &bd[i]);
         dxQuickBuild(w, &islands[i], &bd[i], h, &sys, &parts[i]);
     }
     const int threads = dxStepThreadCount(w, count, __func__);
     if (threads > 1 && sys.m > 0) {
-        solve_islands s = { &sys, parts, w->qs_iterations };
+        solve_islands s = { &sys, parts, reorder_begin(a, &sys), w->qs_iterations };
         dxStepRunParallel(w, threads, count, solve_island, &s);
     } else if (sys.m > 0) {
         solve(a, &sys, parts, count, w->qs_iterations, list, tmp);

@@ -178,7 +178,7 @@ typedef struct qs_system {
     const qs_batch *batches; // bseq packed in batches (NULL: sweep bseq)
     int nbatches;
     int *seq;              // order of all islands, interleaved
-    int *at;               // m + 1: the place in order per lambda position (-1: not there)
+    int *at;               // m + 1: the row in order per lambda position (-1: none)
     int *row_pos, *row_f;  // per row: its pos and f (compact copies for the reordering)
     dReal *lambda;         // m + 1: the last holds the constant 1
     dReal *fc;             // 6 per body (and island dummy): M^-1 J^T lambda
@@ -276,6 +276,18 @@ void dxQuickBatchUpdate(const qs_batch *b, const qs_row *rows, dReal *lambda, dR
 // The coupled rows of one block (quickstep_sweep.c), its bodies' fc read
 // from fc and stored back.
 void dxQuickCoupledRows(const qs_block *blk, const qs_row *rows, dReal *lambda, dReal *fc);
+
+// One reshuffle of an island's n rows in order (quickstep.c), for tests that
+// compare it with the plain form (a Fisher-Yates shuffle, then a pass
+// upwards swapping each friction row found before its normal row with it):
+// state: the island's generator; base: g * n for the step's g-th reshuffle;
+// per row index, normal: its normal row in order or ~0u, at: scratch, ~0u
+// for every row before the step's first reshuffle.
+void dxQuickReshuffle(int *order, int n, uint32_t *state, unsigned base, const unsigned *normal,
+                      unsigned *at);
+// 1 (the default): the shuffles' random places with AVX2 where the processor
+// has it; 0: the baseline (for tests that compare the two: the same numbers).
+extern int dxQuickShuffleAVX2;
 
 // One sweep over all blocks in bseq (each followed by its coupled rows) and
 // all rows in seq: the blocks first, or (rows_first) the rows.
