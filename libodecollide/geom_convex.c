@@ -54,24 +54,119 @@ static int convex_valid(const char *fn, const dReal *planes, unsigned planecount
 #undef CONVEX_CHECK
 }
 
+// Poses point v and plane f one at a time (dxHullPosePointsPlanes' way).
+static void pose_point(const double R[9], const double c[3], const dReal *p, double wp[3],
+                       double *const p3[3], unsigned v)
+{
+    for (int r = 0; r < 3; r++)
+        p3[r][v] = wp[r] = c[r] + R[3 * r] * p[0] + R[3 * r + 1] * p[1] + R[3 * r + 2] * p[2];
+}
+
+static void pose_plane(const double R[9], const double c[3], const dReal *p, const double *len,
+                       double wn[3], double *const n3[3], double *wd, unsigned f)
+{
+    double l = len ? len[f] : sqrt((double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2]);
+    for (int r = 0; r < 3; r++)
+        n3[r][f] = wn[r] = (R[3 * r] * p[0] + R[3 * r + 1] * p[1] + R[3 * r + 2] * p[2]) / l;
+    *wd = p[3] / l + (wn[0] * c[0] + wn[1] * c[1] + wn[2] * c[2]);
+}
+
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__SSE2__) && !defined(dSINGLE) && \
+    !defined(DX_HULL_NO_AVX2)
+#define DX_POSE_AVX2 1
+#include <immintrin.h>
+
+// Three rows of four (x0..x3, y0..y3, z0..z3) from four points' (x, y, z)
+// in a row (12 numbers at p), and back.
+__attribute__((target("avx2"))) static inline void rows_of_triples(const double *p, __m256d out[3])
+{
+    __m256d m0 = _mm256_loadu_pd(p), m1 = _mm256_loadu_pd(p + 4), m2 = _mm256_loadu_pd(p + 8);
+    __m256d t0 = _mm256_permute2f128_pd(m0, m1, 0x30);   // x0 y0 x2 y2
+    __m256d t1 = _mm256_permute2f128_pd(m0, m2, 0x21);   // z0 x1 z2 x3
+    __m256d t2 = _mm256_permute2f128_pd(m1, m2, 0x30);   // y1 z1 y3 z3
+    out[0] = _mm256_blend_pd(t0, t1, 0xa);
+    out[1] = _mm256_shuffle_pd(t0, t2, 0x5);
+    out[2] = _mm256_blend_pd(t1, t2, 0xa);
+}
+
+__attribute__((target("avx2"))) static inline void triples_of_rows(const __m256d in[3], double *p)
+{
+    __m256d t0 = _mm256_unpacklo_pd(in[0], in[1]);       // x0 y0 x2 y2
+    __m256d t1 = _mm256_blend_pd(in[2], in[0], 0xa);     // z0 x1 z2 x3
+    __m256d t2 = _mm256_unpackhi_pd(in[1], in[2]);       // y1 z1 y3 z3
+    _mm256_storeu_pd(p, _mm256_permute2f128_pd(t0, t1, 0x20));
+    _mm256_storeu_pd(p + 4, _mm256_permute2f128_pd(t2, t0, 0x30));
+    _mm256_storeu_pd(p + 8, _mm256_permute2f128_pd(t1, t2, 0x31));
+}
+
+// dxHullPosePointsPlanes four points and four planes at a time: the same
+// products, sums and quotients in the same order (no fused multiply-add),
+// so the same numbers.
+__attribute__((target("avx2"))) static void
+pose_avx2(const double R[9], const double c[3], const dReal *pts, unsigned npts,
+          const dReal *planes, const double *len, unsigned nplanes, double (*wp)[3],
+          double *const p3[3], double (*wn)[3], double *const n3[3], double *wd)
+{
+    __m256d r[9], cc[3];
+    for (int k = 0; k < 9; k++) r[k] = _mm256_set1_pd(R[k]);
+    for (int k = 0; k < 3; k++) cc[k] = _mm256_set1_pd(c[k]);
+    unsigned v = 0;
+    for (; v + 4 <= npts; v += 4) {
+        __m256d p[3], w[3];
+        rows_of_triples(pts + 3 * v, p);
+        for (int k = 0; k < 3; k++) {
+            w[k] = _mm256_add_pd(_mm256_add_pd(_mm256_add_pd(cc[k], _mm256_mul_pd(r[3 * k], p[0])),
+                                               _mm256_mul_pd(r[3 * k + 1], p[1])),
+                                 _mm256_mul_pd(r[3 * k + 2], p[2]));
+            _mm256_storeu_pd(p3[k] + v, w[k]);
+        }
+        triples_of_rows(w, wp[v]);
+    }
+    for (; v < npts; v++) pose_point(R, c, pts + 3 * v, wp[v], p3, v);
+    unsigned f = 0;
+    for (; f + 4 <= nplanes; f += 4) {
+        const double *q = planes + 4 * f;
+        __m256d q0 = _mm256_loadu_pd(q), q1 = _mm256_loadu_pd(q + 4);
+        __m256d q2 = _mm256_loadu_pd(q + 8), q3 = _mm256_loadu_pd(q + 12);
+        __m256d u0 = _mm256_unpacklo_pd(q0, q1), u1 = _mm256_unpackhi_pd(q0, q1);
+        __m256d u2 = _mm256_unpacklo_pd(q2, q3), u3 = _mm256_unpackhi_pd(q2, q3);
+        __m256d a = _mm256_permute2f128_pd(u0, u2, 0x20), b = _mm256_permute2f128_pd(u1, u3, 0x20);
+        __m256d cz = _mm256_permute2f128_pd(u0, u2, 0x31), d = _mm256_permute2f128_pd(u1, u3, 0x31);
+        __m256d l = len ? _mm256_loadu_pd(len + f)
+                        : _mm256_sqrt_pd(_mm256_add_pd(
+                              _mm256_add_pd(_mm256_mul_pd(a, a), _mm256_mul_pd(b, b)),
+                              _mm256_mul_pd(cz, cz)));
+        __m256d n[3];
+        for (int k = 0; k < 3; k++) {
+            n[k] = _mm256_div_pd(
+                _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(r[3 * k], a), _mm256_mul_pd(r[3 * k + 1], b)),
+                              _mm256_mul_pd(r[3 * k + 2], cz)),
+                l);
+            _mm256_storeu_pd(n3[k] + f, n[k]);
+        }
+        __m256d nc = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(n[0], cc[0]), _mm256_mul_pd(n[1], cc[1])),
+                                   _mm256_mul_pd(n[2], cc[2]));
+        _mm256_storeu_pd(wd + f, _mm256_add_pd(_mm256_div_pd(d, l), nc));
+        triples_of_rows(n, wn[f]);
+    }
+    for (; f < nplanes; f++) pose_plane(R, c, planes + 4 * f, len, wn[f], n3, wd + f, f);
+}
+#endif
+
 void dxHullPosePointsPlanes(const double R[9], const double c[3], const dReal *pts, unsigned npts,
                             const dReal *planes, const double *len, unsigned nplanes,
                             double (*wp)[3], double *const p3[3], double (*wn)[3],
                             double *const n3[3], double *wd)
 {
-    for (unsigned v = 0; v < npts; v++) {
-        const dReal *p = pts + 3 * v;
-        for (int r = 0; r < 3; r++)
-            p3[r][v] = wp[v][r] = c[r] + R[3 * r] * p[0] + R[3 * r + 1] * p[1] + R[3 * r + 2] * p[2];
+#ifdef DX_POSE_AVX2
+    if (__builtin_cpu_supports("avx2")) {
+        pose_avx2(R, c, pts, npts, planes, len, nplanes, wp, p3, wn, n3, wd);
+        return;
     }
-    for (unsigned f = 0; f < nplanes; f++) {
-        const dReal *p = planes + 4 * f;
-        double l = len ? len[f]
-                       : sqrt((double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2]);
-        for (int r = 0; r < 3; r++)
-            n3[r][f] = wn[f][r] = (R[3 * r] * p[0] + R[3 * r + 1] * p[1] + R[3 * r + 2] * p[2]) / l;
-        wd[f] = p[3] / l + (wn[f][0] * c[0] + wn[f][1] * c[1] + wn[f][2] * c[2]);
-    }
+#endif
+    for (unsigned v = 0; v < npts; v++) pose_point(R, c, pts + 3 * v, wp[v], p3, v);
+    for (unsigned f = 0; f < nplanes; f++)
+        pose_plane(R, c, planes + 4 * f, len, wn[f], n3, wd + f, f);
 }
 
 // Whether the n numbers at a and b are the same bits (memcmp's answer,
