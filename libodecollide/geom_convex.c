@@ -11,6 +11,7 @@
 
 #include <ode/memory.h>
 
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -169,6 +170,21 @@ void dxHullPosePointsPlanes(const double R[9], const double c[3], const dReal *p
         pose_plane(R, c, planes + 4 * f, len, wn[f], n3, wd + f, f);
 }
 
+void dxHullPoseBounds(dx_hull *h)
+{
+    double e2 = 0;
+    for (int i = 0; i < 3; i++) {
+        for (int k = i; k < 3; k++) {
+            double d = h->R[i] * h->R[k] + h->R[3 + i] * h->R[3 + k] + h->R[6 + i] * h->R[6 + k] -
+                       (i == k);
+            e2 += (i == k ? 1 : 2) * d * d;
+        }
+    }
+    h->rot_err = sqrt(e2);
+    double reach = h->size + fabs(h->c[0]) + fabs(h->c[1]) + fabs(h->c[2]);
+    h->radius = h->size * (1 + h->rot_err) * (1 + 1e-12) + 16 * DBL_EPSILON * reach;
+}
+
 // Whether the n numbers at a and b are the same bits (memcmp's answer,
 // without its call: this runs for every pair a hull meets).
 static int same_bits(const dReal *a, const dReal *b, int n)
@@ -196,6 +212,7 @@ void dxConvexPose(dxConvex *c)
         h->c[i] = g->pos[i];
         for (int k = 0; k < 3; k++) h->R[3 * i + k] = g->R[4 * i + k];
     }
+    dxHullPoseBounds(h);
     dxHullPosePointsPlanes(h->R, h->c, c->points, c->pointcount, c->planes, c->plane_len,
                            c->planecount, pose->pts, (double *const[3]){ pose->px, pose->py, pose->pz },
                            pose->normals, (double *const[3]){ pose->nx, pose->ny, pose->nz },

@@ -75,6 +75,8 @@ typedef struct dx_hull {
     double R[9];              // world = R local + c (row-major)
     double c[3];
     double size;              // the largest distance of a point from the origin of the frame
+    double rot_err;           // |R^T R - I| (Frobenius): how far R is from a rotation
+    double radius;            // a bound on |x - c| over the points as posed
     double centre[3];         // a point inside, in the world
     const double (*wp)[3];    // the points in the world
     const double (*wn)[3];    // the planes in the world: unit outward normals ...
@@ -131,6 +133,12 @@ void dxHullPosePointsPlanes(const double R[9], const double c[3], const dReal *p
                             const dReal *planes, const double *len, unsigned nplanes,
                             double (*wp)[3], double *const p3[3], double (*wn)[3],
                             double *const n3[3], double *wd);
+
+// How far the row-major R is from a rotation, |R^T R - I| (Frobenius), into
+// h->rot_err, and from it (with h->size and h->c) a bound on how far from
+// c the posed points lie, into h->radius: |R p| <= sqrt(1 + rot_err) |p|,
+// plus the rounding of R p + c.
+void dxHullPoseBounds(struct dx_hull *h);
 
 // The convex geom's hull posed in the world for its position and rotation
 // (c->pose, c->hull), unless it already is (compared bit for bit).

@@ -86,6 +86,7 @@ static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
     h->convex = NULL;
     const dReal *p = bx->pts;   // every corner is as far from the centre
     h->size = sqrt((double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2]);
+    dxHullPoseBounds(h);
     dxHullPosePointsPlanes(h->R, h->c, bx->pts, 8, bx->planes, NULL, 6, bx->wp,
                            (double *const[3]){ bx->p_soa[0], bx->p_soa[1], bx->p_soa[2] }, bx->wn,
                            (double *const[3]){ bx->n_soa[0], bx->n_soa[1], bx->n_soa[2] }, bx->wd);
@@ -486,6 +487,12 @@ static void keep_face(dx_hull *h, const void *other, int side, unsigned face,
 int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
                  dContactGeom *out, int skip)
 {
+    // Bounding spheres apart part the hulls (a margin over the radii'
+    // bounds for the rounding here).
+    double d2 = 0;
+    for (int i = 0; i < 3; i++) d2 += (a->c[i] - b->c[i]) * (a->c[i] - b->c[i]);
+    double reach = (a->radius + b->radius) * (1 + 1e-9);
+    if (d2 > reach * reach) return 0;
     // The axis that parted the pair last time, if it still does; or the
     // face that gave their contact (sides as the holder sees them).
     dx_hull *holder = a->convex ? a : b->convex ? b : NULL;

@@ -134,16 +134,8 @@ enum { POSED_FLOORS = 1, POSED_EDGES = 2 };
 static void pose_floors(dx_hull *h)
 {
     if (*h->edges_posed & POSED_FLOORS) return;
-    double e2 = 0;
-    for (int i = 0; i < 3; i++) {
-        for (int k = i; k < 3; k++) {
-            double d = h->R[i] * h->R[k] + h->R[3 + i] * h->R[3 + k] + h->R[6 + i] * h->R[6 + k] -
-                       (i == k);
-            e2 += (i == k ? 1 : 2) * d * d;
-        }
-    }
     double reach = h->size + fabs(h->c[0]) + fabs(h->c[1]) + fabs(h->c[2]);
-    double slack = sqrt(e2) * h->size + 8 * DBL_EPSILON * reach;
+    double slack = h->rot_err * h->size + 8 * DBL_EPSILON * reach;
     for (unsigned f = 0; f < h->nplanes; f++)
         h->face_low[f] = h->wd[f] - (h->plane_dev ? h->plane_dev[f] : 0) - slack;
     *h->edges_posed |= POSED_FLOORS;
