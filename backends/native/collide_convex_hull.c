@@ -293,14 +293,29 @@ static int middle_inside_along(const dx_hull *a, const line_planes *la, const dx
     return 1;
 }
 
-// Keeps the part of poly (n points) with s . x <= off in out; the new count.
-static int clip_plane(const hull_point *poly, int n, const double s[3], double off,
-                      hull_point *out)
+// The sides of poly's n points against the plane s . x = off (s . x - off)
+// into side; 1 if every point is inside (not above 0), where clipping
+// keeps poly as it is.
+static int plane_sides(const hull_point *poly, int n, const double s[3], double off,
+                       double *side)
+{
+    int inside = 1;
+    for (int i = 0; i < n; i++) {
+        side[i] = dot3(s, poly[i].p) - off;
+        inside &= side[i] <= 0;
+    }
+    return inside;
+}
+
+// Keeps the part of poly (n points, on the sides plane_sides gives) with
+// s . x <= off in out; the new count.
+static int clip_plane(const hull_point *poly, int n, const double *side, hull_point *out)
 {
     int m = 0;
     for (int i = 0; i < n && m < MAXP; i++) {
-        const hull_point *p = &poly[i], *q = &poly[(i + 1) % n];
-        double dp = dot3(s, p->p) - off, dq = dot3(s, q->p) - off;
+        int j = i + 1 < n ? i + 1 : 0;
+        const hull_point *p = &poly[i], *q = &poly[j];
+        double dp = side[i], dq = side[j];
         if (dp <= 0) out[m++] = *p;
         if (m < MAXP && ((dp < 0 && dq > 0) || (dp > 0 && dq < 0))) {
             double f = dp / (dp - dq);
@@ -375,7 +390,9 @@ static int face_points(const dx_hull *r, unsigned f, const double nf[3], double 
             for (int q = 0; q < 3; q++) s[q] = -s[q];
             off = -off;
         }
-        n = clip_plane(buf[cur], n, s, off, buf[cur ^ 1]);
+        double side[MAXP];
+        if (plane_sides(buf[cur], n, s, off, side)) continue;
+        n = clip_plane(buf[cur], n, side, buf[cur ^ 1]);
         cur ^= 1;
     }
     // Points below the reference face, lying inside both hulls along nf.
