@@ -186,20 +186,26 @@ void dxHullPoseBounds(dx_hull *h)
 }
 
 // Whether the n numbers at a and b are the same bits (memcmp's answer,
-// without its call: this runs for every pair a hull meets).
+// without its call: this runs for every pair a hull meets), 16 bytes at a
+// time where SSE2 is there.
 static int same_bits(const dReal *a, const dReal *b, int n)
 {
-#ifdef dSINGLE
-    uint32_t diff = 0, x, y;
-#else
-    uint64_t diff = 0, x, y;
+    const char *x = (const char *)a, *y = (const char *)b;
+    size_t bytes = (size_t)n * sizeof(dReal), k = 0;
+#ifdef __SSE2__
+    __m128i diff = _mm_setzero_si128();
+    for (; k + 16 <= bytes; k += 16)
+        diff = _mm_or_si128(diff, _mm_xor_si128(_mm_loadu_si128((const __m128i *)(x + k)),
+                                                _mm_loadu_si128((const __m128i *)(y + k))));
+    if (_mm_movemask_epi8(_mm_cmpeq_epi8(diff, _mm_setzero_si128())) != 0xffff) return 0;
 #endif
-    for (int i = 0; i < n; i++) {
-        memcpy(&x, a + i, sizeof x);
-        memcpy(&y, b + i, sizeof y);
-        diff |= x ^ y;
+    uint32_t d = 0, u, v;
+    for (; k < bytes; k += sizeof u) {
+        memcpy(&u, x + k, sizeof u);
+        memcpy(&v, y + k, sizeof v);
+        d |= u ^ v;
     }
-    return diff == 0;
+    return d == 0;
 }
 
 void dxConvexPose(dxConvex *c)
