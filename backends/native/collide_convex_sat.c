@@ -699,10 +699,33 @@ masked_edge_pairs_with(const dx_hull *a, const dx_hull *b, edge_search *es, cons
     return 1;
 }
 
-// Points of each hull (qa of a, qb of b), for the gaps: the hint's, else
-// each hull's point furthest towards the other's centre (into the hint).
+// The point of the box h (a box made into a hull, collide_convex_hull.c:
+// its corner 7 is its half sides) nearest p, into q: p taken into the box's
+// frame, clamped to a hair inside its sides (so that the rounding of the
+// pose back leaves it in the box, well within the screens' margins), posed
+// back.
+static void box_point_near(const dx_hull *h, const double p[3], double q[3])
+{
+    const dReal *half = h->pts + 21;
+    double d[3] = { p[0] - h->c[0], p[1] - h->c[1], p[2] - h->c[2] }, l[3];
+    for (int k = 0; k < 3; k++) {
+        double x = h->R[k] * d[0] + h->R[3 + k] * d[1] + h->R[6 + k] * d[2];
+        double lim = half[k] * (1 - 1e-12);
+        l[k] = x > lim ? lim : x < -lim ? -lim : x;
+    }
+    for (int i = 0; i < 3; i++)
+        q[i] = h->c[i] + h->R[3 * i] * l[0] + h->R[3 * i + 1] * l[1] + h->R[3 * i + 2] * l[2];
+}
+
+// Points of each hull (qa of a, qb of b), for the gaps (any point of the
+// hull bounds them; the nearer the other hull, the tighter): the hint's,
+// else each hull's point furthest towards the other's centre (into the
+// hint); for a box, its point nearest the other's centre instead (a large
+// box's corners are far from where it meets the other hull), into the
+// room at qa_box, qb_box.
 static void facing_points(const dx_hull *a, const dx_hull *b, sat_hint *hint,
-                          const double **qa, const double **qb)
+                          const double **qa, const double **qb, double qa_box[3],
+                          double qb_box[3])
 {
     if (hint->side < 0 || hint->qa >= a->npts || hint->qb >= b->npts) {
         double ab[3] = { b->centre[0] - a->centre[0], b->centre[1] - a->centre[1],
@@ -713,6 +736,14 @@ static void facing_points(const dx_hull *a, const dx_hull *b, sat_hint *hint,
     }
     *qa = a->wp[hint->qa];
     *qb = b->wp[hint->qb];
+    if (!a->convex) {
+        box_point_near(a, b->centre, qa_box);
+        *qa = qa_box;
+    }
+    if (!b->convex) {
+        box_point_near(b, a->centre, qb_box);
+        *qb = qb_box;
+    }
 }
 
 // The face axis of a's face f (side 0) or b's (side 1), of depth *known
@@ -760,7 +791,8 @@ sat_with(dx_hull *a, dx_hull *b, sat_hint *hint, sat_axis *face, sat_axis *edge,
     unsigned gface = 0;
     if (gapped) {
         const double *qa, *qb;
-        facing_points(a, b, hint, &qa, &qb);
+        double qa_box[3], qb_box[3];
+        facing_points(a, b, hint, &qa, &qb, qa_box, qb_box);
         face_gaps(a, qb, gaps[0]);
         face_gaps(b, qa, gaps[1]);
         if (hint->side >= 0 && hint->face < (hint->side ? b : a)->nplanes) {
