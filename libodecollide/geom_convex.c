@@ -316,6 +316,24 @@ static void convex_edge_sets(dxConvex *c, uint64_t *masks)
     }
 }
 
+// Each point's edges, in the edge list's order (c->vert_start, vert_edges).
+static void convex_vertex_edges(dxConvex *c)
+{
+    unsigned *start = c->vert_start;
+    for (unsigned v = 0; v <= c->pointcount; v++) start[v] = 0;
+    for (unsigned k = 0; k < c->edgecount; k++) {
+        start[c->edges[k].a + 1]++;
+        start[c->edges[k].b + 1]++;
+    }
+    for (unsigned v = 0; v < c->pointcount; v++) start[v + 1] += start[v];
+    for (unsigned k = 0; k < c->edgecount; k++) {   // start[v] runs ahead, then is put back
+        c->vert_edges[start[c->edges[k].a]++] = k;
+        c->vert_edges[start[c->edges[k].b]++] = k;
+    }
+    for (unsigned v = c->pointcount; v > 0; v--) start[v] = start[v - 1];
+    start[0] = 0;
+}
+
 // The parts of c->hull that stay from one pose to the next.
 static void convex_view(dxConvex *c)
 {
@@ -326,6 +344,8 @@ static void convex_view(dxConvex *c)
     h->polys = c->polygons;
     h->poly_start = c->poly_start;
     h->edges = c->edges;
+    h->vert_start = c->vert_start;
+    h->vert_edges = c->vert_edges;
     h->npts = c->pointcount;
     h->nplanes = c->planecount;
     h->nedges = c->edgecount;
@@ -357,7 +377,7 @@ static void free_derived(dxConvex *c)
     if (c->derived) dFree(c->derived, c->derived_size);
     c->derived = NULL;
     c->edges = NULL;
-    c->poly_start = NULL;
+    c->poly_start = c->vert_start = c->vert_edges = NULL;
     c->by_f1 = c->by_f2 = c->nbr = NULL;
     c->plane_len = c->plane_dev = NULL;
 }
@@ -390,7 +410,7 @@ static void convex_set(dxConvex *c, const dReal *planes, unsigned planecount,
     size_t doubles = 6 * (size_t)pointcount + 10 * (size_t)planecount + 3 * sides;
     c->derived_size = sizeof(uint64_t) * 3 * (size_t)planecount + sizeof(double) * doubles +
                       sizeof(dxHullPosedEdge) * sides + sizeof(dxHullEdge) * sides +
-                      sizeof(unsigned) * planecount;
+                      sizeof(unsigned) * (planecount + (size_t)pointcount + 1 + 2 * sides);
     char *block = dAlloc(c->derived_size);
     c->derived = block;
     dxHullPose *pose = &c->pose;
@@ -414,7 +434,10 @@ static void convex_set(dxConvex *c, const dReal *planes, unsigned planecount,
     pose->valid = pose->edges_valid = 0;
     c->edges = (dxHullEdge *)(pose->edges + sides);
     c->poly_start = (unsigned *)(c->edges + sides);
+    c->vert_start = c->poly_start + planecount;
+    c->vert_edges = c->vert_start + pointcount + 1;
     c->edgecount = convex_edges(polygons, planecount, c->edges);
+    convex_vertex_edges(c);
     convex_edge_sets(c, masks);
     unsigned at = 0;
     for (unsigned f = 0; f < planecount; f++) {

@@ -71,6 +71,8 @@ typedef struct dx_hull {
     const unsigned *polys;    // per plane: count, indices
     const unsigned *poly_start;   // per plane: where its polygon starts in polys
     const dxHullEdge *edges;  // each edge once, with its two faces
+    const unsigned *vert_start, *vert_edges;   // per point v: the edges at it, in order,
+                              // vert_edges[vert_start[v] .. vert_start[v + 1]) (NULL: none kept)
     unsigned npts, nplanes, nedges;
     double R[9];              // world = R local + c (row-major)
     double c[3];
@@ -106,6 +108,7 @@ typedef struct dxConvex {
     dxHullEdge *edges;            // derived from the polygons, owned by the geom
     unsigned edgecount;
     unsigned *poly_start;         // per plane: where its polygon starts in polygons
+    unsigned *vert_start, *vert_edges;   // per point: the edges at it (dx_hull's)
     // For hulls of at most 64 edges and 64 planes (else NULL): per plane, the
     // set of edges (bit k: edge k) whose first face it is, and whose second
     // face; the edges with one face only.

@@ -87,6 +87,7 @@ static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
     h->polys = bx->polys;
     h->poly_start = bx->poly_start;
     h->edges = bx->edges;
+    h->vert_start = h->vert_edges = NULL;
     h->npts = 8;
     h->nplanes = 6;
     h->nedges = 12;
@@ -437,8 +438,11 @@ static void supporting_edge(const dx_hull *h, unsigned v, const dxHullEdge *e, d
     dx_hull_vertex(h, e->b, p1);
     for (int i = 0; i < 3; i++) u[i] = p1[i] - p0[i];
     double lu = sqrt(dot3(u, u)), best = 0;
-    for (unsigned k = 0; k < h->nedges; k++) {
-        const dxHullEdge *f = &h->edges[k];
+    // The edges at v: from the point's list where the hull keeps one.
+    unsigned k = h->vert_start ? h->vert_start[v] : 0;
+    unsigned end = h->vert_start ? h->vert_start[v + 1] : h->nedges;
+    for (; k < end; k++) {
+        const dxHullEdge *f = &h->edges[h->vert_start ? h->vert_edges[k] : k];
         if (f->a != v && f->b != v) continue;
         double q0[3], q1[3], d[3];
         dx_hull_vertex(h, f->a, q0);
