@@ -43,12 +43,28 @@ static void cross3(const double *a, const double *b, double out[3])
     out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
+// What every box made into a hull shares: the faces' polygons (each
+// counterclockwise seen from outside) and where they start; the edges, the
+// one along axis k from the corner with bit k clear to the one with it set,
+// between the faces of the other two axes' bits (i = k + 1, j = k + 2 mod 3:
+// faces 2 i + bit i, 2 j + bit j); the edges by first and second face; and
+// each face's neighbours (every face but its opposite).
+static const unsigned box_polys[30] = { 4, 0, 4, 6, 2, 4, 1, 3, 7, 5, 4, 0, 1, 5, 4,
+                                        4, 2, 6, 7, 3, 4, 0, 2, 3, 1, 4, 4, 5, 7, 6 };
+static const unsigned box_poly_start[6] = { 0, 5, 10, 15, 20, 25 };
+static const dxHullEdge box_edges[12] = {
+    { 0, 1, 2, 4 }, { 2, 3, 3, 4 }, { 4, 5, 2, 5 }, { 6, 7, 3, 5 },
+    { 0, 2, 4, 0 }, { 4, 6, 5, 0 }, { 1, 3, 4, 1 }, { 5, 7, 5, 1 },
+    { 0, 4, 0, 2 }, { 1, 5, 1, 2 }, { 2, 6, 0, 3 }, { 3, 7, 1, 3 },
+};
+static const uint64_t box_by_f1[6] = { 0x500, 0xa00, 0x5, 0xa, 0x50, 0xa0 };
+static const uint64_t box_by_f2[6] = { 0x30, 0xc0, 0x300, 0xc00, 0x3, 0xc };
+static const uint64_t box_nbr[6] = { 0x3d, 0x3e, 0x37, 0x3b, 0x1f, 0x2f };
+
 // A box as a hull in bx: corners by bits (x, y, z), faces -x +x -y +y -z +z.
 static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
 {
     const dReal *side = box->side;
-    static const unsigned faces[6][4] = { { 0, 4, 6, 2 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
-                                          { 2, 6, 7, 3 }, { 0, 2, 3, 1 }, { 4, 5, 7, 6 } };
     for (unsigned v = 0; v < 8; v++)
         for (int i = 0; i < 3; i++) bx->pts[3 * v + i] = (v >> i & 1 ? 1 : -1) * side[i] / 2;
     for (int f = 0; f < 6; f++) {
@@ -56,37 +72,16 @@ static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
         dReal sg = f & 1 ? 1 : -1;
         for (int i = 0; i < 3; i++) bx->planes[4 * f + i] = i == axis ? sg : 0;
         bx->planes[4 * f + 3] = side[axis] / 2;
-        bx->polys[5 * f] = 4;
-        bx->poly_start[f] = 5 * (unsigned)f;
-        for (int k = 0; k < 4; k++) bx->polys[5 * f + 1 + k] = faces[f][k];
     }
-    // Edge along axis k from the corner with bit k clear to the one with it
-    // set, between the faces of the other two axes' bits.
-    int n = 0;
-    for (int k = 0; k < 3; k++) {
-        int i = (k + 1) % 3, j = (k + 2) % 3;
-        for (unsigned bits = 0; bits < 4; bits++) {
-            unsigned bi = bits & 1, bj = bits >> 1, a = bi << i | bj << j;
-            bx->edges[n++] = (dxHullEdge){ a, a | 1u << k, (unsigned)(2 * i) + bi,
-                                           (unsigned)(2 * j) + bj };
-        }
-    }
-    for (int f = 0; f < 6; f++) bx->by_f1[f] = bx->by_f2[f] = 0;
-    for (unsigned k = 0; k < 12; k++) {
-        bx->by_f1[bx->edges[k].f1] |= (uint64_t)1 << k;
-        bx->by_f2[bx->edges[k].f2] |= (uint64_t)1 << k;
-    }
-    // Each face of a box shares an edge with every other but its opposite.
-    static const uint64_t box_nbr[6] = { 0x3d, 0x3e, 0x37, 0x3b, 0x1f, 0x2f };
-    h->by_f1 = bx->by_f1;
-    h->by_f2 = bx->by_f2;
+    h->by_f1 = box_by_f1;
+    h->by_f2 = box_by_f2;
     h->lone = 0;
     h->nbr = box_nbr;
     h->pts = bx->pts;
     h->planes = bx->planes;
-    h->polys = bx->polys;
-    h->poly_start = bx->poly_start;
-    h->edges = bx->edges;
+    h->polys = box_polys;
+    h->poly_start = box_poly_start;
+    h->edges = box_edges;
     h->vert_start = h->vert_edges = NULL;
     h->npts = 8;
     h->nplanes = 6;
