@@ -11,6 +11,7 @@
 
 #include <ode/memory.h>
 
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -54,41 +55,157 @@ static int convex_valid(const char *fn, const dReal *planes, unsigned planecount
 #undef CONVEX_CHECK
 }
 
+// Poses point v and plane f one at a time (dxHullPosePointsPlanes' way).
+static void pose_point(const double R[9], const double c[3], const dReal *p, double wp[3],
+                       double *const p3[3], unsigned v)
+{
+    for (int r = 0; r < 3; r++)
+        p3[r][v] = wp[r] = c[r] + R[3 * r] * p[0] + R[3 * r + 1] * p[1] + R[3 * r + 2] * p[2];
+}
+
+static void pose_plane(const double R[9], const double c[3], const dReal *p, const double *len,
+                       double wn[3], double *const n3[3], double *wd, unsigned f)
+{
+    double l = len ? len[f] : sqrt((double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2]);
+    for (int r = 0; r < 3; r++)
+        n3[r][f] = wn[r] = (R[3 * r] * p[0] + R[3 * r + 1] * p[1] + R[3 * r + 2] * p[2]) / l;
+    *wd = p[3] / l + (wn[0] * c[0] + wn[1] * c[1] + wn[2] * c[2]);
+}
+
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__SSE2__) && !defined(dSINGLE) && \
+    !defined(DX_HULL_NO_AVX2)
+#define DX_POSE_AVX2 1
+#include <immintrin.h>
+
+// Three rows of four (x0..x3, y0..y3, z0..z3) from four points' (x, y, z)
+// in a row (12 numbers at p), and back.
+__attribute__((target("avx2"))) static inline void rows_of_triples(const double *p, __m256d out[3])
+{
+    __m256d m0 = _mm256_loadu_pd(p), m1 = _mm256_loadu_pd(p + 4), m2 = _mm256_loadu_pd(p + 8);
+    __m256d t0 = _mm256_permute2f128_pd(m0, m1, 0x30);   // x0 y0 x2 y2
+    __m256d t1 = _mm256_permute2f128_pd(m0, m2, 0x21);   // z0 x1 z2 x3
+    __m256d t2 = _mm256_permute2f128_pd(m1, m2, 0x30);   // y1 z1 y3 z3
+    out[0] = _mm256_blend_pd(t0, t1, 0xa);
+    out[1] = _mm256_shuffle_pd(t0, t2, 0x5);
+    out[2] = _mm256_blend_pd(t1, t2, 0xa);
+}
+
+__attribute__((target("avx2"))) static inline void triples_of_rows(const __m256d in[3], double *p)
+{
+    __m256d t0 = _mm256_unpacklo_pd(in[0], in[1]);       // x0 y0 x2 y2
+    __m256d t1 = _mm256_blend_pd(in[2], in[0], 0xa);     // z0 x1 z2 x3
+    __m256d t2 = _mm256_unpackhi_pd(in[1], in[2]);       // y1 z1 y3 z3
+    _mm256_storeu_pd(p, _mm256_permute2f128_pd(t0, t1, 0x20));
+    _mm256_storeu_pd(p + 4, _mm256_permute2f128_pd(t2, t0, 0x30));
+    _mm256_storeu_pd(p + 8, _mm256_permute2f128_pd(t1, t2, 0x31));
+}
+
+// dxHullPosePointsPlanes four points and four planes at a time: the same
+// products, sums and quotients in the same order (no fused multiply-add),
+// so the same numbers.
+__attribute__((target("avx2"))) static void
+pose_avx2(const double R[9], const double c[3], const dReal *pts, unsigned npts,
+          const dReal *planes, const double *len, unsigned nplanes, double (*wp)[3],
+          double *const p3[3], double (*wn)[3], double *const n3[3], double *wd)
+{
+    __m256d r[9], cc[3];
+    for (int k = 0; k < 9; k++) r[k] = _mm256_set1_pd(R[k]);
+    for (int k = 0; k < 3; k++) cc[k] = _mm256_set1_pd(c[k]);
+    unsigned v = 0;
+    for (; v + 4 <= npts; v += 4) {
+        __m256d p[3], w[3];
+        rows_of_triples(pts + 3 * v, p);
+        for (int k = 0; k < 3; k++) {
+            w[k] = _mm256_add_pd(_mm256_add_pd(_mm256_add_pd(cc[k], _mm256_mul_pd(r[3 * k], p[0])),
+                                               _mm256_mul_pd(r[3 * k + 1], p[1])),
+                                 _mm256_mul_pd(r[3 * k + 2], p[2]));
+            _mm256_storeu_pd(p3[k] + v, w[k]);
+        }
+        triples_of_rows(w, wp[v]);
+    }
+    for (; v < npts; v++) pose_point(R, c, pts + 3 * v, wp[v], p3, v);
+    unsigned f = 0;
+    for (; f + 4 <= nplanes; f += 4) {
+        const double *q = planes + 4 * f;
+        __m256d q0 = _mm256_loadu_pd(q), q1 = _mm256_loadu_pd(q + 4);
+        __m256d q2 = _mm256_loadu_pd(q + 8), q3 = _mm256_loadu_pd(q + 12);
+        __m256d u0 = _mm256_unpacklo_pd(q0, q1), u1 = _mm256_unpackhi_pd(q0, q1);
+        __m256d u2 = _mm256_unpacklo_pd(q2, q3), u3 = _mm256_unpackhi_pd(q2, q3);
+        __m256d a = _mm256_permute2f128_pd(u0, u2, 0x20), b = _mm256_permute2f128_pd(u1, u3, 0x20);
+        __m256d cz = _mm256_permute2f128_pd(u0, u2, 0x31), d = _mm256_permute2f128_pd(u1, u3, 0x31);
+        __m256d l = len ? _mm256_loadu_pd(len + f)
+                        : _mm256_sqrt_pd(_mm256_add_pd(
+                              _mm256_add_pd(_mm256_mul_pd(a, a), _mm256_mul_pd(b, b)),
+                              _mm256_mul_pd(cz, cz)));
+        __m256d n[3];
+        for (int k = 0; k < 3; k++) {
+            n[k] = _mm256_div_pd(
+                _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(r[3 * k], a), _mm256_mul_pd(r[3 * k + 1], b)),
+                              _mm256_mul_pd(r[3 * k + 2], cz)),
+                l);
+            _mm256_storeu_pd(n3[k] + f, n[k]);
+        }
+        __m256d nc = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(n[0], cc[0]), _mm256_mul_pd(n[1], cc[1])),
+                                   _mm256_mul_pd(n[2], cc[2]));
+        _mm256_storeu_pd(wd + f, _mm256_add_pd(_mm256_div_pd(d, l), nc));
+        triples_of_rows(n, wn[f]);
+    }
+    for (; f < nplanes; f++) pose_plane(R, c, planes + 4 * f, len, wn[f], n3, wd + f, f);
+}
+#endif
+
 void dxHullPosePointsPlanes(const double R[9], const double c[3], const dReal *pts, unsigned npts,
                             const dReal *planes, const double *len, unsigned nplanes,
                             double (*wp)[3], double *const p3[3], double (*wn)[3],
                             double *const n3[3], double *wd)
 {
-    for (unsigned v = 0; v < npts; v++) {
-        const dReal *p = pts + 3 * v;
-        for (int r = 0; r < 3; r++)
-            p3[r][v] = wp[v][r] = c[r] + R[3 * r] * p[0] + R[3 * r + 1] * p[1] + R[3 * r + 2] * p[2];
+#ifdef DX_POSE_AVX2
+    if (__builtin_cpu_supports("avx2")) {
+        pose_avx2(R, c, pts, npts, planes, len, nplanes, wp, p3, wn, n3, wd);
+        return;
     }
-    for (unsigned f = 0; f < nplanes; f++) {
-        const dReal *p = planes + 4 * f;
-        double l = len ? len[f]
-                       : sqrt((double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2]);
-        for (int r = 0; r < 3; r++)
-            n3[r][f] = wn[f][r] = (R[3 * r] * p[0] + R[3 * r + 1] * p[1] + R[3 * r + 2] * p[2]) / l;
-        wd[f] = p[3] / l + (wn[f][0] * c[0] + wn[f][1] * c[1] + wn[f][2] * c[2]);
+#endif
+    for (unsigned v = 0; v < npts; v++) pose_point(R, c, pts + 3 * v, wp[v], p3, v);
+    for (unsigned f = 0; f < nplanes; f++)
+        pose_plane(R, c, planes + 4 * f, len, wn[f], n3, wd + f, f);
+}
+
+void dxHullPoseBounds(dx_hull *h)
+{
+    double e2 = 0;
+    for (int i = 0; i < 3; i++) {
+        for (int k = i; k < 3; k++) {
+            double d = h->R[i] * h->R[k] + h->R[3 + i] * h->R[3 + k] + h->R[6 + i] * h->R[6 + k] -
+                       (i == k);
+            e2 += (i == k ? 1 : 2) * d * d;
+        }
     }
+    h->rot_err = sqrt(e2);
+    double reach = h->size + fabs(h->c[0]) + fabs(h->c[1]) + fabs(h->c[2]);
+    h->radius = h->size * (1 + h->rot_err) * (1 + 1e-12) + 16 * DBL_EPSILON * reach;
 }
 
 // Whether the n numbers at a and b are the same bits (memcmp's answer,
-// without its call: this runs for every pair a hull meets).
+// without its call: this runs for every pair a hull meets), 16 bytes at a
+// time where SSE2 is there.
 static int same_bits(const dReal *a, const dReal *b, int n)
 {
-#ifdef dSINGLE
-    uint32_t diff = 0, x, y;
-#else
-    uint64_t diff = 0, x, y;
+    const char *x = (const char *)a, *y = (const char *)b;
+    size_t bytes = (size_t)n * sizeof(dReal), k = 0;
+#ifdef __SSE2__
+    __m128i diff = _mm_setzero_si128();
+    for (; k + 16 <= bytes; k += 16)
+        diff = _mm_or_si128(diff, _mm_xor_si128(_mm_loadu_si128((const __m128i *)(x + k)),
+                                                _mm_loadu_si128((const __m128i *)(y + k))));
+    if (_mm_movemask_epi8(_mm_cmpeq_epi8(diff, _mm_setzero_si128())) != 0xffff) return 0;
 #endif
-    for (int i = 0; i < n; i++) {
-        memcpy(&x, a + i, sizeof x);
-        memcpy(&y, b + i, sizeof y);
-        diff |= x ^ y;
+    uint32_t d = 0, u, v;
+    for (; k < bytes; k += sizeof u) {
+        memcpy(&u, x + k, sizeof u);
+        memcpy(&v, y + k, sizeof v);
+        d |= u ^ v;
     }
-    return diff == 0;
+    return d == 0;
 }
 
 void dxConvexPose(dxConvex *c)
@@ -101,6 +218,7 @@ void dxConvexPose(dxConvex *c)
         h->c[i] = g->pos[i];
         for (int k = 0; k < 3; k++) h->R[3 * i + k] = g->R[4 * i + k];
     }
+    dxHullPoseBounds(h);
     dxHullPosePointsPlanes(h->R, h->c, c->points, c->pointcount, c->planes, c->plane_len,
                            c->planecount, pose->pts, (double *const[3]){ pose->px, pose->py, pose->pz },
                            pose->normals, (double *const[3]){ pose->nx, pose->ny, pose->nz },
@@ -198,6 +316,24 @@ static void convex_edge_sets(dxConvex *c, uint64_t *masks)
     }
 }
 
+// Each point's edges, in the edge list's order (c->vert_start, vert_edges).
+static void convex_vertex_edges(dxConvex *c)
+{
+    unsigned *start = c->vert_start;
+    for (unsigned v = 0; v <= c->pointcount; v++) start[v] = 0;
+    for (unsigned k = 0; k < c->edgecount; k++) {
+        start[c->edges[k].a + 1]++;
+        start[c->edges[k].b + 1]++;
+    }
+    for (unsigned v = 0; v < c->pointcount; v++) start[v + 1] += start[v];
+    for (unsigned k = 0; k < c->edgecount; k++) {   // start[v] runs ahead, then is put back
+        c->vert_edges[start[c->edges[k].a]++] = k;
+        c->vert_edges[start[c->edges[k].b]++] = k;
+    }
+    for (unsigned v = c->pointcount; v > 0; v--) start[v] = start[v - 1];
+    start[0] = 0;
+}
+
 // The parts of c->hull that stay from one pose to the next.
 static void convex_view(dxConvex *c)
 {
@@ -208,6 +344,8 @@ static void convex_view(dxConvex *c)
     h->polys = c->polygons;
     h->poly_start = c->poly_start;
     h->edges = c->edges;
+    h->vert_start = c->vert_start;
+    h->vert_edges = c->vert_edges;
     h->npts = c->pointcount;
     h->nplanes = c->planecount;
     h->nedges = c->edgecount;
@@ -239,7 +377,7 @@ static void free_derived(dxConvex *c)
     if (c->derived) dFree(c->derived, c->derived_size);
     c->derived = NULL;
     c->edges = NULL;
-    c->poly_start = NULL;
+    c->poly_start = c->vert_start = c->vert_edges = NULL;
     c->by_f1 = c->by_f2 = c->nbr = NULL;
     c->plane_len = c->plane_dev = NULL;
 }
@@ -272,7 +410,7 @@ static void convex_set(dxConvex *c, const dReal *planes, unsigned planecount,
     size_t doubles = 6 * (size_t)pointcount + 10 * (size_t)planecount + 3 * sides;
     c->derived_size = sizeof(uint64_t) * 3 * (size_t)planecount + sizeof(double) * doubles +
                       sizeof(dxHullPosedEdge) * sides + sizeof(dxHullEdge) * sides +
-                      sizeof(unsigned) * planecount;
+                      sizeof(unsigned) * (planecount + (size_t)pointcount + 1 + 2 * sides);
     char *block = dAlloc(c->derived_size);
     c->derived = block;
     dxHullPose *pose = &c->pose;
@@ -296,7 +434,10 @@ static void convex_set(dxConvex *c, const dReal *planes, unsigned planecount,
     pose->valid = pose->edges_valid = 0;
     c->edges = (dxHullEdge *)(pose->edges + sides);
     c->poly_start = (unsigned *)(c->edges + sides);
+    c->vert_start = c->poly_start + planecount;
+    c->vert_edges = c->vert_start + pointcount + 1;
     c->edgecount = convex_edges(polygons, planecount, c->edges);
+    convex_vertex_edges(c);
     convex_edge_sets(c, masks);
     unsigned at = 0;
     for (unsigned f = 0; f < planecount; f++) {

@@ -71,10 +71,14 @@ typedef struct dx_hull {
     const unsigned *polys;    // per plane: count, indices
     const unsigned *poly_start;   // per plane: where its polygon starts in polys
     const dxHullEdge *edges;  // each edge once, with its two faces
+    const unsigned *vert_start, *vert_edges;   // per point v: the edges at it, in order,
+                              // vert_edges[vert_start[v] .. vert_start[v + 1]) (NULL: none kept)
     unsigned npts, nplanes, nedges;
     double R[9];              // world = R local + c (row-major)
     double c[3];
     double size;              // the largest distance of a point from the origin of the frame
+    double rot_err;           // |R^T R - I| (Frobenius): how far R is from a rotation
+    double radius;            // a bound on |x - c| over the points as posed
     double centre[3];         // a point inside, in the world
     const double (*wp)[3];    // the points in the world
     const double (*wn)[3];    // the planes in the world: unit outward normals ...
@@ -104,6 +108,7 @@ typedef struct dxConvex {
     dxHullEdge *edges;            // derived from the polygons, owned by the geom
     unsigned edgecount;
     unsigned *poly_start;         // per plane: where its polygon starts in polygons
+    unsigned *vert_start, *vert_edges;   // per point: the edges at it (dx_hull's)
     // For hulls of at most 64 edges and 64 planes (else NULL): per plane, the
     // set of edges (bit k: edge k) whose first face it is, and whose second
     // face; the edges with one face only.
@@ -131,6 +136,12 @@ void dxHullPosePointsPlanes(const double R[9], const double c[3], const dReal *p
                             const dReal *planes, const double *len, unsigned nplanes,
                             double (*wp)[3], double *const p3[3], double (*wn)[3],
                             double *const n3[3], double *wd);
+
+// How far the row-major R is from a rotation, |R^T R - I| (Frobenius), into
+// h->rot_err, and from it (with h->size and h->c) a bound on how far from
+// c the posed points lie, into h->radius: |R p| <= sqrt(1 + rot_err) |p|,
+// plus the rounding of R p + c.
+void dxHullPoseBounds(struct dx_hull *h);
 
 // The convex geom's hull posed in the world for its position and rotation
 // (c->pose, c->hull), unless it already is (compared bit for bit).

@@ -1157,6 +1157,134 @@ static int test_floors_of_loose_planes(void)
     return 0;
 }
 
+// A box's point for the pair test's screens is its point nearest the
+// hull's centre (a large box's corners are far from the hull on it). A
+// prism and a box hull over and into each face of a large box (3 m x 3 m x
+// 0.5 m, turned at random), near its middle, edges and corners, in both
+// argument orders: touching exactly when the brute-force least depth is
+// positive, along a normal of that depth (or at most 1.05 times it).
+static int test_large_box_as_brute_force(void)
+{
+    static test_hull pr, bh, big;
+    test_hull_prism(&pr, 0.15, 0.1);
+    test_hull_box(&bh, 0.3, 0.2, 0.25);
+    test_hull_box(&big, 3, 3, 0.5);
+    const hull_arrays of_pr = { pr.points, pr.polygons, 12, 8 }, of_bh = { bh.points, bh.polygons, 8, 6 },
+                      of_big = { big.points, big.polygons, 8, 6 };
+    dGeomID floor_box = dCreateBox(0, 3, 3, (dReal)0.5);
+    dGeomID mover[2] = { dCreateConvex(0, pr.planes, 8, pr.points, 12, pr.polygons),
+                         dCreateConvex(0, bh.planes, 6, bh.points, 8, bh.polygons) };
+    const hull_arrays *of_mover[2] = { &of_pr, &of_bh };
+    rng_state = 5150;
+    int touching = 0, apart = 0;
+    for (int it = 0; it < 1200; it++) {
+        dMatrix3 R;
+        const dReal zero[3] = { 0, 0, 0 };
+        random_rotation(R);
+        place(floor_box, zero, R);
+        // A point over face f of the box (its frame), up to 1.1 times its
+        // half sides across, 0.35 m out to 0.15 m in.
+        const double half[3] = { 1.5, 1.5, 0.25 };
+        int f = it % 6, axis = f / 2;
+        double l[3];
+        for (int k = 0; k < 3; k++) l[k] = rnd(-1.1, 1.1) * half[k];
+        l[axis] = (f & 1 ? 1 : -1) * (half[axis] + rnd(-0.15, 0.35));
+        dReal p[3];
+        for (int i = 0; i < 3; i++)
+            p[i] = (dReal)(R[4 * i] * l[0] + R[4 * i + 1] * l[1] + R[4 * i + 2] * l[2]);
+        dGeomID m = mover[it / 6 % 2];
+        const hull_arrays *hm = of_mover[it / 6 % 2];
+        random_rotation(R);
+        place(m, p, R);
+        int flip = it / 12 % 2;
+        dGeomID a = flip ? floor_box : m, b = flip ? m : floor_box;
+        const hull_arrays *ha = flip ? &of_big : hm, *hb = flip ? hm : &of_big;
+        double least = brute_least_depth(a, ha, b, hb);
+        dContactGeom c[MAXC];
+        int n = dCollide(a, b, MAXC, c, sizeof c[0]);
+        int verdict;
+        CHECK(judge_by_least_depth(a, ha, b, hb, least, c, n, &verdict) == 0);
+        apart += verdict < 0;
+        touching += verdict > 0;
+    }
+    printf("# large box: %d touching, %d apart, as the brute force\n", touching, apart);
+    CHECK(touching > 300 && apart > 300);
+    dGeomDestroy(floor_box);
+    for (int k = 0; k < 2; k++) dGeomDestroy(mover[k]);
+    return 0;
+}
+
+// Hulls whose bounding spheres are apart are parted before any axis: the
+// spheres hold every point. Two cube hulls (turned alike at random), corner
+// towards corner along their diagonal, their centres a hair (0.1 % of the
+// corners' reach) nearer than the two reaches: they touch, as deep as the
+// brute force says; a hair further: apart.
+static int test_corner_to_corner_spheres(void)
+{
+    static test_hull cube;
+    test_hull_box(&cube, 0.2, 0.2, 0.2);
+    const hull_arrays of_cube = { cube.points, cube.polygons, 8, 6 };
+    dGeomID a = dCreateConvex(0, cube.planes, 6, cube.points, 8, cube.polygons);
+    dGeomID b = dCreateConvex(0, cube.planes, 6, cube.points, 8, cube.polygons);
+    const double reach = sqrt(3.0) * 0.1;
+    rng_state = 77;
+    for (int it = 0; it < 200; it++) {
+        dMatrix3 R;
+        random_rotation(R);
+        const dReal zero[3] = { 0, 0, 0 };
+        place(a, zero, R);
+        double apart_by = it % 2 ? 1e-3 : -1e-3, d = 2 * reach * (1 + apart_by) / sqrt(3.0);
+        dReal p[3];
+        for (int i = 0; i < 3; i++) p[i] = (dReal)(d * (R[4 * i] + R[4 * i + 1] + R[4 * i + 2]));
+        place(b, p, R);
+        double least = brute_least_depth(a, &of_cube, b, &of_cube);
+        dContactGeom c[MAXC];
+        int n = dCollide(it % 4 < 2 ? a : b, it % 4 < 2 ? b : a, MAXC, c, sizeof c[0]);
+        CHECK((n > 0) == (apart_by < 0));
+        CHECK((least > 0) == (apart_by < 0));
+        if (n > 0) CHECK_NEAR(c[0].depth, least, TOL(1e-9, 1e-5));
+    }
+    dGeomDestroy(a);
+    dGeomDestroy(b);
+    return 0;
+}
+
+// The hull is posed (four points at a time where the machine allows) to
+// the same numbers as c + R p made one point at a time, in this order: its
+// bounding box, taken from those points, is theirs to the bit.
+static int test_posed_points_exact(void)
+{
+    static test_hull pr;
+    test_hull_prism(&pr, 0.15, 0.1);
+    dGeomID g = dCreateConvex(0, pr.planes, 8, pr.points, 12, pr.polygons);
+    rng_state = 31;
+    for (int it = 0; it < 200; it++) {
+        dMatrix3 R;
+        random_rotation(R);
+        dReal c[3] = { (dReal)rnd(-50, 50), (dReal)rnd(-50, 50), (dReal)rnd(-50, 50) };
+        place(g, c, R);
+        const dReal *gc = dGeomGetPosition(g), *gR = dGeomGetRotation(g);
+        double lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY };
+        for (int v = 0; v < 12; v++) {
+            const dReal *p = pr.points + 3 * v;
+            for (int r = 0; r < 3; r++) {
+                double x = (double)gc[r] + (double)gR[4 * r] * p[0] +
+                           (double)gR[4 * r + 1] * p[1] + (double)gR[4 * r + 2] * p[2];
+                lo[r] = fmin(lo[r], x);
+                hi[r] = fmax(hi[r], x);
+            }
+        }
+        dReal box[6];
+        dGeomGetAABB(g, box);
+        for (int r = 0; r < 3; r++) {
+            CHECK(box[2 * r] == (dReal)lo[r]);
+            CHECK(box[2 * r + 1] == (dReal)hi[r]);
+        }
+    }
+    dGeomDestroy(g);
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_box_equals_box_box),
     TEST_CASE(test_convex_convex_equals_box_box),
@@ -1175,6 +1303,9 @@ const test_case test_cases[] = {
     TEST_CASE(test_remembered_axis_never_hides_contacts),
     TEST_CASE(test_kept_state_as_fresh_geoms),
     TEST_CASE(test_least_depth_as_brute_force),
+    TEST_CASE(test_large_box_as_brute_force),
+    TEST_CASE(test_corner_to_corner_spheres),
+    TEST_CASE(test_posed_points_exact),
     TEST_CASE(test_box_remembered_axis_never_hides_contacts),
     TEST_CASE(test_bad_input),
     TEST_END,

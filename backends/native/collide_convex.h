@@ -22,12 +22,9 @@
 // The storage of a box made into a hull (dx_hull_of_geom's box case).
 typedef struct dx_hull_box {
     dReal pts[24], planes[24];
-    unsigned polys[30], poly_start[6];
-    dxHullEdge edges[12];
     double wp[8][3], wn[6][3], wd[6];
     dxHullPosedEdge we[12];
     double p_soa[3][8], n_soa[3][6], e_soa[3][12], face_low[6];
-    uint64_t by_f1[6], by_f2[6];
     int edges_posed;
 } dx_hull_box;
 

@@ -19,6 +19,13 @@
 #include <math.h>
 #include <string.h>
 
+// clip_line_along four planes at a time where the machine has AVX2 (chosen
+// when called; -DDX_HULL_NO_AVX2 builds the baseline alone).
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__SSE2__) && !defined(DX_HULL_NO_AVX2)
+#define DX_CLIP_AVX2 1
+#include <immintrin.h>
+#endif
+
 
 // Polygon buffers: the clipped polygon has at most the incident polygon's
 // count plus one per reference edge; larger polygons give one contact.
@@ -36,12 +43,28 @@ static void cross3(const double *a, const double *b, double out[3])
     out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
+// What every box made into a hull shares: the faces' polygons (each
+// counterclockwise seen from outside) and where they start; the edges, the
+// one along axis k from the corner with bit k clear to the one with it set,
+// between the faces of the other two axes' bits (i = k + 1, j = k + 2 mod 3:
+// faces 2 i + bit i, 2 j + bit j); the edges by first and second face; and
+// each face's neighbours (every face but its opposite).
+static const unsigned box_polys[30] = { 4, 0, 4, 6, 2, 4, 1, 3, 7, 5, 4, 0, 1, 5, 4,
+                                        4, 2, 6, 7, 3, 4, 0, 2, 3, 1, 4, 4, 5, 7, 6 };
+static const unsigned box_poly_start[6] = { 0, 5, 10, 15, 20, 25 };
+static const dxHullEdge box_edges[12] = {
+    { 0, 1, 2, 4 }, { 2, 3, 3, 4 }, { 4, 5, 2, 5 }, { 6, 7, 3, 5 },
+    { 0, 2, 4, 0 }, { 4, 6, 5, 0 }, { 1, 3, 4, 1 }, { 5, 7, 5, 1 },
+    { 0, 4, 0, 2 }, { 1, 5, 1, 2 }, { 2, 6, 0, 3 }, { 3, 7, 1, 3 },
+};
+static const uint64_t box_by_f1[6] = { 0x500, 0xa00, 0x5, 0xa, 0x50, 0xa0 };
+static const uint64_t box_by_f2[6] = { 0x30, 0xc0, 0x300, 0xc00, 0x3, 0xc };
+static const uint64_t box_nbr[6] = { 0x3d, 0x3e, 0x37, 0x3b, 0x1f, 0x2f };
+
 // A box as a hull in bx: corners by bits (x, y, z), faces -x +x -y +y -z +z.
 static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
 {
     const dReal *side = box->side;
-    static const unsigned faces[6][4] = { { 0, 4, 6, 2 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
-                                          { 2, 6, 7, 3 }, { 0, 2, 3, 1 }, { 4, 5, 7, 6 } };
     for (unsigned v = 0; v < 8; v++)
         for (int i = 0; i < 3; i++) bx->pts[3 * v + i] = (v >> i & 1 ? 1 : -1) * side[i] / 2;
     for (int f = 0; f < 6; f++) {
@@ -49,43 +72,24 @@ static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
         dReal sg = f & 1 ? 1 : -1;
         for (int i = 0; i < 3; i++) bx->planes[4 * f + i] = i == axis ? sg : 0;
         bx->planes[4 * f + 3] = side[axis] / 2;
-        bx->polys[5 * f] = 4;
-        bx->poly_start[f] = 5 * (unsigned)f;
-        for (int k = 0; k < 4; k++) bx->polys[5 * f + 1 + k] = faces[f][k];
     }
-    // Edge along axis k from the corner with bit k clear to the one with it
-    // set, between the faces of the other two axes' bits.
-    int n = 0;
-    for (int k = 0; k < 3; k++) {
-        int i = (k + 1) % 3, j = (k + 2) % 3;
-        for (unsigned bits = 0; bits < 4; bits++) {
-            unsigned bi = bits & 1, bj = bits >> 1, a = bi << i | bj << j;
-            bx->edges[n++] = (dxHullEdge){ a, a | 1u << k, (unsigned)(2 * i) + bi,
-                                           (unsigned)(2 * j) + bj };
-        }
-    }
-    for (int f = 0; f < 6; f++) bx->by_f1[f] = bx->by_f2[f] = 0;
-    for (unsigned k = 0; k < 12; k++) {
-        bx->by_f1[bx->edges[k].f1] |= (uint64_t)1 << k;
-        bx->by_f2[bx->edges[k].f2] |= (uint64_t)1 << k;
-    }
-    // Each face of a box shares an edge with every other but its opposite.
-    static const uint64_t box_nbr[6] = { 0x3d, 0x3e, 0x37, 0x3b, 0x1f, 0x2f };
-    h->by_f1 = bx->by_f1;
-    h->by_f2 = bx->by_f2;
+    h->by_f1 = box_by_f1;
+    h->by_f2 = box_by_f2;
     h->lone = 0;
     h->nbr = box_nbr;
     h->pts = bx->pts;
     h->planes = bx->planes;
-    h->polys = bx->polys;
-    h->poly_start = bx->poly_start;
-    h->edges = bx->edges;
+    h->polys = box_polys;
+    h->poly_start = box_poly_start;
+    h->edges = box_edges;
+    h->vert_start = h->vert_edges = NULL;
     h->npts = 8;
     h->nplanes = 6;
     h->nedges = 12;
     h->convex = NULL;
     const dReal *p = bx->pts;   // every corner is as far from the centre
     h->size = sqrt((double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2]);
+    dxHullPoseBounds(h);
     dxHullPosePointsPlanes(h->R, h->c, bx->pts, 8, bx->planes, NULL, 6, bx->wp,
                            (double *const[3]){ bx->p_soa[0], bx->p_soa[1], bx->p_soa[2] }, bx->wn,
                            (double *const[3]){ bx->n_soa[0], bx->n_soa[1], bx->n_soa[2] }, bx->wd);
@@ -185,6 +189,7 @@ static int middle_inside(const dx_hull *a, const dx_hull *b, const double q[3], 
 enum { LINE_PLANES = 64 };
 typedef struct line_planes {
     double nd[LINE_PLANES], dl;
+    int avx2;   // clip four planes at a time
 } line_planes;
 
 static int line_planes_of(const dx_hull *h, const double d[3], line_planes *lp)
@@ -192,17 +197,81 @@ static int line_planes_of(const dx_hull *h, const double d[3], line_planes *lp)
     if (h->nplanes > LINE_PLANES) return 0;
     lp->dl = sqrt(dot3(d, d));
     for (unsigned f = 0; f < h->nplanes; f++) lp->nd[f] = dot3(h->wn[f], d);
+#ifdef DX_CLIP_AVX2
+    lp->avx2 = __builtin_cpu_supports("avx2");
+#else
+    lp->avx2 = 0;
+#endif
     return 1;
 }
+
+// narrow_to_plane over h's planes from f on, in order.
+static int narrow_from(const dx_hull *h, const line_planes *lp, unsigned f, const double o[3],
+                       double tol, double *t0, double *t1)
+{
+    for (; f < h->nplanes; f++) {
+        double nd = lp->nd[f], gap = h->wd[f] - dot3(h->wn[f], o);
+        if (!narrow_to_plane(nd, gap, lp->dl, tol, t0, t1)) return 0;
+    }
+    return 1;
+}
+
+#ifdef DX_CLIP_AVX2
+// narrow_from(h, lp, 0, ...) four planes at a time: each lane keeps the
+// least exit (largest entry) of its planes as narrow_to_plane does (t
+// first: a NaN is passed over), then the least (largest) of the lanes:
+// the same numbers, but for which of +0 and -0 wins a tie; where the
+// result is a zero the planes are gone over again in order. Returns how many planes
+// it went over (the rest are left to narrow_from), or -1 if a plane along
+// the line has it outside by more than tol.
+__attribute__((target("avx2"))) static int narrow4(const dx_hull *h, const line_planes *lp,
+                                                   const double o[3], double tol, double *t0,
+                                                   double *t1)
+{
+    const __m256d sign = _mm256_set1_pd(-0.0), zero = _mm256_setzero_pd();
+    __m256d o0 = _mm256_set1_pd(o[0]), o1 = _mm256_set1_pd(o[1]), o2 = _mm256_set1_pd(o[2]);
+    __m256d par_lim = _mm256_set1_pd(DX_HULL_EPS * lp->dl), low = _mm256_set1_pd(-tol);
+    __m256d lo = _mm256_set1_pd(*t0), hi = _mm256_set1_pd(*t1), out = zero;
+    unsigned f = 0;
+    for (; f + 4 <= h->nplanes; f += 4) {
+        __m256d nd = _mm256_loadu_pd(lp->nd + f);
+        __m256d no = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(h->nx + f), o0),
+                                                 _mm256_mul_pd(_mm256_loadu_pd(h->ny + f), o1)),
+                                   _mm256_mul_pd(_mm256_loadu_pd(h->nz + f), o2));
+        __m256d gap = _mm256_sub_pd(_mm256_loadu_pd(h->wd + f), no);
+        __m256d par = _mm256_cmp_pd(_mm256_andnot_pd(sign, nd), par_lim, _CMP_LE_OQ);
+        out = _mm256_or_pd(out, _mm256_and_pd(par, _mm256_cmp_pd(gap, low, _CMP_LT_OQ)));
+        __m256d t = _mm256_div_pd(gap, nd);
+        __m256d up = _mm256_andnot_pd(par, _mm256_cmp_pd(nd, zero, _CMP_GT_OQ));
+        __m256d down = _mm256_andnot_pd(par, _mm256_cmp_pd(nd, zero, _CMP_NGT_UQ));
+        hi = _mm256_blendv_pd(hi, _mm256_min_pd(t, hi), up);
+        lo = _mm256_blendv_pd(lo, _mm256_max_pd(t, lo), down);
+    }
+    if (_mm256_movemask_pd(out)) return -1;
+    lo = _mm256_max_pd(lo, _mm256_permute2f128_pd(lo, lo, 1));
+    hi = _mm256_min_pd(hi, _mm256_permute2f128_pd(hi, hi, 1));
+    double a = _mm256_cvtsd_f64(_mm256_max_pd(lo, _mm256_permute_pd(lo, 1)));
+    double b = _mm256_cvtsd_f64(_mm256_min_pd(hi, _mm256_permute_pd(hi, 1)));
+    if (a == 0 || b == 0) return 0;   // a tie of +0 and -0 is decided by the order
+    *t0 = a;
+    *t1 = b;
+    return (int)f;
+}
+#endif
 
 // dx_hull_clip_line for the line o + t d whose planes' products lp holds.
 static int clip_line_along(const dx_hull *h, const line_planes *lp, const double o[3],
                            double tol, double *t0, double *t1)
 {
-    for (unsigned f = 0; f < h->nplanes; f++) {
-        double nd = lp->nd[f], gap = h->wd[f] - dot3(h->wn[f], o);
-        if (!narrow_to_plane(nd, gap, lp->dl, tol, t0, t1)) return 0;
+    unsigned f = 0;
+#ifdef DX_CLIP_AVX2
+    if (lp->avx2) {
+        int done = narrow4(h, lp, o, tol, t0, t1);
+        if (done < 0) return 0;
+        f = (unsigned)done;
     }
+#endif
+    if (!narrow_from(h, lp, f, o, tol, t0, t1)) return 0;
     return *t0 <= *t1 + tol / lp->dl;
 }
 
@@ -220,14 +289,29 @@ static int middle_inside_along(const dx_hull *a, const line_planes *la, const dx
     return 1;
 }
 
-// Keeps the part of poly (n points) with s . x <= off in out; the new count.
-static int clip_plane(const hull_point *poly, int n, const double s[3], double off,
-                      hull_point *out)
+// The sides of poly's n points against the plane s . x = off (s . x - off)
+// into side; 1 if every point is inside (not above 0), where clipping
+// keeps poly as it is.
+static int plane_sides(const hull_point *poly, int n, const double s[3], double off,
+                       double *side)
+{
+    int inside = 1;
+    for (int i = 0; i < n; i++) {
+        side[i] = dot3(s, poly[i].p) - off;
+        inside &= side[i] <= 0;
+    }
+    return inside;
+}
+
+// Keeps the part of poly (n points, on the sides plane_sides gives) with
+// s . x <= off in out; the new count.
+static int clip_plane(const hull_point *poly, int n, const double *side, hull_point *out)
 {
     int m = 0;
     for (int i = 0; i < n && m < MAXP; i++) {
-        const hull_point *p = &poly[i], *q = &poly[(i + 1) % n];
-        double dp = dot3(s, p->p) - off, dq = dot3(s, q->p) - off;
+        int j = i + 1 < n ? i + 1 : 0;
+        const hull_point *p = &poly[i], *q = &poly[j];
+        double dp = side[i], dq = side[j];
         if (dp <= 0) out[m++] = *p;
         if (m < MAXP && ((dp < 0 && dq > 0) || (dp > 0 && dq < 0))) {
             double f = dp / (dp - dq);
@@ -302,7 +386,9 @@ static int face_points(const dx_hull *r, unsigned f, const double nf[3], double 
             for (int q = 0; q < 3; q++) s[q] = -s[q];
             off = -off;
         }
-        n = clip_plane(buf[cur], n, s, off, buf[cur ^ 1]);
+        double side[MAXP];
+        if (plane_sides(buf[cur], n, s, off, side)) continue;
+        n = clip_plane(buf[cur], n, side, buf[cur ^ 1]);
         cur ^= 1;
     }
     // Points below the reference face, lying inside both hulls along nf.
@@ -347,8 +433,11 @@ static void supporting_edge(const dx_hull *h, unsigned v, const dxHullEdge *e, d
     dx_hull_vertex(h, e->b, p1);
     for (int i = 0; i < 3; i++) u[i] = p1[i] - p0[i];
     double lu = sqrt(dot3(u, u)), best = 0;
-    for (unsigned k = 0; k < h->nedges; k++) {
-        const dxHullEdge *f = &h->edges[k];
+    // The edges at v: from the point's list where the hull keeps one.
+    unsigned k = h->vert_start ? h->vert_start[v] : 0;
+    unsigned end = h->vert_start ? h->vert_start[v + 1] : h->nedges;
+    for (; k < end; k++) {
+        const dxHullEdge *f = &h->edges[h->vert_start ? h->vert_edges[k] : k];
         if (f->a != v && f->b != v) continue;
         double q0[3], q1[3], d[3];
         dx_hull_vertex(h, f->a, q0);
@@ -486,6 +575,12 @@ static void keep_face(dx_hull *h, const void *other, int side, unsigned face,
 int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
                  dContactGeom *out, int skip)
 {
+    // Bounding spheres apart part the hulls (a margin over the radii'
+    // bounds for the rounding here).
+    double d2 = 0;
+    for (int i = 0; i < 3; i++) d2 += (a->c[i] - b->c[i]) * (a->c[i] - b->c[i]);
+    double reach = (a->radius + b->radius) * (1 + 1e-9);
+    if (d2 > reach * reach) return 0;
     // The axis that parted the pair last time, if it still does; or the
     // face that gave their contact (sides as the holder sees them).
     dx_hull *holder = a->convex ? a : b->convex ? b : NULL;

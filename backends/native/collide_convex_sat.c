@@ -134,42 +134,94 @@ enum { POSED_FLOORS = 1, POSED_EDGES = 2 };
 static void pose_floors(dx_hull *h)
 {
     if (*h->edges_posed & POSED_FLOORS) return;
-    double e2 = 0;
-    for (int i = 0; i < 3; i++) {
-        for (int k = i; k < 3; k++) {
-            double d = h->R[i] * h->R[k] + h->R[3 + i] * h->R[3 + k] + h->R[6 + i] * h->R[6 + k] -
-                       (i == k);
-            e2 += (i == k ? 1 : 2) * d * d;
-        }
-    }
     double reach = h->size + fabs(h->c[0]) + fabs(h->c[1]) + fabs(h->c[2]);
-    double slack = sqrt(e2) * h->size + 8 * DBL_EPSILON * reach;
+    double slack = h->rot_err * h->size + 8 * DBL_EPSILON * reach;
     for (unsigned f = 0; f < h->nplanes; f++)
         h->face_low[f] = h->wd[f] - (h->plane_dev ? h->plane_dev[f] : 0) - slack;
     *h->edges_posed |= POSED_FLOORS;
 }
 
-// Poses h's edges, with their circles' normals n2 x n1 by coordinate
-// (once per pose, when a test first reaches the edge pairs: not for
-// pairs that a face axis parts).
-static void pose_edges(dx_hull *h)
+// Poses h's edge k: its direction u, its faces' normals' sum, their
+// squares, and its circle's normal n2 x n1 (by coordinate).
+static inline void pose_edge(dx_hull *h, unsigned k)
+{
+    const dxHullEdge *e = &h->edges[k];
+    dxHullPosedEdge *out = &h->we[k];
+    double c[3];
+    for (int i = 0; i < 3; i++) {
+        out->u[i] = h->wp[e->b][i] - h->wp[e->a][i];
+        out->sum[i] = h->wn[e->f1][i] + h->wn[e->f2][i];
+    }
+    out->uu = dot3(out->u, out->u);
+    out->ss = dot3(out->sum, out->sum);
+    cross3(h->wn[e->f2], h->wn[e->f1], c);
+    h->ex[k] = c[0];
+    h->ey[k] = c[1];
+    h->ez[k] = c[2];
+}
+
+#ifdef DX_SIGNS_AVX2
+// pose_edge for edges k to k + 3 at once, their points and normals
+// gathered by coordinate (the same differences, sums, products in the
+// same order: the same numbers).
+_Static_assert(sizeof(dxHullEdge) == 4 * sizeof(int32_t), "an edge is four 32-bit indices");
+_Static_assert(sizeof(dxHullPosedEdge) == 8 * sizeof(double), "a posed edge is eight doubles");
+__attribute__((target("avx2"))) static void pose_edges4(dx_hull *h, unsigned k)
+{
+    // The four edges' (a, b, f1, f2) into rows a0..a3, b0..b3, f1, f2.
+    const __m256i spread = _mm256_setr_epi32(0, 4, 1, 5, 2, 6, 3, 7);
+    __m256i e01 = _mm256_permutevar8x32_epi32(_mm256_loadu_si256((const __m256i *)&h->edges[k]),
+                                              spread);
+    __m256i e23 = _mm256_permutevar8x32_epi32(
+        _mm256_loadu_si256((const __m256i *)&h->edges[k + 2]), spread);
+    __m256i lo = _mm256_unpacklo_epi64(e01, e23), hi = _mm256_unpackhi_epi64(e01, e23);
+    __m128i ia = _mm256_castsi256_si128(lo), ib = _mm256_castsi256_si128(hi);
+    __m128i if1 = _mm256_extracti128_si256(lo, 1), if2 = _mm256_extracti128_si256(hi, 1);
+    const double *p[3] = { h->px, h->py, h->pz }, *n[3] = { h->nx, h->ny, h->nz };
+    __m256d u[3], s[3], n1[3], n2[3];
+    for (int i = 0; i < 3; i++) {
+        u[i] = _mm256_sub_pd(_mm256_i32gather_pd(p[i], ib, 8), _mm256_i32gather_pd(p[i], ia, 8));
+        n1[i] = _mm256_i32gather_pd(n[i], if1, 8);
+        n2[i] = _mm256_i32gather_pd(n[i], if2, 8);
+        s[i] = _mm256_add_pd(n1[i], n2[i]);
+    }
+    __m256d uu = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(u[0], u[0]), _mm256_mul_pd(u[1], u[1])),
+                               _mm256_mul_pd(u[2], u[2]));
+    __m256d ss = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(s[0], s[0]), _mm256_mul_pd(s[1], s[1])),
+                               _mm256_mul_pd(s[2], s[2]));
+    _mm256_storeu_pd(h->ex + k, _mm256_sub_pd(_mm256_mul_pd(n2[1], n1[2]), _mm256_mul_pd(n2[2], n1[1])));
+    _mm256_storeu_pd(h->ey + k, _mm256_sub_pd(_mm256_mul_pd(n2[2], n1[0]), _mm256_mul_pd(n2[0], n1[2])));
+    _mm256_storeu_pd(h->ez + k, _mm256_sub_pd(_mm256_mul_pd(n2[0], n1[1]), _mm256_mul_pd(n2[1], n1[0])));
+    // Each edge's (u, sum, uu, ss): two 4 x 4 transposes.
+    __m256d rows[2][4] = { { u[0], u[1], u[2], s[0] }, { s[1], s[2], uu, ss } };
+    for (int half = 0; half < 2; half++) {
+        __m256d *r = rows[half];
+        __m256d t0 = _mm256_unpacklo_pd(r[0], r[1]), t1 = _mm256_unpackhi_pd(r[0], r[1]);
+        __m256d t2 = _mm256_unpacklo_pd(r[2], r[3]), t3 = _mm256_unpackhi_pd(r[2], r[3]);
+        double *at = half ? &h->we[k].sum[1] : h->we[k].u;
+        size_t stride = sizeof(dxHullPosedEdge) / sizeof(double);
+        _mm256_storeu_pd(at, _mm256_permute2f128_pd(t0, t2, 0x20));
+        _mm256_storeu_pd(at + stride, _mm256_permute2f128_pd(t1, t3, 0x20));
+        _mm256_storeu_pd(at + 2 * stride, _mm256_permute2f128_pd(t0, t2, 0x31));
+        _mm256_storeu_pd(at + 3 * stride, _mm256_permute2f128_pd(t1, t3, 0x31));
+    }
+}
+#endif
+
+// Poses h's edges (once per pose, when a test first reaches the edge
+// pairs: not for pairs that a face axis parts); with AVX2 (avx2 1) four
+// at a time.
+static void pose_edges(dx_hull *h, int avx2)
 {
     if (*h->edges_posed & POSED_EDGES) return;
-    for (unsigned k = 0; k < h->nedges; k++) {
-        const dxHullEdge *e = &h->edges[k];
-        dxHullPosedEdge *out = &h->we[k];
-        double c[3];
-        for (int i = 0; i < 3; i++) {
-            out->u[i] = h->wp[e->b][i] - h->wp[e->a][i];
-            out->sum[i] = h->wn[e->f1][i] + h->wn[e->f2][i];
-        }
-        out->uu = dot3(out->u, out->u);
-        out->ss = dot3(out->sum, out->sum);
-        cross3(h->wn[e->f2], h->wn[e->f1], c);
-        h->ex[k] = c[0];
-        h->ey[k] = c[1];
-        h->ez[k] = c[2];
-    }
+    unsigned k = 0;
+#ifdef DX_SIGNS_AVX2
+    if (avx2)
+        for (; k + 4 <= h->nedges; k += 4) pose_edges4(h, k);
+#else
+    (void)avx2;
+#endif
+    for (; k < h->nedges; k++) pose_edge(h, k);
     *h->edges_posed |= POSED_EDGES;
 }
 
@@ -647,10 +699,33 @@ masked_edge_pairs_with(const dx_hull *a, const dx_hull *b, edge_search *es, cons
     return 1;
 }
 
-// Points of each hull (qa of a, qb of b), for the gaps: the hint's, else
-// each hull's point furthest towards the other's centre (into the hint).
+// The point of the box h (a box made into a hull, collide_convex_hull.c:
+// its corner 7 is its half sides) nearest p, into q: p taken into the box's
+// frame, clamped to a hair inside its sides (so that the rounding of the
+// pose back leaves it in the box, well within the screens' margins), posed
+// back.
+static void box_point_near(const dx_hull *h, const double p[3], double q[3])
+{
+    const dReal *half = h->pts + 21;
+    double d[3] = { p[0] - h->c[0], p[1] - h->c[1], p[2] - h->c[2] }, l[3];
+    for (int k = 0; k < 3; k++) {
+        double x = h->R[k] * d[0] + h->R[3 + k] * d[1] + h->R[6 + k] * d[2];
+        double lim = half[k] * (1 - 1e-12);
+        l[k] = x > lim ? lim : x < -lim ? -lim : x;
+    }
+    for (int i = 0; i < 3; i++)
+        q[i] = h->c[i] + h->R[3 * i] * l[0] + h->R[3 * i + 1] * l[1] + h->R[3 * i + 2] * l[2];
+}
+
+// Points of each hull (qa of a, qb of b), for the gaps (any point of the
+// hull bounds them; the nearer the other hull, the tighter): the hint's,
+// else each hull's point furthest towards the other's centre (into the
+// hint); for a box, its point nearest the other's centre instead (a large
+// box's corners are far from where it meets the other hull), into the
+// room at qa_box, qb_box.
 static void facing_points(const dx_hull *a, const dx_hull *b, sat_hint *hint,
-                          const double **qa, const double **qb)
+                          const double **qa, const double **qb, double qa_box[3],
+                          double qb_box[3])
 {
     if (hint->side < 0 || hint->qa >= a->npts || hint->qb >= b->npts) {
         double ab[3] = { b->centre[0] - a->centre[0], b->centre[1] - a->centre[1],
@@ -661,6 +736,14 @@ static void facing_points(const dx_hull *a, const dx_hull *b, sat_hint *hint,
     }
     *qa = a->wp[hint->qa];
     *qb = b->wp[hint->qb];
+    if (!a->convex) {
+        box_point_near(a, b->centre, qa_box);
+        *qa = qa_box;
+    }
+    if (!b->convex) {
+        box_point_near(b, a->centre, qb_box);
+        *qb = qb_box;
+    }
 }
 
 // The face axis of a's face f (side 0) or b's (side 1), of depth *known
@@ -708,7 +791,8 @@ sat_with(dx_hull *a, dx_hull *b, sat_hint *hint, sat_axis *face, sat_axis *edge,
     unsigned gface = 0;
     if (gapped) {
         const double *qa, *qb;
-        facing_points(a, b, hint, &qa, &qb);
+        double qa_box[3], qb_box[3];
+        facing_points(a, b, hint, &qa, &qb, qa_box, qb_box);
         face_gaps(a, qb, gaps[0]);
         face_gaps(b, qa, gaps[1]);
         if (hint->side >= 0 && hint->face < (hint->side ? b : a)->nplanes) {
@@ -754,8 +838,8 @@ sat_with(dx_hull *a, dx_hull *b, sat_hint *hint, sat_axis *face, sat_axis *edge,
                 if (!face_test(a, b, side, f, NULL, face, found, sep, avx2)) return 0;
         }
     }
-    pose_edges(a);
-    pose_edges(b);
+    pose_edges(a, avx2);
+    pose_edges(b, avx2);
     edge_search es = { edge, found, sep, face, face->depth / DX_HULL_EDGE_PREFERENCE, 0,
                        found->margin };
     update_threshold(&es);
