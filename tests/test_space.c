@@ -18,6 +18,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include "xorshift.h"
 
 enum { SIMPLE, HASH, QUADTREE, SAP, N_TYPES };
 
@@ -43,16 +44,6 @@ static void brute_pairs(dGeomID *g, int n, pairs *out)
 }
 
 // ---- scenes -------------------------------------------------------------------
-
-static uint64_t rng_state;
-
-static double rnd(double lo, double hi)
-{
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return lo + (hi - lo) * (double)(rng_state >> 11) * 0x1p-53;
-}
 
 static void number(dGeomID g, int i) { dGeomSetData(g, (void *)(intptr_t)(i + 1)); }
 

@@ -16,6 +16,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include "xorshift.h"
 
 // ---- recorded pairs -------------------------------------------------------------
 
@@ -61,16 +62,6 @@ static int check_collide2(dGeomID o, dSpaceID s)
 }
 
 // ---- random edits ---------------------------------------------------------------
-
-static uint64_t rng_state;
-
-static double rnd(double lo, double hi)
-{
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return lo + (hi - lo) * (double)(rng_state >> 11) * 0x1p-53;
-}
 
 static int next_number = 1;
 

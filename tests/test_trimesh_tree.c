@@ -15,15 +15,8 @@
 
 #include "../libodecollide/trimesh_internal.h"
 
-static unsigned long long rng_state = 0x2545f4914f6cdd1dull;
-
-static double rnd(double a, double b)
-{
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return a + (b - a) * (double)(rng_state >> 11) / 9007199254740992.0;
-}
+#define RNG_SEED 0x2545f4914f6cdd1dull
+#include "xorshift.h"
 
 // A mesh kept with its arrays: a wavy or flat (integer) grid, or a soup of
 // random triangles; its vertices in dReal, or (vf set) in float; shift: a

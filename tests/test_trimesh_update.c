@@ -22,15 +22,8 @@
 
 #include "../libodecollide/trimesh_internal.h"
 
-static unsigned long long rng_state = 0x9e3779b97f4a7c15ull;
-
-static double rnd(double a, double b)
-{
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return a + (b - a) * (double)(rng_state >> 11) / 9007199254740992.0;
-}
+#define RNG_SEED 0x9e3779b97f4a7c15ull
+#include "xorshift.h"
 
 // A mesh's arrays: vertices in double or float (3 a vertex), indices.
 typedef struct mesh {
