@@ -558,7 +558,8 @@ WARM_CLONES void dxQuickWarmEnd(struct dxWorld *w, dxWarmCache *c, const dReal *
     if (!c) return;
     // Each run's forces into its first body's frame (the bodies have not
     // moved yet).
-    for (const warm_pair *q = c->cur_pairs, *qend = q + c->ncur_pairs; q < qend; q++) {
+    for (int p = 0; p < c->ncur_pairs; p++) {   // (cur_pairs is NULL before the first pair)
+        const warm_pair *q = &c->cur_pairs[p];
         const dReal *R = q->b0->R;
         for (int k = q->first, kend = k + q->count; k < kend; k++) {
             const qs_warm_entry *pend = &c->pending[k];
