@@ -216,7 +216,10 @@ void dBodySetMass(dBodyID b, const dMass *m)
     dMatrix3 inv;
     DX_CHECK_ARG(dInvertMatrix3(inv, m->I) != 0, return, "inertia is singular");
     b->mass = *m;
-    dZeroVector3(b->mass.c);
+    // The centre at the origin, and the padding a dMass filled by hand may
+    // leave unset zeroed, so that a snapshot's bytes depend on the state alone.
+    b->mass.c[0] = b->mass.c[1] = b->mass.c[2] = b->mass.c[3] = 0;
+    b->mass.I[3] = b->mass.I[7] = b->mass.I[11] = 0;
     b->inv_mass = dRecip(m->mass);
     dCopyMatrix4x3(b->inv_inertia, inv);
     b->gyro_pending = 0;

@@ -6,6 +6,7 @@
 #include "objects_internal.h"
 
 #include <ode/memory.h>
+#include <string.h>
 
 #define CHECK_BODY(b, on_fail) \
     DX_CHECK_ARG(dxBodyIsLive(b), on_fail, "body is NULL or was destroyed")
@@ -19,8 +20,15 @@ static void resize_samples(struct dxBody *b)
         dFree(b->adis_lvel_samples, b->adis_samples_size * sizeof(dReal));
         dFree(b->adis_avel_samples, b->adis_samples_size * sizeof(dReal));
     }
+    // Zeroed: the slots not yet sampled are never averaged, but a snapshot
+    // writes them, and its bytes (and checksum) should depend on the state
+    // alone.
     b->adis_lvel_samples = dAlloc(n * sizeof(dReal));
     b->adis_avel_samples = dAlloc(n * sizeof(dReal));
+    if (n) {
+        memset(b->adis_lvel_samples, 0, n * sizeof(dReal));
+        memset(b->adis_avel_samples, 0, n * sizeof(dReal));
+    }
     b->adis_samples_size = n;
     b->adis_sample_next = 0;
     b->adis_samples_taken = 0;
