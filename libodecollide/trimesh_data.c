@@ -135,14 +135,31 @@ static void scratch_free(derive_scratch *s, int vertex_count)
     dFree(s->mark, n + 1);
 }
 
-// Every vertex into pos; 1 if all are finite, else 0 with the first bad
-// index in *bad.
-static int load_positions(const dxTriMeshData *d, dReal *pos, int *bad)
+// The vertices that the first `tris` triangles name into pos, the others
+// zero: only those are read from the user's array, as ODE reads only what
+// its triangles name (ODE's own demo_trimesh_collision passes a VertexCount
+// three times its array's). Indices past the vertex count are skipped (the
+// build rejects them first). used: scratch, a byte a vertex. 1 if every
+// named vertex is finite, else 0 with the first bad index in *bad.
+static int load_positions(const dxTriMeshData *d, int tris, dReal *pos, unsigned char *used,
+                          int *bad)
 {
+    const int count = d->vertex_count;
+    memset(used, 0, (size_t)count);
+    for (int t = 0; t < tris; t++) {
+        dTriIndex v[3];
+        memcpy(v, (const char *)d->indices + (size_t)t * (size_t)d->tri_stride, sizeof v);
+        for (int k = 0; k < 3; k++)
+            if (v[k] < (dTriIndex)count) used[v[k]] = 1;
+    }
     const char *p = (const char *)d->vertices;
     const size_t stride = (size_t)d->vertex_stride;
-    for (int i = 0; i < d->vertex_count; i++, p += stride) {
+    for (int i = 0; i < count; i++, p += stride) {
         dReal *out = pos + 3 * i;
+        if (!used[i]) {
+            out[0] = out[1] = out[2] = 0;
+            continue;
+        }
         if (d->vertex_double) {
             double v[3];
             memcpy(v, p, sizeof v);
@@ -547,9 +564,6 @@ static void build_checked(const char *fn, dxTriMeshData *d, const void *vertices
     d->vertex_double = vertex_double;
     d->indices = indices;
     d->tri_stride = tri_stride;
-    scratch_alloc(&s, vertex_count);
-    int bad;
-    BUILD_CHECK(load_positions(d, s.pos, &bad), "vertex %d is not finite", bad);
     int tris = index_count / 3;
     for (int t = 0; t < tris; t++) {
         dTriIndex v[3];
@@ -559,6 +573,9 @@ static void build_checked(const char *fn, dxTriMeshData *d, const void *vertices
                         "index %d of triangle %d (%lu) is past the vertex count (%d)", k, t,
                         (unsigned long)v[k], vertex_count);
     }
+    scratch_alloc(&s, vertex_count);
+    int bad;
+    BUILD_CHECK(load_positions(d, tris, s.pos, s.mark, &bad), "vertex %d is not finite", bad);
 #undef BUILD_CHECK
     d->user_normals = normals;
     if (tris == 0) scratch_free(&s, vertex_count);
@@ -672,7 +689,7 @@ void dGeomTriMeshDataUpdate(dTriMeshDataID g)
     derive_scratch s;
     scratch_alloc(&s, g->vertex_count);
     int bad;
-    if (!load_positions(g, s.pos, &bad)) {
+    if (!load_positions(g, g->tri_count, s.pos, s.mark, &bad)) {
         scratch_free(&s, g->vertex_count);
         dxReportBadArgument(__func__, "vertex %d is not finite: the mesh is emptied", bad);
         clear_derived(g);

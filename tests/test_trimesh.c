@@ -127,6 +127,22 @@ static int test_bad_input(void)
     CHECK(test_captured_contains("vertex 1 is not finite"));
     CHECK(dGeomTriMeshGetTriangleCount(mesh) == 0);
     v[1][2] = 0;
+    // A vertex no triangle names is never read, as in ODE (whose own
+    // demo_trimesh_collision passes a VertexCount past its array): not
+    // finite, it is no error, at the build or at an Update.
+    v[3][0] = NAN;
+    int reports = test_captured_count();
+    dGeomTriMeshDataBuildDouble(d, v, sizeof v[0], 4, good, 3, sizeof good);
+    CHECK(dGeomTriMeshGetTriangleCount(mesh) == 1);
+    v[2][2] = 0.5;
+    dGeomTriMeshDataUpdate(d);
+    CHECK(dGeomTriMeshGetTriangleCount(mesh) == 1);
+    CHECK(test_captured_count() == reports);
+    dVector3 q0, q1, q2;
+    dGeomTriMeshGetTriangle(mesh, 0, &q0, &q1, &q2);
+    CHECK(q2[2] == 0.5);
+    v[3][0] = 1;
+    v[2][2] = 0;
     dGeomTriMeshDataBuildDouble(d, v, 2 * sizeof(double), 4, good, 3, sizeof good);
     CHECK(test_captured_contains("VertexStride"));
     dGeomTriMeshDataBuildDouble(d, v, sizeof v[0], 4, good, 3, 2 * sizeof(dTriIndex));
