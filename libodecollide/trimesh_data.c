@@ -152,23 +152,13 @@ static int load_positions(const dxTriMeshData *d, int tris, dReal *pos, unsigned
         for (int k = 0; k < 3; k++)
             if (v[k] < (dTriIndex)count) used[v[k]] = 1;
     }
-    const char *p = (const char *)d->vertices;
-    const size_t stride = (size_t)d->vertex_stride;
-    for (int i = 0; i < count; i++, p += stride) {
+    for (int i = 0; i < count; i++) {
         dReal *out = pos + 3 * i;
         if (!used[i]) {
             out[0] = out[1] = out[2] = 0;
             continue;
         }
-        if (d->vertex_double) {
-            double v[3];
-            memcpy(v, p, sizeof v);
-            for (int k = 0; k < 3; k++) out[k] = (dReal)v[k];
-        } else {
-            float v[3];
-            memcpy(v, p, sizeof v);
-            for (int k = 0; k < 3; k++) out[k] = (dReal)v[k];
-        }
+        dxTriMeshVertex(d, i, out);
         if (!dxIsFinite3(out[0], out[1], out[2])) {
             *bad = i;
             return 0;
