@@ -213,7 +213,7 @@ void dBodySetMass(dBodyID b, const dMass *m)
                  return, "mass has its centre of mass at (%g, %g, %g): it must be at the body "
                  "origin (translate the geoms instead)",
                  (double)m->c[0], (double)m->c[1], (double)m->c[2]);
-    dMatrix3 inv;
+    dMatrix3 inv = { 0 };   // (dInvertMatrix3 leaves the padding: zero in the snapshot)
     DX_CHECK_ARG(dInvertMatrix3(inv, m->I) != 0, return, "inertia is singular");
     b->mass = *m;
     // The centre at the origin, and the padding a dMass filled by hand may
