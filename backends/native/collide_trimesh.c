@@ -81,8 +81,14 @@ static int kept_duplicate(dxTriScratch *s, int n, int i, dReal tol, int grid)
 {
     const dxTriMeshRaw *r = s->raw;
     if (!grid) {
+        // duplicates' test along x first, with r[i]'s x and the square of
+        // tol loaded once (the same numbers).
+        const dReal x = r[i].pos[0], tol2 = tol * tol;
         int j = 0;
-        while (j < n && !duplicates(&r[i], &r[j], tol)) j++;
+        for (; j < n; j++) {
+            dReal dx = x - r[j].pos[0];
+            if (!(dx * dx > tol2) && duplicates(&r[i], &r[j], tol)) break;
+        }
         return j;
     }
     int best = n, *heads[27];

@@ -458,8 +458,8 @@ static int edge_through(const box_pair *b, const dReal a[3], const dReal e[3])
         dReal inv = 1 / d[j], t0 = (-w - a[j]) * inv, t1 = (w - a[j]) * inv;
         s0 = dMax(s0, dMin(t0, t1));
         s1 = dMin(s1, dMax(t0, t1));
+        if (!(s0 <= s1)) return 0;   // (the slabs met so far already miss)
     }
-    if (!(s0 <= s1)) return 0;
     dReal s = (s0 + s1) / 2;
     for (int j = 0; j < 3; j++)
         if (!(dFabs(a[j] + s * d[j]) <= b->through[j])) return 0;
