@@ -448,6 +448,12 @@ static int separates_box01(const box_pair *b, const dxTri *t, const dReal e[3],
 // 3.5 (h0 + h1 + h2) of c.
 static int edge_through(const box_pair *b, const dReal a[3], const dReal e[3])
 {
+    // Both ends beyond one side of a slab: no point of the edge is within
+    // (the slabs' test below says the same, after its divisions).
+    for (int j = 0; j < 3; j++) {
+        const dReal w = b->through[j];
+        if ((a[j] > w && e[j] > w) || (a[j] < -w && e[j] < -w)) return 0;
+    }
     dReal d[3] = { e[0] - a[0], e[1] - a[1], e[2] - a[2] }, s0 = 0, s1 = 1;
     for (int j = 0; j < 3; j++) {
         dReal w = b->through[j];
