@@ -26,19 +26,17 @@ static inline int tri_vertex(const dxTriMeshData *d, int t, int k)
     return (int)idx;
 }
 
-// Triangle t's index and normal into out (all but its vertices).
-static inline void load_normal(const dxTriMeshData *d, int t, dxTri *out)
+void dxTriLoad(const dxTriMeshData *d, int t, dxTriOwn *out)
 {
-    out->index = t;
-    for (int k = 0; k < 3; k++) out->n[k] = d->normal[3 * t + k];
-}
-
-void dxTriLoad(const dxTriMeshData *d, int t, dxTri *out)
-{
-    load_normal(d, t, out);
     // The triangle's own vertices, as the leaf-order copy holds them (a
     // welded one is at the same position, but for the sign of a zero).
-    for (int k = 0; k < 3; k++) dxTriMeshVertex(d, tri_vertex(d, t, k), out->v[k]);
+    for (int k = 0; k < 3; k++) {
+        dxTriMeshVertex(d, tri_vertex(d, t, k), out->v[k]);
+        out->n[k] = d->normal[3 * t + k];
+    }
+    out->t.index = t;
+    out->t.v = (const dReal(*)[3])out->v;
+    out->t.n = out->n;
 }
 
 static dReal dist2(const dReal a[3], const dReal b[3])
@@ -83,8 +81,14 @@ static int kept_duplicate(dxTriScratch *s, int n, int i, dReal tol, int grid)
 {
     const dxTriMeshRaw *r = s->raw;
     if (!grid) {
+        // duplicates' test along x first, with r[i]'s x and the square of
+        // tol loaded once (the same numbers).
+        const dReal x = r[i].pos[0], tol2 = tol * tol;
         int j = 0;
-        while (j < n && !duplicates(&r[i], &r[j], tol)) j++;
+        for (; j < n; j++) {
+            dReal dx = x - r[j].pos[0];
+            if (!(dx * dx > tol2) && duplicates(&r[i], &r[j], tol)) break;
+        }
         return j;
     }
     int best = n, *heads[27];
@@ -494,62 +498,92 @@ static void pose_other(dxTriQuery *q, dReal lo[3], dReal hi[3])
     }
 }
 
-// Whether the triangle with vertices v (9 numbers) lies off the box
-// [lo, hi] along one of the mesh's axes. The query box holds the other
-// geom (widened by rounding), so such a triangle touches nothing.
-static inline int tri_off_box(const dReal *v, const dReal lo[3], const dReal hi[3])
-{
-    // Without branches: the comparisons of a triangle that is not off (most
-    // of them) are all made anyway. A NaN coordinate is never off.
+// The query box [lo, hi] as tri_off_box compares with it (loaded once for
+// a walk).
+typedef struct off_box {
 #if defined(__SSE2__) && !defined(dSINGLE)
-    // x and y side by side, then z: the same ordered comparisons (false for
-    // NaN), half the instructions.
-    const __m128d lxy = _mm_loadu_pd(lo), hxy = _mm_loadu_pd(hi);
-    const __m128d lz = _mm_load_sd(lo + 2), hz = _mm_load_sd(hi + 2);
-    const __m128d a = _mm_loadu_pd(v), b = _mm_loadu_pd(v + 3), c = _mm_loadu_pd(v + 6);
-    const __m128d az = _mm_load_sd(v + 2), bz = _mm_load_sd(v + 5), cz = _mm_load_sd(v + 8);
-    __m128d xy = _mm_or_pd(
-        _mm_and_pd(_mm_and_pd(_mm_cmplt_pd(a, lxy), _mm_cmplt_pd(b, lxy)), _mm_cmplt_pd(c, lxy)),
-        _mm_and_pd(_mm_and_pd(_mm_cmpgt_pd(a, hxy), _mm_cmpgt_pd(b, hxy)), _mm_cmpgt_pd(c, hxy)));
-    __m128d z = _mm_or_pd(
-        _mm_and_pd(_mm_and_pd(_mm_cmplt_sd(az, lz), _mm_cmplt_sd(bz, lz)), _mm_cmplt_sd(cz, lz)),
-        _mm_and_pd(_mm_and_pd(_mm_cmpgt_sd(az, hz), _mm_cmpgt_sd(bz, hz)), _mm_cmpgt_sd(cz, hz)));
-    return (_mm_movemask_pd(xy) | (_mm_movemask_pd(z) & 1)) != 0;
+    __m128d lxy, hxy, lz, hz;   // x and y side by side, then z
 #else
+    dReal lo[3], hi[3];
+#endif
+} off_box;
+
+static inline void off_box_set(off_box *b, const dReal lo[3], const dReal hi[3])
+{
+#if defined(__SSE2__) && !defined(dSINGLE)
+    b->lxy = _mm_loadu_pd(lo);
+    b->hxy = _mm_loadu_pd(hi);
+    b->lz = _mm_load_sd(lo + 2);
+    b->hz = _mm_load_sd(hi + 2);
+#else
+    for (int i = 0; i < 3; i++) {
+        b->lo[i] = lo[i];
+        b->hi[i] = hi[i];
+    }
+#endif
+}
+
+// Whether the triangle with vertices v (9 numbers) lies off the box b
+// along one of the mesh's axes. The query box holds the other geom
+// (widened by rounding), so such a triangle touches nothing. A mesh's
+// vertices are finite (a data object with one that is not is emptied), so
+// "all three below lo" is "their largest below lo"; a NaN in the box (the
+// other geom's pose) is never off either way, the comparisons being false.
+static inline int tri_off_box(const dReal *v, const off_box *b)
+{
+#if defined(__SSE2__) && !defined(dSINGLE)
+    // x and y side by side, then z with a zero beside it (0 < 0 and 0 > 0
+    // are false: the upper lane never counts), one movemask for both.
+    const __m128d a = _mm_loadu_pd(v), bb = _mm_loadu_pd(v + 3), c = _mm_loadu_pd(v + 6);
+    const __m128d az = _mm_load_sd(v + 2), bz = _mm_load_sd(v + 5), cz = _mm_load_sd(v + 8);
+    const __m128d mx = _mm_max_pd(_mm_max_pd(a, bb), c), mn = _mm_min_pd(_mm_min_pd(a, bb), c);
+    const __m128d mxz = _mm_max_pd(_mm_max_pd(az, bz), cz), mnz = _mm_min_pd(_mm_min_pd(az, bz), cz);
+    const __m128d off = _mm_or_pd(_mm_or_pd(_mm_cmplt_pd(mx, b->lxy), _mm_cmpgt_pd(mn, b->hxy)),
+                                  _mm_or_pd(_mm_cmplt_pd(mxz, b->lz), _mm_cmpgt_pd(mnz, b->hz)));
+    return _mm_movemask_pd(off) != 0;
+#else
+    const dReal *lo = b->lo, *hi = b->hi;
     int off = 0;
     for (int i = 0; i < 3; i++) {
-        off |= (v[i] < lo[i]) & (v[3 + i] < lo[i]) & (v[6 + i] < lo[i]);
-        off |= (v[i] > hi[i]) & (v[3 + i] > hi[i]) & (v[6 + i] > hi[i]);
+        off |= dMax(v[i], dMax(v[3 + i], v[6 + i])) < lo[i];
+        off |= dMin(v[i], dMin(v[3 + i], v[6 + i])) > hi[i];
     }
     return off;
 #endif
 }
 
-// One candidate of the walk: skipped if degenerate or refused by the
-// per-triangle callback; its vertices then read from v (9 numbers) if
-// given, else from the user's arrays (dxTriLoad); tested if its own box
-// meets [lo, hi]. Returns whether it touches.
-static inline int gather_one(dxTriQuery *q, int t, const dReal *v, const dReal lo[3],
-                             const dReal hi[3], dxTriTest *test)
+// Whether the walk passes triangle *t (its vertices and normal set, the
+// normal not zero) to the test: the height of the other geom's position
+// above its plane into t->h, then the test's own first rejection made
+// here, without the call: below the plane, or above it by more than
+// `reach` (reach < 0: neither).
+static inline int height_passes(const dxTriQuery *q, dxTri *t, dReal reach)
+{
+    t->h = dxTriHeight(t, q->pos);
+    return reach < 0 || !(t->h < 0 || t->h > reach);
+}
+
+// One candidate read through the triangle list or seen by the
+// per-triangle callback: skipped if degenerate or refused by the callback;
+// its vertices then read from v (9 numbers) if given, else from the user's
+// arrays (dxTriLoad into own); tested if its own box meets b and its
+// height passes. Returns whether it touches.
+static int gather_listed(dxTriQuery *q, int t, const dReal *v, const off_box *b, dReal reach,
+                         dxTriTest *test, dxTriOwn *own)
 {
     dxTriMesh *m = q->mesh;
-    // Without a per-triangle callback (which sees every listed triangle
-    // that is not degenerate) the box test comes first: it rejects more,
-    // from memory the walk reads anyway.
-    if (v && !m->callback && tri_off_box(v, lo, hi)) return 0;
-    // A degenerate triangle has a zero normal (dxTriMeshIsDegenerate),
-    // tested where it is loaded.
-    dxTri tri;
-    load_normal(q->data, t, &tri);
-    if (tri.n[0] == 0 && tri.n[1] == 0 && tri.n[2] == 0) return 0;
+    // A degenerate triangle has a zero normal (dxTriMeshIsDegenerate).
+    const dReal *n = q->data->normal + 3 * t;
+    if (n[0] == 0 && n[1] == 0 && n[2] == 0) return 0;
     if (m->callback && !m->callback(&m->g, q->other, t)) return 0;
+    dxTri tri = { .index = t, .n = n };
     if (v) {
-        if (m->callback && tri_off_box(v, lo, hi)) return 0;
-        memcpy(tri.v, v, sizeof tri.v);
+        tri.v = (const dReal(*)[3])v;
     } else {
-        dxTriLoad(q->data, t, &tri);
-        if (tri_off_box(&tri.v[0][0], lo, hi)) return 0;
+        dxTriLoad(q->data, t, own);
+        tri.v = own->t.v;
     }
+    if (tri_off_box(&tri.v[0][0], b) || !height_passes(q, &tri, reach)) return 0;
     return test(q, &tri);
 }
 
@@ -560,11 +594,37 @@ static inline void add_hit(dxTriScratch *s, int *hits, int t)
     s->hits[0][(*hits)++] = t;
 }
 
+// The triangles of the n leaves (node * 4 + slot) without a per-triangle
+// callback, in place: a triangle off the box b is dropped first (from the
+// leaf-order copy the walk reads anyway), then a degenerate one (a zero
+// normal) and one whose height does not pass; the rest go to the test with
+// their vertices and normal where the data keeps them.
+static void walk_leaves(dxTriQuery *q, const int *leaf, int n, const off_box *b, dReal reach,
+                        dxTriTest *test, int *hits)
+{
+    const dxTriMeshData *d = q->data;
+    const dReal *lv = d->leaf_vertices, *normal = d->normal;
+    const int *order = d->order;
+    for (int i = 0; i < n; i++) {
+        const dxTriMeshNode *node = &d->nodes[leaf[i] >> 2];
+        const int first = node->first[leaf[i] & 3], end = first + node->count[leaf[i] & 3];
+        for (int j = first; j < end; j++) {
+            const dReal *v = lv + 9 * j;
+            if (tri_off_box(v, b)) continue;
+            const int t = order[j];
+            dxTri tri = { .index = t, .v = (const dReal(*)[3])v, .n = normal + 3 * t };
+            if (tri.n[0] == 0 && tri.n[1] == 0 && tri.n[2] == 0) continue;
+            if (!height_passes(q, &tri, reach)) continue;
+            if (test(q, &tri)) add_hit(q->s, hits, t);
+        }
+    }
+}
+
 // At most this many leaves are walked from the vertices' leaf-order copy;
 // a query meeting more goes through the triangle list.
 enum { LEAF_WALK_MAX = 256 };
 
-int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dxTriTest *test)
+int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dReal reach, dxTriTest *test)
 {
     dxTriMesh *m = (dxTriMesh *)mesh;
     dxTriScratch *s = q->s;
@@ -583,6 +643,8 @@ int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dxTriTest *test)
         wlo[i] = lo[i] - eps;
         whi[i] = hi[i] + eps;
     }
+    off_box b;
+    off_box_set(&b, wlo, whi);
     int hits = 0;
     // Without temporal coherence the tree's leaves are walked in place:
     // the same triangles in the same order as dxTriMeshQueryBox lists
@@ -590,20 +652,26 @@ int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dxTriTest *test)
     int leaf[LEAF_WALK_MAX], leaves = -1;
     if (d->leaf_vertices && (d->tree_stamp == 0 || !dxTriMeshTCOn(m, other->ops->cls)))
         leaves = dxTriMeshQueryLeaves(d, lo, hi, leaf, LEAF_WALK_MAX);
-    if (leaves >= 0) {
+    if (leaves >= 0 && !m->callback) {
+        walk_leaves(q, leaf, leaves, &b, reach, test, &hits);
+    } else if (leaves >= 0) {
+        // The per-triangle callback sees every listed triangle that is not
+        // degenerate, before the box test.
         for (int i = 0; i < leaves; i++) {
             const dxTriMeshNode *node = &d->nodes[leaf[i] >> 2];   // node * 4 + slot
             const int first = node->first[leaf[i] & 3], end = first + node->count[leaf[i] & 3];
             for (int j = first; j < end; j++) {
                 int t = d->order[j];
-                if (gather_one(q, t, d->leaf_vertices + 9 * j, wlo, whi, test)) add_hit(s, &hits, t);
+                if (gather_listed(q, t, d->leaf_vertices + 9 * j, &b, reach, test, NULL))
+                    add_hit(s, &hits, t);
             }
         }
     } else {
         int count = dxTriMeshQueryTC(s, m, other, lo, hi);
+        dxTriOwn own;
         for (int i = 0; i < count; i++) {
             int t = s->cand[0][i];
-            if (gather_one(q, t, NULL, wlo, whi, test)) add_hit(s, &hits, t);
+            if (gather_listed(q, t, NULL, &b, reach, test, &own)) add_hit(s, &hits, t);
         }
     }
     if (hits > 0 && m->array_callback) m->array_callback(mesh, other, s->hits[0], hits);
@@ -611,12 +679,12 @@ int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dxTriTest *test)
 }
 
 int dxTriMeshCollide(dxGeom *mesh, dxGeom *other, int flags, dContactGeom *c, int skip,
-                     dxTriTest *test)
+                     dReal reach, dxTriTest *test)
 {
     dxTriQuery q;
     q.s = dxTriScratchAcquire();
     if (!q.s) return 0;
-    int n = dxTriMeshGather(&q, mesh, other, test) ? dxTriMeshFinish(&q, flags, c, skip) : 0;
+    int n = dxTriMeshGather(&q, mesh, other, reach, test) ? dxTriMeshFinish(&q, flags, c, skip) : 0;
     dxTriScratchRelease(q.s);
     return n;
 }
@@ -851,5 +919,5 @@ static int plane_test(dxTriQuery *q, const dxTri *t)
 
 int dxCollideTriMeshPlane(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
 {
-    return dxTriMeshCollide(o1, o2, flags, c, skip, plane_test);
+    return dxTriMeshCollide(o1, o2, flags, c, skip, -1, plane_test);
 }

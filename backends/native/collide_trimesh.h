@@ -86,17 +86,37 @@ typedef struct dxTriQuery {
     int prepared;
 } dxTriQuery;
 
-// One triangle: its index, vertices and unit normal (its feature bits,
-// neighbours and welded vertex indices, needed only at an edge or vertex,
-// are read from the data there: dxTriFeatureNormal, dxTriPrismInit).
+// One triangle: its index, vertices and unit normal, where they are kept
+// (the walk points into the tree's leaf-order copy and the data's normals:
+// nothing is copied for a candidate). Its feature bits, neighbours and
+// welded vertex indices, needed only at an edge or vertex, are read from
+// the data there: dxTriFeatureNormal, dxTriPrismInit.
 typedef struct dxTri {
     int index;
-    dReal v[3][3];
-    dReal n[3];
+    const dReal (*v)[3];   // its three vertices
+    const dReal *n;
+    dReal h;   // the height of the other geom's position above its plane (the walk's)
 } dxTri;
 
+// The height of p above triangle t's plane.
+static inline dReal dxTriHeight(const dxTri *t, const dReal p[3])
+{
+    const dReal d[3] = { p[0] - t->v[0][0], p[1] - t->v[0][1], p[2] - t->v[0][2] };
+    return dx_dot(t->n, d);
+}
+
+// A triangle with its own copy of its vertices and normal (dxTriLoad): for
+// a triangle read outside the walk, or moved into another frame.
+typedef struct dxTriOwn {
+    dxTri t;   // points at v and n
+    dReal v[3][3];
+    dReal n[3];
+} dxTriOwn;
+
 // A triangle test: adds the triangle's contacts with dxTriAdd and returns 1
-// if the triangle touches the other geom.
+// if the triangle touches the other geom. The walk has worked out t->h and
+// made the test's first rejection (a triangle whose plane the other's
+// position is below, or above by more than the walk's `reach`) already.
 typedef int dxTriTest(dxTriQuery *q, const dxTri *t);
 
 // Add a contact with the other's triangle (the other geom being a
@@ -126,13 +146,15 @@ static inline void dxTriAdd(dxTriQuery *q, const dReal pos[3], const dReal n[3],
 }
 
 // The collider body: every triangle whose box meets the other geom's box
-// (mesh frame) and that the per-triangle callback accepts goes through
-// test; the array callback then sees those that touch; the contacts are
+// (mesh frame), that the per-triangle callback accepts and whose plane the
+// other's position is on or above by at most reach (reach < 0: any height;
+// dInfinity: on or above) goes through test; the array callback then sees
+// those that touch; the contacts are
 // reduced (near-duplicates merged, the triangles of a merged one given to
 // the merge callback, at most flags & 0xffff kept: the deepest first, then
 // each the farthest from those kept) and written.
 int dxTriMeshCollide(dxGeom *mesh, dxGeom *other, int flags, dContactGeom *c, int skip,
-                     dxTriTest *test);
+                     dReal reach, dxTriTest *test);
 
 // Reduce the contacts gathered in q->s->raw (near-duplicates merged, the
 // triangles of a merged one given to the merge callbacks, flat groups kept
@@ -144,15 +166,15 @@ int dxTriMeshFinish(dxTriQuery *q, int flags, dContactGeom *c, int skip);
 // but a sphere's R; q->s, an acquired scratch set, is kept), gathers the
 // triangles' contacts into q->s->raw (callbacks honoured) and returns
 // their count.
-int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dxTriTest *test);
+int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dReal reach, dxTriTest *test);
 // Keep at most flags & 0xffff of the first n gathered contacts (the deepest
 // first, then the spread) at the front; returns the count kept.
 int dxTriMeshSpread(dxTriQuery *q, int n, int flags);
 // Write the first n gathered contacts in world coordinates as they are.
 void dxTriMeshWrite(dxTriQuery *q, int n, dContactGeom *c, int skip);
 
-// Load triangle t (dxTri) from the data.
-void dxTriLoad(const dxTriMeshData *d, int t, dxTri *out);
+// Load triangle t from the data into out (its copies, out->t pointing at them).
+void dxTriLoad(const dxTriMeshData *d, int t, dxTriOwn *out);
 
 // The closest point of triangle t to p: into q; returns the feature it is
 // on: 0 the face, 1 + k edge k (v_k to v_k+1), 4 + k vertex k.

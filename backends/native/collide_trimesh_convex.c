@@ -53,14 +53,6 @@ static void cross3(dReal out[3], const dReal a[3], const dReal b[3])
     out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-// Height of p above triangle t's plane.
-static dReal height(const dxTri *t, const dReal p[3])
-{
-    dReal d[3];
-    sub3(d, p, t->v[0]);
-    return dx_dot(t->n, d);
-}
-
 // A ball of radius r at p (a sphere's centre, or a point of a capsule's
 // axis) against the closest point on_tri of t, on feature f (as
 // dxTriClosestPoint): along the face normal on the face, or over a flat or
@@ -74,7 +66,7 @@ static int ball_contact(dxTriQuery *q, const dxTri *t, const dReal p[3], dReal r
     sub3(d, p, on_tri);
     dReal dist2 = dx_dot(d, d);
     if (dist2 > r * r) return 0;
-    dReal dist = dSqrt(dist2), h = height(t, p), dir[3] = { t->n[0], t->n[1], t->n[2] };
+    dReal dist = dSqrt(dist2), h = dxTriHeight(t, p), dir[3] = { t->n[0], t->n[1], t->n[2] };
     int how = 0;
     if (f != 0 && dist > DX_COLLIDE_EPS * r) {
         for (int i = 0; i < 3; i++) dir[i] = d[i] / dist;
@@ -99,10 +91,11 @@ static int ball_contact(dxTriQuery *q, const dxTri *t, const dReal p[3], dReal r
 
 // ---- sphere ---------------------------------------------------------------------
 
+// (The walk has left out a triangle whose plane the centre is below or
+// more than r above: dxCollideTriMeshSphere's reach.)
 static int sphere_test(dxTriQuery *q, const dxTri *t)
 {
-    dReal r = ((const dxSphere *)q->other)->radius, h = height(t, q->pos);
-    if (h < 0 || h > r) return 0;
+    dReal r = ((const dxSphere *)q->other)->radius;
     dReal on_tri[3];
     int f = dxTriClosestPoint(t, q->pos, on_tri);
     return ball_contact(q, t, q->pos, r, on_tri, f);
@@ -156,7 +149,7 @@ int dxCollideTriMeshSphere(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, i
     dxTriQuery q;
     q.s = dxTriScratchAcquire();
     if (!q.s) return 0;
-    int n = dxTriMeshGather(&q, o1, o2, sphere_test);
+    int n = dxTriMeshGather(&q, o1, o2, ((const dxSphere *)o2)->radius, sphere_test);
     dxTriMesh *m = q.mesh;
     dxTriMeshRaw *r = q.s->raw;
     int important = !(flags & CONTACTS_UNIMPORTANT);
@@ -203,17 +196,17 @@ static int clip_to_prism(const dxTri *t, const dReal p0[3], const dReal p1[3], d
     return *lo <= *hi;
 }
 
+// (The walk has left out a triangle whose plane the centre is below.)
 static int capsule_test(dxTriQuery *q, const dxTri *t)
 {
     const dxCapsule *cap = (const dxCapsule *)q->other;
     dReal r = cap->radius, half = cap->length / 2, a[3], p0[3], p1[3];
     dx_axis(q->R, 2, a);
-    if (height(t, q->pos) < 0) return 0;
     for (int i = 0; i < 3; i++) {
         p0[i] = q->pos[i] - half * a[i];
         p1[i] = q->pos[i] + half * a[i];
     }
-    if (dMin(height(t, p0), height(t, p1)) > r) return 0;
+    if (dMin(dxTriHeight(t, p0), dxTriHeight(t, p1)) > r) return 0;
     dReal lo, hi;
     int added = 0;
     if (clip_to_prism(t, p0, p1, DX_COLLIDE_EPS * q->scale, &lo, &hi)) {
@@ -221,7 +214,7 @@ static int capsule_test(dxTriQuery *q, const dxTri *t)
         for (int j = 0; j < (hi - lo > DX_COLLIDE_EPS ? 2 : 1); j++) {
             dReal e[3], pos[3];
             for (int i = 0; i < 3; i++) e[i] = p0[i] + s[j] * (p1[i] - p0[i]);
-            dReal depth = r - height(t, e);
+            dReal depth = r - dxTriHeight(t, e);
             if (depth < 0) continue;
             for (int i = 0; i < 3; i++) pos[i] = e[i] - r * t->n[i];
             dxTriAdd(q, pos, t->n, depth, t->index);
@@ -260,13 +253,13 @@ static int capsule_test(dxTriQuery *q, const dxTri *t)
             feature = u <= -end ? 4 + k : u >= end ? 4 + (k + 1) % 3 : 1 + k;
         }
     }
-    if (best > r * r || height(t, ps) < 0) return 0;
+    if (best > r * r || dxTriHeight(t, ps) < 0) return 0;
     return ball_contact(q, t, ps, r, pt, feature);
 }
 
 int dxCollideTriMeshCapsule(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
 {
-    return dxTriMeshCollide(o1, o2, flags, c, skip, capsule_test);
+    return dxTriMeshCollide(o1, o2, flags, c, skip, dInfinity, capsule_test);
 }
 
 // ---- box --------------------------------------------------------------------------
@@ -326,7 +319,7 @@ static int clipped_face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism
             bit = 1u << (tag - DX_TRI_MADE_CORNER);
             if (*seen & bit) continue;
         }
-        dReal depth = -height(t, c.pt[i]);
+        dReal depth = -dxTriHeight(t, c.pt[i]);
         if (depth < -eps || tag == DX_TRI_MADE_AT_FLAT_EDGE) continue;
         if (seen) *seen |= bit;
         dxTriAdd(q, c.pt[i], t->n, dMax(depth, 0), t->index);
@@ -342,7 +335,7 @@ static int face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p, dRe
 {
     dReal eps = DX_COLLIDE_EPS * q->scale;
     int behind = 0;
-    for (int i = 0; i < n && !behind; i++) behind = height(t, a[i]) <= eps;
+    for (int i = 0; i < n && !behind; i++) behind = dxTriHeight(t, a[i]) <= eps;
     if (!behind) return 0;
     const dReal *corner[POLY_MAX];
     int made[POLY_MAX];
@@ -455,6 +448,12 @@ static int separates_box01(const box_pair *b, const dxTri *t, const dReal e[3],
 // 3.5 (h0 + h1 + h2) of c.
 static int edge_through(const box_pair *b, const dReal a[3], const dReal e[3])
 {
+    // Both ends beyond one side of a slab: no point of the edge is within
+    // (the slabs' test below says the same, after its divisions).
+    for (int j = 0; j < 3; j++) {
+        const dReal w = b->through[j];
+        if ((a[j] > w && e[j] > w) || (a[j] < -w && e[j] < -w)) return 0;
+    }
     dReal d[3] = { e[0] - a[0], e[1] - a[1], e[2] - a[2] }, s0 = 0, s1 = 1;
     for (int j = 0; j < 3; j++) {
         dReal w = b->through[j];
@@ -465,8 +464,8 @@ static int edge_through(const box_pair *b, const dReal a[3], const dReal e[3])
         dReal inv = 1 / d[j], t0 = (-w - a[j]) * inv, t1 = (w - a[j]) * inv;
         s0 = dMax(s0, dMin(t0, t1));
         s1 = dMin(s1, dMax(t0, t1));
+        if (!(s0 <= s1)) return 0;   // (the slabs met so far already miss)
     }
-    if (!(s0 <= s1)) return 0;
     dReal s = (s0 + s1) / 2;
     for (int j = 0; j < 3; j++)
         if (!(dFabs(a[j] + s * d[j]) <= b->through[j])) return 0;
@@ -664,11 +663,10 @@ static void low_part_sides(int f, const dReal hv[8], unsigned low, dReal H,
     *within = w;
 }
 
+// (The walk has left out a triangle whose plane the centre is below.)
 static int box_test(dxTriQuery *q, const dxTri *t)
 {
-    const dReal *c = q->pos;
-    dReal hc = height(t, c);
-    if (hc < 0) return 0;
+    const dReal *c = q->pos, hc = t->h;
     // (A triangle off the box's own bounding box in the mesh frame never
     // comes here: dxTriMeshGather leaves it out.)
     const box_pair *b = prepare_box(q);
@@ -752,7 +750,7 @@ static int box_test(dxTriQuery *q, const dxTri *t)
             for (int i = 0; i < 4; i++) {
                 const int v = fv[i];
                 if (!(low >> v & 1) || (seen >> v & 1)) continue;
-                dReal depth = -height(t, b->corner[v]);
+                dReal depth = -dxTriHeight(t, b->corner[v]);
                 if (depth < -eps) continue;
                 seen |= 1u << v;
                 dxTriAdd(q, b->corner[v], t->n, dMax(depth, 0), t->index);
@@ -771,7 +769,7 @@ static int box_test(dxTriQuery *q, const dxTri *t)
 
 int dxCollideTriMeshBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
 {
-    return dxTriMeshCollide(o1, o2, flags, c, skip, box_test);
+    return dxTriMeshCollide(o1, o2, flags, c, skip, dInfinity, box_test);
 }
 
 // ---- cylinder ---------------------------------------------------------------------
@@ -781,11 +779,12 @@ int dxCollideTriMeshBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
 // below the triangle: that depth is exact, and so is a cylinder lying on
 // its side (its lowest line is an edge of the prism). Elsewhere the prism
 // is inside the cylinder by at most r (1 - cos(pi / CYL_SIDES)), 0.5% of r.
+//
+// (The walk has left out a triangle whose plane the centre is below.)
 static int cylinder_test(dxTriQuery *q, const dxTri *t)
 {
     const dxCylinder *cyl = (const dxCylinder *)q->other;
     const dReal *c = q->pos, r = cyl->radius, h = cyl->length / 2;
-    if (height(t, c) < 0) return 0;
     dReal a[3], x[3], y[3];
     dx_axis(q->R, 2, a);
     if (separates_cylinder(t, t->n, c, a, r, h) || separates_cylinder(t, a, c, a, r, h))
@@ -844,7 +843,7 @@ static int cylinder_test(dxTriQuery *q, const dxTri *t)
 
 int dxCollideTriMeshCylinder(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
 {
-    return dxTriMeshCollide(o1, o2, flags, c, skip, cylinder_test);
+    return dxTriMeshCollide(o1, o2, flags, c, skip, dInfinity, cylinder_test);
 }
 
 // ---- convex hull ------------------------------------------------------------------
@@ -905,7 +904,7 @@ static int convex_test(dxTriQuery *q, const dxTri *t)
     for (int r = 0; r < 3; r++)
         centre[r] = q->pos[r] + q->R[4 * r] * local[0] + q->R[4 * r + 1] * local[1] +
                     q->R[4 * r + 2] * local[2];
-    if (height(t, centre) < 0) return 0;
+    if (dxTriHeight(t, centre) < 0) return 0;
     if (separates_hull(q, h, t, t->n, 1)) return 0;
     for (unsigned f = 0; f < h->planecount; f++) {
         const dReal *pl = h->planes + 4 * f;
@@ -949,5 +948,5 @@ static int convex_test(dxTriQuery *q, const dxTri *t)
 
 int dxCollideTriMeshConvex(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
 {
-    return dxTriMeshCollide(o1, o2, flags, c, skip, convex_test);
+    return dxTriMeshCollide(o1, o2, flags, c, skip, -1, convex_test);
 }

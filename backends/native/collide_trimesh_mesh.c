@@ -209,7 +209,7 @@ static int collide_ordered(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, i
         int ub = s->cand[1][i];
         if (dxTriMeshIsDegenerate(db, ub)) continue;
         if (b->callback && !b->callback(o2, o1, ub)) continue;
-        dxTri u;
+        dxTriOwn u;
         dxTriLoad(db, ub, &u);
         dReal reach_u = reach_along(db, half_b, u.n);   // u.n still in b's frame
         // u in a's frame, and its box there.
@@ -231,9 +231,9 @@ static int collide_ordered(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, i
             int ta = s->cand[0][j];
             if (dxTriMeshIsDegenerate(da, ta)) continue;
             if (a->callback && !a->callback(o1, o2, ta)) continue;
-            dxTri t;
+            dxTriOwn t;
             dxTriLoad(da, ta, &t);
-            if (!pair_contacts(&q, &t, &u, ca, ha, centre_b, reach_u)) continue;
+            if (!pair_contacts(&q, &t.t, &u.t, ca, ha, centre_b, reach_u)) continue;
             touched_b = 1;
             dxTriMeshReserveInts(&s->hits[0], &s->hits_cap[0], hits_a + 1);
             s->hits[0][hits_a++] = ta;
