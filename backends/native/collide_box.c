@@ -386,7 +386,6 @@ BOX_INLINE int box_keep_overlapping(const box_face *f, clip_point *a, int n, box
                  & ~(g0 - v4_abs(gx) * X - v4_abs(gy) * Y > 2 * margins);
     box_v4 face = v4_select(act, v4_select(up, hiv, -hiv), inf);
     box_v4 dot = v4_select(act, Cz, one);
-    int na = (int)((act[0] | act[1] | act[2]) & 1);
     box_v4 ri0 = v4_load(Ri), ri1 = v4_load(Ri + 4), ri2 = v4_load(Ri + 8);
     int kept = 0, deepest = 0;
     for (int i = 0; i < n; i++) {
@@ -394,10 +393,14 @@ BOX_INLINE int box_keep_overlapping(const box_face *f, clip_point *a, int n, box
         dReal depth = p[CP_DEPTH];
         if (depth < 0) continue;
         dReal x = p[CP_X], y = p[CP_Y], exit = dInfinity;
-        if (na) {   // t_m where g_m > margin replaced by inf
+        // t_m where g_m > margin replaced by inf; when that leaves no active
+        // axis, every t_m is inf (the inactive ones' (inf - finite) / 1: a
+        // finite margin means finite sizes) and none is computed.
+        box_b4 far = g0 + x * gx + y * gy > margins, need = act & ~far;
+        if (need[0] | need[1] | need[2]) {
             box_v4 q = rel + x * f->U1 + y * f->U2 + (hk - depth) * f->nf;
             box_v4 t = (face - (ri0 * q[0] + ri1 * q[1] + ri2 * q[2])) / dot;
-            t = v4_select(g0 + x * gx + y * gy > margins, inf, t);
+            t = v4_select(far, inf, t);
             for (int m = 0; m < 3; m++)
                 if (t[m] < exit) exit = t[m];
         }
@@ -419,13 +422,11 @@ BOX_INLINE int box_keep_overlapping(const box_face *f, clip_point *a, int n, box
 }
 
 // What box_clearance needs: the contact normal in box 1's frame (nl), and
-// box_box's Rm, overlaps and projections, T and half sides a, b; rotations
-// whether every |Rm_ij| <= 1.25 (as for rotations).
+// box_box's Rm, overlaps and projections (room for 16: fours are read).
 typedef struct box_axes {
     dReal nl[3];
     const dReal (*Rm)[4];
-    const dReal *over, *proj, *T, *a, *b;
-    int rotations;
+    const dReal *over, *proj;
 } box_axes;
 
 // The ray's exit through the faces of axis x, whose direction has s = m . n
@@ -444,57 +445,62 @@ BOX_INLINE dReal face_dot(const box_axes *ax, int x)
     return x < 3 ? nl[x] : Rm[0][x - 3] * nl[0] + Rm[1][x - 3] * nl[1] + Rm[2][x - 3] * nl[2];
 }
 
+// exit_along for the axes of four lanes (their overlaps, projections and
+// s = m . n), each lane the scalar formula's operations in their order.
+BOX_INLINE box_v4 exits_along(box_v4 over, box_v4 proj, box_v4 s)
+{
+    box_v4 zero = { 0, 0, 0, 0 }, inf = { dInfinity, dInfinity, dInfinity, dInfinity };
+    box_v4 t = (v4_select(s > zero, proj, -proj) + (over + v4_abs(proj))) / v4_abs(s);
+    return v4_select(s == zero, inf, t);
+}
+
+// Lane by lane the lesser of t and best, best kept on ties and where t is
+// NaN (as "if (t < best) best = t").
+BOX_INLINE box_v4 v4_less(box_v4 t, box_v4 best)
+{
+    return v4_select(t < best, t, best);
+}
+
 // How far box 1 must move along the unit normal (nl, in box 1's frame) to
 // clear box 2: box 1 moved by t n meets box 2 while t n lies in the
 // Minkowski difference box 2 - box 1, whose faces are normal to the 15
 // axes m; the ray t n leaves it at the least h(m) / (m . n) over the axes
 // facing n, h(m) = m . (p2 - p1) + radius1(m) + radius2(m) its support. The
-// ratio does not depend on the length of m, so axes stay unnormalised.
+// ratio does not depend on the length of m, so axes stay unnormalised;
+// edge axes of (nearly) parallel edges are left out.
 //
-// known is the exit along face axis known_axis (dInfinity and -1 if none):
-// that axis is not looked at again. h(m) is the overlap
-// along m plus 0 or 2 |m . (p2 - p1)|, and |m . n| <= 4 max|nl_i| for
-// every axis when the |Rm_ij| are at most 1.25: an axis whose overlap
-// exceeds 4 known max|nl_i| (plus the rounding of h, cut) exits later than
-// known and is not looked at. So is an edge axis e_i x Rm[.][j] whose
-// overlap exceeds 2 known max|nl_i| (|Rm_i1j| + |Rm_i2j|) (plus rounding),
-// a bound on its |m . n| that is small for (nearly) parallel edges. The
-// least exit is the same.
-static dReal box_clearance(const box_axes *ax, dReal known, int known_axis)
+// The 15 exits are lanes of five fours (axes 0-2, 3-5, 6-8, 9-11, 12-14:
+// over and proj read four at a time, the fourth lane never looked at),
+// each the scalar exit to the bit; the least is that of the axes taken in
+// order, but for the sign of a zero, which the first zero in axis order
+// gives.
+BOX_CLONES static dReal box_clearance(const box_axes *ax)
 {
-    const dReal *nl = ax->nl, (*Rm)[4] = ax->Rm, *over = ax->over;
-    dReal best = known, cut = dInfinity, rounding = 0, per_q = dInfinity;
-    if (ax->rotations && known < dInfinity) {
-        const dReal *T = ax->T, *a = ax->a, *b = ax->b;
-        dReal N = dFabs(nl[0]) > dFabs(nl[1]) ? dFabs(nl[0]) : dFabs(nl[1]);
-        if (dFabs(nl[2]) > N) N = dFabs(nl[2]);
-        dReal size = dFabs(T[0]) + dFabs(T[1]) + dFabs(T[2]) + a[0] + a[1] + a[2] + b[0] + b[1]
-                     + b[2];
-        rounding = 4 * BOX_EXIT_MARGIN * size;
-        cut = 4 * N * known + rounding;
-        per_q = 2 * N * known;
-    }
-#pragma GCC unroll 6
-    for (int x = 0; x < 6; x++) {
-        if (x == known_axis || over[x] > cut) continue;
-        dReal t = exit_along(ax, x, face_dot(ax, x));
-        if (t < best) best = t;
-    }
+    const dReal *nl = ax->nl, (*Rm)[4] = ax->Rm, *over = ax->over, *proj = ax->proj;
+    box_v4 r[3] = { v4_load(Rm[0]), v4_load(Rm[1]), v4_load(Rm[2]) };
+    box_v4 eps = { DX_COLLIDE_EPS, DX_COLLIDE_EPS, DX_COLLIDE_EPS, DX_COLLIDE_EPS };
+    box_v4 inf = { dInfinity, dInfinity, dInfinity, dInfinity };
+    box_v4 t[5];
+    t[0] = exits_along(v4_load(over), v4_load(proj), v4_of3(nl[0], nl[1], nl[2]));
+    t[1] = exits_along(v4_load(over + 3), v4_load(proj + 3),
+                       r[0] * nl[0] + r[1] * nl[1] + r[2] * nl[2]);
+    box_v4 best = v4_less(t[1], t[0]);
 #pragma GCC unroll 3
     for (int i = 0; i < 3; i++) {
         int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
-#pragma GCC unroll 3
-        for (int j = 0; j < 3; j++) {
-            int x = 6 + 3 * i + j;
-            if (over[x] > cut) continue;
-            if (over[x] - rounding > per_q * (dFabs(Rm[i1][j]) + dFabs(Rm[i2][j]))) continue;
-            if (Rm[i1][j] * Rm[i1][j] + Rm[i2][j] * Rm[i2][j] <= DX_COLLIDE_EPS) continue;
-            dReal s = Rm[i1][j] * nl[i2] - Rm[i2][j] * nl[i1];   // (e_i x Rm[.][j]) . n
-            dReal t = exit_along(ax, x, s);
-            if (t < best) best = t;
-        }
+        box_v4 s = r[i1] * nl[i2] - r[i2] * nl[i1];   // (e_i x Rm[.][j]) . n
+        box_v4 len2 = r[i1] * r[i1] + r[i2] * r[i2];
+        t[2 + i] = v4_select(len2 <= eps, inf,
+                             exits_along(v4_load(over + 6 + 3 * i), v4_load(proj + 6 + 3 * i), s));
+        best = v4_less(t[2 + i], best);
     }
-    return best;
+    dReal least = best[0];
+    if (best[1] < least) least = best[1];
+    if (best[2] < least) least = best[2];
+    if (least == 0)
+        for (int x = 0; x < 15; x++)
+            if (t[x / 3][x % 3] == 0) return t[x / 3][x % 3];
+    return least;
 }
 
 // The face case (see box_clip_incident): the kept points are the contacts,
@@ -520,12 +526,12 @@ BOX_CLONES static int box_face_contacts(const box_face *f, const dReal normal[3]
     if (kept == 0) {   // the separating axis says they overlap: find a point
         dReal pos[3];
         box_overlap_point(pr, f->Rr, f->hr, pi, f->Ri, f->hi, pos);
-        dx_put_contact(out, 0, skip, pos, normal, box_clearance(ax, dInfinity, -1), o1, o2);
+        dx_put_contact(out, 0, skip, pos, normal, box_clearance(ax), o1, o2);
         return 1;
     }
     dReal own = exit_along(ax, code, face_dot(ax, code));
     dReal deepest = a[0][CP_DEPTH];
-    dReal clear = deepest < own ? box_clearance(ax, own, code) : deepest;
+    dReal clear = deepest < own ? box_clearance(ax) : deepest;
     if (kept > max) {
         cull_points(a, kept, max);
         kept = max;
@@ -808,8 +814,7 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
     if (code < 6) {
         box_face f;
         f.nf[3] = f.U1[3] = f.U2[3] = 0;
-        box_axes ax = { .Rm = Rm, .over = over, .proj = proj, .T = T, .a = a, .b = b,
-                        .rotations = rotations };
+        box_axes ax = { .Rm = Rm, .over = over, .proj = proj };
         dReal sg = proj[code] < 0 ? 1 : -1;
         if (code < 3) {   // face of box 1: normal -sign(T_k) A_k; C, c from Rm and T
             int k = code, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
