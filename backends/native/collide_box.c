@@ -513,7 +513,7 @@ BOX_CLONES static dReal box_clearance(const box_axes *ax)
 // through the faces of the contact's own axis (code), so when the deepest
 // point reaches that, the full clearance is not needed. normal is the
 // contact normal (into o1).
-BOX_CLONES static int box_face_contacts(const box_face *f, const dReal normal[3], const box_axes *ax,
+BOX_INLINE int box_face_contacts(const box_face *f, const dReal normal[3], const box_axes *ax,
                              int code, dxGeom *o1, dxGeom *o2, int max, dContactGeom *out,
                              int skip)
 {
