@@ -92,18 +92,23 @@ BOX_INLINE box_v4 v4_abs(box_v4 v)
     return v;
 }
 
-// (x, y, z, 0): the fourth lane cleared with a mask, not inserted (GCC
-// inserts a 0 with a vmovq between registers that Valgrind 3.19, the
-// instruction counts' tool, cannot run).
-BOX_INLINE box_v4 v4_of3(dReal x, dReal y, dReal z)
+// v with its fourth lane 0: cleared with a mask, not inserted (GCC inserts
+// a 0 with a vmovq between registers that Valgrind 3.19, the instruction
+// counts' tool, cannot run).
+BOX_INLINE box_v4 v4_clear3(box_v4 v)
 {
     static const box_b4 keep3 = { -1, -1, -1, 0 };
-    box_v4 v = { x, y, z, z };
     box_b4 bits;
     memcpy(&bits, &v, sizeof v);
     bits &= keep3;
     memcpy(&v, &bits, sizeof v);
     return v;
+}
+
+// (x, y, z, 0).
+BOX_INLINE box_v4 v4_of3(dReal x, dReal y, dReal z)
+{
+    return v4_clear3((box_v4){ x, y, z, z });
 }
 
 // Lane by lane, a where mask (all bits set) else b.
@@ -669,11 +674,19 @@ BOX_INLINE void box_frame(const dReal *R1, const dReal *R2, const dReal d[3], co
     for (int i = 0; i < 3; i++) {
         row[i] = R1[i] * r2[0] + R1[4 + i] * r2[1] + R1[8 + i] * r2[2];   // Rm_i.
         qrow[i] = v4_abs(row[i]);
-        box_v4 col = R2[i] * r1[0] + R2[4 + i] * r1[1] + R2[8 + i] * r1[2];   // Rm_.i
-        qcol[i] = v4_abs(col);
-        v4_store(Rc[i], col);
         v4_store(Rm[i], row[i]);
         v4_store(Q[i], qrow[i]);
+    }
+    // Rm's columns: its rows turned (column i's lane j, B_i . A_j, is the sum
+    // of the same products in the same order as row j's lane i).
+    box_v4 lo = __builtin_shufflevector(row[0], row[1], 0, 4, 2, 6);   // Rm00 Rm10 Rm02 Rm12
+    box_v4 hi = __builtin_shufflevector(row[0], row[1], 1, 5, 3, 7);   // Rm01 Rm11 Rm03 Rm13
+    box_v4 col[3] = { __builtin_shufflevector(lo, row[2], 0, 1, 4, 4),
+                      __builtin_shufflevector(hi, row[2], 0, 1, 5, 5),
+                      __builtin_shufflevector(lo, row[2], 2, 3, 6, 6) };
+    for (int i = 0; i < 3; i++) {
+        qcol[i] = v4_abs(col[i]);
+        v4_store(Rc[i], col[i]);
     }
     v4_store(T, t);
     box_v4 av = v4_load(a), bv = v4_load(b);
@@ -746,8 +759,9 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
                        int flags, dContactGeom *out, int skip, int hint, int *apart,
                        dReal normal_out[3], dReal *depth_out, int *code_out)
 {
-    const dReal a[4] = { s1[0] / 2, s1[1] / 2, s1[2] / 2, 0 };
-    const dReal b[4] = { s2[0] / 2, s2[1] / 2, s2[2] / 2, 0 };
+    dReal a[4], b[4];   // s / 2 as s * 0.5 (the same number), fourth lanes 0
+    v4_store(a, v4_clear3(v4_load(s1) * (dReal)0.5));
+    v4_store(b, v4_clear3(v4_load(s2) * (dReal)0.5));
     dReal d[3] = { p2[0] - p1[0], p2[1] - p1[1], p2[2] - p1[2] }, T[4];
     // Bounding spheres apart by more than the edge axes' slack: no axis can
     // say the boxes touch.
@@ -760,11 +774,18 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
     // edge axis' slack is <= 0 for boxes of sides >= 0: a pair apart along it
     // has an edge overlap < 0, and only then are the edges tested in turn.
     if (hint >= 0 && axis_parts(hint, over, a, b, Rm)) return apart_by(hint, apart);
-    for (int x = 0; x < 6; x++)
-        if (over[x] < 0) return apart_by(x, apart);
+    // (Touching pairs, most of them, find no negative overlap among the 15
+    // in four fours first.)
+    box_v4 zero = { 0, 0, 0, 0 };
+    box_b4 neg = (v4_load(over) < zero) | (v4_load(over + 4) < zero)
+                 | (v4_load(over + 8) < zero) | (v4_load(over + 11) < zero);
     dReal lowest = 0;
-    for (int x = 6; x < 15; x++)
-        if (over[x] < lowest) lowest = over[x];
+    if ((neg[0] | neg[1] | neg[2] | neg[3]) & 1) {
+        for (int x = 0; x < 6; x++)
+            if (over[x] < 0) return apart_by(x, apart);
+        for (int x = 6; x < 15; x++)
+            if (over[x] < lowest) lowest = over[x];
+    }
     if (lowest < 0 || (!trusted && !(a[0] >= 0 && a[1] >= 0 && a[2] >= 0 && b[0] >= 0
                                        && b[1] >= 0 && b[2] >= 0))) {
         for (int i = 0; i < 3; i++) {
