@@ -552,11 +552,12 @@ BOX_INLINE int box_face_contacts(const box_face *f, const dReal normal[3], const
         dContactGeom *k = dxContactAt(out, c, skip);
         v4_store(k->pos, pos);
         v4_store(k->normal, nv);
-        k->depth = c == 0 && deepest < clear ? clear : p[CP_DEPTH];
+        k->depth = p[CP_DEPTH];
         k->g1 = o1;
         k->g2 = o2;
         k->side1 = k->side2 = -1;
     }
+    if (deepest < clear) out->depth = clear;   // contact 0, the deepest point
     return kept;
 }
 
