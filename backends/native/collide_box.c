@@ -307,9 +307,11 @@ typedef struct box_face {
 } box_face;
 
 // The incident box's face most against nf, clipped to the reference face's
-// rectangle (in the frame U1, U2, relative to pr): the clipped polygon is
-// written to a (at most 16 points, room for 17), its count returned.
-BOX_INLINE int box_clip_incident(const box_face *f, clip_point a[17])
+// rectangle (in the frame U1, U2, relative to pr): the clipped polygon (at
+// most 16 points) is left in a or b (room for 17 each), which is returned,
+// its count in *count.
+BOX_INLINE clip_point *box_clip_incident(const box_face *f, clip_point a[17], clip_point b[17],
+                                         int *count)
 {
     const dReal *hi = f->hi;
     box_v4 Cx = f->Cx, Cy = f->Cy, Cz = f->Cz;
@@ -331,7 +333,7 @@ BOX_INLINE int box_clip_incident(const box_face *f, clip_point a[17])
     a[3] = cu - v;
     for (int k = 0; k < 4; k++) a[k][CP_DEPTH] = f->hk - a[k][CP_DEPTH];
     clip_rect r = { { 1, -1, 1, -1 }, { f->h1, f->h1, f->h2, f->h2 } };
-    clip_point b[17], *cur = a, *spare = b;
+    clip_point *cur = a, *spare = b;
     box_v4 off_a[17], off_b[17], *cur_off = off_a, *spare_off = off_b;
     box_b4 outside = { 0, 0, 0, 0 };
     for (int k = 0; k < 4; k++) {
@@ -339,6 +341,7 @@ BOX_INLINE int box_clip_incident(const box_face *f, clip_point a[17])
         outside |= outside_of(off_a[k]);
     }
     int n = 4;
+#pragma GCC unroll 4
     for (int s = 0; s < 4; s++) {   // a line every point is inside of cuts nothing
         if (!outside[s]) continue;
         n = clip_side(&r, cur, cur_off, n, s, spare, spare_off, &outside);
@@ -349,9 +352,8 @@ BOX_INLINE int box_clip_incident(const box_face *f, clip_point a[17])
         cur_off = spare_off;
         spare_off = u;
     }
-    if (cur != a)
-        for (int k = 0; k < n; k++) a[k] = cur[k];
-    return n;
+    *count = n;
+    return cur;
 }
 
 // Keep (in place) the clipped points below the reference face whose line
@@ -523,8 +525,9 @@ BOX_INLINE int box_face_contacts(const box_face *f, const dReal normal[3], const
                              int skip)
 {
     const dReal *pr = f->pr, *pi = f->pi;
-    clip_point a[17];
-    int n = box_clip_incident(f, a);
+    clip_point buf[2][17], *a;
+    int n;
+    a = box_clip_incident(f, buf[0], buf[1], &n);
     box_v4 prv = v4_of3(pr[0], pr[1], pr[2]);
     box_v4 rel = v4_of3(pr[0] - pi[0], pr[1] - pi[1], pr[2] - pi[2]);
     int kept = box_keep_overlapping(f, a, n, rel);
