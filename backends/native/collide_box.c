@@ -481,7 +481,7 @@ BOX_INLINE box_v4 v4_less(box_v4 t, box_v4 best)
 // each the scalar exit to the bit; the least is that of the axes taken in
 // order, but for the sign of a zero, which the first zero in axis order
 // gives.
-BOX_CLONES static dReal box_clearance(const box_axes *ax)
+BOX_INLINE dReal box_clearance(const box_axes *ax)
 {
     const dReal *nl = ax->nl, (*Rm)[4] = ax->Rm, *over = ax->over, *proj = ax->proj;
     box_v4 r[3] = { v4_load(Rm[0]), v4_load(Rm[1]), v4_load(Rm[2]) };
