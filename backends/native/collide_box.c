@@ -170,13 +170,16 @@ BOX_INLINE box_b4 outside_of(box_v4 off)
 BOX_INLINE void clip_edge(const clip_rect *r, const clip_point *p, const box_v4 *po, dReal dp,
                           dReal dq, clip_point **o, box_v4 **oo, box_b4 *mask, int room)
 {
+    int cross;
     if (dp <= 0) {
         *(*o)++ = *p;
         *(*oo)++ = *po;
         *mask |= outside_of(*po);
-        room--;
+        cross = room > 1 && dp < 0 && dq > 0;
+    } else {
+        cross = room > 0 && dp > 0 && dq < 0;
     }
-    if (room > 0 && ((dp < 0 && dq > 0) || (dp > 0 && dq < 0))) {
+    if (cross) {
         dReal f = dp / (dp - dq);
         clip_point c = *p + f * (p[1] - *p);   // x, y, depth (t: unset)
         box_v4 co = side_offsets(r, c);
@@ -431,7 +434,7 @@ BOX_INLINE int box_keep_overlapping(const box_face *f, clip_point *a, int n, box
 // What box_clearance needs: the contact normal in box 1's frame (nl), and
 // box_box's Rm, overlaps and projections (room for 16: fours are read).
 typedef struct box_axes {
-    dReal nl[3];
+    dReal nl[4];   // the fourth lane not looked at
     const dReal (*Rm)[4];
     const dReal *over, *proj;
 } box_axes;
@@ -488,7 +491,7 @@ BOX_INLINE dReal box_clearance(const box_axes *ax)
     box_v4 eps = { DX_COLLIDE_EPS, DX_COLLIDE_EPS, DX_COLLIDE_EPS, DX_COLLIDE_EPS };
     box_v4 inf = { dInfinity, dInfinity, dInfinity, dInfinity };
     box_v4 t[5];
-    t[0] = exits_along(v4_load(over), v4_load(proj), v4_of3(nl[0], nl[1], nl[2]));
+    t[0] = exits_along(v4_load(over), v4_load(proj), v4_load(nl));
     t[1] = exits_along(v4_load(over + 3), v4_load(proj + 3),
                        r[0] * nl[0] + r[1] * nl[1] + r[2] * nl[2]);
     box_v4 best = v4_less(t[1], t[0]);
@@ -879,7 +882,9 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
             f.c[1] = -(d[0] * f.U2[0] + d[1] * f.U2[1] + d[2] * f.U2[2]);
             f.c[2] = -(d[0] * f.nf[0] + d[1] * f.nf[1] + d[2] * f.nf[2]);
         }
-        dx_to_local(R1, normal, ax.nl);
+        // R1^T normal, lane i R1[i] n0 + R1[4 + i] n1 + R1[8 + i] n2 as dx_to_local
+        v4_store(ax.nl, v4_load(R1) * normal[0] + v4_load(R1 + 4) * normal[1]
+                            + v4_load(R1 + 8) * normal[2]);
         report_axis(normal, best, code, normal_out, depth_out, code_out);
         return box_face_contacts(&f, normal, &ax, code, o1, o2, max, out, skip);
     }
