@@ -167,8 +167,9 @@ BOX_INLINE box_b4 outside_of(box_v4 off)
 // the crossing if the edge crosses the line (with room for it: room is 0
 // for none). Points on the line are kept once and not duplicated by the
 // crossing test.
-BOX_INLINE void clip_edge(const clip_rect *r, const clip_point *p, const box_v4 *po, dReal dp,
-                          dReal dq, clip_point **o, box_v4 **oo, box_b4 *mask, int room)
+BOX_INLINE void clip_edge(const clip_rect *r, const clip_point *p, const clip_point *q,
+                          const box_v4 *po, dReal dp, dReal dq, clip_point **o, box_v4 **oo,
+                          box_b4 *mask, int room)
 {
     int cross;
     if (dp <= 0) {
@@ -181,7 +182,7 @@ BOX_INLINE void clip_edge(const clip_rect *r, const clip_point *p, const box_v4 
     }
     if (cross) {
         dReal f = dp / (dp - dq);
-        clip_point c = *p + f * (p[1] - *p);   // x, y, depth (t: unset)
+        clip_point c = *p + f * (*q - *p);   // x, y, depth (t: unset)
         box_v4 co = side_offsets(r, c);
         *(*o)++ = c;
         *(*oo)++ = co;
@@ -189,25 +190,28 @@ BOX_INLINE void clip_edge(const clip_rect *r, const clip_point *p, const box_v4 
     }
 }
 
-// Clip poly (n points, their offsets off; room for n + 1) by line s into
-// out and out_off; returns the new count (at most n + 1 for a convex
-// polygon, capped at 16) and sets *outside to the new points' outside_of
-// ored. Each point adds at most two, so up to 8 points need no cap.
-BOX_INLINE int clip_side(const clip_rect *r, clip_point *poly, box_v4 *off, int n, int s,
-                         clip_point *out, box_v4 *out_off, box_b4 *outside)
+// Clip poly (n points, their offsets off) by line s into out and out_off;
+// returns the new count (at most n + 1 for a convex polygon, capped at 16)
+// and sets *outside to the new points' outside_of ored. Each point adds at
+// most two, so up to 8 points need no cap. The closing edge comes last.
+BOX_INLINE int clip_side(const clip_rect *r, const clip_point *poly, const box_v4 *off, int n,
+                         int s, clip_point *out, box_v4 *out_off, box_b4 *outside)
 {
-    poly[n] = poly[0];   // the closing edge without a wrap-around index
-    off[n] = off[0];
     box_b4 mask = { 0, 0, 0, 0 };
     clip_point *o = out;
     box_v4 *oo = out_off;
     if (n <= 8) {
-        for (int i = 0; i < n; i++)
-            clip_edge(r, &poly[i], &off[i], off[i][s], off[i + 1][s], &o, &oo, &mask, 2);
+        for (int i = 0; i < n - 1; i++)
+            clip_edge(r, &poly[i], &poly[i + 1], &off[i], off[i][s], off[i + 1][s], &o, &oo,
+                      &mask, 2);
+        clip_edge(r, &poly[n - 1], &poly[0], &off[n - 1], off[n - 1][s], off[0][s], &o, &oo,
+                  &mask, 2);
     } else {
-        for (int i = 0; i < n && o - out < 16; i++)
-            clip_edge(r, &poly[i], &off[i], off[i][s], off[i + 1][s], &o, &oo, &mask,
+        for (int i = 0; i < n && o - out < 16; i++) {
+            int j = i + 1 < n ? i + 1 : 0;
+            clip_edge(r, &poly[i], &poly[j], &off[i], off[i][s], off[j][s], &o, &oo, &mask,
                       (int)(16 - (o - out)));
+        }
     }
     *outside = mask;
     return (int)(o - out);
@@ -311,9 +315,9 @@ typedef struct box_face {
 
 // The incident box's face most against nf, clipped to the reference face's
 // rectangle (in the frame U1, U2, relative to pr): the clipped polygon (at
-// most 16 points) is left in a or b (room for 17 each), which is returned,
+// most 16 points) is left in a or b (room for 16 each), which is returned,
 // its count in *count.
-BOX_INLINE clip_point *box_clip_incident(const box_face *f, clip_point a[17], clip_point b[17],
+BOX_INLINE clip_point *box_clip_incident(const box_face *f, clip_point a[16], clip_point b[16],
                                          int *count)
 {
     const dReal *hi = f->hi;
@@ -337,7 +341,7 @@ BOX_INLINE clip_point *box_clip_incident(const box_face *f, clip_point a[17], cl
     for (int k = 0; k < 4; k++) a[k][CP_DEPTH] = f->hk - a[k][CP_DEPTH];
     clip_rect r = { { 1, -1, 1, -1 }, { f->h1, f->h1, f->h2, f->h2 } };
     clip_point *cur = a, *spare = b;
-    box_v4 off_a[17], off_b[17], *cur_off = off_a, *spare_off = off_b;
+    box_v4 off_a[16], off_b[16], *cur_off = off_a, *spare_off = off_b;
     box_b4 outside = { 0, 0, 0, 0 };
     for (int k = 0; k < 4; k++) {
         off_a[k] = side_offsets(&r, a[k]);
@@ -528,7 +532,7 @@ BOX_INLINE int box_face_contacts(const box_face *f, const dReal normal[3], const
                              int skip)
 {
     const dReal *pr = f->pr, *pi = f->pi;
-    clip_point buf[2][17], *a;
+    clip_point buf[2][16], *a;
     int n;
     a = box_clip_incident(f, buf[0], buf[1], &n);
     box_v4 prv = v4_of3(pr[0], pr[1], pr[2]);
