@@ -17,9 +17,9 @@
 // axis' by this factor: face contacts give a stable polygon, so they are
 // preferred when the two are about as deep.
 #define BOX_EDGE_PREFERENCE ((dReal)1.05)
-// The shortcuts of box_keep_overlapping and box_clearance trust a bound
-// when it clears the rounding by this much, relative to the sizes (for
-// rotations: matrix entries of at most 1.25).
+// box_keep_overlapping's shortcut trusts a bound when it clears the
+// rounding by this much, relative to the sizes (for rotations: matrix
+// entries of at most 1.25).
 #ifdef dSINGLE
 #define BOX_EXIT_MARGIN ((dReal)1e-4)
 #else
@@ -42,9 +42,10 @@
 // arguments (a side, an axis pair) so that their indices fold away.
 #define BOX_INLINE static inline __attribute__((always_inline))
 
-// The collider's entry points are built twice where the compiler can pick a
-// version when the library is loaded (GNU ifunc: x86-64, ELF, glibc): for
-// AVX2 (one operation per four numbers below) and for the baseline.
+// The collider's entry points (everything else inlined in them) are built
+// twice where the compiler can pick a version when the library is loaded
+// (GNU ifunc: x86-64, ELF, glibc): for AVX2 (one operation per four numbers
+// below) and for the baseline.
 // (-DBOX_CLONES= builds the baseline alone, to check it.) Clang (14)
 // refuses the fours passed between the inlined functions of the baseline
 // clone ("AVX vector argument ... changes the ABI", an error there), so it
