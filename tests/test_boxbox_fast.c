@@ -2,7 +2,7 @@
 //
 // test_boxbox_fast.c -- the box-box collider's fast paths (unrolled axes,
 // the edge axes' bound, the rectangle clipper, the exits' bounds, the
-// clearance's bounds) against the plain collider of boxbox_slow.h: over
+// clearance in fours) against the plain collider of boxbox_slow.h: over
 // random poses, resting stacks (aligned, slightly tilted, turned by right
 // angles, one box across two), crossed edges and deep overlaps, in both
 // orders, through dBoxBox and through dCollide (twice, so the remembered
