@@ -2,12 +2,13 @@
 //
 // test_boxbox_fast.c -- the box-box collider's fast paths (unrolled axes,
 // the edge axes' bound, the rectangle clipper, the exits' bounds, the
-// clearance's bounds) against the plain collider of boxbox_slow.h: over
+// clearance in fours) against the plain collider of boxbox_slow.h: over
 // random poses, resting stacks (aligned, slightly tilted, turned by right
 // angles, one box across two), crossed edges and deep overlaps, in both
 // orders, through dBoxBox and through dCollide (twice, so the remembered
-// axis is used), for every contact count, and dBoxBox with any matrices and
-// sides; the contacts must be the same to the bit.
+// axis is used), for every contact count, dBoxBox with any matrices and
+// sides, and poses within rounding of the ties between axes; the contacts
+// must be the same to the bit.
 
 #include "boxbox_slow.h"
 #include "test.h"
@@ -374,10 +375,113 @@ static int test_any_matrix(void)
     return 0;
 }
 
+// dBoxBox's axis (its return code) for pose ps, box 0 against box 1.
+static int axis_code(const pose *ps)
+{
+    dContactGeom c[8];
+    dVector3 n;
+    dReal depth;
+    int code = 0;
+    dBoxBox(ps->p[0], ps->R[0], ps->side[0], ps->p[1], ps->R[1], ps->side[1], n, &depth, &code, 8,
+            c, sizeof(dContactGeom));
+    return code;
+}
+
+// Box 1 of pose a moved to u of the way to its place in pose b (position
+// and rotation entries blended: not a rotation in between, which dBoxBox
+// takes as it comes, and the geoms clean).
+static void blend(const pose *a, const pose *b, double u, pose *out)
+{
+    *out = *a;
+    for (int i = 0; i < 3; i++)
+        out->p[1][i] = (dReal)((1 - u) * (double)a->p[1][i] + u * (double)b->p[1][i]);
+    for (int i = 0; i < 12; i++)
+        out->R[1][i] = (dReal)((1 - u) * (double)a->R[1][i] + u * (double)b->R[1][i]);
+}
+
+// Near the ties: where the chosen axis changes along a path between two
+// poses (one face axis to another, a face to an edge axis past the edge
+// preference, touching to apart), found by bisection to the last bit of
+// the path parameter; every pose of the bisection's last 24 steps (within
+// 2^-30 of the change, many within rounding of it) is checked in both
+// orders and through the geoms. Paths: box 1 slid or turned by tiny angles
+// about the axes on a resting box, turned near 45 degrees across an edge,
+// and between random poses.
+static int test_near_ties(void)
+{
+    tally t = { 0 };
+    int changes = 0, face_edge = 0, face_face = 0;
+    for (int it = 0; it < 600; it++) {
+        pose a, b;
+        random_sides(a.side[0], 0.3, 1.5);
+        random_sides(a.side[1], 0.3, 1.5);
+        int kind = it % 3;
+        if (kind == 0) {   // resting, turned by up to 1e-6 about an axis, slid
+            double u[3] = { 0, 0, 0 };
+            u[it / 3 % 3] = 1;
+            right_angles(a.R[0], 2, 0);
+            rotation(a.R[1], u, rnd(-1e-6, 1e-6));
+            set_vec(a.p[0], 0, 0, 0);
+            double h = 0.5 * (double)(a.side[0][2] + a.side[1][2]);
+            set_vec(a.p[1], rnd(-0.3, 0.3), rnd(-0.3, 0.3), h - rnd(1e-4, 1e-2));
+            b = a;
+            rotation(b.R[1], u, rnd(-1e-6, 1e-6));
+            set_vec(b.p[1], (double)a.p[1][0] + rnd(-0.5, 0.5) * (double)a.side[0][0],
+                    (double)a.p[1][1], (double)a.p[1][2] + rnd(-0.02, 0.005));
+        } else if (kind == 1) {   // an edge across an edge, turned about 45 degrees
+            double ux[3] = { 1, 0, 0 }, uz[3] = { 0, 0, 1 };
+            dMatrix3 A, B;
+            right_angles(a.R[0], 2, 0);
+            rotation(B, uz, rnd(-M_PI, M_PI));
+            rotation(A, ux, M_PI / 4 + rnd(-0.3, 0.3));
+            mul(a.R[1], B, A);
+            set_vec(a.p[0], 0, 0, 0);
+            double lift = 0.5 * (double)a.side[0][2] +
+                          0.5 * sqrt((double)(a.side[1][1] * a.side[1][1] +
+                                              a.side[1][2] * a.side[1][2])) * rnd(0.7, 0.95);
+            set_vec(a.p[1], rnd(-0.6, 0.6) * (double)a.side[0][0],
+                    rnd(-0.6, 0.6) * (double)a.side[0][1], lift);
+            b = a;
+            rotation(A, ux, M_PI / 4 + rnd(-0.3, 0.3));
+            mul(b.R[1], B, A);
+            set_vec(b.p[1], rnd(-0.6, 0.6) * (double)a.side[0][0],
+                    rnd(-0.6, 0.6) * (double)a.side[0][1], lift * rnd(0.9, 1.2));
+        } else {   // random poses in reach of each other
+            random_rotation(a.R[0]);
+            random_rotation(a.R[1]);
+            set_vec(a.p[0], 0, 0, 0);
+            set_vec(a.p[1], rnd(-0.8, 0.8), rnd(-0.8, 0.8), rnd(-0.8, 0.8));
+            b = a;
+            random_rotation(b.R[1]);
+            set_vec(b.p[1], rnd(-0.8, 0.8), rnd(-0.8, 0.8), rnd(-0.8, 0.8));
+        }
+        int c0 = axis_code(&a), c1 = axis_code(&b);
+        if (c0 == c1) continue;
+        changes++;
+        if ((c0 >= 7) != (c1 >= 7) && c0 > 0 && c1 > 0) face_edge++;
+        if (c0 > 0 && c1 > 0 && c0 < 7 && c1 < 7) face_face++;
+        double lo = 0, hi = 1;
+        for (int step = 0; step < 54; step++) {
+            double mid = 0.5 * (lo + hi);
+            pose m;
+            blend(&a, &b, mid, &m);
+            if (axis_code(&m) == c0) lo = mid;
+            else hi = mid;
+            if (step >= 30 && check_pose(&m, &t, 1)) return 1;
+        }
+    }
+    printf("# near ties: %d changes of axis (%d face to edge, %d face to face), %d pairs, %d "
+           "touching (%d face, %d edge)\n", changes, face_edge, face_face, t.pairs, t.touching,
+           t.face, t.edge);
+    CHECK(face_edge > 30 && face_face > 30 && t.touching > 2000);
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_random_poses),
     TEST_CASE(test_resting_stacks),
     TEST_CASE(test_crossed_and_deep),
     TEST_CASE(test_any_matrix),
+    TEST_CASE(test_near_ties),
     TEST_END,
 };

@@ -17,9 +17,9 @@
 // axis' by this factor: face contacts give a stable polygon, so they are
 // preferred when the two are about as deep.
 #define BOX_EDGE_PREFERENCE ((dReal)1.05)
-// The shortcuts of box_keep_overlapping and box_clearance trust a bound
-// when it clears the rounding by this much, relative to the sizes (for
-// rotations: matrix entries of at most 1.25).
+// box_keep_overlapping's shortcut trusts a bound when it clears the
+// rounding by this much, relative to the sizes (for rotations: matrix
+// entries of at most 1.25).
 #ifdef dSINGLE
 #define BOX_EXIT_MARGIN ((dReal)1e-4)
 #else
@@ -42,9 +42,10 @@
 // arguments (a side, an axis pair) so that their indices fold away.
 #define BOX_INLINE static inline __attribute__((always_inline))
 
-// The collider's entry points are built twice where the compiler can pick a
-// version when the library is loaded (GNU ifunc: x86-64, ELF, glibc): for
-// AVX2 (one operation per four numbers below) and for the baseline.
+// The collider's entry points (everything else inlined in them) are built
+// twice where the compiler can pick a version when the library is loaded
+// (GNU ifunc: x86-64, ELF, glibc): for AVX2 (one operation per four numbers
+// below) and for the baseline.
 // (-DBOX_CLONES= builds the baseline alone, to check it.) Clang (14)
 // refuses the fours passed between the inlined functions of the baseline
 // clone ("AVX vector argument ... changes the ABI", an error there), so it
@@ -92,18 +93,23 @@ BOX_INLINE box_v4 v4_abs(box_v4 v)
     return v;
 }
 
-// (x, y, z, 0): the fourth lane cleared with a mask, not inserted (GCC
-// inserts a 0 with a vmovq between registers that Valgrind 3.19, the
-// instruction counts' tool, cannot run).
-BOX_INLINE box_v4 v4_of3(dReal x, dReal y, dReal z)
+// v with its fourth lane 0: cleared with a mask, not inserted (GCC inserts
+// a 0 with a vmovq between registers that Valgrind 3.19, the instruction
+// counts' tool, cannot run).
+BOX_INLINE box_v4 v4_clear3(box_v4 v)
 {
     static const box_b4 keep3 = { -1, -1, -1, 0 };
-    box_v4 v = { x, y, z, z };
     box_b4 bits;
     memcpy(&bits, &v, sizeof v);
     bits &= keep3;
     memcpy(&v, &bits, sizeof v);
     return v;
+}
+
+// (x, y, z, 0).
+BOX_INLINE box_v4 v4_of3(dReal x, dReal y, dReal z)
+{
+    return v4_clear3((box_v4){ x, y, z, z });
 }
 
 // Lane by lane, a where mask (all bits set) else b.
@@ -162,18 +168,22 @@ BOX_INLINE box_b4 outside_of(box_v4 off)
 // the crossing if the edge crosses the line (with room for it: room is 0
 // for none). Points on the line are kept once and not duplicated by the
 // crossing test.
-BOX_INLINE void clip_edge(const clip_rect *r, const clip_point *p, const box_v4 *po, dReal dp,
-                          dReal dq, clip_point **o, box_v4 **oo, box_b4 *mask, int room)
+BOX_INLINE void clip_edge(const clip_rect *r, const clip_point *p, const clip_point *q,
+                          const box_v4 *po, dReal dp, dReal dq, clip_point **o, box_v4 **oo,
+                          box_b4 *mask, int room)
 {
+    int cross;
     if (dp <= 0) {
         *(*o)++ = *p;
         *(*oo)++ = *po;
         *mask |= outside_of(*po);
-        room--;
+        cross = room > 1 && dp < 0 && dq > 0;
+    } else {
+        cross = room > 0 && dp > 0 && dq < 0;
     }
-    if (room > 0 && ((dp < 0 && dq > 0) || (dp > 0 && dq < 0))) {
+    if (cross) {
         dReal f = dp / (dp - dq);
-        clip_point c = *p + f * (p[1] - *p);   // x, y, depth (t: unset)
+        clip_point c = *p + f * (*q - *p);   // x, y, depth (t: unset)
         box_v4 co = side_offsets(r, c);
         *(*o)++ = c;
         *(*oo)++ = co;
@@ -181,25 +191,28 @@ BOX_INLINE void clip_edge(const clip_rect *r, const clip_point *p, const box_v4 
     }
 }
 
-// Clip poly (n points, their offsets off; room for n + 1) by line s into
-// out and out_off; returns the new count (at most n + 1 for a convex
-// polygon, capped at 16) and sets *outside to the new points' outside_of
-// ored. Each point adds at most two, so up to 8 points need no cap.
-BOX_INLINE int clip_side(const clip_rect *r, clip_point *poly, box_v4 *off, int n, int s,
-                         clip_point *out, box_v4 *out_off, box_b4 *outside)
+// Clip poly (n points, their offsets off) by line s into out and out_off;
+// returns the new count (at most n + 1 for a convex polygon, capped at 16)
+// and sets *outside to the new points' outside_of ored. Each point adds at
+// most two, so up to 8 points need no cap. The closing edge comes last.
+BOX_INLINE int clip_side(const clip_rect *r, const clip_point *poly, const box_v4 *off, int n,
+                         int s, clip_point *out, box_v4 *out_off, box_b4 *outside)
 {
-    poly[n] = poly[0];   // the closing edge without a wrap-around index
-    off[n] = off[0];
     box_b4 mask = { 0, 0, 0, 0 };
     clip_point *o = out;
     box_v4 *oo = out_off;
     if (n <= 8) {
-        for (int i = 0; i < n; i++)
-            clip_edge(r, &poly[i], &off[i], off[i][s], off[i + 1][s], &o, &oo, &mask, 2);
+        for (int i = 0; i < n - 1; i++)
+            clip_edge(r, &poly[i], &poly[i + 1], &off[i], off[i][s], off[i + 1][s], &o, &oo,
+                      &mask, 2);
+        clip_edge(r, &poly[n - 1], &poly[0], &off[n - 1], off[n - 1][s], off[0][s], &o, &oo,
+                  &mask, 2);
     } else {
-        for (int i = 0; i < n && o - out < 16; i++)
-            clip_edge(r, &poly[i], &off[i], off[i][s], off[i + 1][s], &o, &oo, &mask,
+        for (int i = 0; i < n && o - out < 16; i++) {
+            int j = i + 1 < n ? i + 1 : 0;
+            clip_edge(r, &poly[i], &poly[j], &off[i], off[i][s], off[j][s], &o, &oo, &mask,
                       (int)(16 - (o - out)));
+        }
     }
     *outside = mask;
     return (int)(o - out);
@@ -302,9 +315,11 @@ typedef struct box_face {
 } box_face;
 
 // The incident box's face most against nf, clipped to the reference face's
-// rectangle (in the frame U1, U2, relative to pr): the clipped polygon is
-// written to a (at most 16 points, room for 17), its count returned.
-BOX_INLINE int box_clip_incident(const box_face *f, clip_point a[17])
+// rectangle (in the frame U1, U2, relative to pr): the clipped polygon (at
+// most 16 points) is left in a or b (room for 16 each), which is returned,
+// its count in *count.
+BOX_INLINE clip_point *box_clip_incident(const box_face *f, clip_point a[16], clip_point b[16],
+                                         int *count)
 {
     const dReal *hi = f->hi;
     box_v4 Cx = f->Cx, Cy = f->Cy, Cz = f->Cz;
@@ -326,14 +341,15 @@ BOX_INLINE int box_clip_incident(const box_face *f, clip_point a[17])
     a[3] = cu - v;
     for (int k = 0; k < 4; k++) a[k][CP_DEPTH] = f->hk - a[k][CP_DEPTH];
     clip_rect r = { { 1, -1, 1, -1 }, { f->h1, f->h1, f->h2, f->h2 } };
-    clip_point b[17], *cur = a, *spare = b;
-    box_v4 off_a[17], off_b[17], *cur_off = off_a, *spare_off = off_b;
+    clip_point *cur = a, *spare = b;
+    box_v4 off_a[16], off_b[16], *cur_off = off_a, *spare_off = off_b;
     box_b4 outside = { 0, 0, 0, 0 };
     for (int k = 0; k < 4; k++) {
         off_a[k] = side_offsets(&r, a[k]);
         outside |= outside_of(off_a[k]);
     }
     int n = 4;
+#pragma GCC unroll 4
     for (int s = 0; s < 4; s++) {   // a line every point is inside of cuts nothing
         if (!outside[s]) continue;
         n = clip_side(&r, cur, cur_off, n, s, spare, spare_off, &outside);
@@ -344,9 +360,8 @@ BOX_INLINE int box_clip_incident(const box_face *f, clip_point a[17])
         cur_off = spare_off;
         spare_off = u;
     }
-    if (cur != a)
-        for (int k = 0; k < n; k++) a[k] = cur[k];
-    return n;
+    *count = n;
+    return cur;
 }
 
 // Keep (in place) the clipped points below the reference face whose line
@@ -386,7 +401,6 @@ BOX_INLINE int box_keep_overlapping(const box_face *f, clip_point *a, int n, box
                  & ~(g0 - v4_abs(gx) * X - v4_abs(gy) * Y > 2 * margins);
     box_v4 face = v4_select(act, v4_select(up, hiv, -hiv), inf);
     box_v4 dot = v4_select(act, Cz, one);
-    int na = (int)((act[0] | act[1] | act[2]) & 1);
     box_v4 ri0 = v4_load(Ri), ri1 = v4_load(Ri + 4), ri2 = v4_load(Ri + 8);
     int kept = 0, deepest = 0;
     for (int i = 0; i < n; i++) {
@@ -394,10 +408,14 @@ BOX_INLINE int box_keep_overlapping(const box_face *f, clip_point *a, int n, box
         dReal depth = p[CP_DEPTH];
         if (depth < 0) continue;
         dReal x = p[CP_X], y = p[CP_Y], exit = dInfinity;
-        if (na) {   // t_m where g_m > margin replaced by inf
+        // t_m where g_m > margin replaced by inf; when that leaves no active
+        // axis, every t_m is inf (the inactive ones' (inf - finite) / 1: a
+        // finite margin means finite sizes) and none is computed.
+        box_b4 far = g0 + x * gx + y * gy > margins, need = act & ~far;
+        if (need[0] | need[1] | need[2]) {
             box_v4 q = rel + x * f->U1 + y * f->U2 + (hk - depth) * f->nf;
             box_v4 t = (face - (ri0 * q[0] + ri1 * q[1] + ri2 * q[2])) / dot;
-            t = v4_select(g0 + x * gx + y * gy > margins, inf, t);
+            t = v4_select(far, inf, t);
             for (int m = 0; m < 3; m++)
                 if (t[m] < exit) exit = t[m];
         }
@@ -419,13 +437,11 @@ BOX_INLINE int box_keep_overlapping(const box_face *f, clip_point *a, int n, box
 }
 
 // What box_clearance needs: the contact normal in box 1's frame (nl), and
-// box_box's Rm, overlaps and projections, T and half sides a, b; rotations
-// whether every |Rm_ij| <= 1.25 (as for rotations).
+// box_box's Rm, overlaps and projections (room for 16: fours are read).
 typedef struct box_axes {
-    dReal nl[3];
+    dReal nl[4];   // the fourth lane not looked at
     const dReal (*Rm)[4];
-    const dReal *over, *proj, *T, *a, *b;
-    int rotations;
+    const dReal *over, *proj;
 } box_axes;
 
 // The ray's exit through the faces of axis x, whose direction has s = m . n
@@ -444,57 +460,62 @@ BOX_INLINE dReal face_dot(const box_axes *ax, int x)
     return x < 3 ? nl[x] : Rm[0][x - 3] * nl[0] + Rm[1][x - 3] * nl[1] + Rm[2][x - 3] * nl[2];
 }
 
+// exit_along for the axes of four lanes (their overlaps, projections and
+// s = m . n), each lane the scalar formula's operations in their order.
+BOX_INLINE box_v4 exits_along(box_v4 over, box_v4 proj, box_v4 s)
+{
+    box_v4 zero = { 0, 0, 0, 0 }, inf = { dInfinity, dInfinity, dInfinity, dInfinity };
+    box_v4 t = (v4_select(s > zero, proj, -proj) + (over + v4_abs(proj))) / v4_abs(s);
+    return v4_select(s == zero, inf, t);
+}
+
+// Lane by lane the lesser of t and best, best kept on ties and where t is
+// NaN (as "if (t < best) best = t").
+BOX_INLINE box_v4 v4_less(box_v4 t, box_v4 best)
+{
+    return v4_select(t < best, t, best);
+}
+
 // How far box 1 must move along the unit normal (nl, in box 1's frame) to
 // clear box 2: box 1 moved by t n meets box 2 while t n lies in the
 // Minkowski difference box 2 - box 1, whose faces are normal to the 15
 // axes m; the ray t n leaves it at the least h(m) / (m . n) over the axes
 // facing n, h(m) = m . (p2 - p1) + radius1(m) + radius2(m) its support. The
-// ratio does not depend on the length of m, so axes stay unnormalised.
+// ratio does not depend on the length of m, so axes stay unnormalised;
+// edge axes of (nearly) parallel edges are left out.
 //
-// known is the exit along face axis known_axis (dInfinity and -1 if none):
-// that axis is not looked at again. h(m) is the overlap
-// along m plus 0 or 2 |m . (p2 - p1)|, and |m . n| <= 4 max|nl_i| for
-// every axis when the |Rm_ij| are at most 1.25: an axis whose overlap
-// exceeds 4 known max|nl_i| (plus the rounding of h, cut) exits later than
-// known and is not looked at. So is an edge axis e_i x Rm[.][j] whose
-// overlap exceeds 2 known max|nl_i| (|Rm_i1j| + |Rm_i2j|) (plus rounding),
-// a bound on its |m . n| that is small for (nearly) parallel edges. The
-// least exit is the same.
-static dReal box_clearance(const box_axes *ax, dReal known, int known_axis)
+// The 15 exits are lanes of five fours (axes 0-2, 3-5, 6-8, 9-11, 12-14:
+// over and proj read four at a time, the fourth lane never looked at),
+// each the scalar exit to the bit; the least is that of the axes taken in
+// order, but for the sign of a zero, which the first zero in axis order
+// gives.
+BOX_INLINE dReal box_clearance(const box_axes *ax)
 {
-    const dReal *nl = ax->nl, (*Rm)[4] = ax->Rm, *over = ax->over;
-    dReal best = known, cut = dInfinity, rounding = 0, per_q = dInfinity;
-    if (ax->rotations && known < dInfinity) {
-        const dReal *T = ax->T, *a = ax->a, *b = ax->b;
-        dReal N = dFabs(nl[0]) > dFabs(nl[1]) ? dFabs(nl[0]) : dFabs(nl[1]);
-        if (dFabs(nl[2]) > N) N = dFabs(nl[2]);
-        dReal size = dFabs(T[0]) + dFabs(T[1]) + dFabs(T[2]) + a[0] + a[1] + a[2] + b[0] + b[1]
-                     + b[2];
-        rounding = 4 * BOX_EXIT_MARGIN * size;
-        cut = 4 * N * known + rounding;
-        per_q = 2 * N * known;
-    }
-#pragma GCC unroll 6
-    for (int x = 0; x < 6; x++) {
-        if (x == known_axis || over[x] > cut) continue;
-        dReal t = exit_along(ax, x, face_dot(ax, x));
-        if (t < best) best = t;
-    }
+    const dReal *nl = ax->nl, (*Rm)[4] = ax->Rm, *over = ax->over, *proj = ax->proj;
+    box_v4 r[3] = { v4_load(Rm[0]), v4_load(Rm[1]), v4_load(Rm[2]) };
+    box_v4 eps = { DX_COLLIDE_EPS, DX_COLLIDE_EPS, DX_COLLIDE_EPS, DX_COLLIDE_EPS };
+    box_v4 inf = { dInfinity, dInfinity, dInfinity, dInfinity };
+    box_v4 t[5];
+    t[0] = exits_along(v4_load(over), v4_load(proj), v4_load(nl));
+    t[1] = exits_along(v4_load(over + 3), v4_load(proj + 3),
+                       r[0] * nl[0] + r[1] * nl[1] + r[2] * nl[2]);
+    box_v4 best = v4_less(t[1], t[0]);
 #pragma GCC unroll 3
     for (int i = 0; i < 3; i++) {
         int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
-#pragma GCC unroll 3
-        for (int j = 0; j < 3; j++) {
-            int x = 6 + 3 * i + j;
-            if (over[x] > cut) continue;
-            if (over[x] - rounding > per_q * (dFabs(Rm[i1][j]) + dFabs(Rm[i2][j]))) continue;
-            if (Rm[i1][j] * Rm[i1][j] + Rm[i2][j] * Rm[i2][j] <= DX_COLLIDE_EPS) continue;
-            dReal s = Rm[i1][j] * nl[i2] - Rm[i2][j] * nl[i1];   // (e_i x Rm[.][j]) . n
-            dReal t = exit_along(ax, x, s);
-            if (t < best) best = t;
-        }
+        box_v4 s = r[i1] * nl[i2] - r[i2] * nl[i1];   // (e_i x Rm[.][j]) . n
+        box_v4 len2 = r[i1] * r[i1] + r[i2] * r[i2];
+        t[2 + i] = v4_select(len2 <= eps, inf,
+                             exits_along(v4_load(over + 6 + 3 * i), v4_load(proj + 6 + 3 * i), s));
+        best = v4_less(t[2 + i], best);
     }
-    return best;
+    dReal least = best[0];
+    if (best[1] < least) least = best[1];
+    if (best[2] < least) least = best[2];
+    if (least == 0)
+        for (int x = 0; x < 15; x++)
+            if (t[x / 3][x % 3] == 0) return t[x / 3][x % 3];
+    return least;
 }
 
 // The face case (see box_clip_incident): the kept points are the contacts,
@@ -507,25 +528,26 @@ static dReal box_clearance(const box_axes *ax, dReal known, int known_axis)
 // through the faces of the contact's own axis (code), so when the deepest
 // point reaches that, the full clearance is not needed. normal is the
 // contact normal (into o1).
-BOX_CLONES static int box_face_contacts(const box_face *f, const dReal normal[3], const box_axes *ax,
+BOX_INLINE int box_face_contacts(const box_face *f, const dReal normal[3], const box_axes *ax,
                              int code, dxGeom *o1, dxGeom *o2, int max, dContactGeom *out,
                              int skip)
 {
     const dReal *pr = f->pr, *pi = f->pi;
-    clip_point a[17];
-    int n = box_clip_incident(f, a);
+    clip_point buf[2][16], *a;
+    int n;
+    a = box_clip_incident(f, buf[0], buf[1], &n);
     box_v4 prv = v4_of3(pr[0], pr[1], pr[2]);
     box_v4 rel = v4_of3(pr[0] - pi[0], pr[1] - pi[1], pr[2] - pi[2]);
     int kept = box_keep_overlapping(f, a, n, rel);
     if (kept == 0) {   // the separating axis says they overlap: find a point
         dReal pos[3];
         box_overlap_point(pr, f->Rr, f->hr, pi, f->Ri, f->hi, pos);
-        dx_put_contact(out, 0, skip, pos, normal, box_clearance(ax, dInfinity, -1), o1, o2);
+        dx_put_contact(out, 0, skip, pos, normal, box_clearance(ax), o1, o2);
         return 1;
     }
     dReal own = exit_along(ax, code, face_dot(ax, code));
     dReal deepest = a[0][CP_DEPTH];
-    dReal clear = deepest < own ? box_clearance(ax, own, code) : deepest;
+    dReal clear = deepest < own ? box_clearance(ax) : deepest;
     if (kept > max) {
         cull_points(a, kept, max);
         kept = max;
@@ -541,11 +563,12 @@ BOX_CLONES static int box_face_contacts(const box_face *f, const dReal normal[3]
         dContactGeom *k = dxContactAt(out, c, skip);
         v4_store(k->pos, pos);
         v4_store(k->normal, nv);
-        k->depth = c == 0 && deepest < clear ? clear : p[CP_DEPTH];
+        k->depth = p[CP_DEPTH];
         k->g1 = o1;
         k->g2 = o2;
         k->side1 = k->side2 = -1;
     }
+    if (deepest < clear) out->depth = clear;   // contact 0, the deepest point
     return kept;
 }
 
@@ -663,11 +686,19 @@ BOX_INLINE void box_frame(const dReal *R1, const dReal *R2, const dReal d[3], co
     for (int i = 0; i < 3; i++) {
         row[i] = R1[i] * r2[0] + R1[4 + i] * r2[1] + R1[8 + i] * r2[2];   // Rm_i.
         qrow[i] = v4_abs(row[i]);
-        box_v4 col = R2[i] * r1[0] + R2[4 + i] * r1[1] + R2[8 + i] * r1[2];   // Rm_.i
-        qcol[i] = v4_abs(col);
-        v4_store(Rc[i], col);
         v4_store(Rm[i], row[i]);
         v4_store(Q[i], qrow[i]);
+    }
+    // Rm's columns: its rows turned (column i's lane j, B_i . A_j, is the sum
+    // of the same products in the same order as row j's lane i).
+    box_v4 lo = __builtin_shufflevector(row[0], row[1], 0, 4, 2, 6);   // Rm00 Rm10 Rm02 Rm12
+    box_v4 hi = __builtin_shufflevector(row[0], row[1], 1, 5, 3, 7);   // Rm01 Rm11 Rm03 Rm13
+    box_v4 col[3] = { __builtin_shufflevector(lo, row[2], 0, 1, 4, 4),
+                      __builtin_shufflevector(hi, row[2], 0, 1, 5, 5),
+                      __builtin_shufflevector(lo, row[2], 2, 3, 6, 6) };
+    for (int i = 0; i < 3; i++) {
+        qcol[i] = v4_abs(col[i]);
+        v4_store(Rc[i], col[i]);
     }
     v4_store(T, t);
     box_v4 av = v4_load(a), bv = v4_load(b);
@@ -740,8 +771,9 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
                        int flags, dContactGeom *out, int skip, int hint, int *apart,
                        dReal normal_out[3], dReal *depth_out, int *code_out)
 {
-    const dReal a[4] = { s1[0] / 2, s1[1] / 2, s1[2] / 2, 0 };
-    const dReal b[4] = { s2[0] / 2, s2[1] / 2, s2[2] / 2, 0 };
+    dReal a[4], b[4];   // s / 2 as s * 0.5 (the same number), fourth lanes 0
+    v4_store(a, v4_clear3(v4_load(s1) * (dReal)0.5));
+    v4_store(b, v4_clear3(v4_load(s2) * (dReal)0.5));
     dReal d[3] = { p2[0] - p1[0], p2[1] - p1[1], p2[2] - p1[2] }, T[4];
     // Bounding spheres apart by more than the edge axes' slack: no axis can
     // say the boxes touch.
@@ -754,11 +786,18 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
     // edge axis' slack is <= 0 for boxes of sides >= 0: a pair apart along it
     // has an edge overlap < 0, and only then are the edges tested in turn.
     if (hint >= 0 && axis_parts(hint, over, a, b, Rm)) return apart_by(hint, apart);
-    for (int x = 0; x < 6; x++)
-        if (over[x] < 0) return apart_by(x, apart);
+    // (Touching pairs, most of them, find no negative overlap among the 15
+    // in four fours first.)
+    box_v4 zero = { 0, 0, 0, 0 };
+    box_b4 neg = (v4_load(over) < zero) | (v4_load(over + 4) < zero)
+                 | (v4_load(over + 8) < zero) | (v4_load(over + 11) < zero);
     dReal lowest = 0;
-    for (int x = 6; x < 15; x++)
-        if (over[x] < lowest) lowest = over[x];
+    if ((neg[0] | neg[1] | neg[2] | neg[3]) & 1) {
+        for (int x = 0; x < 6; x++)
+            if (over[x] < 0) return apart_by(x, apart);
+        for (int x = 6; x < 15; x++)
+            if (over[x] < lowest) lowest = over[x];
+    }
     if (lowest < 0 || (!trusted && !(a[0] >= 0 && a[1] >= 0 && a[2] >= 0 && b[0] >= 0
                                        && b[1] >= 0 && b[2] >= 0))) {
         for (int i = 0; i < 3; i++) {
@@ -808,8 +847,7 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
     if (code < 6) {
         box_face f;
         f.nf[3] = f.U1[3] = f.U2[3] = 0;
-        box_axes ax = { .Rm = Rm, .over = over, .proj = proj, .T = T, .a = a, .b = b,
-                        .rotations = rotations };
+        box_axes ax = { .Rm = Rm, .over = over, .proj = proj };
         dReal sg = proj[code] < 0 ? 1 : -1;
         if (code < 3) {   // face of box 1: normal -sign(T_k) A_k; C, c from Rm and T
             int k = code, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
@@ -849,7 +887,9 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
             f.c[1] = -(d[0] * f.U2[0] + d[1] * f.U2[1] + d[2] * f.U2[2]);
             f.c[2] = -(d[0] * f.nf[0] + d[1] * f.nf[1] + d[2] * f.nf[2]);
         }
-        dx_to_local(R1, normal, ax.nl);
+        // R1^T normal, lane i R1[i] n0 + R1[4 + i] n1 + R1[8 + i] n2 as dx_to_local
+        v4_store(ax.nl, v4_load(R1) * normal[0] + v4_load(R1 + 4) * normal[1]
+                            + v4_load(R1 + 8) * normal[2]);
         report_axis(normal, best, code, normal_out, depth_out, code_out);
         return box_face_contacts(&f, normal, &ax, code, o1, o2, max, out, skip);
     }
