@@ -208,11 +208,11 @@ QS_INLINE void inertia_lanes(const dReal *I, qc_v4 ax, qc_v4 ay, qc_v4 az, qc_v4
 // body (else its numbers are zero). The sums are pair_dot's: with p the
 // products of body 0's 6 numbers and q body 1's, the pair
 // (p0 + p2 | p1 + p3) + ((p4 + q0) + (q2 + q4) | (p5 + q1) + (q3 + q5)),
-// (one body: + (p4 | p5)), its two lanes added last.
+// (one body: + (p4 | p5)), its two lanes added last. m and two are
+// constants where the caller makes them so (the usual three rows).
 QS_INLINE void lanes_rows(const qs_input *in, const qs_cbodies *cb, const dxContactRows *r,
-                          qc_v4 sor_w, int two, qs_row *rows)
+                          qc_v4 sor_w, const int m, const int two, qs_row *rows)
 {
-    const int m = r->m;
     const size_t J = offsetof(qs_row, J), n = sizeof(dReal);
     qc_v4 d[3];   // the directions' x, y, z (the missing rows' are zero)
     qc_transpose(qc_load(r->d[0]), qc_load(r->d[1]), qc_load(r->d[2]), qc_splat(0), d);
@@ -290,53 +290,74 @@ QS_INLINE qs_v2 load_pair(const dReal *p)
     return v;
 }
 
+// a, b += li M (M: a row's six numbers for one body, li spread to the four).
+QS_INLINE void start_row(qc_v4 *a, qs_v2 *b, const qs_row *row, size_t off, qc_v4 li)
+{
+    const dReal *M = (const dReal *)((const char *)row + off);
+#if defined(__GNUC__)
+    const qs_v2 li2 = __builtin_shufflevector(li, li, 0, 1);
+#else
+    const qs_v2 li2 = qs_splat(qc_lane(li, 0));
+#endif
+    *a = qc_add(*a, qc_mul(li, qc_load(M)));
+    *b = qs_add(*b, qs_mul(li2, load_pair(M + 4)));
+}
+
 // fc += M^-1 J^T l of the body at fc for the m rows (their numbers for
-// that body at byte offset off of a row: M or M1) with l[i] nonzero, in row
-// order (warm_apply's start_row, row by row: the same sums), fc as a four
-// and a pair.
-QS_INLINE void start_body(dReal *fc, const qs_row *rows, int m, size_t off, const dReal *l)
+// that body at byte offset off of a row: M or M1) with l[i] nonzero, in
+// row order (warm_apply's start_row, row by row: the same sums), fc as a
+// four and a pair; l as a four, each spread from it.
+QS_INLINE void start_body(dReal *fc, const qs_row *rows, const int m, size_t off, qc_v4 l)
 {
     qc_v4 a = qc_load(fc);
     qs_v2 b = load_pair(fc + 4);
-    for (int i = 0; i < m; i++) {
-        if (l[i] == 0) continue;
-        const dReal *M = (const dReal *)((const char *)&rows[i] + off);
-        a = qc_add(a, qc_mul(qc_splat(l[i]), qc_load(M)));
-        b = qs_add(b, qs_mul(qs_splat(l[i]), load_pair(M + 4)));
-    }
+    if (qc_lane(l, 0) != 0) start_row(&a, &b, &rows[0], off, qc_spread(l, 0));
+    if (m > 1 && qc_lane(l, 1) != 0) start_row(&a, &b, &rows[1], off, qc_spread(l, 1));
+    if (m > 2 && qc_lane(l, 2) != 0) start_row(&a, &b, &rows[2], off, qc_spread(l, 2));
     memcpy(fc, &a, sizeof a);
     memcpy(fc + 4, &b, sizeof b);
 }
+
+// The integers of a row, from o0 to two (32 bytes: one copy of a template).
+#define QS_ROW_INTS offsetof(qs_row, o0)
+#define QS_ROW_INTS_SIZE (offsetof(qs_row, J) - offsetof(qs_row, o0))
 
 // The rows of a contact (r: m rows, lambda positions from sys->next on)
 // appended to the system, in its order, with their bounds' f: friction rows
 // bounded by the normal force (pyramid) take the normal row's lambda, the
 // others the constant 1. warm: the rows' starting forces (lambda and fc
-// then start there; the normal row is relaxed with 1), or NULL.
-QS_CONTACT_CLONES static void append_rows(const qs_input *in, const qs_cbodies *cb,
-                                          const dxContactRows *r, const dReal *warm,
-                                          qs_system *sys)
+// then start there; the normal row is relaxed with 1; four numbers, those
+// from m on unused), or NULL. m and two as in lanes_rows.
+QS_INLINE void append_rows_m(const qs_input *in, const qs_cbodies *cb, const dxContactRows *r,
+                             const dReal *warm, qs_system *sys, const int m, const int two)
 {
-    const int m = r->m, first = sys->next, one = sys->m, nrows = sys->nrows;
+    const int first = sys->next, one = sys->m, nrows = sys->nrows;
     qs_row *rows = sys->rows + nrows;
     const dReal w = in->sor_w;
     const qc_v4 sor_w = qc_make(warm ? 1 : w, w, w, w);
-    const int two = r->arm[1] != NULL;
-    if (two) lanes_rows(in, cb, r, sor_w, 1, rows);
-    else lanes_rows(in, cb, r, sor_w, 0, rows);
+    lanes_rows(in, cb, r, sor_w, m, two, rows);
+    // The integers the rows share, copied whole into each, then its own
+    // lambda position and its bound's.
+    qs_row ints;
+    ints.o0 = cb->o0;
+    ints.o1 = cb->o1;
+    ints.pos = first;
+    ints.f = one;
+    ints.g = NULL;
+    ints.gfirst = 0;
+    ints.gn = 0;
+    ints.two = (short)two;
     int *row_pos = sys->row_pos + nrows, *row_f = sys->row_f + nrows;
     int *order = sys->order + sys->norder;
+#if defined(__GNUC__)
+#pragma GCC unroll 4
+#endif
     for (int i = 0; i < m; i++) {
         qs_row *q = &rows[i];
         const int f = r->pyramid[i] ? first : one;
-        q->o0 = cb->o0;
-        q->o1 = cb->o1;
+        memcpy((char *)q + QS_ROW_INTS, (const char *)&ints + QS_ROW_INTS, QS_ROW_INTS_SIZE);
         q->pos = first + i;
         q->f = f;
-        q->g = NULL;
-        q->gfirst = 0;
-        q->gn = 0;
-        q->two = (short)two;
         row_pos[i] = first + i;
         row_f[i] = f;
         order[i] = nrows + i;
@@ -345,16 +366,33 @@ QS_CONTACT_CLONES static void append_rows(const qs_input *in, const qs_cbodies *
     sys->norder += m;
     sys->next = first + m;
     if (!warm) return;
-    for (int i = 0; i < m; i++)
-        if (warm[i] != 0) sys->lambda[first + i] = warm[i];
-    start_body(sys->fc + cb->o0, rows, m, offsetof(qs_row, M), warm);
-    if (two) start_body(sys->fc + cb->o1, rows, m, offsetof(qs_row, M1), warm);
+    // lambda is 0 there: a zero force (+-0) leaves it so, the others are
+    // stored (x + 0 is x but for -0).
+    for (int i = 0; i < m; i++) sys->lambda[first + i] = warm[i] + 0;
+    const qc_v4 l = qc_load(warm);
+    start_body(sys->fc + cb->o0, rows, m, offsetof(qs_row, M), l);
+    if (two) start_body(sys->fc + cb->o1, rows, m, offsetof(qs_row, M1), l);
+}
+
+// append_rows_m with the usual three rows made with constants (no loop, no
+// test of m), else with r->m.
+QS_CONTACT_CLONES static void append_rows(const qs_input *in, const qs_cbodies *cb,
+                                          const dxContactRows *r, const dReal *warm,
+                                          qs_system *sys)
+{
+    const int two = r->arm[1] != NULL;
+    if (r->m == 3) {
+        if (two) append_rows_m(in, cb, r, warm, sys, 3, 1);
+        else append_rows_m(in, cb, r, warm, sys, 3, 0);
+    } else {
+        if (two) append_rows_m(in, cb, r, warm, sys, r->m, 1);
+        else append_rows_m(in, cb, r, warm, sys, r->m, 0);
+    }
 }
 
 void dxQuickContact(const qs_input *in, dxJoint *j, qs_system *sys)
 {
-    dxContactRows r;
-    dxJointContactRows(j, in->fps, in->erp, &r);
+    const dxContactRows *r = dxJointContactRows(j, in->fps, in->erp);
     const struct dxBody *b0 = dxJointBody(j, 0), *b1 = dxJointBody(j, 1);
     const dxIslandBodies *bd = in->bd;
     qs_cbodies cb;
@@ -369,21 +407,21 @@ void dxQuickContact(const qs_input *in, dxJoint *j, qs_system *sys)
 
     // The warm start's lookup first: a warm normal row is relaxed with 1.
     dReal f[4];   // the friction force, then the normal force
-    if (!dxQuickWarmContactRows(sys->warm, b0, b1, &r, sys->next, f)) {
-        append_rows(in, &cb, &r, NULL, sys);
+    if (!dxQuickWarmContactRows(sys->warm, b0, b1, r, sys->next, f)) {
+        append_rows(in, &cb, r, NULL, sys);
         return;
     }
     // The last step's forces, scaled and projected on this step's bounds.
-    dReal l[3];
+    dReal l[4] = { 0, 0, 0, 0 };
     l[0] = WARM_SCALE * (f[3] > 0 ? f[3] : 0);
-    for (int i = 1; i < r.m; i++) {
-        dReal lo = r.lo[i], hi = r.hi[i];
-        if (r.pyramid[i]) {
-            hi = r.hi[i] * l[0];
+    for (int i = 1; i < r->m; i++) {
+        dReal lo = r->lo[i], hi = r->hi[i];
+        if (r->pyramid[i]) {
+            hi = r->hi[i] * l[0];
             lo = -hi;
         }
-        const dReal li = WARM_SCALE * dCalcVectorDot3(f, r.d[i]);
+        const dReal li = WARM_SCALE * dCalcVectorDot3(f, r->d[i]);
         l[i] = li > hi ? hi : li < lo ? lo : li;
     }
-    append_rows(in, &cb, &r, l, sys);
+    append_rows(in, &cb, r, l, sys);
 }
