@@ -21,7 +21,7 @@
 // lanes are then turned into rows four numbers at a time (a 4 x 4
 // transpose per four consecutive numbers of qs_row).
 
-#include "quickstep.h"
+#include "quickstep_warm_match.h"
 #include "dx_clones.h"
 
 #include <stddef.h>
@@ -439,7 +439,7 @@ QS_CONTACT_CLONES void dxQuickContact(const qs_input *in, dxJoint *j, qs_system 
     cb.o1 = 6 * (in->body0 + (b1 ? b1->tag : in->nb));
     // The warm start's lookup first: a warm normal row is relaxed with 1.
     dReal fw[4];   // the friction force, then the normal force
-    const dReal *f = dxQuickWarmContactRows(sys->warm, b0, b1, r, sys->next, fw) ? fw : NULL;
+    const dReal *f = warm_contact_rows(sys->warm, b0, b1, r, sys->next, fw) ? fw : NULL;
     // The usual three rows made with constants (no loop, no test of m).
     const int two = r->arm[1] != NULL;
     if (r->m == 3) {
