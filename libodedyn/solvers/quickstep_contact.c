@@ -303,19 +303,33 @@ QS_INLINE void start_row(qc_v4 *a, qs_v2 *b, const qs_row *row, size_t off, qc_v
     *b = qs_add(*b, qs_mul(li2, load_pair(M + 4)));
 }
 
-// fc += M^-1 J^T l of the body at fc for the m rows (their numbers for
-// that body at byte offset off of a row: M or M1) with l[i] nonzero, in
-// row order (warm_apply's start_row, row by row: the same sums), fc as a
-// four and a pair; l as a four, each spread from it.
-QS_INLINE void start_body(dReal *fc, const qs_row *rows, const int m, size_t off, qc_v4 l)
+// fc += M^-1 J^T l of body 0 (at fc0, the rows' M) and with two of body 1
+// (at fc1, M1) for the m rows with l[i] nonzero, in row order (warm_apply's
+// start_row, row by row: the same sums; the bodies' numbers are apart), fc
+// as a four and a pair; l as a four, each spread from it.
+QS_INLINE void start_bodies(dReal *fc0, dReal *fc1, const qs_row *rows, const int m,
+                            const int two, qc_v4 l)
 {
-    qc_v4 a = qc_load(fc);
-    qs_v2 b = load_pair(fc + 4);
-    if (qc_lane(l, 0) != 0) start_row(&a, &b, &rows[0], off, qc_spread(l, 0));
-    if (m > 1 && qc_lane(l, 1) != 0) start_row(&a, &b, &rows[1], off, qc_spread(l, 1));
-    if (m > 2 && qc_lane(l, 2) != 0) start_row(&a, &b, &rows[2], off, qc_spread(l, 2));
-    memcpy(fc, &a, sizeof a);
-    memcpy(fc + 4, &b, sizeof b);
+    const size_t M = offsetof(qs_row, M), M1 = offsetof(qs_row, M1);
+    qc_v4 a0 = qc_load(fc0), a1 = two ? qc_load(fc1) : qc_splat(0);
+    qs_v2 b0 = load_pair(fc0 + 4), b1 = two ? load_pair(fc1 + 4) : qs_splat(0);
+    if (qc_lane(l, 0) != 0) {
+        start_row(&a0, &b0, &rows[0], M, qc_spread(l, 0));
+        if (two) start_row(&a1, &b1, &rows[0], M1, qc_spread(l, 0));
+    }
+    if (m > 1 && qc_lane(l, 1) != 0) {
+        start_row(&a0, &b0, &rows[1], M, qc_spread(l, 1));
+        if (two) start_row(&a1, &b1, &rows[1], M1, qc_spread(l, 1));
+    }
+    if (m > 2 && qc_lane(l, 2) != 0) {
+        start_row(&a0, &b0, &rows[2], M, qc_spread(l, 2));
+        if (two) start_row(&a1, &b1, &rows[2], M1, qc_spread(l, 2));
+    }
+    memcpy(fc0, &a0, sizeof a0);
+    memcpy(fc0 + 4, &b0, sizeof b0);
+    if (!two) return;
+    memcpy(fc1, &a1, sizeof a1);
+    memcpy(fc1 + 4, &b1, sizeof b1);
 }
 
 // The warm start's forces of the rows as a four (lane i: row i; lanes from
@@ -419,8 +433,7 @@ QS_INLINE void append_rows(const qs_input *in, const qs_cbodies *cb, const dxCon
     sys->lambda[first] = qc_lane(l, 0) + 0;
     if (m > 1) sys->lambda[first + 1] = qc_lane(l, 1) + 0;
     if (m > 2) sys->lambda[first + 2] = qc_lane(l, 2) + 0;
-    start_body(sys->fc + cb->o0, rows, m, offsetof(qs_row, M), l);
-    if (two) start_body(sys->fc + cb->o1, rows, m, offsetof(qs_row, M1), l);
+    start_bodies(sys->fc + cb->o0, sys->fc + cb->o1, rows, m, two, l);
 }
 
 QS_CONTACT_CLONES void dxQuickContact(const qs_input *in, dxJoint *j, qs_system *sys)
