@@ -416,7 +416,7 @@ QS_INLINE void append_rows(const qs_input *in, const qs_cbodies *cb, const dxCon
 #endif
     for (int i = 0; i < m; i++) {
         qs_row *q = &rows[i];
-        const int fi = r->pyramid[i] ? first : one;
+        const int fi = i > 0 && r->pyramid[i] ? first : one;   // (never the normal row)
         memcpy((char *)q + QS_ROW_INTS, (const char *)&ints + QS_ROW_INTS, QS_ROW_INTS_SIZE);
         q->pos = first + i;
         q->f = fi;
