@@ -446,19 +446,20 @@ static int bad_normal(const dContactGeom *g)
 static int check_geometry(dxJointContact *c)
 {
     const dContactGeom *g = &c->contact.geom;
-    dCopyVector3(c->kept.n, g->normal);
-    c->kept.n[3] = 0;
+    dReal *n = c->kept.n;
+    dCopyVector3(n, g->normal);
+    n[3] = 0;
     // One test for the usual contact: the sum of the seven numbers is finite
     // only if each is (a NaN or an infinity makes it NaN or infinite); finite
     // numbers whose sum overflows go on to the tests of each number below.
-    const dReal sum = g->pos[0] + g->pos[1] + g->pos[2] + g->depth + c->kept.n[0] + c->kept.n[1] + c->kept.n[2];
-    if (dxIsFinite(sum)) return dxUnitVector3(c->kept.n) || bad_normal(g);
+    const dReal sum = g->pos[0] + g->pos[1] + g->pos[2] + g->depth + n[0] + n[1] + n[2];
+    if (dxIsFinite(sum)) return dxUnitVector3(n) || bad_normal(g);
     if (!dxIsFinite3(g->pos[0], g->pos[1], g->pos[2]) || !dxIsFinite(g->depth)) {
         dxReportBadArgument("dJointCreateContact",
                             "contact position or depth is not finite; the contact is ignored");
         return 0;
     }
-    if (!dxIsFinite3(c->kept.n[0], c->kept.n[1], c->kept.n[2]) || !dxUnitVector3(c->kept.n)) return bad_normal(g);
+    if (!dxIsFinite3(n[0], n[1], n[2]) || !dxUnitVector3(n)) return bad_normal(g);
     return 1;
 }
 
@@ -480,7 +481,8 @@ static void friction_directions(dxJointContact *c)
                             "across the normal; using an arbitrary one", (double)f[0],
                             (double)f[1], (double)f[2]);
     }
-    dxPlaneSpaceUnit(c->kept.n, c->kept.t1, c->kept.t2);   // t2 = n x t1 (dPlaneSpace's arithmetic)
+    // t2 = n x t1 (dPlaneSpace's arithmetic)
+    dxPlaneSpaceUnit(c->kept.n, c->kept.t1, c->kept.t2);
     c->kept.t1[3] = c->kept.t2[3] = 0;
 }
 
