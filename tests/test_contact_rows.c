@@ -190,8 +190,7 @@ static int test_contact_numbers_follow_the_rule(void)
                 if (swapped) dJointAttach((dJointID)j, other, a);
                 else dJointAttach((dJointID)j, a, other);
             }
-            dxContactRows r;
-            dxJointContactRows(j, 100, 0.2, &r);
+            const dxContactRows r = *dxJointContactRows(j, 100, 0.2);
             const dReal sign = rev ? -1 : 1;
             const dReal *dir[3] = { n, t1, t2 };
             for (int d = 0; d < 3; d++) {

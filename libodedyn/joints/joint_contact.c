@@ -61,24 +61,25 @@ enum {
 typedef struct dxJointContact {
     dxJoint base;
     dContact contact;      // as given, with the surface sanitised (see contact_init)
-    // Unit normal and friction directions (4th numbers 0), in the user's
-    // body order, negated while `negated`: they are turned to the stored
-    // sense (DX_JOINT_REVERSE) when the rows are made, and stay so.
-    dVector3 n, t1, t2;
+    // Its rows' numbers as dxJointContactRows gives them. What the contact
+    // alone decides is set at creation: the unit normal and friction
+    // directions (4th numbers 0; kept.n, .t1, .t2 in the user's body order,
+    // negated while `negated`: they are turned to the stored sense
+    // (DX_JOINT_REVERSE) when the rows are asked for, and stay so), the
+    // sliding rows (kept.m) with their directions, bounds and pyramid flags,
+    // targets 0 but the normal row's, the arm of body 0 and the point. Each
+    // step sets the normal row's target, the cfm (the world's, read then,
+    // or a mode's) and whether body 1 has an arm.
+    dxContactRows kept;
     unsigned negated;
     dReal mu2, rho2, rhoN; // effective coefficients of direction 2 and spin
     unsigned rows_present; // ROW_... ; computed once at creation
     int inert;             // bad geometry: no rows at all
     int m;                 // its number of rows (0 when inert)
-    // The sliding friction rows' numbers that only the contact decides (set
-    // at creation; rows 1 and 2 of dxContactRows, 0 for a row it lacks): the
-    // bounds and pyramid flags. `own_numbers`: a mode gives a row its own
-    // target or cfm (Motion1/2, Slip1/2, SoftCFM); without, every row's
-    // target is 0 but the normal row's, and its cfm is the world's.
-    int sliding_m;         // 1 + the friction rows
+    // A mode gives a sliding friction row its own target or cfm (Motion1/2,
+    // Slip1/2, SoftCFM): without, every row's target is 0 but the normal
+    // row's, and its cfm is the world's.
     int own_numbers;
-    dReal row_lo[2], row_hi[2];
-    int row_pyramid[3];
     // The bodies' poses at the contact's first step, and the arms from
     // their origins to the contact point then (world frame).
     const struct dxBody *anchor_body[2];
@@ -256,16 +257,15 @@ static const dVector3 no_direction = { 0, 0, 0, 0 };
 // Turn n, t1, t2 to the other sense (the joint's stored sense changed).
 static void flip_directions(dxJointContact *c)
 {
-    dNegateVector3(c->n);
-    dNegateVector3(c->t1);
-    dNegateVector3(c->t2);
+    dNegateVector3(c->kept.n);
+    dNegateVector3(c->kept.t1);
+    dNegateVector3(c->kept.t2);
     c->negated ^= 1;
 }
 
-// Friction row `row` of r along the stored direction t with its own
-// numbers: target tangential velocity `motion`, cfm `slip` (force-dependent
-// slip: velocity = slip * force) if set, the bounds and pyramid flag made at
-// creation.
+// Friction row `row` of r with its own numbers: target tangential velocity
+// `motion`, cfm `slip` (force-dependent slip: velocity = slip * force) if
+// set, else the world's.
 static void friction_row_own(const dxJointContact *c, dxContactRows *r, int row, dReal motion,
                              int has_slip, dReal slip)
 {
@@ -273,39 +273,22 @@ static void friction_row_own(const dxJointContact *c, dxContactRows *r, int row,
     r->cfm[row] = has_slip ? slip : c->base.world->cfm;
 }
 
-// The contact's normal and sliding friction rows (a live contact).
-void dxJointContactRows(dxJoint *j, dReal fps, dReal erp, dxContactRows *r)
+const dxContactRows *dxJointContactRows(dxJoint *j, dReal fps, dReal erp)
 {
     dxJointContact *c = (dxJointContact *)j;
+    dxContactRows *r = &c->kept;
     // Stored sense: the user's directions, negated when the joint is stored
     // reversed (user body 2 as body 0).
     if (((c->base.flags & DX_JOINT_REVERSE) != 0) != c->negated) flip_directions(c);
-    memcpy(r->n, c->n, sizeof r->n);
-    memcpy(r->t1, c->t1, sizeof r->t1);
-    memcpy(r->t2, c->t2, sizeof r->t2);
-    const unsigned friction = c->rows_present & (ROW_T1 | ROW_T2);
-    const int m = c->sliding_m;
-    r->m = m;
-    r->friction = (int)friction;
-    r->d[0] = r->n;
-    r->d[1] = (friction & ROW_T1) ? r->t1 : (friction & ROW_T2) ? r->t2 : no_direction;
-    r->d[2] = friction == (ROW_T1 | ROW_T2) ? r->t2 : no_direction;
-    r->lo[0] = 0;
-    r->lo[1] = c->row_lo[0];
-    r->lo[2] = c->row_lo[1];
-    r->hi[0] = dInfinity;
-    r->hi[1] = c->row_hi[0];
-    r->hi[2] = c->row_hi[1];
-    r->lo[3] = r->hi[3] = r->c[3] = r->cfm[3] = 0;
-    memcpy(r->pyramid, c->row_pyramid, sizeof r->pyramid);
     const dReal world_cfm = c->base.world->cfm;
-    r->c[1] = r->c[2] = 0;
+    const int m = r->m;
     r->cfm[0] = world_cfm;
     r->cfm[1] = m > 1 ? world_cfm : 0;
     r->cfm[2] = m > 2 ? world_cfm : 0;
     if (c->own_numbers) {
         const dSurfaceParameters *s = &c->contact.surface;
         const int mode = s->mode;
+        const unsigned friction = (unsigned)r->friction;
         if (mode & dContactSoftCFM) r->cfm[0] = s->soft_cfm;
         int row = 1;
         if (friction & ROW_T1)
@@ -316,9 +299,8 @@ void dxJointContactRows(dxJoint *j, dReal fps, dReal erp, dxContactRows *r)
                              mode & dContactSlip2, s->slip2);
     }
     r->c[0] = normal_target(c, r->n, fps, erp);   // first: it may record the arms
-    r->arm[0] = c->arm[0];
     r->arm[1] = dxJointBody(&c->base, 1) ? c->arm[1] : NULL;
-    r->point = c->contact.geom.pos;
+    return r;
 }
 
 static void contact_fill_rows(dxJoint *j, dxJointRows *rows)
@@ -327,32 +309,31 @@ static void contact_fill_rows(dxJoint *j, dxJointRows *rows)
     if (c->inert) return;
     const dSurfaceParameters *s = &c->contact.surface;
     const int mode = s->mode;
-    dxContactRows r;
-    dxJointContactRows(j, rows->fps, rows->erp, &r);
-    for (int i = 0; i < r.m; i++) {
-        linear_row(&r, rows, i, r.d[i]);
-        rows->c[i] = r.c[i];
-        rows->cfm[i] = r.cfm[i];
+    const dxContactRows *r = dxJointContactRows(j, rows->fps, rows->erp);
+    for (int i = 0; i < r->m; i++) {
+        linear_row(r, rows, i, r->d[i]);
+        rows->c[i] = r->c[i];
+        rows->cfm[i] = r->cfm[i];
         if (i > 0) {
-            friction_bounds(rows, i, r.hi[i], r.pyramid[i]);
+            friction_bounds(rows, i, r->hi[i], r->pyramid[i]);
             continue;
         }
-        rows->lo[0] = r.lo[0];
-        rows->hi[0] = r.hi[0];
+        rows->lo[0] = r->lo[0];
+        rows->hi[0] = r->hi[0];
         rows->findex[0] = -1;
     }
-    int row = r.m;
+    int row = r->m;
     const unsigned present = c->rows_present;
     if (present & ROW_R1) {
-        angular_row(j, rows, row, r.t1);
+        angular_row(j, rows, row, r->t1);
         friction_bounds(rows, row++, s->rho, mode & dContactApprox1_1);
     }
     if (present & ROW_R2) {
-        angular_row(j, rows, row, r.t2);
+        angular_row(j, rows, row, r->t2);
         friction_bounds(rows, row++, c->rho2, mode & dContactApprox1_2);
     }
     if (present & ROW_RN) {
-        angular_row(j, rows, row, r.n);
+        angular_row(j, rows, row, r->n);
         friction_bounds(rows, row, c->rhoN, mode & dContactApprox1_N);
     }
 }
@@ -465,19 +446,20 @@ static int bad_normal(const dContactGeom *g)
 static int check_geometry(dxJointContact *c)
 {
     const dContactGeom *g = &c->contact.geom;
-    dCopyVector3(c->n, g->normal);
-    c->n[3] = 0;
+    dReal *n = c->kept.n;
+    dCopyVector3(n, g->normal);
+    n[3] = 0;
     // One test for the usual contact: the sum of the seven numbers is finite
     // only if each is (a NaN or an infinity makes it NaN or infinite); finite
     // numbers whose sum overflows go on to the tests of each number below.
-    const dReal sum = g->pos[0] + g->pos[1] + g->pos[2] + g->depth + c->n[0] + c->n[1] + c->n[2];
-    if (dxIsFinite(sum)) return dxUnitVector3(c->n) || bad_normal(g);
+    const dReal sum = g->pos[0] + g->pos[1] + g->pos[2] + g->depth + n[0] + n[1] + n[2];
+    if (dxIsFinite(sum)) return dxUnitVector3(n) || bad_normal(g);
     if (!dxIsFinite3(g->pos[0], g->pos[1], g->pos[2]) || !dxIsFinite(g->depth)) {
         dxReportBadArgument("dJointCreateContact",
                             "contact position or depth is not finite; the contact is ignored");
         return 0;
     }
-    if (!dxIsFinite3(c->n[0], c->n[1], c->n[2]) || !dxUnitVector3(c->n)) return bad_normal(g);
+    if (!dxIsFinite3(n[0], n[1], n[2]) || !dxUnitVector3(n)) return bad_normal(g);
     return 1;
 }
 
@@ -487,20 +469,21 @@ static void friction_directions(dxJointContact *c)
 {
     if (c->contact.surface.mode & dContactFDir1) {
         const dReal *f = c->contact.fdir1;
-        dAddScaledVectors3(c->t1, f, c->n, 1, -dCalcVectorDot3(f, c->n));
-        if (dxIsFinite3(c->t1[0], c->t1[1], c->t1[2]) &&
-            dCalcVectorLength3(c->t1) > (dReal)1e-3 * dCalcVectorLength3(f) &&
-            dSafeNormalize3(c->t1)) {
-            dCalcVectorCross3(c->t2, c->n, c->t1);
-            c->t1[3] = c->t2[3] = 0;
+        dAddScaledVectors3(c->kept.t1, f, c->kept.n, 1, -dCalcVectorDot3(f, c->kept.n));
+        if (dxIsFinite3(c->kept.t1[0], c->kept.t1[1], c->kept.t1[2]) &&
+            dCalcVectorLength3(c->kept.t1) > (dReal)1e-3 * dCalcVectorLength3(f) &&
+            dSafeNormalize3(c->kept.t1)) {
+            dCalcVectorCross3(c->kept.t2, c->kept.n, c->kept.t1);
+            c->kept.t1[3] = c->kept.t2[3] = 0;
             return;
         }
         dxReportBadArgument("dJointCreateContact", "fdir1 (%g, %g, %g) is not a direction "
                             "across the normal; using an arbitrary one", (double)f[0],
                             (double)f[1], (double)f[2]);
     }
-    dxPlaneSpaceUnit(c->n, c->t1, c->t2);   // t2 = n x t1 (dPlaneSpace's arithmetic)
-    c->t1[3] = c->t2[3] = 0;
+    // t2 = n x t1 (dPlaneSpace's arithmetic)
+    dxPlaneSpaceUnit(c->kept.n, c->kept.t1, c->kept.t2);
+    c->kept.t1[3] = c->kept.t2[3] = 0;
 }
 
 // The bounds -k..k of friction row `row` (1, 2) with coefficient k, times
@@ -508,9 +491,9 @@ static void friction_directions(dxJointContact *c)
 // bound would be inf * force).
 static void friction_bounds_of(dxJointContact *c, int row, dReal k, int pyramid)
 {
-    c->row_lo[row - 1] = -k;
-    c->row_hi[row - 1] = k;
-    c->row_pyramid[row] = pyramid && k < dInfinity;
+    c->kept.lo[row] = -k;
+    c->kept.hi[row] = k;
+    c->kept.pyramid[row] = pyramid && k < dInfinity;
 }
 
 // The sliding friction rows' own numbers (see dxJointContact).
@@ -520,8 +503,8 @@ static void sliding_rows(dxJointContact *c)
     const int mode = s->mode;
     c->own_numbers = (mode & (dContactSoftCFM | dContactMotion1 | dContactMotion2 |
                               dContactSlip1 | dContactSlip2)) != 0;
-    c->row_lo[0] = c->row_lo[1] = c->row_hi[0] = c->row_hi[1] = 0;
-    c->row_pyramid[0] = c->row_pyramid[1] = c->row_pyramid[2] = 0;
+    c->kept.lo[1] = c->kept.lo[2] = c->kept.hi[1] = c->kept.hi[2] = 0;
+    c->kept.pyramid[0] = c->kept.pyramid[1] = c->kept.pyramid[2] = 0;
     int row = 1;
     if (c->rows_present & ROW_T1) friction_bounds_of(c, row++, s->mu, mode & dContactApprox1_1);
     if (c->rows_present & ROW_T2) friction_bounds_of(c, row, c->mu2, mode & dContactApprox1_2);
@@ -545,7 +528,7 @@ static void choose_rows(dxJointContact *c)
     }
     c->rows_present = p;
     c->m = m;
-    c->sliding_m = 1 + t1 + t2;
+    c->kept.m = 1 + t1 + t2;
     sliding_rows(c);
     // Plain: no rolling rows, and not two unbounded friction rows (those
     // would be solved as a block, quickstep_build.c).
@@ -564,25 +547,43 @@ static void usual_surface(dxJointContact *c)
     c->mu2 = mu;
     c->rho2 = c->rhoN = 0;   // (rolling friction's: no rolling rows)
     c->own_numbers = 0;
-    dxPlaneSpaceUnit(c->n, c->t1, c->t2);
-    c->t1[3] = c->t2[3] = 0;
-    c->row_pyramid[0] = 0;
+    dxPlaneSpaceUnit(c->kept.n, c->kept.t1, c->kept.t2);
+    c->kept.t1[3] = c->kept.t2[3] = 0;
+    c->kept.pyramid[0] = 0;
     if (mu > 0) {
         c->rows_present = ROW_T1 | ROW_T2;
-        c->m = c->sliding_m = 3;
-        c->row_lo[0] = c->row_lo[1] = -mu;
-        c->row_hi[0] = c->row_hi[1] = mu;
+        c->m = c->kept.m = 3;
+        c->kept.lo[1] = c->kept.lo[2] = -mu;
+        c->kept.hi[1] = c->kept.hi[2] = mu;
         const int finite = mu < dInfinity;   // (two infinite rows: not plain, a block)
-        c->row_pyramid[1] = finite && (s->mode & dContactApprox1_1);
-        c->row_pyramid[2] = finite && (s->mode & dContactApprox1_2);
+        c->kept.pyramid[1] = finite && (s->mode & dContactApprox1_1);
+        c->kept.pyramid[2] = finite && (s->mode & dContactApprox1_2);
         if (finite) c->base.flags |= DX_JOINT_PLAIN_CONTACT;
     } else {
         c->rows_present = 0;
-        c->m = c->sliding_m = 1;
-        c->row_lo[0] = c->row_lo[1] = c->row_hi[0] = c->row_hi[1] = 0;
-        c->row_pyramid[1] = c->row_pyramid[2] = 0;
+        c->m = c->kept.m = 1;
+        c->kept.lo[1] = c->kept.lo[2] = c->kept.hi[1] = c->kept.hi[2] = 0;
+        c->kept.pyramid[1] = c->kept.pyramid[2] = 0;
         c->base.flags |= DX_JOINT_PLAIN_CONTACT;
     }
+}
+
+// The rest of the kept rows' numbers (see dxJointContact), once the rows
+// and their bounds are chosen.
+static void keep_rows(dxJointContact *c)
+{
+    dxContactRows *r = &c->kept;
+    const unsigned friction = c->rows_present & (ROW_T1 | ROW_T2);
+    r->friction = (int)friction;
+    r->d[0] = r->n;
+    r->d[1] = (friction & ROW_T1) ? r->t1 : (friction & ROW_T2) ? r->t2 : no_direction;
+    r->d[2] = friction == (ROW_T1 | ROW_T2) ? r->t2 : no_direction;
+    r->lo[0] = 0;
+    r->hi[0] = dInfinity;
+    r->c[1] = r->c[2] = 0;
+    r->lo[3] = r->hi[3] = r->c[3] = r->cfm[3] = 0;
+    r->arm[0] = c->arm[0];
+    r->point = c->contact.geom.pos;
 }
 
 // Every field of the contact's part (no zeroing first): the pose record
@@ -604,9 +605,9 @@ static void contact_init(dxJointContact *c, const dContact *contact)
     c->anchor_body[0] = c->anchor_body[1] = NULL;
     c->negated = 0;
     if (!check_geometry(c)) {
-        dZeroVector3(c->n);
-        dZeroVector3(c->t1);
-        dZeroVector3(c->t2);
+        dZeroVector3(c->kept.n);
+        dZeroVector3(c->kept.t1);
+        dZeroVector3(c->kept.t2);
         c->mu2 = c->rho2 = c->rhoN = 0;
         c->rows_present = 0;
         c->m = 0;
@@ -621,6 +622,7 @@ static void contact_init(dxJointContact *c, const dContact *contact)
         friction_directions(c);
         choose_rows(c);
     }
+    keep_rows(c);
     // count_rows' answer, which never changes, kept where the steppers
     // read it (dWorldQuickStep's set-up does not ask again).
     c->base.rows.m = c->m;

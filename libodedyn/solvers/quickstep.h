@@ -233,7 +233,8 @@ void dxQuickWarmPositions(qs_warm_entry *e, const int pos[3]);
 // Both for a plain contact's numbers r (dxJointContactRows) whose rows take
 // the lambda positions from `first` on in r's order: 1 if it matches one of
 // the last step, whose friction force (world frame) goes to f[0..3) and
-// normal force to f[3].
+// normal force to f[3]. (dxQuickContact runs the same code inline:
+// quickstep_warm_match.h.)
 int dxQuickWarmContactRows(dxWarmCache *c, const struct dxBody *b0, const struct dxBody *b1,
                            const dxContactRows *r, int first, dReal f[4]);
 // After the solve: this step's contacts get their forces and become the last

@@ -21,7 +21,7 @@
 // lanes are then turned into rows four numbers at a time (a 4 x 4
 // transpose per four consecutive numbers of qs_row).
 
-#include "quickstep.h"
+#include "quickstep_warm_match.h"
 #include "dx_clones.h"
 
 #include <stddef.h>
@@ -208,14 +208,14 @@ QS_INLINE void inertia_lanes(const dReal *I, qc_v4 ax, qc_v4 ay, qc_v4 az, qc_v4
 // body (else its numbers are zero). The sums are pair_dot's: with p the
 // products of body 0's 6 numbers and q body 1's, the pair
 // (p0 + p2 | p1 + p3) + ((p4 + q0) + (q2 + q4) | (p5 + q1) + (q3 + q5)),
-// (one body: + (p4 | p5)), its two lanes added last.
+// (one body: + (p4 | p5)), its two lanes added last. d: the directions'
+// x, y, z as lanes (the missing rows' zero). m and two are constants where
+// the caller makes them so (the usual three rows).
 QS_INLINE void lanes_rows(const qs_input *in, const qs_cbodies *cb, const dxContactRows *r,
-                          qc_v4 sor_w, int two, qs_row *rows)
+                          const qc_v4 d[3], qc_v4 sor_w, const int m, const int two,
+                          qs_row *rows)
 {
-    const int m = r->m;
     const size_t J = offsetof(qs_row, J), n = sizeof(dReal);
-    qc_v4 d[3];   // the directions' x, y, z (the missing rows' are zero)
-    qc_transpose(qc_load(r->d[0]), qc_load(r->d[1]), qc_load(r->d[2]), qc_splat(0), d);
     const qc_v4 dx = d[0], dy = d[1], dz = d[2];
     // Body 0: J = [d, arm0 x d], M^-1 J^T = [im0 d, I0 (arm0 x d)].
     const qc_v4 A = qc_load(r->arm[0]);   // (a dVector3: four numbers)
@@ -290,71 +290,155 @@ QS_INLINE qs_v2 load_pair(const dReal *p)
     return v;
 }
 
-// fc += M^-1 J^T l of the body at fc for the m rows (their numbers for
-// that body at byte offset off of a row: M or M1) with l[i] nonzero, in row
-// order (warm_apply's start_row, row by row: the same sums), fc as a four
-// and a pair.
-QS_INLINE void start_body(dReal *fc, const qs_row *rows, int m, size_t off, const dReal *l)
+// a, b += li M (M: a row's six numbers for one body, li spread to the four).
+QS_INLINE void start_row(qc_v4 *a, qs_v2 *b, const qs_row *row, size_t off, qc_v4 li)
 {
-    qc_v4 a = qc_load(fc);
-    qs_v2 b = load_pair(fc + 4);
-    for (int i = 0; i < m; i++) {
-        if (l[i] == 0) continue;
-        const dReal *M = (const dReal *)((const char *)&rows[i] + off);
-        a = qc_add(a, qc_mul(qc_splat(l[i]), qc_load(M)));
-        b = qs_add(b, qs_mul(qs_splat(l[i]), load_pair(M + 4)));
-    }
-    memcpy(fc, &a, sizeof a);
-    memcpy(fc + 4, &b, sizeof b);
+    const dReal *M = (const dReal *)((const char *)row + off);
+#if defined(__GNUC__)
+    const qs_v2 li2 = __builtin_shufflevector(li, li, 0, 1);
+#else
+    const qs_v2 li2 = qs_splat(qc_lane(li, 0));
+#endif
+    *a = qc_add(*a, qc_mul(li, qc_load(M)));
+    *b = qs_add(*b, qs_mul(li2, load_pair(M + 4)));
 }
+
+// fc += M^-1 J^T l of body 0 (at fc0, the rows' M) and with two of body 1
+// (at fc1, M1) for the m rows with l[i] nonzero, in row order (warm_apply's
+// start_row, row by row: the same sums; the bodies' numbers are apart), fc
+// as a four and a pair; l as a four, each spread from it.
+QS_INLINE void start_bodies(dReal *fc0, dReal *fc1, const qs_row *rows, const int m,
+                            const int two, qc_v4 l)
+{
+    const size_t M = offsetof(qs_row, M), M1 = offsetof(qs_row, M1);
+    qc_v4 a0 = qc_load(fc0), a1 = two ? qc_load(fc1) : qc_splat(0);
+    qs_v2 b0 = load_pair(fc0 + 4), b1 = two ? load_pair(fc1 + 4) : qs_splat(0);
+    if (qc_lane(l, 0) != 0) {
+        start_row(&a0, &b0, &rows[0], M, qc_spread(l, 0));
+        if (two) start_row(&a1, &b1, &rows[0], M1, qc_spread(l, 0));
+    }
+    if (m > 1 && qc_lane(l, 1) != 0) {
+        start_row(&a0, &b0, &rows[1], M, qc_spread(l, 1));
+        if (two) start_row(&a1, &b1, &rows[1], M1, qc_spread(l, 1));
+    }
+    if (m > 2 && qc_lane(l, 2) != 0) {
+        start_row(&a0, &b0, &rows[2], M, qc_spread(l, 2));
+        if (two) start_row(&a1, &b1, &rows[2], M1, qc_spread(l, 2));
+    }
+    memcpy(fc0, &a0, sizeof a0);
+    memcpy(fc0 + 4, &b0, sizeof b0);
+    if (!two) return;
+    memcpy(fc1, &a1, sizeof a1);
+    memcpy(fc1 + 4, &b1, sizeof b1);
+}
+
+// The warm start's forces of the rows as a four (lane i: row i; lanes from
+// m on unused) from the last step's friction force f[0..3) (world frame)
+// and normal force f[3], as one row at a time makes them: the normal row
+// WARM_SCALE max(fn, 0) = l0, a friction row WARM_SCALE (f . d_i) clamped
+// to its bounds, times l0 where pyramid (each lane the same operations in
+// the same order). d: the directions' x, y, z as lanes.
+QS_INLINE qc_v4 warm_forces(const dxContactRows *r, const dReal *f, const qc_v4 d[3])
+{
+    const dReal fn = f[3];
+    const dReal l0 = WARM_SCALE * (fn > 0 ? fn : 0);
+#if defined(__GNUC__)
+#ifdef dSINGLE
+    typedef int mask __attribute__((vector_size(4 * sizeof(int))));
+#else
+    typedef long long mask __attribute__((vector_size(4 * sizeof(long long))));
+#endif
+    const qc_v4 F = qc_load(f);
+    const qc_v4 dot = qc_add(qc_add(qc_mul(qc_spread(F, 0), d[0]), qc_mul(qc_spread(F, 1), d[1])),
+                             qc_mul(qc_spread(F, 2), d[2]));
+    const qc_v4 li = qc_mul(qc_splat(WARM_SCALE), dot);
+    const qc_v4 hi4 = qc_load(r->hi), lo4 = qc_load(r->lo), scaled = qc_mul(hi4, qc_splat(l0));
+    const mask pyr = { 0, -(r->pyramid[1] != 0), -(r->pyramid[2] != 0), 0 };
+    const mask hi = ((mask)scaled & pyr) | ((mask)hi4 & ~pyr);
+    const mask lo = ((mask)qc_neg(scaled) & pyr) | ((mask)lo4 & ~pyr);
+    const mask gt = li > (qc_v4)hi, lt = li < (qc_v4)lo;
+    // li > hi ? hi : li < lo ? lo : li (not a number: li)
+    qc_v4 l = (qc_v4)((hi & gt) | (~gt & ((lo & lt) | ((mask)li & ~lt))));
+    l[0] = l0;
+    return l;
+#else
+    qc_v4 l = qc_splat(0);
+    qc_lane(l, 0) = l0;
+    for (int i = 1; i < 3; i++) {
+        dReal lo = r->lo[i], hi = r->hi[i];
+        if (r->pyramid[i]) {
+            hi = r->hi[i] * l0;
+            lo = -hi;
+        }
+        const dReal li = WARM_SCALE * (f[0] * qc_lane(d[0], i) + f[1] * qc_lane(d[1], i) +
+                                       f[2] * qc_lane(d[2], i));
+        qc_lane(l, i) = li > hi ? hi : li < lo ? lo : li;
+    }
+    return l;
+#endif
+}
+
+// The integers of a row, from o0 to two (32 bytes: one copy of a template).
+#define QS_ROW_INTS offsetof(qs_row, o0)
+#define QS_ROW_INTS_SIZE (offsetof(qs_row, J) - offsetof(qs_row, o0))
 
 // The rows of a contact (r: m rows, lambda positions from sys->next on)
 // appended to the system, in its order, with their bounds' f: friction rows
 // bounded by the normal force (pyramid) take the normal row's lambda, the
-// others the constant 1. warm: the rows' starting forces (lambda and fc
-// then start there; the normal row is relaxed with 1), or NULL.
-QS_CONTACT_CLONES static void append_rows(const qs_input *in, const qs_cbodies *cb,
-                                          const dxContactRows *r, const dReal *warm,
-                                          qs_system *sys)
+// others the constant 1. f: the last step's forces (dxQuickWarmContactRows;
+// lambda and fc then start from them, and the normal row is relaxed with
+// 1), or NULL. m and two as in lanes_rows.
+QS_INLINE void append_rows(const qs_input *in, const qs_cbodies *cb, const dxContactRows *r,
+                           const dReal *f, qs_system *sys, const int m, const int two)
 {
-    const int m = r->m, first = sys->next, one = sys->m, nrows = sys->nrows;
+    const int first = sys->next, one = sys->m, nrows = sys->nrows;
     qs_row *rows = sys->rows + nrows;
+    qc_v4 d[3];   // the directions' x, y, z (the missing rows' are zero)
+    qc_transpose(qc_load(r->d[0]), qc_load(r->d[1]), qc_load(r->d[2]), qc_splat(0), d);
+    const qc_v4 l = f ? warm_forces(r, f, d) : qc_splat(0);
     const dReal w = in->sor_w;
-    const qc_v4 sor_w = qc_make(warm ? 1 : w, w, w, w);
-    const int two = r->arm[1] != NULL;
-    if (two) lanes_rows(in, cb, r, sor_w, 1, rows);
-    else lanes_rows(in, cb, r, sor_w, 0, rows);
+    lanes_rows(in, cb, r, d, qc_make(f ? 1 : w, w, w, w), m, two, rows);
+    // The integers the rows share, copied whole into each, then its own
+    // lambda position and its bound's.
+    qs_row ints;
+    ints.o0 = cb->o0;
+    ints.o1 = cb->o1;
+    ints.pos = first;
+    ints.f = one;
+    ints.g = NULL;
+    ints.gfirst = 0;
+    ints.gn = 0;
+    ints.two = (short)two;
     int *row_pos = sys->row_pos + nrows, *row_f = sys->row_f + nrows;
     int *order = sys->order + sys->norder;
+#if defined(__GNUC__)
+#pragma GCC unroll 4
+#endif
     for (int i = 0; i < m; i++) {
         qs_row *q = &rows[i];
-        const int f = r->pyramid[i] ? first : one;
-        q->o0 = cb->o0;
-        q->o1 = cb->o1;
+        const int fi = i > 0 && r->pyramid[i] ? first : one;   // (never the normal row)
+        memcpy((char *)q + QS_ROW_INTS, (const char *)&ints + QS_ROW_INTS, QS_ROW_INTS_SIZE);
         q->pos = first + i;
-        q->f = f;
-        q->g = NULL;
-        q->gfirst = 0;
-        q->gn = 0;
-        q->two = (short)two;
+        q->f = fi;
         row_pos[i] = first + i;
-        row_f[i] = f;
+        row_f[i] = fi;
         order[i] = nrows + i;
     }
     sys->nrows = nrows + m;
     sys->norder += m;
     sys->next = first + m;
-    if (!warm) return;
-    for (int i = 0; i < m; i++)
-        if (warm[i] != 0) sys->lambda[first + i] = warm[i];
-    start_body(sys->fc + cb->o0, rows, m, offsetof(qs_row, M), warm);
-    if (two) start_body(sys->fc + cb->o1, rows, m, offsetof(qs_row, M1), warm);
+    if (!f) return;
+    // lambda is 0 there: a zero force (+-0) leaves it so, the others are
+    // stored (x + 0 is x but for -0).
+    sys->lambda[first] = qc_lane(l, 0) + 0;
+    if (m > 1) sys->lambda[first + 1] = qc_lane(l, 1) + 0;
+    if (m > 2) sys->lambda[first + 2] = qc_lane(l, 2) + 0;
+    start_bodies(sys->fc + cb->o0, sys->fc + cb->o1, rows, m, two, l);
 }
 
-void dxQuickContact(const qs_input *in, dxJoint *j, qs_system *sys)
+QS_CONTACT_CLONES void dxQuickContact(const qs_input *in, dxJoint *j, qs_system *sys)
 {
-    dxContactRows r;
-    dxJointContactRows(j, in->fps, in->erp, &r);
+    const dxContactRows *r = dxJointContactRows(j, in->fps, in->erp);
     const struct dxBody *b0 = dxJointBody(j, 0), *b1 = dxJointBody(j, 1);
     const dxIslandBodies *bd = in->bd;
     qs_cbodies cb;
@@ -366,24 +450,16 @@ void dxQuickContact(const qs_input *in, dxJoint *j, qs_system *sys)
     cb.I1 = b1 ? bd->inv_inertia + 12 * b1->tag : NULL;
     cb.R1 = b1 ? in->rates + 6 * b1->tag : NULL;
     cb.o1 = 6 * (in->body0 + (b1 ? b1->tag : in->nb));
-
     // The warm start's lookup first: a warm normal row is relaxed with 1.
-    dReal f[4];   // the friction force, then the normal force
-    if (!dxQuickWarmContactRows(sys->warm, b0, b1, &r, sys->next, f)) {
-        append_rows(in, &cb, &r, NULL, sys);
-        return;
+    dReal fw[4];   // the friction force, then the normal force
+    const dReal *f = warm_contact_rows(sys->warm, b0, b1, r, sys->next, fw) ? fw : NULL;
+    // The usual three rows made with constants (no loop, no test of m).
+    const int two = r->arm[1] != NULL;
+    if (r->m == 3) {
+        if (two) append_rows(in, &cb, r, f, sys, 3, 1);
+        else append_rows(in, &cb, r, f, sys, 3, 0);
+    } else {
+        if (two) append_rows(in, &cb, r, f, sys, r->m, 1);
+        else append_rows(in, &cb, r, f, sys, r->m, 0);
     }
-    // The last step's forces, scaled and projected on this step's bounds.
-    dReal l[3];
-    l[0] = WARM_SCALE * (f[3] > 0 ? f[3] : 0);
-    for (int i = 1; i < r.m; i++) {
-        dReal lo = r.lo[i], hi = r.hi[i];
-        if (r.pyramid[i]) {
-            hi = r.hi[i] * l[0];
-            lo = -hi;
-        }
-        const dReal li = WARM_SCALE * dCalcVectorDot3(f, r.d[i]);
-        l[i] = li > hi ? hi : li < lo ? lo : li;
-    }
-    append_rows(in, &cb, &r, l, sys);
 }

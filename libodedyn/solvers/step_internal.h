@@ -92,8 +92,9 @@ typedef struct dxContactRows {
 // a block) has DX_JOINT_PLAIN_CONTACT in its flags, set at creation.
 // The rows of a plain contact for a step with 1/h = fps and the world's
 // erp (as its fill_rows makes them: the same numbers; it may record the
-// contact's anchor on its first step). Kinematic bodies are not folded in.
-void dxJointContactRows(dxJoint *j, dReal fps, dReal erp, dxContactRows *r);
+// contact's anchor on its first step), kept in the contact (valid until it
+// is asked again or destroyed). Kinematic bodies are not folded in.
+const dxContactRows *dxJointContactRows(dxJoint *j, dReal fps, dReal erp);
 void dxStepEnd(const dxIsland *islands, int count, dReal h);
 
 // The island's body data (from arena), with gravity and, if gyro_h > 0, the
