@@ -260,14 +260,41 @@ static int island_length(const qs_island *p, int block)
     return block ? p->nblocks : p->norder;
 }
 
+// list[0, n) (islands) in tmp, longest first and the same length in list's
+// order, by counting (O(n + longest); counters from arena a).
+static void sort_by_counting(const qs_island *parts, int block, const int *list, int n,
+                             int longest, int *tmp, dxArena *a)
+{
+    int *start = DX_ARENA_ARRAY(a, int, longest + 1);
+    for (int len = 0; len <= longest; len++) start[len] = 0;
+    for (int k = 0; k < n; k++) start[island_length(&parts[list[k]], block)]++;
+    int before = 0;   // islands longer than len
+    for (int len = longest; len > 0; len--) {
+        const int c = start[len];
+        start[len] = before;
+        before += c;
+    }
+    for (int k = 0; k < n; k++) tmp[start[island_length(&parts[list[k]], block)]++] = list[k];
+}
+
 // The islands with blocks (block = 1) or rows (block = 0) into list, longest
 // first and the same length in island order; returns how many. tmp: scratch
-// for count. (A stable bottom-up merge sort: no allocation, O(n log n).)
-static int islands_by_length(const qs_island *parts, int count, int block, int *list, int *tmp)
+// for count. (A stable sort: by counting when the islands are many next to
+// their lengths, as many small ones; else bottom-up merging, O(n log n).)
+static int islands_by_length(const qs_island *parts, int count, int block, int *list, int *tmp,
+                             dxArena *a)
 {
-    int n = 0;
-    for (int i = 0; i < count; i++)
-        if (island_length(&parts[i], block) > 0) list[n++] = i;
+    int n = 0, longest = 0;
+    for (int i = 0; i < count; i++) {
+        const int len = island_length(&parts[i], block);
+        if (len > 0) list[n++] = i;
+        if (len > longest) longest = len;
+    }
+    if (n > 1 && longest <= 8 * n) {
+        sort_by_counting(parts, block, list, n, longest, tmp, a);
+        memcpy(list, tmp, sizeof(int) * (size_t)n);
+        return n;
+    }
     int *from = list, *to = tmp;
     for (int width = 1; width < n; width *= 2) {
         for (int lo = 0; lo < n; lo += 2 * width) {
@@ -367,10 +394,10 @@ static void interleave_rows(const qs_system *sys, const qs_island *parts, const 
 static void solve(dxArena *a, qs_system *sys, qs_island *parts, int count, int iterations,
                   int *list, int *tmp)
 {
-    const int with_blocks = islands_by_length(parts, count, 1, list, tmp);
+    const int with_blocks = islands_by_length(parts, count, 1, list, tmp, a);
     interleave_blocks(sys, parts, list, with_blocks);
     dxQuickBatchBlocks(a, sys, with_blocks);
-    const int n = islands_by_length(parts, count, 0, list, tmp);
+    const int n = islands_by_length(parts, count, 0, list, tmp, a);
     const qs_reorder re = reorder_begin(a, sys);
     if (n == 1) sys->seq = sys->order + parts[list[0]].order0;   // swept as it is
     const int **from = n > 1 ? DX_ARENA_ARRAY(a, const int *, n) : NULL;
@@ -475,7 +502,9 @@ int dWorldQuickStep(dWorldID w, dReal stepsize)
     for (int i = 0; i < count; i++) {
         // (an island without joints has no rows to shuffle)
         parts[i].seed = islands[i].nj > 0 ? island_seed(&islands[i]) : 0;
-        dxIslandPrepare(w, a, &islands[i], h, &bd[i]);
+        const int body0 = sys.nbodies;   // where dxQuickBuild puts the island's bodies
+        dxIslandPrepareAt(w, &islands[i], h, sys.inv_mass + body0,
+                          sys.inv_inertia + 12 * (size_t)body0, &bd[i]);
         dxQuickBuild(w, &islands[i], &bd[i], h, &sys, &parts[i]);
     }
     const int threads = dxStepThreadCount(w, count, __func__);

@@ -233,8 +233,15 @@ void dxBodyGyroscopicEnd(struct dxBody *b, dReal h)
 void dxIslandPrepare(struct dxWorld *w, dxArena *a, const dxIsland *is, dReal gyro_h,
                      dxIslandBodies *out)
 {
-    out->inv_mass = DX_ARENA_ARRAY(a, dReal, is->nb);
-    out->inv_inertia = DX_ARENA_ARRAY(a, dReal, 12 * is->nb);
+    dReal *inv_mass = DX_ARENA_ARRAY(a, dReal, is->nb);
+    dxIslandPrepareAt(w, is, gyro_h, inv_mass, DX_ARENA_ARRAY(a, dReal, 12 * is->nb), out);
+}
+
+void dxIslandPrepareAt(struct dxWorld *w, const dxIsland *is, dReal gyro_h, dReal *inv_mass,
+                       dReal *inv_inertia, dxIslandBodies *out)
+{
+    out->inv_mass = inv_mass;
+    out->inv_inertia = inv_inertia;
     for (int i = 0; i < is->nb; i++) {
         struct dxBody *b = is->bodies[i];
         b->tag = i;

@@ -101,6 +101,9 @@ void dxStepEnd(const dxIsland *islands, int count, dReal h);
 // passes 0 and adds the gyroscopic change per sub-step).
 void dxIslandPrepare(struct dxWorld *w, dxArena *arena, const dxIsland *is, dReal gyro_h,
                      dxIslandBodies *out);
+// The same into the caller's arrays: inv_mass (nb) and inv_inertia (12 nb).
+void dxIslandPrepareAt(struct dxWorld *w, const dxIsland *is, dReal gyro_h, dReal *inv_mass,
+                       dReal *inv_inertia, dxIslandBodies *out);
 // The gyroscopic torque t (world) of body b for a step h (rows.c): the one
 // that takes its angular velocity to the torque-free implicit midpoint
 // solution of Euler's equation, which keeps the rotational energy and |L|,
