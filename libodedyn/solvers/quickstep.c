@@ -106,6 +106,8 @@ QS_INLINE uint32_t random_hash(uint32_t x)
 #if QS_SHUFFLE_AVX2
 // random_places eight at a time: the hash with vpmulld, the products of the
 // even and the odd 32-bit lanes with vpmuludq, their high halves blended.
+// The last eight may reach past count (j has room for RANDOM_BLOCK, a
+// multiple of eight): those places are never read.
 __attribute__((target("avx2"))) static unsigned random_places_avx2(uint32_t state, unsigned lo,
                                                                    unsigned count, unsigned *j)
 {
@@ -117,7 +119,7 @@ __attribute__((target("avx2"))) static unsigned random_places_avx2(uint32_t stat
     __m256i m = _mm256_add_epi32(_mm256_set1_epi32((int)(lo + 1)), lane);
     const __m256i x8 = _mm256_set1_epi32((int)(8 * RANDOM_STEP)), m8 = _mm256_set1_epi32(8);
     unsigned i = 0;
-    for (; i + 8 <= count; i += 8) {
+    for (; i < count; i += 8) {
         __m256i h = _mm256_xor_si256(x, _mm256_srli_epi32(x, 16));
         h = _mm256_mullo_epi32(h, c1);
         h = _mm256_xor_si256(h, _mm256_srli_epi32(h, 15));
@@ -139,13 +141,15 @@ int dxQuickShuffleAVX2 = 1;
 // The places j[i] in [0, lo + i] that a Fisher-Yates shuffle's steps
 // k = lo + i (i = 0 .. count - 1) swap with, from the state's next count
 // numbers, the first for the highest k: a uniform index in [0, k] by
-// multiply-shift.
-static void random_places(uint32_t state, unsigned lo, unsigned count, unsigned *j)
+// multiply-shift. avx2: the processor has it and dxQuickShuffleAVX2 asks
+// for it (found once a step).
+QS_INLINE void random_places(uint32_t state, unsigned lo, unsigned count, unsigned *j, int avx2)
 {
     unsigned i = 0;
 #if QS_SHUFFLE_AVX2
-    if (count >= 8 && dxQuickShuffleAVX2 && __builtin_cpu_supports("avx2"))
-        i = random_places_avx2(state, lo, count, j);
+    if (avx2) i = random_places_avx2(state, lo, count, j);
+#else
+    (void)avx2;
 #endif
     for (; i < count; i++) {
         const uint32_t x = random_hash(state + (count - i) * RANDOM_STEP);
@@ -162,7 +166,18 @@ static void random_places(uint32_t state, unsigned lo, unsigned count, unsigned 
 typedef struct qs_reorder {
     const unsigned *normal;
     unsigned *at;
+    int avx2;   // random_places with AVX2
 } qs_reorder;
+
+// Whether random_places takes its AVX2 version.
+static int shuffle_avx2(void)
+{
+#if QS_SHUFFLE_AVX2
+    return dxQuickShuffleAVX2 && __builtin_cpu_supports("avx2");
+#else
+    return 0;
+#endif
+}
 
 // The base of an island's g-th reshuffle of a step, for its n rows: at[r]
 // minus it is below n exactly for the rows the reshuffle has placed (at[]
@@ -201,7 +216,7 @@ QS_INLINE void place(unsigned *o, size_t k, unsigned r, unsigned base, unsigned 
 // Shuffle an island's n rows order[0, n) (Fisher-Yates, downwards) with its
 // generator state, each friction row after its normal row (place); base:
 // reshuffle_base.
-static void reshuffle(int *order, int n, uint32_t *state, unsigned base, const qs_reorder *re)
+QS_INLINE void reshuffle(int *order, int n, uint32_t *state, unsigned base, const qs_reorder *re)
 {
     unsigned j[RANDOM_BLOCK];
     unsigned *o = (unsigned *)order, *at = re->at;
@@ -209,7 +224,7 @@ static void reshuffle(int *order, int n, uint32_t *state, unsigned base, const q
     uint32_t s = *state;
     for (size_t top = n > 1 ? (size_t)n - 1 : 0; top > 0;) {
         const size_t count = top < RANDOM_BLOCK ? top : RANDOM_BLOCK, lo = top - count + 1;
-        random_places(s, (unsigned)lo, (unsigned)count, j);
+        random_places(s, (unsigned)lo, (unsigned)count, j, re->avx2);
         s += (uint32_t)count * RANDOM_STEP;
 #if defined(__GNUC__)
 #pragma GCC unroll 4
@@ -229,7 +244,7 @@ static void reshuffle(int *order, int n, uint32_t *state, unsigned base, const q
 void dxQuickReshuffle(int *order, int n, uint32_t *state, unsigned base, const unsigned *normal,
                       unsigned *at)
 {
-    const qs_reorder re = { normal, at };
+    const qs_reorder re = { normal, at, shuffle_avx2() };
     reshuffle(order, n, state, base, &re);
 }
 
@@ -344,7 +359,7 @@ static qs_reorder reorder_begin(dxArena *a, qs_system *sys)
         normal[r] = (unsigned)row[f[r]];   // -1: NO_ROW
         at[r] = ~0u;
     }
-    qs_reorder re = { normal, at };
+    qs_reorder re = { normal, at, shuffle_avx2() };
     return re;
 }
 
@@ -355,6 +370,17 @@ static void copy_ints(int *to, const int *from, int n)
     int k = 0;
     for (; k + 8 <= n; k += 8) memcpy(to + k, from + k, 8 * sizeof(int));
     for (; k < n; k++) to[k] = from[k];
+}
+
+// The step's g-th reshuffle of the n islands in list, each with its own
+// generator (one call for all: most islands are a few rows).
+static void reshuffle_islands(const qs_system *sys, qs_island *parts, const int *list, int n,
+                              int g, const qs_reorder *re)
+{
+    for (int k = 0; k < n; k++) {
+        qs_island *p = &parts[list[k]];
+        reshuffle(sys->order + p->order0, p->norder, &p->seed, reshuffle_base(g, p->norder), re);
+    }
 }
 
 // After every reshuffle: seq gets the t-th row of each island in list
@@ -403,11 +429,7 @@ static void solve(dxArena *a, qs_system *sys, qs_island *parts, int count, int i
     const int **from = n > 1 ? DX_ARENA_ARRAY(a, const int *, n) : NULL;
     for (int it = 0; it < iterations; it++) {
         if (it % REORDER_PERIOD == 0) {
-            for (int k = 0; k < n; k++) {
-                qs_island *p = &parts[list[k]];
-                reshuffle(sys->order + p->order0, p->norder, &p->seed,
-                          reshuffle_base(it / REORDER_PERIOD, p->norder), &re);
-            }
+            reshuffle_islands(sys, parts, list, n, it / REORDER_PERIOD, &re);
             if (n > 1) interleave_rows(sys, parts, list, n, from);
         }
         dxQuickSweep(sys, it & 1);
