@@ -13,24 +13,50 @@
 #include <math.h>
 #include <string.h>
 
+// Two numbers at a time (GCC/Clang vector extension: SSE2).
+typedef dReal dxRealPair __attribute__((vector_size(2 * sizeof(dReal))));
+
+static inline dxRealPair pair_of(dReal a, dReal b)
+{
+    const dxRealPair v = { a, b };
+    return v;
+}
+
+// out = R A R^T for a body-frame inverse inertia A that is not diagonal
+// (out of line: the diagonal case's code stays short).
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void world_inverse_inertia_full(const dReal *A, const dReal *R, dReal *out)
+{
+    dMatrix3 tmp;
+    dMultiply2_333(tmp, A, R);
+    dMultiply0_333(out, R, tmp);
+}
+
 void dxBodyWorldInverseInertia(const struct dxBody *b, dReal *out)
 {
     const dReal *A = b->inv_inertia, *R = b->R;
-    dMatrix3 tmp;
     if (A[1] == 0 && A[2] == 0 && A[4] == 0 && A[6] == 0 && A[8] == 0 && A[9] == 0) {
         // A diagonal body-frame inverse (the usual case): tmp = A R^T is R^T
         // with row k scaled by A_kk, the products the general form adds to it
         // being exact zeros; then R tmp summed in dMultiply0_333's order.
-        for (int k = 0; k < 3; k++)
-            for (int j = 0; j < 3; j++) tmp[4 * k + j] = A[5 * k] * R[4 * j + k];
-        for (int i = 0; i < 3; i++)
-            for (int j = 0; j < 3; j++)
-                out[4 * i + j] = tmp[j] * R[4 * i] + tmp[4 + j] * R[4 * i + 1] +
-                                 tmp[8 + j] * R[4 * i + 2];
+        // Columns 0 and 1 of tmp and out as pairs, column 2 alone: each
+        // number the same products and sums.
+        const dxRealPair t0 = pair_of(R[0], R[4]) * A[0];
+        const dxRealPair t1 = pair_of(R[1], R[5]) * A[5];
+        const dxRealPair t2 = pair_of(R[2], R[6]) * A[10];
+        const dReal u0 = A[0] * R[8], u1 = A[5] * R[9], u2 = A[10] * R[10];
+        for (int i = 0; i < 3; i++) {
+            const dReal *Ri = R + 4 * i;
+            const dxRealPair o = t0 * Ri[0] + t1 * Ri[1] + t2 * Ri[2];
+            out[4 * i] = o[0];
+            out[4 * i + 1] = o[1];
+            out[4 * i + 2] = u0 * Ri[0] + u1 * Ri[1] + u2 * Ri[2];
+        }
         return;
     }
-    dMultiply2_333(tmp, A, R);
-    dMultiply0_333(out, R, tmp);
+    world_inverse_inertia_full(A, R, out);
 }
 
 // Newton's method stops when its step is this small relative to the solution.
@@ -325,9 +351,6 @@ void dxJointRowsFill(struct dxWorld *w, dxJoint *j, dReal h, dReal *J, dReal *c,
                         "no answer): it acts with no force this step", j->cls->name);
 }
 
-// Two numbers at a time (GCC/Clang vector extension: SSE2), for the 12
-// numbers of a row's J.
-typedef dReal dxRealPair __attribute__((vector_size(2 * sizeof(dReal))));
 
 static inline dxRealPair load_pair(const dReal *x)
 {
