@@ -118,14 +118,16 @@ static void finish_body(struct dxBody *b)
     dZeroVector3(b->torque);
 }
 
+void dxBodyMove(struct dxBody *b, dReal h)
+{
+    dxBodyGyroscopicEnd(b, h);
+    damp(b);
+    dxBodyIntegrate(b, h);
+}
+
 void dxIslandMove(const dxIsland *is, dReal h)
 {
-    for (int i = 0; i < is->nb; i++) {
-        struct dxBody *b = is->bodies[i];
-        dxBodyGyroscopicEnd(b, h);
-        damp(b);
-        dxBodyIntegrate(b, h);
-    }
+    for (int i = 0; i < is->nb; i++) dxBodyMove(is->bodies[i], h);
 }
 
 void dxIslandFinish(const dxIsland *is)

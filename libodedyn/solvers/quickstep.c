@@ -487,10 +487,12 @@ static void joint_feedback(const qs_feedback *q, const dReal *lambda)
 }
 
 // v += h M^-1 (f + J^T lambda) for every body of the island, with fc the
-// island's M^-1 J^T lambda. Without constraints (fc zero) this is
-// dxIslandUpdateVelocities to the bit.
-static void update_velocities(const dxIsland *is, const dxIslandBodies *bd, const dReal *fc,
-                              dReal h)
+// island's M^-1 J^T lambda (without constraints, fc zero, this is
+// dxIslandUpdateVelocities to the bit); then the island's integration, each
+// body moved right after its velocity update unless the world corrects
+// positions (which needs every body of the island moved first).
+static void finish_island(const dxIsland *is, const dxIslandBodies *bd, const dReal *fc,
+                          dReal h, int correct)
 {
     for (int b = 0; b < is->nb; b++) {
         struct dxBody *body = is->bodies[b];
@@ -504,7 +506,10 @@ static void update_velocities(const dxIsland *is, const dxIslandBodies *bd, cons
         }
         dCopyVector3(body->lvel, v);
         dCopyVector3(body->avel, v + 3);
+        if (!correct) dxBodyMove(body, h);
     }
+    if (correct) dxIslandIntegrate(is, h);
+    else dxIslandFinish(is);
 }
 
 int dWorldQuickStep(dWorldID w, dReal stepsize)
@@ -538,10 +543,9 @@ int dWorldQuickStep(dWorldID w, dReal stepsize)
     }
     for (int k = 0; k < sys.nfeedback; k++) joint_feedback(&sys.feedback[k], sys.lambda);
     dxQuickWarmEnd(w, sys.warm, sys.lambda);   // before the bodies move
-    for (int i = 0; i < count; i++) {
-        update_velocities(&islands[i], &bd[i], sys.fc + 6 * parts[i].body0, h);
-        dxIslandIntegrate(&islands[i], h);
-    }
+    const int correct = w->position_iterations > 0;
+    for (int i = 0; i < count; i++)
+        finish_island(&islands[i], &bd[i], sys.fc + 6 * parts[i].body0, h, correct);
     dxStepKinematicBodies(w, h);
     dxStepEnd(islands, count, h);
     return 1;

@@ -150,8 +150,11 @@ void dxIslandUpdateVelocities(const dxIsland *is, const dxIslandBodies *bd,
 // dxIslandFinish.
 void dxIslandIntegrate(const dxIsland *is, dReal h);
 // Damping, then positions and orientations from the velocities (touches only
-// the island's bodies).
+// the island's bodies): dxBodyMove for each.
 void dxIslandMove(const dxIsland *is, dReal h);
+// One body's part of dxIslandMove: its gyroscopic ledger entry closed,
+// damping, position and orientation.
+void dxBodyMove(struct dxBody *b, dReal h);
 // After the move, if the world asks for position iterations: that many
 // Gauss-Seidel sweeps over the island's joints moving its bodies to remove
 // the joints' position error (position_correction.c). Touches only the
