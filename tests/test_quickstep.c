@@ -980,6 +980,106 @@ static int test_islands_are_independent_and_reproducible(void)
     return 0;
 }
 
+// A body without joints and with isotropic inertia (no gyroscopic term) moves
+// by the guide's first-order update, to the bit, among many islands of every
+// kind (free ones, boxes on their ground contacts): x += h v, q += h dq/dt
+// (dDQfromW) normalised (dNormalize4), R from q (dRfromQ).
+static int test_free_body_moves_by_the_first_order_update(void)
+{
+    const double size[3] = { 0.4, 0.3, 0.2 };
+    const dReal h = 0.01;
+    dWorldID w = dWorldCreate();
+    dJointGroupID g = dJointGroupCreate(0);
+    dBodyID boxes[12], spins[20];
+    for (int i = 0; i < 12; i++) boxes[i] = box_body(w, 2.0 * i, 5, 0.1, size, 1);
+    for (int i = 0; i < 20; i++) {
+        spins[i] = sphere_body(w, i, 0, 3, 1 + 0.1 * i, 0.1);
+        dBodySetLinearVel(spins[i], 0.5, -0.25 * i, 1);
+        dBodySetAngularVel(spins[i], 3 - 0.4 * i, 0.7 * i, 5);
+        dQuaternion q0 = { 1, 0.1 * i, -0.2, 0.05 * i };
+        dBodySetQuaternion(spins[i], q0);
+    }
+    for (int s = 0; s < 20; s++) {
+        for (int i = 0; i < 12; i++) box_contacts(w, g, boxes[i], 0, size, dContactApprox1, 0.5);
+        dVector3 x[20];
+        dQuaternion q[20];
+        for (int i = 0; i < 20; i++) {
+            const dReal *p = dBodyGetPosition(spins[i]), *v = dBodyGetLinearVel(spins[i]);
+            const dReal *qi = dBodyGetQuaternion(spins[i]);
+            dReal dq[4];
+            dDQfromW(dq, dBodyGetAngularVel(spins[i]), qi);
+            for (int e = 0; e < 3; e++) x[i][e] = p[e] + h * v[e];
+            for (int e = 0; e < 4; e++) q[i][e] = qi[e] + h * dq[e];
+            dNormalize4(q[i]);
+        }
+
+        CHECK(dWorldQuickStep(w, h) == 1);
+        dJointGroupEmpty(g);
+
+        for (int i = 0; i < 20; i++) {
+            const dReal *p = dBodyGetPosition(spins[i]), *qi = dBodyGetQuaternion(spins[i]);
+            const dReal *R = dBodyGetRotation(spins[i]);
+            dMatrix3 Rq;
+            dRfromQ(Rq, q[i]);
+            CHECK(p[0] == x[i][0] && p[1] == x[i][1] && p[2] == x[i][2]);
+            CHECK(qi[0] == q[i][0] && qi[1] == q[i][1] && qi[2] == q[i][2] && qi[3] == q[i][3]);
+            for (int e = 0; e < 12; e++) CHECK(e % 4 == 3 || R[e] == Rq[e]);
+        }
+    }
+    dJointGroupDestroy(g);
+    dWorldDestroy(w);
+    return 0;
+}
+
+// Many small islands with rows (stacks of one to three boxes sliding on
+// their contacts: the islands are ordered by their number of rows and their
+// rows interleaved) step exactly as each would alone, and a warm step of
+// them allocates nothing.
+static int test_many_small_islands_step_as_alone(void)
+{
+    enum { N = 40, H = 3 };
+    const double size[3] = { 0.4, 0.3, 0.2 };
+    dWorldID all = dWorldCreate(), one = dWorldCreate();
+    dWorldSetGravity(all, 0, 0, -G);
+    dWorldSetGravity(one, 0, 0, -G);
+    dJointGroupID g = dJointGroupCreate(0);
+    dBodyID b[N][H] = { { 0 } }, alone[H] = { 0 };
+    const int k = 17;   // a stack of k % H + 1 = 3 boxes, also in `one`
+    for (int i = 0; i < N; i++) {
+        for (int l = 0; l <= i % H; l++) {
+            b[i][l] = box_body(all, 2.0 * i, 0, 0.1 + 0.2 * l, size, 1);
+            dBodySetLinearVel(b[i][l], 0.2 + 0.01 * i, 0, 0);   // the friction rows work
+            if (i != k) continue;
+            alone[l] = box_body(one, 2.0 * i, 0, 0.1 + 0.2 * l, size, 1);
+            dBodySetLinearVel(alone[l], 0.2 + 0.01 * i, 0, 0);
+        }
+    }
+    int counted = -1;
+    for (int s = 0; s < 30; s++) {
+        for (int i = 0; i < N; i++)
+            for (int l = 0; l <= i % H; l++)
+                box_contacts(all, g, b[i][l], l ? b[i][l - 1] : 0, size, dContactApprox1, 0.5);
+        for (int l = 0; l < H; l++)
+            box_contacts(one, g, alone[l], l ? alone[l - 1] : 0, size, dContactApprox1, 0.5);
+
+        if (s == 20) test_count_allocations();
+        CHECK(dWorldQuickStep(all, 0.01) == 1);
+        if (s == 20) counted = test_allocations_counted();
+        CHECK(dWorldQuickStep(one, 0.01) == 1);
+        dJointGroupEmpty(g);
+
+        for (int l = 0; l < H; l++) {
+            const dReal *p = dBodyGetPosition(b[k][l]), *q = dBodyGetPosition(alone[l]);
+            CHECK(p[0] == q[0] && p[1] == q[1] && p[2] == q[2]);
+        }
+    }
+    CHECK(counted == 0);
+    dJointGroupDestroy(g);
+    dWorldDestroy(all);
+    dWorldDestroy(one);
+    return 0;
+}
+
 // ---- parameters and bad input ----------------------------------------------------
 
 static int test_parameters_round_trip_and_bad_values(void)
@@ -1091,6 +1191,8 @@ const test_case test_cases[] = {
     TEST_CASE(test_box_stack_stands),
     TEST_CASE(test_box_pyramid_stands),
     TEST_CASE(test_islands_are_independent_and_reproducible),
+    TEST_CASE(test_free_body_moves_by_the_first_order_update),
+    TEST_CASE(test_many_small_islands_step_as_alone),
     TEST_CASE(test_parameters_round_trip_and_bad_values),
     TEST_CASE(test_bad_step_size_changes_nothing),
     TEST_CASE(test_warm_step_allocates_nothing),

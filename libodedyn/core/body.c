@@ -15,7 +15,28 @@
     DX_CHECK_ARG(dxBodyIsLive(b), on_fail, "body is NULL or was destroyed")
 #define CHECK_RESULT(r, on_fail) DX_CHECK_ARG((r) != NULL, on_fail, "result is NULL")
 
-void dxBodyUpdateRotation(struct dxBody *b) { dRfromQ(b->R, b->q); }
+// R from q with dRfromQ's products in its order (the same numbers, without
+// its call and argument check: once a body and step).
+void dxBodyUpdateRotation(struct dxBody *b)
+{
+    const dReal w = b->q[0], x = b->q[1], y = b->q[2], z = b->q[3];
+    const dReal xx = 2 * x * x, yy = 2 * y * y, zz = 2 * z * z;
+    const dReal xy = 2 * x * y, xz = 2 * x * z, yz = 2 * y * z;
+    const dReal wx = 2 * w * x, wy = 2 * w * y, wz = 2 * w * z;
+    dReal *R = b->R;
+    R[0] = 1 - yy - zz;
+    R[1] = xy - wz;
+    R[2] = xz + wy;
+    R[3] = 0;
+    R[4] = xy + wz;
+    R[5] = 1 - xx - zz;
+    R[6] = yz - wx;
+    R[7] = 0;
+    R[8] = xz - wy;
+    R[9] = yz + wx;
+    R[10] = 1 - xx - yy;
+    R[11] = 0;
+}
 
 void dxBodyNotifyMoved(struct dxBody *b)
 {

@@ -29,11 +29,39 @@ static void rotation_quaternion(dQuaternion q, const dReal *v, dReal h)
 }
 
 // q += h * dq/dt for angular velocity w (first order; normalised later).
-static void infinitesimal_rotation(dQuaternion q, const dReal *w, dReal h)
+// dq/dt = (-w.qv, q0 w + w x qv) / 2 with dDQfromW's products in its order
+// (the same numbers, without its call and argument check: once a body and
+// step).
+static inline void infinitesimal_rotation(dQuaternion q, const dReal *w, dReal h)
 {
-    dReal dq[4];
-    dDQfromW(dq, w, q);
-    for (int i = 0; i < 4; i++) q[i] += h * dq[i];
+    const dReal w0 = REAL(0.5) * w[0], w1 = REAL(0.5) * w[1], w2 = REAL(0.5) * w[2];
+    const dReal q0 = q[0], q1 = q[1], q2 = q[2], q3 = q[3];
+    q[0] = q0 + h * (-w0 * q1 - w1 * q2 - w2 * q3);
+    q[1] = q1 + h * (w0 * q0 + w1 * q3 - w2 * q2);
+    q[2] = q2 + h * (w1 * q0 + w2 * q1 - w0 * q3);
+    q[3] = q3 + h * (w2 * q0 + w0 * q2 - w1 * q1);
+}
+
+// dNormalize4(q) for a body's quaternion: scaled by its largest component,
+// then divided by its length, dNormalize4's operations in its order (the
+// same numbers, inline); a zero or non-finite q (or a sum of components
+// that overflows) goes to dNormalize4 itself, which reports it.
+static inline void normalize_quaternion(dQuaternion q)
+{
+    const dReal sum = q[0] + q[1] + q[2] + q[3];
+    dReal m = 0;
+    for (int i = 0; i < 4; i++)
+        if (dFabs(q[i]) > m) m = dFabs(q[i]);
+    if (!(m > 0) || sum - sum != 0) {   // x - x is 0 for a finite x only
+        dNormalize4(q);
+        return;
+    }
+    const dReal s0 = q[0] / m, s1 = q[1] / m, s2 = q[2] / m, s3 = q[3] / m;
+    const dReal len = dSqrt(s0 * s0 + s1 * s1 + s2 * s2 + s3 * s3);
+    q[0] = s0 / len;
+    q[1] = s1 / len;
+    q[2] = s2 / len;
+    q[3] = s3 / len;
 }
 
 void dxBodyIntegrate(struct dxBody *b, dReal h)
@@ -43,8 +71,9 @@ void dxBodyIntegrate(struct dxBody *b, dReal h)
     if (b->flags & DX_BODY_FINITE_ROTATION) {
         // Finite rotation about the axis (or about w itself), and with an
         // axis the remaining part of w infinitesimally.
-        dVector3 finite, rest;
-        if (b->flags & DX_BODY_FINITE_ROTATION_AXIS) {
+        const int axis = (b->flags & DX_BODY_FINITE_ROTATION_AXIS) != 0;
+        dVector3 finite, rest = { 0, 0, 0 };
+        if (axis) {
             dReal k = dCalcVectorDot3(b->finite_rot_axis, b->avel);
             dCopyScaledVector3(finite, b->finite_rot_axis, k);
             dSubtractVectors3(rest, b->avel, finite);
@@ -55,11 +84,11 @@ void dxBodyIntegrate(struct dxBody *b, dReal h)
         rotation_quaternion(r, finite, h);
         dQMultiply0(q, r, b->q);
         dCopyVector4(b->q, q);
-        if (b->flags & DX_BODY_FINITE_ROTATION_AXIS) infinitesimal_rotation(b->q, rest, h);
+        if (axis) infinitesimal_rotation(b->q, rest, h);
     } else {
         infinitesimal_rotation(b->q, b->avel, h);
     }
-    dNormalize4(b->q);
+    normalize_quaternion(b->q);
     dxBodyUpdateRotation(b);
 }
 
@@ -89,14 +118,16 @@ static void finish_body(struct dxBody *b)
     dZeroVector3(b->torque);
 }
 
+void dxBodyMove(struct dxBody *b, dReal h)
+{
+    dxBodyGyroscopicEnd(b, h);
+    damp(b);
+    dxBodyIntegrate(b, h);
+}
+
 void dxIslandMove(const dxIsland *is, dReal h)
 {
-    for (int i = 0; i < is->nb; i++) {
-        struct dxBody *b = is->bodies[i];
-        dxBodyGyroscopicEnd(b, h);
-        damp(b);
-        dxBodyIntegrate(b, h);
-    }
+    for (int i = 0; i < is->nb; i++) dxBodyMove(is->bodies[i], h);
 }
 
 void dxIslandFinish(const dxIsland *is)

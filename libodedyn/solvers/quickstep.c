@@ -106,6 +106,8 @@ QS_INLINE uint32_t random_hash(uint32_t x)
 #if QS_SHUFFLE_AVX2
 // random_places eight at a time: the hash with vpmulld, the products of the
 // even and the odd 32-bit lanes with vpmuludq, their high halves blended.
+// The last eight may reach past count (j has room for RANDOM_BLOCK, a
+// multiple of eight): those places are never read.
 __attribute__((target("avx2"))) static unsigned random_places_avx2(uint32_t state, unsigned lo,
                                                                    unsigned count, unsigned *j)
 {
@@ -117,7 +119,7 @@ __attribute__((target("avx2"))) static unsigned random_places_avx2(uint32_t stat
     __m256i m = _mm256_add_epi32(_mm256_set1_epi32((int)(lo + 1)), lane);
     const __m256i x8 = _mm256_set1_epi32((int)(8 * RANDOM_STEP)), m8 = _mm256_set1_epi32(8);
     unsigned i = 0;
-    for (; i + 8 <= count; i += 8) {
+    for (; i < count; i += 8) {
         __m256i h = _mm256_xor_si256(x, _mm256_srli_epi32(x, 16));
         h = _mm256_mullo_epi32(h, c1);
         h = _mm256_xor_si256(h, _mm256_srli_epi32(h, 15));
@@ -139,13 +141,15 @@ int dxQuickShuffleAVX2 = 1;
 // The places j[i] in [0, lo + i] that a Fisher-Yates shuffle's steps
 // k = lo + i (i = 0 .. count - 1) swap with, from the state's next count
 // numbers, the first for the highest k: a uniform index in [0, k] by
-// multiply-shift.
-static void random_places(uint32_t state, unsigned lo, unsigned count, unsigned *j)
+// multiply-shift. avx2: the processor has it and dxQuickShuffleAVX2 asks
+// for it (found once a step).
+QS_INLINE void random_places(uint32_t state, unsigned lo, unsigned count, unsigned *j, int avx2)
 {
     unsigned i = 0;
 #if QS_SHUFFLE_AVX2
-    if (count >= 8 && dxQuickShuffleAVX2 && __builtin_cpu_supports("avx2"))
-        i = random_places_avx2(state, lo, count, j);
+    if (avx2) i = random_places_avx2(state, lo, count, j);
+#else
+    (void)avx2;
 #endif
     for (; i < count; i++) {
         const uint32_t x = random_hash(state + (count - i) * RANDOM_STEP);
@@ -162,7 +166,18 @@ static void random_places(uint32_t state, unsigned lo, unsigned count, unsigned 
 typedef struct qs_reorder {
     const unsigned *normal;
     unsigned *at;
+    int avx2;   // random_places with AVX2
 } qs_reorder;
+
+// Whether random_places takes its AVX2 version.
+static int shuffle_avx2(void)
+{
+#if QS_SHUFFLE_AVX2
+    return dxQuickShuffleAVX2 && __builtin_cpu_supports("avx2");
+#else
+    return 0;
+#endif
+}
 
 // The base of an island's g-th reshuffle of a step, for its n rows: at[r]
 // minus it is below n exactly for the rows the reshuffle has placed (at[]
@@ -201,7 +216,7 @@ QS_INLINE void place(unsigned *o, size_t k, unsigned r, unsigned base, unsigned 
 // Shuffle an island's n rows order[0, n) (Fisher-Yates, downwards) with its
 // generator state, each friction row after its normal row (place); base:
 // reshuffle_base.
-static void reshuffle(int *order, int n, uint32_t *state, unsigned base, const qs_reorder *re)
+QS_INLINE void reshuffle(int *order, int n, uint32_t *state, unsigned base, const qs_reorder *re)
 {
     unsigned j[RANDOM_BLOCK];
     unsigned *o = (unsigned *)order, *at = re->at;
@@ -209,7 +224,7 @@ static void reshuffle(int *order, int n, uint32_t *state, unsigned base, const q
     uint32_t s = *state;
     for (size_t top = n > 1 ? (size_t)n - 1 : 0; top > 0;) {
         const size_t count = top < RANDOM_BLOCK ? top : RANDOM_BLOCK, lo = top - count + 1;
-        random_places(s, (unsigned)lo, (unsigned)count, j);
+        random_places(s, (unsigned)lo, (unsigned)count, j, re->avx2);
         s += (uint32_t)count * RANDOM_STEP;
 #if defined(__GNUC__)
 #pragma GCC unroll 4
@@ -229,7 +244,7 @@ static void reshuffle(int *order, int n, uint32_t *state, unsigned base, const q
 void dxQuickReshuffle(int *order, int n, uint32_t *state, unsigned base, const unsigned *normal,
                       unsigned *at)
 {
-    const qs_reorder re = { normal, at };
+    const qs_reorder re = { normal, at, shuffle_avx2() };
     reshuffle(order, n, state, base, &re);
 }
 
@@ -260,14 +275,41 @@ static int island_length(const qs_island *p, int block)
     return block ? p->nblocks : p->norder;
 }
 
+// list[0, n) (islands) in tmp, longest first and the same length in list's
+// order, by counting (O(n + longest); counters from arena a).
+static void sort_by_counting(const qs_island *parts, int block, const int *list, int n,
+                             int longest, int *tmp, dxArena *a)
+{
+    int *start = DX_ARENA_ARRAY(a, int, longest + 1);
+    for (int len = 0; len <= longest; len++) start[len] = 0;
+    for (int k = 0; k < n; k++) start[island_length(&parts[list[k]], block)]++;
+    int before = 0;   // islands longer than len
+    for (int len = longest; len > 0; len--) {
+        const int c = start[len];
+        start[len] = before;
+        before += c;
+    }
+    for (int k = 0; k < n; k++) tmp[start[island_length(&parts[list[k]], block)]++] = list[k];
+}
+
 // The islands with blocks (block = 1) or rows (block = 0) into list, longest
 // first and the same length in island order; returns how many. tmp: scratch
-// for count. (A stable bottom-up merge sort: no allocation, O(n log n).)
-static int islands_by_length(const qs_island *parts, int count, int block, int *list, int *tmp)
+// for count. (A stable sort: by counting when the islands are many next to
+// their lengths, as many small ones; else bottom-up merging, O(n log n).)
+static int islands_by_length(const qs_island *parts, int count, int block, int *list, int *tmp,
+                             dxArena *a)
 {
-    int n = 0;
-    for (int i = 0; i < count; i++)
-        if (island_length(&parts[i], block) > 0) list[n++] = i;
+    int n = 0, longest = 0;
+    for (int i = 0; i < count; i++) {
+        const int len = island_length(&parts[i], block);
+        if (len > 0) list[n++] = i;
+        if (len > longest) longest = len;
+    }
+    if (n > 1 && longest <= 8 * n) {
+        sort_by_counting(parts, block, list, n, longest, tmp, a);
+        memcpy(list, tmp, sizeof(int) * (size_t)n);
+        return n;
+    }
     int *from = list, *to = tmp;
     for (int width = 1; width < n; width *= 2) {
         for (int lo = 0; lo < n; lo += 2 * width) {
@@ -317,7 +359,7 @@ static qs_reorder reorder_begin(dxArena *a, qs_system *sys)
         normal[r] = (unsigned)row[f[r]];   // -1: NO_ROW
         at[r] = ~0u;
     }
-    qs_reorder re = { normal, at };
+    qs_reorder re = { normal, at, shuffle_avx2() };
     return re;
 }
 
@@ -328,6 +370,17 @@ static void copy_ints(int *to, const int *from, int n)
     int k = 0;
     for (; k + 8 <= n; k += 8) memcpy(to + k, from + k, 8 * sizeof(int));
     for (; k < n; k++) to[k] = from[k];
+}
+
+// The step's g-th reshuffle of the n islands in list, each with its own
+// generator (one call for all: most islands are a few rows).
+static void reshuffle_islands(const qs_system *sys, qs_island *parts, const int *list, int n,
+                              int g, const qs_reorder *re)
+{
+    for (int k = 0; k < n; k++) {
+        qs_island *p = &parts[list[k]];
+        reshuffle(sys->order + p->order0, p->norder, &p->seed, reshuffle_base(g, p->norder), re);
+    }
 }
 
 // After every reshuffle: seq gets the t-th row of each island in list
@@ -367,20 +420,16 @@ static void interleave_rows(const qs_system *sys, const qs_island *parts, const 
 static void solve(dxArena *a, qs_system *sys, qs_island *parts, int count, int iterations,
                   int *list, int *tmp)
 {
-    const int with_blocks = islands_by_length(parts, count, 1, list, tmp);
+    const int with_blocks = islands_by_length(parts, count, 1, list, tmp, a);
     interleave_blocks(sys, parts, list, with_blocks);
     dxQuickBatchBlocks(a, sys, with_blocks);
-    const int n = islands_by_length(parts, count, 0, list, tmp);
+    const int n = islands_by_length(parts, count, 0, list, tmp, a);
     const qs_reorder re = reorder_begin(a, sys);
     if (n == 1) sys->seq = sys->order + parts[list[0]].order0;   // swept as it is
     const int **from = n > 1 ? DX_ARENA_ARRAY(a, const int *, n) : NULL;
     for (int it = 0; it < iterations; it++) {
         if (it % REORDER_PERIOD == 0) {
-            for (int k = 0; k < n; k++) {
-                qs_island *p = &parts[list[k]];
-                reshuffle(sys->order + p->order0, p->norder, &p->seed,
-                          reshuffle_base(it / REORDER_PERIOD, p->norder), &re);
-            }
+            reshuffle_islands(sys, parts, list, n, it / REORDER_PERIOD, &re);
             if (n > 1) interleave_rows(sys, parts, list, n, from);
         }
         dxQuickSweep(sys, it & 1);
@@ -438,10 +487,12 @@ static void joint_feedback(const qs_feedback *q, const dReal *lambda)
 }
 
 // v += h M^-1 (f + J^T lambda) for every body of the island, with fc the
-// island's M^-1 J^T lambda. Without constraints (fc zero) this is
-// dxIslandUpdateVelocities to the bit.
-static void update_velocities(const dxIsland *is, const dxIslandBodies *bd, const dReal *fc,
-                              dReal h)
+// island's M^-1 J^T lambda (without constraints, fc zero, this is
+// dxIslandUpdateVelocities to the bit); then the island's integration, each
+// body moved right after its velocity update unless the world corrects
+// positions (which needs every body of the island moved first).
+static void finish_island(const dxIsland *is, const dxIslandBodies *bd, const dReal *fc,
+                          dReal h, int correct)
 {
     for (int b = 0; b < is->nb; b++) {
         struct dxBody *body = is->bodies[b];
@@ -455,7 +506,10 @@ static void update_velocities(const dxIsland *is, const dxIslandBodies *bd, cons
         }
         dCopyVector3(body->lvel, v);
         dCopyVector3(body->avel, v + 3);
+        if (!correct) dxBodyMove(body, h);
     }
+    if (correct) dxIslandIntegrate(is, h);
+    else dxIslandFinish(is);
 }
 
 int dWorldQuickStep(dWorldID w, dReal stepsize)
@@ -475,7 +529,9 @@ int dWorldQuickStep(dWorldID w, dReal stepsize)
     for (int i = 0; i < count; i++) {
         // (an island without joints has no rows to shuffle)
         parts[i].seed = islands[i].nj > 0 ? island_seed(&islands[i]) : 0;
-        dxIslandPrepare(w, a, &islands[i], h, &bd[i]);
+        const int body0 = sys.nbodies;   // where dxQuickBuild puts the island's bodies
+        dxIslandPrepareAt(w, &islands[i], h, sys.inv_mass + body0,
+                          sys.inv_inertia + 12 * (size_t)body0, &bd[i]);
         dxQuickBuild(w, &islands[i], &bd[i], h, &sys, &parts[i]);
     }
     const int threads = dxStepThreadCount(w, count, __func__);
@@ -487,10 +543,9 @@ int dWorldQuickStep(dWorldID w, dReal stepsize)
     }
     for (int k = 0; k < sys.nfeedback; k++) joint_feedback(&sys.feedback[k], sys.lambda);
     dxQuickWarmEnd(w, sys.warm, sys.lambda);   // before the bodies move
-    for (int i = 0; i < count; i++) {
-        update_velocities(&islands[i], &bd[i], sys.fc + 6 * parts[i].body0, h);
-        dxIslandIntegrate(&islands[i], h);
-    }
+    const int correct = w->position_iterations > 0;
+    for (int i = 0; i < count; i++)
+        finish_island(&islands[i], &bd[i], sys.fc + 6 * parts[i].body0, h, correct);
     dxStepKinematicBodies(w, h);
     dxStepEnd(islands, count, h);
     return 1;

@@ -184,6 +184,8 @@ typedef struct qs_system {
     dReal *fc;             // 6 per body (and island dummy): M^-1 J^T lambda
     qs_feedback *feedback;
     dReal *rates;          // 6 per body: v/h + M^-1 f (build scratch)
+    dReal *inv_mass;       // per body (and dummy, unset): the step's dxIslandBodies
+    dReal *inv_inertia;    // 12 per body (and dummy, unset)
     int next;              // the next free lambda position (build)
     qs_scratch *scratch;   // per-joint build scratch
     dxWarmCache *warm;     // the world's contact cache (NULL: no contacts yet)

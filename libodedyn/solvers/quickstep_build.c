@@ -566,8 +566,11 @@ static void warm_apply(const qs_jrows *jr, const int *pos, const qs_row *rows,
 
 // ---- the islands ----------------------------------------------------------------
 
-// Scratch for one joint's rows and their lambda positions.
+// Scratch for the build, allocated once a step: one island's joint rows
+// (the largest island's number of joints), one joint's rows' lambda
+// positions.
 struct qs_scratch {
+    struct qs_jrows *jrows;
     int *pos;
     char *done;
 };
@@ -585,13 +588,14 @@ static void keep_feedback(dxArena *a, dxJoint *j, const qs_jrows *jr, const int 
     fb->m = jr->m;
 }
 
-// The rows of every joint of the island (count_rows done), in arena memory
-// that lives until the step ends; contacts that go straight to the solver's
-// rows are only marked (their rows are made in dxQuickBuild).
-static qs_jrows *fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h)
+// The rows of every joint of the island (count_rows done) into the step's
+// jrows scratch, their numbers in arena memory that lives until the step
+// ends (one piece, none when every joint is a direct contact); contacts that
+// go straight to the solver's rows are only marked (their rows are made in
+// dxQuickBuild).
+static qs_jrows *fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h,
+                                  qs_jrows *jrows)
 {
-    dxArena *a = w->arena;
-    qs_jrows *jrows = DX_ARENA_ARRAY(a, qs_jrows, is->nj + 1);
     size_t m = 0;
     for (int k = 0; k < is->nj; k++) {
         dxJoint *j = is->joints[k];
@@ -600,9 +604,11 @@ static qs_jrows *fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h
                           dxQuickContactIsDirect(j);
         if (!jrows[k].direct) m += (size_t)j->rows.m;
     }
-    dReal *J = DX_ARENA_ARRAY(a, dReal, m * DX_ROW_SKIP + 1);
-    dReal *num = DX_ARENA_ARRAY(a, dReal, 4 * m + 1);
-    int *findex = DX_ARENA_ARRAY(a, int, m + 1);
+    if (m == 0) return jrows;
+    // J (12 a row), then c, cfm, lo, hi (m each), then findex.
+    dReal *J = dxArenaAlloc(w->arena, sizeof(dReal) * 16 * m + sizeof(int) * m);
+    dReal *num = J + m * DX_ROW_SKIP;
+    int *findex = (int *)(num + 4 * m);
     for (int k = 0; k < is->nj; k++) {
         dxJoint *j = is->joints[k];
         qs_jrows *jr = &jrows[k];
@@ -622,13 +628,25 @@ static qs_jrows *fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h
     return jrows;
 }
 
+// Set n bytes at p to `byte`, 64 at a time in vector stores (libc's memset
+// does a few kilobytes and more with `rep stosb`, which callgrind counts as
+// an instruction a byte; the same stores either way).
+static void fill_bytes(void *p, int byte, size_t n)
+{
+    char *c = p;
+    size_t k = 0;
+    for (; k + 64 <= n; k += 64) memset(c + k, byte, 64);
+    memset(c + k, byte, n - k);
+}
+
 void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_system *sys)
 {
     dxArena *a = w->arena;
-    int m = 0, max_m = 0, nfeedback = 0, nbodies = 0, ncontacts = 0;
+    int m = 0, max_m = 0, max_nj = 0, nfeedback = 0, nbodies = 0, ncontacts = 0;
     for (int i = 0; i < count; i++) {
         const dxIsland *is = &islands[i];
         nbodies += is->nb + 1;   // and the island's dummy
+        if (is->nj > max_nj) max_nj = is->nj;
         for (int k = 0; k < is->nj; k++) {
             dxJoint *j = is->joints[k];
             // A contact's count is fixed at its creation and kept in
@@ -646,6 +664,8 @@ void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_syst
     sys->lambda = DX_ARENA_ARRAY(a, dReal, m + 1);
     sys->fc = DX_ARENA_ARRAY(a, dReal, 6 * (size_t)nbodies);
     sys->rates = DX_ARENA_ARRAY(a, dReal, 6 * (size_t)nbodies);
+    sys->inv_mass = DX_ARENA_ARRAY(a, dReal, nbodies);
+    sys->inv_inertia = DX_ARENA_ARRAY(a, dReal, 12 * (size_t)nbodies);
     sys->blocks = DX_ARENA_ARRAY(a, qs_block, m / 2 + 1);
     sys->bseq = DX_ARENA_ARRAY(a, const qs_block *, m / 2 + 1);
     sys->rows = DX_ARENA_ARRAY(a, qs_row, m + 1);
@@ -654,13 +674,14 @@ void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_syst
     sys->at = DX_ARENA_ARRAY(a, int, m + 1);
     sys->row_pos = DX_ARENA_ARRAY(a, int, m + 1);
     sys->row_f = DX_ARENA_ARRAY(a, int, m + 1);
-    for (int i = 0; i <= m; i++) sys->at[i] = -1;
+    fill_bytes(sys->at, 0xff, sizeof(int) * ((size_t)m + 1));   // -1
     sys->feedback = DX_ARENA_ARRAY(a, qs_feedback, nfeedback + 1);
-    memset(sys->fc, 0, sizeof(dReal) * 6 * (size_t)nbodies);
-    memset(sys->lambda, 0, sizeof(dReal) * (size_t)m);
+    fill_bytes(sys->fc, 0, sizeof(dReal) * 6 * (size_t)nbodies);
+    fill_bytes(sys->lambda, 0, sizeof(dReal) * (size_t)m);
     sys->lambda[m] = 1;
 
     qs_scratch *s = DX_ARENA_ARRAY(a, qs_scratch, 1);
+    s->jrows = DX_ARENA_ARRAY(a, qs_jrows, max_nj + 1);
     s->pos = DX_ARENA_ARRAY(a, int, max_m + 1);
     s->done = DX_ARENA_ARRAY(a, char, max_m + 1);
     sys->scratch = s;
@@ -681,7 +702,7 @@ void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *b
     // Every joint's rows first, the bodies' rates after: a limit motor that
     // powers against its stop adds its force to the bodies while its rows are
     // filled (joint_limot.c), and the rates must include that force.
-    qs_jrows *jrows = fill_island_rows(w, is, h);
+    qs_jrows *jrows = fill_island_rows(w, is, h, s->jrows);
     dReal *rates = sys->rates + 6 * part->body0;
     dxIslandBodyRates(is, bd, fps, rates);
     const qs_input in = { bd, rates, fps, w->erp, w->qs_w, part->body0, is->nb, 0 };

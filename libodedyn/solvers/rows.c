@@ -13,24 +13,62 @@
 #include <math.h>
 #include <string.h>
 
+// Two numbers at a time (GCC/Clang vector extension: SSE2).
+typedef dReal dxRealPair __attribute__((vector_size(2 * sizeof(dReal))));
+
+static inline dxRealPair pair_of(dReal a, dReal b)
+{
+    const dxRealPair v = { a, b };
+    return v;
+}
+
+// Are the off-diagonal entries of the 3x3 matrix M (dMatrix3 layout: 1, 2,
+// 4, 6, 8, 9) all zero? (Three pairs compared at once.)
+static inline int is_diagonal(const dReal *M)
+{
+    const dxRealPair zero = { 0, 0 };
+    dxRealPair a, c;
+    memcpy(&a, M + 1, sizeof a);
+    memcpy(&c, M + 8, sizeof c);
+    const __typeof__(a == zero) z = (a == zero) & (pair_of(M[4], M[6]) == zero) & (c == zero);
+    return (z[0] & z[1]) != 0;
+}
+
+// out = R A R^T for a body-frame inverse inertia A that is not diagonal
+// (out of line: the diagonal case's code stays short).
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void world_inverse_inertia_full(const dReal *A, const dReal *R, dReal *out)
+{
+    dMatrix3 tmp;
+    dMultiply2_333(tmp, A, R);
+    dMultiply0_333(out, R, tmp);
+}
+
 void dxBodyWorldInverseInertia(const struct dxBody *b, dReal *out)
 {
     const dReal *A = b->inv_inertia, *R = b->R;
-    dMatrix3 tmp;
-    if (A[1] == 0 && A[2] == 0 && A[4] == 0 && A[6] == 0 && A[8] == 0 && A[9] == 0) {
+    if (is_diagonal(A)) {
         // A diagonal body-frame inverse (the usual case): tmp = A R^T is R^T
         // with row k scaled by A_kk, the products the general form adds to it
         // being exact zeros; then R tmp summed in dMultiply0_333's order.
-        for (int k = 0; k < 3; k++)
-            for (int j = 0; j < 3; j++) tmp[4 * k + j] = A[5 * k] * R[4 * j + k];
-        for (int i = 0; i < 3; i++)
-            for (int j = 0; j < 3; j++)
-                out[4 * i + j] = tmp[j] * R[4 * i] + tmp[4 + j] * R[4 * i + 1] +
-                                 tmp[8 + j] * R[4 * i + 2];
+        // Columns 0 and 1 of tmp and out as pairs, column 2 alone: each
+        // number the same products and sums.
+        const dxRealPair t0 = pair_of(R[0], R[4]) * A[0];
+        const dxRealPair t1 = pair_of(R[1], R[5]) * A[5];
+        const dxRealPair t2 = pair_of(R[2], R[6]) * A[10];
+        const dReal u0 = A[0] * R[8], u1 = A[5] * R[9], u2 = A[10] * R[10];
+        for (int i = 0; i < 3; i++) {
+            const dReal *Ri = R + 4 * i;
+            const dxRealPair o = t0 * Ri[0] + t1 * Ri[1] + t2 * Ri[2];
+            out[4 * i] = o[0];
+            out[4 * i + 1] = o[1];
+            out[4 * i + 2] = u0 * Ri[0] + u1 * Ri[1] + u2 * Ri[2];
+        }
         return;
     }
-    dMultiply2_333(tmp, A, R);
-    dMultiply0_333(out, R, tmp);
+    world_inverse_inertia_full(A, R, out);
 }
 
 // Newton's method stops when its step is this small relative to the solution.
@@ -166,22 +204,19 @@ static int symmetry_axis(const dReal *I)
     return -1;
 }
 
-// Body b's gyroscopic change x - w (body frame) over a step h, or 0 when it
-// has none (the term off, or an isotropic inertia, where w x I w = 0); its
-// body-frame rate w into w and whether its inertia is diagonal into *diag.
-static int gyroscopic_change(const struct dxBody *b, dReal h, dReal *d, dReal *w, int *diag)
+// Body b's gyroscopic change x - w (body frame) over a step h (the term on,
+// an inertia that is not isotropic); its body-frame rate w into w. diag: its
+// inertia is diagonal.
+static void gyroscopic_change(const struct dxBody *b, dReal h, int diag, dReal *d, dReal *w)
 {
     const dReal *I = b->mass.I;
-    *diag = I[1] == 0 && I[2] == 0 && I[6] == 0 && I[4] == 0 && I[8] == 0 && I[9] == 0;
-    if ((b->flags & DX_BODY_NO_GYROSCOPIC) || (*diag && I[0] == I[5] && I[0] == I[10])) return 0;
     dVector3 x;
     dMultiply1_331(w, b->R, b->avel);   // body frame
-    const int s = *diag ? symmetry_axis(I) : -1;
+    const int s = diag ? symmetry_axis(I) : -1;
     if (s >= 0) gyroscopic_axisymmetric(I, s, w, h, x);
-    else if (*diag) gyroscopic_midpoint(I, 1, w, h, x);
+    else if (diag) gyroscopic_midpoint(I, 1, w, h, x);
     else gyroscopic_midpoint(I, 0, w, h, x);
     dSubtractVectors3(d, x, w);
-    return 1;
 }
 
 // The torque that gives back last step's gyroscopic work, -W / h along the
@@ -204,22 +239,35 @@ static void add_work_correction(const struct dxBody *b, const dReal *wb, int dia
     dAddVectorScaledVector3(t, t, L, k / h);
 }
 
-int dxBodyGyroscopicTorque(struct dxBody *b, dReal h, dReal *t)
+// dxBodyGyroscopicTorque for a body that has the term (out of line: the
+// bodies without it, as spheres, take a short way).
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void gyroscopic_torque(struct dxBody *b, dReal h, int diag, dReal *t)
 {
     dVector3 d, w, Id;
-    int diag;
-    dZeroVector3(b->gyro_torque);
-    b->gyro_work = 0;
-    if (!gyroscopic_change(b, h, d, w, &diag)) {
-        b->gyro_pending = 0;
-        return 0;
-    }
+    gyroscopic_change(b, h, diag, d, w);
     inertia_times(b->mass.I, diag, d, Id);
     dMultiply0_331(t, b->R, Id);
     dScaleVector3(t, dRecip(h));
     if (b->gyro_pending != 0) add_work_correction(b, w, diag, h, t);
     dCopyVector3(b->gyro_torque, t);
     b->gyro_work = REAL(0.5) * h * dCalcVectorDot3(t, b->avel);
+}
+
+int dxBodyGyroscopicTorque(struct dxBody *b, dReal h, dReal *t)
+{
+    const dReal *I = b->mass.I;
+    dZeroVector3(b->gyro_torque);
+    b->gyro_work = 0;
+    // None with the term off, or for an isotropic inertia (w x I w = 0).
+    const int diag = is_diagonal(I);
+    if ((b->flags & DX_BODY_NO_GYROSCOPIC) || (diag && I[0] == I[5] && I[0] == I[10])) {
+        b->gyro_pending = 0;
+        return 0;
+    }
+    gyroscopic_torque(b, h, diag, t);
     return 1;
 }
 
@@ -233,8 +281,15 @@ void dxBodyGyroscopicEnd(struct dxBody *b, dReal h)
 void dxIslandPrepare(struct dxWorld *w, dxArena *a, const dxIsland *is, dReal gyro_h,
                      dxIslandBodies *out)
 {
-    out->inv_mass = DX_ARENA_ARRAY(a, dReal, is->nb);
-    out->inv_inertia = DX_ARENA_ARRAY(a, dReal, 12 * is->nb);
+    dReal *inv_mass = DX_ARENA_ARRAY(a, dReal, is->nb);
+    dxIslandPrepareAt(w, is, gyro_h, inv_mass, DX_ARENA_ARRAY(a, dReal, 12 * is->nb), out);
+}
+
+void dxIslandPrepareAt(struct dxWorld *w, const dxIsland *is, dReal gyro_h, dReal *inv_mass,
+                       dReal *inv_inertia, dxIslandBodies *out)
+{
+    out->inv_mass = inv_mass;
+    out->inv_inertia = inv_inertia;
     for (int i = 0; i < is->nb; i++) {
         struct dxBody *b = is->bodies[i];
         b->tag = i;
@@ -318,9 +373,6 @@ void dxJointRowsFill(struct dxWorld *w, dxJoint *j, dReal h, dReal *J, dReal *c,
                         "no answer): it acts with no force this step", j->cls->name);
 }
 
-// Two numbers at a time (GCC/Clang vector extension: SSE2), for the 12
-// numbers of a row's J.
-typedef dReal dxRealPair __attribute__((vector_size(2 * sizeof(dReal))));
 
 static inline dxRealPair load_pair(const dReal *x)
 {

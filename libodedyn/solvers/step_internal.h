@@ -102,6 +102,9 @@ void dxStepEnd(const dxIsland *islands, int count, dReal h);
 // passes 0 and adds the gyroscopic change per sub-step).
 void dxIslandPrepare(struct dxWorld *w, dxArena *arena, const dxIsland *is, dReal gyro_h,
                      dxIslandBodies *out);
+// The same into the caller's arrays: inv_mass (nb) and inv_inertia (12 nb).
+void dxIslandPrepareAt(struct dxWorld *w, const dxIsland *is, dReal gyro_h, dReal *inv_mass,
+                       dReal *inv_inertia, dxIslandBodies *out);
 // The gyroscopic torque t (world) of body b for a step h (rows.c): the one
 // that takes its angular velocity to the torque-free implicit midpoint
 // solution of Euler's equation, which keeps the rotational energy and |L|,
@@ -148,8 +151,11 @@ void dxIslandUpdateVelocities(const dxIsland *is, const dxIslandBodies *bd,
 // dxIslandFinish.
 void dxIslandIntegrate(const dxIsland *is, dReal h);
 // Damping, then positions and orientations from the velocities (touches only
-// the island's bodies).
+// the island's bodies): dxBodyMove for each.
 void dxIslandMove(const dxIsland *is, dReal h);
+// One body's part of dxIslandMove: its gyroscopic ledger entry closed,
+// damping, position and orientation.
+void dxBodyMove(struct dxBody *b, dReal h);
 // After the move, if the world asks for position iterations: that many
 // Gauss-Seidel sweeps over the island's joints moving its bodies to remove
 // the joints' position error (position_correction.c). Touches only the
