@@ -147,4 +147,14 @@ void dxHullPoseBounds(struct dx_hull *h);
 // (c->pose, c->hull), unless it already is (compared bit for bit).
 void dxConvexPose(dxConvex *c);
 
+// dxConvexPose where the geom may have moved: a valid pose is current while
+// the geom's AABB_BAD flag is clear (the flag is cleared only right after
+// compute_aabb, which poses it, and set by every move), so the bits are
+// compared only when the flag is set (the colliders meet a hull several
+// times a step).
+static inline void dxConvexPoseIfMoved(dxConvex *c)
+{
+    if (!c->pose.valid || (c->g.flags & DX_GEOM_AABB_BAD)) dxConvexPose(c);
+}
+
 #endif

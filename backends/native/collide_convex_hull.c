@@ -124,7 +124,7 @@ dx_hull *dx_hull_posed(const dxGeom *g, dx_hull *h, dx_hull_box *bx)
 {
     if (g->ops->cls == dConvexClass) {
         dxConvex *c = (dxConvex *)g;   // its kept pose changes, the geom does not
-        dxConvexPose(c);
+        dxConvexPoseIfMoved(c);
         return &c->hull;
     }
     for (int i = 0; i < 3; i++) {
