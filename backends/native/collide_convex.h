@@ -59,6 +59,8 @@ static inline const unsigned *dx_hull_polygon(const dx_hull *h, unsigned f, unsi
 double dx_hull_extent(const dx_hull *h, const double m[3], unsigned *idx);
 // min and max over the points of m . x.
 void dx_hull_interval(const dx_hull *h, const double m[3], double *lo, double *hi);
+// Whether the axis m (world) parts a and b.
+int dx_hull_axis_separates(const dx_hull *a, const dx_hull *b, const double m[3]);
 // Clips [*t0, *t1] to where o + t d (world) is inside h, with planes that d
 // runs along (|n . d| below DX_HULL_EPS) kept if o is within tol of them; 0 if
 // empty by more than tol (rounding can leave a point's span crossed).

@@ -528,15 +528,6 @@ static dxHullAxisHint *find_hint(dx_hull *h, const void *other)
     return NULL;
 }
 
-// Whether the axis n (world) parts a and b.
-static int axis_separates(const dx_hull *a, const dx_hull *b, const double n[3])
-{
-    double alo, ahi, blo, bhi;
-    dx_hull_interval(a, n, &alo, &ahi);
-    dx_hull_interval(b, n, &blo, &bhi);
-    return bhi - alo < 0 || ahi - blo < 0;
-}
-
 // h's hint against the geom other, made if there is none (replacing the
 // oldest entry).
 static dxHullAxisHint *hint_entry(dx_hull *h, const void *other)
@@ -598,7 +589,7 @@ int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
             for (int r = 0; r < 3; r++)
                 n[r] = holder->R[3 * r] * e->axis[0] + holder->R[3 * r + 1] * e->axis[1] +
                        holder->R[3 * r + 2] * e->axis[2];
-            if (axis_separates(a, b, n)) return 0;
+            if (dx_hull_axis_separates(a, b, n)) return 0;
         }
     }
     sat_axis face, edge;
