@@ -58,6 +58,7 @@ typedef struct dxHullPose {
     // product of its faces' normals n2 x n1 (the normal of its arc's circle).
     double *px, *py, *pz, *nx, *ny, *nz, *ex, *ey, *ez;
     double centre[3];             // the mean of the points: inside the hull
+    double box[6];                // their bounding box (lo, hi by axis)
 } dxHullPose;
 
 // A hull as the native colliders see it (backends/native/collide_convex*.c):
