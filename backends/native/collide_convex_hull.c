@@ -114,25 +114,61 @@ static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
     h->edges_posed = &bx->edges_posed;
 }
 
-void dx_hull_of_geom(dx_hull *h, const dxGeom *g, dx_hull_box *bx)
+void dx_hull_of_geom(dx_hull *h, const dxGeom *g)
 {
-    const dx_hull *kept = dx_hull_posed(g, h, bx);
-    if (kept != h) *h = *kept;
+    *h = *dx_hull_posed(g);
 }
 
-dx_hull *dx_hull_posed(const dxGeom *g, dx_hull *h, dx_hull_box *bx)
+// Boxes made into hulls, kept (a few per thread) with what they were made
+// from: a box hull is a function of the box's position, rotation and sides
+// alone, so a box met again with the same bits (the static boxes a scene's
+// hulls rest on, met by many hulls a step) is not made again, and keeps the
+// edges and floors a test posed. The geom is only the entry looked at
+// first: its address may be reused, the bits decide.
+enum { BOX_MEMOS = 4, BOX_KEY = 3 + 12 + 3 };
+typedef struct box_memo {
+    const dxGeom *g;
+    dReal key[BOX_KEY];   // pos, R (as the geom holds it), sides
+    dx_hull h;
+    dx_hull_box bx;
+} box_memo;
+static _Thread_local box_memo box_memos[BOX_MEMOS];
+static _Thread_local unsigned box_memo_next;
+
+// The box geom g as a hull: its kept one if made from the same bits.
+static dx_hull *box_posed(const dxGeom *g)
+{
+    dReal key[BOX_KEY];
+    memcpy(key, g->pos, 3 * sizeof(dReal));
+    memcpy(key + 3, g->R, 12 * sizeof(dReal));
+    memcpy(key + 15, ((const dxBox *)g)->side, 3 * sizeof(dReal));
+    box_memo *m = NULL;
+    for (int k = 0; k < BOX_MEMOS && !m; k++)
+        if (box_memos[k].g == g) m = &box_memos[k];
+    if (m && memcmp(m->key, key, sizeof key) == 0) return &m->h;
+    if (!m) {
+        m = &box_memos[box_memo_next];
+        box_memo_next = (box_memo_next + 1) % BOX_MEMOS;
+        m->g = g;
+    }
+    memcpy(m->key, key, sizeof key);
+    dx_hull *h = &m->h;
+    for (int i = 0; i < 3; i++) {
+        h->c[i] = g->pos[i];
+        for (int k = 0; k < 3; k++) h->R[3 * i + k] = g->R[4 * i + k];
+    }
+    box_hull(h, (const dxBox *)g, &m->bx);
+    return h;
+}
+
+dx_hull *dx_hull_posed(const dxGeom *g)
 {
     if (g->ops->cls == dConvexClass) {
         dxConvex *c = (dxConvex *)g;   // its kept pose changes, the geom does not
         dxConvexPoseIfMoved(c);
         return &c->hull;
     }
-    for (int i = 0; i < 3; i++) {
-        h->c[i] = g->pos[i];
-        for (int k = 0; k < 3; k++) h->R[3 * i + k] = g->R[4 * i + k];
-    }
-    box_hull(h, (const dxBox *)g, bx);
-    return h;
+    return box_posed(g);
 }
 
 // Narrows [t0, t1] to where the line o + t d is inside one plane, given
