@@ -228,16 +228,38 @@ typedef struct line_planes {
     int avx2;   // clip four planes at a time
 } line_planes;
 
-static int line_planes_of(const dx_hull *h, const double d[3], line_planes *lp)
+#ifdef DX_CLIP_AVX2
+// m . n for h's plane normals n, four planes at a time from the first (as
+// dot3 makes each), into out; returns how many it made.
+__attribute__((target("avx2"))) static inline unsigned normal_products4(const dx_hull *h,
+                                                                        const double m[3],
+                                                                        double *out)
+{
+    __m256d m0 = _mm256_set1_pd(m[0]), m1 = _mm256_set1_pd(m[1]), m2 = _mm256_set1_pd(m[2]);
+    unsigned f = 0;
+    for (; f + 4 <= h->nplanes; f += 4)
+        _mm256_storeu_pd(out + f,
+                         _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(h->nx + f), m0),
+                                                     _mm256_mul_pd(_mm256_loadu_pd(h->ny + f), m1)),
+                                       _mm256_mul_pd(_mm256_loadu_pd(h->nz + f), m2)));
+    return f;
+}
+#endif
+
+// line_planes for h along d; with AVX2 (avx2 1, in a function built for
+// it) the products four at a time and the clipping too.
+static inline __attribute__((always_inline)) int line_planes_with(const dx_hull *h,
+                                                                  const double d[3],
+                                                                  line_planes *lp, int avx2)
 {
     if (h->nplanes > LINE_PLANES) return 0;
     lp->dl = sqrt(dot3(d, d));
-    for (unsigned f = 0; f < h->nplanes; f++) lp->nd[f] = dot3(h->wn[f], d);
+    unsigned f = 0;
 #ifdef DX_CLIP_AVX2
-    lp->avx2 = __builtin_cpu_supports("avx2");
-#else
-    lp->avx2 = 0;
+    if (avx2) f = normal_products4(h, d, lp->nd);
 #endif
+    for (; f < h->nplanes; f++) lp->nd[f] = dot3(h->wn[f], d);
+    lp->avx2 = avx2;
     return 1;
 }
 
@@ -325,18 +347,62 @@ static int middle_inside_along(const dx_hull *a, const line_planes *la, const dx
     return 1;
 }
 
-// The sides of poly's n points against the plane s . x = off (s . x - off)
-// into side; 1 if every point is inside (not above 0), where clipping
-// keeps poly as it is.
-static int plane_sides(const hull_point *poly, int n, const double s[3], double off,
-                       double *side)
+// plane_sides for poly's points from i on.
+static int plane_sides_from(const hull_point *poly, int i, int n, const double s[3], double off,
+                            double *side)
 {
     int inside = 1;
-    for (int i = 0; i < n; i++) {
+    for (; i < n; i++) {
         side[i] = dot3(s, poly[i].p) - off;
         inside &= side[i] <= 0;
     }
     return inside;
+}
+
+#ifdef DX_CLIP_AVX2
+_Static_assert(sizeof(hull_point) == 4 * sizeof(double), "a hull point is four doubles");
+// plane_sides' first points four at a time (their coordinates gathered by
+// a 4 x 4 transpose: the same products and sums); returns how many it
+// measured, *inside cleared if one of them is not inside.
+__attribute__((target("avx2"))) static inline int plane_sides4(const hull_point *poly, int n,
+                                                               const double s[3], double off,
+                                                               double *side, int *inside)
+{
+    __m256d s0 = _mm256_set1_pd(s[0]), s1 = _mm256_set1_pd(s[1]), s2 = _mm256_set1_pd(s[2]);
+    __m256d vo = _mm256_set1_pd(off), zero = _mm256_setzero_pd();
+    int i = 0, out = 0;
+    for (; i + 4 <= n; i += 4) {
+        __m256d p0 = _mm256_loadu_pd(poly[i].p), p1 = _mm256_loadu_pd(poly[i + 1].p);
+        __m256d p2 = _mm256_loadu_pd(poly[i + 2].p), p3 = _mm256_loadu_pd(poly[i + 3].p);
+        __m256d t0 = _mm256_unpacklo_pd(p0, p1), t1 = _mm256_unpackhi_pd(p0, p1);   // x z, y -
+        __m256d t2 = _mm256_unpacklo_pd(p2, p3), t3 = _mm256_unpackhi_pd(p2, p3);
+        __m256d x = _mm256_permute2f128_pd(t0, t2, 0x20), z = _mm256_permute2f128_pd(t0, t2, 0x31);
+        __m256d y = _mm256_permute2f128_pd(t1, t3, 0x20);
+        __m256d d = _mm256_sub_pd(_mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(s0, x), _mm256_mul_pd(s1, y)),
+                                                _mm256_mul_pd(s2, z)),
+                                  vo);
+        _mm256_storeu_pd(side + i, d);
+        out |= _mm256_movemask_pd(_mm256_cmp_pd(d, zero, _CMP_NLE_UQ));
+    }
+    *inside = !out;
+    return i;
+}
+#endif
+
+// The sides of poly's n points against the plane s . x = off (s . x - off)
+// into side; 1 if every point is inside (not above 0), where clipping
+// keeps poly as it is. With AVX2 (avx2 1) four points at a time.
+static inline __attribute__((always_inline)) int plane_sides(const hull_point *poly, int n,
+                                                             const double s[3], double off,
+                                                             double *side, int avx2)
+{
+    int i = 0, inside = 1;
+#ifdef DX_CLIP_AVX2
+    if (avx2) i = plane_sides4(poly, n, s, off, side, &inside);
+#else
+    (void)avx2;
+#endif
+    return plane_sides_from(poly, i, n, s, off, side) & inside;
 }
 
 // Keeps the part of poly (n points, on the sides plane_sides gives) with
@@ -380,24 +446,71 @@ static int furthest_from_taken(const hull_point *pts, int n, int k, const double
     return best;
 }
 
-// The face contacts: the reference hull r's face f (outward unit nf at
-// offset df, facing the incident hull i). Writes the points, deepest first,
-// at most max (spread), into pts; returns the count (0 if none was found).
-static int face_points(const dx_hull *r, unsigned f, const double nf[3], double df,
-                       const dx_hull *inc, int max, hull_point *pts)
+// The first of inc's faces whose normal is most against nf (least n . nf,
+// made as dot3 makes it; face 0 if none is below infinity).
+static unsigned incident_face_from(const dx_hull *inc, const double nf[3], unsigned g,
+                                   double lowest, unsigned best)
 {
-    // The incident face: the one most against nf.
-    unsigned best = 0, count;
-    double lowest = INFINITY;
-    for (unsigned g = 0; g < inc->nplanes; g++) {
-        double n[3], d;
-        dx_hull_plane(inc, g, n, &d);
-        double c = dot3(n, nf);
+    for (; g < inc->nplanes; g++) {
+        double c = dot3(inc->wn[g], nf);
         if (c < lowest) {
             lowest = c;
             best = g;
         }
     }
+    return best;
+}
+
+#ifdef DX_CLIP_AVX2
+// incident_face four faces at a time: the least product, then the first
+// face that gives it (the same face).
+__attribute__((target("avx2"))) static inline unsigned incident_face4(const dx_hull *inc,
+                                                                      const double nf[3])
+{
+    double prod[LINE_PLANES];
+    unsigned g = normal_products4(inc, nf, prod);
+    __m256d vmin = _mm256_set1_pd(INFINITY);
+    for (unsigned k = 0; k + 4 <= g; k += 4)
+        vmin = _mm256_min_pd(_mm256_loadu_pd(prod + k), vmin);   // a NaN is passed over
+    vmin = _mm256_min_pd(vmin, _mm256_permute2f128_pd(vmin, vmin, 1));
+    double lowest = _mm256_cvtsd_f64(_mm256_min_pd(vmin, _mm256_permute_pd(vmin, 1)));
+    unsigned best = 0;
+    if (lowest < INFINITY) {   // the first of the fours' faces with it
+        __m256d lv = _mm256_set1_pd(lowest);
+        for (unsigned k = 0;; k += 4) {
+            int eq = _mm256_movemask_pd(_mm256_cmp_pd(_mm256_loadu_pd(prod + k), lv, _CMP_EQ_OQ));
+            if (eq) {
+                best = k + (unsigned)__builtin_ctz((unsigned)eq);
+                break;
+            }
+        }
+    }
+    return incident_face_from(inc, nf, g, lowest, best);
+}
+#endif
+
+// The incident face of a face contact: inc's face most against the
+// reference face's normal nf; with AVX2 (avx2 1) for hulls of at most
+// LINE_PLANES planes four at a time.
+static inline __attribute__((always_inline)) unsigned incident_face(const dx_hull *inc,
+                                                                    const double nf[3], int avx2)
+{
+#ifdef DX_CLIP_AVX2
+    if (avx2 && inc->nplanes <= LINE_PLANES) return incident_face4(inc, nf);
+#else
+    (void)avx2;
+#endif
+    return incident_face_from(inc, nf, 0, INFINITY, 0);
+}
+
+// The face contacts: the reference hull r's face f (outward unit nf at
+// offset df, facing the incident hull i). Writes the points, deepest first,
+// at most max (spread), into pts; returns the count (0 if none was found).
+static inline __attribute__((always_inline)) int
+face_points_with(const dx_hull *r, unsigned f, const double nf[3], double df, const dx_hull *inc,
+                 int max, hull_point *pts, int avx2)
+{
+    unsigned best = incident_face(inc, nf, avx2), count;
     const unsigned *idx = dx_hull_polygon(inc, best, &count);
     if (count > MAXP_INCIDENT) return 0;
     hull_point buf[2][MAXP];
@@ -423,14 +536,14 @@ static int face_points(const dx_hull *r, unsigned f, const double nf[3], double 
             off = -off;
         }
         double side[MAXP];
-        if (plane_sides(buf[cur], n, s, off, side)) continue;
+        if (plane_sides(buf[cur], n, s, off, side, avx2)) continue;
         n = clip_plane(buf[cur], n, side, buf[cur ^ 1]);
         cur ^= 1;
     }
     // Points below the reference face, lying inside both hulls along nf.
     int kept = 0, deepest = 0;
     line_planes lr, li;
-    int along = line_planes_of(r, nf, &lr) && line_planes_of(inc, nf, &li);
+    int along = line_planes_with(r, nf, &lr, avx2) && line_planes_with(inc, nf, &li, avx2);
     for (int k = 0; k < n; k++) {
         hull_point *p = &buf[cur][k];
         double depth = df - dot3(nf, p->p);
@@ -457,6 +570,26 @@ static int face_points(const dx_hull *r, unsigned f, const double nf[3], double 
         kept = max;
     }
     return kept;
+}
+
+#ifdef DX_CLIP_AVX2
+__attribute__((target("avx2"))) static int face_points_avx2(const dx_hull *r, unsigned f,
+                                                            const double nf[3], double df,
+                                                            const dx_hull *inc, int max,
+                                                            hull_point *pts)
+{
+    return face_points_with(r, f, nf, df, inc, max, pts, 1);
+}
+#endif
+
+// face_points_with, with AVX2 where the machine has it (chosen when called).
+static int face_points(const dx_hull *r, unsigned f, const double nf[3], double df,
+                       const dx_hull *inc, int max, hull_point *pts)
+{
+#ifdef DX_CLIP_AVX2
+    if (__builtin_cpu_supports("avx2")) return face_points_avx2(r, f, nf, df, inc, max, pts);
+#endif
+    return face_points_with(r, f, nf, df, inc, max, pts, 0);
 }
 
 // The edge of h through its point v parallel to h's edge e (the copy of
