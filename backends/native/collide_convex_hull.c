@@ -275,13 +275,26 @@ static int narrow_from(const dx_hull *h, const line_planes *lp, unsigned f, cons
 }
 
 #ifdef DX_CLIP_AVX2
+// The zero a bound narrowed to a zero ends as: from, if that is a zero
+// (a later equal t does not replace it), else the first t (of n) that is
+// a zero among those whose mask (all bits set) says it narrows the bound.
+static double first_zero(const double *ts, const double *mask, unsigned n, double from)
+{
+    if (from == 0) return from;
+    unsigned f = 0;
+    while (f < n && !(ts[f] == 0 && mask[f] != 0)) f++;   // a set mask is a NaN, != 0
+    return ts[f];
+}
+
 // narrow_from(h, lp, 0, ...) four planes at a time: each lane keeps the
 // least exit (largest entry) of its planes as narrow_to_plane does (t
-// first: a NaN is passed over), then the least (largest) of the lanes:
-// the same numbers, but for which of +0 and -0 wins a tie; where the
-// result is a zero the planes are gone over again in order. Returns how many planes
-// it went over (the rest are left to narrow_from), or -1 if a plane along
-// the line has it outside by more than tol.
+// first: a NaN is passed over, and of equal values the earlier stays),
+// then the least (largest) of the lanes: the same numbers, but for which
+// of +0 and -0 wins a tie, so a result of zero is taken as narrow_from
+// would take it: the bound it started from if that is a zero, else the
+// first plane's zero (each plane's t and side are kept for that). Returns
+// how many planes it went over (the rest are left to narrow_from), or -1
+// if a plane along the line has it outside by more than tol.
 __attribute__((target("avx2"))) static int narrow4(const dx_hull *h, const line_planes *lp,
                                                    const double o[3], double tol, double *t0,
                                                    double *t1)
@@ -290,6 +303,7 @@ __attribute__((target("avx2"))) static int narrow4(const dx_hull *h, const line_
     __m256d o0 = _mm256_set1_pd(o[0]), o1 = _mm256_set1_pd(o[1]), o2 = _mm256_set1_pd(o[2]);
     __m256d par_lim = _mm256_set1_pd(DX_HULL_EPS * lp->dl), low = _mm256_set1_pd(-tol);
     __m256d lo = _mm256_set1_pd(*t0), hi = _mm256_set1_pd(*t1), out = zero;
+    double ts[LINE_PLANES], ups[LINE_PLANES], downs[LINE_PLANES];   // t, and which bound it narrows
     unsigned f = 0;
     for (; f + 4 <= h->nplanes; f += 4) {
         __m256d nd = _mm256_loadu_pd(lp->nd + f);
@@ -304,13 +318,17 @@ __attribute__((target("avx2"))) static int narrow4(const dx_hull *h, const line_
         __m256d down = _mm256_andnot_pd(par, _mm256_cmp_pd(nd, zero, _CMP_NGT_UQ));
         hi = _mm256_blendv_pd(hi, _mm256_min_pd(t, hi), up);
         lo = _mm256_blendv_pd(lo, _mm256_max_pd(t, lo), down);
+        _mm256_storeu_pd(ts + f, t);
+        _mm256_storeu_pd(ups + f, up);
+        _mm256_storeu_pd(downs + f, down);
     }
     if (_mm256_movemask_pd(out)) return -1;
     lo = _mm256_max_pd(lo, _mm256_permute2f128_pd(lo, lo, 1));
     hi = _mm256_min_pd(hi, _mm256_permute2f128_pd(hi, hi, 1));
     double a = _mm256_cvtsd_f64(_mm256_max_pd(lo, _mm256_permute_pd(lo, 1)));
     double b = _mm256_cvtsd_f64(_mm256_min_pd(hi, _mm256_permute_pd(hi, 1)));
-    if (a == 0 || b == 0) return 0;   // a tie of +0 and -0 is decided by the order
+    if (a == 0) a = first_zero(ts, downs, f, *t0);
+    if (b == 0) b = first_zero(ts, ups, f, *t1);
     *t0 = a;
     *t1 = b;
     return (int)f;
