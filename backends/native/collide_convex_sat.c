@@ -100,12 +100,24 @@ static double dot_max(const double m[3], const double *x, const double *y, const
     return mx;
 }
 
-double dx_hull_extent(const dx_hull *h, const double m[3], unsigned *idx)
+#ifdef DX_SIGNS_AVX2
+// m . x for h's points k to k + 3 (m broadcast in m0, m1, m2; made as
+// dot3 makes them).
+__attribute__((target("avx2"))) static inline __m256d products4(__m256d m0, __m256d m1, __m256d m2,
+                                                                const dx_hull *h, unsigned k)
 {
-    if (!idx) return dot_max(m, h->px, h->py, h->pz, h->npts);
-    double best = -INFINITY;
-    unsigned bi = 0;
-    for (unsigned v = 0; v < h->npts; v++) {
+    return _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(m0, _mm256_loadu_pd(h->px + k)),
+                                       _mm256_mul_pd(m1, _mm256_loadu_pd(h->py + k))),
+                         _mm256_mul_pd(m2, _mm256_loadu_pd(h->pz + k)));
+}
+#endif
+
+// The first of h's points from v on with the largest m . x (over best,
+// the largest before v, at bi), into *idx; returns that largest.
+static double extent_index_from(const dx_hull *h, const double m[3], unsigned v, double best,
+                                unsigned bi, unsigned *idx)
+{
+    for (; v < h->npts; v++) {
         double e = dot3(m, h->wp[v]);
         if (e > best) {
             best = e;
@@ -114,6 +126,43 @@ double dx_hull_extent(const dx_hull *h, const double m[3], unsigned *idx)
     }
     *idx = bi;
     return best;
+}
+
+#ifdef DX_SIGNS_AVX2
+// dx_hull_extent with its index, four points at a time: the largest of the
+// fours' products, then the first point that gives it (the same point).
+__attribute__((target("avx2"))) static double extent_index4(const dx_hull *h, const double m[3],
+                                                            unsigned *idx)
+{
+    __m256d m0 = _mm256_set1_pd(m[0]), m1 = _mm256_set1_pd(m[1]), m2 = _mm256_set1_pd(m[2]);
+    __m256d vhi = _mm256_set1_pd(-INFINITY);
+    unsigned n = h->npts & ~3u;
+    for (unsigned k = 0; k < n; k += 4)
+        vhi = _mm256_max_pd(products4(m0, m1, m2, h, k), vhi);   // a NaN is passed over
+    vhi = _mm256_max_pd(vhi, _mm256_permute2f128_pd(vhi, vhi, 1));
+    double best = _mm256_cvtsd_f64(_mm256_max_pd(vhi, _mm256_permute_pd(vhi, 1)));
+    unsigned bi = 0;
+    if (best > -INFINITY) {
+        __m256d bv = _mm256_set1_pd(best);
+        for (unsigned k = 0;; k += 4) {
+            int eq = _mm256_movemask_pd(_mm256_cmp_pd(products4(m0, m1, m2, h, k), bv, _CMP_EQ_OQ));
+            if (eq) {
+                bi = k + (unsigned)__builtin_ctz((unsigned)eq);
+                break;
+            }
+        }
+    }
+    return extent_index_from(h, m, n, best, bi, idx);
+}
+#endif
+
+double dx_hull_extent(const dx_hull *h, const double m[3], unsigned *idx)
+{
+    if (!idx) return dot_max(m, h->px, h->py, h->pz, h->npts);
+#ifdef DX_SIGNS_AVX2
+    if (__builtin_cpu_supports("avx2")) return extent_index4(h, m, idx);
+#endif
+    return extent_index_from(h, m, 0, -INFINITY, 0, idx);
 }
 
 void dx_hull_interval(const dx_hull *h, const double m[3], double *lo, double *hi)
