@@ -206,19 +206,6 @@ typedef struct hull_point {
     double p[3], depth;
 } hull_point;
 
-// pos: the middle of the part of the line q + t n inside both hulls; 0 if
-// there is none.
-static int middle_inside(const dx_hull *a, const dx_hull *b, const double q[3], const double n[3],
-                         double t0, double t1, double pos[3])
-{
-    double tol = DX_HULL_EPS * (a->size + b->size);
-    if (!dx_hull_clip_line(a, q, n, tol, &t0, &t1) || !dx_hull_clip_line(b, q, n, tol, &t0, &t1))
-        return 0;
-    double t = (t0 + t1) / 2;
-    for (int i = 0; i < 3; i++) pos[i] = q[i] + t * n[i];
-    return 1;
-}
-
 // The lines along one direction d, clipped to a hull many times (each
 // point of a face contact): each plane's n . d, made once (dx_hull_clip_line
 // makes the same numbers per call), for hulls of at most LINE_PLANES planes.
@@ -351,14 +338,35 @@ static int clip_line_along(const dx_hull *h, const line_planes *lp, const double
     return *t0 <= *t1 + tol / lp->dl;
 }
 
-// middle_inside for the line q + t n through the whole space, with both
-// hulls' plane products along n made (la for a, lb for b).
+// middle_inside with both hulls' plane products along n made (la for a,
+// lb for b).
 static int middle_inside_along(const dx_hull *a, const line_planes *la, const dx_hull *b,
                                const line_planes *lb, const double q[3], const double n[3],
-                               double pos[3])
+                               double t0, double t1, double pos[3])
 {
-    double tol = DX_HULL_EPS * (a->size + b->size), t0 = -INFINITY, t1 = INFINITY;
+    double tol = DX_HULL_EPS * (a->size + b->size);
     if (!clip_line_along(a, la, q, tol, &t0, &t1) || !clip_line_along(b, lb, q, tol, &t0, &t1))
+        return 0;
+    double t = (t0 + t1) / 2;
+    for (int i = 0; i < 3; i++) pos[i] = q[i] + t * n[i];
+    return 1;
+}
+
+// pos: the middle of the part of the line q + t n, t0 <= t <= t1, inside
+// both hulls; 0 if there is none.
+static int middle_inside(const dx_hull *a, const dx_hull *b, const double q[3], const double n[3],
+                         double t0, double t1, double pos[3])
+{
+    line_planes la, lb;
+#ifdef DX_CLIP_AVX2
+    int avx2 = __builtin_cpu_supports("avx2");
+#else
+    int avx2 = 0;
+#endif
+    if (line_planes_with(a, n, &la, avx2) && line_planes_with(b, n, &lb, avx2))
+        return middle_inside_along(a, &la, b, &lb, q, n, t0, t1, pos);
+    double tol = DX_HULL_EPS * (a->size + b->size);
+    if (!dx_hull_clip_line(a, q, n, tol, &t0, &t1) || !dx_hull_clip_line(b, q, n, tol, &t0, &t1))
         return 0;
     double t = (t0 + t1) / 2;
     for (int i = 0; i < 3; i++) pos[i] = q[i] + t * n[i];
@@ -567,7 +575,7 @@ face_points_with(const dx_hull *r, unsigned f, const double nf[3], double df, co
         double depth = df - dot3(nf, p->p);
         if (depth < 0) continue;
         hull_point q;
-        if (along ? !middle_inside_along(r, &lr, inc, &li, p->p, nf, q.p)
+        if (along ? !middle_inside_along(r, &lr, inc, &li, p->p, nf, -INFINITY, INFINITY, q.p)
                   : !middle_inside(r, inc, p->p, nf, -INFINITY, INFINITY, q.p))
             continue;
         q.depth = depth;
