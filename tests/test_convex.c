@@ -1231,7 +1231,7 @@ static int test_least_depth_as_brute_force(void)
     static test_hull pr, bh;
     test_hull_prism(&pr, 0.15, 0.1);
     test_hull_box(&bh, 0.3, 0.2, 0.25);
-    make_octahedron();   // its arrays, shrunk to the others' size
+    dGeomDestroy(make_octahedron());   // its arrays (the geom itself not needed), shrunk to the others' size
     static dReal small_points[18], small_planes[32];
     const dReal k = (dReal)0.15;
     for (int i = 0; i < 18; i++) small_points[i] = octa_points[i] * k;
