@@ -125,10 +125,10 @@ void dx_hull_of_geom(dx_hull *h, const dxGeom *g)
 // hulls rest on, met by many hulls a step) is not made again, and keeps the
 // edges and floors a test posed. The geom is only the entry looked at
 // first: its address may be reused, the bits decide.
-enum { BOX_MEMOS = 4, BOX_KEY = 3 + 12 + 3 };
+enum { BOX_MEMOS = 4, BOX_KEY = 3 + 9 + 3 };
 typedef struct box_memo {
     const dxGeom *g;
-    dReal key[BOX_KEY];   // pos, R (as the geom holds it), sides
+    dReal key[BOX_KEY];   // pos, R's nine entries (not its padding), sides
     dx_hull h;
     dx_hull_box bx;
 } box_memo;
@@ -140,8 +140,8 @@ static dx_hull *box_posed(const dxGeom *g)
 {
     dReal key[BOX_KEY];
     memcpy(key, g->pos, 3 * sizeof(dReal));
-    memcpy(key + 3, g->R, 12 * sizeof(dReal));
-    memcpy(key + 15, ((const dxBox *)g)->side, 3 * sizeof(dReal));
+    for (int i = 0; i < 3; i++) memcpy(key + 3 + 3 * i, g->R + 4 * i, 3 * sizeof(dReal));
+    memcpy(key + 12, ((const dxBox *)g)->side, 3 * sizeof(dReal));
     box_memo *m = NULL;
     for (int k = 0; k < BOX_MEMOS && !m; k++)
         if (box_memos[k].g == g) m = &box_memos[k];
