@@ -208,39 +208,11 @@ static int same_bits(const dReal *a, const dReal *b, int n)
     return d == 0;
 }
 
-void dxConvexPose(dxConvex *c)
+// The bounding box of the posed points (lo, hi by axis) into box, and
+// their mean into centre (each coordinate summed in the points' order).
+static void box_and_centre(const dxHullPose *pose, unsigned n, double box[6], double centre[3])
 {
-    const dxGeom *g = &c->g;
-    dxHullPose *pose = &c->pose;
-    if (pose->valid && same_bits(pose->pos, g->pos, 3) && same_bits(pose->R, g->R, 12)) return;
-    dx_hull *h = &c->hull;
-    for (int i = 0; i < 3; i++) {
-        h->c[i] = g->pos[i];
-        for (int k = 0; k < 3; k++) h->R[3 * i + k] = g->R[4 * i + k];
-    }
-    dxHullPoseBounds(h);
-    dxHullPosePointsPlanes(h->R, h->c, c->points, c->pointcount, c->planes, c->plane_len,
-                           c->planecount, pose->pts, (double *const[3]){ pose->px, pose->py, pose->pz },
-                           pose->normals, (double *const[3]){ pose->nx, pose->ny, pose->nz },
-                           pose->offsets);
-    double sum[3] = { 0, 0, 0 };
-    for (unsigned v = 0; v < c->pointcount; v++)
-        for (int i = 0; i < 3; i++) sum[i] += pose->pts[v][i];
-    for (int i = 0; i < 3; i++) h->centre[i] = pose->centre[i] = sum[i] / c->pointcount;
-    memcpy(pose->pos, g->pos, sizeof pose->pos);
-    memcpy(pose->R, g->R, sizeof pose->R);
-    pose->valid = 1;
-    pose->edges_valid = 0;
-}
-
-// The bounding box of the points as posed (the pose is kept for the
-// colliders: a hull that meets others this step is posed once).
-static void convex_aabb(dxGeom *g)
-{
-    dxConvex *c = (dxConvex *)g;
-    dxConvexPose(c);
-    const double *p3[3] = { c->pose.px, c->pose.py, c->pose.pz };
-    unsigned n = c->pointcount;
+    const double *p3[3] = { pose->px, pose->py, pose->pz };
     for (int i = 0; i < 3; i++) {
         const double *x = p3[i];
         double lo = x[0], hi = x[0];
@@ -262,9 +234,91 @@ static void convex_aabb(dxGeom *g)
             lo = x[v] < lo ? x[v] : lo;
             hi = x[v] > hi ? x[v] : hi;
         }
-        g->aabb[2 * i] = (dReal)lo;
-        g->aabb[2 * i + 1] = (dReal)hi;
+        box[2 * i] = lo;
+        box[2 * i + 1] = hi;
     }
+    double sum[3] = { 0, 0, 0 };
+    for (unsigned v = 0; v < n; v++)
+        for (int i = 0; i < 3; i++) sum[i] += pose->pts[v][i];
+    for (int i = 0; i < 3; i++) centre[i] = sum[i] / n;
+}
+
+#ifdef DX_POSE_AVX2
+// box_and_centre four points at a time for the box (the same least and
+// largest numbers, but for which of +0 and -0 a tie between them gives)
+// and the three coordinates at once for the mean (the same sums).
+__attribute__((target("avx2"))) static void box_and_centre_avx2(const dxHullPose *pose, unsigned n,
+                                                                double box[6], double centre[3])
+{
+    const double *p3[3] = { pose->px, pose->py, pose->pz };
+    __m256d lo[3], hi[3];
+    for (int i = 0; i < 3; i++) {
+        lo[i] = _mm256_set1_pd(p3[i][0]);
+        hi[i] = lo[i];
+    }
+    unsigned v = 0;
+    for (; v + 4 <= n; v += 4) {
+        for (int i = 0; i < 3; i++) {
+            __m256d e = _mm256_loadu_pd(p3[i] + v);
+            lo[i] = _mm256_min_pd(e, lo[i]);
+            hi[i] = _mm256_max_pd(e, hi[i]);
+        }
+    }
+    for (int i = 0; i < 3; i++) {
+        __m256d l = _mm256_min_pd(lo[i], _mm256_permute2f128_pd(lo[i], lo[i], 1));
+        __m256d h = _mm256_max_pd(hi[i], _mm256_permute2f128_pd(hi[i], hi[i], 1));
+        double a = _mm256_cvtsd_f64(_mm256_min_pd(l, _mm256_permute_pd(l, 1)));
+        double b = _mm256_cvtsd_f64(_mm256_max_pd(h, _mm256_permute_pd(h, 1)));
+        for (unsigned k = v; k < n; k++) {
+            a = p3[i][k] < a ? p3[i][k] : a;
+            b = p3[i][k] > b ? p3[i][k] : b;
+        }
+        box[2 * i] = a;
+        box[2 * i + 1] = b;
+    }
+    const __m256i xyz = _mm256_setr_epi64x(-1, -1, -1, 0);
+    __m256d sum = _mm256_setzero_pd();
+    for (unsigned k = 0; k < n; k++) sum = _mm256_add_pd(sum, _mm256_maskload_pd(pose->pts[k], xyz));
+    _mm256_maskstore_pd(centre, xyz, _mm256_div_pd(sum, _mm256_set1_pd((double)n)));
+}
+#endif
+
+void dxConvexPose(dxConvex *c)
+{
+    const dxGeom *g = &c->g;
+    dxHullPose *pose = &c->pose;
+    if (pose->valid && same_bits(pose->pos, g->pos, 3) && same_bits(pose->R, g->R, 12)) return;
+    dx_hull *h = &c->hull;
+    for (int i = 0; i < 3; i++) {
+        h->c[i] = g->pos[i];
+        for (int k = 0; k < 3; k++) h->R[3 * i + k] = g->R[4 * i + k];
+    }
+    dxHullPoseBounds(h);
+    dxHullPosePointsPlanes(h->R, h->c, c->points, c->pointcount, c->planes, c->plane_len,
+                           c->planecount, pose->pts, (double *const[3]){ pose->px, pose->py, pose->pz },
+                           pose->normals, (double *const[3]){ pose->nx, pose->ny, pose->nz },
+                           pose->offsets);
+#ifdef DX_POSE_AVX2
+    if (__builtin_cpu_supports("avx2"))
+        box_and_centre_avx2(pose, c->pointcount, pose->box, pose->centre);
+    else
+#endif
+        box_and_centre(pose, c->pointcount, pose->box, pose->centre);
+    memcpy(h->centre, pose->centre, sizeof h->centre);
+    memcpy(pose->pos, g->pos, sizeof pose->pos);
+    memcpy(pose->R, g->R, sizeof pose->R);
+    pose->valid = 1;
+    pose->edges_valid = 0;
+}
+
+// The bounding box of the points as posed (the pose is kept for the
+// colliders: a hull that meets others this step is posed once; the box is
+// made with it).
+static void convex_aabb(dxGeom *g)
+{
+    dxConvex *c = (dxConvex *)g;
+    dxConvexPose(c);
+    for (int k = 0; k < 6; k++) g->aabb[k] = (dReal)c->pose.box[k];
 }
 
 // The edges of the polygons, each once, with the faces on either side,

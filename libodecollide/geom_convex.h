@@ -58,6 +58,7 @@ typedef struct dxHullPose {
     // product of its faces' normals n2 x n1 (the normal of its arc's circle).
     double *px, *py, *pz, *nx, *ny, *nz, *ex, *ey, *ez;
     double centre[3];             // the mean of the points: inside the hull
+    double box[6];                // their bounding box (lo, hi by axis)
 } dxHullPose;
 
 // A hull as the native colliders see it (backends/native/collide_convex*.c):
@@ -146,5 +147,15 @@ void dxHullPoseBounds(struct dx_hull *h);
 // The convex geom's hull posed in the world for its position and rotation
 // (c->pose, c->hull), unless it already is (compared bit for bit).
 void dxConvexPose(dxConvex *c);
+
+// dxConvexPose where the geom may have moved: a valid pose is current while
+// the geom's AABB_BAD flag is clear (the flag is cleared only right after
+// compute_aabb, which poses it, and set by every move), so the bits are
+// compared only when the flag is set (the colliders meet a hull several
+// times a step).
+static inline void dxConvexPoseIfMoved(dxConvex *c)
+{
+    if (!c->pose.valid || (c->g.flags & DX_GEOM_AABB_BAD)) dxConvexPose(c);
+}
 
 #endif

@@ -18,6 +18,7 @@
 
 #include <math.h>
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -867,6 +868,180 @@ static int test_kept_state_as_fresh_geoms(void)
     return 0;
 }
 
+// A drifting geom of the test below and its fresh copy: on a body (k even),
+// moved through the body's setters, or placed by the geom's own.
+typedef struct kept_geom {
+    dGeomID g;
+    dBodyID b;
+} kept_geom;
+
+static kept_geom kept_make(dWorldID w, int k)
+{
+    kept_geom m = { drift_geom(k), NULL };
+    if (k % 2 == 0) {
+        m.b = dBodyCreate(w);
+        dGeomSetBody(m.g, m.b);
+    }
+    return m;
+}
+
+static void kept_place(kept_geom m, const dReal p[3], const dQuaternion q)
+{
+    if (m.b) {
+        dBodySetPosition(m.b, p[0], p[1], p[2]);
+        dBodySetQuaternion(m.b, q);
+    } else {
+        place_q(m.g, p, q);
+    }
+}
+
+static void kept_destroy(kept_geom m)
+{
+    dGeomDestroy(m.g);
+    if (m.b) dBodyDestroy(m.b);
+}
+
+typedef struct kept_scene {
+    dWorldID w;
+    kept_geom geom[6];
+    dReal pos[6][3];
+    dQuaternion quat[6];
+    int touching, failed;
+} kept_scene;
+
+// Geoms i and j (both orders) against fresh copies at the same poses.
+static void kept_compare(kept_scene *sc, int i, int j)
+{
+    for (int order = 0; order < 2; order++) {
+        int a = order ? j : i, b = order ? i : j;
+        if (a % 4 == 3 && b % 4 == 3) continue;   // box-box is not a hull pair
+        dContactGeom x[4], y[4];
+        int nx = dCollide(sc->geom[a].g, sc->geom[b].g, 4, x, sizeof x[0]);
+        kept_geom fa = kept_make(sc->w, a), fb = kept_make(sc->w, b);
+        kept_place(fa, sc->pos[a], sc->quat[a]);
+        kept_place(fb, sc->pos[b], sc->quat[b]);
+        int ny = dCollide(fa.g, fb.g, 4, y, sizeof y[0]);
+        kept_destroy(fa);
+        kept_destroy(fb);
+        sc->failed |= !identical(x, nx, y, ny);
+        sc->touching += nx > 0;
+    }
+}
+
+static void kept_near(void *data, dGeomID o1, dGeomID o2)
+{
+    kept_compare(data, (int)(intptr_t)dGeomGetData(o1), (int)(intptr_t)dGeomGetData(o2));
+}
+
+// A convex geom's posed hull is kept while its AABB flag says it has not
+// moved: geoms in a space (whose collision clears the flag) moved through
+// their bodies or their own setters, some left unmoved, collided through
+// the space and then, a step on, directly (the flag set again by the move),
+// give the contacts of fresh geoms at the same poses bit for bit.
+static int test_kept_pose_through_space_and_bodies(void)
+{
+    kept_scene sc;
+    memset(&sc, 0, sizeof sc);
+    sc.w = dWorldCreate();
+    dSpaceID space = dSimpleSpaceCreate(0);
+    double v[6][3], spin[6][3];
+    rng_state = 77;
+    for (int i = 0; i < 6; i++) {
+        sc.geom[i] = kept_make(sc.w, i);
+        dSpaceAdd(space, sc.geom[i].g);
+        dGeomSetData(sc.geom[i].g, (void *)(intptr_t)i);
+        for (int k = 0; k < 3; k++) {
+            sc.pos[i][k] = (dReal)rnd(-0.2, 0.2);
+            v[i][k] = rnd(-1, 1) * 0.004;
+            spin[i][k] = rnd(-1, 1) * 0.03;
+        }
+        dQSetIdentity(sc.quat[i]);
+        kept_place(sc.geom[i], sc.pos[i], sc.quat[i]);
+    }
+    for (int step = 0; step < 200; step++) {
+        for (int i = 0; i < 6; i++) {
+            if (i % 3 == 1 && step % 3) continue;   // unmoved: the flag stays clear
+            for (int k = 0; k < 3; k++) {
+                sc.pos[i][k] = (dReal)(sc.pos[i][k] + v[i][k]);
+                if (fabs(sc.pos[i][k]) > 0.2) v[i][k] = -v[i][k];
+            }
+            dQuaternion dq = { 1, (dReal)spin[i][0], (dReal)spin[i][1], (dReal)spin[i][2] }, r;
+            dQMultiply0(r, dq, sc.quat[i]);
+            dNormalize4(r);
+            memcpy(sc.quat[i], r, sizeof r);
+            kept_place(sc.geom[i], sc.pos[i], sc.quat[i]);
+        }
+        if (step % 2) {
+            dSpaceCollide(space, &sc, kept_near);
+        } else {
+            for (int i = 0; i < 6; i++)
+                for (int j = i + 1; j < 6; j++) kept_compare(&sc, i, j);
+        }
+        CHECK(!sc.failed);
+    }
+    printf("# kept poses: %d touching pairs\n", sc.touching);
+    CHECK(sc.touching > 500);
+    for (int i = 0; i < 6; i++) kept_destroy(sc.geom[i]);
+    dSpaceDestroy(space);
+    dWorldDestroy(sc.w);
+    return 0;
+}
+
+// The deepest of a hull's n contacts.
+static double deepest_of(const dContactGeom *c, int n)
+{
+    double d = -INFINITY;
+    for (int i = 0; i < n; i++) d = c[i].depth > d ? c[i].depth : d;
+    return d;
+}
+
+// A box met by a hull is made into a hull once and kept with the bits it
+// was made from: a cube hull resting in a box's top sees the box's new
+// sides, its move, its replacement by a new box (which may take its
+// address), also after more boxes than are kept were met.
+static int test_box_kept_by_its_bits(void)
+{
+    test_hull cube;
+    test_hull_box(&cube, 1, 1, 1);
+    dGeomID h = dCreateConvex(0, cube.planes, cube.nplanes, cube.points, cube.npoints,
+                              cube.polygons);
+    dGeomSetPosition(h, 0, 0, (dReal)0.9);   // its bottom at 0.4
+    dGeomID b = dCreateBox(0, 2, 2, 1), others[6];
+    for (int k = 0; k < 6; k++) {
+        others[k] = dCreateBox(0, 1, 1, 1);
+        dGeomSetPosition(others[k], (dReal)(1.5 * k - 4), 0, (dReal)-0.2);
+    }
+    dContactGeom c[4];
+    int n = dCollide(h, b, 4, c, sizeof c[0]);
+    CHECK(n == 4);
+    CHECK_NEAR(deepest_of(c, n), 0.1, EPS);
+    dGeomBoxSetLengths(b, 2, 2, (dReal)1.4);   // top at 0.7
+    n = dCollide(h, b, 4, c, sizeof c[0]);
+    CHECK(n == 4);
+    CHECK_NEAR(deepest_of(c, n), 0.3, EPS);
+    dGeomSetPosition(b, 0, 0, (dReal)-0.1);   // top at 0.6
+    n = dCollide(h, b, 4, c, sizeof c[0]);
+    CHECK(n == 4);
+    CHECK_NEAR(deepest_of(c, n), 0.2, EPS);
+    CHECK_NEAR(fabs(c[0].normal[2]), 1, EPS);
+    for (int k = 0; k < 6; k++) dCollide(h, others[k], 4, c, sizeof c[0]);
+    n = dCollide(b, h, 4, c, sizeof c[0]);
+    CHECK(n == 4);
+    CHECK_NEAR(deepest_of(c, n), 0.2, EPS);
+    dGeomDestroy(b);
+    b = dCreateBox(0, 2, 2, (dReal)0.6);   // top at 0.3: clear of the hull
+    CHECK(dCollide(h, b, 4, c, sizeof c[0]) == 0);
+    dGeomDestroy(b);
+    b = dCreateBox(0, 2, 2, (dReal)1.2);   // top at 0.6
+    n = dCollide(h, b, 4, c, sizeof c[0]);
+    CHECK(n == 4);
+    CHECK_NEAR(deepest_of(c, n), 0.2, EPS);
+    dGeomDestroy(b);
+    for (int k = 0; k < 6; k++) dGeomDestroy(others[k]);
+    dGeomDestroy(h);
+    return 0;
+}
+
 // ---- bad input ------------------------------------------------------------------
 
 static char last_error[512];
@@ -1056,7 +1231,7 @@ static int test_least_depth_as_brute_force(void)
     static test_hull pr, bh;
     test_hull_prism(&pr, 0.15, 0.1);
     test_hull_box(&bh, 0.3, 0.2, 0.25);
-    make_octahedron();   // its arrays, shrunk to the others' size
+    dGeomDestroy(make_octahedron());   // its arrays (the geom itself not needed), shrunk to the others' size
     static dReal small_points[18], small_planes[32];
     const dReal k = (dReal)0.15;
     for (int i = 0; i < 18; i++) small_points[i] = octa_points[i] * k;
@@ -1302,6 +1477,8 @@ const test_case test_cases[] = {
     TEST_CASE(test_resting_on_plane),
     TEST_CASE(test_remembered_axis_never_hides_contacts),
     TEST_CASE(test_kept_state_as_fresh_geoms),
+    TEST_CASE(test_kept_pose_through_space_and_bodies),
+    TEST_CASE(test_box_kept_by_its_bits),
     TEST_CASE(test_least_depth_as_brute_force),
     TEST_CASE(test_large_box_as_brute_force),
     TEST_CASE(test_corner_to_corner_spheres),

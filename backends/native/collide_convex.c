@@ -280,15 +280,13 @@ static int clip_to_face_prism(const dx_hull *h, unsigned f, const double nf[3], 
 
 int dxCollideConvexConvex(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)
 {
-    dx_hull *a = dx_hull_posed(o1, NULL, NULL), *b = dx_hull_posed(o2, NULL, NULL);
+    dx_hull *a = dx_hull_posed(o1), *b = dx_hull_posed(o2);
     return dx_hull_hull(a, b, o1, o2, flags, out, skip);
 }
 
 int dxCollideConvexBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)
 {
-    dx_hull hb;
-    dx_hull_box bx;
-    dx_hull *a = dx_hull_posed(o1, NULL, NULL), *b = dx_hull_posed(o2, &hb, &bx);
+    dx_hull *a = dx_hull_posed(o1), *b = dx_hull_posed(o2);
     return dx_hull_hull(a, b, o1, o2, flags, out, skip);
 }
 
@@ -296,7 +294,7 @@ int dxCollideConvexBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int
 int dxCollideConvexPlane(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)
 {
     dx_hull h;
-    dx_hull_of_geom(&h, o1, NULL);
+    dx_hull_of_geom(&h, o1);
     const dReal *pl = ((const dxPlane *)o2)->p;
     double n[3] = { pl[0], pl[1], pl[2] };
     int max = dx_max_contacts(flags), count = 0;
@@ -362,7 +360,7 @@ int dxCollideConvexSphere(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, 
 {
     (void)flags;
     dx_hull h;
-    dx_hull_of_geom(&h, o1, NULL);
+    dx_hull_of_geom(&h, o1);
     double c[3], n[3], pos[3], depth;
     geom_pos(o2, c);
     if (!hull_ball(&h, c, ((const dxSphere *)o2)->radius, n, &depth, pos)) return 0;
@@ -377,7 +375,7 @@ int dxCollideRayConvex(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int
 {
     (void)flags;
     dx_hull h;
-    dx_hull_of_geom(&h, o2, NULL);
+    dx_hull_of_geom(&h, o2);
     double s[3], dir[3], t_in = -INFINITY, t_out = INFINITY, n_in[3] = { 0 }, n_out[3] = { 0 };
     geom_pos(o1, s);
     geom_axis(o1, 2, dir);
@@ -490,7 +488,7 @@ static double segment_depth(const dx_hull *h, const double s0[3], const double s
 int dxCollideConvexCapsule(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)
 {
     dx_hull h;
-    dx_hull_of_geom(&h, o1, NULL);
+    dx_hull_of_geom(&h, o1);
     const dxCapsule *cap = (const dxCapsule *)o2;
     double c[3], z[3], s0[3], s1[3], r = cap->radius;
     geom_pos(o2, c);
@@ -743,7 +741,7 @@ static int cylinder_on_face(const dx_hull *h, unsigned f, const double nf[3], do
 int dxCollideConvexCylinder(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)
 {
     dx_hull h;
-    dx_hull_of_geom(&h, o1, NULL);
+    dx_hull_of_geom(&h, o1);
     const dxCylinder *cg = (const dxCylinder *)o2;
     cyl cy = { .r = cg->radius, .hl = cg->length / 2 };
     geom_pos(o2, cy.c);

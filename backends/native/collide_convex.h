@@ -19,7 +19,7 @@
 #define DX_HULL_EPS 1e-9
 #endif
 
-// The storage of a box made into a hull (dx_hull_of_geom's box case).
+// The storage of a box made into a hull (dx_hull_posed's box case).
 typedef struct dx_hull_box {
     dReal pts[24], planes[24];
     double wp[8][3], wn[6][3], wd[6];
@@ -28,11 +28,11 @@ typedef struct dx_hull_box {
     int edges_posed;
 } dx_hull_box;
 
-// The hull of a convex geom or (into the storage bx) of a box geom, posed.
-void dx_hull_of_geom(dx_hull *h, const dxGeom *g, dx_hull_box *bx);
-// The same without a copy: a convex geom's kept hull, or h made from the
-// box geom g (into bx).
-dx_hull *dx_hull_posed(const dxGeom *g, dx_hull *h, dx_hull_box *bx);
+// The hull of a convex geom, posed, copied into h.
+void dx_hull_of_geom(dx_hull *h, const dxGeom *g);
+// The same without a copy (valid until the next call on this thread): a
+// convex geom's kept hull, or a box geom's made or kept (collide_convex_hull.c).
+dx_hull *dx_hull_posed(const dxGeom *g);
 
 // Point i in world coordinates.
 static inline void dx_hull_vertex(const dx_hull *h, unsigned i, double out[3])
@@ -59,6 +59,8 @@ static inline const unsigned *dx_hull_polygon(const dx_hull *h, unsigned f, unsi
 double dx_hull_extent(const dx_hull *h, const double m[3], unsigned *idx);
 // min and max over the points of m . x.
 void dx_hull_interval(const dx_hull *h, const double m[3], double *lo, double *hi);
+// Whether the axis m (world) parts a and b.
+int dx_hull_axis_separates(const dx_hull *a, const dx_hull *b, const double m[3]);
 // Clips [*t0, *t1] to where o + t d (world) is inside h, with planes that d
 // runs along (|n . d| below DX_HULL_EPS) kept if o is within tol of them; 0 if
 // empty by more than tol (rounding can leave a point's span crossed).

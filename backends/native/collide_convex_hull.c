@@ -114,25 +114,61 @@ static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
     h->edges_posed = &bx->edges_posed;
 }
 
-void dx_hull_of_geom(dx_hull *h, const dxGeom *g, dx_hull_box *bx)
+void dx_hull_of_geom(dx_hull *h, const dxGeom *g)
 {
-    const dx_hull *kept = dx_hull_posed(g, h, bx);
-    if (kept != h) *h = *kept;
+    *h = *dx_hull_posed(g);
 }
 
-dx_hull *dx_hull_posed(const dxGeom *g, dx_hull *h, dx_hull_box *bx)
+// Boxes made into hulls, kept (a few per thread) with what they were made
+// from: a box hull is a function of the box's position, rotation and sides
+// alone, so a box met again with the same bits (the static boxes a scene's
+// hulls rest on, met by many hulls a step) is not made again, and keeps the
+// edges and floors a test posed. The geom is only the entry looked at
+// first: its address may be reused, the bits decide.
+enum { BOX_MEMOS = 4, BOX_KEY = 3 + 9 + 3 };
+typedef struct box_memo {
+    const dxGeom *g;
+    dReal key[BOX_KEY];   // pos, R's nine entries (not its padding), sides
+    dx_hull h;
+    dx_hull_box bx;
+} box_memo;
+static _Thread_local box_memo box_memos[BOX_MEMOS];
+static _Thread_local unsigned box_memo_next;
+
+// The box geom g as a hull: its kept one if made from the same bits.
+static dx_hull *box_posed(const dxGeom *g)
 {
-    if (g->ops->cls == dConvexClass) {
-        dxConvex *c = (dxConvex *)g;   // its kept pose changes, the geom does not
-        dxConvexPose(c);
-        return &c->hull;
+    dReal key[BOX_KEY];
+    memcpy(key, g->pos, 3 * sizeof(dReal));
+    for (int i = 0; i < 3; i++) memcpy(key + 3 + 3 * i, g->R + 4 * i, 3 * sizeof(dReal));
+    memcpy(key + 12, ((const dxBox *)g)->side, 3 * sizeof(dReal));
+    box_memo *m = NULL;
+    for (int k = 0; k < BOX_MEMOS && !m; k++)
+        if (box_memos[k].g == g) m = &box_memos[k];
+    if (m && memcmp(m->key, key, sizeof key) == 0) return &m->h;
+    if (!m) {
+        m = &box_memos[box_memo_next];
+        box_memo_next = (box_memo_next + 1) % BOX_MEMOS;
+        m->g = g;
     }
+    memcpy(m->key, key, sizeof key);
+    dx_hull *h = &m->h;
     for (int i = 0; i < 3; i++) {
         h->c[i] = g->pos[i];
         for (int k = 0; k < 3; k++) h->R[3 * i + k] = g->R[4 * i + k];
     }
-    box_hull(h, (const dxBox *)g, bx);
+    box_hull(h, (const dxBox *)g, &m->bx);
     return h;
+}
+
+dx_hull *dx_hull_posed(const dxGeom *g)
+{
+    if (g->ops->cls == dConvexClass) {
+        dxConvex *c = (dxConvex *)g;   // its kept pose changes, the geom does not
+        dxConvexPoseIfMoved(c);
+        return &c->hull;
+    }
+    return box_posed(g);
 }
 
 // Narrows [t0, t1] to where the line o + t d is inside one plane, given
@@ -170,19 +206,6 @@ typedef struct hull_point {
     double p[3], depth;
 } hull_point;
 
-// pos: the middle of the part of the line q + t n inside both hulls; 0 if
-// there is none.
-static int middle_inside(const dx_hull *a, const dx_hull *b, const double q[3], const double n[3],
-                         double t0, double t1, double pos[3])
-{
-    double tol = DX_HULL_EPS * (a->size + b->size);
-    if (!dx_hull_clip_line(a, q, n, tol, &t0, &t1) || !dx_hull_clip_line(b, q, n, tol, &t0, &t1))
-        return 0;
-    double t = (t0 + t1) / 2;
-    for (int i = 0; i < 3; i++) pos[i] = q[i] + t * n[i];
-    return 1;
-}
-
 // The lines along one direction d, clipped to a hull many times (each
 // point of a face contact): each plane's n . d, made once (dx_hull_clip_line
 // makes the same numbers per call), for hulls of at most LINE_PLANES planes.
@@ -192,16 +215,38 @@ typedef struct line_planes {
     int avx2;   // clip four planes at a time
 } line_planes;
 
-static int line_planes_of(const dx_hull *h, const double d[3], line_planes *lp)
+#ifdef DX_CLIP_AVX2
+// m . n for h's plane normals n, four planes at a time from the first (as
+// dot3 makes each), into out; returns how many it made.
+__attribute__((target("avx2"))) static inline unsigned normal_products4(const dx_hull *h,
+                                                                        const double m[3],
+                                                                        double *out)
+{
+    __m256d m0 = _mm256_set1_pd(m[0]), m1 = _mm256_set1_pd(m[1]), m2 = _mm256_set1_pd(m[2]);
+    unsigned f = 0;
+    for (; f + 4 <= h->nplanes; f += 4)
+        _mm256_storeu_pd(out + f,
+                         _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(h->nx + f), m0),
+                                                     _mm256_mul_pd(_mm256_loadu_pd(h->ny + f), m1)),
+                                       _mm256_mul_pd(_mm256_loadu_pd(h->nz + f), m2)));
+    return f;
+}
+#endif
+
+// line_planes for h along d; with AVX2 (avx2 1, in a function built for
+// it) the products four at a time and the clipping too.
+static inline __attribute__((always_inline)) int line_planes_with(const dx_hull *h,
+                                                                  const double d[3],
+                                                                  line_planes *lp, int avx2)
 {
     if (h->nplanes > LINE_PLANES) return 0;
     lp->dl = sqrt(dot3(d, d));
-    for (unsigned f = 0; f < h->nplanes; f++) lp->nd[f] = dot3(h->wn[f], d);
+    unsigned f = 0;
 #ifdef DX_CLIP_AVX2
-    lp->avx2 = __builtin_cpu_supports("avx2");
-#else
-    lp->avx2 = 0;
+    if (avx2) f = normal_products4(h, d, lp->nd);
 #endif
+    for (; f < h->nplanes; f++) lp->nd[f] = dot3(h->wn[f], d);
+    lp->avx2 = avx2;
     return 1;
 }
 
@@ -217,13 +262,26 @@ static int narrow_from(const dx_hull *h, const line_planes *lp, unsigned f, cons
 }
 
 #ifdef DX_CLIP_AVX2
+// The zero a bound narrowed to a zero ends as: from, if that is a zero
+// (a later equal t does not replace it), else the first t (of n) that is
+// a zero among those whose mask (all bits set) says it narrows the bound.
+static double first_zero(const double *ts, const double *mask, unsigned n, double from)
+{
+    if (from == 0) return from;
+    unsigned f = 0;
+    while (f < n && !(ts[f] == 0 && mask[f] != 0)) f++;   // a set mask is a NaN, != 0
+    return ts[f];
+}
+
 // narrow_from(h, lp, 0, ...) four planes at a time: each lane keeps the
 // least exit (largest entry) of its planes as narrow_to_plane does (t
-// first: a NaN is passed over), then the least (largest) of the lanes:
-// the same numbers, but for which of +0 and -0 wins a tie; where the
-// result is a zero the planes are gone over again in order. Returns how many planes
-// it went over (the rest are left to narrow_from), or -1 if a plane along
-// the line has it outside by more than tol.
+// first: a NaN is passed over, and of equal values the earlier stays),
+// then the least (largest) of the lanes: the same numbers, but for which
+// of +0 and -0 wins a tie, so a result of zero is taken as narrow_from
+// would take it: the bound it started from if that is a zero, else the
+// first plane's zero (each plane's t and side are kept for that). Returns
+// how many planes it went over (the rest are left to narrow_from), or -1
+// if a plane along the line has it outside by more than tol.
 __attribute__((target("avx2"))) static int narrow4(const dx_hull *h, const line_planes *lp,
                                                    const double o[3], double tol, double *t0,
                                                    double *t1)
@@ -232,6 +290,7 @@ __attribute__((target("avx2"))) static int narrow4(const dx_hull *h, const line_
     __m256d o0 = _mm256_set1_pd(o[0]), o1 = _mm256_set1_pd(o[1]), o2 = _mm256_set1_pd(o[2]);
     __m256d par_lim = _mm256_set1_pd(DX_HULL_EPS * lp->dl), low = _mm256_set1_pd(-tol);
     __m256d lo = _mm256_set1_pd(*t0), hi = _mm256_set1_pd(*t1), out = zero;
+    double ts[LINE_PLANES], ups[LINE_PLANES], downs[LINE_PLANES];   // t, and which bound it narrows
     unsigned f = 0;
     for (; f + 4 <= h->nplanes; f += 4) {
         __m256d nd = _mm256_loadu_pd(lp->nd + f);
@@ -246,13 +305,17 @@ __attribute__((target("avx2"))) static int narrow4(const dx_hull *h, const line_
         __m256d down = _mm256_andnot_pd(par, _mm256_cmp_pd(nd, zero, _CMP_NGT_UQ));
         hi = _mm256_blendv_pd(hi, _mm256_min_pd(t, hi), up);
         lo = _mm256_blendv_pd(lo, _mm256_max_pd(t, lo), down);
+        _mm256_storeu_pd(ts + f, t);
+        _mm256_storeu_pd(ups + f, up);
+        _mm256_storeu_pd(downs + f, down);
     }
     if (_mm256_movemask_pd(out)) return -1;
     lo = _mm256_max_pd(lo, _mm256_permute2f128_pd(lo, lo, 1));
     hi = _mm256_min_pd(hi, _mm256_permute2f128_pd(hi, hi, 1));
     double a = _mm256_cvtsd_f64(_mm256_max_pd(lo, _mm256_permute_pd(lo, 1)));
     double b = _mm256_cvtsd_f64(_mm256_min_pd(hi, _mm256_permute_pd(hi, 1)));
-    if (a == 0 || b == 0) return 0;   // a tie of +0 and -0 is decided by the order
+    if (a == 0) a = first_zero(ts, downs, f, *t0);
+    if (b == 0) b = first_zero(ts, ups, f, *t1);
     *t0 = a;
     *t1 = b;
     return (int)f;
@@ -275,13 +338,13 @@ static int clip_line_along(const dx_hull *h, const line_planes *lp, const double
     return *t0 <= *t1 + tol / lp->dl;
 }
 
-// middle_inside for the line q + t n through the whole space, with both
-// hulls' plane products along n made (la for a, lb for b).
+// middle_inside with both hulls' plane products along n made (la for a,
+// lb for b).
 static int middle_inside_along(const dx_hull *a, const line_planes *la, const dx_hull *b,
                                const line_planes *lb, const double q[3], const double n[3],
-                               double pos[3])
+                               double t0, double t1, double pos[3])
 {
-    double tol = DX_HULL_EPS * (a->size + b->size), t0 = -INFINITY, t1 = INFINITY;
+    double tol = DX_HULL_EPS * (a->size + b->size);
     if (!clip_line_along(a, la, q, tol, &t0, &t1) || !clip_line_along(b, lb, q, tol, &t0, &t1))
         return 0;
     double t = (t0 + t1) / 2;
@@ -289,18 +352,83 @@ static int middle_inside_along(const dx_hull *a, const line_planes *la, const dx
     return 1;
 }
 
-// The sides of poly's n points against the plane s . x = off (s . x - off)
-// into side; 1 if every point is inside (not above 0), where clipping
-// keeps poly as it is.
-static int plane_sides(const hull_point *poly, int n, const double s[3], double off,
-                       double *side)
+// pos: the middle of the part of the line q + t n, t0 <= t <= t1, inside
+// both hulls; 0 if there is none.
+static int middle_inside(const dx_hull *a, const dx_hull *b, const double q[3], const double n[3],
+                         double t0, double t1, double pos[3])
+{
+    line_planes la, lb;
+#ifdef DX_CLIP_AVX2
+    int avx2 = __builtin_cpu_supports("avx2");
+#else
+    int avx2 = 0;
+#endif
+    if (line_planes_with(a, n, &la, avx2) && line_planes_with(b, n, &lb, avx2))
+        return middle_inside_along(a, &la, b, &lb, q, n, t0, t1, pos);
+    double tol = DX_HULL_EPS * (a->size + b->size);
+    if (!dx_hull_clip_line(a, q, n, tol, &t0, &t1) || !dx_hull_clip_line(b, q, n, tol, &t0, &t1))
+        return 0;
+    double t = (t0 + t1) / 2;
+    for (int i = 0; i < 3; i++) pos[i] = q[i] + t * n[i];
+    return 1;
+}
+
+// plane_sides for poly's points from i on.
+static int plane_sides_from(const hull_point *poly, int i, int n, const double s[3], double off,
+                            double *side)
 {
     int inside = 1;
-    for (int i = 0; i < n; i++) {
+    for (; i < n; i++) {
         side[i] = dot3(s, poly[i].p) - off;
         inside &= side[i] <= 0;
     }
     return inside;
+}
+
+#ifdef DX_CLIP_AVX2
+_Static_assert(sizeof(hull_point) == 4 * sizeof(double), "a hull point is four doubles");
+// plane_sides' first points four at a time (their coordinates gathered by
+// a 4 x 4 transpose: the same products and sums); returns how many it
+// measured, *inside cleared if one of them is not inside.
+__attribute__((target("avx2"))) static inline int plane_sides4(const hull_point *poly, int n,
+                                                               const double s[3], double off,
+                                                               double *side, int *inside)
+{
+    __m256d s0 = _mm256_set1_pd(s[0]), s1 = _mm256_set1_pd(s[1]), s2 = _mm256_set1_pd(s[2]);
+    __m256d vo = _mm256_set1_pd(off), zero = _mm256_setzero_pd();
+    int i = 0, out = 0;
+    for (; i + 4 <= n; i += 4) {
+        __m256d p0 = _mm256_loadu_pd(poly[i].p), p1 = _mm256_loadu_pd(poly[i + 1].p);
+        __m256d p2 = _mm256_loadu_pd(poly[i + 2].p), p3 = _mm256_loadu_pd(poly[i + 3].p);
+        __m256d t0 = _mm256_unpacklo_pd(p0, p1), t1 = _mm256_unpackhi_pd(p0, p1);   // x z, y -
+        __m256d t2 = _mm256_unpacklo_pd(p2, p3), t3 = _mm256_unpackhi_pd(p2, p3);
+        __m256d x = _mm256_permute2f128_pd(t0, t2, 0x20), z = _mm256_permute2f128_pd(t0, t2, 0x31);
+        __m256d y = _mm256_permute2f128_pd(t1, t3, 0x20);
+        __m256d d = _mm256_sub_pd(_mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(s0, x), _mm256_mul_pd(s1, y)),
+                                                _mm256_mul_pd(s2, z)),
+                                  vo);
+        _mm256_storeu_pd(side + i, d);
+        out |= _mm256_movemask_pd(_mm256_cmp_pd(d, zero, _CMP_NLE_UQ));
+    }
+    *inside = !out;
+    return i;
+}
+#endif
+
+// The sides of poly's n points against the plane s . x = off (s . x - off)
+// into side; 1 if every point is inside (not above 0), where clipping
+// keeps poly as it is. With AVX2 (avx2 1) four points at a time.
+static inline __attribute__((always_inline)) int plane_sides(const hull_point *poly, int n,
+                                                             const double s[3], double off,
+                                                             double *side, int avx2)
+{
+    int i = 0, inside = 1;
+#ifdef DX_CLIP_AVX2
+    if (avx2) i = plane_sides4(poly, n, s, off, side, &inside);
+#else
+    (void)avx2;
+#endif
+    return plane_sides_from(poly, i, n, s, off, side) & inside;
 }
 
 // Keeps the part of poly (n points, on the sides plane_sides gives) with
@@ -344,24 +472,71 @@ static int furthest_from_taken(const hull_point *pts, int n, int k, const double
     return best;
 }
 
-// The face contacts: the reference hull r's face f (outward unit nf at
-// offset df, facing the incident hull i). Writes the points, deepest first,
-// at most max (spread), into pts; returns the count (0 if none was found).
-static int face_points(const dx_hull *r, unsigned f, const double nf[3], double df,
-                       const dx_hull *inc, int max, hull_point *pts)
+// The first of inc's faces whose normal is most against nf (least n . nf,
+// made as dot3 makes it; face 0 if none is below infinity).
+static unsigned incident_face_from(const dx_hull *inc, const double nf[3], unsigned g,
+                                   double lowest, unsigned best)
 {
-    // The incident face: the one most against nf.
-    unsigned best = 0, count;
-    double lowest = INFINITY;
-    for (unsigned g = 0; g < inc->nplanes; g++) {
-        double n[3], d;
-        dx_hull_plane(inc, g, n, &d);
-        double c = dot3(n, nf);
+    for (; g < inc->nplanes; g++) {
+        double c = dot3(inc->wn[g], nf);
         if (c < lowest) {
             lowest = c;
             best = g;
         }
     }
+    return best;
+}
+
+#ifdef DX_CLIP_AVX2
+// incident_face four faces at a time: the least product, then the first
+// face that gives it (the same face).
+__attribute__((target("avx2"))) static inline unsigned incident_face4(const dx_hull *inc,
+                                                                      const double nf[3])
+{
+    double prod[LINE_PLANES];
+    unsigned g = normal_products4(inc, nf, prod);
+    __m256d vmin = _mm256_set1_pd(INFINITY);
+    for (unsigned k = 0; k + 4 <= g; k += 4)
+        vmin = _mm256_min_pd(_mm256_loadu_pd(prod + k), vmin);   // a NaN is passed over
+    vmin = _mm256_min_pd(vmin, _mm256_permute2f128_pd(vmin, vmin, 1));
+    double lowest = _mm256_cvtsd_f64(_mm256_min_pd(vmin, _mm256_permute_pd(vmin, 1)));
+    unsigned best = 0;
+    if (lowest < INFINITY) {   // the first of the fours' faces with it
+        __m256d lv = _mm256_set1_pd(lowest);
+        for (unsigned k = 0;; k += 4) {
+            int eq = _mm256_movemask_pd(_mm256_cmp_pd(_mm256_loadu_pd(prod + k), lv, _CMP_EQ_OQ));
+            if (eq) {
+                best = k + (unsigned)__builtin_ctz((unsigned)eq);
+                break;
+            }
+        }
+    }
+    return incident_face_from(inc, nf, g, lowest, best);
+}
+#endif
+
+// The incident face of a face contact: inc's face most against the
+// reference face's normal nf; with AVX2 (avx2 1) for hulls of at most
+// LINE_PLANES planes four at a time.
+static inline __attribute__((always_inline)) unsigned incident_face(const dx_hull *inc,
+                                                                    const double nf[3], int avx2)
+{
+#ifdef DX_CLIP_AVX2
+    if (avx2 && inc->nplanes <= LINE_PLANES) return incident_face4(inc, nf);
+#else
+    (void)avx2;
+#endif
+    return incident_face_from(inc, nf, 0, INFINITY, 0);
+}
+
+// The face contacts: the reference hull r's face f (outward unit nf at
+// offset df, facing the incident hull i). Writes the points, deepest first,
+// at most max (spread), into pts; returns the count (0 if none was found).
+static inline __attribute__((always_inline)) int
+face_points_with(const dx_hull *r, unsigned f, const double nf[3], double df, const dx_hull *inc,
+                 int max, hull_point *pts, int avx2)
+{
+    unsigned best = incident_face(inc, nf, avx2), count;
     const unsigned *idx = dx_hull_polygon(inc, best, &count);
     if (count > MAXP_INCIDENT) return 0;
     hull_point buf[2][MAXP];
@@ -387,20 +562,20 @@ static int face_points(const dx_hull *r, unsigned f, const double nf[3], double 
             off = -off;
         }
         double side[MAXP];
-        if (plane_sides(buf[cur], n, s, off, side)) continue;
+        if (plane_sides(buf[cur], n, s, off, side, avx2)) continue;
         n = clip_plane(buf[cur], n, side, buf[cur ^ 1]);
         cur ^= 1;
     }
     // Points below the reference face, lying inside both hulls along nf.
     int kept = 0, deepest = 0;
     line_planes lr, li;
-    int along = line_planes_of(r, nf, &lr) && line_planes_of(inc, nf, &li);
+    int along = line_planes_with(r, nf, &lr, avx2) && line_planes_with(inc, nf, &li, avx2);
     for (int k = 0; k < n; k++) {
         hull_point *p = &buf[cur][k];
         double depth = df - dot3(nf, p->p);
         if (depth < 0) continue;
         hull_point q;
-        if (along ? !middle_inside_along(r, &lr, inc, &li, p->p, nf, q.p)
+        if (along ? !middle_inside_along(r, &lr, inc, &li, p->p, nf, -INFINITY, INFINITY, q.p)
                   : !middle_inside(r, inc, p->p, nf, -INFINITY, INFINITY, q.p))
             continue;
         q.depth = depth;
@@ -421,6 +596,26 @@ static int face_points(const dx_hull *r, unsigned f, const double nf[3], double 
         kept = max;
     }
     return kept;
+}
+
+#ifdef DX_CLIP_AVX2
+__attribute__((target("avx2"))) static int face_points_avx2(const dx_hull *r, unsigned f,
+                                                            const double nf[3], double df,
+                                                            const dx_hull *inc, int max,
+                                                            hull_point *pts)
+{
+    return face_points_with(r, f, nf, df, inc, max, pts, 1);
+}
+#endif
+
+// face_points_with, with AVX2 where the machine has it (chosen when called).
+static int face_points(const dx_hull *r, unsigned f, const double nf[3], double df,
+                       const dx_hull *inc, int max, hull_point *pts)
+{
+#ifdef DX_CLIP_AVX2
+    if (__builtin_cpu_supports("avx2")) return face_points_avx2(r, f, nf, df, inc, max, pts);
+#endif
+    return face_points_with(r, f, nf, df, inc, max, pts, 0);
 }
 
 // The edge of h through its point v parallel to h's edge e (the copy of
@@ -528,15 +723,6 @@ static dxHullAxisHint *find_hint(dx_hull *h, const void *other)
     return NULL;
 }
 
-// Whether the axis n (world) parts a and b.
-static int axis_separates(const dx_hull *a, const dx_hull *b, const double n[3])
-{
-    double alo, ahi, blo, bhi;
-    dx_hull_interval(a, n, &alo, &ahi);
-    dx_hull_interval(b, n, &blo, &bhi);
-    return bhi - alo < 0 || ahi - blo < 0;
-}
-
 // h's hint against the geom other, made if there is none (replacing the
 // oldest entry).
 static dxHullAxisHint *hint_entry(dx_hull *h, const void *other)
@@ -598,7 +784,7 @@ int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
             for (int r = 0; r < 3; r++)
                 n[r] = holder->R[3 * r] * e->axis[0] + holder->R[3 * r + 1] * e->axis[1] +
                        holder->R[3 * r + 2] * e->axis[2];
-            if (axis_separates(a, b, n)) return 0;
+            if (dx_hull_axis_separates(a, b, n)) return 0;
         }
     }
     sat_axis face, edge;

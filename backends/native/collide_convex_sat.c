@@ -100,12 +100,24 @@ static double dot_max(const double m[3], const double *x, const double *y, const
     return mx;
 }
 
-double dx_hull_extent(const dx_hull *h, const double m[3], unsigned *idx)
+#ifdef DX_SIGNS_AVX2
+// m . x for h's points k to k + 3 (m broadcast in m0, m1, m2; made as
+// dot3 makes them).
+__attribute__((target("avx2"))) static inline __m256d products4(__m256d m0, __m256d m1, __m256d m2,
+                                                                const dx_hull *h, unsigned k)
 {
-    if (!idx) return dot_max(m, h->px, h->py, h->pz, h->npts);
-    double best = -INFINITY;
-    unsigned bi = 0;
-    for (unsigned v = 0; v < h->npts; v++) {
+    return _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(m0, _mm256_loadu_pd(h->px + k)),
+                                       _mm256_mul_pd(m1, _mm256_loadu_pd(h->py + k))),
+                         _mm256_mul_pd(m2, _mm256_loadu_pd(h->pz + k)));
+}
+#endif
+
+// The first of h's points from v on with the largest m . x (over best,
+// the largest before v, at bi), into *idx; returns that largest.
+static double extent_index_from(const dx_hull *h, const double m[3], unsigned v, double best,
+                                unsigned bi, unsigned *idx)
+{
+    for (; v < h->npts; v++) {
         double e = dot3(m, h->wp[v]);
         if (e > best) {
             best = e;
@@ -116,9 +128,99 @@ double dx_hull_extent(const dx_hull *h, const double m[3], unsigned *idx)
     return best;
 }
 
+#ifdef DX_SIGNS_AVX2
+// dx_hull_extent with its index, four points at a time: the largest of the
+// fours' products, then the first point that gives it (the same point).
+__attribute__((target("avx2"))) static double extent_index4(const dx_hull *h, const double m[3],
+                                                            unsigned *idx)
+{
+    __m256d m0 = _mm256_set1_pd(m[0]), m1 = _mm256_set1_pd(m[1]), m2 = _mm256_set1_pd(m[2]);
+    __m256d vhi = _mm256_set1_pd(-INFINITY);
+    unsigned n = h->npts & ~3u;
+    for (unsigned k = 0; k < n; k += 4)
+        vhi = _mm256_max_pd(products4(m0, m1, m2, h, k), vhi);   // a NaN is passed over
+    vhi = _mm256_max_pd(vhi, _mm256_permute2f128_pd(vhi, vhi, 1));
+    double best = _mm256_cvtsd_f64(_mm256_max_pd(vhi, _mm256_permute_pd(vhi, 1)));
+    unsigned bi = 0;
+    if (best > -INFINITY) {
+        __m256d bv = _mm256_set1_pd(best);
+        for (unsigned k = 0;; k += 4) {
+            int eq = _mm256_movemask_pd(_mm256_cmp_pd(products4(m0, m1, m2, h, k), bv, _CMP_EQ_OQ));
+            if (eq) {
+                bi = k + (unsigned)__builtin_ctz((unsigned)eq);
+                break;
+            }
+        }
+    }
+    return extent_index_from(h, m, n, best, bi, idx);
+}
+#endif
+
+double dx_hull_extent(const dx_hull *h, const double m[3], unsigned *idx)
+{
+    if (!idx) return dot_max(m, h->px, h->py, h->pz, h->npts);
+#ifdef DX_SIGNS_AVX2
+    if (__builtin_cpu_supports("avx2")) return extent_index4(h, m, idx);
+#endif
+    return extent_index_from(h, m, 0, -INFINITY, 0, idx);
+}
+
 void dx_hull_interval(const dx_hull *h, const double m[3], double *lo, double *hi)
 {
     dot_range(m, h->px, h->py, h->pz, h->npts, lo, hi);
+}
+
+#ifdef DX_SIGNS_AVX2
+// dot_range four at a time (the same products): the same least and
+// largest numbers, but for which of +0 and -0 a tie between them gives.
+__attribute__((target("avx2"))) static void dot_range4(const double m[3], const double *x,
+                                                       const double *y, const double *z,
+                                                       unsigned n, double *lo, double *hi)
+{
+    __m256d m0 = _mm256_set1_pd(m[0]), m1 = _mm256_set1_pd(m[1]), m2 = _mm256_set1_pd(m[2]);
+    __m256d vlo = _mm256_set1_pd(INFINITY), vhi = _mm256_set1_pd(-INFINITY);
+    unsigned k = 0;
+    for (; k + 4 <= n; k += 4) {
+        __m256d e = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(m0, _mm256_loadu_pd(x + k)),
+                                                _mm256_mul_pd(m1, _mm256_loadu_pd(y + k))),
+                                  _mm256_mul_pd(m2, _mm256_loadu_pd(z + k)));
+        vlo = _mm256_min_pd(e, vlo);   // a NaN product is skipped, as dot_range does
+        vhi = _mm256_max_pd(e, vhi);
+    }
+    vlo = _mm256_min_pd(vlo, _mm256_permute2f128_pd(vlo, vlo, 1));
+    vhi = _mm256_max_pd(vhi, _mm256_permute2f128_pd(vhi, vhi, 1));
+    double mn = _mm256_cvtsd_f64(_mm256_min_pd(vlo, _mm256_permute_pd(vlo, 1)));
+    double mx = _mm256_cvtsd_f64(_mm256_max_pd(vhi, _mm256_permute_pd(vhi, 1)));
+    for (; k < n; k++) {
+        double e = m[0] * x[k] + m[1] * y[k] + m[2] * z[k];
+        mn = e < mn ? e : mn;
+        mx = e > mx ? e : mx;
+    }
+    *lo = mn;
+    *hi = mx;
+}
+
+__attribute__((target("avx2"))) static int axis_separates_avx2(const dx_hull *a, const dx_hull *b,
+                                                               const double n[3])
+{
+    double alo, ahi, blo, bhi;
+    dot_range4(n, a->px, a->py, a->pz, a->npts, &alo, &ahi);
+    dot_range4(n, b->px, b->py, b->pz, b->npts, &blo, &bhi);
+    return bhi - alo < 0 || ahi - blo < 0;
+}
+#endif
+
+// Whether the axis n (world) parts a and b: their intervals along it are
+// apart (which of +0 and -0 an end is cannot change that).
+int dx_hull_axis_separates(const dx_hull *a, const dx_hull *b, const double n[3])
+{
+#ifdef DX_SIGNS_AVX2
+    if (__builtin_cpu_supports("avx2")) return axis_separates_avx2(a, b, n);
+#endif
+    double alo, ahi, blo, bhi;
+    dx_hull_interval(a, n, &alo, &ahi);
+    dx_hull_interval(b, n, &blo, &bhi);
+    return bhi - alo < 0 || ahi - blo < 0;
 }
 
 // What of a hull's pose the pair test has made (bits of *edges_posed):
@@ -367,6 +469,49 @@ static inline __attribute__((always_inline)) double extent_with(const dx_hull *h
     return dot_max(m, h->px, h->py, h->pz, h->npts);
 }
 
+#ifdef DX_SIGNS_AVX2
+// face_extent four polygon points at a time (gathered by coordinate; the
+// same products, the largest the same number, the order it is found in
+// aside).
+__attribute__((target("avx2"))) static inline double face_extent4(const dx_hull *h, unsigned f,
+                                                                  const double m[3])
+{
+    unsigned count;
+    const unsigned *idx = dx_hull_polygon(h, f, &count);
+    __m256d m0 = _mm256_set1_pd(m[0]), m1 = _mm256_set1_pd(m[1]), m2 = _mm256_set1_pd(m[2]);
+    __m256d vhi = _mm256_set1_pd(-INFINITY);
+    unsigned k = 0;
+    for (; k + 4 <= count; k += 4) {
+        __m128i at = _mm_loadu_si128((const __m128i *)(idx + k));
+        __m256d e = _mm256_add_pd(
+            _mm256_add_pd(_mm256_mul_pd(m0, _mm256_i32gather_pd(h->px, at, 8)),
+                          _mm256_mul_pd(m1, _mm256_i32gather_pd(h->py, at, 8))),
+            _mm256_mul_pd(m2, _mm256_i32gather_pd(h->pz, at, 8)));
+        vhi = _mm256_max_pd(e, vhi);
+    }
+    vhi = _mm256_max_pd(vhi, _mm256_permute2f128_pd(vhi, vhi, 1));
+    double best = _mm256_cvtsd_f64(_mm256_max_pd(vhi, _mm256_permute_pd(vhi, 1)));
+    for (; k < count; k++) {
+        double e = dot3(m, h->wp[idx[k]]);
+        best = e > best ? e : best;
+    }
+    return best;
+}
+#endif
+
+// face_extent, with AVX2 (avx2 1, in a function built for it) four points
+// at a time where the polygon's indices fit gathers.
+static inline __attribute__((always_inline)) double face_extent_with(const dx_hull *h, unsigned f,
+                                                                     const double m[3], int avx2)
+{
+#ifdef DX_SIGNS_AVX2
+    if (avx2 && h->npts <= INT32_MAX) return face_extent4(h, f, m);
+#else
+    (void)avx2;
+#endif
+    return face_extent(h, f, m);
+}
+
 // depth_along for the face axis n of a's face f (side 0: n its inward
 // normal) or b's (side 1: its outward normal), the face's own hull's
 // extent taken over the face's polygon.
@@ -374,8 +519,8 @@ static inline __attribute__((always_inline)) double
 face_depth(const dx_hull *a, const dx_hull *b, int side, unsigned f, const double n[3], int avx2)
 {
     double m[3] = { -n[0], -n[1], -n[2] };
-    return side ? face_extent(b, f, n) + extent_with(a, m, avx2)
-                : extent_with(b, n, avx2) + face_extent(a, f, m);
+    return side ? face_extent_with(b, f, n, avx2) + extent_with(a, m, avx2)
+                : extent_with(b, n, avx2) + face_extent_with(a, f, m, avx2);
 }
 
 // The axis of a's face f (side 0: its inward normal, along which a's face
@@ -386,24 +531,19 @@ static void face_axis(const dx_hull *a, const dx_hull *b, int side, unsigned f, 
     for (int i = 0; i < 3; i++) n[i] = side ? m[i] : -m[i];
 }
 
-// The gaps of h's faces against q, a point of the other hull: gap[f] =
-// low - n . q for the face's unit normal n and a floor under n . x over
-// its polygon, low (pose_floors). A floor under the face axis' depth (h's extent along n is
-// at least low, the other's along -n at least -n . q), and under the
-// depth of every edge pair with an edge of that face over the edge's arc
-// (see masked_edge_pairs).
-static void face_gaps(const dx_hull *h, const double q[3], double *gap)
+// face_gaps for h's faces from f on.
+static void face_gaps_from(const dx_hull *h, const double q[3], unsigned f, double *gap)
 {
-    for (unsigned f = 0; f < h->nplanes; f++)
+    for (; f < h->nplanes; f++)
         gap[f] = h->face_low[f] - (h->nx[f] * q[0] + h->ny[f] * q[1] + h->nz[f] * q[2]);
 }
 
-// The set of faces f < n (bit f) whose gap[f] is not above x, two at a
-// time where SSE2 is there.
-static inline uint64_t faces_within(const double *gap, unsigned n, double x)
+// The set of faces f, k0 <= f < n (bit f), whose gap[f] is not above x,
+// two at a time where SSE2 is there.
+static inline uint64_t faces_within_from(const double *gap, unsigned k0, unsigned n, double x)
 {
     uint64_t m = 0;
-    unsigned f = 0;
+    unsigned f = k0;
 #ifdef __SSE2__
     __m128d vx = _mm_set1_pd(x);
     for (; f + 2 <= n; f += 2)
@@ -411,6 +551,73 @@ static inline uint64_t faces_within(const double *gap, unsigned n, double x)
 #endif
     for (; f < n; f++) m |= (uint64_t)!(gap[f] > x) << f;
     return m;
+}
+
+#ifdef DX_SIGNS_AVX2
+// face_gaps' first faces four at a time (the same products and sums);
+// returns how many it made.
+__attribute__((target("avx2"))) static inline unsigned face_gaps4(const dx_hull *h, const double q[3],
+                                                                  double *gap)
+{
+    __m256d q0 = _mm256_set1_pd(q[0]), q1 = _mm256_set1_pd(q[1]), q2 = _mm256_set1_pd(q[2]);
+    unsigned f = 0;
+    for (; f + 4 <= h->nplanes; f += 4)
+        _mm256_storeu_pd(
+            gap + f,
+            _mm256_sub_pd(_mm256_loadu_pd(h->face_low + f),
+                          _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(h->nx + f), q0),
+                                                      _mm256_mul_pd(_mm256_loadu_pd(h->ny + f), q1)),
+                                        _mm256_mul_pd(_mm256_loadu_pd(h->nz + f), q2))));
+    return f;
+}
+
+// faces_within's first faces four at a time; *k set to how many it went over.
+__attribute__((target("avx2"))) static inline uint64_t faces_within4(const double *gap, unsigned n,
+                                                                     double x, unsigned *k)
+{
+    __m256d vx = _mm256_set1_pd(x);
+    uint64_t m = 0;
+    unsigned f = 0;
+    for (; f + 4 <= n; f += 4)
+        m |= (uint64_t)_mm256_movemask_pd(_mm256_cmp_pd(_mm256_loadu_pd(gap + f), vx, _CMP_NGT_UQ))
+             << f;
+    *k = f;
+    return m;
+}
+#endif
+
+// The gaps of h's faces against q, a point of the other hull: gap[f] =
+// low - n . q for the face's unit normal n and a floor under n . x over
+// its polygon, low (pose_floors). A floor under the face axis' depth (h's extent along n is
+// at least low, the other's along -n at least -n . q), and under the
+// depth of every edge pair with an edge of that face over the edge's arc
+// (see masked_edge_pairs). With AVX2 (avx2 1, in a function built for it)
+// four at a time.
+static inline __attribute__((always_inline)) void face_gaps(const dx_hull *h, const double q[3],
+                                                            double *gap, int avx2)
+{
+    unsigned f = 0;
+#ifdef DX_SIGNS_AVX2
+    if (avx2) f = face_gaps4(h, q, gap);
+#else
+    (void)avx2;
+#endif
+    face_gaps_from(h, q, f, gap);
+}
+
+// The set of faces f < n (bit f) whose gap[f] is not above x; with AVX2
+// (avx2 1) four at a time.
+static inline __attribute__((always_inline)) uint64_t faces_within(const double *gap, unsigned n,
+                                                                   double x, int avx2)
+{
+    unsigned k = 0;
+    uint64_t m = 0;
+#ifdef DX_SIGNS_AVX2
+    if (avx2) m = faces_within4(gap, n, x, &k);
+#else
+    (void)avx2;
+#endif
+    return m | faces_within_from(gap, k, n, x);
 }
 
 // Whether a's arc (from n1 to n2) and b's negated arc (for the difference,
@@ -642,12 +849,12 @@ masked_edge_pairs_with(const dx_hull *a, const dx_hull *b, edge_search *es, cons
     double far = es->face->depth * (1 + 1e-9) + 2 * es->margin;
     // The near edges (and lone ones), and the faces of a's near faces' edges.
     uint64_t near_a = a->lone, near_b = lone, faces = 0;
-    for (uint64_t m = faces_within(gap_a, a->nplanes, far); m; m &= m - 1) {
+    for (uint64_t m = faces_within(gap_a, a->nplanes, far, avx2); m; m &= m - 1) {
         unsigned f = (unsigned)__builtin_ctzll(m);
         near_a |= a->by_f1[f] | a->by_f2[f];
         faces |= a->nbr[f];   // the faces of f's edges
     }
-    for (uint64_t m = faces_within(gap_b, b->nplanes, far); m; m &= m - 1) {
+    for (uint64_t m = faces_within(gap_b, b->nplanes, far, avx2); m; m &= m - 1) {
         unsigned f = (unsigned)__builtin_ctzll(m);
         near_b |= first[f] | second[f];
     }
@@ -793,8 +1000,8 @@ sat_with(dx_hull *a, dx_hull *b, sat_hint *hint, sat_axis *face, sat_axis *edge,
         const double *qa, *qb;
         double qa_box[3], qb_box[3];
         facing_points(a, b, hint, &qa, &qb, qa_box, qb_box);
-        face_gaps(a, qb, gaps[0]);
-        face_gaps(b, qa, gaps[1]);
+        face_gaps(a, qb, gaps[0], avx2);
+        face_gaps(b, qa, gaps[1], avx2);
         if (hint->side >= 0 && hint->face < (hint->side ? b : a)->nplanes) {
             gside = hint->side;
             gface = hint->face;
@@ -823,7 +1030,7 @@ sat_with(dx_hull *a, dx_hull *b, sat_hint *hint, sat_axis *face, sat_axis *edge,
         double limit = guess * (1 + 1e-9) + 2 * found->margin;
         for (int side = 0; side < 2; side++) {
             const dx_hull *h = side ? b : a;
-            uint64_t near = faces_within(gaps[side], h->nplanes, limit);
+            uint64_t near = faces_within(gaps[side], h->nplanes, limit, avx2);
             found->tested[side] = near;
             for (; near; near &= near - 1) {
                 unsigned f = (unsigned)__builtin_ctzll(near);
