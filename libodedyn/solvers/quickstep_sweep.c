@@ -159,6 +159,17 @@ QS_INLINE qs_v2 hadd2(qs_v2 a, qs_v2 b)
 #endif
 }
 
+// a's two lanes summed (lane 0 + lane 1: the same sum either way round),
+// without moving lane 0 out first.
+QS_INLINE dReal lane_sum(qs_v2 a)
+{
+#if defined(__GNUC__)
+    return (a + __builtin_shufflevector(a, a, 1, 0))[0];
+#else
+    return a.e[0] + a.e[1];
+#endif
+}
+
 // Row a's J . fc of a block (12 numbers a row: its first body's 6, then its
 // second's), the two lanes not yet summed; np 3: one body.
 QS_INLINE qs_v2 block_dot(const qs_v2 *J, int a, qs_b6 x0, qs_b6 x1, int np)
@@ -186,8 +197,7 @@ QS_INLINE void block_delta(const qs_block *blk, int n, int np, qs_b6 x0, qs_b6 x
             const qs_v2 r = qs_sub(load2(blk->rhs + a), qs_mul(load2(blk->cfm + a), load2(l + a)));
             res[a / 2] = qs_sub(r, hadd2(sa, sb));
         } else {
-            res[a / 2] = qs_splat(blk->rhs[a] - blk->cfm[a] * l[a] -
-                                  (qs_lane(sa, 0) + qs_lane(sa, 1)));
+            res[a / 2] = qs_splat(blk->rhs[a] - blk->cfm[a] * l[a] - lane_sum(sa));
         }
     }
     for (int a = 0; a < w; a += 2) {
@@ -213,8 +223,7 @@ QS_INLINE dReal row_in_registers(const qs_row *q, int np, dReal *lambda, qs_b6 *
     const dReal s = dFabs(lambda[q->f]), old = lambda[q->pos];
     qs_v2 dot = b6_dot((const dReal *)q->J, *x0);
     if (np == 6) dot = qs_add(dot, b6_dot((const dReal *)q->J1, *x1));
-    const dReal now = clamp(old + q->rhs - q->cfm * old - (qs_lane(dot, 0) + qs_lane(dot, 1)),
-                            q->lo * s, q->hi * s);
+    const dReal now = clamp(old + q->rhs - q->cfm * old - lane_sum(dot), q->lo * s, q->hi * s);
     lambda[q->pos] = now;
     const dReal delta = now - old;
     const qs_v4 d4 = v4_splat(delta);
