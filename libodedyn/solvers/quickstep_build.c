@@ -628,17 +628,6 @@ static qs_jrows *fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h
     return jrows;
 }
 
-// Set n bytes at p to `byte`, 64 at a time in vector stores (libc's memset
-// does a few kilobytes and more with `rep stosb`, which callgrind counts as
-// an instruction a byte; the same stores either way).
-static void fill_bytes(void *p, int byte, size_t n)
-{
-    char *c = p;
-    size_t k = 0;
-    for (; k + 64 <= n; k += 64) memset(c + k, byte, 64);
-    memset(c + k, byte, n - k);
-}
-
 void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_system *sys)
 {
     dxArena *a = w->arena;
@@ -674,10 +663,10 @@ void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_syst
     sys->at = DX_ARENA_ARRAY(a, int, m + 1);
     sys->row_pos = DX_ARENA_ARRAY(a, int, m + 1);
     sys->row_f = DX_ARENA_ARRAY(a, int, m + 1);
-    fill_bytes(sys->at, 0xff, sizeof(int) * ((size_t)m + 1));   // -1
+    memset(sys->at, 0xff, sizeof(int) * ((size_t)m + 1));   // -1
     sys->feedback = DX_ARENA_ARRAY(a, qs_feedback, nfeedback + 1);
-    fill_bytes(sys->fc, 0, sizeof(dReal) * 6 * (size_t)nbodies);
-    fill_bytes(sys->lambda, 0, sizeof(dReal) * (size_t)m);
+    memset(sys->fc, 0, sizeof(dReal) * 6 * (size_t)nbodies);
+    memset(sys->lambda, 0, sizeof(dReal) * (size_t)m);
     sys->lambda[m] = 1;
 
     qs_scratch *s = DX_ARENA_ARRAY(a, qs_scratch, 1);
