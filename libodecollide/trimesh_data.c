@@ -92,6 +92,7 @@ static void clear_derived(dxTriMeshData *d)
     d->features = NULL;
     d->order = NULL;
     d->leaf_vertices = NULL;
+    d->leaf_boxes = NULL;
     d->tree_stamp = 0;
     d->nodes = NULL;
     d->built_flags = NULL;

@@ -114,8 +114,13 @@ struct dxTriMeshData {
     int *order;                           // triangles in leaf order
     dReal *leaf_vertices;                 // 9 per triangle in leaf order: the
                                           // vertices of order[j] at 9 j (rays)
-    void *tree_block;                     // one allocation holding nodes and
-    size_t tree_block_size;               // leaf_vertices, each at a cache line
+    float *leaf_boxes;                    // 6 per triangle in leaf order: the box
+                                          // of order[j] at 6 j (lo, then hi), in
+                                          // float rounded outwards; 2 more floats
+                                          // at the end (read, never used)
+    void *tree_block;                     // one allocation holding nodes,
+    size_t tree_block_size;               // leaf_vertices and leaf_boxes, each
+                                          // at a cache line
     uint64_t tree_stamp;                  // unique per build and refit; 0: no
                                           // temporal coherence (a heightfield patch)
     unsigned char *built_flags;           // Preprocess: use flags

@@ -25,7 +25,7 @@
 
 // A median split halves the triangles, so the binary depth stays below
 // log2(tri_count) + 2 and the four-way depth below half that: a walk
-// stacks at most 3 slots a level, far below STACK.
+// stacks at most one node a level, far below STACK.
 enum { LEAF = 4, STACK = 128 };
 
 void dxTriMeshBuildTree(dxTriMeshData *d);
@@ -227,7 +227,8 @@ static void lift_node(dxTriMeshData *d, const bin_node *bin, int b, int w, int *
     }
 }
 
-// Every slot's box from the leaf-order copy of the vertices, bottom-up
+// Every slot's box and every triangle's (leaf_boxes) from the leaf-order
+// copy of the vertices, bottom-up
 // (children come after their parent: going backwards meets them first),
 // the nodes' exact boxes kept aside while walking; the root's exact box
 // into the data.
@@ -250,6 +251,10 @@ static void fit_boxes(dxTriMeshData *d)
                     dReal tlo[3], thi[3];
                     leaf_triangle_box(d, j, tlo, thi);
                     grow(slo, shi, tlo, thi);
+                    for (int k = 0; k < 3; k++) {
+                        d->leaf_boxes[6 * j + k] = dxFloatBelow(tlo[k]);
+                        d->leaf_boxes[6 * j + 3 + k] = dxFloatAbove(thi[k]);
+                    }
                 }
             } else {
                 const dReal *c = exact + 6 * node->first[s];
@@ -272,17 +277,22 @@ static char *line_start(char *p)
     return p + ((64 - (uintptr_t)p % 64) % 64);
 }
 
-// One block for the nodes (node_count of them) and the leaf-order
-// vertices, each at the start of a cache line: a node is read as two
-// lines, not three, and a leaf's vertices touch the fewest lines.
+// One block for the nodes (node_count of them), the leaf-order vertices
+// and the triangles' boxes, each at the start of a cache line: a node is
+// read as two lines, not three, and a leaf's vertices touch the fewest
+// lines.
 static void place_tree(dxTriMeshData *d)
 {
     size_t node_room = ((size_t)d->node_count * sizeof(dxTriMeshNode) + 63) / 64 * 64;
-    d->tree_block_size = 64 + node_room + 9 * (size_t)d->tri_count * sizeof(dReal);
+    size_t vertex_room = (9 * (size_t)d->tri_count * sizeof(dReal) + 63) / 64 * 64;
+    size_t box_room = (6 * (size_t)d->tri_count + 2) * sizeof(float);
+    d->tree_block_size = 64 + node_room + vertex_room + box_room;
     d->tree_block = dAlloc(d->tree_block_size);
     char *p = line_start((char *)d->tree_block);
     d->nodes = (dxTriMeshNode *)p;
     d->leaf_vertices = (dReal *)(p + node_room);
+    d->leaf_boxes = (float *)(p + node_room + vertex_room);
+    d->leaf_boxes[6 * d->tri_count] = d->leaf_boxes[6 * d->tri_count + 1] = 0;
 }
 
 void dxTriMeshFreeTree(dxTriMeshData *d)
@@ -292,6 +302,7 @@ void dxTriMeshFreeTree(dxTriMeshData *d)
     d->tree_block_size = 0;
     d->nodes = NULL;
     d->leaf_vertices = NULL;
+    d->leaf_boxes = NULL;
 }
 
 void dxTriMeshBuildTree(dxTriMeshData *d)
@@ -356,50 +367,65 @@ static inline f4 load_f4(const float *p)
     return r;
 }
 
-// Bit s set for each used slot of the node whose box overlaps the query.
-static inline unsigned overlapping_slots(const dxTriMeshNode *node, const query_box *q)
+// Bit s set for each used slot of the node whose box overlaps the query
+// (the return value), and for each leaf slot (*leaves).
+static inline unsigned overlapping_slots(const dxTriMeshNode *node, const query_box *q,
+                                         unsigned *leaves)
 {
     i4 count;
     memcpy(&count, node->count, sizeof count);
     i4 m = count >= (i4){ 0, 0, 0, 0 };
+    i4 leaf = count > (i4){ 0, 0, 0, 0 };
     for (int k = 0; k < 3; k++) {
         f4 qlo = { q->lo[k], q->lo[k], q->lo[k], q->lo[k] };
         f4 qhi = { q->hi[k], q->hi[k], q->hi[k], q->hi[k] };
         m &= (load_f4(node->lo[k]) <= qhi) & (load_f4(node->hi[k]) >= qlo);
     }
 #if defined(__SSE__)
+    *leaves = (unsigned)_mm_movemask_ps((__m128)leaf);
     return (unsigned)_mm_movemask_ps((__m128)m);
 #else
+    *leaves = (unsigned)((leaf[0] & 1) | (leaf[1] & 2) | (leaf[2] & 4) | (leaf[3] & 8));
     return (unsigned)((m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8));
 #endif
 }
 
-// A walk of the tree for a query: the slots still to visit, the last
-// stacked first out.
+// A walk of the tree for a query: the node being read with its
+// overlapping slots not yet taken (m) and which of its slots are leaves;
+// below it, the nodes left part way (their slots still to take in mask[]:
+// bits 0-3 the slots, 4-7 the leaves), the last left first out. A node is
+// stacked once at most, when the walk goes down from it with slots left.
 typedef struct tree_walk {
-    int stack[STACK], top;
+    int node;
+    unsigned m, leaves;
+    int top;
+    int stack[STACK];
+    unsigned char mask[STACK];
 } tree_walk;
 
-// Stack node's slots that overlap q, the last first (so the first slot's
-// subtree comes out before the second slot: leaf order).
-static inline void push_slots(const dxTriMeshData *d, const query_box *q, tree_walk *w, int node)
-{
-    unsigned m = overlapping_slots(&d->nodes[node], q);
-    for (int s = 3; s >= 0; s--)
-        if (m >> s & 1) w->stack[w->top++] = 4 * node + s;
-}
-
-// The next leaf (node * 4 + slot) whose box overlaps q, in leaf order, or
-// -1 at the end.
+// The next leaf (node * 4 + slot) whose box overlaps q, in leaf order (a
+// node's slots in order, each inner slot's subtree before the next slot),
+// or -1 at the end.
 static inline int next_leaf(const dxTriMeshData *d, const query_box *q, tree_walk *w)
 {
-    while (w->top > 0) {
-        int id = w->stack[--w->top];
-        const dxTriMeshNode *node = &d->nodes[id >> 2];
-        if (node->count[id & 3] > 0) return id;
-        push_slots(d, q, w, node->first[id & 3]);
+    for (;;) {
+        while (w->m) {
+            const int s = __builtin_ctz(w->m);
+            w->m &= w->m - 1;
+            if (w->leaves >> s & 1) return 4 * w->node + s;
+            if (w->m) {
+                w->stack[w->top] = w->node;
+                w->mask[w->top++] = (unsigned char)(w->m | w->leaves << 4);
+            }
+            w->node = d->nodes[w->node].first[s];
+            w->m = overlapping_slots(&d->nodes[w->node], q, &w->leaves);
+        }
+        if (w->top == 0) return -1;
+        w->top--;
+        w->node = w->stack[w->top];
+        w->m = w->mask[w->top] & 15u;
+        w->leaves = (unsigned)w->mask[w->top] >> 4;
     }
-    return -1;
 }
 
 // Start a walk for [lo, hi] at the root (the tree must have nodes).
@@ -408,7 +434,8 @@ static inline void start_walk(const dxTriMeshData *d, const dReal lo[3], const d
 {
     *q = make_query(lo, hi);
     w->top = 0;
-    push_slots(d, q, w, 0);
+    w->node = 0;
+    w->m = overlapping_slots(&d->nodes[0], q, &w->leaves);
 }
 
 int dxTriMeshQueryBox(const dxTriMeshData *d, const dReal lo[3], const dReal hi[3], int **out,

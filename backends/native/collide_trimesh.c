@@ -14,6 +14,9 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+#if defined(__SSE__)
+#include <xmmintrin.h>
+#endif
 
 // ---- the walk and the reduction --------------------------------------------
 
@@ -594,23 +597,84 @@ static inline void add_hit(dxTriScratch *s, int *hits, int t)
     s->hits[0][(*hits)++] = t;
 }
 
+// The widened query box as the triangles' float boxes (leaf_boxes) are
+// compared with it: per axis the float at or above its lower side (a) and
+// the one at or below its upper side (c), a lane 3 of NaN that no
+// comparison counts. A triangle's float box [lo, hi] holds its exact one
+// [tlo, thi], and hi is the float at or above thi (lo the one at or below
+// tlo), so hi < a means thi < the lower side (off the box), hi > a means
+// thi is at least the lower side (not off that way: were thi below it, a
+// would be a float at or above thi under hi), and the same for lo and c;
+// only hi == a or lo == c leaves the question to the exact test. A NaN
+// side makes every comparison false: not off, as the exact test says.
+typedef struct off_box_f {
+#if defined(__SSE__)
+    __m128 a, c;
+#else
+    float a[3], c[3];
+#endif
+} off_box_f;
+
+static inline void off_box_f_set(off_box_f *f, const dReal lo[3], const dReal hi[3])
+{
+    float a[4], c[4];
+    for (int k = 0; k < 3; k++) {
+        a[k] = dxFloatAbove(lo[k]);
+        c[k] = dxFloatBelow(hi[k]);
+    }
+#if defined(__SSE__)
+    a[3] = c[3] = NAN;
+    f->a = _mm_loadu_ps(a);
+    f->c = _mm_loadu_ps(c);
+#else
+    for (int k = 0; k < 3; k++) {
+        f->a[k] = a[k];
+        f->c[k] = c[k];
+    }
+#endif
+}
+
+// For the triangle with the float box fb (lo, then hi; the two floats
+// after it are read, and count for nothing): 0 if it is not off f, 1 if
+// it is off, 2 if only the exact test can say (a side of its box at a
+// side of the query's in float).
+static inline int tri_off_box_f(const float *fb, const off_box_f *f)
+{
+#if defined(__SSE__)
+    const __m128 lo = _mm_loadu_ps(fb), hi = _mm_loadu_ps(fb + 3);
+    if (_mm_movemask_ps(_mm_or_ps(_mm_cmplt_ps(hi, f->a), _mm_cmpgt_ps(lo, f->c)))) return 1;
+    return _mm_movemask_ps(_mm_or_ps(_mm_cmpeq_ps(hi, f->a), _mm_cmpeq_ps(lo, f->c))) ? 2 : 0;
+#else
+    int unsure = 0;
+    for (int k = 0; k < 3; k++) {
+        if (fb[3 + k] < f->a[k] || fb[k] > f->c[k]) return 1;
+        unsure |= fb[3 + k] == f->a[k] || fb[k] == f->c[k];
+    }
+    return unsure ? 2 : 0;
+#endif
+}
+
 // The triangles of the n leaves (node * 4 + slot) without a per-triangle
-// callback, in place: a triangle off the box b is dropped first (from the
-// leaf-order copy the walk reads anyway), then a degenerate one (a zero
-// normal) and one whose height does not pass; the rest go to the test with
-// their vertices and normal where the data keeps them.
-static void walk_leaves(dxTriQuery *q, const int *leaf, int n, const off_box *b, dReal reach,
-                        dxTriTest *test, int *hits)
+// callback, in place: a triangle off the box b is dropped first (by its
+// float box from the data's leaf_boxes against fb, the vertices' exact
+// test only where that cannot say), then a degenerate one (a zero normal)
+// and one whose height does not pass; the rest go to the test with their
+// vertices and normal where the data keeps them.
+static void walk_leaves(dxTriQuery *q, const int *leaf, int n, const off_box *b,
+                        const off_box_f *fb, dReal reach, dxTriTest *test, int *hits)
 {
     const dxTriMeshData *d = q->data;
     const dReal *lv = d->leaf_vertices, *normal = d->normal;
+    const float *boxes = d->leaf_boxes;
     const int *order = d->order;
     for (int i = 0; i < n; i++) {
         const dxTriMeshNode *node = &d->nodes[leaf[i] >> 2];
         const int first = node->first[leaf[i] & 3], end = first + node->count[leaf[i] & 3];
         for (int j = first; j < end; j++) {
+            const int off = tri_off_box_f(boxes + 6 * j, fb);
+            if (off == 1) continue;
             const dReal *v = lv + 9 * j;
-            if (tri_off_box(v, b)) continue;
+            if (off == 2 && tri_off_box(v, b)) continue;
             const int t = order[j];
             dxTri tri = { .index = t, .v = (const dReal(*)[3])v, .n = normal + 3 * t };
             if (tri.n[0] == 0 && tri.n[1] == 0 && tri.n[2] == 0) continue;
@@ -653,7 +717,9 @@ int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dReal reach, dxT
     if (d->leaf_vertices && (d->tree_stamp == 0 || !dxTriMeshTCOn(m, other->ops->cls)))
         leaves = dxTriMeshQueryLeaves(d, lo, hi, leaf, LEAF_WALK_MAX);
     if (leaves >= 0 && !m->callback) {
-        walk_leaves(q, leaf, leaves, &b, reach, test, &hits);
+        off_box_f fb;
+        off_box_f_set(&fb, wlo, whi);
+        walk_leaves(q, leaf, leaves, &b, &fb, reach, test, &hits);
     } else if (leaves >= 0) {
         // The per-triangle callback sees every listed triangle that is not
         // degenerate, before the box test.
