@@ -14,6 +14,10 @@
 #include <string.h>
 #include <ode/collision_trimesh.h>
 
+#if defined(__SSE__)
+#include <xmmintrin.h>
+#endif
+
 #include "geom_internal.h"
 
 enum {
@@ -59,16 +63,30 @@ static inline float dxFloatStep(float f, int up)
 }
 
 // The float nearest x on the side of -infinity (below) or +infinity
-// (above): the tree's boxes are rounded outwards with these.
+// (above): the tree's boxes are rounded outwards with these, the queries'
+// inwards. Without branches: the step is one unit of the bits away from
+// zero or towards it by the sign bit, and a zero needs no case of its own,
+// (float)x keeping x's sign (a negative x that rounds up to a zero gives
+// -0, whose next bits are -FLT_TRUE_MIN; a positive one +0, whose next are
+// FLT_TRUE_MIN); -infinity from below -FLT_MAX steps to -FLT_MAX, +infinity
+// to FLT_MAX; a NaN compares false and stays.
 static inline float dxFloatBelow(dReal x)
 {
     float f = (float)x;
-    return f > x ? dxFloatStep(f, 0) : f;
+    int32_t bits;
+    memcpy(&bits, &f, sizeof bits);
+    bits -= f > x ? ((bits >> 31) | 1) : 0;   // down: +1 if negative, else -1
+    memcpy(&f, &bits, sizeof f);
+    return f;
 }
 static inline float dxFloatAbove(dReal x)
 {
     float f = (float)x;
-    return f < x ? dxFloatStep(f, 1) : f;
+    int32_t bits;
+    memcpy(&bits, &f, sizeof bits);
+    bits += f < x ? ((bits >> 31) | 1) : 0;   // up: -1 if negative, else +1
+    memcpy(&f, &bits, sizeof f);
+    return f;
 }
 
 // Make node a tree of one leaf: the count triangles order[0 ..], in the box
@@ -198,6 +216,95 @@ static inline int dxTriMeshIsDegenerate(const dxTriMeshData *d, int t)
 {
     const dReal *n = d->normal + 3 * t;
     return n[0] == 0 && n[1] == 0 && n[2] == 0;
+}
+
+// ---- the tree's walk for a box (inline: the colliders walk in place) ----
+
+typedef float dxTriF4 __attribute__((vector_size(16)));
+typedef int dxTriI4 __attribute__((vector_size(16)));
+
+// Bit s set for each used slot of node whose box overlaps the box
+// [lo, hi] (floats, rounded inwards: see dxTriTreeWalk), the return value;
+// bit s of *leaves for each leaf slot. The four slots at once.
+static inline unsigned dxTriNodeOverlaps(const dxTriMeshNode *node, const float lo[3],
+                                         const float hi[3], unsigned *leaves)
+{
+    dxTriI4 count;
+    memcpy(&count, node->count, sizeof count);
+    dxTriI4 m = count >= (dxTriI4){ 0, 0, 0, 0 };
+    dxTriI4 leaf = count > (dxTriI4){ 0, 0, 0, 0 };
+    for (int k = 0; k < 3; k++) {
+        dxTriF4 qlo = { lo[k], lo[k], lo[k], lo[k] }, qhi = { hi[k], hi[k], hi[k], hi[k] };
+        dxTriF4 slo, shi;
+        memcpy(&slo, node->lo[k], sizeof slo);
+        memcpy(&shi, node->hi[k], sizeof shi);
+        m &= (slo <= qhi) & (shi >= qlo);
+    }
+#if defined(__SSE__)
+    *leaves = (unsigned)_mm_movemask_ps((__m128)leaf);
+    return (unsigned)_mm_movemask_ps((__m128)m);
+#else
+    *leaves = (unsigned)((leaf[0] & 1) | (leaf[1] & 2) | (leaf[2] & 4) | (leaf[3] & 8));
+    return (unsigned)((m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8));
+#endif
+}
+
+// A walk of the tree for the leaves whose boxes overlap a query box. The
+// box is kept as floats rounded inwards: a float box side x meets the
+// exact one as it meets these (x <= hi exactly when x <= the float at or
+// below hi), so the four slots are compared in float with the same
+// outcome. Then the node being read with its overlapping slots not yet
+// taken (m) and which of its slots are leaves; below it, the nodes left
+// part way (their slots still to take in mask[]: bits 0-3 the slots, 4-7
+// the leaves), the last left first out. A node is stacked once at most,
+// when the walk goes down from it with slots left, so the stack holds
+// at most the four-way depth (below 17 for 2^31 triangles).
+enum { DX_TRI_WALK_STACK = 64 };
+typedef struct dxTriTreeWalk {
+    float lo[3], hi[3];
+    int node;
+    unsigned m, leaves;
+    int top;
+    int stack[DX_TRI_WALK_STACK];
+    unsigned char mask[DX_TRI_WALK_STACK];
+} dxTriTreeWalk;
+
+// Start a walk for [lo, hi] at the root (the tree must have nodes).
+static inline void dxTriTreeWalkStart(const dxTriMeshData *d, const dReal lo[3],
+                                      const dReal hi[3], dxTriTreeWalk *w)
+{
+    for (int k = 0; k < 3; k++) {
+        w->lo[k] = dxFloatAbove(lo[k]);
+        w->hi[k] = dxFloatBelow(hi[k]);
+    }
+    w->top = 0;
+    w->node = 0;
+    w->m = dxTriNodeOverlaps(&d->nodes[0], w->lo, w->hi, &w->leaves);
+}
+
+// The next leaf (node * 4 + slot) whose box overlaps the query, in leaf
+// order (a node's slots in order, each inner slot's subtree before the
+// next slot), or -1 at the end.
+static inline int dxTriTreeWalkNext(const dxTriMeshData *d, dxTriTreeWalk *w)
+{
+    for (;;) {
+        while (w->m) {
+            const int s = __builtin_ctz(w->m);
+            w->m &= w->m - 1;
+            if (w->leaves >> s & 1) return 4 * w->node + s;
+            if (w->m) {
+                w->stack[w->top] = w->node;
+                w->mask[w->top++] = (unsigned char)(w->m | w->leaves << 4);
+            }
+            w->node = d->nodes[w->node].first[s];
+            w->m = dxTriNodeOverlaps(&d->nodes[w->node], w->lo, w->hi, &w->leaves);
+        }
+        if (w->top == 0) return -1;
+        w->top--;
+        w->node = w->stack[w->top];
+        w->m = w->mask[w->top] & 15u;
+        w->leaves = (unsigned)w->mask[w->top] >> 4;
+    }
 }
 
 // Every triangle whose box overlaps [lo, hi] (mesh frame) into *out (grown

@@ -18,15 +18,22 @@
 #include <string.h>
 
 #include "trimesh_internal.h"
+#include "../libodedyn/core/dx_clones.h"
 
-#if defined(__SSE__)
-#include <xmmintrin.h>
+// The query's walk in two versions (see query_leaves); clang (14) builds
+// the baseline alone, as for box-box (collide_box.c).
+#if !defined(__clang__) && defined(DX_AVX2_CLONES)
+#define QUERY_CLONES DX_AVX2_CLONES
+#else
+#define QUERY_CLONES
 #endif
 
-// A median split halves the triangles, so the binary depth stays below
-// log2(tri_count) + 2 and the four-way depth below half that: a walk
-// stacks at most one node a level, far below STACK.
-enum { LEAF = 4, STACK = 128 };
+
+// Leaves of at most LEAF triangles. A median split halves the triangles,
+// so the binary depth stays below log2(tri_count) + 2 and the four-way
+// depth below half that: a walk stacks at most one node a level, far below
+// DX_TRI_WALK_STACK.
+enum { LEAF = 4 };
 
 void dxTriMeshBuildTree(dxTriMeshData *d);
 void dxTriMeshRefitTree(dxTriMeshData *d);
@@ -340,113 +347,14 @@ void dxTriMeshRefitTree(dxTriMeshData *d)
     d->tree_stamp = dxTriMeshNewStamp();
 }
 
-// A query box as floats rounded inwards: a float box side x meets the exact
-// one as it meets these (x <= hi exactly when x <= the float at or below
-// hi), so the four slots are compared in float with the same outcome.
-typedef struct query_box {
-    float lo[3], hi[3];
-} query_box;
-
-static query_box make_query(const dReal lo[3], const dReal hi[3])
-{
-    query_box q;
-    for (int k = 0; k < 3; k++) {
-        q.lo[k] = dxFloatAbove(lo[k]);
-        q.hi[k] = dxFloatBelow(hi[k]);
-    }
-    return q;
-}
-
-typedef float f4 __attribute__((vector_size(16)));
-typedef int i4 __attribute__((vector_size(16)));
-
-static inline f4 load_f4(const float *p)
-{
-    f4 r;
-    memcpy(&r, p, sizeof r);
-    return r;
-}
-
-// Bit s set for each used slot of the node whose box overlaps the query
-// (the return value), and for each leaf slot (*leaves).
-static inline unsigned overlapping_slots(const dxTriMeshNode *node, const query_box *q,
-                                         unsigned *leaves)
-{
-    i4 count;
-    memcpy(&count, node->count, sizeof count);
-    i4 m = count >= (i4){ 0, 0, 0, 0 };
-    i4 leaf = count > (i4){ 0, 0, 0, 0 };
-    for (int k = 0; k < 3; k++) {
-        f4 qlo = { q->lo[k], q->lo[k], q->lo[k], q->lo[k] };
-        f4 qhi = { q->hi[k], q->hi[k], q->hi[k], q->hi[k] };
-        m &= (load_f4(node->lo[k]) <= qhi) & (load_f4(node->hi[k]) >= qlo);
-    }
-#if defined(__SSE__)
-    *leaves = (unsigned)_mm_movemask_ps((__m128)leaf);
-    return (unsigned)_mm_movemask_ps((__m128)m);
-#else
-    *leaves = (unsigned)((leaf[0] & 1) | (leaf[1] & 2) | (leaf[2] & 4) | (leaf[3] & 8));
-    return (unsigned)((m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8));
-#endif
-}
-
-// A walk of the tree for a query: the node being read with its
-// overlapping slots not yet taken (m) and which of its slots are leaves;
-// below it, the nodes left part way (their slots still to take in mask[]:
-// bits 0-3 the slots, 4-7 the leaves), the last left first out. A node is
-// stacked once at most, when the walk goes down from it with slots left.
-typedef struct tree_walk {
-    int node;
-    unsigned m, leaves;
-    int top;
-    int stack[STACK];
-    unsigned char mask[STACK];
-} tree_walk;
-
-// The next leaf (node * 4 + slot) whose box overlaps q, in leaf order (a
-// node's slots in order, each inner slot's subtree before the next slot),
-// or -1 at the end.
-static inline int next_leaf(const dxTriMeshData *d, const query_box *q, tree_walk *w)
-{
-    for (;;) {
-        while (w->m) {
-            const int s = __builtin_ctz(w->m);
-            w->m &= w->m - 1;
-            if (w->leaves >> s & 1) return 4 * w->node + s;
-            if (w->m) {
-                w->stack[w->top] = w->node;
-                w->mask[w->top++] = (unsigned char)(w->m | w->leaves << 4);
-            }
-            w->node = d->nodes[w->node].first[s];
-            w->m = overlapping_slots(&d->nodes[w->node], q, &w->leaves);
-        }
-        if (w->top == 0) return -1;
-        w->top--;
-        w->node = w->stack[w->top];
-        w->m = w->mask[w->top] & 15u;
-        w->leaves = (unsigned)w->mask[w->top] >> 4;
-    }
-}
-
-// Start a walk for [lo, hi] at the root (the tree must have nodes).
-static inline void start_walk(const dxTriMeshData *d, const dReal lo[3], const dReal hi[3],
-                              query_box *q, tree_walk *w)
-{
-    *q = make_query(lo, hi);
-    w->top = 0;
-    w->node = 0;
-    w->m = overlapping_slots(&d->nodes[0], q, &w->leaves);
-}
-
 int dxTriMeshQueryBox(const dxTriMeshData *d, const dReal lo[3], const dReal hi[3], int **out,
                       int *cap)
 {
     if (d->node_count == 0) return 0;
-    query_box q;
-    tree_walk w;
-    start_walk(d, lo, hi, &q, &w);
+    dxTriTreeWalk w;
+    dxTriTreeWalkStart(d, lo, hi, &w);
     int n = 0;
-    for (int id; (id = next_leaf(d, &q, &w)) >= 0;) {
+    for (int id; (id = dxTriTreeWalkNext(d, &w)) >= 0;) {
         const dxTriMeshNode *leaf = &d->nodes[id >> 2];
         int first = leaf->first[id & 3], count = leaf->count[id & 3];
         if (n + count > *cap) dxTriMeshReserveInts(out, cap, n + count);
@@ -455,19 +363,27 @@ int dxTriMeshQueryBox(const dxTriMeshData *d, const dReal lo[3], const dReal hi[
     return n;
 }
 
-int dxTriMeshQueryLeaves(const dxTriMeshData *d, const dReal lo[3], const dReal hi[3], int *leaf,
-                         int max)
+// dxTriMeshQueryLeaves's walk, built twice where the library can pick a
+// version when loaded (dx_clones.h): with AVX2 (the same comparisons, in
+// three-operand form) and for the baseline. Static, called through the
+// plain function below (GCC 12 exports a clone whatever the visibility).
+QUERY_CLONES static int query_leaves(const dxTriMeshData *d, const dReal lo[3],
+                                     const dReal hi[3], int *leaf, int max)
 {
-    if (d->node_count == 0) return 0;
-    query_box q;
-    tree_walk w;
-    start_walk(d, lo, hi, &q, &w);
+    dxTriTreeWalk w;
+    dxTriTreeWalkStart(d, lo, hi, &w);
     int n = 0;
-    for (int id; (id = next_leaf(d, &q, &w)) >= 0;) {
+    for (int id; (id = dxTriTreeWalkNext(d, &w)) >= 0;) {
         if (n == max) return -1;
         leaf[n++] = id;
     }
     return n;
+}
+
+int dxTriMeshQueryLeaves(const dxTriMeshData *d, const dReal lo[3], const dReal hi[3], int *leaf,
+                         int max)
+{
+    return d->node_count == 0 ? 0 : query_leaves(d, lo, hi, leaf, max);
 }
 
 int dxTriMeshFilterLeaves(const dxTriMeshData *d, const int *leaf, int n, const dReal lo[3],
