@@ -153,7 +153,8 @@ static int check_same_derived(const dxTriMeshData *a, const dxTriMeshData *b)
 }
 
 // The exact box of tree node i's triangles into lo, hi; 1 if every slot's
-// float box is the one around its triangles' exact box (rounded outwards).
+// float box, and every triangle's (leaf_boxes), is the one around the exact
+// box (rounded outwards).
 static int node_boxes_exact(const dxTriMeshData *d, int i, dReal lo[3], dReal hi[3])
 {
     const dxTriMeshNode *node = &d->nodes[i];
@@ -166,13 +167,18 @@ static int node_boxes_exact(const dxTriMeshData *d, int i, dReal lo[3], dReal hi
         dReal shi[3] = { -dInfinity, -dInfinity, -dInfinity };
         if (node->count[s] > 0) {
             for (int j = node->first[s]; j < node->first[s] + node->count[s]; j++) {
-                dReal v[3][3];
+                dReal v[3][3], tlo[3], thi[3];
                 dxTriMeshTriangle(d, d->order[j], v);
-                for (int c = 0; c < 3; c++)
-                    for (int k = 0; k < 3; k++) {
-                        slo[k] = fmin(slo[k], v[c][k]);
-                        shi[k] = fmax(shi[k], v[c][k]);
-                    }
+                for (int k = 0; k < 3; k++) {
+                    tlo[k] = fmin(v[0][k], fmin(v[1][k], v[2][k]));
+                    thi[k] = fmax(v[0][k], fmax(v[1][k], v[2][k]));
+                    slo[k] = fmin(slo[k], tlo[k]);
+                    shi[k] = fmax(shi[k], thi[k]);
+                    // the triangle's own float box (the walk's first test)
+                    if (d->leaf_boxes[6 * j + k] != dxFloatBelow(tlo[k]) ||
+                        d->leaf_boxes[6 * j + 3 + k] != dxFloatAbove(thi[k]))
+                        return 0;
+                }
             }
         } else if (!node_boxes_exact(d, node->first[s], slo, shi)) {
             return 0;

@@ -9,8 +9,10 @@
 // sphere, more than its radius above) before the shape's own test. All
 // three must give the same contacts to the bit, and the same triangles to
 // the array callback, for spheres, boxes, capsules, cylinders and a hull on
-// a turned wavy terrain; and a sphere over a flat grid touches it exactly
-// when its centre is within [0, r] of the plane, at depth r - height.
+// a turned wavy terrain and for shapes whose boxes' sides lie within float
+// roundings of a flat grid's lines; and a sphere over a flat grid touches
+// it exactly when its centre is within [0, r] of the plane, at depth
+// r - height.
 
 #include "test.h"
 #include "test_trimesh_meshes.h"
@@ -124,6 +126,89 @@ static int test_three_walks_agree(void)
     return 0;
 }
 
+// The walk in place drops a triangle off the other geom's box by the
+// triangle's float box first, and asks the exact test only where a side of
+// that box equals the query's side in float. On a grid of whole and half
+// coordinates (its triangles' float boxes are exact), shapes set so that
+// their boxes' sides fall within a few float roundings of grid lines, on
+// either side, meet both cases: the three walks must still agree to the
+// bit, with the array callback's triangles.
+static int test_walks_agree_at_box_sides(void)
+{
+    test_mesh m;
+    mesh_grid(&m, 16, 4, NULL);   // cells of 0.5
+    dGeomID mesh = dCreateTriMesh(0, m.data, NULL, NULL, NULL);
+    dGeomTriMeshSetArrayCallback(mesh, array_seen);
+    const dReal r = 0.25;
+    dGeomID shapes[2] = { dCreateSphere(0, r), dCreateBox(0, 2 * r, 2 * r, 2 * r) };
+    dContactGeom c[WAYS][MAXC];
+    int total = 0;
+    for (int i = 0; i < 1200; i++) {
+        dGeomID o = shapes[i % 2];
+        // a side of the shape's box on a grid line, moved by a few float
+        // roundings (at 1: 1.2e-7) either way, or by far less
+        const double shift = (i % 7 - 3) * (i % 3 ? 3e-8 : 1e-13);
+        double x = round(uniform(-3, 3) * 2) / 2 + r + shift;
+        double y = round(uniform(-3, 3) * 2) / 2 - r - (i % 5 - 2) * 4e-8;
+        double z = (i % 4 ? r : 0.1) + (i % 11 - 5) * 2e-8;
+        dGeomSetPosition(o, x, y, z);
+        for (int order = 0; order < 2; order++) {
+            int n[WAYS];
+            long sum[WAYS];
+            for (int way = 0; way < WAYS; way++) {
+                set_way(mesh, way);
+                array_sum = 0;
+                memset(c[way], 0, sizeof c[way]);
+                n[way] = order ? dCollide(o, mesh, MAXC, c[way], sizeof c[way][0])
+                               : dCollide(mesh, o, MAXC, c[way], sizeof c[way][0]);
+                sum[way] = array_sum;
+            }
+            for (int way = 1; way < WAYS; way++) {
+                CHECK(n[way] == n[0]);
+                CHECK(sum[way] == sum[0]);
+                CHECK(memcmp(c[way], c[0], (size_t)n[0] * sizeof c[0][0]) == 0);
+            }
+            total += n[0];
+        }
+    }
+    CHECK(total > 1000);   // the poses do touch
+    for (int k = 0; k < 2; k++) dGeomDestroy(shapes[k]);
+    dGeomDestroy(mesh);
+    mesh_free(&m);
+    // Heights that are not floats: a sphere over the wavy grid's highest
+    // vertex, its box's lower side swept across the vertex's height in
+    // steps far below a float's rounding there, so that for some it lies
+    // above the vertex but at the same float (the exact test says off).
+    mesh_grid(&m, 24, 5, wavy);
+    mesh = dCreateTriMesh(0, m.data, NULL, NULL, NULL);
+    dGeomTriMeshSetArrayCallback(mesh, array_seen);
+    int top = 0;
+    for (int i = 1; i < m.nv; i++)
+        if (m.v[i][2] > m.v[top][2]) top = i;
+    dGeomID ball = dCreateSphere(0, r);
+    for (int i = -400; i <= 400; i++) {
+        dGeomSetPosition(ball, m.v[top][0] + 0.01, m.v[top][1] - 0.02, m.v[top][2] + r + i * 2e-10);
+        int n[WAYS];
+        long sum[WAYS];
+        for (int way = 0; way < WAYS; way++) {
+            set_way(mesh, way);
+            array_sum = 0;
+            memset(c[way], 0, sizeof c[way]);
+            n[way] = dCollide(mesh, ball, MAXC, c[way], sizeof c[way][0]);
+            sum[way] = array_sum;
+        }
+        for (int way = 1; way < WAYS; way++) {
+            CHECK(n[way] == n[0]);
+            CHECK(sum[way] == sum[0]);
+            CHECK(memcmp(c[way], c[0], (size_t)n[0] * sizeof c[0][0]) == 0);
+        }
+    }
+    dGeomDestroy(ball);
+    dGeomDestroy(mesh);
+    mesh_free(&m);
+    return 0;
+}
+
 // A sphere over a flat grid (facing up): contacts exactly when its centre
 // is on or above the plane by at most r (one a triangle it is over: ODE's
 // sphere contacts are not merged by default), each at depth r - height,
@@ -162,6 +247,7 @@ static int test_sphere_height_window(void)
 
 const test_case test_cases[] = {
     TEST_CASE(test_three_walks_agree),
+    TEST_CASE(test_walks_agree_at_box_sides),
     TEST_CASE(test_sphere_height_window),
     TEST_END,
 };
