@@ -205,7 +205,8 @@ QS_INLINE void inertia_lanes(const dReal *I, qc_v4 ax, qc_v4 ay, qc_v4 az, qc_v4
 // i along r->d[i]; sor_w the lanes' relaxation factors): D J and M^-1 J^T,
 // rhs = (c fps - J rates) D, cfm = cfm fps D, the bounds (friction: -k..k),
 // as fill_row makes them from row_full's J and M^-1 J^T. two: a second
-// body (else its numbers are zero). The sums are pair_dot's: with p the
+// body (else its numbers are zero, and its J1 and M1 are not written: the
+// sweep reads them only for a two-body row). The sums are pair_dot's: with p the
 // products of body 0's 6 numbers and q body 1's, the pair
 // (p0 + p2 | p1 + p3) + ((p4 + q0) + (q2 + q4) | (p5 + q1) + (q3 + q5)),
 // (one body: + (p4 | p5)), its two lanes added last. d: the directions'
@@ -278,8 +279,6 @@ QS_INLINE void lanes_rows(const qs_input *in, const qs_cbodies *cb, const dxCont
     if (two) {
         qc_store(rows, m, J + 12 * n, qc_mul(D, lx), qc_mul(D, ly), qc_mul(D, lz), qc_mul(D, bx));
         qc_store(rows, m, J + 16 * n, qc_mul(D, by), qc_mul(D, bz), n0, n1);
-    } else {
-        for (int i = 0; i < m; i++) memset(rows[i].J1, 0, 12 * sizeof(dReal));   // J1, M1
     }
 }
 
@@ -446,20 +445,27 @@ QS_CONTACT_CLONES void dxQuickContact(const qs_input *in, dxJoint *j, qs_system 
     cb.I0 = bd->inv_inertia + 12 * b0->tag;
     cb.R0 = in->rates + 6 * b0->tag;
     cb.o0 = 6 * (in->body0 + b0->tag);
-    cb.im1 = b1 ? bd->inv_mass[b1->tag] : 0;
-    cb.I1 = b1 ? bd->inv_inertia + 12 * b1->tag : NULL;
-    cb.R1 = b1 ? in->rates + 6 * b1->tag : NULL;
-    cb.o1 = 6 * (in->body0 + (b1 ? b1->tag : in->nb));
+    // A one-body contact's second body is the island's dummy: its numbers
+    // are never read (its rows' J1 and M1 are left as they are: the sweep
+    // and the warm start skip them).
+    if (b1) {
+        cb.im1 = bd->inv_mass[b1->tag];
+        cb.I1 = bd->inv_inertia + 12 * b1->tag;
+        cb.R1 = in->rates + 6 * b1->tag;
+        cb.o1 = 6 * (in->body0 + b1->tag);
+    } else {
+        cb.im1 = 0;   // (GCC cannot tell it is unread)
+        cb.o1 = 6 * (in->body0 + in->nb);
+    }
     // The warm start's lookup first: a warm normal row is relaxed with 1.
     dReal fw[4];   // the friction force, then the normal force
     const dReal *f = warm_contact_rows(sys->warm, b0, b1, r, sys->next, fw) ? fw : NULL;
     // The usual three rows made with constants (no loop, no test of m).
-    const int two = r->arm[1] != NULL;
     if (r->m == 3) {
-        if (two) append_rows(in, &cb, r, f, sys, 3, 1);
+        if (b1) append_rows(in, &cb, r, f, sys, 3, 1);
         else append_rows(in, &cb, r, f, sys, 3, 0);
     } else {
-        if (two) append_rows(in, &cb, r, f, sys, r->m, 1);
+        if (b1) append_rows(in, &cb, r, f, sys, r->m, 1);
         else append_rows(in, &cb, r, f, sys, r->m, 0);
     }
 }
