@@ -22,6 +22,7 @@
 // transpose per four consecutive numbers of qs_row).
 
 #include "quickstep_warm_match.h"
+#include "joint_contact.h"
 #include "dx_clones.h"
 
 #include <stddef.h>
@@ -342,17 +343,14 @@ QS_INLINE qc_v4 warm_forces(const dxContactRows *r, const dReal *f, const qc_v4 
     const dReal fn = f[3];
     const dReal l0 = WARM_SCALE * (fn > 0 ? fn : 0);
 #if defined(__GNUC__)
-#ifdef dSINGLE
-    typedef int mask __attribute__((vector_size(4 * sizeof(int))));
-#else
-    typedef long long mask __attribute__((vector_size(4 * sizeof(long long))));
-#endif
+    typedef dxRealMask mask __attribute__((vector_size(4 * sizeof(dxRealMask))));
     const qc_v4 F = qc_load(f);
     const qc_v4 dot = qc_add(qc_add(qc_mul(qc_spread(F, 0), d[0]), qc_mul(qc_spread(F, 1), d[1])),
                              qc_mul(qc_spread(F, 2), d[2]));
     const qc_v4 li = qc_mul(qc_splat(WARM_SCALE), dot);
     const qc_v4 hi4 = qc_load(r->hi), lo4 = qc_load(r->lo), scaled = qc_mul(hi4, qc_splat(l0));
-    const mask pyr = { 0, -(r->pyramid[1] != 0), -(r->pyramid[2] != 0), 0 };
+    mask pyr;
+    memcpy(&pyr, r->pyramid, sizeof pyr);
     const mask hi = ((mask)scaled & pyr) | ((mask)hi4 & ~pyr);
     const mask lo = ((mask)qc_neg(scaled) & pyr) | ((mask)lo4 & ~pyr);
     const mask gt = li > (qc_v4)hi, lt = li < (qc_v4)lo;
@@ -415,7 +413,7 @@ QS_INLINE void append_rows(const qs_input *in, const qs_cbodies *cb, const dxCon
 #endif
     for (int i = 0; i < m; i++) {
         qs_row *q = &rows[i];
-        const int fi = i > 0 && r->pyramid[i] ? first : one;   // (never the normal row)
+        const int fi = r->pyramid[i] ? first : one;
         memcpy((char *)q + QS_ROW_INTS, (const char *)&ints + QS_ROW_INTS, QS_ROW_INTS_SIZE);
         q->pos = first + i;
         q->f = fi;
@@ -437,8 +435,9 @@ QS_INLINE void append_rows(const qs_input *in, const qs_cbodies *cb, const dxCon
 
 QS_CONTACT_CLONES void dxQuickContact(const qs_input *in, dxJoint *j, qs_system *sys)
 {
-    const dxContactRows *r = dxJointContactRows(j, in->fps, in->erp);
-    const struct dxBody *b0 = dxJointBody(j, 0), *b1 = dxJointBody(j, 1);
+    const struct dxBody *const b[2] = { dxJointBody(j, 0), dxJointBody(j, 1) };
+    const struct dxBody *b0 = b[0], *b1 = b[1];
+    const dxContactRows *r = dxJointContactRowsOf((dxJointContact *)j, b, in->fps, in->erp);
     const dxIslandBodies *bd = in->bd;
     qs_cbodies cb;
     cb.im0 = bd->inv_mass[b0->tag];
