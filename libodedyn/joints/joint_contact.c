@@ -216,7 +216,9 @@ void dxJointContactOwnNumbers(dxJointContact *c)
 const dxContactRows *dxJointContactRows(dxJoint *j, dReal fps, dReal erp)
 {
     const struct dxBody *const b[2] = { dxJointBody(j, 0), dxJointBody(j, 1) };
-    return dxJointContactRowsOf((dxJointContact *)j, b, fps, erp);
+    dxJointContact *c = (dxJointContact *)j;
+    dxJointContactCfm(c);
+    return dxJointContactStep(c, b, fps, erp);
 }
 
 static void contact_fill_rows(dxJoint *j, dxJointRows *rows)

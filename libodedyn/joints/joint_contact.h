@@ -109,24 +109,31 @@ static inline dReal dxJointContactNormalTarget(dxJointContact *c, const struct d
     return target + motion;
 }
 
-// dxJointContactRows for the contact's bodies b[0], b[1] (stored order).
-static inline const dxContactRows *dxJointContactRowsOf(dxJointContact *c,
-                                                        const struct dxBody *const b[2],
-                                                        dReal fps, dReal erp)
+// The per-step part of dxJointContactRows but the cfm, for the contact's
+// bodies b[0], b[1] (stored order): the directions' sense, the normal row's
+// target (with the anchor at the first step), body 1's arm.
+static inline dxContactRows *dxJointContactStep(dxJointContact *c, const struct dxBody *const b[2],
+                                                dReal fps, dReal erp)
 {
     dxContactRows *r = &c->kept;
     // Stored sense: the user's directions, negated when the joint is stored
     // reversed (user body 2 as body 0).
     if (((c->base.flags & DX_JOINT_REVERSE) != 0) != c->negated) dxJointContactFlip(c);
+    r->c[0] = dxJointContactNormalTarget(c, b, r->n, fps, erp);   // first: it may record the arms
+    r->arm[1] = b[1] ? c->arm[1] : NULL;
+    return r;
+}
+
+// The rows' cfm: the world's, read now, unless a mode gives a row its own.
+static inline void dxJointContactCfm(dxJointContact *c)
+{
+    dxContactRows *r = &c->kept;
     const dReal world_cfm = c->base.world->cfm;
     const int m = r->m;
     r->cfm[0] = world_cfm;
     r->cfm[1] = m > 1 ? world_cfm : 0;
     r->cfm[2] = m > 2 ? world_cfm : 0;
     if (c->own_numbers) dxJointContactOwnNumbers(c);
-    r->c[0] = dxJointContactNormalTarget(c, b, r->n, fps, erp);   // first: it may record the arms
-    r->arm[1] = b[1] ? c->arm[1] : NULL;
-    return r;
 }
 
 #endif

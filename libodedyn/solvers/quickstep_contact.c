@@ -203,7 +203,8 @@ QS_INLINE void inertia_lanes(const dReal *I, qc_v4 ax, qc_v4 ay, qc_v4 az, qc_v4
 }
 
 // The scaled numbers of the contact's m rows into rows[0..m) (lane i: row
-// i along r->d[i]; sor_w the lanes' relaxation factors): D J and M^-1 J^T,
+// i along r->d[i], its cfm lane i of cfm; sor_w the lanes' relaxation
+// factors; lanes from m on are made but not stored): D J and M^-1 J^T,
 // rhs = (c fps - J rates) D, cfm = cfm fps D, the bounds (friction: -k..k),
 // as fill_row makes them from row_full's J and M^-1 J^T. two: a second
 // body (else its numbers are zero, and its J1 and M1 are not written: the
@@ -214,8 +215,8 @@ QS_INLINE void inertia_lanes(const dReal *I, qc_v4 ax, qc_v4 ay, qc_v4 az, qc_v4
 // x, y, z as lanes (the missing rows' zero). m and two are constants where
 // the caller makes them so (the usual three rows).
 QS_INLINE void lanes_rows(const qs_input *in, const qs_cbodies *cb, const dxContactRows *r,
-                          const qc_v4 d[3], qc_v4 sor_w, const int m, const int two,
-                          qs_row *rows)
+                          const qc_v4 d[3], qc_v4 cfm_rows, qc_v4 sor_w, const int m,
+                          const int two, qs_row *rows)
 {
     const size_t J = offsetof(qs_row, J), n = sizeof(dReal);
     const qc_v4 dx = d[0], dy = d[1], dz = d[2];
@@ -271,7 +272,7 @@ QS_INLINE void lanes_rows(const qs_input *in, const qs_cbodies *cb, const dxCont
     const qc_v4 rate = qc_add(qc_add(ra, rc), qc_add(rb, rd));
     const qc_v4 ms = qc_add(qc_add(ma, mc), qc_add(mb, md));
     const qc_v4 fps = qc_splat(in->fps);
-    const qc_v4 cfm = qc_mul(qc_load(r->cfm), fps);
+    const qc_v4 cfm = qc_mul(cfm_rows, fps);
     const qc_v4 D = qc_factor(ms, cfm, sor_w);
     qc_store(rows, m, 0, qc_mul(qc_sub(qc_mul(qc_load(r->c), fps), rate), D), qc_mul(cfm, D),
              qc_load(r->lo), qc_load(r->hi));
@@ -384,9 +385,10 @@ QS_INLINE qc_v4 warm_forces(const dxContactRows *r, const dReal *f, const qc_v4 
 // bounded by the normal force (pyramid) take the normal row's lambda, the
 // others the constant 1. f: the last step's forces (dxQuickWarmContactRows;
 // lambda and fc then start from them, and the normal row is relaxed with
-// 1), or NULL. m and two as in lanes_rows.
+// 1), or NULL. cfm, m and two as in lanes_rows.
 QS_INLINE void append_rows(const qs_input *in, const qs_cbodies *cb, const dxContactRows *r,
-                           const dReal *f, qs_system *sys, const int m, const int two)
+                           qc_v4 cfm, const dReal *f, qs_system *sys, const int m,
+                           const int two)
 {
     const int first = sys->next, one = sys->m, nrows = sys->nrows;
     qs_row *rows = sys->rows + nrows;
@@ -394,7 +396,7 @@ QS_INLINE void append_rows(const qs_input *in, const qs_cbodies *cb, const dxCon
     qc_transpose(qc_load(r->d[0]), qc_load(r->d[1]), qc_load(r->d[2]), qc_splat(0), d);
     const qc_v4 l = f ? warm_forces(r, f, d) : qc_splat(0);
     const dReal w = in->sor_w;
-    lanes_rows(in, cb, r, d, qc_make(f ? 1 : w, w, w, w), m, two, rows);
+    lanes_rows(in, cb, r, d, cfm, qc_make(f ? 1 : w, w, w, w), m, two, rows);
     // The integers the rows share, copied whole into each, then its own
     // lambda position and its bound's.
     qs_row ints;
@@ -437,7 +439,17 @@ QS_CONTACT_CLONES void dxQuickContact(const qs_input *in, dxJoint *j, qs_system 
 {
     const struct dxBody *const b[2] = { dxJointBody(j, 0), dxJointBody(j, 1) };
     const struct dxBody *b0 = b[0], *b1 = b[1];
-    const dxContactRows *r = dxJointContactRowsOf((dxJointContact *)j, b, in->fps, in->erp);
+    dxJointContact *c = (dxJointContact *)j;
+    const dxContactRows *r = dxJointContactStep(c, b, in->fps, in->erp);
+    // The rows' cfm: the world's (the lanes from r->m on are not stored),
+    // unless a mode gives a row its own (dxJointContactRows' numbers).
+    qc_v4 cfm;
+    if (c->own_numbers) {
+        dxJointContactCfm(c);
+        cfm = qc_load(r->cfm);
+    } else {
+        cfm = qc_splat(c->base.world->cfm);
+    }
     const dxIslandBodies *bd = in->bd;
     qs_cbodies cb;
     cb.im0 = bd->inv_mass[b0->tag];
@@ -461,10 +473,10 @@ QS_CONTACT_CLONES void dxQuickContact(const qs_input *in, dxJoint *j, qs_system 
     const dReal *f = warm_contact_rows(sys->warm, b0, b1, r, sys->next, fw) ? fw : NULL;
     // The usual three rows made with constants (no loop, no test of m).
     if (r->m == 3) {
-        if (b1) append_rows(in, &cb, r, f, sys, 3, 1);
-        else append_rows(in, &cb, r, f, sys, 3, 0);
+        if (b1) append_rows(in, &cb, r, cfm, f, sys, 3, 1);
+        else append_rows(in, &cb, r, cfm, f, sys, 3, 0);
     } else {
-        if (b1) append_rows(in, &cb, r, f, sys, r->m, 1);
-        else append_rows(in, &cb, r, f, sys, r->m, 0);
+        if (b1) append_rows(in, &cb, r, cfm, f, sys, r->m, 1);
+        else append_rows(in, &cb, r, cfm, f, sys, r->m, 0);
     }
 }
