@@ -123,7 +123,8 @@ static int test_contact_rows_need_no_defaults(void)
 // alone: the unit normal and dPlaneSpace's directions in the stored sense
 // (negated when the joint is stored reversed, also after it is attached the
 // other way round between two steps), the friction rows present in order t1,
-// t2 with bounds -k..k, the pyramid flag for a finite k under Approx1_1/_2,
+// t2 with bounds -k..k, the pyramid mask (all bits) for a finite k under
+// Approx1_1/_2 (else 0, as for the normal row and the fourth),
 // Motion1/2's targets, Slip1/2's and SoftCFM's cfm or else the world's, and
 // zeros after the last row. The usual surface (no mode but the pyramid's) is
 // made on a path of its own at creation: both paths are covered.
@@ -209,7 +210,7 @@ static int test_contact_numbers_follow_the_rule(void)
             const dReal *dirs[2] = { r.t1, r.t2 };
             dReal c[4] = { r.c[0], 0, 0, 0 }, cfm[4] = { 0, 0, 0, 0 };
             dReal lo[4] = { 0, 0, 0, 0 }, hi[4] = { dInfinity, 0, 0, 0 };
-            int pyramid[3] = { 0, 0, 0 };
+            int pyramid[4] = { 0, 0, 0, 0 };
             const dReal *d[3] = { r.n, zero, zero };
             cfm[0] = (mode & dContactSoftCFM) ? ct.surface.soft_cfm : dWorldGetCFM(w);
             int m = 1;
@@ -229,7 +230,7 @@ static int test_contact_numbers_follow_the_rule(void)
             CHECK(memcmp(r.cfm, cfm, sizeof cfm) == 0);
             CHECK(memcmp(r.lo, lo, sizeof lo) == 0);
             CHECK(memcmp(r.hi, hi, sizeof hi) == 0);
-            for (int i = 0; i < m; i++) CHECK(r.pyramid[i] == pyramid[i]);
+            for (int i = 0; i < 4; i++) CHECK(r.pyramid[i] == -(dxRealMask)pyramid[i]);
             for (int i = 0; i < 3; i++) CHECK(memcmp(r.d[i], d[i], 3 * sizeof(dReal)) == 0);
             CHECK(memcmp(r.point, ct.geom.pos, 3 * sizeof(dReal)) == 0);
             CHECK((r.arm[1] != NULL) == two);

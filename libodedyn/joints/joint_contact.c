@@ -43,6 +43,7 @@
 // sanitise_surface). A negative depth (the shapes do not touch yet) is
 // accepted and gives no correction, like depth 0.
 
+#include "joint_contact.h"
 #include "joint_group.h"
 #include "joint_kept.h"
 #include "joint_geometry.h"
@@ -57,36 +58,6 @@ enum {
     ROW_R2 = 1 << 3,
     ROW_RN = 1 << 4
 };
-
-typedef struct dxJointContact {
-    dxJoint base;
-    dContact contact;      // as given, with the surface sanitised (see contact_init)
-    // Its rows' numbers as dxJointContactRows gives them. What the contact
-    // alone decides is set at creation: the unit normal and friction
-    // directions (4th numbers 0; kept.n, .t1, .t2 in the user's body order,
-    // negated while `negated`: they are turned to the stored sense
-    // (DX_JOINT_REVERSE) when the rows are asked for, and stay so), the
-    // sliding rows (kept.m) with their directions, bounds and pyramid flags,
-    // targets 0 but the normal row's, the arm of body 0 and the point. Each
-    // step sets the normal row's target, the cfm (the world's, read then,
-    // or a mode's) and whether body 1 has an arm.
-    dxContactRows kept;
-    unsigned negated;
-    dReal mu2, rho2, rhoN; // effective coefficients of direction 2 and spin
-    unsigned rows_present; // ROW_... ; computed once at creation
-    int inert;             // bad geometry: no rows at all
-    int m;                 // its number of rows (0 when inert)
-    // A mode gives a sliding friction row its own target or cfm (Motion1/2,
-    // Slip1/2, SoftCFM): without, every row's target is 0 but the normal
-    // row's, and its cfm is the world's.
-    int own_numbers;
-    // The bodies' poses at the contact's first step, and the arms from
-    // their origins to the contact point then (world frame).
-    const struct dxBody *anchor_body[2];
-    uint32_t anchor_generation[2];
-    dVector3 pos0[2], arm[2];
-    dQuaternion q0[2];
-} dxJointContact;
 
 static void contact_count_rows(dxJoint *j, dxJointRowCount *count)
 {
@@ -160,31 +131,6 @@ static void friction_bounds(dxJointRows *rows, int row, dReal k, int pyramid)
     rows->findex[row] = pyramid && k < dInfinity ? 0 : -1;
 }
 
-// Does the anchor record belong to the bodies attached now?
-static int anchored_to_current_bodies(const dxJointContact *c)
-{
-    for (int k = 0; k < 2; k++) {
-        const struct dxBody *b = dxJointBody(&c->base, k);
-        if (c->anchor_body[k] != b || (b && c->anchor_generation[k] != b->hdr.generation))
-            return 0;
-    }
-    return 1;
-}
-
-// Record the bodies' poses and the arms to the contact point.
-static void anchor(dxJointContact *c)
-{
-    for (int k = 0; k < 2; k++) {
-        const struct dxBody *b = dxJointBody(&c->base, k);
-        c->anchor_body[k] = b;
-        if (!b) continue;
-        c->anchor_generation[k] = b->hdr.generation;
-        memcpy(c->pos0[k], b->pos, sizeof c->pos0[k]);   // (with its 4th number: whole fours)
-        memcpy(c->q0[k], b->q, sizeof c->q0[k]);
-        dSubtractVectors3(c->arm[k], c->contact.geom.pos, b->pos);
-    }
-}
-
 // How far the contact point moved with body k since it was anchored, to
 // first order: translation plus (rotation vector) x arm. The second-order
 // part is left out on purpose: a ball rolling over its contact point would
@@ -205,17 +151,13 @@ static void contact_point_motion(const dxJointContact *c, int k, dVector3 d)
     dAddVectors3(d, d, rot);
 }
 
-// The penetration depth now. Collision found c->contact.geom.depth with the
-// bodies where they were at this contact's first step (when the pose is
-// recorded); afterwards (the sub-steps of dWorldStepFast1, or a contact kept
-// over several steps) the depth shrinks by how far the point carried by body
-// 0 moved along n (stored sense, into body 0) relative to body 1's.
-static dReal current_depth(dxJointContact *c, const dVector3 n)
+// The penetration depth now of a contact anchored at an earlier step (the
+// sub-steps of dWorldStepFast1, or a contact kept over several steps):
+// collision found c->contact.geom.depth with the bodies where they were
+// then, and the depth shrinks by how far the point carried by body 0 moved
+// along n (stored sense, into body 0) relative to body 1's.
+dReal dxJointContactMovedDepth(const dxJointContact *c, const dVector3 n)
 {
-    if (!anchored_to_current_bodies(c)) {
-        anchor(c);
-        return c->contact.geom.depth;
-    }
     dVector3 d0, d1 = { 0, 0, 0, 0 };
     contact_point_motion(c, 0, d0);
     if (dxJointBody(&c->base, 1)) contact_point_motion(c, 1, d1);
@@ -223,39 +165,21 @@ static dReal current_depth(dxJointContact *c, const dVector3 n)
     return c->contact.geom.depth - dCalcVectorDot3(n, d0);
 }
 
-// The normal row's target relative velocity: the penetration correction
-// fps * erp * (depth - surface layer), capped at the world's max correcting
-// velocity; with Bounce, at least -bounce times the incoming velocity
-// (relative to the surface motion); with MotionN, plus the surface's own
-// normal velocity. The bodies may separate but not approach.
-static dReal normal_target(dxJointContact *c, const dVector3 n, dReal fps, dReal world_erp)
+dReal dxJointContactBounce(const dxJointContact *c, const dVector3 n, dReal target, dReal motion)
 {
     const dSurfaceParameters *s = &c->contact.surface;
-    const struct dxWorld *w = c->base.world;
-    const dReal depth = current_depth(c, n);   // first: it may record the arms
-    const dReal erp = (s->mode & dContactSoftERP) ? s->soft_erp : world_erp;
-    const dReal excess = depth - w->contact_surface_layer;
-    dReal target = 0;
-    if (excess > 0) {
-        target = fps * erp * excess;
-        if (target > w->max_correcting_vel) target = w->max_correcting_vel;
+    const dReal incoming = normal_velocity(c, n) - motion;   // < 0: approaching
+    if (-incoming > s->bounce_vel) {
+        const dReal outgoing = -s->bounce * incoming;
+        if (outgoing > target) target = outgoing;
     }
-    const dReal motion = (s->mode & dContactMotionN) ? s->motionN : 0;
-    if (s->mode & dContactBounce) {
-        const dReal incoming = normal_velocity(c, n) - motion;   // < 0: approaching
-        if (-incoming > s->bounce_vel) {
-            const dReal outgoing = -s->bounce * incoming;
-            if (outgoing > target) target = outgoing;
-        }
-    }
-    return target + motion;
+    return target;
 }
 
 // A zero direction, for the rows a contact does not have.
 static const dVector3 no_direction = { 0, 0, 0, 0 };
 
-// Turn n, t1, t2 to the other sense (the joint's stored sense changed).
-static void flip_directions(dxJointContact *c)
+void dxJointContactFlip(dxJointContact *c)
 {
     dNegateVector3(c->kept.n);
     dNegateVector3(c->kept.t1);
@@ -273,34 +197,28 @@ static void friction_row_own(const dxJointContact *c, dxContactRows *r, int row,
     r->cfm[row] = has_slip ? slip : c->base.world->cfm;
 }
 
+void dxJointContactOwnNumbers(dxJointContact *c)
+{
+    dxContactRows *r = &c->kept;
+    const dSurfaceParameters *s = &c->contact.surface;
+    const int mode = s->mode;
+    const unsigned friction = (unsigned)r->friction;
+    if (mode & dContactSoftCFM) r->cfm[0] = s->soft_cfm;
+    int row = 1;
+    if (friction & ROW_T1)
+        friction_row_own(c, r, row++, (mode & dContactMotion1) ? s->motion1 : 0,
+                         mode & dContactSlip1, s->slip1);
+    if (friction & ROW_T2)
+        friction_row_own(c, r, row, (mode & dContactMotion2) ? s->motion2 : 0,
+                         mode & dContactSlip2, s->slip2);
+}
+
 const dxContactRows *dxJointContactRows(dxJoint *j, dReal fps, dReal erp)
 {
+    const struct dxBody *const b[2] = { dxJointBody(j, 0), dxJointBody(j, 1) };
     dxJointContact *c = (dxJointContact *)j;
-    dxContactRows *r = &c->kept;
-    // Stored sense: the user's directions, negated when the joint is stored
-    // reversed (user body 2 as body 0).
-    if (((c->base.flags & DX_JOINT_REVERSE) != 0) != c->negated) flip_directions(c);
-    const dReal world_cfm = c->base.world->cfm;
-    const int m = r->m;
-    r->cfm[0] = world_cfm;
-    r->cfm[1] = m > 1 ? world_cfm : 0;
-    r->cfm[2] = m > 2 ? world_cfm : 0;
-    if (c->own_numbers) {
-        const dSurfaceParameters *s = &c->contact.surface;
-        const int mode = s->mode;
-        const unsigned friction = (unsigned)r->friction;
-        if (mode & dContactSoftCFM) r->cfm[0] = s->soft_cfm;
-        int row = 1;
-        if (friction & ROW_T1)
-            friction_row_own(c, r, row++, (mode & dContactMotion1) ? s->motion1 : 0,
-                             mode & dContactSlip1, s->slip1);
-        if (friction & ROW_T2)
-            friction_row_own(c, r, row, (mode & dContactMotion2) ? s->motion2 : 0,
-                             mode & dContactSlip2, s->slip2);
-    }
-    r->c[0] = normal_target(c, r->n, fps, erp);   // first: it may record the arms
-    r->arm[1] = dxJointBody(&c->base, 1) ? c->arm[1] : NULL;
-    return r;
+    dxJointContactCfm(c);
+    return dxJointContactStep(c, b, fps, erp);
 }
 
 static void contact_fill_rows(dxJoint *j, dxJointRows *rows)
@@ -315,7 +233,7 @@ static void contact_fill_rows(dxJoint *j, dxJointRows *rows)
         rows->c[i] = r->c[i];
         rows->cfm[i] = r->cfm[i];
         if (i > 0) {
-            friction_bounds(rows, i, r->hi[i], r->pyramid[i]);
+            friction_bounds(rows, i, r->hi[i], r->pyramid[i] != 0);
             continue;
         }
         rows->lo[0] = r->lo[0];
@@ -493,7 +411,7 @@ static void friction_bounds_of(dxJointContact *c, int row, dReal k, int pyramid)
 {
     c->kept.lo[row] = -k;
     c->kept.hi[row] = k;
-    c->kept.pyramid[row] = pyramid && k < dInfinity;
+    c->kept.pyramid[row] = -(dxRealMask)(pyramid && k < dInfinity);
 }
 
 // The sliding friction rows' own numbers (see dxJointContact).
@@ -504,7 +422,7 @@ static void sliding_rows(dxJointContact *c)
     c->own_numbers = (mode & (dContactSoftCFM | dContactMotion1 | dContactMotion2 |
                               dContactSlip1 | dContactSlip2)) != 0;
     c->kept.lo[1] = c->kept.lo[2] = c->kept.hi[1] = c->kept.hi[2] = 0;
-    c->kept.pyramid[0] = c->kept.pyramid[1] = c->kept.pyramid[2] = 0;
+    c->kept.pyramid[1] = c->kept.pyramid[2] = 0;
     int row = 1;
     if (c->rows_present & ROW_T1) friction_bounds_of(c, row++, s->mu, mode & dContactApprox1_1);
     if (c->rows_present & ROW_T2) friction_bounds_of(c, row, c->mu2, mode & dContactApprox1_2);
@@ -549,15 +467,14 @@ static void usual_surface(dxJointContact *c)
     c->own_numbers = 0;
     dxPlaneSpaceUnit(c->kept.n, c->kept.t1, c->kept.t2);
     c->kept.t1[3] = c->kept.t2[3] = 0;
-    c->kept.pyramid[0] = 0;
     if (mu > 0) {
         c->rows_present = ROW_T1 | ROW_T2;
         c->m = c->kept.m = 3;
         c->kept.lo[1] = c->kept.lo[2] = -mu;
         c->kept.hi[1] = c->kept.hi[2] = mu;
         const int finite = mu < dInfinity;   // (two infinite rows: not plain, a block)
-        c->kept.pyramid[1] = finite && (s->mode & dContactApprox1_1);
-        c->kept.pyramid[2] = finite && (s->mode & dContactApprox1_2);
+        c->kept.pyramid[1] = -(dxRealMask)(finite && (s->mode & dContactApprox1_1));
+        c->kept.pyramid[2] = -(dxRealMask)(finite && (s->mode & dContactApprox1_2));
         if (finite) c->base.flags |= DX_JOINT_PLAIN_CONTACT;
     } else {
         c->rows_present = 0;
@@ -582,12 +499,13 @@ static void keep_rows(dxJointContact *c)
     r->hi[0] = dInfinity;
     r->c[1] = r->c[2] = 0;
     r->lo[3] = r->hi[3] = r->c[3] = r->cfm[3] = 0;
+    r->pyramid[0] = r->pyramid[3] = 0;
     r->arm[0] = c->arm[0];
     r->point = c->contact.geom.pos;
 }
 
 // Every field of the contact's part (no zeroing first): the pose record
-// only says "none yet"; anchor() fills it at the first step. Of the usual
+// only says "none yet"; dxJointContactAnchor fills it at the first step. Of the usual
 // contact's dContact (see usual_surface) only what is ever read is kept:
 // the surface's mode and mu, and the point, normal and depth.
 static void contact_init(dxJointContact *c, const dContact *contact)

@@ -22,6 +22,7 @@
 // transpose per four consecutive numbers of qs_row).
 
 #include "quickstep_warm_match.h"
+#include "joint_contact.h"
 #include "dx_clones.h"
 
 #include <stddef.h>
@@ -202,18 +203,20 @@ QS_INLINE void inertia_lanes(const dReal *I, qc_v4 ax, qc_v4 ay, qc_v4 az, qc_v4
 }
 
 // The scaled numbers of the contact's m rows into rows[0..m) (lane i: row
-// i along r->d[i]; sor_w the lanes' relaxation factors): D J and M^-1 J^T,
+// i along r->d[i], its cfm lane i of cfm; sor_w the lanes' relaxation
+// factors; lanes from m on are made but not stored): D J and M^-1 J^T,
 // rhs = (c fps - J rates) D, cfm = cfm fps D, the bounds (friction: -k..k),
 // as fill_row makes them from row_full's J and M^-1 J^T. two: a second
-// body (else its numbers are zero). The sums are pair_dot's: with p the
+// body (else its numbers are zero, and its J1 and M1 are not written: the
+// sweep reads them only for a two-body row). The sums are pair_dot's: with p the
 // products of body 0's 6 numbers and q body 1's, the pair
 // (p0 + p2 | p1 + p3) + ((p4 + q0) + (q2 + q4) | (p5 + q1) + (q3 + q5)),
 // (one body: + (p4 | p5)), its two lanes added last. d: the directions'
 // x, y, z as lanes (the missing rows' zero). m and two are constants where
 // the caller makes them so (the usual three rows).
 QS_INLINE void lanes_rows(const qs_input *in, const qs_cbodies *cb, const dxContactRows *r,
-                          const qc_v4 d[3], qc_v4 sor_w, const int m, const int two,
-                          qs_row *rows)
+                          const qc_v4 d[3], qc_v4 cfm_rows, qc_v4 sor_w, const int m,
+                          const int two, qs_row *rows)
 {
     const size_t J = offsetof(qs_row, J), n = sizeof(dReal);
     const qc_v4 dx = d[0], dy = d[1], dz = d[2];
@@ -269,7 +272,7 @@ QS_INLINE void lanes_rows(const qs_input *in, const qs_cbodies *cb, const dxCont
     const qc_v4 rate = qc_add(qc_add(ra, rc), qc_add(rb, rd));
     const qc_v4 ms = qc_add(qc_add(ma, mc), qc_add(mb, md));
     const qc_v4 fps = qc_splat(in->fps);
-    const qc_v4 cfm = qc_mul(qc_load(r->cfm), fps);
+    const qc_v4 cfm = qc_mul(cfm_rows, fps);
     const qc_v4 D = qc_factor(ms, cfm, sor_w);
     qc_store(rows, m, 0, qc_mul(qc_sub(qc_mul(qc_load(r->c), fps), rate), D), qc_mul(cfm, D),
              qc_load(r->lo), qc_load(r->hi));
@@ -278,8 +281,6 @@ QS_INLINE void lanes_rows(const qs_input *in, const qs_cbodies *cb, const dxCont
     if (two) {
         qc_store(rows, m, J + 12 * n, qc_mul(D, lx), qc_mul(D, ly), qc_mul(D, lz), qc_mul(D, bx));
         qc_store(rows, m, J + 16 * n, qc_mul(D, by), qc_mul(D, bz), n0, n1);
-    } else {
-        for (int i = 0; i < m; i++) memset(rows[i].J1, 0, 12 * sizeof(dReal));   // J1, M1
     }
 }
 
@@ -343,17 +344,14 @@ QS_INLINE qc_v4 warm_forces(const dxContactRows *r, const dReal *f, const qc_v4 
     const dReal fn = f[3];
     const dReal l0 = WARM_SCALE * (fn > 0 ? fn : 0);
 #if defined(__GNUC__)
-#ifdef dSINGLE
-    typedef int mask __attribute__((vector_size(4 * sizeof(int))));
-#else
-    typedef long long mask __attribute__((vector_size(4 * sizeof(long long))));
-#endif
+    typedef dxRealMask mask __attribute__((vector_size(4 * sizeof(dxRealMask))));
     const qc_v4 F = qc_load(f);
     const qc_v4 dot = qc_add(qc_add(qc_mul(qc_spread(F, 0), d[0]), qc_mul(qc_spread(F, 1), d[1])),
                              qc_mul(qc_spread(F, 2), d[2]));
     const qc_v4 li = qc_mul(qc_splat(WARM_SCALE), dot);
     const qc_v4 hi4 = qc_load(r->hi), lo4 = qc_load(r->lo), scaled = qc_mul(hi4, qc_splat(l0));
-    const mask pyr = { 0, -(r->pyramid[1] != 0), -(r->pyramid[2] != 0), 0 };
+    mask pyr;
+    memcpy(&pyr, r->pyramid, sizeof pyr);
     const mask hi = ((mask)scaled & pyr) | ((mask)hi4 & ~pyr);
     const mask lo = ((mask)qc_neg(scaled) & pyr) | ((mask)lo4 & ~pyr);
     const mask gt = li > (qc_v4)hi, lt = li < (qc_v4)lo;
@@ -387,9 +385,10 @@ QS_INLINE qc_v4 warm_forces(const dxContactRows *r, const dReal *f, const qc_v4 
 // bounded by the normal force (pyramid) take the normal row's lambda, the
 // others the constant 1. f: the last step's forces (dxQuickWarmContactRows;
 // lambda and fc then start from them, and the normal row is relaxed with
-// 1), or NULL. m and two as in lanes_rows.
+// 1), or NULL. cfm, m and two as in lanes_rows.
 QS_INLINE void append_rows(const qs_input *in, const qs_cbodies *cb, const dxContactRows *r,
-                           const dReal *f, qs_system *sys, const int m, const int two)
+                           qc_v4 cfm, const dReal *f, qs_system *sys, const int m,
+                           const int two)
 {
     const int first = sys->next, one = sys->m, nrows = sys->nrows;
     qs_row *rows = sys->rows + nrows;
@@ -397,7 +396,7 @@ QS_INLINE void append_rows(const qs_input *in, const qs_cbodies *cb, const dxCon
     qc_transpose(qc_load(r->d[0]), qc_load(r->d[1]), qc_load(r->d[2]), qc_splat(0), d);
     const qc_v4 l = f ? warm_forces(r, f, d) : qc_splat(0);
     const dReal w = in->sor_w;
-    lanes_rows(in, cb, r, d, qc_make(f ? 1 : w, w, w, w), m, two, rows);
+    lanes_rows(in, cb, r, d, cfm, qc_make(f ? 1 : w, w, w, w), m, two, rows);
     // The integers the rows share, copied whole into each, then its own
     // lambda position and its bound's.
     qs_row ints;
@@ -416,7 +415,7 @@ QS_INLINE void append_rows(const qs_input *in, const qs_cbodies *cb, const dxCon
 #endif
     for (int i = 0; i < m; i++) {
         qs_row *q = &rows[i];
-        const int fi = i > 0 && r->pyramid[i] ? first : one;   // (never the normal row)
+        const int fi = r->pyramid[i] ? first : one;
         memcpy((char *)q + QS_ROW_INTS, (const char *)&ints + QS_ROW_INTS, QS_ROW_INTS_SIZE);
         q->pos = first + i;
         q->f = fi;
@@ -438,28 +437,46 @@ QS_INLINE void append_rows(const qs_input *in, const qs_cbodies *cb, const dxCon
 
 QS_CONTACT_CLONES void dxQuickContact(const qs_input *in, dxJoint *j, qs_system *sys)
 {
-    const dxContactRows *r = dxJointContactRows(j, in->fps, in->erp);
-    const struct dxBody *b0 = dxJointBody(j, 0), *b1 = dxJointBody(j, 1);
+    const struct dxBody *const b[2] = { dxJointBody(j, 0), dxJointBody(j, 1) };
+    const struct dxBody *b0 = b[0], *b1 = b[1];
+    dxJointContact *c = (dxJointContact *)j;
+    const dxContactRows *r = dxJointContactStep(c, b, in->fps, in->erp);
+    // The rows' cfm: the world's (the lanes from r->m on are not stored),
+    // unless a mode gives a row its own (dxJointContactRows' numbers).
+    qc_v4 cfm;
+    if (c->own_numbers) {
+        dxJointContactCfm(c);
+        cfm = qc_load(r->cfm);
+    } else {
+        cfm = qc_splat(c->base.world->cfm);
+    }
     const dxIslandBodies *bd = in->bd;
     qs_cbodies cb;
     cb.im0 = bd->inv_mass[b0->tag];
     cb.I0 = bd->inv_inertia + 12 * b0->tag;
     cb.R0 = in->rates + 6 * b0->tag;
     cb.o0 = 6 * (in->body0 + b0->tag);
-    cb.im1 = b1 ? bd->inv_mass[b1->tag] : 0;
-    cb.I1 = b1 ? bd->inv_inertia + 12 * b1->tag : NULL;
-    cb.R1 = b1 ? in->rates + 6 * b1->tag : NULL;
-    cb.o1 = 6 * (in->body0 + (b1 ? b1->tag : in->nb));
+    // A one-body contact's second body is the island's dummy: its numbers
+    // are never read (its rows' J1 and M1 are left as they are: the sweep
+    // and the warm start skip them).
+    if (b1) {
+        cb.im1 = bd->inv_mass[b1->tag];
+        cb.I1 = bd->inv_inertia + 12 * b1->tag;
+        cb.R1 = in->rates + 6 * b1->tag;
+        cb.o1 = 6 * (in->body0 + b1->tag);
+    } else {
+        cb.im1 = 0;   // (GCC cannot tell it is unread)
+        cb.o1 = 6 * (in->body0 + in->nb);
+    }
     // The warm start's lookup first: a warm normal row is relaxed with 1.
     dReal fw[4];   // the friction force, then the normal force
     const dReal *f = warm_contact_rows(sys->warm, b0, b1, r, sys->next, fw) ? fw : NULL;
     // The usual three rows made with constants (no loop, no test of m).
-    const int two = r->arm[1] != NULL;
     if (r->m == 3) {
-        if (two) append_rows(in, &cb, r, f, sys, 3, 1);
-        else append_rows(in, &cb, r, f, sys, 3, 0);
+        if (b1) append_rows(in, &cb, r, cfm, f, sys, 3, 1);
+        else append_rows(in, &cb, r, cfm, f, sys, 3, 0);
     } else {
-        if (two) append_rows(in, &cb, r, f, sys, r->m, 1);
-        else append_rows(in, &cb, r, f, sys, r->m, 0);
+        if (b1) append_rows(in, &cb, r, cfm, f, sys, r->m, 1);
+        else append_rows(in, &cb, r, cfm, f, sys, r->m, 0);
     }
 }

@@ -68,6 +68,12 @@ int dxStepBegin(struct dxWorld *w, dReal h, const char *function, dxIsland **isl
 // the normal row 0 in that order); -1 for any other joint or an inert
 // contact (joint_contact.c).
 int dxJointContactWarmInfo(const dxJoint *j, dVector3 point);
+// An integer as wide as a dReal: a lane's mask in fours of dReal.
+#ifdef dSINGLE
+typedef int32_t dxRealMask;
+#else
+typedef int64_t dxRealMask;
+#endif
 // A contact's normal and sliding friction rows, in the order of its joint
 // rows (the normal, then t1 and t2 as present), as numbers: row i is linear
 // along d[i] through the contact point, J = [d, arm0 x d, -d, d x arm1]
@@ -85,7 +91,9 @@ typedef struct dxContactRows {
     // on): target velocity, cfm, bounds (the normal row 0..inf, a friction
     // row -k..k for its coefficient k, times the normal force if pyramid).
     dReal c[4], cfm[4], lo[4], hi[4];
-    int pyramid[3];           // bounded by the normal force (k finite)
+    // Per row: all bits set if bounded by the normal force (a friction row,
+    // k finite), else 0 (rows 0 and 3 always): a mask of the fours' lanes.
+    dxRealMask pyramid[4];
 } dxContactRows;
 // A live contact whose rows are all in dxContactRows (no rolling friction,
 // and not both friction rows unbounded: the generic path solves those two as
