@@ -555,11 +555,10 @@ static inline int tri_off_box(const dReal *v, const off_box *b)
 #endif
 }
 
-// Whether the walk passes triangle *t (its vertices and normal set, the
-// normal not zero) to the test: the height of the other geom's position
-// above its plane into t->h, then the test's own first rejection made
-// here, without the call: below the plane, or above it by more than
-// `reach` (reach < 0: neither).
+// Whether the walk passes triangle *t (its vertices and normal set) to
+// the test: the height of the other geom's position above its plane into
+// t->h, then the test's own first rejection made here, without the call:
+// below the plane, or above it by more than `reach` (reach < 0: neither).
 static inline int height_passes(const dxTriQuery *q, dxTri *t, dReal reach)
 {
     t->h = dxTriHeight(t, q->pos);
@@ -657,9 +656,9 @@ static inline int tri_off_box_f(const float *fb, const off_box_f *f)
 // The triangles of the n leaves (node * 4 + slot) without a per-triangle
 // callback, in place: a triangle off the box b is dropped first (by its
 // float box from the data's leaf_boxes against fb, the vertices' exact
-// test only where that cannot say), then a degenerate one (a zero normal)
-// and one whose height does not pass; the rest go to the test with their
-// vertices and normal where the data keeps them.
+// test only where that cannot say), then one whose height does not pass
+// and a degenerate one (a zero normal); the rest go to the test with
+// their vertices and normal where the data keeps them.
 static void walk_leaves(dxTriQuery *q, const int *leaf, int n, const off_box *b,
                         const off_box_f *fb, dReal reach, dxTriTest *test, int *hits)
 {
@@ -677,8 +676,10 @@ static void walk_leaves(dxTriQuery *q, const int *leaf, int n, const off_box *b,
             if (off == 2 && tri_off_box(v, b)) continue;
             const int t = order[j];
             dxTri tri = { .index = t, .v = (const dReal(*)[3])v, .n = normal + 3 * t };
-            if (tri.n[0] == 0 && tri.n[1] == 0 && tri.n[2] == 0) continue;
             if (!height_passes(q, &tri, reach)) continue;
+            // A degenerate triangle's height is 0 (or NaN): only then is its
+            // normal looked at.
+            if (!(tri.h != 0) && tri.n[0] == 0 && tri.n[1] == 0 && tri.n[2] == 0) continue;
             if (test(q, &tri)) add_hit(q->s, hits, t);
         }
     }
