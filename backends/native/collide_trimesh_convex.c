@@ -635,6 +635,40 @@ static const int box_faces[6][4] = { { 0, 2, 6, 4 }, { 1, 3, 7, 5 }, { 0, 1, 5, 
                                      { 2, 3, 7, 6 }, { 0, 1, 3, 2 }, { 4, 5, 7, 6 } };
 static const unsigned box_face_mask[6] = { 0x55, 0xaa, 0x33, 0xcc, 0x0f, 0xf0 };
 
+// The faces whose four corners are all in the corner set m (bit v: corner
+// v), face f as bit 3 f: three sets of faces, one for each prism side k,
+// fit side by side (bit 3 f + k) and a face's three read as one number.
+// A face has a corner in m when not all of its corners are in the rest.
+#define FACES_ALL_OF(m)                                                                    \
+    ((((m) & 0x55) == 0x55) | (((m) & 0xaa) == 0xaa) << 3 | (((m) & 0x33) == 0x33) << 6 |   \
+     (((m) & 0xcc) == 0xcc) << 9 | (((m) & 0x0f) == 0x0f) << 12 | (((m) & 0xf0) == 0xf0) << 15)
+#define FACES_4(m) FACES_ALL_OF(m), FACES_ALL_OF((m) + 1), FACES_ALL_OF((m) + 2), FACES_ALL_OF((m) + 3)
+#define FACES_16(m) FACES_4(m), FACES_4((m) + 4), FACES_4((m) + 8), FACES_4((m) + 12)
+#define FACES_64(m) FACES_16(m), FACES_16((m) + 16), FACES_16((m) + 32), FACES_16((m) + 48)
+static const uint32_t faces_all_of[256] = { FACES_64(0), FACES_64(64), FACES_64(128),
+                                            FACES_64(192) };
+#undef FACES_64
+#undef FACES_16
+#undef FACES_4
+#undef FACES_ALL_OF
+enum { EVERY_FACE = 0x9249 };   // bit 3 f for each of the six faces
+
+// The three sets of faces all of whose corners in `low` are in m[k] (or,
+// what is the same, none of whose low corners is outside m[k]), side k's
+// at bit 3 f + k.
+static inline uint32_t faces_low_in(unsigned low, const unsigned m[3])
+{
+    return faces_all_of[(~low | m[0]) & 0xff] | faces_all_of[(~low | m[1]) & 0xff] << 1 |
+           faces_all_of[(~low | m[2]) & 0xff] << 2;
+}
+
+// From the sides k (bits) a face needs no clip against or its low part is
+// within, those from the last on: the sides whose clips are left out.
+static inline unsigned sides_from_last(unsigned sides)
+{
+    return 0x76440000u >> (4 * sides) & 7;
+}
+
 // Which sides of the prism box face f's part at or below the level H
 // (corner heights hv, bit v of `low` set for a corner at or below it) lies
 // beyond (bit k of *away: fk[k], the side's measure, below zero at every
@@ -706,15 +740,23 @@ static int box_test(dxTriQuery *q, const dxTri *t)
         lim[k] = 2 * p.slack[k];
         low_in[k] = bits_at_least(fk[k], lim[k]);
     }
+    // The faces to clip: those with a corner on or behind the plane, none
+    // with all four corners beyond one side (bit 3 f). Per face and side k
+    // (bit 3 f + k): its corners all within side k (no clip needed), its
+    // low corners all within lim[k] of it (low_in), all beyond it (away).
+    const uint32_t faces = ~faces_all_of[~behind & 0xff] & EVERY_FACE &
+                           ~(faces_all_of[outside[0]] | faces_all_of[outside[1]] |
+                             faces_all_of[outside[2]]);
+    const uint32_t all_low = faces_all_of[behind];
+    const uint32_t within_of = faces_all_of[inside[0]] | faces_all_of[inside[1]] << 1 |
+                               faces_all_of[inside[2]] << 2;
+    const uint32_t low_in_of = faces_low_in(behind, low_in);
+    const uint32_t away_of = faces_low_in(behind, outside);
     // seen: the corners added already (each is in three faces).
     int added = 0;
     unsigned seen = 0;
-    for (int f = 0; f < 6; f++) {
-        const unsigned mask = box_face_mask[f];
-        if (!(behind & mask)) continue;
-        if ((outside[0] & mask) == mask || (outside[1] & mask) == mask ||
-            (outside[2] & mask) == mask)
-            continue;
+    for (uint32_t left = faces; left; left &= left - 1) {
+        const int f3 = __builtin_ctz(left), f = f3 / 3;
         // Every point a face can add lies in its low part (at or below
         // 2 eps). If that part is beyond a side, the face adds nothing. If
         // it is within the last side to clip against by one slack more
@@ -723,28 +765,19 @@ static int box_test(dxTriQuery *q, const dxTri *t)
         // ones, which add nothing: it is left out (and then the one before
         // it, the same way). A face left with no clip adds its low corners
         // (in its order, as the clip keeps them).
-        const unsigned low = behind & mask;
-        unsigned within = (inside[0] & mask) == mask;
-        within |= (unsigned)((inside[1] & mask) == mask) << 1;
-        within |= (unsigned)((inside[2] & mask) == mask) << 2;
+        const unsigned low = behind & box_face_mask[f];
+        unsigned within = within_of >> f3 & 7;
         // low_within: the sides, from the last on, that the low part's
         // corners are within (or that need no clip), less those that need
         // no clip.
-        unsigned away = 0, low_within = 0;
-        for (int k = 2; k >= 0; k--) {
-            if (within >> k & 1) continue;
-            if ((low_in[k] & low) != low) break;
-            low_within |= 1u << k;
-        }
-        if (low != mask) {
-            away = (outside[0] & low) == low;
-            away |= (unsigned)((outside[1] & low) == low) << 1;
-            away |= (unsigned)((outside[2] & low) == low) << 2;
+        unsigned low_within = sides_from_last(within | (low_in_of >> f3 & 7)) & ~within;
+        if (!(all_low >> f3 & 1)) {
+            unsigned away = away_of >> f3 & 7;
             if (away || low_within)
                 low_part_sides(f, hv, behind, 2 * eps, fk, lim, &away, &low_within);
             if (away) continue;
         }
-        for (int k = 2; k >= 0 && ((within | low_within) >> k & 1); k--) within |= 1u << k;
+        within |= sides_from_last(within | low_within);
         const int *fv = box_faces[f];
         if (within == 7) {
             for (int i = 0; i < 4; i++) {
