@@ -617,14 +617,11 @@ typedef struct off_box_f {
 static inline void off_box_f_set(off_box_f *f, const dReal lo[3], const dReal hi[3])
 {
     float a[4], c[4];
-    for (int k = 0; k < 3; k++) {
-        a[k] = dxFloatAbove(lo[k]);
-        c[k] = dxFloatBelow(hi[k]);
-    }
+    dxFloatBox(lo, hi, a, c);
 #if defined(__SSE__)
-    a[3] = c[3] = NAN;
-    f->a = _mm_loadu_ps(a);
-    f->c = _mm_loadu_ps(c);
+    const __m128 nan3 = _mm_setr_ps(0, 0, 0, NAN);   // (or: lanes 0-2 kept, lane 3 a NaN)
+    f->a = _mm_or_ps(_mm_loadu_ps(a), nan3);
+    f->c = _mm_or_ps(_mm_loadu_ps(c), nan3);
 #else
     for (int k = 0; k < 3; k++) {
         f->a[k] = a[k];
@@ -715,8 +712,11 @@ int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dReal reach, dxT
     // the same triangles in the same order as dxTriMeshQueryBox lists
     // them, their vertices read from the leaf-order copy.
     int leaf[LEAF_WALK_MAX], leaves = -1;
-    if (d->leaf_vertices && (d->tree_stamp == 0 || !dxTriMeshTCOn(m, other->ops->cls)))
-        leaves = dxTriMeshQueryLeaves(d, lo, hi, leaf, LEAF_WALK_MAX);
+    if (d->leaf_vertices && (d->tree_stamp == 0 || !dxTriMeshTCOn(m, other->ops->cls))) {
+        float lo_f[4], hi_f[4];
+        dxFloatBox(lo, hi, lo_f, hi_f);
+        leaves = dxTriMeshQueryLeavesF(d, lo_f, hi_f, leaf, LEAF_WALK_MAX);
+    }
     if (leaves >= 0 && !m->callback) {
         off_box_f fb;
         off_box_f_set(&fb, wlo, whi);
