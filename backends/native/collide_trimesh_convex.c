@@ -585,13 +585,18 @@ static inline void corner_sums(dReal x, const dReal d[3], dReal out[8])
 }
 
 // Bit v set where x[v] < lim (of eight numbers), where x[v] >= lim, where
-// x[v] <= lim (false for NaN, as the comparisons one by one).
+// x[v] <= lim (false for NaN, as the comparisons one by one). With SSE2 the
+// low halves of four comparisons' 64-bit masks are gathered as four 32-bit
+// ones (a shuffle), so that one movemask gives four bits.
 #if defined(__SSE2__) && !defined(dSINGLE)
+static inline unsigned four_bits(__m128d m01, __m128d m23)
+{
+    return (unsigned)_mm_movemask_ps(
+        _mm_shuffle_ps(_mm_castpd_ps(m01), _mm_castpd_ps(m23), _MM_SHUFFLE(2, 0, 2, 0)));
+}
 #define EIGHT_BITS(x, lim, cmp)                                                            \
-    ((unsigned)_mm_movemask_pd(cmp(_mm_loadu_pd(x), lim)) |                                 \
-     (unsigned)_mm_movemask_pd(cmp(_mm_loadu_pd((x) + 2), lim)) << 2 |                      \
-     (unsigned)_mm_movemask_pd(cmp(_mm_loadu_pd((x) + 4), lim)) << 4 |                      \
-     (unsigned)_mm_movemask_pd(cmp(_mm_loadu_pd((x) + 6), lim)) << 6)
+    (four_bits(cmp(_mm_loadu_pd(x), lim), cmp(_mm_loadu_pd((x) + 2), lim)) |               \
+     four_bits(cmp(_mm_loadu_pd((x) + 4), lim), cmp(_mm_loadu_pd((x) + 6), lim)) << 4)
 static inline unsigned bits_below(const dReal x[8], dReal lim)
 {
     return EIGHT_BITS(x, _mm_set1_pd(lim), _mm_cmplt_pd);
