@@ -655,7 +655,8 @@ static inline int tri_off_box_f(const float *fb, const off_box_f *f)
 // float box from the data's leaf_boxes against fb, the vertices' exact
 // test only where that cannot say), then one whose height does not pass
 // and a degenerate one (a zero normal); the rest go to the test with
-// their vertices and normal where the data keeps them.
+// their vertices and normal where the data keeps them. Those that touch
+// are listed (add_hit) if hits is not NULL.
 static void walk_leaves(dxTriQuery *q, const int *leaf, int n, const off_box *b,
                         const off_box_f *fb, dReal reach, dxTriTest *test, int *hits)
 {
@@ -677,7 +678,7 @@ static void walk_leaves(dxTriQuery *q, const int *leaf, int n, const off_box *b,
             // A degenerate triangle's height is 0 (or NaN): only then is its
             // normal looked at.
             if (!(tri.h != 0) && tri.n[0] == 0 && tri.n[1] == 0 && tri.n[2] == 0) continue;
-            if (test(q, &tri)) add_hit(q->s, hits, t);
+            if (test(q, &tri) && hits) add_hit(q->s, hits, t);
         }
     }
 }
@@ -720,7 +721,7 @@ int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dReal reach, dxT
     if (leaves >= 0 && !m->callback) {
         off_box_f fb;
         off_box_f_set(&fb, wlo, whi);
-        walk_leaves(q, leaf, leaves, &b, &fb, reach, test, &hits);
+        walk_leaves(q, leaf, leaves, &b, &fb, reach, test, m->array_callback ? &hits : NULL);
     } else if (leaves >= 0) {
         // The per-triangle callback sees every listed triangle that is not
         // degenerate, before the box test.
