@@ -50,7 +50,7 @@ typedef struct dxTriScratch {
     dxTriGrid grid;
     dReal *score;      // the reduction's numbers per contact
     int score_cap;
-    dReal pair[56];   // a triangle test's per-pair values (dxTriQuery.prepared)
+    dReal pair[80];   // a triangle test's per-pair values (dxTriQuery.prepared)
 } dxTriScratch;
 
 // A free set of the calling thread's (NULL, reported, if collisions nest

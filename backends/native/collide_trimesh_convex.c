@@ -346,15 +346,29 @@ static int face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p, dRe
     return clipped_face_contacts(q, t, p, corner, made, n, 0, NULL);
 }
 
+// A box's faces as corner numbers (in order round the face), as bit
+// masks of those corners, and the clip's tags of their corners.
+static const int box_faces[6][4] = { { 0, 2, 6, 4 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
+                                     { 2, 3, 7, 6 }, { 0, 1, 3, 2 }, { 4, 5, 7, 6 } };
+static const unsigned box_face_mask[6] = { 0x55, 0xaa, 0x33, 0xcc, 0x0f, 0xf0 };
+#define BOX_MADE(a, b, c, d)                                                               \
+    { DX_TRI_MADE_CORNER + (a), DX_TRI_MADE_CORNER + (b), DX_TRI_MADE_CORNER + (c),         \
+      DX_TRI_MADE_CORNER + (d) }
+static const int box_face_made[6][4] = { BOX_MADE(0, 2, 6, 4), BOX_MADE(1, 3, 7, 5),
+                                         BOX_MADE(0, 1, 5, 4), BOX_MADE(2, 3, 7, 6),
+                                         BOX_MADE(0, 1, 3, 2), BOX_MADE(4, 5, 7, 6) };
+#undef BOX_MADE
+
 // A box's values for a pair, worked out on its first triangle (in q->s->pair):
 // unit axes, half sides and corners (bit j of the index picks the sign of
 // axis j); inner[j]: h[j] less the margin within which a point counts as
 // inside the box whatever the rounding (box_separated); through[j] the
 // same with a wider margin, for a point of a triangle's edge whose ends are
 // at most `reach` from the centre along each axis. ax01[k]: component k of
-// axes 0 and 1 side by side.
+// axes 0 and 1 side by side. face_corner[f]: face f's corners (box_faces).
 typedef struct box_pair {
     dReal ax[3][3], h[3], corner[8][3], inner[3], through[3], reach, ax01[3][2];
+    const dReal *face_corner[6][4];
 } box_pair;
 _Static_assert(sizeof(box_pair) <= sizeof(((dxTriScratch *)0)->pair), "box_pair fits");
 
@@ -386,6 +400,8 @@ static const box_pair *prepare_box(dxTriQuery *q)
             b->corner[v][i] = c[i] + (v & 1 ? h[0] : -h[0]) * b->ax[0][i] +
                               (v & 2 ? h[1] : -h[1]) * b->ax[1][i] +
                               (v & 4 ? h[2] : -h[2]) * b->ax[2][i];
+    for (int f = 0; f < 6; f++)
+        for (int i = 0; i < 4; i++) b->face_corner[f][i] = b->corner[box_faces[f][i]];
     q->prepared = 1;
     return b;
 }
@@ -634,11 +650,6 @@ static inline unsigned bits_at_most(const dReal x[8], dReal lim)
 }
 #endif
 
-// A box's faces as corner numbers (in order round the face) and as bit
-// masks of those corners.
-static const int box_faces[6][4] = { { 0, 2, 6, 4 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
-                                     { 2, 3, 7, 6 }, { 0, 1, 3, 2 }, { 4, 5, 7, 6 } };
-static const unsigned box_face_mask[6] = { 0x55, 0xaa, 0x33, 0xcc, 0x0f, 0xf0 };
 
 // The faces whose four corners are all in the corner set m (bit v: corner
 // v), face f as bit 3 f: three sets of faces, one for each prism side k,
@@ -796,11 +807,8 @@ static int box_test(dxTriQuery *q, const dxTri *t)
             }
             continue;
         }
-        const dReal *corner[4] = { b->corner[fv[0]], b->corner[fv[1]], b->corner[fv[2]],
-                                   b->corner[fv[3]] };
-        const int made[4] = { DX_TRI_MADE_CORNER + fv[0], DX_TRI_MADE_CORNER + fv[1],
-                              DX_TRI_MADE_CORNER + fv[2], DX_TRI_MADE_CORNER + fv[3] };
-        added |= clipped_face_contacts(q, t, &p, corner, made, 4, within, &seen);
+        added |= clipped_face_contacts(q, t, &p, b->face_corner[f], box_face_made[f], 4, within,
+                                       &seen);
     }
     return added;
 }
