@@ -346,6 +346,27 @@ static int face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p, dRe
     return clipped_face_contacts(q, t, p, corner, made, n, 0, NULL);
 }
 
+// The eight sums x + (+-d0) + (+-d1) + (+-d2), bit j of the index picking
+// the sign of d_j, into out: each summed left to right as written, the
+// partial sums shared (the same numbers as the eight sums one by one).
+// With SSE2 (double) two neighbouring corners at a time: the same sums.
+static inline void corner_sums(dReal x, const dReal d[3], dReal out[8])
+{
+#if defined(__SSE2__) && !defined(dSINGLE)
+    const __m128d a = _mm_add_pd(_mm_set1_pd(x), _mm_set_pd(d[0], -d[0]));
+    const __m128d d1 = _mm_set1_pd(d[1]), d2 = _mm_set1_pd(d[2]);
+    const __m128d b0 = _mm_sub_pd(a, d1), b1 = _mm_add_pd(a, d1);
+    _mm_storeu_pd(out, _mm_sub_pd(b0, d2));
+    _mm_storeu_pd(out + 2, _mm_sub_pd(b1, d2));
+    _mm_storeu_pd(out + 4, _mm_add_pd(b0, d2));
+    _mm_storeu_pd(out + 6, _mm_add_pd(b1, d2));
+#else
+    dReal a[2] = { x - d[0], x + d[0] }, b[4];
+    for (int v = 0; v < 4; v++) b[v] = a[v & 1] + (v & 2 ? d[1] : -d[1]);
+    for (int v = 0; v < 8; v++) out[v] = b[v & 3] + (v & 4 ? d[2] : -d[2]);
+#endif
+}
+
 // A box's faces as corner numbers (in order round the face), as bit
 // masks of those corners, and the clip's tags of their corners.
 static const int box_faces[6][4] = { { 0, 2, 6, 4 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
@@ -372,10 +393,11 @@ typedef struct box_pair {
 } box_pair;
 _Static_assert(sizeof(box_pair) <= sizeof(((dxTriScratch *)0)->pair), "box_pair fits");
 
-static const box_pair *prepare_box(dxTriQuery *q)
+// box_pair's values into q->s->pair, once a pair (out of line: box_test,
+// run for every triangle, keeps its registers and stack for the triangles).
+static __attribute__((noinline)) void work_out_box(dxTriQuery *q)
 {
     box_pair *b = (box_pair *)q->s->pair;
-    if (q->prepared) return b;
     const dReal *side = ((const dxBox *)q->other)->side, *c = q->pos;
     for (int j = 0; j < 3; j++) {
         b->h[j] = side[j] / 2;
@@ -395,15 +417,25 @@ static const box_pair *prepare_box(dxTriQuery *q)
         b->through[j] = h[j] - 1024 * eps * size;
     }
     b->reach = 2 * (h[0] + h[1] + h[2]);
-    for (int v = 0; v < 8; v++)
-        for (int i = 0; i < 3; i++)
-            b->corner[v][i] = c[i] + (v & 1 ? h[0] : -h[0]) * b->ax[0][i] +
-                              (v & 2 ? h[1] : -h[1]) * b->ax[1][i] +
-                              (v & 4 ? h[2] : -h[2]) * b->ax[2][i];
+    // Corner v's coordinate i: c[i] + (+-h0) ax0[i] + (+-h1) ax1[i] +
+    // (+-h2) ax2[i], summed left to right ((-h) a is -(h a): the same
+    // numbers), the eight of a coordinate with their partial sums shared.
+    for (int i = 0; i < 3; i++) {
+        const dReal d[3] = { h[0] * b->ax[0][i], h[1] * b->ax[1][i], h[2] * b->ax[2][i] };
+        dReal x[8];
+        corner_sums(c[i], d, x);
+        for (int v = 0; v < 8; v++) b->corner[v][i] = x[v];
+    }
     for (int f = 0; f < 6; f++)
         for (int i = 0; i < 4; i++) b->face_corner[f][i] = b->corner[box_faces[f][i]];
     q->prepared = 1;
-    return b;
+}
+
+// The pair's box_pair, worked out on the first call.
+static inline const box_pair *prepare_box(dxTriQuery *q)
+{
+    if (!q->prepared) work_out_box(q);
+    return (const box_pair *)q->s->pair;
 }
 
 // Whether the axis L (mesh frame) separates the triangle from the box
@@ -577,27 +609,6 @@ static int box_separated(const box_pair *b, const dxTri *t, const dReal c[3], dR
 #endif
     }
     return 0;
-}
-
-// The eight sums x + (+-d0) + (+-d1) + (+-d2), bit j of the index picking
-// the sign of d_j, into out: each summed left to right as written, the
-// partial sums shared (the same numbers as the eight sums one by one).
-// With SSE2 (double) two neighbouring corners at a time: the same sums.
-static inline void corner_sums(dReal x, const dReal d[3], dReal out[8])
-{
-#if defined(__SSE2__) && !defined(dSINGLE)
-    const __m128d a = _mm_add_pd(_mm_set1_pd(x), _mm_set_pd(d[0], -d[0]));
-    const __m128d d1 = _mm_set1_pd(d[1]), d2 = _mm_set1_pd(d[2]);
-    const __m128d b0 = _mm_sub_pd(a, d1), b1 = _mm_add_pd(a, d1);
-    _mm_storeu_pd(out, _mm_sub_pd(b0, d2));
-    _mm_storeu_pd(out + 2, _mm_sub_pd(b1, d2));
-    _mm_storeu_pd(out + 4, _mm_add_pd(b0, d2));
-    _mm_storeu_pd(out + 6, _mm_add_pd(b1, d2));
-#else
-    dReal a[2] = { x - d[0], x + d[0] }, b[4];
-    for (int v = 0; v < 4; v++) b[v] = a[v & 1] + (v & 2 ? d[1] : -d[1]);
-    for (int v = 0; v < 8; v++) out[v] = b[v & 3] + (v & 4 ? d[2] : -d[2]);
-#endif
 }
 
 // Bit v set where x[v] < lim (of eight numbers), where x[v] >= lim, where
