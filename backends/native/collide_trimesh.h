@@ -51,6 +51,7 @@ typedef struct dxTriScratch {
     dReal *score;      // the reduction's numbers per contact
     int score_cap;
     dReal pair[80];   // a triangle test's per-pair values (dxTriQuery.prepared)
+    int *in_use;      // the owning thread's count of sets in use
 } dxTriScratch;
 
 // A free set of the calling thread's (NULL, reported, if collisions nest
