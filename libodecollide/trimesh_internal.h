@@ -17,6 +17,9 @@
 #if defined(__SSE__)
 #include <xmmintrin.h>
 #endif
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "geom_internal.h"
 
@@ -87,6 +90,44 @@ static inline float dxFloatAbove(dReal x)
     bits += f < x ? ((bits >> 31) | 1) : 0;   // up: -1 if negative, else +1
     memcpy(&f, &bits, sizeof f);
     return f;
+}
+
+#if defined(__SSE2__) && !defined(dSINGLE)
+// dxFloatAbove (up) or dxFloatBelow of x[0], x[1], x[2] in lanes 0-2 (lane
+// 3: of 0), four at once: the same conversion, comparison and step of the
+// bits per lane.
+static inline __m128 dxFloatStep3(const double x[3], int up)
+{
+    const __m128d x01 = _mm_loadu_pd(x), x2 = _mm_load_sd(x + 2);
+    const __m128 f = _mm_movelh_ps(_mm_cvtpd_ps(x01), _mm_cvtpd_ps(x2));
+    const __m128d g01 = _mm_cvtps_pd(f), g2 = _mm_cvtps_pd(_mm_movehl_ps(f, f));
+    // The lanes whose float is on the wrong side of x, as 32-bit masks.
+    const __m128d w01 = up ? _mm_cmplt_pd(g01, x01) : _mm_cmpgt_pd(g01, x01);
+    const __m128d w2 = up ? _mm_cmplt_pd(g2, x2) : _mm_cmpgt_pd(g2, x2);
+    const __m128i wrong = _mm_castps_si128(
+        _mm_shuffle_ps(_mm_castpd_ps(w01), _mm_castpd_ps(w2), _MM_SHUFFLE(2, 0, 2, 0)));
+    // Up: +1 for a positive float, -1 for a negative one (down: the opposite).
+    const __m128i bits = _mm_castps_si128(f);
+    const __m128i step = _mm_and_si128(wrong, _mm_or_si128(_mm_srai_epi32(bits, 31),
+                                                           _mm_set1_epi32(1)));
+    return _mm_castsi128_ps(up ? _mm_add_epi32(bits, step) : _mm_sub_epi32(bits, step));
+}
+#endif
+
+// The box [lo, hi] in floats rounded inwards: lo_f[k] = dxFloatAbove(lo[k]),
+// hi_f[k] = dxFloatBelow(hi[k]) (lane 3 unused).
+static inline void dxFloatBox(const dReal lo[3], const dReal hi[3], float lo_f[4], float hi_f[4])
+{
+#if defined(__SSE2__) && !defined(dSINGLE)
+    _mm_storeu_ps(lo_f, dxFloatStep3(lo, 1));
+    _mm_storeu_ps(hi_f, dxFloatStep3(hi, 0));
+#else
+    for (int k = 0; k < 3; k++) {
+        lo_f[k] = dxFloatAbove(lo[k]);
+        hi_f[k] = dxFloatBelow(hi[k]);
+    }
+    lo_f[3] = hi_f[3] = 0;
+#endif
 }
 
 // Make node a tree of one leaf: the count triangles order[0 ..], in the box
@@ -261,7 +302,7 @@ static inline unsigned dxTriNodeOverlaps(const dxTriMeshNode *node, const float 
 // at most the four-way depth (below 17 for 2^31 triangles).
 enum { DX_TRI_WALK_STACK = 64 };
 typedef struct dxTriTreeWalk {
-    float lo[3], hi[3];
+    float lo[4], hi[4];   // (lane 3 unused)
     int node;
     unsigned m, leaves;
     int top;
@@ -269,13 +310,14 @@ typedef struct dxTriTreeWalk {
     unsigned char mask[DX_TRI_WALK_STACK];
 } dxTriTreeWalk;
 
-// Start a walk for [lo, hi] at the root (the tree must have nodes).
-static inline void dxTriTreeWalkStart(const dxTriMeshData *d, const dReal lo[3],
-                                      const dReal hi[3], dxTriTreeWalk *w)
+// Start a walk for the box whose floats (dxFloatBox) are lo_f, hi_f at
+// the root (the tree must have nodes).
+static inline void dxTriTreeWalkStartF(const dxTriMeshData *d, const float lo_f[3],
+                                       const float hi_f[3], dxTriTreeWalk *w)
 {
     for (int k = 0; k < 3; k++) {
-        w->lo[k] = dxFloatAbove(lo[k]);
-        w->hi[k] = dxFloatBelow(hi[k]);
+        w->lo[k] = lo_f[k];
+        w->hi[k] = hi_f[k];
     }
     w->top = 0;
     w->node = 0;
@@ -316,6 +358,9 @@ int dxTriMeshQueryBox(const dxTriMeshData *d, const dReal lo[3], const dReal hi[
 // or -1 (stopping) if there are more than max.
 int dxTriMeshQueryLeaves(const dxTriMeshData *d, const dReal lo[3], const dReal hi[3], int *leaf,
                          int max);
+// The same for the box whose floats (dxFloatBox) are lo_f, hi_f.
+int dxTriMeshQueryLeavesF(const dxTriMeshData *d, const float lo_f[3], const float hi_f[3],
+                          int *leaf, int max);
 // The triangles of those of leaf[0 .. n) whose box overlaps [lo, hi] into
 // *out (grown as needed); returns the count. If leaf[] came from
 // dxTriMeshQueryLeaves for a box containing [lo, hi] (same tree stamp), the

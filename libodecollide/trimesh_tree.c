@@ -351,8 +351,10 @@ int dxTriMeshQueryBox(const dxTriMeshData *d, const dReal lo[3], const dReal hi[
                       int *cap)
 {
     if (d->node_count == 0) return 0;
+    float lo_f[4], hi_f[4];
+    dxFloatBox(lo, hi, lo_f, hi_f);
     dxTriTreeWalk w;
-    dxTriTreeWalkStart(d, lo, hi, &w);
+    dxTriTreeWalkStartF(d, lo_f, hi_f, &w);
     int n = 0;
     for (int id; (id = dxTriTreeWalkNext(d, &w)) >= 0;) {
         const dxTriMeshNode *leaf = &d->nodes[id >> 2];
@@ -367,11 +369,11 @@ int dxTriMeshQueryBox(const dxTriMeshData *d, const dReal lo[3], const dReal hi[
 // version when loaded (dx_clones.h): with AVX2 (the same comparisons, in
 // three-operand form) and for the baseline. Static, called through the
 // plain function below (GCC 12 exports a clone whatever the visibility).
-QUERY_CLONES static int query_leaves(const dxTriMeshData *d, const dReal lo[3],
-                                     const dReal hi[3], int *leaf, int max)
+QUERY_CLONES static int query_leaves(const dxTriMeshData *d, const float lo_f[3],
+                                     const float hi_f[3], int *leaf, int max)
 {
     dxTriTreeWalk w;
-    dxTriTreeWalkStart(d, lo, hi, &w);
+    dxTriTreeWalkStartF(d, lo_f, hi_f, &w);
     int n = 0;
     for (int id; (id = dxTriTreeWalkNext(d, &w)) >= 0;) {
         if (n == max) return -1;
@@ -383,7 +385,15 @@ QUERY_CLONES static int query_leaves(const dxTriMeshData *d, const dReal lo[3],
 int dxTriMeshQueryLeaves(const dxTriMeshData *d, const dReal lo[3], const dReal hi[3], int *leaf,
                          int max)
 {
-    return d->node_count == 0 ? 0 : query_leaves(d, lo, hi, leaf, max);
+    float lo_f[4], hi_f[4];
+    dxFloatBox(lo, hi, lo_f, hi_f);
+    return d->node_count == 0 ? 0 : query_leaves(d, lo_f, hi_f, leaf, max);
+}
+
+int dxTriMeshQueryLeavesF(const dxTriMeshData *d, const float lo_f[3], const float hi_f[3],
+                          int *leaf, int max)
+{
+    return d->node_count == 0 ? 0 : query_leaves(d, lo_f, hi_f, leaf, max);
 }
 
 int dxTriMeshFilterLeaves(const dxTriMeshData *d, const int *leaf, int n, const dReal lo[3],

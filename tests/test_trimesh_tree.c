@@ -457,8 +457,45 @@ static int test_float_steps_match_nextafterf(void)
     return 0;
 }
 
+// A box's floats three at a time (dxFloatBox, SSE2 in double) are
+// dxFloatAbove's and dxFloatBelow's one by one, to the bit: special values
+// (zeros, the float range's ends, infinities, a NaN, numbers a float
+// cannot hold next to ones it can) in every lane and random ones over
+// every exponent.
+static int test_float_box_matches_steps(void)
+{
+    const dReal special[] = { 0.0, -0.0, 1.0, -1.0, (dReal)FLT_TRUE_MIN / 3, -(dReal)FLT_TRUE_MIN / 3,
+                              FLT_MAX, -(dReal)FLT_MAX, (dReal)FLT_MAX * 2, -(dReal)FLT_MAX * 2,
+                              INFINITY, -INFINITY, NAN, (dReal)0.1, -(dReal)0.1, (dReal)1e-40 };
+    const int ns = (int)(sizeof special / sizeof special[0]);
+    for (int i = 0; i < 20000 + ns * ns * ns; i++) {
+        dReal lo[3], hi[3];
+        for (int k = 0; k < 3; k++) {
+            if (i >= 20000) {
+                // Lane k takes special number (i - 20000) / ns^k mod ns.
+                int j = i - 20000;
+                for (int s = 0; s < k; s++) j /= ns;
+                lo[k] = special[j % ns];
+                hi[k] = special[(j + 1) % ns];
+            } else {
+                lo[k] = (dReal)ldexp(rnd(-1, 1), (int)rnd(-160, 140));
+                hi[k] = (dReal)ldexp(rnd(-1, 1), (int)rnd(-160, 140));
+            }
+        }
+        float lo_f[4], hi_f[4];
+        dxFloatBox(lo, hi, lo_f, hi_f);
+        for (int k = 0; k < 3; k++) {
+            float above = dxFloatAbove(lo[k]), below = dxFloatBelow(hi[k]);
+            CHECK(memcmp(&lo_f[k], &above, sizeof above) == 0);
+            CHECK(memcmp(&hi_f[k], &below, sizeof below) == 0);
+        }
+    }
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_float_steps_match_nextafterf),
+    TEST_CASE(test_float_box_matches_steps),
     TEST_CASE(test_tree_wavy_grid),
     TEST_CASE(test_tree_flat_integer_grid),
     TEST_CASE(test_tree_far_grid),

@@ -555,11 +555,10 @@ static inline int tri_off_box(const dReal *v, const off_box *b)
 #endif
 }
 
-// Whether the walk passes triangle *t (its vertices and normal set, the
-// normal not zero) to the test: the height of the other geom's position
-// above its plane into t->h, then the test's own first rejection made
-// here, without the call: below the plane, or above it by more than
-// `reach` (reach < 0: neither).
+// Whether the walk passes triangle *t (its vertices and normal set) to
+// the test: the height of the other geom's position above its plane into
+// t->h, then the test's own first rejection made here, without the call:
+// below the plane, or above it by more than `reach` (reach < 0: neither).
 static inline int height_passes(const dxTriQuery *q, dxTri *t, dReal reach)
 {
     t->h = dxTriHeight(t, q->pos);
@@ -618,14 +617,11 @@ typedef struct off_box_f {
 static inline void off_box_f_set(off_box_f *f, const dReal lo[3], const dReal hi[3])
 {
     float a[4], c[4];
-    for (int k = 0; k < 3; k++) {
-        a[k] = dxFloatAbove(lo[k]);
-        c[k] = dxFloatBelow(hi[k]);
-    }
+    dxFloatBox(lo, hi, a, c);
 #if defined(__SSE__)
-    a[3] = c[3] = NAN;
-    f->a = _mm_loadu_ps(a);
-    f->c = _mm_loadu_ps(c);
+    const __m128 nan3 = _mm_setr_ps(0, 0, 0, NAN);   // (or: lanes 0-2 kept, lane 3 a NaN)
+    f->a = _mm_or_ps(_mm_loadu_ps(a), nan3);
+    f->c = _mm_or_ps(_mm_loadu_ps(c), nan3);
 #else
     for (int k = 0; k < 3; k++) {
         f->a[k] = a[k];
@@ -657,9 +653,10 @@ static inline int tri_off_box_f(const float *fb, const off_box_f *f)
 // The triangles of the n leaves (node * 4 + slot) without a per-triangle
 // callback, in place: a triangle off the box b is dropped first (by its
 // float box from the data's leaf_boxes against fb, the vertices' exact
-// test only where that cannot say), then a degenerate one (a zero normal)
-// and one whose height does not pass; the rest go to the test with their
-// vertices and normal where the data keeps them.
+// test only where that cannot say), then one whose height does not pass
+// and a degenerate one (a zero normal); the rest go to the test with
+// their vertices and normal where the data keeps them. Those that touch
+// are listed (add_hit) if hits is not NULL.
 static void walk_leaves(dxTriQuery *q, const int *leaf, int n, const off_box *b,
                         const off_box_f *fb, dReal reach, dxTriTest *test, int *hits)
 {
@@ -677,9 +674,11 @@ static void walk_leaves(dxTriQuery *q, const int *leaf, int n, const off_box *b,
             if (off == 2 && tri_off_box(v, b)) continue;
             const int t = order[j];
             dxTri tri = { .index = t, .v = (const dReal(*)[3])v, .n = normal + 3 * t };
-            if (tri.n[0] == 0 && tri.n[1] == 0 && tri.n[2] == 0) continue;
             if (!height_passes(q, &tri, reach)) continue;
-            if (test(q, &tri)) add_hit(q->s, hits, t);
+            // A degenerate triangle's height is 0 (or NaN): only then is its
+            // normal looked at.
+            if (!(tri.h != 0) && tri.n[0] == 0 && tri.n[1] == 0 && tri.n[2] == 0) continue;
+            if (test(q, &tri) && hits) add_hit(q->s, hits, t);
         }
     }
 }
@@ -714,12 +713,15 @@ int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dReal reach, dxT
     // the same triangles in the same order as dxTriMeshQueryBox lists
     // them, their vertices read from the leaf-order copy.
     int leaf[LEAF_WALK_MAX], leaves = -1;
-    if (d->leaf_vertices && (d->tree_stamp == 0 || !dxTriMeshTCOn(m, other->ops->cls)))
-        leaves = dxTriMeshQueryLeaves(d, lo, hi, leaf, LEAF_WALK_MAX);
+    if (d->leaf_vertices && (d->tree_stamp == 0 || !dxTriMeshTCOn(m, other->ops->cls))) {
+        float lo_f[4], hi_f[4];
+        dxFloatBox(lo, hi, lo_f, hi_f);
+        leaves = dxTriMeshQueryLeavesF(d, lo_f, hi_f, leaf, LEAF_WALK_MAX);
+    }
     if (leaves >= 0 && !m->callback) {
         off_box_f fb;
         off_box_f_set(&fb, wlo, whi);
-        walk_leaves(q, leaf, leaves, &b, &fb, reach, test, &hits);
+        walk_leaves(q, leaf, leaves, &b, &fb, reach, test, m->array_callback ? &hits : NULL);
     } else if (leaves >= 0) {
         // The per-triangle callback sees every listed triangle that is not
         // degenerate, before the box test.

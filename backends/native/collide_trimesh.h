@@ -50,7 +50,11 @@ typedef struct dxTriScratch {
     dxTriGrid grid;
     dReal *score;      // the reduction's numbers per contact
     int score_cap;
-    dReal pair[56];   // a triangle test's per-pair values (dxTriQuery.prepared)
+    // A triangle test's per-pair values (dxTriQuery.prepared): in double
+    // whatever dReal is, for the room and the alignment of the pointers
+    // among them.
+    double pair[80];
+    int *in_use;      // the owning thread's count of sets in use
 } dxTriScratch;
 
 // A free set of the calling thread's (NULL, reported, if collisions nest

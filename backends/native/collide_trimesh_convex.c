@@ -346,22 +346,58 @@ static int face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p, dRe
     return clipped_face_contacts(q, t, p, corner, made, n, 0, NULL);
 }
 
+// The eight sums x + (+-d0) + (+-d1) + (+-d2), bit j of the index picking
+// the sign of d_j, into out: each summed left to right as written, the
+// partial sums shared (the same numbers as the eight sums one by one).
+// With SSE2 (double) two neighbouring corners at a time: the same sums.
+static inline void corner_sums(dReal x, const dReal d[3], dReal out[8])
+{
+#if defined(__SSE2__) && !defined(dSINGLE)
+    const __m128d a = _mm_add_pd(_mm_set1_pd(x), _mm_set_pd(d[0], -d[0]));
+    const __m128d d1 = _mm_set1_pd(d[1]), d2 = _mm_set1_pd(d[2]);
+    const __m128d b0 = _mm_sub_pd(a, d1), b1 = _mm_add_pd(a, d1);
+    _mm_storeu_pd(out, _mm_sub_pd(b0, d2));
+    _mm_storeu_pd(out + 2, _mm_sub_pd(b1, d2));
+    _mm_storeu_pd(out + 4, _mm_add_pd(b0, d2));
+    _mm_storeu_pd(out + 6, _mm_add_pd(b1, d2));
+#else
+    dReal a[2] = { x - d[0], x + d[0] }, b[4];
+    for (int v = 0; v < 4; v++) b[v] = a[v & 1] + (v & 2 ? d[1] : -d[1]);
+    for (int v = 0; v < 8; v++) out[v] = b[v & 3] + (v & 4 ? d[2] : -d[2]);
+#endif
+}
+
+// A box's faces as corner numbers (in order round the face), as bit
+// masks of those corners, and the clip's tags of their corners.
+static const int box_faces[6][4] = { { 0, 2, 6, 4 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
+                                     { 2, 3, 7, 6 }, { 0, 1, 3, 2 }, { 4, 5, 7, 6 } };
+static const unsigned box_face_mask[6] = { 0x55, 0xaa, 0x33, 0xcc, 0x0f, 0xf0 };
+#define BOX_MADE(a, b, c, d)                                                               \
+    { DX_TRI_MADE_CORNER + (a), DX_TRI_MADE_CORNER + (b), DX_TRI_MADE_CORNER + (c),         \
+      DX_TRI_MADE_CORNER + (d) }
+static const int box_face_made[6][4] = { BOX_MADE(0, 2, 6, 4), BOX_MADE(1, 3, 7, 5),
+                                         BOX_MADE(0, 1, 5, 4), BOX_MADE(2, 3, 7, 6),
+                                         BOX_MADE(0, 1, 3, 2), BOX_MADE(4, 5, 7, 6) };
+#undef BOX_MADE
+
 // A box's values for a pair, worked out on its first triangle (in q->s->pair):
 // unit axes, half sides and corners (bit j of the index picks the sign of
 // axis j); inner[j]: h[j] less the margin within which a point counts as
 // inside the box whatever the rounding (box_separated); through[j] the
 // same with a wider margin, for a point of a triangle's edge whose ends are
 // at most `reach` from the centre along each axis. ax01[k]: component k of
-// axes 0 and 1 side by side.
+// axes 0 and 1 side by side. face_corner[f]: face f's corners (box_faces).
 typedef struct box_pair {
     dReal ax[3][3], h[3], corner[8][3], inner[3], through[3], reach, ax01[3][2];
+    const dReal *face_corner[6][4];
 } box_pair;
 _Static_assert(sizeof(box_pair) <= sizeof(((dxTriScratch *)0)->pair), "box_pair fits");
 
-static const box_pair *prepare_box(dxTriQuery *q)
+// box_pair's values into q->s->pair, once a pair (out of line: box_test,
+// run for every triangle, keeps its registers and stack for the triangles).
+static __attribute__((noinline)) void work_out_box(dxTriQuery *q)
 {
     box_pair *b = (box_pair *)q->s->pair;
-    if (q->prepared) return b;
     const dReal *side = ((const dxBox *)q->other)->side, *c = q->pos;
     for (int j = 0; j < 3; j++) {
         b->h[j] = side[j] / 2;
@@ -381,13 +417,25 @@ static const box_pair *prepare_box(dxTriQuery *q)
         b->through[j] = h[j] - 1024 * eps * size;
     }
     b->reach = 2 * (h[0] + h[1] + h[2]);
-    for (int v = 0; v < 8; v++)
-        for (int i = 0; i < 3; i++)
-            b->corner[v][i] = c[i] + (v & 1 ? h[0] : -h[0]) * b->ax[0][i] +
-                              (v & 2 ? h[1] : -h[1]) * b->ax[1][i] +
-                              (v & 4 ? h[2] : -h[2]) * b->ax[2][i];
+    // Corner v's coordinate i: c[i] + (+-h0) ax0[i] + (+-h1) ax1[i] +
+    // (+-h2) ax2[i], summed left to right ((-h) a is -(h a): the same
+    // numbers), the eight of a coordinate with their partial sums shared.
+    for (int i = 0; i < 3; i++) {
+        const dReal d[3] = { h[0] * b->ax[0][i], h[1] * b->ax[1][i], h[2] * b->ax[2][i] };
+        dReal x[8];
+        corner_sums(c[i], d, x);
+        for (int v = 0; v < 8; v++) b->corner[v][i] = x[v];
+    }
+    for (int f = 0; f < 6; f++)
+        for (int i = 0; i < 4; i++) b->face_corner[f][i] = b->corner[box_faces[f][i]];
     q->prepared = 1;
-    return b;
+}
+
+// The pair's box_pair, worked out on the first call.
+static inline const box_pair *prepare_box(dxTriQuery *q)
+{
+    if (!q->prepared) work_out_box(q);
+    return (const box_pair *)q->s->pair;
 }
 
 // Whether the axis L (mesh frame) separates the triangle from the box
@@ -563,35 +611,19 @@ static int box_separated(const box_pair *b, const dxTri *t, const dReal c[3], dR
     return 0;
 }
 
-// The eight sums x + (+-d0) + (+-d1) + (+-d2), bit j of the index picking
-// the sign of d_j, into out: each summed left to right as written, the
-// partial sums shared (the same numbers as the eight sums one by one).
-// With SSE2 (double) two neighbouring corners at a time: the same sums.
-static inline void corner_sums(dReal x, const dReal d[3], dReal out[8])
-{
-#if defined(__SSE2__) && !defined(dSINGLE)
-    const __m128d a = _mm_add_pd(_mm_set1_pd(x), _mm_set_pd(d[0], -d[0]));
-    const __m128d d1 = _mm_set1_pd(d[1]), d2 = _mm_set1_pd(d[2]);
-    const __m128d b0 = _mm_sub_pd(a, d1), b1 = _mm_add_pd(a, d1);
-    _mm_storeu_pd(out, _mm_sub_pd(b0, d2));
-    _mm_storeu_pd(out + 2, _mm_sub_pd(b1, d2));
-    _mm_storeu_pd(out + 4, _mm_add_pd(b0, d2));
-    _mm_storeu_pd(out + 6, _mm_add_pd(b1, d2));
-#else
-    dReal a[2] = { x - d[0], x + d[0] }, b[4];
-    for (int v = 0; v < 4; v++) b[v] = a[v & 1] + (v & 2 ? d[1] : -d[1]);
-    for (int v = 0; v < 8; v++) out[v] = b[v & 3] + (v & 4 ? d[2] : -d[2]);
-#endif
-}
-
 // Bit v set where x[v] < lim (of eight numbers), where x[v] >= lim, where
-// x[v] <= lim (false for NaN, as the comparisons one by one).
+// x[v] <= lim (false for NaN, as the comparisons one by one). With SSE2 the
+// low halves of four comparisons' 64-bit masks are gathered as four 32-bit
+// ones (a shuffle), so that one movemask gives four bits.
 #if defined(__SSE2__) && !defined(dSINGLE)
+static inline unsigned four_bits(__m128d m01, __m128d m23)
+{
+    return (unsigned)_mm_movemask_ps(
+        _mm_shuffle_ps(_mm_castpd_ps(m01), _mm_castpd_ps(m23), _MM_SHUFFLE(2, 0, 2, 0)));
+}
 #define EIGHT_BITS(x, lim, cmp)                                                            \
-    ((unsigned)_mm_movemask_pd(cmp(_mm_loadu_pd(x), lim)) |                                 \
-     (unsigned)_mm_movemask_pd(cmp(_mm_loadu_pd((x) + 2), lim)) << 2 |                      \
-     (unsigned)_mm_movemask_pd(cmp(_mm_loadu_pd((x) + 4), lim)) << 4 |                      \
-     (unsigned)_mm_movemask_pd(cmp(_mm_loadu_pd((x) + 6), lim)) << 6)
+    (four_bits(cmp(_mm_loadu_pd(x), lim), cmp(_mm_loadu_pd((x) + 2), lim)) |               \
+     four_bits(cmp(_mm_loadu_pd((x) + 4), lim), cmp(_mm_loadu_pd((x) + 6), lim)) << 4)
 static inline unsigned bits_below(const dReal x[8], dReal lim)
 {
     return EIGHT_BITS(x, _mm_set1_pd(lim), _mm_cmplt_pd);
@@ -629,11 +661,40 @@ static inline unsigned bits_at_most(const dReal x[8], dReal lim)
 }
 #endif
 
-// A box's faces as corner numbers (in order round the face) and as bit
-// masks of those corners.
-static const int box_faces[6][4] = { { 0, 2, 6, 4 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
-                                     { 2, 3, 7, 6 }, { 0, 1, 3, 2 }, { 4, 5, 7, 6 } };
-static const unsigned box_face_mask[6] = { 0x55, 0xaa, 0x33, 0xcc, 0x0f, 0xf0 };
+
+// The faces whose four corners are all in the corner set m (bit v: corner
+// v), face f as bit 3 f: three sets of faces, one for each prism side k,
+// fit side by side (bit 3 f + k) and a face's three read as one number.
+// A face has a corner in m when not all of its corners are in the rest.
+#define FACES_ALL_OF(m)                                                                    \
+    ((((m) & 0x55) == 0x55) | (((m) & 0xaa) == 0xaa) << 3 | (((m) & 0x33) == 0x33) << 6 |   \
+     (((m) & 0xcc) == 0xcc) << 9 | (((m) & 0x0f) == 0x0f) << 12 | (((m) & 0xf0) == 0xf0) << 15)
+#define FACES_4(m) FACES_ALL_OF(m), FACES_ALL_OF((m) + 1), FACES_ALL_OF((m) + 2), FACES_ALL_OF((m) + 3)
+#define FACES_16(m) FACES_4(m), FACES_4((m) + 4), FACES_4((m) + 8), FACES_4((m) + 12)
+#define FACES_64(m) FACES_16(m), FACES_16((m) + 16), FACES_16((m) + 32), FACES_16((m) + 48)
+static const uint32_t faces_all_of[256] = { FACES_64(0), FACES_64(64), FACES_64(128),
+                                            FACES_64(192) };
+#undef FACES_64
+#undef FACES_16
+#undef FACES_4
+#undef FACES_ALL_OF
+enum { EVERY_FACE = 0x9249 };   // bit 3 f for each of the six faces
+
+// The three sets of faces all of whose corners in `low` are in m[k] (or,
+// what is the same, none of whose low corners is outside m[k]), side k's
+// at bit 3 f + k.
+static inline uint32_t faces_low_in(unsigned low, const unsigned m[3])
+{
+    return faces_all_of[(~low | m[0]) & 0xff] | faces_all_of[(~low | m[1]) & 0xff] << 1 |
+           faces_all_of[(~low | m[2]) & 0xff] << 2;
+}
+
+// From the sides k (bits) a face needs no clip against or its low part is
+// within, those from the last on: the sides whose clips are left out.
+static inline unsigned sides_from_last(unsigned sides)
+{
+    return 0x76440000u >> (4 * sides) & 7;
+}
 
 // Which sides of the prism box face f's part at or below the level H
 // (corner heights hv, bit v of `low` set for a corner at or below it) lies
@@ -706,15 +767,23 @@ static int box_test(dxTriQuery *q, const dxTri *t)
         lim[k] = 2 * p.slack[k];
         low_in[k] = bits_at_least(fk[k], lim[k]);
     }
+    // The faces to clip: those with a corner on or behind the plane, none
+    // with all four corners beyond one side (bit 3 f). Per face and side k
+    // (bit 3 f + k): its corners all within side k (no clip needed), its
+    // low corners all within lim[k] of it (low_in), all beyond it (away).
+    const uint32_t faces = ~faces_all_of[~behind & 0xff] & EVERY_FACE &
+                           ~(faces_all_of[outside[0]] | faces_all_of[outside[1]] |
+                             faces_all_of[outside[2]]);
+    const uint32_t all_low = faces_all_of[behind];
+    const uint32_t within_of = faces_all_of[inside[0]] | faces_all_of[inside[1]] << 1 |
+                               faces_all_of[inside[2]] << 2;
+    const uint32_t low_in_of = faces_low_in(behind, low_in);
+    const uint32_t away_of = faces_low_in(behind, outside);
     // seen: the corners added already (each is in three faces).
     int added = 0;
     unsigned seen = 0;
-    for (int f = 0; f < 6; f++) {
-        const unsigned mask = box_face_mask[f];
-        if (!(behind & mask)) continue;
-        if ((outside[0] & mask) == mask || (outside[1] & mask) == mask ||
-            (outside[2] & mask) == mask)
-            continue;
+    for (uint32_t left = faces; left; left &= left - 1) {
+        const int f3 = __builtin_ctz(left), f = f3 / 3;
         // Every point a face can add lies in its low part (at or below
         // 2 eps). If that part is beyond a side, the face adds nothing. If
         // it is within the last side to clip against by one slack more
@@ -723,28 +792,19 @@ static int box_test(dxTriQuery *q, const dxTri *t)
         // ones, which add nothing: it is left out (and then the one before
         // it, the same way). A face left with no clip adds its low corners
         // (in its order, as the clip keeps them).
-        const unsigned low = behind & mask;
-        unsigned within = (inside[0] & mask) == mask;
-        within |= (unsigned)((inside[1] & mask) == mask) << 1;
-        within |= (unsigned)((inside[2] & mask) == mask) << 2;
+        const unsigned low = behind & box_face_mask[f];
+        unsigned within = within_of >> f3 & 7;
         // low_within: the sides, from the last on, that the low part's
         // corners are within (or that need no clip), less those that need
         // no clip.
-        unsigned away = 0, low_within = 0;
-        for (int k = 2; k >= 0; k--) {
-            if (within >> k & 1) continue;
-            if ((low_in[k] & low) != low) break;
-            low_within |= 1u << k;
-        }
-        if (low != mask) {
-            away = (outside[0] & low) == low;
-            away |= (unsigned)((outside[1] & low) == low) << 1;
-            away |= (unsigned)((outside[2] & low) == low) << 2;
+        unsigned low_within = sides_from_last(within | (low_in_of >> f3 & 7)) & ~within;
+        if (!(all_low >> f3 & 1)) {
+            unsigned away = away_of >> f3 & 7;
             if (away || low_within)
                 low_part_sides(f, hv, behind, 2 * eps, fk, lim, &away, &low_within);
             if (away) continue;
         }
-        for (int k = 2; k >= 0 && ((within | low_within) >> k & 1); k--) within |= 1u << k;
+        within |= sides_from_last(within | low_within);
         const int *fv = box_faces[f];
         if (within == 7) {
             for (int i = 0; i < 4; i++) {
@@ -758,11 +818,8 @@ static int box_test(dxTriQuery *q, const dxTri *t)
             }
             continue;
         }
-        const dReal *corner[4] = { b->corner[fv[0]], b->corner[fv[1]], b->corner[fv[2]],
-                                   b->corner[fv[3]] };
-        const int made[4] = { DX_TRI_MADE_CORNER + fv[0], DX_TRI_MADE_CORNER + fv[1],
-                              DX_TRI_MADE_CORNER + fv[2], DX_TRI_MADE_CORNER + fv[3] };
-        added |= clipped_face_contacts(q, t, &p, corner, made, 4, within, &seen);
+        added |= clipped_face_contacts(q, t, &p, b->face_corner[f], box_face_made[f], 4, within,
+                                       &seen);
     }
     return added;
 }

@@ -57,6 +57,7 @@ static thread_scratch *thread_mine(void)
         pthread_once(&exit_key_once, make_exit_key);
         mine = (thread_scratch *)dAlloc(sizeof *mine);
         memset(mine, 0, sizeof *mine);
+        for (int i = 0; i < NESTING; i++) mine->set[i].in_use = &mine->depth;
         pthread_setspecific(exit_key, mine);
     }
     return mine;
@@ -86,7 +87,7 @@ dxTriScratch *dxTriScratchAcquire(void)
 
 void dxTriScratchRelease(dxTriScratch *s)
 {
-    if (s) mine->depth--;
+    if (s) (*s->in_use)--;   // (the thread's count, without its thread-local lookup)
 }
 
 void dxTriScratchAddRaw(dxTriScratch *s, int extra)
