@@ -224,6 +224,18 @@ static int level_index_near(dxHashSpace *hs, int level, int *last)
     return *last = level_index(hs, level);
 }
 
+// The bounds of the longest side of a box that keeps the placed geom of sl
+// at its level, (side_lo, side_hi]: they depend on minlevel (a geom at
+// minlevel may be as small as it likes), so they are set again whenever the
+// levels change.
+static void side_bounds(const dxHashSpace *hs, hash_slot *sl)
+{
+    const int level = sl->level;
+    const int exact = level > -1000 && level < 1000;   // 2^level, 2^(level-1) are doubles
+    sl->side_lo = level == hs->minlevel ? -1.0 : level_scale(1 - level);
+    sl->side_hi = exact ? level_scale(-level) : NAN;
+}
+
 // Take the geom of slot si out of its cells.
 static void unplace(dxHashSpace *hs, int si)
 {
@@ -249,9 +261,7 @@ static void place(dxHashSpace *hs, int si, int level, const int64_t lo[3], const
         sl->lo_d[k] = (double)lo[k];
         sl->hi_d[k] = (double)hi[k];
     }
-    const int exact = level > -1000 && level < 1000;   // 2^level, 2^(level-1) are doubles
-    sl->side_lo = level == hs->minlevel ? -1.0 : level_scale(1 - level);
-    sl->side_hi = exact ? level_scale(-level) : NAN;
+    side_bounds(hs, sl);
     for (int64_t i = lo[0]; i <= hi[0]; i++)
         for (int64_t j = lo[1]; j <= hi[1]; j++)
             for (int64_t k = lo[2]; k <= hi[2]; k++) {
@@ -367,7 +377,7 @@ static void hash_update(dxHashSpace *hs)
     int n_placed = 0, n_entries = 0, moved = 0, relevelled = hs->members_changed;
     const int check_kept = !hs->levels_changed && !hs->afresh;
     for (int i = 0; i < s->count; i++) {
-        const hash_slot *sl = &hs->slots[hs->slot_of[i]];
+        hash_slot *sl = &hs->slots[hs->slot_of[i]];
         if (check_kept && sl->state == SLOT_PLACED && keeps_place(sl, sl->g->aabb)) {
             n_placed++;
             n_entries += sl->n;
@@ -381,6 +391,7 @@ static void hash_update(dxHashSpace *hs)
             n_placed++;
             n_entries += (int)cell_count(p->lo, p->hi);
             changed = !same_place(sl, p);
+            if (!changed) side_bounds(hs, sl);   // (minlevel may have changed)
             new_level = sl->state != SLOT_PLACED || sl->level != p->level;
         } else {
             changed = new_level = sl->state != SLOT_BIG;

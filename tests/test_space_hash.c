@@ -362,10 +362,36 @@ static int test_levels_changed_by_the_callback_take_effect_after_it(void)
     return 0;
 }
 
+static int test_geom_shrinking_after_minlevel_lowered_orders_as_fresh(void)
+{
+    // a sits at level -3, the old minlevel, with a side in (2^-4, 2^-3]: it
+    // stays there when minlevel drops to -5. When it then shrinks to a side
+    // of 0.02 within the same cell, it belongs at level -5, where it meets b
+    // through b's coarser cell (a first), not in a shared cell (b first).
+    dSpaceID s = dHashSpaceCreate(0);
+    dGeomID a = dCreateSphere(s, REAL(0.05));
+    dGeomID b = dCreateSphere(s, REAL(0.05));
+    number(a, 1);
+    number(b, 2);
+    dGeomSetPosition(a, REAL(0.0625), REAL(0.0625), REAL(0.0625));
+    dGeomSetPosition(b, REAL(0.07), REAL(0.06), REAL(0.0625));
+    pairs got = { 0 };
+    dSpaceCollide(s, &got, record);
+    dHashSpaceSetLevels(s, -5, 10);
+    dSpaceCollide(s, &got, record);
+    dGeomSphereSetRadius(a, REAL(0.01));
+    dSpaceCollide(s, &got, record);
+    free(got.p);
+    if (check_order_is_fresh(s, -5, 10)) return 1;
+    dSpaceDestroy(s);
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_random_edits_find_the_brute_force_pairs_every_step),
     TEST_CASE(test_pair_order_depends_only_on_the_geoms),
     TEST_CASE(test_geoms_changing_cells_allocate_nothing_once_warm),
     TEST_CASE(test_levels_changed_by_the_callback_take_effect_after_it),
+    TEST_CASE(test_geom_shrinking_after_minlevel_lowered_orders_as_fresh),
     TEST_END
 };
