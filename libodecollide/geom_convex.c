@@ -461,7 +461,12 @@ static void convex_set(dxConvex *c, const dReal *planes, unsigned planecount,
         sides += *poly;
         poly += 1 + *poly;
     }
-    size_t doubles = 6 * (size_t)pointcount + 10 * (size_t)planecount + 3 * sides;
+    // The normals and the edges' n2 x n1 by coordinate get room for a
+    // multiple of four (sides is at least the edge count), zero past the
+    // planes and edges: the loops over them go four at a time without a
+    // tail (zeros give no sign).
+    size_t planes4 = (planecount + 3) & ~(size_t)3, sides4 = (sides + 3) & ~(size_t)3;
+    size_t doubles = 6 * (size_t)pointcount + 7 * (size_t)planecount + 3 * planes4 + 3 * sides4;
     c->derived_size = sizeof(uint64_t) * 3 * (size_t)planecount + sizeof(double) * doubles +
                       sizeof(dxHullPosedEdge) * sides + sizeof(dxHullEdge) * sides +
                       sizeof(unsigned) * (planecount + (size_t)pointcount + 1 + 2 * sides);
@@ -476,12 +481,13 @@ static void convex_set(dxConvex *c, const dReal *planes, unsigned planecount,
     pose->py = pose->px + pointcount;
     pose->pz = pose->py + pointcount;
     pose->nx = pose->pz + pointcount;
-    pose->ny = pose->nx + planecount;
-    pose->nz = pose->ny + planecount;
-    pose->ex = pose->nz + planecount;
-    pose->ey = pose->ex + sides;
-    pose->ez = pose->ey + sides;
-    pose->face_low = pose->ez + sides;
+    pose->ny = pose->nx + planes4;
+    pose->nz = pose->ny + planes4;
+    pose->ex = pose->nz + planes4;
+    pose->ey = pose->ex + sides4;
+    pose->ez = pose->ey + sides4;
+    pose->face_low = pose->ez + sides4;
+    memset(pose->nx, 0, (3 * planes4 + 3 * sides4) * sizeof(double));
     c->plane_len = pose->face_low + planecount;
     c->plane_dev = c->plane_len + planecount;
     pose->edges = (dxHullPosedEdge *)(c->plane_dev + planecount);

@@ -56,6 +56,8 @@ typedef struct dxHullPose {
     // The same by coordinate, for loops over many at once: the points'
     // x, y, z, the normals' x, y, z; and with the edges, each edge's cross
     // product of its faces' normals n2 x n1 (the normal of its arc's circle).
+    // The normals' and edges' rows hold a multiple of four, zero past the
+    // planes and the edges.
     double *px, *py, *pz, *nx, *ny, *nz, *ex, *ey, *ez;
     double centre[3];             // the mean of the points: inside the hull
     double box[6];                // their bounding box (lo, hi by axis)
@@ -94,7 +96,8 @@ typedef struct dx_hull {
     const uint64_t *by_f1, *by_f2;
     uint64_t lone;
     const uint64_t *nbr;      // per plane: it and the planes it shares an edge with
-    // The points, normals and edges' n2 x n1 by coordinate (dxHullPose).
+    // The points, normals and edges' n2 x n1 by coordinate (dxHullPose; the
+    // normals and edges zero past their count up to a multiple of four).
     const double *px, *py, *pz, *nx, *ny, *nz;
     double *ex, *ey, *ez;     // (with the edges: n2 x n1)
     struct dxConvex *convex;  // the convex geom (its axis hints), NULL for a box

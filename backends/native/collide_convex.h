@@ -24,7 +24,7 @@ typedef struct dx_hull_box {
     dReal pts[24], planes[24];
     double wp[8][3], wn[6][3], wd[6];
     dxHullPosedEdge we[12];
-    double p_soa[3][8], n_soa[3][6], e_soa[3][12], face_low[6];
+    double p_soa[3][8], n_soa[3][8], e_soa[3][12], face_low[6];   // n_soa: zero past 6
     int edges_posed;
 } dx_hull_box;
 

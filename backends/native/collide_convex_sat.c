@@ -406,6 +406,24 @@ static inline __attribute__((always_inline)) void dot_signs(const double c[3], c
     dot_signs_from(c, x, y, z, k, n, pos, neg);
 }
 
+// dot_signs for n a multiple of four (rows padded with zeros: see
+// up_to_four): no tail after the fours.
+static inline __attribute__((always_inline)) void dot_signs_padded(const double c[3],
+                                                                    const double *x,
+                                                                    const double *y,
+                                                                    const double *z, unsigned n,
+                                                                    uint64_t *pos, uint64_t *neg,
+                                                                    int avx2)
+{
+#ifdef DX_SIGNS_AVX2
+    if (avx2) {
+        dot_signs4(c, x, y, z, n, pos, neg);
+        return;
+    }
+#endif
+    dot_signs(c, x, y, z, n, pos, neg, 0);
+}
+
 // The translation of a along the unit n that parts it from b.
 static double depth_along(const dx_hull *a, const dx_hull *b, const double n[3])
 {
@@ -838,6 +856,13 @@ static inline int edge_candidate(const dx_hull *a, unsigned i, const dx_hull *b,
 // for a's faces against b's point, gap_b for b's against a's).
 enum { MASK_BITS = 64 };
 
+// n rounded up to a multiple of four: a hull's normals and edge circles by
+// coordinate hold that many, zero past n (no sign: no bit in dot_signs).
+static inline unsigned up_to_four(unsigned n)
+{
+    return (n + 3) & ~3u;
+}
+
 static inline __attribute__((always_inline)) int
 masked_edge_pairs_with(const dx_hull *a, const dx_hull *b, edge_search *es, const double *gap_a,
                        const double *gap_b, int avx2)
@@ -860,7 +885,8 @@ masked_edge_pairs_with(const dx_hull *a, const dx_hull *b, edge_search *es, cons
     }
     for (; faces; faces &= faces - 1) {
         unsigned f = (unsigned)__builtin_ctzll(faces);
-        dot_signs(a->wn[f], b->ex, b->ey, b->ez, b->nedges, &above[f], &below[f], avx2);
+        dot_signs_padded(a->wn[f], b->ex, b->ey, b->ez, up_to_four(b->nedges), &above[f],
+                         &below[f], avx2);
     }
     // a's edges that can have candidates: the near ones, or all if b has
     // lone edges (which meet every edge).
@@ -877,7 +903,8 @@ masked_edge_pairs_with(const dx_hull *a, const dx_hull *b, edge_search *es, cons
             uint64_t first_pos = 0, first_neg = 0, second_pos = 0, second_neg = 0, pos, neg;
             double circle[3];
             edge_circle(a, i, circle);
-            dot_signs(circle, b->nx, b->ny, b->nz, b->nplanes, &pos, &neg, avx2);
+            dot_signs_padded(circle, b->nx, b->ny, b->nz, up_to_four(b->nplanes), &pos, &neg,
+                             avx2);
             int signed_all = (pos | neg) == b_planes;
             for (; pos; pos &= pos - 1) {
                 unsigned f = (unsigned)__builtin_ctzll(pos);
