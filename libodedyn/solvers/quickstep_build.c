@@ -265,7 +265,8 @@ QS_INLINE int factor_n(const qs_v2 *J, const qs_v2 *iMJ, const dReal *cfm, int n
     return 1;
 }
 
-static int factor(const qs_v2 *J, const qs_v2 *iMJ, const dReal *cfm, int n, dReal sor_w,
+// (Always inline: out of line, its calls cost more than sharing its code saves.)
+QS_INLINE int factor(const qs_v2 *J, const qs_v2 *iMJ, const dReal *cfm, int n, dReal sor_w,
                   double *L, dReal *Ainv)
 {
     switch (n) {   // constant sizes let the compiler unroll
@@ -390,7 +391,11 @@ static int equality_rows_fit(int n, const dReal *J, const dReal *c, const dReal 
 // the block made as make_blocks makes it from the generic rows (the same
 // numbers) and appended to the system with its lambda positions. Returns 0,
 // leaving nothing behind, if the rows are not finite, not all unbounded or
-// their matrix is singular: the joint then takes the generic way.
+// their matrix is singular: the joint then takes the generic way. (Out of
+// line: inlined, it made GCC move more of the generic way out of line.)
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
 static int equality_block(struct dxWorld *w, dxJoint *j, const qs_input *in, qs_jrows *jr,
                           qs_system *sys)
 {
