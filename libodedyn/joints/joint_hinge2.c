@@ -191,23 +191,28 @@ static void relative_angular_velocity(const dxJoint *j, dVector3 w)
 
 // ---- rows -----------------------------------------------------------------
 
-// Row `row`: the anchors do not separate along unit direction n. Its velocity
-// is n . (v1 + w1 x r1 - v2 - w2 x r2), and n . (w x r) = w . (r x n).
-static void anchor_row(const dxJoint *j, dxJointRows *rows, int row, const hinge2_pose *pose,
-                       const dVector3 n, dReal erp)
+// Rows 0..2: the anchors do not separate along the unit directions n[i]
+// (row i, its ERP erp[i]). Row i's velocity is n . (v1 + w1 x r1 - v2 - w2 x
+// r2), and n . (w x r) = w . (r x n). The three are made together: each
+// body's Jacobian found once, the anchors' gap once.
+static void anchor_rows(const dxJoint *j, dxJointRows *rows, const hinge2_pose *pose,
+                        const dReal *const n[3], const dReal erp[3])
 {
+    const int s = rows->rowskip;
     for (int k = 0; k < 2; k++) {
-        dReal *Jl = user_jacobian(j, rows, k, 0, row), *Ja = user_jacobian(j, rows, k, 1, row);
+        dReal *Jl = user_jacobian(j, rows, k, 0, 0), *Ja = user_jacobian(j, rows, k, 1, 0);
         if (!Jl) continue;
-        dReal sign = k ? -1 : 1;
-        dVector3 rn;
-        dCalcVectorCross3(rn, pose->r[k], n);
-        dCopyScaledVector3(Jl, n, sign);
-        dCopyScaledVector3(Ja, rn, sign);
+        const dReal sign = k ? -1 : 1;
+        for (int i = 0; i < 3; i++) {
+            dVector3 rn;
+            dCalcVectorCross3(rn, pose->r[k], n[i]);
+            dCopyScaledVector3(Jl + i * s, n[i], sign);
+            dCopyScaledVector3(Ja + i * s, rn, sign);
+        }
     }
     dVector3 gap;
     dSubtractVectors3(gap, pose->p[1], pose->p[0]);
-    rows->c[row] = rows->fps * erp * dCalcVectorDot3(n, gap);
+    for (int i = 0; i < 3; i++) rows->c[i] = rows->fps * erp[i] * dCalcVectorDot3(n[i], gap);
 }
 
 // Row `row`: no relative rotation about u = a1 x a2, which keeps the angle
@@ -289,10 +294,10 @@ static void hinge2_fill_rows(dxJoint *j, dxJointRows *rows)
     // with damping kd = (1 - ERP) / CFM (guide 3.8.2); across it, rigid.
     dVector3 p, q, d1, d2;
     dPlaneSpace(pose.a1, p, q);
-    anchor_row(j, rows, 0, &pose, pose.a1, h->susp_erp);
+    const dReal *const n[3] = { pose.a1, p, q };
+    const dReal erp[3] = { h->susp_erp, rows->erp, rows->erp };
+    anchor_rows(j, rows, &pose, n, erp);
     rows->cfm[0] = h->susp_cfm;
-    anchor_row(j, rows, 1, &pose, p, rows->erp);
-    anchor_row(j, rows, 2, &pose, q, rows->erp);
     axes_angle_row(h, rows, 3, &pose);
     reciprocal_axes(pose.a1, pose.a2, d1, d2);
     int row = 4 + limot_row(h, 0, rows, 4, d1);

@@ -26,6 +26,7 @@
 typedef struct qs_jrows {
     int m;
     int direct;            // a contact made straight into its rows (quickstep_contact.c)
+    int equality;          // an equality joint, tried straight into its block first
     dReal *J, *c, *cfm, *lo, *hi;
     int *findex;
     int b[2];              // island indices of its bodies, -1: static or kinematic
@@ -264,7 +265,8 @@ QS_INLINE int factor_n(const qs_v2 *J, const qs_v2 *iMJ, const dReal *cfm, int n
     return 1;
 }
 
-static int factor(const qs_v2 *J, const qs_v2 *iMJ, const dReal *cfm, int n, dReal sor_w,
+// (Always inline: out of line, its calls cost more than sharing its code saves.)
+QS_INLINE int factor(const qs_v2 *J, const qs_v2 *iMJ, const dReal *cfm, int n, dReal sor_w,
                   double *L, dReal *Ainv)
 {
     switch (n) {   // constant sizes let the compiler unroll
@@ -345,6 +347,108 @@ static qs_block *make_blocks(dxArena *a, const qs_input *in, const qs_jrows *jr,
         n = 0;
     }
     return sys->nblocks == first_block + 1 ? &sys->blocks[first_block] : NULL;
+}
+
+// ---- joints of equality rows only ---------------------------------------------
+
+// Is j a joint whose rows (counted this step) may all be equalities made
+// straight into one block (equality_block): 2..QS_MAX_BLOCK rows, all of them
+// unbounded by its count, not a contact, body 0 in the island and no
+// kinematic body (whose motion dxJointRowsFill folds into the rows).
+static int is_equality_joint(const dxJoint *j)
+{
+    const int m = j->rows.m;
+    if (m < 2 || m > QS_MAX_BLOCK || j->rows.nub != m || j->cls->type == dJointTypeContact)
+        return 0;
+    const struct dxBody *b0 = dxJointBody(j, 0), *b1 = dxJointBody(j, 1);
+    return b0 && !(b0->flags & DX_BODY_KINEMATIC) && !(b1 && (b1->flags & DX_BODY_KINEMATIC));
+}
+
+// Are the joint's n rows numbers a solver can take (J, c and cfm finite: a
+// sum of finite numbers is finite unless it overflows, which the generic
+// check then settles) and all of them unbounded?
+static int equality_rows_fit(int n, const dReal *J, const dReal *c, const dReal *cfm,
+                             const dReal *lo, const dReal *hi, const int *findex)
+{
+    qs_v2 sum = qs_splat(0);
+    dReal sum1 = 0;
+    int unbounded = 1;
+    for (int i = 0; i < n; i++) {
+        for (int e = 0; e < 12; e += 2) {
+            qs_v2 x;
+            memcpy(&x, J + i * DX_ROW_SKIP + e, sizeof x);
+            sum = qs_add(sum, x);
+        }
+        sum1 += c[i] + cfm[i];
+        unbounded &= (findex[i] < 0) & (lo[i] == -dInfinity) & (hi[i] == dInfinity);
+    }
+    const dReal total = qs_lane(sum, 0) + qs_lane(sum, 1) + sum1;
+    return unbounded && total - total == 0;
+}
+
+// The rows of an equality joint (is_equality_joint; its island bodies in
+// jr->b, joint_sides done) written by the joint straight into its block's J,
+// the block made as make_blocks makes it from the generic rows (the same
+// numbers) and appended to the system with its lambda positions. Returns 0,
+// leaving nothing behind, if the rows are not finite, not all unbounded or
+// their matrix is singular: the joint then takes the generic way. (Out of
+// line: inlined, it made GCC move more of the generic way out of line.)
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static int equality_block(struct dxWorld *w, dxJoint *j, const qs_input *in, qs_jrows *jr,
+                          qs_system *sys)
+{
+    const int n = jr->m;
+    dxArena *a = w->arena;
+    const dxArenaMark mark = dxArenaSave(a);
+    // One piece of arena: J and M (n x 6 pairs each), Ainv, rhs, cfm.
+    const size_t pairs = (size_t)12 * n, reals = (size_t)n * (QS_PAD(n) + 2);
+    qs_v2 *J = dxArenaAlloc(a, sizeof(qs_v2) * pairs + sizeof(dReal) * reals);
+    qs_v2 *M = J + 6 * n;
+    dReal *Ainv = (dReal *)(J + pairs);
+    dReal *rhs = Ainv + n * QS_PAD(n), *cfm = rhs + n;
+    dReal c[QS_MAX_BLOCK], jcfm[QS_MAX_BLOCK], lo[QS_MAX_BLOCK], hi[QS_MAX_BLOCK];
+    int findex[QS_MAX_BLOCK];
+    for (int e = 0; e < 6 * n; e++) J[e] = qs_splat(0);
+    for (int i = 0; i < n; i++) {
+        c[i] = 0;
+        jcfm[i] = w->cfm;
+        lo[i] = -dInfinity;
+        hi[i] = dInfinity;
+        findex[i] = -1;
+    }
+    dReal *Jr = (dReal *)J;
+    dxJointRows info = { in->fps, w->erp, DX_ROW_SKIP, Jr, Jr + 3, Jr + 6, Jr + 9,
+                         c, jcfm, lo, hi, findex };
+    j->cls->fill_rows(j, &info);
+    qs_jblock jb;
+    if (equality_rows_fit(n, Jr, c, jcfm, lo, hi, findex)) {
+        jr->J = Jr;
+        for (int k = 0; k < n; k++) {
+            const dReal rate = row_full(jr, k, NULL, M + 6 * k);
+            rhs[k] = c[k] * in->fps - rate;
+            cfm[k] = jcfm[k] * in->fps;
+        }
+        if (factor(J, M, cfm, n, in->sor_w, jb.L, Ainv)) {
+            qs_block *blk = &sys->blocks[sys->nblocks++];
+            blk->n = n;
+            blk->two = is_two_body(jr);
+            blk->o0 = jr->o[0];
+            blk->o1 = jr->o[1];
+            blk->first = sys->next;
+            blk->J = J;
+            blk->M = M;
+            blk->Ainv = Ainv;
+            blk->rhs = rhs;
+            blk->cfm = cfm;
+            blk->coupled = blk->ncoupled = 0;
+            sys->next += n;
+            return 1;
+        }
+    }
+    dxArenaRestore(a, mark);
+    return 0;
 }
 
 // ---- rows --------------------------------------------------------------------
@@ -588,42 +692,63 @@ static void keep_feedback(dxArena *a, dxJoint *j, const qs_jrows *jr, const int 
     fb->m = jr->m;
 }
 
+// Joint j's rows by dxJointRowsFill into jr, its numbers from one piece of
+// arena memory that lives until the step ends (J at *J, c, cfm, lo, hi at
+// *num, findex at *findex), the pointers moved past them.
+static void fill_joint_rows(struct dxWorld *w, dxJoint *j, dReal h, qs_jrows *jr, dReal **J,
+                            dReal **num, int **findex)
+{
+    const size_t jm = (size_t)jr->m;
+    jr->J = *J;
+    jr->c = *num;
+    jr->cfm = *num + jm;
+    jr->lo = *num + 2 * jm;
+    jr->hi = *num + 3 * jm;
+    jr->findex = *findex;
+    dxJointRowsFill(w, j, h, jr->J, jr->c, jr->cfm, jr->lo, jr->hi, jr->findex, jr->b);
+    *J += jm * DX_ROW_SKIP;
+    *num += 4 * jm;
+    *findex += jm;
+}
+
+// Arena memory for the generic rows of m rows (J, then c, cfm, lo, hi, then findex).
+static dReal *rows_piece(dxArena *a, size_t m)
+{
+    return dxArenaAlloc(a, sizeof(dReal) * 16 * m + sizeof(int) * m);
+}
+
 // The rows of every joint of the island (count_rows done) into the step's
 // jrows scratch, their numbers in arena memory that lives until the step
-// ends (one piece, none when every joint is a direct contact); contacts that
-// go straight to the solver's rows are only marked (their rows are made in
-// dxQuickBuild).
+// ends (one piece, none when every joint is a direct contact or an equality
+// joint); contacts that go straight to the solver's rows and equality
+// joints, whose rows go straight into their block, are only marked (their
+// rows are made in dxQuickBuild).
 static qs_jrows *fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h,
                                   qs_jrows *jrows)
 {
     size_t m = 0;
     for (int k = 0; k < is->nj; k++) {
         dxJoint *j = is->joints[k];
-        jrows[k].m = j->rows.m;
-        jrows[k].direct = j->rows.m > 0 && j->cls->type == dJointTypeContact &&
-                          dxQuickContactIsDirect(j);
-        if (!jrows[k].direct) m += (size_t)j->rows.m;
+        qs_jrows *jr = &jrows[k];
+        jr->m = j->rows.m;
+        jr->direct = j->rows.m > 0 && j->cls->type == dJointTypeContact &&
+                     dxQuickContactIsDirect(j);
+        jr->equality = is_equality_joint(j);
+        if (jr->equality) {
+            const struct dxBody *b1 = dxJointBody(j, 1);
+            jr->b[0] = dxJointBody(j, 0)->tag;
+            jr->b[1] = b1 ? b1->tag : -1;
+        } else if (!jr->direct) {
+            m += (size_t)j->rows.m;
+        }
     }
     if (m == 0) return jrows;
-    // J (12 a row), then c, cfm, lo, hi (m each), then findex.
-    dReal *J = dxArenaAlloc(w->arena, sizeof(dReal) * 16 * m + sizeof(int) * m);
+    dReal *J = rows_piece(w->arena, m);
     dReal *num = J + m * DX_ROW_SKIP;
     int *findex = (int *)(num + 4 * m);
     for (int k = 0; k < is->nj; k++) {
-        dxJoint *j = is->joints[k];
         qs_jrows *jr = &jrows[k];
-        if (jr->direct) continue;
-        const size_t jm = (size_t)j->rows.m;
-        jr->J = J;
-        jr->c = num;
-        jr->cfm = num + jm;
-        jr->lo = num + 2 * jm;
-        jr->hi = num + 3 * jm;
-        jr->findex = findex;
-        dxJointRowsFill(w, j, h, jr->J, jr->c, jr->cfm, jr->lo, jr->hi, jr->findex, jr->b);
-        J += jm * DX_ROW_SKIP;
-        num += 4 * jm;
-        findex += jm;
+        if (!jr->direct && !jr->equality) fill_joint_rows(w, is->joints[k], h, jr, &J, &num, &findex);
     }
     return jrows;
 }
@@ -705,6 +830,21 @@ void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *b
             continue;
         }
         joint_sides(&in, jr);
+        if (jr->equality) {
+            const int first = sys->next;
+            if (equality_block(w, j, &in, jr, sys)) {
+                if (j->feedback) {
+                    for (int i = 0; i < jr->m; i++) s->pos[i] = first + i;
+                    keep_feedback(a, j, jr, s->pos, sys);
+                }
+                continue;
+            }
+            // Not finite, not all unbounded or singular: the generic way.
+            dReal *J = rows_piece(a, (size_t)jr->m);
+            dReal *num = J + jr->m * DX_ROW_SKIP;
+            int *findex = (int *)(num + 4 * jr->m);
+            fill_joint_rows(w, j, h, jr, &J, &num, &findex);
+        }
         for (int i = 0; i < jr->m; i++) s->pos[i] = -1;
         qs_warm ws;
         const qs_input *jin = warm_lookup(j, jr, sys, &ws) ? &in_warm : &in;
