@@ -10,7 +10,8 @@
 //    joint's limit and motor rows coupled to it;
 //  - rows: every other row (contacts, limits, motors) on its own, in one
 //    array of rows that all look alike: two bodies (a one-body row's second
-//    body is a dummy whose numbers stay zero), bounds scaled by a lambda
+//    body is a dummy whose numbers are never read: zeros, or for a direct
+//    contact row not even written), bounds scaled by a lambda
 //    (a friction row's normal force, or a constant 1), so that the update
 //    has no branch that depends on the kind of row but one: a one-body row
 //    (a contact with the ground, most of them in a heap) skips its second
@@ -121,7 +122,7 @@ typedef struct qs_batch {
 // light bob). Coupled rows are updated right after their block.
 // The numbers of each body are together, the first body's right after the
 // scalars: a one-body row (most contacts: with the ground) reads only those,
-// skipping the second body's zeros (the same result: they add exact zeros).
+// never the second body's numbers (which would add exact zeros).
 typedef struct qs_row {
     dReal rhs, cfm;   // D * b_i, D * cfm_i / h
     dReal lo, hi;     // bounds, or friction coefficients (-mu, mu)
