@@ -60,6 +60,14 @@ static const dxHullEdge box_edges[12] = {
 static const uint64_t box_by_f1[6] = { 0x500, 0xa00, 0x5, 0xa, 0x50, 0xa0 };
 static const uint64_t box_by_f2[6] = { 0x30, 0xc0, 0x300, 0xc00, 0x3, 0xc };
 static const uint64_t box_nbr[6] = { 0x3d, 0x3e, 0x37, 0x3b, 0x1f, 0x2f };
+#define BOX_NO_EDGE 0x80, 0x80, 0x80, 0x80
+static const uint8_t box_edge_faces[2][32] = {
+    { 2, 3, 2, 3, 4, 5, 4, 5, 0, 1, 0, 1, BOX_NO_EDGE, BOX_NO_EDGE, BOX_NO_EDGE, BOX_NO_EDGE,
+      BOX_NO_EDGE },
+    { 4, 4, 5, 5, 0, 0, 1, 1, 2, 2, 3, 3, BOX_NO_EDGE, BOX_NO_EDGE, BOX_NO_EDGE, BOX_NO_EDGE,
+      BOX_NO_EDGE },
+};
+#undef BOX_NO_EDGE
 
 // A box as a hull in bx: corners by bits (x, y, z), faces -x +x -y +y -z +z.
 static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
@@ -77,6 +85,7 @@ static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
     h->by_f2 = box_by_f2;
     h->lone = 0;
     h->nbr = box_nbr;
+    h->edge_faces = box_edge_faces;
     h->pts = bx->pts;
     h->planes = bx->planes;
     h->polys = box_polys;

@@ -863,6 +863,52 @@ static inline unsigned up_to_four(unsigned n)
     return (n + 3) & ~3u;
 }
 
+#ifdef DX_SIGNS_AVX2
+// The edges of h whose first face is in the set faces (of h's faces: as
+// the union of by_f1 over them) into *first, and whose second face is
+// into *second, from h->edge_faces: a byte per face (all set if the face
+// is in the set) looked up by each edge's face index, thirty-two edges at
+// once (an index of 0x80 past the edges looks up zero).
+__attribute__((target("avx2"))) static inline void edges_of_faces(const dx_hull *h,
+                                                                  uint64_t faces,
+                                                                  uint64_t *first,
+                                                                  uint64_t *second)
+{
+    const __m128i pick = _mm_setr_epi8(0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1);
+    const __m128i bit = _mm_setr_epi8(1, 2, 4, 8, 16, 32, 64, -128, 1, 2, 4, 8, 16, 32, 64, -128);
+    __m128i spread = _mm_shuffle_epi8(_mm_cvtsi32_si128((int)faces), pick);
+    __m256i in = _mm256_broadcastsi128_si256(_mm_cmpeq_epi8(_mm_and_si128(spread, bit), bit));
+    const __m256i *row = (const __m256i *)h->edge_faces;
+    *first = (uint32_t)_mm256_movemask_epi8(_mm256_shuffle_epi8(in, _mm256_loadu_si256(row)));
+    *second = (uint32_t)_mm256_movemask_epi8(_mm256_shuffle_epi8(in, _mm256_loadu_si256(row + 1)));
+}
+#endif
+
+// The edges of b whose first face is in the set faces, and whose second
+// face is, into *first and *second (by_f1 and by_f2 over the set's faces);
+// with AVX2 (avx2 1) by edges_of_faces where b has its edges' faces as
+// bytes.
+static inline __attribute__((always_inline)) void
+edge_sets(const dx_hull *b, uint64_t faces, uint64_t *first, uint64_t *second, int avx2)
+{
+#ifdef DX_SIGNS_AVX2
+    if (avx2 && b->edge_faces) {
+        edges_of_faces(b, faces, first, second);
+        return;
+    }
+#else
+    (void)avx2;
+#endif
+    uint64_t f1 = 0, f2 = 0;
+    for (; faces; faces &= faces - 1) {
+        unsigned f = (unsigned)__builtin_ctzll(faces);
+        f1 |= b->by_f1[f];
+        f2 |= b->by_f2[f];
+    }
+    *first = f1;
+    *second = f2;
+}
+
 static inline __attribute__((always_inline)) int
 masked_edge_pairs_with(const dx_hull *a, const dx_hull *b, edge_search *es, const double *gap_a,
                        const double *gap_b, int avx2)
@@ -900,25 +946,17 @@ masked_edge_pairs_with(const dx_hull *a, const dx_hull *b, edge_search *es, cons
         if (!(near_a >> i & 1)) {
             cand = lone;
         } else if (ea->f1 != ea->f2) {
-            uint64_t first_pos = 0, first_neg = 0, second_pos = 0, second_neg = 0, pos, neg;
+            uint64_t first_pos, first_neg, second_pos, second_neg, pos, neg;
             double circle[3];
             edge_circle(a, i, circle);
             dot_signs_padded(circle, b->nx, b->ny, b->nz, up_to_four(b->nplanes), &pos, &neg,
                              avx2);
-            int signed_all = (pos | neg) == b_planes;
-            for (; pos; pos &= pos - 1) {
-                unsigned f = (unsigned)__builtin_ctzll(pos);
-                first_pos |= first[f];
-                second_pos |= second[f];
-            }
-            if (signed_all) {   // each edge has one first and one second face
+            edge_sets(b, pos, &first_pos, &second_pos, avx2);
+            if ((pos | neg) == b_planes) {   // each edge has one first and one second face
                 first_neg = all & ~first_pos;
                 second_neg = all & ~second_pos;
-            }
-            for (; !signed_all && neg; neg &= neg - 1) {
-                unsigned f = (unsigned)__builtin_ctzll(neg);
-                first_neg |= first[f];
-                second_neg |= second[f];
+            } else {
+                edge_sets(b, neg, &first_neg, &second_neg, avx2);
             }
             uint64_t s = (first_pos & second_neg) | (first_neg & second_pos);
             uint64_t u = (above[ea->f1] & below[ea->f2]) | (below[ea->f1] & above[ea->f2]);
