@@ -833,6 +833,111 @@ static inline int edge_candidate(const dx_hull *a, unsigned i, const dx_hull *b,
     return 1;
 }
 
+#ifdef DX_SIGNS_AVX2
+// The edge pairs gathered for edge_candidate, in its order, screened four
+// at a time first (screen_pairs).
+enum { PAIR_BATCH = 64 };
+typedef struct pair_batch {
+    int32_t i[PAIR_BATCH + 3], j[PAIR_BATCH + 3];   // room for a four's padding
+    unsigned n;
+} pair_batch;
+
+// Which of the batch's pairs (a's edges pb->i[k], b's edges pb->j[k], k <
+// pb->n, the last four padded) edge_candidate would leave alone (bit k):
+// no pair kept, no exact test, as it finds them with the threshold
+// es->thr or any lower one (the threshold only falls): parallel edges, or
+// a depth clearly positive and clearly above the threshold that may_clear
+// does not keep. Four pairs at a time, with the same products, sums and
+// comparisons as edge_candidate's (no fused multiply-add: the same
+// numbers; a NaN compares false there as here). Lone edges are not looked
+// at here (the caller keeps their pairs).
+__attribute__((target("avx2"))) static uint64_t screen_pairs(const dx_hull *a, const dx_hull *b,
+                                                             const pair_batch *pb,
+                                                             const edge_search *es)
+{
+    const double *xa = a->we[0].u, *xb = b->we[0].u;
+    const double *pa[3] = { a->px, a->py, a->pz }, *pb3[3] = { b->px, b->py, b->pz };
+    const __m256d zero = _mm256_setzero_pd(), sign = _mm256_set1_pd(-0.0);
+    const __m256d tiny = _mm256_set1_pd(1e-12), one = _mm256_set1_pd(1);
+    const __m256d eps = _mm256_set1_pd((double)DX_COLLIDE_EPS), thr = _mm256_set1_pd(es->thr);
+    const __m256d n0 = _mm256_set1_pd(es->face->n[0]), n1 = _mm256_set1_pd(es->face->n[1]);
+    const __m256d n2 = _mm256_set1_pd(es->face->n[2]);
+    const __m256d reach = _mm256_set1_pd(es->face->depth * (1 + 1e-9) + es->margin);
+    uint64_t alone = 0;
+    for (unsigned k = 0; k < pb->n; k += 4) {
+        __m128i ia = _mm_loadu_si128((const __m128i *)(pb->i + k));
+        __m128i jb = _mm_loadu_si128((const __m128i *)(pb->j + k));
+        __m128i wa = _mm_slli_epi32(ia, 3), wb = _mm_slli_epi32(jb, 3);   // eight doubles an edge
+        __m256d ua[3], ub[3], sa[3], d[3];
+        for (int q = 0; q < 3; q++) {
+            ua[q] = _mm256_i32gather_pd(xa + q, wa, 8);
+            ub[q] = _mm256_i32gather_pd(xb + q, wb, 8);
+            sa[q] = _mm256_i32gather_pd(xa + 3 + q, wa, 8);
+        }
+        __m256d uua = _mm256_i32gather_pd(xa + 6, wa, 8), ssa = _mm256_i32gather_pd(xa + 7, wa, 8);
+        __m256d uub = _mm256_i32gather_pd(xb + 6, wb, 8);
+        // Each edge's first point (its index a, the first of four per edge).
+        __m128i va = _mm_i32gather_epi32((const int *)a->edges, _mm_slli_epi32(ia, 2), 4);
+        __m128i vb = _mm_i32gather_epi32((const int *)b->edges, _mm_slli_epi32(jb, 2), 4);
+        for (int q = 0; q < 3; q++)
+            d[q] = _mm256_sub_pd(_mm256_i32gather_pd(pa[q], va, 8),
+                                 _mm256_i32gather_pd(pb3[q], vb, 8));
+        __m256d c0 = _mm256_sub_pd(_mm256_mul_pd(ua[1], ub[2]), _mm256_mul_pd(ua[2], ub[1]));
+        __m256d c1 = _mm256_sub_pd(_mm256_mul_pd(ua[2], ub[0]), _mm256_mul_pd(ua[0], ub[2]));
+        __m256d c2 = _mm256_sub_pd(_mm256_mul_pd(ua[0], ub[1]), _mm256_mul_pd(ua[1], ub[0]));
+#define DOT4(x0, x1, x2) \
+    _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(c0, x0), _mm256_mul_pd(c1, x1)), _mm256_mul_pd(c2, x2))
+        __m256d cc = DOT4(c0, c1, c2), facing = DOT4(sa[0], sa[1], sa[2]);
+        __m256d gap = DOT4(d[0], d[1], d[2]), cn = DOT4(n0, n1, n2);
+#undef DOT4
+        __m256d parallel = _mm256_cmp_pd(cc, _mm256_mul_pd(_mm256_mul_pd(eps, uua), uub), _CMP_LE_OQ);
+        __m256d faces_up = _mm256_cmp_pd(facing, zero, _CMP_GT_OQ);
+        __m256d depth = _mm256_blendv_pd(_mm256_xor_pd(gap, sign), gap, faces_up);
+        __m256d tiny_cc = _mm256_mul_pd(tiny, cc);
+        __m256d sure = _mm256_cmp_pd(_mm256_mul_pd(facing, facing), _mm256_mul_pd(tiny_cc, ssa),
+                                     _CMP_GT_OQ);
+        __m256d positive = _mm256_cmp_pd(depth, zero, _CMP_GT_OQ);
+        // may_clear keeps the pair unless cn's sign is clear and either
+        // faces the pair's way or leaves the depth beyond reach times |cn|.
+        __m256d cn_sure = _mm256_cmp_pd(_mm256_mul_pd(cn, cn), _mm256_mul_pd(tiny_cc, one),
+                                        _CMP_GT_OQ);
+        __m256d against = _mm256_xor_pd(faces_up, _mm256_cmp_pd(cn, zero, _CMP_GT_OQ));
+        __m256d within = _mm256_cmp_pd(depth, _mm256_mul_pd(reach, _mm256_andnot_pd(sign, cn)),
+                                       _CMP_LE_OQ);
+        __m256d cleared = _mm256_andnot_pd(_mm256_and_pd(against, within), cn_sure);
+        __m256d beyond = _mm256_cmp_pd(_mm256_mul_pd(depth, depth),
+                                       _mm256_mul_pd(_mm256_mul_pd(thr, thr), cc), _CMP_GT_OQ);
+        __m256d skipped = _mm256_and_pd(_mm256_and_pd(cleared, sure), _mm256_and_pd(positive, beyond));
+        alone |= (uint64_t)_mm256_movemask_pd(_mm256_or_pd(parallel, skipped)) << k;
+    }
+    return alone;
+}
+
+// edge_candidate for the batch's pairs in order, but for those the screen
+// leaves alone (that would do nothing there); 0 (the axis into es->sep) as
+// soon as one parts the hulls. Empties the batch.
+__attribute__((target("avx2"))) static int flush_pairs(const dx_hull *a, const dx_hull *b,
+                                                       pair_batch *pb, edge_search *es)
+{
+    unsigned n = pb->n;
+    for (unsigned k = n; k % 4; k++) {   // the last four padded with its first pair
+        pb->i[k] = pb->i[n & ~3u];
+        pb->j[k] = pb->j[n & ~3u];
+    }
+    uint64_t todo = ~screen_pairs(a, b, pb, es);
+    if (n < 64) todo &= ((uint64_t)1 << n) - 1;
+    if (a->lone || b->lone)
+        for (unsigned k = 0; k < n; k++)
+            todo |= (uint64_t)((a->lone >> pb->i[k] | b->lone >> pb->j[k]) & 1) << k;
+    pb->n = 0;
+    for (; todo; todo &= todo - 1) {
+        unsigned k = (unsigned)__builtin_ctzll(todo);
+        if (!edge_candidate(a, (unsigned)pb->i[k], b, (unsigned)pb->j[k], es)) return 0;
+    }
+    return 1;
+}
+#endif
+
 // The edge pairs of sat for hulls whose edges and faces fit 64-bit masks.
 // edge_axis's arc test asks, of a's edge i (faces f1, f2) and b's edge j
 // (faces g1, g2), for the signs of the products of each edge's circle
@@ -939,6 +1044,13 @@ masked_edge_pairs_with(const dx_hull *a, const dx_hull *b, edge_search *es, cons
     uint64_t visit = !lone ? near_a
                      : a->nedges == MASK_BITS ? ~(uint64_t)0
                                               : ((uint64_t)1 << a->nedges) - 1;
+#ifdef DX_SIGNS_AVX2
+    // With AVX2, hulls with their edges' faces as bytes (at most 32 edges)
+    // screen their pairs four at a time.
+    int screened = avx2 && a->edge_faces && b->edge_faces;
+    pair_batch batch;
+    batch.n = 0;
+#endif
     for (; visit; visit &= visit - 1) {
         unsigned i = (unsigned)__builtin_ctzll(visit);
         const dxHullEdge *ea = &a->edges[i];
@@ -963,11 +1075,24 @@ masked_edge_pairs_with(const dx_hull *a, const dx_hull *b, edge_search *es, cons
             uint64_t w = (first_neg & above[ea->f2]) | (first_pos & below[ea->f2]);
             cand = (s & u & w & near_b) | lone;
         }
+#ifdef DX_SIGNS_AVX2
+        if (screened) {
+            for (; cand; cand &= cand - 1) {
+                batch.i[batch.n] = (int32_t)i;
+                batch.j[batch.n++] = (int32_t)__builtin_ctzll(cand);
+                if (batch.n == PAIR_BATCH && !flush_pairs(a, b, &batch, es)) return 0;
+            }
+            continue;
+        }
+#endif
         for (; cand; cand &= cand - 1) {
             unsigned j = (unsigned)__builtin_ctzll(cand);
             if (!edge_candidate(a, i, b, j, es)) return 0;
         }
     }
+#ifdef DX_SIGNS_AVX2
+    if (screened && batch.n) return flush_pairs(a, b, &batch, es);
+#endif
     return 1;
 }
 
