@@ -2,10 +2,12 @@
 //
 // test_convex_edge_sets.c -- the hulls' edges by face as bytes (dx_hull's
 // edge_faces), which the separating axis test's AVX2 path looks up to turn
-// sets of faces into sets of edges. White-box: each hull's bytes say what
-// its by_f1 and by_f2 sets say, and a hull pair collided with the bytes
-// gives the same contacts, bit for bit, as with the bytes taken away (the
-// plain loop over the faces), over many random poses, both orders.
+// sets of faces into sets of edges, and with which it screens the edge
+// pairs four at a time. White-box: each hull's bytes say what its by_f1
+// and by_f2 sets say, and a hull pair collided with the bytes gives the
+// same contacts, bit for bit, as with the bytes taken away (the plain
+// loop over the faces, each pair screened alone), over many random poses,
+// both orders.
 
 #include "test.h"
 #include "collide_convex.h"

@@ -732,11 +732,10 @@ static dxHullAxisHint *find_hint(dx_hull *h, const void *other)
     return NULL;
 }
 
-// h's hint against the geom other, made if there is none (replacing the
-// oldest entry).
-static dxHullAxisHint *hint_entry(dx_hull *h, const void *other)
+// h's hint against the geom other: e (find_hint's answer), or made if
+// there is none (replacing the oldest entry).
+static dxHullAxisHint *hint_entry(dx_hull *h, dxHullAxisHint *e, const void *other)
 {
-    dxHullAxisHint *e = find_hint(h, other);
     if (!e) {
         e = &h->convex->hints[h->convex->next_hint];
         h->convex->next_hint = (h->convex->next_hint + 1) % DX_CONVEX_AXIS_CACHE;
@@ -745,21 +744,22 @@ static dxHullAxisHint *hint_entry(dx_hull *h, const void *other)
     return e;
 }
 
-// Keeps the separating axis n (world) as h's hint against the geom other.
-static void keep_axis(dx_hull *h, const void *other, const double n[3])
+// Keeps the separating axis n (world) as h's hint against the geom other
+// (found: its entry, or NULL).
+static void keep_axis(dx_hull *h, dxHullAxisHint *found, const void *other, const double n[3])
 {
-    dxHullAxisHint *e = hint_entry(h, other);
+    dxHullAxisHint *e = hint_entry(h, found, other);
     e->touching = 0;
     for (int k = 0; k < 3; k++)
         e->axis[k] = h->R[k] * n[0] + h->R[3 + k] * n[1] + h->R[6 + k] * n[2];
 }
 
 // Keeps the contact's face and the bounding points (side 0, own_point:
-// h's own) as h's hint against other.
-static void keep_face(dx_hull *h, const void *other, int side, unsigned face,
-                      unsigned own_point, unsigned other_point)
+// h's own) as h's hint against other (found: its entry, or NULL).
+static void keep_face(dx_hull *h, dxHullAxisHint *found, const void *other, int side,
+                      unsigned face, unsigned own_point, unsigned other_point)
 {
-    dxHullAxisHint *e = hint_entry(h, other);
+    dxHullAxisHint *e = hint_entry(h, found, other);
     e->touching = 1;
     e->side = side;
     e->face = face;
@@ -781,8 +781,8 @@ int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
     dx_hull *holder = a->convex ? a : b->convex ? b : NULL;
     const void *other = holder == a ? (const void *)o2 : (const void *)o1;
     sat_hint hint = { -1, 0, 0, 0 };
+    dxHullAxisHint *e = holder ? find_hint(holder, other) : NULL;
     if (holder) {
-        const dxHullAxisHint *e = find_hint(holder, other);
         if (e && e->touching) {
             hint.side = holder == a ? e->side : 1 - e->side;
             hint.face = e->face;
@@ -800,13 +800,13 @@ int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
     edge_axes found;
     double sep[3];
     if (!dx_hull_sat(a, b, &hint, &face, &edge, &found, sep)) {
-        if (holder) keep_axis(holder, other, sep);
+        if (holder) keep_axis(holder, e, other, sep);
         return 0;
     }
     if (holder) {
         int own = holder == a;
-        keep_face(holder, other, own ? face.ref : 1 - face.ref, face.face, own ? hint.qa : hint.qb,
-                  own ? hint.qb : hint.qa);
+        keep_face(holder, e, other, own ? face.ref : 1 - face.ref, face.face,
+                  own ? hint.qa : hint.qb, own ? hint.qb : hint.qa);
     }
     int max = dx_max_contacts(flags);
     if (edge.depth * DX_HULL_EDGE_PREFERENCE < face.depth) {
