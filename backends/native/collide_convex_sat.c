@@ -420,6 +420,8 @@ static inline __attribute__((always_inline)) void dot_signs_padded(const double 
         dot_signs4(c, x, y, z, n, pos, neg);
         return;
     }
+#else
+    (void)avx2;
 #endif
     dot_signs(c, x, y, z, n, pos, neg, 0);
 }
