@@ -368,6 +368,12 @@ static void convex_edge_sets(dxConvex *c, uint64_t *masks)
         c->nbr[e->f2] |= (uint64_t)1 << e->f1;
         if (e->f1 == e->f2) c->lone |= bit;
     }
+    memset(c->edge_faces, 0x80, sizeof c->edge_faces);
+    if (c->edgecount > 32 || c->planecount > 16) return;
+    for (unsigned k = 0; k < c->edgecount; k++) {
+        c->edge_faces[0][k] = (uint8_t)c->edges[k].f1;
+        c->edge_faces[1][k] = (uint8_t)c->edges[k].f2;
+    }
 }
 
 // Each point's edges, in the edge list's order (c->vert_start, vert_edges).
@@ -414,6 +420,9 @@ static void convex_view(dxConvex *c)
     h->by_f2 = c->by_f2;
     h->lone = c->lone;
     h->nbr = c->nbr;
+    h->edge_faces = c->by_f1 && c->edgecount <= 32 && c->planecount <= 16
+                        ? (const uint8_t (*)[32])c->edge_faces
+                        : NULL;
     h->px = pose->px;
     h->py = pose->py;
     h->pz = pose->pz;

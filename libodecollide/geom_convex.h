@@ -96,6 +96,10 @@ typedef struct dx_hull {
     const uint64_t *by_f1, *by_f2;
     uint64_t lone;
     const uint64_t *nbr;      // per plane: it and the planes it shares an edge with
+    // Each edge's first face (row 0) and second face (row 1) as bytes, 0x80
+    // past the edges (NULL beyond 32 edges or 16 planes): by_f1 and by_f2
+    // the other way round, for turning sets of faces into sets of edges.
+    const uint8_t (*edge_faces)[32];
     // The points, normals and edges' n2 x n1 by coordinate (dxHullPose; the
     // normals and edges zero past their count up to a multiple of four).
     const double *px, *py, *pz, *nx, *ny, *nz;
@@ -119,6 +123,7 @@ typedef struct dxConvex {
     uint64_t *by_f1, *by_f2;
     uint64_t lone;
     uint64_t *nbr;                // per plane: it and the planes it shares an edge with
+    uint8_t edge_faces[2][32];    // dx_hull's, if the hull has at most 32 edges, 16 planes
     double size;                  // the largest distance of a point from the frame's origin
     double *plane_len;            // per plane: the length of its normal as given ...
     double *plane_dev;            // ... and how far below it its polygon's points reach

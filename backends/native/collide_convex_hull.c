@@ -60,6 +60,14 @@ static const dxHullEdge box_edges[12] = {
 static const uint64_t box_by_f1[6] = { 0x500, 0xa00, 0x5, 0xa, 0x50, 0xa0 };
 static const uint64_t box_by_f2[6] = { 0x30, 0xc0, 0x300, 0xc00, 0x3, 0xc };
 static const uint64_t box_nbr[6] = { 0x3d, 0x3e, 0x37, 0x3b, 0x1f, 0x2f };
+#define BOX_NO_EDGE 0x80, 0x80, 0x80, 0x80
+static const uint8_t box_edge_faces[2][32] = {
+    { 2, 3, 2, 3, 4, 5, 4, 5, 0, 1, 0, 1, BOX_NO_EDGE, BOX_NO_EDGE, BOX_NO_EDGE, BOX_NO_EDGE,
+      BOX_NO_EDGE },
+    { 4, 4, 5, 5, 0, 0, 1, 1, 2, 2, 3, 3, BOX_NO_EDGE, BOX_NO_EDGE, BOX_NO_EDGE, BOX_NO_EDGE,
+      BOX_NO_EDGE },
+};
+#undef BOX_NO_EDGE
 
 // A box as a hull in bx: corners by bits (x, y, z), faces -x +x -y +y -z +z.
 static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
@@ -77,6 +85,7 @@ static void box_hull(dx_hull *h, const dxBox *box, dx_hull_box *bx)
     h->by_f2 = box_by_f2;
     h->lone = 0;
     h->nbr = box_nbr;
+    h->edge_faces = box_edge_faces;
     h->pts = bx->pts;
     h->planes = bx->planes;
     h->polys = box_polys;
@@ -723,11 +732,10 @@ static dxHullAxisHint *find_hint(dx_hull *h, const void *other)
     return NULL;
 }
 
-// h's hint against the geom other, made if there is none (replacing the
-// oldest entry).
-static dxHullAxisHint *hint_entry(dx_hull *h, const void *other)
+// h's hint against the geom other: e (find_hint's answer), or made if
+// there is none (replacing the oldest entry).
+static dxHullAxisHint *hint_entry(dx_hull *h, dxHullAxisHint *e, const void *other)
 {
-    dxHullAxisHint *e = find_hint(h, other);
     if (!e) {
         e = &h->convex->hints[h->convex->next_hint];
         h->convex->next_hint = (h->convex->next_hint + 1) % DX_CONVEX_AXIS_CACHE;
@@ -736,21 +744,22 @@ static dxHullAxisHint *hint_entry(dx_hull *h, const void *other)
     return e;
 }
 
-// Keeps the separating axis n (world) as h's hint against the geom other.
-static void keep_axis(dx_hull *h, const void *other, const double n[3])
+// Keeps the separating axis n (world) as h's hint against the geom other
+// (found: its entry, or NULL).
+static void keep_axis(dx_hull *h, dxHullAxisHint *found, const void *other, const double n[3])
 {
-    dxHullAxisHint *e = hint_entry(h, other);
+    dxHullAxisHint *e = hint_entry(h, found, other);
     e->touching = 0;
     for (int k = 0; k < 3; k++)
         e->axis[k] = h->R[k] * n[0] + h->R[3 + k] * n[1] + h->R[6 + k] * n[2];
 }
 
 // Keeps the contact's face and the bounding points (side 0, own_point:
-// h's own) as h's hint against other.
-static void keep_face(dx_hull *h, const void *other, int side, unsigned face,
-                      unsigned own_point, unsigned other_point)
+// h's own) as h's hint against other (found: its entry, or NULL).
+static void keep_face(dx_hull *h, dxHullAxisHint *found, const void *other, int side,
+                      unsigned face, unsigned own_point, unsigned other_point)
 {
-    dxHullAxisHint *e = hint_entry(h, other);
+    dxHullAxisHint *e = hint_entry(h, found, other);
     e->touching = 1;
     e->side = side;
     e->face = face;
@@ -772,8 +781,8 @@ int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
     dx_hull *holder = a->convex ? a : b->convex ? b : NULL;
     const void *other = holder == a ? (const void *)o2 : (const void *)o1;
     sat_hint hint = { -1, 0, 0, 0 };
+    dxHullAxisHint *e = holder ? find_hint(holder, other) : NULL;
     if (holder) {
-        const dxHullAxisHint *e = find_hint(holder, other);
         if (e && e->touching) {
             hint.side = holder == a ? e->side : 1 - e->side;
             hint.face = e->face;
@@ -791,13 +800,13 @@ int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
     edge_axes found;
     double sep[3];
     if (!dx_hull_sat(a, b, &hint, &face, &edge, &found, sep)) {
-        if (holder) keep_axis(holder, other, sep);
+        if (holder) keep_axis(holder, e, other, sep);
         return 0;
     }
     if (holder) {
         int own = holder == a;
-        keep_face(holder, other, own ? face.ref : 1 - face.ref, face.face, own ? hint.qa : hint.qb,
-                  own ? hint.qb : hint.qa);
+        keep_face(holder, e, other, own ? face.ref : 1 - face.ref, face.face,
+                  own ? hint.qa : hint.qb, own ? hint.qb : hint.qa);
     }
     int max = dx_max_contacts(flags);
     if (edge.depth * DX_HULL_EDGE_PREFERENCE < face.depth) {

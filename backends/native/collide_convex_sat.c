@@ -420,6 +420,8 @@ static inline __attribute__((always_inline)) void dot_signs_padded(const double 
         dot_signs4(c, x, y, z, n, pos, neg);
         return;
     }
+#else
+    (void)avx2;
 #endif
     dot_signs(c, x, y, z, n, pos, neg, 0);
 }
@@ -833,6 +835,111 @@ static inline int edge_candidate(const dx_hull *a, unsigned i, const dx_hull *b,
     return 1;
 }
 
+#ifdef DX_SIGNS_AVX2
+// The edge pairs gathered for edge_candidate, in its order, screened four
+// at a time first (screen_pairs).
+enum { PAIR_BATCH = 64 };
+typedef struct pair_batch {
+    int32_t i[PAIR_BATCH + 3], j[PAIR_BATCH + 3];   // room for a four's padding
+    unsigned n;
+} pair_batch;
+
+// Which of the batch's pairs (a's edges pb->i[k], b's edges pb->j[k], k <
+// pb->n, the last four padded) edge_candidate would leave alone (bit k):
+// no pair kept, no exact test, as it finds them with the threshold
+// es->thr or any lower one (the threshold only falls): parallel edges, or
+// a depth clearly positive and clearly above the threshold that may_clear
+// does not keep. Four pairs at a time, with the same products, sums and
+// comparisons as edge_candidate's (no fused multiply-add: the same
+// numbers; a NaN compares false there as here). Lone edges are not looked
+// at here (the caller keeps their pairs).
+__attribute__((target("avx2"))) static uint64_t screen_pairs(const dx_hull *a, const dx_hull *b,
+                                                             const pair_batch *pb,
+                                                             const edge_search *es)
+{
+    const double *xa = a->we[0].u, *xb = b->we[0].u;
+    const double *pa[3] = { a->px, a->py, a->pz }, *pb3[3] = { b->px, b->py, b->pz };
+    const __m256d zero = _mm256_setzero_pd(), sign = _mm256_set1_pd(-0.0);
+    const __m256d tiny = _mm256_set1_pd(1e-12), one = _mm256_set1_pd(1);
+    const __m256d eps = _mm256_set1_pd((double)DX_COLLIDE_EPS), thr = _mm256_set1_pd(es->thr);
+    const __m256d n0 = _mm256_set1_pd(es->face->n[0]), n1 = _mm256_set1_pd(es->face->n[1]);
+    const __m256d n2 = _mm256_set1_pd(es->face->n[2]);
+    const __m256d reach = _mm256_set1_pd(es->face->depth * (1 + 1e-9) + es->margin);
+    uint64_t alone = 0;
+    for (unsigned k = 0; k < pb->n; k += 4) {
+        __m128i ia = _mm_loadu_si128((const __m128i *)(pb->i + k));
+        __m128i jb = _mm_loadu_si128((const __m128i *)(pb->j + k));
+        __m128i wa = _mm_slli_epi32(ia, 3), wb = _mm_slli_epi32(jb, 3);   // eight doubles an edge
+        __m256d ua[3], ub[3], sa[3], d[3];
+        for (int q = 0; q < 3; q++) {
+            ua[q] = _mm256_i32gather_pd(xa + q, wa, 8);
+            ub[q] = _mm256_i32gather_pd(xb + q, wb, 8);
+            sa[q] = _mm256_i32gather_pd(xa + 3 + q, wa, 8);
+        }
+        __m256d uua = _mm256_i32gather_pd(xa + 6, wa, 8), ssa = _mm256_i32gather_pd(xa + 7, wa, 8);
+        __m256d uub = _mm256_i32gather_pd(xb + 6, wb, 8);
+        // Each edge's first point (its index a, the first of four per edge).
+        __m128i va = _mm_i32gather_epi32((const int *)a->edges, _mm_slli_epi32(ia, 2), 4);
+        __m128i vb = _mm_i32gather_epi32((const int *)b->edges, _mm_slli_epi32(jb, 2), 4);
+        for (int q = 0; q < 3; q++)
+            d[q] = _mm256_sub_pd(_mm256_i32gather_pd(pa[q], va, 8),
+                                 _mm256_i32gather_pd(pb3[q], vb, 8));
+        __m256d c0 = _mm256_sub_pd(_mm256_mul_pd(ua[1], ub[2]), _mm256_mul_pd(ua[2], ub[1]));
+        __m256d c1 = _mm256_sub_pd(_mm256_mul_pd(ua[2], ub[0]), _mm256_mul_pd(ua[0], ub[2]));
+        __m256d c2 = _mm256_sub_pd(_mm256_mul_pd(ua[0], ub[1]), _mm256_mul_pd(ua[1], ub[0]));
+#define DOT4(x0, x1, x2) \
+    _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(c0, x0), _mm256_mul_pd(c1, x1)), _mm256_mul_pd(c2, x2))
+        __m256d cc = DOT4(c0, c1, c2), facing = DOT4(sa[0], sa[1], sa[2]);
+        __m256d gap = DOT4(d[0], d[1], d[2]), cn = DOT4(n0, n1, n2);
+#undef DOT4
+        __m256d parallel = _mm256_cmp_pd(cc, _mm256_mul_pd(_mm256_mul_pd(eps, uua), uub), _CMP_LE_OQ);
+        __m256d faces_up = _mm256_cmp_pd(facing, zero, _CMP_GT_OQ);
+        __m256d depth = _mm256_blendv_pd(_mm256_xor_pd(gap, sign), gap, faces_up);
+        __m256d tiny_cc = _mm256_mul_pd(tiny, cc);
+        __m256d sure = _mm256_cmp_pd(_mm256_mul_pd(facing, facing), _mm256_mul_pd(tiny_cc, ssa),
+                                     _CMP_GT_OQ);
+        __m256d positive = _mm256_cmp_pd(depth, zero, _CMP_GT_OQ);
+        // may_clear keeps the pair unless cn's sign is clear and either
+        // faces the pair's way or leaves the depth beyond reach times |cn|.
+        __m256d cn_sure = _mm256_cmp_pd(_mm256_mul_pd(cn, cn), _mm256_mul_pd(tiny_cc, one),
+                                        _CMP_GT_OQ);
+        __m256d against = _mm256_xor_pd(faces_up, _mm256_cmp_pd(cn, zero, _CMP_GT_OQ));
+        __m256d within = _mm256_cmp_pd(depth, _mm256_mul_pd(reach, _mm256_andnot_pd(sign, cn)),
+                                       _CMP_LE_OQ);
+        __m256d cleared = _mm256_andnot_pd(_mm256_and_pd(against, within), cn_sure);
+        __m256d beyond = _mm256_cmp_pd(_mm256_mul_pd(depth, depth),
+                                       _mm256_mul_pd(_mm256_mul_pd(thr, thr), cc), _CMP_GT_OQ);
+        __m256d skipped = _mm256_and_pd(_mm256_and_pd(cleared, sure), _mm256_and_pd(positive, beyond));
+        alone |= (uint64_t)_mm256_movemask_pd(_mm256_or_pd(parallel, skipped)) << k;
+    }
+    return alone;
+}
+
+// edge_candidate for the batch's pairs in order, but for those the screen
+// leaves alone (that would do nothing there); 0 (the axis into es->sep) as
+// soon as one parts the hulls. Empties the batch.
+__attribute__((target("avx2"))) static int flush_pairs(const dx_hull *a, const dx_hull *b,
+                                                       pair_batch *pb, edge_search *es)
+{
+    unsigned n = pb->n;
+    for (unsigned k = n; k % 4; k++) {   // the last four padded with its first pair
+        pb->i[k] = pb->i[n & ~3u];
+        pb->j[k] = pb->j[n & ~3u];
+    }
+    uint64_t todo = ~screen_pairs(a, b, pb, es);
+    if (n < 64) todo &= ((uint64_t)1 << n) - 1;
+    if (a->lone || b->lone)
+        for (unsigned k = 0; k < n; k++)
+            todo |= (uint64_t)((a->lone >> pb->i[k] | b->lone >> pb->j[k]) & 1) << k;
+    pb->n = 0;
+    for (; todo; todo &= todo - 1) {
+        unsigned k = (unsigned)__builtin_ctzll(todo);
+        if (!edge_candidate(a, (unsigned)pb->i[k], b, (unsigned)pb->j[k], es)) return 0;
+    }
+    return 1;
+}
+#endif
+
 // The edge pairs of sat for hulls whose edges and faces fit 64-bit masks.
 // edge_axis's arc test asks, of a's edge i (faces f1, f2) and b's edge j
 // (faces g1, g2), for the signs of the products of each edge's circle
@@ -861,6 +968,52 @@ enum { MASK_BITS = 64 };
 static inline unsigned up_to_four(unsigned n)
 {
     return (n + 3) & ~3u;
+}
+
+#ifdef DX_SIGNS_AVX2
+// The edges of h whose first face is in the set faces (of h's faces: as
+// the union of by_f1 over them) into *first, and whose second face is
+// into *second, from h->edge_faces: a byte per face (all set if the face
+// is in the set) looked up by each edge's face index, thirty-two edges at
+// once (an index of 0x80 past the edges looks up zero).
+__attribute__((target("avx2"))) static inline void edges_of_faces(const dx_hull *h,
+                                                                  uint64_t faces,
+                                                                  uint64_t *first,
+                                                                  uint64_t *second)
+{
+    const __m128i pick = _mm_setr_epi8(0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1);
+    const __m128i bit = _mm_setr_epi8(1, 2, 4, 8, 16, 32, 64, -128, 1, 2, 4, 8, 16, 32, 64, -128);
+    __m128i spread = _mm_shuffle_epi8(_mm_cvtsi32_si128((int)faces), pick);
+    __m256i in = _mm256_broadcastsi128_si256(_mm_cmpeq_epi8(_mm_and_si128(spread, bit), bit));
+    const __m256i *row = (const __m256i *)h->edge_faces;
+    *first = (uint32_t)_mm256_movemask_epi8(_mm256_shuffle_epi8(in, _mm256_loadu_si256(row)));
+    *second = (uint32_t)_mm256_movemask_epi8(_mm256_shuffle_epi8(in, _mm256_loadu_si256(row + 1)));
+}
+#endif
+
+// The edges of b whose first face is in the set faces, and whose second
+// face is, into *first and *second (by_f1 and by_f2 over the set's faces);
+// with AVX2 (avx2 1) by edges_of_faces where b has its edges' faces as
+// bytes.
+static inline __attribute__((always_inline)) void
+edge_sets(const dx_hull *b, uint64_t faces, uint64_t *first, uint64_t *second, int avx2)
+{
+#ifdef DX_SIGNS_AVX2
+    if (avx2 && b->edge_faces) {
+        edges_of_faces(b, faces, first, second);
+        return;
+    }
+#else
+    (void)avx2;
+#endif
+    uint64_t f1 = 0, f2 = 0;
+    for (; faces; faces &= faces - 1) {
+        unsigned f = (unsigned)__builtin_ctzll(faces);
+        f1 |= b->by_f1[f];
+        f2 |= b->by_f2[f];
+    }
+    *first = f1;
+    *second = f2;
 }
 
 static inline __attribute__((always_inline)) int
@@ -893,6 +1046,13 @@ masked_edge_pairs_with(const dx_hull *a, const dx_hull *b, edge_search *es, cons
     uint64_t visit = !lone ? near_a
                      : a->nedges == MASK_BITS ? ~(uint64_t)0
                                               : ((uint64_t)1 << a->nedges) - 1;
+#ifdef DX_SIGNS_AVX2
+    // With AVX2, hulls with their edges' faces as bytes (at most 32 edges)
+    // screen their pairs four at a time.
+    int screened = avx2 && a->edge_faces && b->edge_faces;
+    pair_batch batch;
+    batch.n = 0;
+#endif
     for (; visit; visit &= visit - 1) {
         unsigned i = (unsigned)__builtin_ctzll(visit);
         const dxHullEdge *ea = &a->edges[i];
@@ -900,36 +1060,41 @@ masked_edge_pairs_with(const dx_hull *a, const dx_hull *b, edge_search *es, cons
         if (!(near_a >> i & 1)) {
             cand = lone;
         } else if (ea->f1 != ea->f2) {
-            uint64_t first_pos = 0, first_neg = 0, second_pos = 0, second_neg = 0, pos, neg;
+            uint64_t first_pos, first_neg, second_pos, second_neg, pos, neg;
             double circle[3];
             edge_circle(a, i, circle);
             dot_signs_padded(circle, b->nx, b->ny, b->nz, up_to_four(b->nplanes), &pos, &neg,
                              avx2);
-            int signed_all = (pos | neg) == b_planes;
-            for (; pos; pos &= pos - 1) {
-                unsigned f = (unsigned)__builtin_ctzll(pos);
-                first_pos |= first[f];
-                second_pos |= second[f];
-            }
-            if (signed_all) {   // each edge has one first and one second face
+            edge_sets(b, pos, &first_pos, &second_pos, avx2);
+            if ((pos | neg) == b_planes) {   // each edge has one first and one second face
                 first_neg = all & ~first_pos;
                 second_neg = all & ~second_pos;
-            }
-            for (; !signed_all && neg; neg &= neg - 1) {
-                unsigned f = (unsigned)__builtin_ctzll(neg);
-                first_neg |= first[f];
-                second_neg |= second[f];
+            } else {
+                edge_sets(b, neg, &first_neg, &second_neg, avx2);
             }
             uint64_t s = (first_pos & second_neg) | (first_neg & second_pos);
             uint64_t u = (above[ea->f1] & below[ea->f2]) | (below[ea->f1] & above[ea->f2]);
             uint64_t w = (first_neg & above[ea->f2]) | (first_pos & below[ea->f2]);
             cand = (s & u & w & near_b) | lone;
         }
+#ifdef DX_SIGNS_AVX2
+        if (screened) {
+            for (; cand; cand &= cand - 1) {
+                batch.i[batch.n] = (int32_t)i;
+                batch.j[batch.n++] = (int32_t)__builtin_ctzll(cand);
+                if (batch.n == PAIR_BATCH && !flush_pairs(a, b, &batch, es)) return 0;
+            }
+            continue;
+        }
+#endif
         for (; cand; cand &= cand - 1) {
             unsigned j = (unsigned)__builtin_ctzll(cand);
             if (!edge_candidate(a, i, b, j, es)) return 0;
         }
     }
+#ifdef DX_SIGNS_AVX2
+    if (screened && batch.n) return flush_pairs(a, b, &batch, es);
+#endif
     return 1;
 }
 
