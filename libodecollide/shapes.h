@@ -13,22 +13,9 @@ typedef struct dxSphere {
     dReal radius;
 } dxSphere;
 
-// A separating axis found against another box (collide_box.c), numbered as
-// the box-box test numbers its 15 axes with this box first: tried first the
-// next time the pair meets, so a pair that stays apart is rejected by one
-// axis. Only a hint: `other` is never dereferenced (it may be destroyed and
-// its address reused), and an axis that no longer separates is not used.
-enum { DX_BOX_AXIS_CACHE = 4 };
-typedef struct dxBoxAxisHint {
-    const void *other;
-    int axis;
-} dxBoxAxisHint;
-
 typedef struct dxBox {
     dxGeom g;
     dVector3 side;                // full side lengths
-    dxBoxAxisHint hints[DX_BOX_AXIS_CACHE];
-    unsigned next_hint;           // the entry replaced next
 } dxBox;
 
 typedef struct dxCapsule {        // along local z; length excludes the caps

@@ -243,8 +243,68 @@ static int test_contact_numbers_follow_the_rule(void)
     return 0;
 }
 
+// A usual contact's unit normal and friction directions are made from its
+// own normal as given, whatever contacts came before it in the world
+// (dJointCreateContact copies them from the world's last usual contact whose
+// normal has the same bits): normals equal as numbers but not as bits (-0
+// against 0, which gives t1 a zero of the other sign), the same direction
+// scaled, the same numbers after an unusable normal and after another
+// world's contacts, all equal bit for bit to dSafeNormalize3 and dPlaneSpace
+// of the contact's normal; an unusable normal after a usable one with the
+// same bits in its other numbers makes no directions.
+static int test_contact_directions_are_their_normals(void)
+{
+    test_capture_reports();
+    static const dReal normals[][3] = {
+        { 0, 0, 1 }, { 0, 0, 1 }, { 0, -0.0, 1 }, { 0, -0.0, 1 }, { 0, 0, 1 }, { 0, 0, 2 },
+        { 0, 0, 0 }, { 0, 0, 2 }, { -0.0, 1, 0 }, { 0, 1, 0 }, { 0.3, 0, 1 }, { 0.3, 0, 1 },
+        { NAN, 0, 1 }, { 0.3, 0, 1 }, { 1, -0.5, 0.2 }, { 1, -0.5, 0.2 },
+    };
+    dWorldID w[2] = { dWorldCreate(), dWorldCreate() };
+    dBodyID a[2] = { dBodyCreate(w[0]), dBodyCreate(w[1]) };
+    const int count = (int)(sizeof normals / sizeof normals[0]);
+    int checked = 0;
+    for (int k = 0; k < 2 * count; k++) {
+        const int q = k % count, in = k < count ? 0 : (k & 1);   // then the worlds by turns
+        dContact ct;
+        memset(&ct, 0, sizeof ct);
+        ct.geom.pos[0] = 0.1;
+        ct.geom.depth = 0.02;
+        ct.surface.mode = (k & 2) ? dContactApprox1 : 0;
+        ct.surface.mu = 0.7;
+        for (int i = 0; i < 3; i++) ct.geom.normal[i] = normals[q][i];
+        dxJoint *j = (dxJoint *)dJointCreateContact(w[in], 0, &ct);
+        dJointAttach((dJointID)j, a[in], 0);
+        const int usable = !isnan(normals[q][0]) && normals[q][2] + normals[q][1] != 0;
+        CHECK(j->rows.m == (usable ? 3 : 0));
+        if (usable) {
+            dVector3 n = { normals[q][0], normals[q][1], normals[q][2], 0 }, t1, t2;
+            dSafeNormalize3(n);
+            dPlaneSpace(n, t1, t2);
+            const dxContactRows r = *dxJointContactRows(j, 100, 0.2);
+            CHECK(memcmp(r.n, n, 3 * sizeof(dReal)) == 0);
+            CHECK(memcmp(r.t1, t1, 3 * sizeof(dReal)) == 0);
+            CHECK(memcmp(r.t2, t2, 3 * sizeof(dReal)) == 0);
+            CHECK(r.n[3] == 0 && r.t1[3] == 0 && r.t2[3] == 0);
+            checked++;
+        }
+        dJointDestroy((dJointID)j);
+    }
+    CHECK(checked == 2 * (count - 2));
+    CHECK(test_captured_count() == 4);   // the zero and the NaN normal, each twice
+    // The zeros' signs do reach t1: the case above is not vacuous.
+    dVector3 p = { 0, 0, 1, 0 }, m = { 0, -0.0, 1, 0 }, t1p, t2p, t1m, t2m;
+    dPlaneSpace(p, t1p, t2p);
+    dPlaneSpace(m, t1m, t2m);
+    CHECK(memcmp(t1p, t1m, 3 * sizeof(dReal)) != 0);
+    dWorldDestroy(w[0]);
+    dWorldDestroy(w[1]);
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_contact_rows_need_no_defaults),
     TEST_CASE(test_contact_numbers_follow_the_rule),
+    TEST_CASE(test_contact_directions_are_their_normals),
     TEST_END
 };

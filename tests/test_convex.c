@@ -748,13 +748,6 @@ static dGeomID hull_walk_geom(int k)
                       : make_prism(&pr);
 }
 
-// A box walker among boxes of different shapes.
-static dGeomID box_walk_geom(int k)
-{
-    if (k < 0) return dCreateBox(0, (dReal)0.6, (dReal)0.4, (dReal)0.3);
-    return dCreateBox(0, (dReal)(0.3 + 0.05 * k), (dReal)0.5, (dReal)(0.9 - 0.04 * k));
-}
-
 // A hull remembers the axis that parted it from each of its last few
 // partners and tries it first. That is only a shortcut: a hull wandering
 // among 12 others gets exactly the contacts that fresh geoms at the same
@@ -762,15 +755,6 @@ static dGeomID box_walk_geom(int k)
 static int test_remembered_axis_never_hides_contacts(void)
 {
     return wander_among_partners(hull_walk_geom, 77);
-}
-
-// Box 1 of a box pair remembers the axis that parted it from each of its
-// last few partners, as hulls do: a box wandering among 12 boxes of
-// different shapes gets exactly the contacts that fresh boxes at the same
-// poses get, in either order.
-static int test_box_remembered_axis_never_hides_contacts(void)
-{
-    return wander_among_partners(box_walk_geom, 91);
 }
 
 // ---- kept state against fresh geoms ----------------------------------------------
@@ -1483,7 +1467,6 @@ const test_case test_cases[] = {
     TEST_CASE(test_large_box_as_brute_force),
     TEST_CASE(test_corner_to_corner_spheres),
     TEST_CASE(test_posed_points_exact),
-    TEST_CASE(test_box_remembered_axis_never_hides_contacts),
     TEST_CASE(test_bad_input),
     TEST_END,
 };

@@ -636,19 +636,6 @@ BOX_INLINE dReal edge_slack(int i, int j, const dReal a[3], const dReal b[3])
     return -BOX_AXIS_SLACK * (a[(i + 1) % 3] + a[(i + 2) % 3] + b[(j + 1) % 3] + b[(j + 2) % 3]);
 }
 
-// Whether axis x alone parts the boxes by box_box's own tests, from its
-// overlaps (for the remembered axis: exactly when box_box would return 0 on
-// reaching it).
-static int axis_parts(int x, const dReal over[15], const dReal a[3], const dReal b[3],
-                      const dReal Rm[3][4])
-{
-    if (x < 6) return over[x] < 0;
-    int i = (x - 6) / 3, j = (x - 6) % 3, i1 = (i + 1) % 3, i2 = (i + 2) % 3;
-    if (over[x] < edge_slack(i, j, a, b)) return 1;
-    dReal len2 = Rm[i1][j] * Rm[i1][j] + Rm[i2][j] * Rm[i2][j];
-    return len2 > DX_COLLIDE_EPS && over[x] / dSqrt(len2) < 0;
-}
-
 // Whether box_box's shortcuts may take R1 and R2 for rotations: every entry
 // of theirs and of Rm (its absolute values Q) at most 1.25 in magnitude.
 static int rotation_like(const dReal *R1, const dReal *R2, const dReal Q[3][4])
@@ -742,13 +729,6 @@ BOX_INLINE int edges_lose(const dReal over[16], const dReal Rm[3][4], dReal best
     return lose[0] & lose[1] & lose[2] & 1;
 }
 
-// box_box's return when axis x parts the boxes: 0, with x noted in *apart.
-static inline int apart_by(int x, int *apart)
-{
-    *apart = x;
-    return 0;
-}
-
 // Box-box. In box 1's frame (axes A_i, half sides a), with box 2's centre T
 // and Rm_ij = A_i . B_j, the 15 candidate axes are A_i, B_j and A_i x B_j;
 // along each the boxes overlap by (radius1 + radius2 - |T . axis|) / |axis|.
@@ -760,16 +740,14 @@ static inline int apart_by(int x, int *apart)
 // may be NULL). The contact normal goes to normal_out, the depth along it to
 // *depth_out and the axis to *code_out, numbered as ODE 0.16's dBoxBox does:
 // 1-3 box 1's faces, 4-6 box 2's, 7 + 3 i + j the edge pair A_i x B_j.
-// Axis hint (0-14, or -1) is tried first; when an axis parts the boxes,
-// *apart gets it (left alone if the bounding spheres part them). trusted
-// says that the sides are >= 0 and R1, R2 rotations (orthonormal to
+// trusted says that the sides are >= 0 and R1, R2 rotations (orthonormal to
 // rounding), as box geoms keep them; dBoxBox's callers may pass anything,
 // and its shortcuts check what they need. Inlined in its two callers (no 17
 // arguments to pass per pair).
 BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const dReal *p2,
                        const dReal *R2, const dReal *s2, int trusted, dxGeom *o1, dxGeom *o2,
-                       int flags, dContactGeom *out, int skip, int hint, int *apart,
-                       dReal normal_out[3], dReal *depth_out, int *code_out)
+                       int flags, dContactGeom *out, int skip, dReal normal_out[3],
+                       dReal *depth_out, int *code_out)
 {
     dReal a[4], b[4];   // s / 2 as s * 0.5 (the same number), fourth lanes 0
     v4_store(a, v4_clear3(v4_load(s1) * (dReal)0.5));
@@ -785,7 +763,6 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
     // Any negative overlap parts the boxes, the first in axis order found. An
     // edge axis' slack is <= 0 for boxes of sides >= 0: a pair apart along it
     // has an edge overlap < 0, and only then are the edges tested in turn.
-    if (hint >= 0 && axis_parts(hint, over, a, b, Rm)) return apart_by(hint, apart);
     // (Touching pairs, most of them, find no negative overlap among the 15
     // in four fours first.)
     box_v4 zero = { 0, 0, 0, 0 };
@@ -794,7 +771,7 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
     dReal lowest = 0;
     if ((neg[0] | neg[1] | neg[2] | neg[3]) & 1) {
         for (int x = 0; x < 6; x++)
-            if (over[x] < 0) return apart_by(x, apart);
+            if (over[x] < 0) return 0;
         for (int x = 6; x < 15; x++)
             if (over[x] < lowest) lowest = over[x];
     }
@@ -803,7 +780,7 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
         for (int i = 0; i < 3; i++) {
             for (int j = 0; j < 3; j++) {
                 int x = 6 + 3 * i + j;
-                if (over[x] < edge_slack(i, j, a, b)) return apart_by(x, apart);
+                if (over[x] < edge_slack(i, j, a, b)) return 0;
             }
         }
     }
@@ -829,7 +806,7 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
             dReal len2 = Rm[i1][j] * Rm[i1][j] + Rm[i2][j] * Rm[i2][j];
             if (len2 <= DX_COLLIDE_EPS) continue;   // parallel edges: the faces cover them
             dReal len = dSqrt(len2), o = over[x] / len;
-            if (o < 0) return apart_by(x, apart);   // apart after all: a well-defined edge axis
+            if (o < 0) return 0;   // apart after all: a well-defined edge axis
             if (o < best_edge) {
                 best_edge = o;
                 edge = x;
@@ -908,36 +885,16 @@ BOX_INLINE int box_box(const dReal *p1, const dReal *R1, const dReal *s1, const 
     return 1;
 }
 
-// Box 1's remembered axis against the geom other, or NULL.
-static dxBoxAxisHint *find_hint(dxBox *box, const void *other)
-{
-    for (int k = 0; k < DX_BOX_AXIS_CACHE; k++)
-        if (box->hints[k].other == other) return &box->hints[k];
-    return NULL;
-}
-
-// Box-box of two geoms: box 1 remembers the axis that parted it from o2
-// (see dxBoxAxisHint) and tries it first; the result never depends on it.
+// Box-box of two geoms.
 // Static: GCC 12 exports a target_clones function whatever -fvisibility
 // says, so dxCollideBoxBox below is a plain call into it.
 BOX_CLONES static int box_box_geoms(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out,
                                     int skip)
 {
-    dxBox *b1 = (dxBox *)o1;
-    dxBoxAxisHint *e = find_hint(b1, o2);
     dReal normal[3], depth;
-    int code, apart = -1;
-    int n = box_box(o1->pos, o1->R, b1->side, o2->pos, o2->R, ((dxBox *)o2)->side, 1, o1, o2, flags,
-                    out, skip, e ? e->axis : -1, &apart, normal, &depth, &code);
-    if (apart >= 0 && !(e && e->axis == apart)) {
-        if (!e) {
-            e = &b1->hints[b1->next_hint];
-            b1->next_hint = (b1->next_hint + 1) % DX_BOX_AXIS_CACHE;
-            e->other = o2;
-        }
-        e->axis = apart;
-    }
-    return n;
+    int code;
+    return box_box(o1->pos, o1->R, ((dxBox *)o1)->side, o2->pos, o2->R, ((dxBox *)o2)->side, 1,
+                   o1, o2, flags, out, skip, normal, &depth, &code);
 }
 
 int dxCollideBoxBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)
@@ -949,15 +906,13 @@ int dxCollideBoxBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int sk
 // 1 into box 2 (the contacts' normal negated) and return_code the axis
 // (1-15, 0 if apart); the contacts get positions, depths and normals, with
 // g1 and g2 left 0.
-// dBoxBox's collider: box_box on anything, no geoms, no remembered axis.
+// dBoxBox's collider: box_box on anything, no geoms.
 BOX_CLONES static int box_box_any(const dReal *p1, const dReal *R1, const dReal *s1,
                                   const dReal *p2, const dReal *R2, const dReal *s2, int flags,
                                   dContactGeom *out, int skip, dReal normal[3], dReal *depth,
                                   int *code)
 {
-    int apart;
-    return box_box(p1, R1, s1, p2, R2, s2, 0, NULL, NULL, flags, out, skip, -1, &apart, normal,
-                   depth, code);
+    return box_box(p1, R1, s1, p2, R2, s2, 0, NULL, NULL, flags, out, skip, normal, depth, code);
 }
 
 int dBoxBox(const dVector3 p1, const dMatrix3 R1, const dVector3 side1, const dVector3 p2,

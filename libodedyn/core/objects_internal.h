@@ -194,6 +194,16 @@ struct dxJointGroup {
 
 // ---- world -------------------------------------------------------------
 
+// The unit normal and friction directions dJointCreateContact made last for
+// a usual contact, and the normal as given that they were made from: a
+// collider gives all of a pair's contacts one normal, so the next contact
+// whose normal has the same bits copies them (joint_contact.c). `given` is
+// not a number until the first.
+typedef struct dxContactFrame {
+    dReal given[3];
+    dVector3 n, t1, t2;
+} dxContactFrame;
+
 struct dxWorld {
     dxObjectHeader hdr;
     struct dxBody *bodies;
@@ -228,6 +238,7 @@ struct dxWorld {
                                   // step (quickstep_warm.c), NULL until one
     struct dxWatchdog *watchdog;  // dWorldSetWatchdog's (watchdog.c), NULL when off
     int watchdog_stepping;        // 1 while the watchdog runs the step it watches
+    dxContactFrame contact_frame; // the last usual contact's (joint_contact.c)
 };
 
 // Free a world's warm-start cache (dWorldDestroy).

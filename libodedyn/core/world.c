@@ -8,6 +8,7 @@
 #include "step_memory.h"
 
 #include <ode/memory.h>
+#include <math.h>
 
 #define CHECK_WORLD(w, on_fail) \
     DX_CHECK_ARG(dxWorldIsLive(w), on_fail, "world is NULL or was destroyed")
@@ -39,6 +40,7 @@ dWorldID dWorldCreate(void)
     w->damping.linear_threshold = REAL(0.01);
     w->damping.angular_threshold = REAL(0.01);
     w->damping.max_angular_speed = dInfinity;
+    for (int i = 0; i < 3; i++) w->contact_frame.given[i] = (dReal)NAN;   // (matches no normal)
     return w;
 }
 

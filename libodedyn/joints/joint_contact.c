@@ -360,24 +360,73 @@ static int bad_normal(const dContactGeom *g)
     return 0;
 }
 
-// Store the unit normal; 0 (after a report) if the geometry is unusable.
-static int check_geometry(dxJointContact *c)
+// The sum of a contact's seven numbers (point, depth, normal as given): finite
+// only if each is (a NaN or an infinity makes it NaN or infinite); finite
+// numbers whose sum overflows go on to the tests of each number
+// (geometry_by_number).
+static inline dReal geometry_sum(const dContactGeom *g)
+{
+    return g->pos[0] + g->pos[1] + g->pos[2] + g->depth + g->normal[0] + g->normal[1] +
+           g->normal[2];
+}
+
+// The unit normal into kept.n (4th number 0) from the normal as given, its
+// numbers finite; 0 (after a report) if it has no direction.
+static inline int unit_normal(dxJointContact *c)
+{
+    dReal *n = c->kept.n;
+    dCopyVector3(n, c->contact.geom.normal);
+    n[3] = 0;
+    return dxUnitVector3(n) || bad_normal(&c->contact.geom);
+}
+
+// check_geometry where the sum of the numbers is not finite: each tested.
+static int geometry_by_number(dxJointContact *c)
 {
     const dContactGeom *g = &c->contact.geom;
-    dReal *n = c->kept.n;
-    dCopyVector3(n, g->normal);
-    n[3] = 0;
-    // One test for the usual contact: the sum of the seven numbers is finite
-    // only if each is (a NaN or an infinity makes it NaN or infinite); finite
-    // numbers whose sum overflows go on to the tests of each number below.
-    const dReal sum = g->pos[0] + g->pos[1] + g->pos[2] + g->depth + n[0] + n[1] + n[2];
-    if (dxIsFinite(sum)) return dxUnitVector3(n) || bad_normal(g);
     if (!dxIsFinite3(g->pos[0], g->pos[1], g->pos[2]) || !dxIsFinite(g->depth)) {
         dxReportBadArgument("dJointCreateContact",
                             "contact position or depth is not finite; the contact is ignored");
         return 0;
     }
-    if (!dxIsFinite3(n[0], n[1], n[2]) || !dxUnitVector3(n)) return bad_normal(g);
+    if (!dxIsFinite3(g->normal[0], g->normal[1], g->normal[2])) return bad_normal(g);
+    return unit_normal(c);
+}
+
+// Store the unit normal; 0 (after a report) if the geometry is unusable.
+static int check_geometry(dxJointContact *c)
+{
+    if (dxIsFinite(geometry_sum(&c->contact.geom))) return unit_normal(c);
+    return geometry_by_number(c);
+}
+
+// The usual contact's unit normal and friction directions (check_geometry,
+// then dxPlaneSpaceUnit: see usual_surface), or, when its normal as given has
+// the bits of the last usual contact's in the world (a collider's contacts
+// of one pair share their normal), the ones made from that: the same
+// numbers without the square roots and divisions. 0 (after a report) if the
+// geometry is unusable.
+static int usual_frame(dxJointContact *c)
+{
+    dxContactFrame *last = &c->base.world->contact_frame;
+    const dContactGeom *g = &c->contact.geom;
+    if (dxIsFinite(geometry_sum(g))) {
+        if (memcmp(last->given, g->normal, sizeof last->given) == 0) {
+            memcpy(c->kept.n, last->n, sizeof last->n);
+            memcpy(c->kept.t1, last->t1, sizeof last->t1);
+            memcpy(c->kept.t2, last->t2, sizeof last->t2);
+            return 1;
+        }
+        if (!unit_normal(c)) return 0;
+    } else if (!geometry_by_number(c)) {
+        return 0;
+    }
+    dxPlaneSpaceUnit(c->kept.n, c->kept.t1, c->kept.t2);
+    c->kept.t1[3] = c->kept.t2[3] = 0;
+    memcpy(last->given, g->normal, sizeof last->given);
+    memcpy(last->n, c->kept.n, sizeof last->n);
+    memcpy(last->t1, c->kept.t1, sizeof last->t1);
+    memcpy(last->t2, c->kept.t2, sizeof last->t2);
     return 1;
 }
 
@@ -454,10 +503,10 @@ static void choose_rows(dxJointContact *c)
         c->base.flags |= DX_JOINT_PLAIN_CONTACT;
 }
 
-// The rows and directions of the usual contact: a surface with mu >= 0 (0
-// to dInfinity: nothing to sanitise) and no mode but the pyramid's
-// (dContactApprox1_1/_2/_N): the numbers choose_rows, sliding_rows and
-// friction_directions give it, made straight.
+// The rows of the usual contact: a surface with mu >= 0 (0 to dInfinity:
+// nothing to sanitise) and no mode but the pyramid's (dContactApprox1_1/_2/_N):
+// the numbers choose_rows and sliding_rows give it, made straight (its
+// directions are usual_frame's, friction_directions' without FDir1).
 static void usual_surface(dxJointContact *c)
 {
     const dSurfaceParameters *s = &c->contact.surface;
@@ -465,8 +514,6 @@ static void usual_surface(dxJointContact *c)
     c->mu2 = mu;
     c->rho2 = c->rhoN = 0;   // (rolling friction's: no rolling rows)
     c->own_numbers = 0;
-    dxPlaneSpaceUnit(c->kept.n, c->kept.t1, c->kept.t2);
-    c->kept.t1[3] = c->kept.t2[3] = 0;
     if (mu > 0) {
         c->rows_present = ROW_T1 | ROW_T2;
         c->m = c->kept.m = 3;
@@ -522,7 +569,7 @@ static void contact_init(dxJointContact *c, const dContact *contact)
     }
     c->anchor_body[0] = c->anchor_body[1] = NULL;
     c->negated = 0;
-    if (!check_geometry(c)) {
+    if (!(usual ? usual_frame(c) : check_geometry(c))) {
         dZeroVector3(c->kept.n);
         dZeroVector3(c->kept.t1);
         dZeroVector3(c->kept.t2);

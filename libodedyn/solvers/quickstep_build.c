@@ -411,13 +411,7 @@ static int equality_block(struct dxWorld *w, dxJoint *j, const qs_input *in, qs_
     dReal c[QS_MAX_BLOCK], jcfm[QS_MAX_BLOCK], lo[QS_MAX_BLOCK], hi[QS_MAX_BLOCK];
     int findex[QS_MAX_BLOCK];
     for (int e = 0; e < 6 * n; e++) J[e] = qs_splat(0);
-    for (int i = 0; i < n; i++) {
-        c[i] = 0;
-        jcfm[i] = w->cfm;
-        lo[i] = -dInfinity;
-        hi[i] = dInfinity;
-        findex[i] = -1;
-    }
+    dxJointRowsDefaults(w, n, c, jcfm, lo, hi, findex);
     dReal *Jr = (dReal *)J;
     dxJointRows info = { in->fps, w->erp, DX_ROW_SKIP, Jr, Jr + 3, Jr + 6, Jr + 9,
                          c, jcfm, lo, hi, findex };

@@ -345,13 +345,7 @@ void dxJointRowsFill(struct dxWorld *w, dxJoint *j, dReal h, dReal *J, dReal *c,
     if (m == 0) return;
     if (j->cls->type != dJointTypeContact) {   // it writes every entry itself
         for (int i = 0; i < m * DX_ROW_SKIP; i++) J[i] = 0;
-        for (int i = 0; i < m; i++) {
-            c[i] = 0;
-            cfm[i] = w->cfm;
-            lo[i] = -dInfinity;
-            hi[i] = dInfinity;
-            findex[i] = -1;
-        }
+        dxJointRowsDefaults(w, m, c, cfm, lo, hi, findex);
     }
     dxJointRows info;
     info.fps = dRecip(h);

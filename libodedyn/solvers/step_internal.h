@@ -139,6 +139,19 @@ void dxRowsBuild(struct dxWorld *w, dxArena *arena, const dxIsland *is, dReal h,
 // that are not finite are cleared and reported (dxJointRowsKeepFinite).
 void dxJointRowsFill(struct dxWorld *w, dxJoint *j, dReal h, dReal *J, dReal *c, dReal *cfm,
                      dReal *lo, dReal *hi, int *findex, int *b);
+// The defaults of m rows before a joint's fill_rows sets what it uses: no
+// target (c 0), the world's cfm, no bounds, no friction index (findex -1).
+static inline void dxJointRowsDefaults(const struct dxWorld *w, int m, dReal *c, dReal *cfm,
+                                       dReal *lo, dReal *hi, int *findex)
+{
+    for (int i = 0; i < m; i++) {
+        c[i] = 0;
+        cfm[i] = w->cfm;
+        lo[i] = -dInfinity;
+        hi[i] = dInfinity;
+        findex[i] = -1;
+    }
+}
 // Whether the m rows of joint j just filled (J with row skip `skip`, c,
 // cfm, lo, hi) are numbers a solver can take: J, c and cfm finite, no bound
 // NaN. If not (a joint whose pose or parameters have no answer, such as
