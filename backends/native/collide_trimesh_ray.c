@@ -371,8 +371,9 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
                         crossed |= 1u << l;
                 }
             }
-            for (int l = 0; l < 2; l++) {
-                if (!(crossed >> l & 1) || dist[l] > limit) continue;
+            for (; crossed; crossed &= crossed - 1) {   // the crossed ones, in order
+                int l = __builtin_ctz(crossed);
+                if (dist[l] > limit) continue;
                 int ti = d->order[j + l];
                 if (dxTriMeshIsDegenerate(d, ti)) continue;
                 if (m->ray_callback && !m->ray_callback(o1, o2, ti, bu[l], bv[l])) continue;
