@@ -7,6 +7,8 @@
 
 #include <ode/rotation.h>
 
+#include "../libodedyn/math/unit_vector.h"
+
 #define CHECK_CLASS(g, c, label, on_fail) \
     do { \
         DX_CHECK_GEOM(g, on_fail); \
@@ -120,20 +122,21 @@ dReal dGeomRayGetLength(dGeomID g)
 // A ray on no body takes the rotation and position directly: the same
 // numbers as dRFromZAxis then dGeomSetRotation (whose orthogonalisation
 // moves the last bits of the rows, so it is kept) and dGeomSetPosition,
-// without their checks of what is already known finite and unit, and with
-// one walk up the spaces.
+// without their checks of what is already known finite and unit (the
+// normalisations and the plane space inline: dSafeNormalize3's and
+// dPlaneSpace's arithmetic), and with one walk up the spaces.
 void dGeomRaySet(dGeomID g, dReal px, dReal py, dReal pz, dReal dx, dReal dy, dReal dz)
 {
     CHECK_CLASS(g, dRayClass, "ray", return);
     DX_CHECK_ARG(dxIsFinite3(px, py, pz), return, "start point is not finite");
     dVector3 d = { dx, dy, dz, 0 };
-    DX_CHECK_ARG(dxIsFinite3(dx, dy, dz) && dSafeNormalize3(d), return,
+    DX_CHECK_ARG(dxIsFinite3(dx, dy, dz) && dxUnitVector3(d), return,
                  "direction (%g, %g, %g) has no length", (double)dx, (double)dy, (double)dz);
     dMatrix3 R;
     if (!g->body) {
         dVector3 p, q;
-        dSafeNormalize3(d);   // as dRFromZAxis: a unit vector's last bits may move
-        dPlaneSpace(d, p, q);
+        dxUnitVector3(d);   // as dRFromZAxis: a unit vector's last bits may move
+        dxPlaneSpaceUnit(d, p, q);
         for (int i = 0; i < 3; i++) {
             R[4 * i] = p[i];
             R[4 * i + 1] = q[i];
