@@ -441,8 +441,8 @@ static size_t island_bytes(const qs_system *sys, const qs_island *p, int nb1)
 }
 
 // The islands in groups of at most dxQuickGroupBytes (island_bytes; a
-// bigger island alone, and small islands with blocks in fours, which may
-// pass it), in the order of blist (the nb islands with blocks, longest
+// bigger island alone, and islands with blocks in fours, which may pass
+// it), in the order of blist (the nb islands with blocks, longest
 // first: alike ones together, so that a group's blocks make full batches)
 // and then of rlist's islands without blocks (the nr islands with rows,
 // longest first); returns the number of groups. Each group gets its
@@ -455,17 +455,17 @@ static int make_groups(const qs_system *sys, const qs_island *parts, int count,
                        int *group_of, int *tmp)
 {
     const size_t budget = (size_t)dxQuickGroupBytes;
-    int ng = 0, small = 0;   // small: the last island fits the budget
+    int ng = 0;
     size_t bytes = 0;
     for (int i = 0; i < count; i++) group_of[i] = -1;
     for (int k = 0; k < nb + nr; k++) {
         const int i = k < nb ? blist[k] : rlist[k - nb];
         if (k >= nb && parts[i].nblocks > 0) continue;   // grouped by blist
         const int end = i + 1 < count ? parts[i + 1].body0 : sys->nbodies;
-        // Small islands with blocks join a group in fours, so that their blocks
-        // fill batches (dxQuickBatchBlocks) even past the budget.
+        // Islands with blocks join a group in fours, so that their blocks fill
+        // batches (dxQuickBatchBlocks) even past the budget.
         const size_t b = island_bytes(sys, &parts[i], end - parts[i].body0);
-        const int fours = k < nb && small && b <= budget && groups[ng - 1].islands % QS_LANES;
+        const int fours = k < nb && ng > 0 && groups[ng - 1].islands % QS_LANES;
         if (ng == 0 || (bytes + b > budget && !fours)) {
             qs_group *g = &groups[ng++];
             memset(g, 0, sizeof *g);
@@ -473,7 +473,6 @@ static int make_groups(const qs_system *sys, const qs_island *parts, int count,
             bytes = 0;
         }
         bytes += b;
-        small = b <= budget;
         qs_group *g = &groups[ng - 1];
         group_of[i] = ng - 1;
         if (parts[i].nblocks > 0) {
