@@ -457,6 +457,8 @@ static int make_groups(const qs_system *sys, const qs_island *parts, int count,
     const size_t budget = (size_t)dxQuickGroupBytes;
     int ng = 0;
     size_t bytes = 0;
+    int total = nb;   // islands to group (one: no bytes to count)
+    for (int k = 0; k < nr; k++) total += parts[rlist[k]].nblocks == 0;
     for (int i = 0; i < count; i++) group_of[i] = -1;
     for (int k = 0; k < nb + nr; k++) {
         const int i = k < nb ? blist[k] : rlist[k - nb];
@@ -464,7 +466,7 @@ static int make_groups(const qs_system *sys, const qs_island *parts, int count,
         const int end = i + 1 < count ? parts[i + 1].body0 : sys->nbodies;
         // Islands with blocks join a group in fours, so that their blocks fill
         // batches (dxQuickBatchBlocks) even past the budget.
-        const size_t b = island_bytes(sys, &parts[i], end - parts[i].body0);
+        const size_t b = total > 1 ? island_bytes(sys, &parts[i], end - parts[i].body0) : 0;
         const int fours = k < nb && ng > 0 && groups[ng - 1].islands % QS_LANES;
         if (ng == 0 || (bytes + b > budget && !fours)) {
             qs_group *g = &groups[ng++];

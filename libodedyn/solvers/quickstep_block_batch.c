@@ -131,7 +131,9 @@ void dxQuickBatchBlocks(dxArena *a, qs_system *sys, qs_group *groups, int ngroup
     sys->batches = NULL;
     sys->nbatches = 0;
     const int nb = sys->nblocks;
-    if (!dxQuickBlockBatches || nb < QS_LANES) return;
+    int several = 0;   // a group of two islands or more
+    for (int g = 0; g < ngroups; g++) several |= groups[g].islands >= 2;
+    if (!dxQuickBlockBatches || nb < QS_LANES || !several) return;
     // Each block's batch (slot) by bseq's order: the latest batch of its kind
     // (size, bodies) in its group if that has a free lane and comes after
     // every batch holding an earlier block on one of its bodies (last), else
