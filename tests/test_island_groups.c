@@ -20,12 +20,14 @@
 #define STEPS 120
 static dReal one_group[STEPS * SCENE_STATE_SIZE], other[STEPS * SCENE_STATE_SIZE];
 
-// Scene `kind` stepped STEPS times with group budget `bytes`, on `threads`
-// threads (0: none), its states after each step into states.
-static void run_scene(int kind, int bytes, int threads, dReal *states)
+// Scene `kind` stepped STEPS times with group budget `bytes`, islands with
+// blocks joining a group `islands` at a time, on `threads` threads (0:
+// none), its states after each step into states.
+static void run_scene(int kind, int bytes, int islands, int threads, dReal *states)
 {
-    const int saved = dxQuickGroupBytes;
+    const int saved = dxQuickGroupBytes, saved_islands = dxQuickGroupIslands;
     dxQuickGroupBytes = bytes;
+    dxQuickGroupIslands = islands;
     scene s;
     scene_build(&s, kind, STEP_QUICK, NULL, threads);
     for (int k = 0; k < STEPS; k++) {
@@ -34,22 +36,27 @@ static void run_scene(int kind, int bytes, int threads, dReal *states)
     }
     scene_destroy(&s);
     dxQuickGroupBytes = saved;
+    dxQuickGroupIslands = saved_islands;
 }
 
 static int check_scene(int kind)
 {
-    run_scene(kind, INT_MAX, 0, one_group);
+    run_scene(kind, INT_MAX, dxQuickGroupIslands, 0, one_group);
     const int budgets[] = { 1, 3000, dxQuickGroupBytes };
-    for (size_t b = 0; b < sizeof budgets / sizeof budgets[0]; b++) {
-        run_scene(kind, budgets[b], 0, other);
-        const int k = first_state_difference(one_group, other, STEPS, SCENE_STATE_SIZE);
-        if (k >= 0) {
-            test_fail(__FILE__, __LINE__, "%s in groups of %d bytes: states differ from step %d",
-                      scene_names[kind], budgets[b], k);
-            return 1;
+    const int islands[] = { 1, 4, dxQuickGroupIslands };
+    for (size_t b = 0; b < sizeof budgets / sizeof budgets[0]; b++)
+        for (size_t i = 0; i < sizeof islands / sizeof islands[0]; i++) {
+            run_scene(kind, budgets[b], islands[i], 0, other);
+            const int k = first_state_difference(one_group, other, STEPS, SCENE_STATE_SIZE);
+            if (k >= 0) {
+                test_fail(__FILE__, __LINE__,
+                          "%s in groups of %d bytes, %d islands with blocks at a time: states "
+                          "differ from step %d",
+                          scene_names[kind], budgets[b], islands[i], k);
+                return 1;
+            }
         }
-    }
-    run_scene(kind, 1, 2, other);
+    run_scene(kind, 1, 1, 2, other);
     const int k = first_state_difference(one_group, other, STEPS, SCENE_STATE_SIZE);
     if (k >= 0) {
         test_fail(__FILE__, __LINE__, "%s on threads: states differ from step %d",

@@ -80,6 +80,14 @@
 // first-level cache (docs/perf.md measures it).
 #define QS_GROUP_BYTES 32768
 
+// dxQuickGroupIslands' default: islands with blocks join a group this many
+// at a time, even past the budget, so that their blocks fill batches of four (dxQuickBatchBlocks):
+// in fours, 16 cars' contact blocks (which differ from car to car) filled
+// fewer batches and the vehicle bench took 3.9 % more instructions and 6 %
+// more time; in sixteens it is one group as before, and the ragdolls and
+// the rain keep most of their fewer misses (docs/perf.md).
+#define QS_GROUP_ISLANDS (4 * QS_LANES)
+
 // The generator is counter-based: the i-th number (i = 1, 2, ...) from a
 // state s is a hash of s + i * RANDOM_STEP, so that the numbers do not wait
 // for each other and a shuffle makes them RANDOM_BLOCK at a time (vectorized
@@ -422,6 +430,7 @@ static void interleave_rows(const qs_system *sys, const qs_island *parts, const 
 }
 
 int dxQuickGroupBytes = QS_GROUP_BYTES;
+int dxQuickGroupIslands = QS_GROUP_ISLANDS;
 
 // The bytes island p's sweeps go through: its rows (the free ones and those
 // coupled to its blocks) and their places in seq, its blocks' numbers (or
@@ -441,7 +450,7 @@ static size_t island_bytes(const qs_system *sys, const qs_island *p, int nb1)
 }
 
 // The islands in groups of at most dxQuickGroupBytes (island_bytes; a
-// bigger island alone, and islands with blocks in fours, which may pass
+// bigger island alone, and islands with blocks dxQuickGroupIslands at a time, which may pass
 // it), in the order of blist (the nb islands with blocks, longest
 // first: alike ones together, so that a group's blocks make full batches)
 // and then of rlist's islands without blocks (the nr islands with rows,
@@ -464,11 +473,10 @@ static int make_groups(const qs_system *sys, const qs_island *parts, int count,
         const int i = k < nb ? blist[k] : rlist[k - nb];
         if (k >= nb && parts[i].nblocks > 0) continue;   // grouped by blist
         const int end = i + 1 < count ? parts[i + 1].body0 : sys->nbodies;
-        // Islands with blocks join a group in fours, so that their blocks fill
-        // batches (dxQuickBatchBlocks) even past the budget.
+        // Islands with blocks join a group dxQuickGroupIslands at a time.
         const size_t b = total > 1 ? island_bytes(sys, &parts[i], end - parts[i].body0) : 0;
-        const int fours = k < nb && ng > 0 && groups[ng - 1].islands % QS_LANES;
-        if (ng == 0 || (bytes + b > budget && !fours)) {
+        const int fill = k < nb && ng > 0 && groups[ng - 1].islands % dxQuickGroupIslands;
+        if (ng == 0 || (bytes + b > budget && !fill)) {
             qs_group *g = &groups[ng++];
             memset(g, 0, sizeof *g);
             g->block0 = ng > 1 ? groups[ng - 2].block0 + groups[ng - 2].nblocks : 0;

@@ -183,6 +183,10 @@ typedef struct qs_group {
 // group while their rows, blocks, lambdas and fc fit; a bigger island is a
 // group alone. Tests set it small, to sweep a scene in many groups.
 extern int dxQuickGroupBytes;
+// Islands with blocks join a group this many at a time (quickstep.c), past
+// the budget if need be, so that their blocks fill batches. Tests set it to
+// 1, so that the budget alone cuts a scene's block islands into groups.
+extern int dxQuickGroupIslands;
 
 typedef struct dxWarmCache dxWarmCache;
 typedef struct qs_warm_entry qs_warm_entry;
