@@ -315,7 +315,8 @@ static int check_packing(unsigned seed, int nbodies)
     sys.bseq = bseq;
     dxArena arena;
     dxArenaInit(&arena);
-    dxQuickBatchBlocks(&arena, &sys, 2);
+    qs_group group = { 0, PACK_BLOCKS, 0, 0, 2, 0, 0, 0, 0 };
+    dxQuickBatchBlocks(&arena, &sys, &group, 1);
     if (!sys.batches) {   // no full batch: nothing packed
         dxArenaFree(&arena);
         return sys.nbatches == 0 ? 0 : -1;
@@ -384,7 +385,8 @@ static int test_packing_off_leaves_bseq(void)
     dxQuickBlockBatches = 0;
     sys.batches = (const qs_batch *)&sys;   // anything: must become NULL
     sys.nbatches = 5;
-    dxQuickBatchBlocks(&arena, &sys, 2);
+    qs_group group = { 0, 0, 0, 0, 2, 0, 0, 0, 0 };
+    dxQuickBatchBlocks(&arena, &sys, &group, 1);
     dxQuickBlockBatches = 1;
     dxArenaFree(&arena);
     CHECK(sys.batches == NULL && sys.nbatches == 0);

@@ -38,7 +38,11 @@
 // Islands share no body and no row, so their sweeps are interleaved row by
 // row: each island sees exactly the updates it would see alone, and the
 // processor gets independent rows to overlap (small islands, as ragdolls,
-// are otherwise one long chain of dependent updates).
+// are otherwise one long chain of dependent updates). They are interleaved
+// in groups that fit the first-level cache (dxQuickGroupBytes): all the
+// sweeps of one group, then the next, so that a group's rows and blocks are
+// read from the cache in its 20 sweeps instead of streaming the whole
+// system through it in every sweep.
 //
 // Warm start. Contacts do not start from lambda = 0 but from the forces of
 // the same contact in the last step, when there is one: contact joints are
@@ -71,6 +75,18 @@
 #include <string.h>
 
 #define REORDER_PERIOD 8
+
+// dxQuickGroupBytes' default: islands are swept in groups that fit the
+// first-level cache (docs/perf.md measures it).
+#define QS_GROUP_BYTES 32768
+
+// dxQuickGroupIslands' default: islands with blocks join a group this many
+// at a time, even past the budget, so that their blocks fill batches of four (dxQuickBatchBlocks):
+// in fours, 16 cars' contact blocks (which differ from car to car) filled
+// fewer batches and the vehicle bench took 3.9 % more instructions and 6 %
+// more time; in sixteens it is one group as before, and the ragdolls and
+// the rain keep most of their fewer misses (docs/perf.md).
+#define QS_GROUP_ISLANDS (4 * QS_LANES)
 
 // The generator is counter-based: the i-th number (i = 1, 2, ...) from a
 // state s is a hash of s + i * RANDOM_STEP, so that the numbers do not wait
@@ -331,14 +347,14 @@ static int islands_by_length(const qs_island *parts, int count, int block, int *
 }
 
 // Round robin over the islands in list (longest first): the t-th block of
-// each island that has one, for t = 0, 1, ...
+// each island that has one, for t = 0, 1, ..., into to.
 static void interleave_blocks(const qs_system *sys, const qs_island *parts, const int *list,
-                              int n)
+                              int n, const qs_block **to)
 {
     int out = 0;
     for (int t = 0; n > 0; t++) {
         while (n > 0 && parts[list[n - 1]].nblocks <= t) n--;
-        for (int k = 0; k < n; k++) sys->bseq[out++] = &sys->blocks[parts[list[k]].block0 + t];
+        for (int k = 0; k < n; k++) to[out++] = &sys->blocks[parts[list[k]].block0 + t];
     }
 }
 
@@ -413,26 +429,135 @@ static void interleave_rows(const qs_system *sys, const qs_island *parts, const 
     copy_ints(sys->seq + out, from[0] + t0, parts[list[0]].norder - t0);
 }
 
-// `iterations` sweeps over all islands, each island's rows reshuffled every
-// REORDER_PERIOD with its own generator, the odd sweeps going through the
-// rows before the blocks, the blocks in batches (a: the world arena). list,
-// tmp: scratch for count islands.
+int dxQuickGroupBytes = QS_GROUP_BYTES;
+int dxQuickGroupIslands = QS_GROUP_ISLANDS;
+
+// The bytes island p's sweeps go through: its rows (the free ones and those
+// coupled to its blocks) and their places in seq, its blocks' numbers (or
+// their copies in batches), its lambdas, and its bodies' fc (nb1: its
+// bodies and dummy).
+static size_t island_bytes(const qs_system *sys, const qs_island *p, int nb1)
+{
+    size_t rows = (size_t)p->norder, numbers = 6 * (size_t)nb1 + (size_t)p->norder;
+    for (int k = p->block0; k < p->block0 + p->nblocks; k++) {
+        const qs_block *blk = &sys->blocks[k];
+        const size_t n = (size_t)blk->n;
+        rows += (size_t)blk->ncoupled;
+        numbers += n * (24 + QS_PAD(n) + 2) + n + (size_t)blk->ncoupled;
+    }
+    return rows * sizeof(qs_row) + (size_t)p->norder * sizeof(int) +
+           (size_t)p->nblocks * sizeof(qs_block) + numbers * sizeof(dReal);
+}
+
+// The islands in groups of at most dxQuickGroupBytes (island_bytes; a
+// bigger island alone, and islands with blocks dxQuickGroupIslands at a time, which may pass
+// it), in the order of blist (the nb islands with blocks, longest
+// first: alike ones together, so that a group's blocks make full batches)
+// and then of rlist's islands without blocks (the nr islands with rows,
+// longest first); returns the number of groups. Each group gets its
+// blocks in bseq, interleaved (interleave_blocks), and its islands with
+// rows as a range of rlist, which is reordered group by group (stable:
+// longest first within a group); its rows' range of seq. group_of, tmp:
+// scratch for count islands.
+static int make_groups(const qs_system *sys, const qs_island *parts, int count,
+                       const int *blist, int nb, int *rlist, int nr, qs_group *groups,
+                       int *group_of, int *tmp)
+{
+    const size_t budget = (size_t)dxQuickGroupBytes;
+    int ng = 0;
+    size_t bytes = 0;
+    int total = nb;   // islands to group (one: no bytes to count)
+    for (int k = 0; k < nr; k++) total += parts[rlist[k]].nblocks == 0;
+    for (int i = 0; i < count; i++) group_of[i] = -1;
+    for (int k = 0; k < nb + nr; k++) {
+        const int i = k < nb ? blist[k] : rlist[k - nb];
+        if (k >= nb && parts[i].nblocks > 0) continue;   // grouped by blist
+        const int end = i + 1 < count ? parts[i + 1].body0 : sys->nbodies;
+        // Islands with blocks join a group dxQuickGroupIslands at a time.
+        const size_t b = total > 1 ? island_bytes(sys, &parts[i], end - parts[i].body0) : 0;
+        const int fill = k < nb && ng > 0 && groups[ng - 1].islands % dxQuickGroupIslands;
+        if (ng == 0 || (bytes + b > budget && !fill)) {
+            qs_group *g = &groups[ng++];
+            memset(g, 0, sizeof *g);
+            g->block0 = ng > 1 ? groups[ng - 2].block0 + groups[ng - 2].nblocks : 0;
+            bytes = 0;
+        }
+        bytes += b;
+        qs_group *g = &groups[ng - 1];
+        group_of[i] = ng - 1;
+        if (parts[i].nblocks > 0) {
+            g->nblocks += parts[i].nblocks;
+            g->islands++;
+        }
+    }
+    // Blocks: each group's islands are a range of blist, as they came.
+    for (int k = 0, first = 0; k < ng; k++) {
+        interleave_blocks(sys, parts, blist + first, groups[k].islands,
+                          sys->bseq + groups[k].block0);
+        first += groups[k].islands;
+    }
+    // Rows: rlist by group, counting.
+    for (int k = 0; k < nr; k++) groups[group_of[rlist[k]]].nrows++;
+    for (int g = 0, at = 0; g < ng; g++) {
+        groups[g].rows0 = at;
+        at += groups[g].nrows;
+        groups[g].nrows = 0;
+    }
+    for (int k = 0; k < nr; k++) {
+        qs_group *g = &groups[group_of[rlist[k]]];
+        tmp[g->rows0 + g->nrows++] = rlist[k];
+        g->nseq += parts[rlist[k]].norder;
+    }
+    for (int g = 1; g < ng; g++) groups[g].seq0 = groups[g - 1].seq0 + groups[g - 1].nseq;
+    memcpy(rlist, tmp, sizeof(int) * (size_t)nr);
+    return ng;
+}
+
+// The part of sys that group g sweeps: its blocks or batches, its rows in
+// seq (one island's swept in place in order).
+static qs_system group_system(const qs_system *sys, const qs_island *parts, const int *rlist,
+                              const qs_group *g)
+{
+    qs_system one = *sys;
+    one.bseq = sys->bseq + g->block0;
+    one.nblocks = g->nblocks;
+    if (sys->batches) {
+        one.batches = sys->batches + g->batch0;
+        one.nbatches = g->nbatches;
+    }
+    one.norder = g->nseq;
+    one.seq = g->nrows == 1 ? sys->order + parts[rlist[g->rows0]].order0 : sys->seq + g->seq0;
+    return one;
+}
+
+// `iterations` sweeps over all islands, group by group (make_groups), each
+// island's rows reshuffled every REORDER_PERIOD with its own generator, the
+// odd sweeps going through the rows before the blocks, the blocks in
+// batches (a: the world arena). list, tmp: scratch for count islands.
 static void solve(dxArena *a, qs_system *sys, qs_island *parts, int count, int iterations,
                   int *list, int *tmp)
 {
     const int with_blocks = islands_by_length(parts, count, 1, list, tmp, a);
-    interleave_blocks(sys, parts, list, with_blocks);
-    dxQuickBatchBlocks(a, sys, with_blocks);
-    const int n = islands_by_length(parts, count, 0, list, tmp, a);
+    int *rlist = DX_ARENA_ARRAY(a, int, count + 1);
+    const int n = islands_by_length(parts, count, 0, rlist, tmp, a);
+    qs_group *groups = DX_ARENA_ARRAY(a, qs_group, count + 1);
+    int *group_of = DX_ARENA_ARRAY(a, int, count + 1);
+    const int ng = make_groups(sys, parts, count, list, with_blocks, rlist, n, groups, group_of,
+                               tmp);
+    dxQuickBatchBlocks(a, sys, groups, ng);
     const qs_reorder re = reorder_begin(a, sys);
-    if (n == 1) sys->seq = sys->order + parts[list[0]].order0;   // swept as it is
     const int **from = n > 1 ? DX_ARENA_ARRAY(a, const int *, n) : NULL;
-    for (int it = 0; it < iterations; it++) {
-        if (it % REORDER_PERIOD == 0) {
-            reshuffle_islands(sys, parts, list, n, it / REORDER_PERIOD, &re);
-            if (n > 1) interleave_rows(sys, parts, list, n, from);
+    for (int k = 0; k < ng; k++) {
+        const qs_group *g = &groups[k];
+        const int *glist = rlist + g->rows0;
+        qs_system one = group_system(sys, parts, rlist, g);
+        for (int it = 0; it < iterations; it++) {
+            if (it % REORDER_PERIOD == 0) {
+                reshuffle_islands(sys, parts, glist, g->nrows, it / REORDER_PERIOD, &re);
+                if (g->nrows > 1) interleave_rows(&one, parts, glist, g->nrows, from);
+            }
+            dxQuickSweep(&one, it & 1);
         }
-        dxQuickSweep(sys, it & 1);
     }
 }
 

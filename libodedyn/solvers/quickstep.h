@@ -167,6 +167,27 @@ typedef struct qs_island {
 // precision).
 #define WARM_ISO_MIN ((dReal)1e-20)
 
+// A group of islands swept together (quickstep.c): all the step's sweeps of
+// one group, then the next, so that a group's numbers stay in the
+// first-level cache. Its blocks are a range of bseq, its batches a range of
+// batches, its rows a range of seq.
+typedef struct qs_group {
+    int block0, nblocks;     // its blocks in bseq
+    int batch0, nbatches;    // its entries in batches (dxQuickBatchBlocks)
+    int islands;             // its islands with blocks
+    int rows0, nrows;        // its islands with rows: a range of solve's list
+    int seq0, nseq;          // its rows in seq
+} qs_group;
+
+// The budget of a group in bytes (quickstep.c): islands are added to a
+// group while their rows, blocks, lambdas and fc fit; a bigger island is a
+// group alone. Tests set it small, to sweep a scene in many groups.
+extern int dxQuickGroupBytes;
+// Islands with blocks join a group this many at a time (quickstep.c), past
+// the budget if need be, so that their blocks fill batches. Tests set it to
+// 1, so that the budget alone cuts a scene's block islands into groups.
+extern int dxQuickGroupIslands;
+
 typedef struct dxWarmCache dxWarmCache;
 typedef struct qs_warm_entry qs_warm_entry;
 
@@ -175,10 +196,10 @@ typedef struct qs_system {
     qs_block *blocks;      // in each island's joint order
     qs_row *rows;          // the rows coupled to blocks, and the others
     int *order;            // each island's other rows, in the order of its sweeps
-    const qs_block **bseq; // the blocks of all islands, interleaved
+    const qs_block **bseq; // the blocks of all islands, interleaved group by group
     const qs_batch *batches; // bseq packed in batches (NULL: sweep bseq)
     int nbatches;
-    int *seq;              // order of all islands, interleaved
+    int *seq;              // order of all islands, interleaved group by group
     int *at;               // m + 1: the row in order per lambda position (-1: none)
     int *row_pos, *row_f;  // per row: its pos and f (compact copies for the reordering)
     dReal *lambda;         // m + 1: the last holds the constant 1
@@ -269,9 +290,10 @@ void dxQuickContact(const qs_input *in, dxJoint *j, qs_system *sys);
 // batch): each block in the first batch after every batch holding an earlier
 // block on one of its bodies, so that blocks sharing a body keep their order
 // and each is updated exactly as in bseq (the same bits). Once per step,
-// for the blocks of `islands` islands: one island's blocks (a chain) mostly
-// share bodies, so its are left in bseq.
-void dxQuickBatchBlocks(dxArena *a, qs_system *sys, int islands);
+// each of the ngroups groups' blocks apart (their batches a range of
+// batches: batch0, nbatches): one island's blocks (a chain) mostly share
+// bodies, so those of a group of fewer than two islands are left as in bseq.
+void dxQuickBatchBlocks(dxArena *a, qs_system *sys, qs_group *groups, int ngroups);
 // 1 (the default): dxQuickBatchBlocks packs; 0: it leaves bseq alone (for
 // tests that compare the two: the same results).
 extern int dxQuickBlockBatches;

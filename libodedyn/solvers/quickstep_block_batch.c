@@ -6,9 +6,10 @@
 // for n multiply-adds), so a sweep over blocks one by one waits on it. But
 // Gauss-Seidel's result depends only on the order of the updates that share
 // a body: blocks of different bodies can go side by side. bseq interleaves
-// the islands (identical ragdolls or cars give the same joint kind at the
-// same place in turn), so its blocks are packed once per step in batches of
-// four blocks of the same size and number of bodies, one block a SIMD lane.
+// the islands of each group (identical ragdolls or cars give the same joint
+// kind at the same place in turn), so its blocks are packed once per step,
+// group by group, in batches of four blocks of the same size and number of
+// bodies, one block a SIMD lane.
 //
 // Each lane does exactly its block's operations in the order of the block
 // update of quickstep_sweep.c (the same products, the same order of sums,
@@ -125,52 +126,65 @@ static int coupled_apart(const qs_block *blk, const qs_row *rows)
     return 1;
 }
 
-void dxQuickBatchBlocks(dxArena *a, qs_system *sys, int islands)
+void dxQuickBatchBlocks(dxArena *a, qs_system *sys, qs_group *groups, int ngroups)
 {
     sys->batches = NULL;
     sys->nbatches = 0;
     const int nb = sys->nblocks;
-    if (!dxQuickBlockBatches || islands < 2 || nb < QS_LANES) return;
+    int several = 0;   // a group of two islands or more
+    for (int g = 0; g < ngroups; g++) several |= groups[g].islands >= 2;
+    if (!dxQuickBlockBatches || nb < QS_LANES || !several) return;
     // Each block's batch (slot) by bseq's order: the latest batch of its kind
-    // (size, bodies) if that has a free lane and comes after every batch
-    // holding an earlier block on one of its bodies (last), else a new one.
-    // Per batch: its blocks (count) and their common number of coupled rows
-    // (nc; -1: they differ).
+    // (size, bodies) in its group if that has a free lane and comes after
+    // every batch holding an earlier block on one of its bodies (last), else
+    // a new one. Per batch: its blocks (count) and their common number of
+    // coupled rows (nc; -1: they differ). Per group: its first batch.
     int *last = DX_ARENA_ARRAY(a, int, sys->nbodies);
     int *slot = DX_ARENA_ARRAY(a, int, nb);
     int *count = DX_ARENA_ARRAY(a, int, nb), *nc = DX_ARENA_ARRAY(a, int, nb);
+    int *first = DX_ARENA_ARRAY(a, int, ngroups + 1);
     int open[2 * (QS_MAX_BLOCK + 1)];   // per kind: its latest batch
     for (int b = 0; b < sys->nbodies; b++) last[b] = -1;
-    for (int k = 0; k < 2 * (QS_MAX_BLOCK + 1); k++) open[k] = -1;
     int nbatch = 0, full = 0;
-    for (int k = 0; k < nb; k++) {
-        const qs_block *blk = sys->bseq[k];
-        const int b0 = blk->o0 / 6, b1 = blk->o1 / 6;
-        int after = last[b0];
-        if (blk->two && last[b1] > after) after = last[b1];
-        const int kind = 2 * blk->n + blk->two;
-        int t = open[kind];
-        const int ncoupled = coupled_apart(blk, sys->rows) ? blk->ncoupled : -1;
-        if (t < 0 || t <= after || count[t] == QS_LANES) {
-            t = open[kind] = nbatch++;
-            count[t] = 0;
-            nc[t] = ncoupled;
+    for (int g = 0; g < ngroups; g++) {
+        first[g] = nbatch;
+        for (int k = 0; k < 2 * (QS_MAX_BLOCK + 1); k++) open[k] = -1;
+        const int apart = groups[g].islands < 2;   // each block a batch of its own
+        for (int k = groups[g].block0; k < groups[g].block0 + groups[g].nblocks; k++) {
+            const qs_block *blk = sys->bseq[k];
+            const int b0 = blk->o0 / 6, b1 = blk->o1 / 6;
+            int after = last[b0];
+            if (blk->two && last[b1] > after) after = last[b1];
+            const int kind = 2 * blk->n + blk->two;
+            int t = open[kind];
+            const int ncoupled = coupled_apart(blk, sys->rows) ? blk->ncoupled : -1;
+            if (apart || t < 0 || t <= after || count[t] == QS_LANES) {
+                t = open[kind] = nbatch++;
+                count[t] = 0;
+                nc[t] = ncoupled;
+            }
+            if (nc[t] != ncoupled) nc[t] = -1;
+            if (++count[t] == QS_LANES) full++;
+            slot[k] = t;
+            last[b0] = t;
+            if (blk->two) last[b1] = t;
         }
-        if (nc[t] != ncoupled) nc[t] = -1;
-        if (++count[t] == QS_LANES) full++;
-        slot[k] = t;
-        last[b0] = t;
-        if (blk->two) last[b1] = t;
     }
+    first[ngroups] = nbatch;
     if (full == 0) return;
     // The sweep's entries: a full batch is one, a partial one's blocks are
     // one each (start: each batch's first entry; fill: its blocks so far).
-    int *start = DX_ARENA_ARRAY(a, int, nbatch), *fill = DX_ARENA_ARRAY(a, int, nbatch);
+    int *start = DX_ARENA_ARRAY(a, int, nbatch + 1), *fill = DX_ARENA_ARRAY(a, int, nbatch);
     sys->nbatches = 0;
     for (int t = 0; t < nbatch; t++) {
         start[t] = sys->nbatches;
         sys->nbatches += count[t] == QS_LANES ? 1 : count[t];
         fill[t] = 0;
+    }
+    start[nbatch] = sys->nbatches;
+    for (int g = 0; g < ngroups; g++) {
+        groups[g].batch0 = start[first[g]];
+        groups[g].nbatches = start[first[g + 1]] - groups[g].batch0;
     }
     qs_batch *out = DX_ARENA_ARRAY(a, qs_batch, sys->nbatches);
     for (int k = 0; k < nb; k++) {
