@@ -225,16 +225,17 @@ static inline unsigned ray_slots(const ray_lanes *r, const dxTriMeshNode *node, 
 static inline __attribute__((always_inline)) void prefetch_slot(const dxTriMeshData *d,
                                                                 const dxTriMeshNode *node, int j)
 {
+    const char *p;
+    size_t size;
     if (node->count[j] == 0) {
-        // A node is two whole lines (the nodes start at a line's start).
-        const char *p = (const char *)&d->nodes[node->first[j]];
-        __builtin_prefetch(p);
-        __builtin_prefetch(p + 64);
+        p = (const char *)&d->nodes[node->first[j]];
+        size = sizeof(dxTriMeshNode);
+    } else if (d->leaf_vertices) {
+        p = (const char *)(d->leaf_vertices + 9 * node->first[j]);
+        size = 9 * sizeof(dReal) * (size_t)node->count[j];
+    } else {
         return;
     }
-    if (!d->leaf_vertices) return;
-    const char *p = (const char *)(d->leaf_vertices + 9 * node->first[j]);
-    size_t size = 9 * sizeof(dReal) * (size_t)node->count[j];
     // Every line the bytes [p, p + size) touch: they need not start a line,
     // so the last byte's line too (a loop from p's line would run a count
     // of times that varies with the alignment, which a predictor misses).
@@ -265,34 +266,29 @@ static void keep_hit(dxTriScratch *m, int max, dReal dist, int tri, const dReal 
     for (int j = 0; j < 3; j++) r->n[j] = n[j];
 }
 
-// The slots of nodes[i] that the ray enters within limit (rounded up to
-// a float), nearest first: the nearest is returned (node * 4 + slot, or -1
-// if none) with where the ray enters it in *near, to be walked at once;
-// the others are stacked, the farthest first, with where it enters them,
-// and their memory asked for.
-static inline int push_slots(const dxTriMeshData *d, int i, const ray_lanes *r, float limit,
-                             int *stack, float *entry, int *top, float *near)
+// Stack the slots of nodes[i] that the ray enters within limit (rounded
+// up to a float), the farthest first (so the nearest is walked first), with
+// where it enters.
+static inline void push_slots(const dxTriMeshData *d, int i, const ray_lanes *r, float limit,
+                              int *stack, float *entry, int *top)
 {
     const dxTriMeshNode *node = &d->nodes[i];
     float enter[4];
     int sorted[4], n = 0;
     for (unsigned m = ray_slots(r, node, limit, enter); m; m &= m - 1) {
         int j = __builtin_ctz(m), k = n++;   // insertion by entry, ties in slot order
+        prefetch_slot(d, node, j);
         while (k > 0 && enter[sorted[k - 1]] > enter[j]) {
             sorted[k] = sorted[k - 1];
             k--;
         }
         sorted[k] = j;
     }
-    if (n == 0) return -1;
-    while (n > 1) {
+    while (n > 0) {
         int j = sorted[--n];
-        prefetch_slot(d, node, j);
         stack[*top] = 4 * i + j;
         entry[(*top)++] = enter[j];
     }
-    *near = enter[sorted[0]];
-    return 4 * i + sorted[0];
 }
 
 // The tree is walked along the ray, nearer slot first; once `max` hits
@@ -316,29 +312,19 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
     dxTriScratchAddRaw(h, max);
     // Each slot on the stack (node * 4 + slot) with the distance at which
     // the ray enters it: popped beyond the farthest hit kept, it is skipped
-    // untested. A node stacks at most 3 and the four-way depth is under 17.
+    // untested. A node pushes at most 4 and the four-way depth is under 17.
     int stack[128], top = 0;
     float entry[128];
     dReal limit = ray->length;   // the farthest hit kept once `max` are
     float limit_up = dxFloatAbove(limit);
-    // The slot walked next (node * 4 + slot, or -1: the stack's top) and
-    // where the ray enters it.
-    float near;
-    int next = push_slots(d, 0, &lanes, limit_up, stack, entry, &top, &near);
-    for (;;) {
-        int id = next;
-        if (id < 0) {
-            if (top == 0) break;
-            top--;
-            id = stack[top];
-            near = entry[top];
-        }
-        next = -1;
-        if (near > limit) continue;
-        const dxTriMeshNode *node = &d->nodes[id >> 2];
-        int slot = id & 3, first = node->first[slot];
+    push_slots(d, 0, &lanes, limit_up, stack, entry, &top);
+    while (top > 0) {
+        top--;
+        if (entry[top] > limit) continue;
+        const dxTriMeshNode *node = &d->nodes[stack[top] >> 2];
+        int slot = stack[top] & 3, first = node->first[slot];
         if (node->count[slot] == 0) {
-            next = push_slots(d, first, &lanes, limit_up, stack, entry, &top, &near);
+            push_slots(d, first, &lanes, limit_up, stack, entry, &top);
             continue;
         }
         // Only the vertices are read until a hit (memory traffic is what a
@@ -371,9 +357,8 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
                         crossed |= 1u << l;
                 }
             }
-            for (; crossed; crossed &= crossed - 1) {   // the crossed ones, in order
-                int l = __builtin_ctz(crossed);
-                if (dist[l] > limit) continue;
+            for (int l = 0; l < 2; l++) {
+                if (!(crossed >> l & 1) || dist[l] > limit) continue;
                 int ti = d->order[j + l];
                 if (dxTriMeshIsDegenerate(d, ti)) continue;
                 if (m->ray_callback && !m->ray_callback(o1, o2, ti, bu[l], bv[l])) continue;
