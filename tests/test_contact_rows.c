@@ -21,13 +21,7 @@ static void rows_over_defaults(dWorldID w, dxJoint *j, dReal h, dReal *J, dReal 
 {
     const int m = j->rows.m;
     for (int i = 0; i < m * DX_ROW_SKIP; i++) J[i] = 0;
-    for (int i = 0; i < m; i++) {
-        c[i] = 0;
-        cfm[i] = w->cfm;
-        lo[i] = -dInfinity;
-        hi[i] = dInfinity;
-        findex[i] = -1;
-    }
+    dxJointRowsDefaults(w, m, c, cfm, lo, hi, findex);
     dxJointRows info = { .fps = 1 / h, .erp = w->erp, .rowskip = DX_ROW_SKIP, .J1l = J,
                          .J1a = J + 3, .J2l = J + 6, .J2a = J + 9, .c = c, .cfm = cfm,
                          .lo = lo, .hi = hi, .findex = findex };

@@ -926,14 +926,14 @@ __attribute__((target("avx2"))) static int flush_pairs(const dx_hull *a, const d
         pb->i[k] = pb->i[n & ~3u];
         pb->j[k] = pb->j[n & ~3u];
     }
-    uint64_t todo = ~screen_pairs(a, b, pb, es);
-    if (n < 64) todo &= ((uint64_t)1 << n) - 1;
+    uint64_t to_test = ~screen_pairs(a, b, pb, es);
+    if (n < 64) to_test &= ((uint64_t)1 << n) - 1;
     if (a->lone || b->lone)
         for (unsigned k = 0; k < n; k++)
-            todo |= (uint64_t)((a->lone >> pb->i[k] | b->lone >> pb->j[k]) & 1) << k;
+            to_test |= (uint64_t)((a->lone >> pb->i[k] | b->lone >> pb->j[k]) & 1) << k;
     pb->n = 0;
-    for (; todo; todo &= todo - 1) {
-        unsigned k = (unsigned)__builtin_ctzll(todo);
+    for (; to_test; to_test &= to_test - 1) {
+        unsigned k = (unsigned)__builtin_ctzll(to_test);
         if (!edge_candidate(a, (unsigned)pb->i[k], b, (unsigned)pb->j[k], es)) return 0;
     }
     return 1;
