@@ -43,7 +43,7 @@ struct MultipointConfiguration : btDefaultCollisionConfiguration {
     }
 };
 
-// The collision world (no dynamics), made once at the first collision.
+// A collision world (no dynamics), one a thread (the_world).
 struct World {
     MultipointConfiguration config;
     btCollisionDispatcher dispatcher{&config};
@@ -51,10 +51,12 @@ struct World {
     btCollisionWorld world{&dispatcher, &broadphase, &config};
 };
 
-// The world, made at the first call (and freed at exit).
+// This thread's world, made at its first call (freed when the thread ends):
+// Bullet's dispatcher takes each pair's algorithm from its own pool, which
+// is not safe to share, so threads colliding at once each have their own.
 World &the_world()
 {
-    static World w;
+    static thread_local World w;
     return w;
 }
 
