@@ -90,8 +90,8 @@ static inline qc_v4 qc_neg(qc_v4 x)
 #if defined(__GNUC__)
 QS_INLINE qc_v4 qc_splat(dReal a)
 {
-    const qc_v4 v = { a, a, a, a };   // (a broadcast)
-    return v;
+    const qc_v4 v = { a };   // (then spread: one vbroadcastsd with AVX2)
+    return __builtin_shufflevector(v, v, 0, 0, 0, 0);
 }
 #else
 static inline qc_v4 qc_splat(dReal a)
