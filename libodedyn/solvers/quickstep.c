@@ -175,10 +175,9 @@ QS_INLINE void random_places(uint32_t state, unsigned lo, unsigned count, unsign
 
 // What the reshuffles of a step need, per row of the system (row index):
 // normal: the row that bounds it if that one is in its island's order (a
-// friction row's normal row), else NO_ROW; at: where the current reshuffle
-// put the row, plus that reshuffle's base (below). Unsigned: row indices
-// index without widening.
-#define NO_ROW (~0u)
+// friction row's normal row: sys->normal, made with the rows), else
+// QS_NO_ROW; at: where the current reshuffle put the row, plus that
+// reshuffle's base (below). Unsigned: row indices index without widening.
 typedef struct qs_reorder {
     const unsigned *normal;
     unsigned *at;
@@ -220,7 +219,7 @@ QS_INLINE void place(unsigned *o, size_t k, unsigned r, unsigned base, unsigned 
 {
     at[r] = base + (unsigned)k;
     const unsigned nr = normal[r];
-    if (nr == NO_ROW) return;
+    if (nr == QS_NO_ROW) return;
     const unsigned a = at[nr] - base;
     if (a >= n) return;        // the normal row comes below k
     const unsigned f = o[a];   // nr, or a friction row that took its place
@@ -359,23 +358,13 @@ static void interleave_blocks(const qs_system *sys, const qs_island *parts, cons
 }
 
 // The reshuffles' data for the step (a: the world arena): each row's normal
-// row, through sys->at (lambda position to row: set for the rows in order as
-// they come, a contact's normal row before its friction rows; -1 for the
-// positions of no row in order, the constant 1's and the blocks'), and at[]
-// from ~0.
+// row (made with the rows), and at[] from ~0.
 static qs_reorder reorder_begin(dxArena *a, qs_system *sys)
 {
-    unsigned *normal = DX_ARENA_ARRAY(a, unsigned, sys->nrows + 1);
     unsigned *at = DX_ARENA_ARRAY(a, unsigned, sys->nrows + 1);
-    const int *order = sys->order, *pos = sys->row_pos, *f = sys->row_f, n = sys->norder;
-    int *row = sys->at;
-    for (int k = 0; k < n; k++) {
-        const int r = order[k];
-        row[pos[r]] = r;
-        normal[r] = (unsigned)row[f[r]];   // -1: NO_ROW
-        at[r] = ~0u;
-    }
-    qs_reorder re = { normal, at, shuffle_avx2() };
+    const int *order = sys->order, n = sys->norder;
+    for (int k = 0; k < n; k++) at[order[k]] = ~0u;
+    qs_reorder re = { sys->normal, at, shuffle_avx2() };
     return re;
 }
 

@@ -17,9 +17,10 @@
 //    (a contact with the ground, most of them in a heap) skips its second
 //    body's zeros, which would add exact zeros.
 // Each island has its own range of bodies in fc, of lambda positions, of
-// blocks and of rows. lambda and fc start at zero, except for contacts that
-// start warm (quickstep.c), whose lambdas and their M^-1 J^T are set while
-// the rows are built.
+// blocks and of rows. lambda and fc start at zero, set while the rows are
+// built (an island's fc, then each joint's lambdas), except for contacts
+// that start warm (quickstep.c), whose lambdas and their M^-1 J^T are set
+// there too.
 
 #ifndef DX_QUICKSTEP_H
 #define DX_QUICKSTEP_H
@@ -200,8 +201,8 @@ typedef struct qs_system {
     const qs_batch *batches; // bseq packed in batches (NULL: sweep bseq)
     int nbatches;
     int *seq;              // order of all islands, interleaved group by group
-    int *at;               // m + 1: the row in order per lambda position (-1: none)
-    int *row_pos, *row_f;  // per row: its pos and f (compact copies for the reordering)
+    unsigned *normal;      // per row in order: the row in order whose lambda bounds it
+                           // (a contact's normal row, made before it), else QS_NO_ROW
     dReal *lambda;         // m + 1: the last holds the constant 1
     dReal *fc;             // 6 per body (and island dummy): M^-1 J^T lambda
     qs_feedback *feedback;
@@ -212,6 +213,9 @@ typedef struct qs_system {
     qs_scratch *scratch;   // per-joint build scratch
     dxWarmCache *warm;     // the world's contact cache (NULL: no contacts yet)
 } qs_system;
+
+// A row without a normal row in order (qs_system.normal).
+#define QS_NO_ROW (~0u)
 
 // What the build needs about an island (quickstep_build.c).
 typedef struct qs_input {

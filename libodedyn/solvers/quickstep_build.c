@@ -533,9 +533,11 @@ static void fill_row(const qs_input *in, const qs_jrows *jr, int i, const int *p
 // The joint's rows outside its blocks (pos[i] < 0 after make_blocks): their
 // lambda positions from *next on, then their rows: first those coupled to
 // the joint's block (blk, if it has one), then the others, which go into
-// sys->order. done: scratch for the joint's rows.
+// sys->order, each with its normal row (sys->normal: the row of its findex
+// if that one went into order before it). done, row: scratch for the
+// joint's rows.
 static void make_rows(const qs_input *in, const qs_jrows *jr, qs_block *blk, qs_jblock *jb,
-                      qs_system *sys, int *pos, int *next, char *done)
+                      qs_system *sys, int *pos, int *next, char *done, unsigned *row)
 {
     int nx = *next;
     for (int i = 0; i < jr->m; i++) {
@@ -554,12 +556,13 @@ static void make_rows(const qs_input *in, const qs_jrows *jr, qs_block *blk, qs_
         }
         blk->ncoupled = sys->nrows - blk->coupled;
     }
+    for (int i = 0; i < jr->m; i++) row[i] = QS_NO_ROW;
     for (int i = 0; i < jr->m; i++) {
         if (done[i]) continue;
-        const qs_row *q = &sys->rows[sys->nrows];
         fill_row(in, jr, i, pos, sys->m, NULL, NULL, &sys->rows[sys->nrows]);
-        sys->row_pos[sys->nrows] = q->pos;
-        sys->row_f[sys->nrows] = q->f;
+        const int f = jr->findex[i];
+        row[i] = (unsigned)sys->nrows;
+        sys->normal[sys->nrows] = f >= 0 && f <= i ? row[f] : QS_NO_ROW;
         sys->order[sys->norder++] = sys->nrows++;
     }
 }
@@ -671,6 +674,7 @@ struct qs_scratch {
     struct qs_jrows *jrows;
     int *pos;
     char *done;
+    unsigned *row;   // per row of the joint: its row in order, or QS_NO_ROW
 };
 
 // Keep what the joint's feedback needs: its J and lambda positions.
@@ -747,6 +751,16 @@ static qs_jrows *fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h
     return jrows;
 }
 
+// x[0, n) = 0, a body's six numbers at a time in vector stores (memset of
+// a few thousand numbers is `rep stosb`, which counts as an instruction a
+// byte), then one by one.
+static void zero_numbers(dReal *x, int n)
+{
+    int k = 0;
+    for (; k + 6 <= n; k += 6) memset(x + k, 0, 6 * sizeof(dReal));
+    for (; k < n; k++) x[k] = 0;
+}
+
 void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_system *sys)
 {
     dxArena *a = w->arena;
@@ -769,8 +783,8 @@ void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_syst
     sys->warm = dxQuickWarmBegin(w, ncontacts);
     sys->m = m;
     sys->nbodies = sys->nblocks = sys->nrows = sys->norder = sys->nfeedback = sys->next = 0;
-    sys->lambda = DX_ARENA_ARRAY(a, dReal, m + 1);
-    sys->fc = DX_ARENA_ARRAY(a, dReal, 6 * (size_t)nbodies);
+    sys->lambda = DX_ARENA_ARRAY(a, dReal, m + 1);   // zeros or warm: the build
+    sys->fc = DX_ARENA_ARRAY(a, dReal, 6 * (size_t)nbodies);   // zeros: dxQuickBuild
     sys->rates = DX_ARENA_ARRAY(a, dReal, 6 * (size_t)nbodies);
     sys->inv_mass = DX_ARENA_ARRAY(a, dReal, nbodies);
     sys->inv_inertia = DX_ARENA_ARRAY(a, dReal, 12 * (size_t)nbodies);
@@ -779,19 +793,15 @@ void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_syst
     sys->rows = DX_ARENA_ARRAY(a, qs_row, m + 1);
     sys->order = DX_ARENA_ARRAY(a, int, m + 1);
     sys->seq = DX_ARENA_ARRAY(a, int, m + 1);
-    sys->at = DX_ARENA_ARRAY(a, int, m + 1);
-    sys->row_pos = DX_ARENA_ARRAY(a, int, m + 1);
-    sys->row_f = DX_ARENA_ARRAY(a, int, m + 1);
-    memset(sys->at, 0xff, sizeof(int) * ((size_t)m + 1));   // -1
+    sys->normal = DX_ARENA_ARRAY(a, unsigned, m + 1);
     sys->feedback = DX_ARENA_ARRAY(a, qs_feedback, nfeedback + 1);
-    memset(sys->fc, 0, sizeof(dReal) * 6 * (size_t)nbodies);
-    memset(sys->lambda, 0, sizeof(dReal) * (size_t)m);
     sys->lambda[m] = 1;
 
     qs_scratch *s = DX_ARENA_ARRAY(a, qs_scratch, 1);
     s->jrows = DX_ARENA_ARRAY(a, qs_jrows, max_nj + 1);
     s->pos = DX_ARENA_ARRAY(a, int, max_m + 1);
     s->done = DX_ARENA_ARRAY(a, char, max_m + 1);
+    s->row = DX_ARENA_ARRAY(a, unsigned, max_m + 1);
     sys->scratch = s;
 }
 
@@ -805,6 +815,7 @@ void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *b
     part->order0 = sys->norder;
     sys->nbodies += is->nb + 1;
     part->nblocks = part->norder = 0;
+    zero_numbers(sys->fc + 6 * (size_t)part->body0, 6 * (is->nb + 1));
     if (is->nj == 0) return;
     const dReal fps = dRecip(h);
     // Every joint's rows first, the bodies' rates after: a limit motor that
@@ -824,6 +835,7 @@ void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *b
             continue;
         }
         joint_sides(&in, jr);
+        zero_numbers(sys->lambda + sys->next, jr->m);   // its lambda positions
         if (jr->equality) {
             const int first = sys->next;
             if (equality_block(w, j, &in, jr, sys)) {
@@ -845,7 +857,7 @@ void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *b
         const int nblocks = sys->nblocks, nrows = sys->nrows;
         qs_jblock jb;
         qs_block *blk = make_blocks(a, jin, jr, sys, s->pos, &sys->next, &jb);
-        make_rows(jin, jr, blk, blk ? &jb : NULL, sys, s->pos, &sys->next, s->done);
+        make_rows(jin, jr, blk, blk ? &jb : NULL, sys, s->pos, &sys->next, s->done, s->row);
         if (j->feedback) keep_feedback(a, j, jr, s->pos, sys);
         // Without blocks the joint's rows are in order and alone (not coupled).
         const int alone = sys->nblocks == nblocks && sys->nrows - nrows == jr->m;

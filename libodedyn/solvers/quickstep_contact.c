@@ -90,8 +90,8 @@ static inline qc_v4 qc_neg(qc_v4 x)
 #if defined(__GNUC__)
 QS_INLINE qc_v4 qc_splat(dReal a)
 {
-    const qc_v4 v = { a, a, a, a };   // (a broadcast)
-    return v;
+    const qc_v4 v = { a };   // (then spread: one vbroadcastsd with AVX2)
+    return __builtin_shufflevector(v, v, 0, 0, 0, 0);
 }
 #else
 static inline qc_v4 qc_splat(dReal a)
@@ -408,31 +408,31 @@ QS_INLINE void append_rows(const qs_input *in, const qs_cbodies *cb, const dxCon
     ints.gfirst = 0;
     ints.gn = 0;
     ints.two = (short)two;
-    int *row_pos = sys->row_pos + nrows, *row_f = sys->row_f + nrows;
+    unsigned *normal = sys->normal + nrows;
     int *order = sys->order + sys->norder;
 #if defined(__GNUC__)
 #pragma GCC unroll 4
 #endif
     for (int i = 0; i < m; i++) {
         qs_row *q = &rows[i];
-        const int fi = r->pyramid[i] ? first : one;
+        const int pyramid = r->pyramid[i] != 0;
         memcpy((char *)q + QS_ROW_INTS, (const char *)&ints + QS_ROW_INTS, QS_ROW_INTS_SIZE);
         q->pos = first + i;
-        q->f = fi;
-        row_pos[i] = first + i;
-        row_f[i] = fi;
+        q->f = pyramid ? first : one;
+        normal[i] = pyramid ? (unsigned)nrows : QS_NO_ROW;
         order[i] = nrows + i;
     }
     sys->nrows = nrows + m;
     sys->norder += m;
     sys->next = first + m;
-    if (!f) return;
-    // lambda is 0 there: a zero force (+-0) leaves it so, the others are
-    // stored (x + 0 is x but for -0).
-    sys->lambda[first] = qc_lane(l, 0) + 0;
-    if (m > 1) sys->lambda[first + 1] = qc_lane(l, 1) + 0;
-    if (m > 2) sys->lambda[first + 2] = qc_lane(l, 2) + 0;
-    start_bodies(sys->fc + cb->o0, sys->fc + cb->o1, rows, m, two, l);
+    // The lambdas start at zero, or warm: there a zero force (+-0) starts
+    // at +0, the others as they are (x + 0 is x but for -0).
+    dReal *lambda = sys->lambda + first;
+    const qc_v4 l0 = f ? qc_add(l, qc_splat(0)) : qc_splat(0);
+    lambda[0] = qc_lane(l0, 0);
+    if (m > 1) lambda[1] = qc_lane(l0, 1);
+    if (m > 2) lambda[2] = qc_lane(l0, 2);
+    if (f) start_bodies(sys->fc + cb->o0, sys->fc + cb->o1, rows, m, two, l);
 }
 
 QS_CONTACT_CLONES void dxQuickContact(const qs_input *in, dxJoint *j, qs_system *sys)

@@ -68,8 +68,8 @@ typedef dReal qs_v4 __attribute__((vector_size(4 * sizeof(dReal))));
 #define v4_mul(x, y) ((x) * (y))
 QS_INLINE qs_v4 v4_splat(dReal a)
 {
-    qs_v4 v = { a, a, a, a };
-    return v;
+    const qs_v4 v = { a };   // (then spread: one vbroadcastsd with AVX2)
+    return __builtin_shufflevector(v, v, 0, 0, 0, 0);
 }
 // [a0 + a2, a1 + a3] + b
 QS_INLINE qs_v2 v4_fold(qs_v4 a, qs_v2 b)
