@@ -538,6 +538,102 @@ static inline __attribute__((always_inline)) unsigned incident_face(const dx_hul
     return incident_face_from(inc, nf, 0, INFINITY, 0);
 }
 
+// Keeps a face contact's point p (of depth depth, the middle of its line
+// inside both hulls at pos) in pts, after the kept ones; *deepest: the
+// first of the deepest.
+static inline void keep_point(hull_point *pts, int *kept, int *deepest, const double pos[3],
+                              double depth)
+{
+    if (*kept == 0 || depth > pts[*deepest].depth) *deepest = *kept;
+    hull_point *q = &pts[(*kept)++];
+    memcpy(q->p, pos, sizeof q->p);
+    q->depth = depth;
+}
+
+#ifdef DX_CLIP_AVX2
+// narrow_from(h, lp, 0, ...) for four lines at once, one a lane (their
+// points' x, y, z; the same direction): every plane in order, with the
+// same products, sums and quotients, each lane's exit kept where less (the
+// earlier of equal values stays, a NaN is passed over: min(t, hi) is t <
+// hi ? t : hi) and its entry where larger, so each lane ends with the
+// numbers narrow_from gives its line alone. Lanes that a plane along the
+// lines has outside by more than tol are set in *bad.
+__attribute__((target("avx2"))) static inline void
+narrow_lanes(const dx_hull *h, const line_planes *lp, __m256d x, __m256d y, __m256d z, double tol,
+             __m256d *lo, __m256d *hi, __m256d *bad)
+{
+    const __m256d low = _mm256_set1_pd(-tol);
+    double par_lim = DX_HULL_EPS * lp->dl;
+    for (unsigned f = 0; f < h->nplanes; f++) {
+        double nd = lp->nd[f];
+        __m256d no = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(h->nx[f]), x),
+                                                 _mm256_mul_pd(_mm256_set1_pd(h->ny[f]), y)),
+                                   _mm256_mul_pd(_mm256_set1_pd(h->nz[f]), z));
+        __m256d gap = _mm256_sub_pd(_mm256_set1_pd(h->wd[f]), no);
+        if (fabs(nd) <= par_lim) {
+            *bad = _mm256_or_pd(*bad, _mm256_cmp_pd(gap, low, _CMP_LT_OQ));
+            continue;
+        }
+        __m256d t = _mm256_div_pd(gap, _mm256_set1_pd(nd));
+        if (nd > 0)
+            *hi = _mm256_min_pd(t, *hi);
+        else
+            *lo = _mm256_max_pd(t, *lo);
+    }
+}
+
+// The kept points of a face contact (face_points_with's last loop) four
+// lines at a time: the points of poly (n) not above the reference face
+// (depth df - nf . p not below 0) whose line p + t nf has a part inside r
+// and inc (their planes' products with nf in lr, li), at the middle of
+// that part, into pts in poly's order (middle_inside_along's numbers);
+// returns how many, *deepest the first of the deepest.
+__attribute__((target("avx2"))) static int kept_points4(const dx_hull *r, const line_planes *lr,
+                                                        const dx_hull *inc, const line_planes *li,
+                                                        const hull_point *poly, int n,
+                                                        const double nf[3], double df,
+                                                        hull_point *pts, int *deepest)
+{
+    const hull_point *below[MAXP + 3];
+    double depth[MAXP];
+    int nb = 0, kept = 0;
+    for (int k = 0; k < n; k++) {
+        double d = df - dot3(nf, poly[k].p);
+        if (d < 0) continue;
+        depth[nb] = d;
+        below[nb++] = &poly[k];
+    }
+    double tol = DX_HULL_EPS * (r->size + inc->size);
+    const __m256d reach_r = _mm256_set1_pd(tol / lr->dl), reach_i = _mm256_set1_pd(tol / li->dl);
+    for (int k = nb; k % 4; k++) below[k] = below[nb - 1];   // the last four padded
+    for (int k = 0; k < nb; k += 4) {
+        __m256d p0 = _mm256_loadu_pd(below[k]->p), p1 = _mm256_loadu_pd(below[k + 1]->p);
+        __m256d p2 = _mm256_loadu_pd(below[k + 2]->p), p3 = _mm256_loadu_pd(below[k + 3]->p);
+        __m256d t0 = _mm256_unpacklo_pd(p0, p1), t1 = _mm256_unpackhi_pd(p0, p1);   // x z, y -
+        __m256d t2 = _mm256_unpacklo_pd(p2, p3), t3 = _mm256_unpackhi_pd(p2, p3);
+        __m256d x = _mm256_permute2f128_pd(t0, t2, 0x20), z = _mm256_permute2f128_pd(t0, t2, 0x31);
+        __m256d y = _mm256_permute2f128_pd(t1, t3, 0x20);
+        __m256d lo = _mm256_set1_pd(-INFINITY), hi = _mm256_set1_pd(INFINITY);
+        __m256d bad = _mm256_setzero_pd();
+        narrow_lanes(r, lr, x, y, z, tol, &lo, &hi, &bad);
+        bad = _mm256_or_pd(bad, _mm256_cmp_pd(lo, _mm256_add_pd(hi, reach_r), _CMP_NLE_UQ));
+        narrow_lanes(inc, li, x, y, z, tol, &lo, &hi, &bad);
+        bad = _mm256_or_pd(bad, _mm256_cmp_pd(lo, _mm256_add_pd(hi, reach_i), _CMP_NLE_UQ));
+        int ok = ~_mm256_movemask_pd(bad);
+        double los[4], his[4];
+        _mm256_storeu_pd(los, lo);
+        _mm256_storeu_pd(his, hi);
+        for (int q = 0; q < 4 && k + q < nb; q++) {
+            if (!(ok >> q & 1)) continue;
+            double t = (los[q] + his[q]) / 2, pos[3];
+            for (int i = 0; i < 3; i++) pos[i] = below[k + q]->p[i] + t * nf[i];
+            keep_point(pts, &kept, deepest, pos, depth[k + q]);
+        }
+    }
+    return kept;
+}
+#endif
+
 // The face contacts: the reference hull r's face f (outward unit nf at
 // offset df, facing the incident hull i). Writes the points, deepest first,
 // at most max (spread), into pts; returns the count (0 if none was found).
@@ -579,18 +675,20 @@ face_points_with(const dx_hull *r, unsigned f, const double nf[3], double df, co
     int kept = 0, deepest = 0;
     line_planes lr, li;
     int along = line_planes_with(r, nf, &lr, avx2) && line_planes_with(inc, nf, &li, avx2);
-    for (int k = 0; k < n; k++) {
-        hull_point *p = &buf[cur][k];
-        double depth = df - dot3(nf, p->p);
-        if (depth < 0) continue;
-        hull_point q;
-        if (along ? !middle_inside_along(r, &lr, inc, &li, p->p, nf, -INFINITY, INFINITY, q.p)
-                  : !middle_inside(r, inc, p->p, nf, -INFINITY, INFINITY, q.p))
-            continue;
-        q.depth = depth;
-        if (kept == 0 || q.depth > pts[deepest].depth) deepest = kept;
-        pts[kept++] = q;
-    }
+#ifdef DX_CLIP_AVX2
+    if (along && avx2)
+        kept = kept_points4(r, &lr, inc, &li, buf[cur], n, nf, df, pts, &deepest);
+    else
+#endif
+        for (int k = 0; k < n; k++) {
+            const hull_point *p = &buf[cur][k];
+            double depth = df - dot3(nf, p->p), pos[3];
+            if (depth < 0) continue;
+            if (along ? !middle_inside_along(r, &lr, inc, &li, p->p, nf, -INFINITY, INFINITY, pos)
+                      : !middle_inside(r, inc, p->p, nf, -INFINITY, INFINITY, pos))
+                continue;
+            keep_point(pts, &kept, &deepest, pos, depth);
+        }
     if (kept == 0) return 0;
     hull_point t = pts[0];
     pts[0] = pts[deepest];
