@@ -991,6 +991,45 @@ __attribute__((target("avx2"))) static inline void edges_of_faces(const dx_hull 
 }
 #endif
 
+#ifdef DX_SIGNS_AVX2
+// The circles' normals (n2 x n1) of b's edges in the set edges, in order,
+// by coordinate into x, y, z, zero past them up to a multiple of four (no
+// sign: no bit in dot_signs4); returns that multiple.
+static inline unsigned pack_circles(const dx_hull *b, uint64_t edges, double *x, double *y,
+                                    double *z)
+{
+    unsigned n = 0;
+    for (; edges; edges &= edges - 1, n++) {
+        unsigned j = (unsigned)__builtin_ctzll(edges);
+        x[n] = b->ex[j];
+        y[n] = b->ey[j];
+        z[n] = b->ez[j];
+    }
+    for (unsigned k = n; k % 4; k++) x[k] = y[k] = z[k] = 0;
+    return up_to_four(n);
+}
+
+// For each of a's faces f in the set faces, the sets of b's edges in
+// near (at most 64) whose circle f's normal is above (above[f]) and
+// below (below[f]): the products of the near edges' circles alone, packed
+// (pack_circles), their bits put back in place by pdep; no bit for the
+// other edges.
+__attribute__((target("avx2,bmi2"))) static inline void
+face_signs_near(const dx_hull *a, const dx_hull *b, uint64_t faces, uint64_t near,
+                uint64_t *above, uint64_t *below)
+{
+    double x[MASK_BITS], y[MASK_BITS], z[MASK_BITS];
+    unsigned n = pack_circles(b, near, x, y, z);
+    for (; faces; faces &= faces - 1) {
+        unsigned f = (unsigned)__builtin_ctzll(faces);
+        uint64_t p, q;
+        dot_signs4(a->wn[f], x, y, z, n, &p, &q);
+        above[f] = _pdep_u64(p, near);
+        below[f] = _pdep_u64(q, near);
+    }
+}
+#endif
+
 // The edges of b whose first face is in the set faces, and whose second
 // face is, into *first and *second (by_f1 and by_f2 over the set's faces);
 // with AVX2 (avx2 1) by edges_of_faces where b has its edges' faces as
@@ -1036,6 +1075,12 @@ masked_edge_pairs_with(const dx_hull *a, const dx_hull *b, edge_search *es, cons
         unsigned f = (unsigned)__builtin_ctzll(m);
         near_b |= first[f] | second[f];
     }
+#ifdef DX_SIGNS_AVX2
+    if (avx2) {   // only the near edges' signs count (cand is within near_b)
+        face_signs_near(a, b, faces, near_b, above, below);
+        faces = 0;
+    }
+#endif
     for (; faces; faces &= faces - 1) {
         unsigned f = (unsigned)__builtin_ctzll(faces);
         dot_signs_padded(a->wn[f], b->ex, b->ey, b->ez, up_to_four(b->nedges), &above[f],
@@ -1254,7 +1299,7 @@ sat_with(dx_hull *a, dx_hull *b, sat_hint *hint, sat_axis *face, sat_axis *edge,
 }
 
 #ifdef DX_SIGNS_AVX2
-__attribute__((target("avx2"))) static int sat_avx2(dx_hull *a, dx_hull *b, sat_hint *hint,
+__attribute__((target("avx2,bmi2"))) static int sat_avx2(dx_hull *a, dx_hull *b, sat_hint *hint,
                                                     sat_axis *face, sat_axis *edge,
                                                     edge_axes *found, double sep[3])
 {
@@ -1266,7 +1311,8 @@ int dx_hull_sat(dx_hull *a, dx_hull *b, sat_hint *hint, sat_axis *face, sat_axis
                 edge_axes *found, double sep[3])
 {
 #ifdef DX_SIGNS_AVX2
-    if (__builtin_cpu_supports("avx2")) return sat_avx2(a, b, hint, face, edge, found, sep);
+    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("bmi2"))
+        return sat_avx2(a, b, hint, face, edge, found, sep);
 #endif
     return sat_with(a, b, hint, face, edge, found, sep, 0);
 }
