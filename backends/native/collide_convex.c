@@ -278,16 +278,23 @@ static int clip_to_face_prism(const dx_hull *h, unsigned f, const double nf[3], 
 
 // ---- pairs ------------------------------------------------------------------------
 
+// The convex geom g's kept hull, posed (dx_hull_posed's convex case, here
+// where the class is known).
+static dx_hull *convex_posed(dxGeom *g)
+{
+    dxConvex *c = (dxConvex *)g;
+    dxConvexPoseIfMoved(c);
+    return &c->hull;
+}
+
 int dxCollideConvexConvex(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)
 {
-    dx_hull *a = dx_hull_posed(o1), *b = dx_hull_posed(o2);
-    return dx_hull_hull(a, b, o1, o2, flags, out, skip);
+    return dx_hull_hull(convex_posed(o1), convex_posed(o2), o1, o2, flags, out, skip);
 }
 
 int dxCollideConvexBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)
 {
-    dx_hull *a = dx_hull_posed(o1), *b = dx_hull_posed(o2);
-    return dx_hull_hull(a, b, o1, o2, flags, out, skip);
+    return dx_hull_hull(convex_posed(o1), dx_hull_posed(o2), o1, o2, flags, out, skip);
 }
 
 // The hull's points below the plane, deepest first, at most max.
