@@ -1349,6 +1349,14 @@ static int edge_may_clear(const dx_hull *a, unsigned i, const dx_hull *b, unsign
     return depth <= (best * (1 + 1e-9) + margin) * fabs(cn);
 }
 
+// fmin(a, b) without the library's call (the clearance takes one per
+// face): the other where one is a NaN, else a < b ? a : b, so that of a
+// +0 and a -0 b is kept, as the library's minsd keeps it.
+static inline double least(double a, double b)
+{
+    return b != b ? a : a < b ? a : b;
+}
+
 // The exact translation of a along the unit n that parts it from b (as
 // box_clearance in collide_box.c): a moved by t n is clear of b along a
 // candidate axis m once t (m . n) > s(m); the least such t over the axes
@@ -1370,7 +1378,7 @@ double dx_hull_clearance(const dx_hull *a, const dx_hull *b, const double n[3], 
                 double s = !found->faces_kept              ? depth_along(a, b, m)
                            : found->tested[side] >> f & 1 ? found->face_s[side][f]
                                                           : INFINITY;
-                best = fmin(best, s / mn);
+                best = least(best, s / mn);
             }
         }
     }
@@ -1380,14 +1388,14 @@ double dx_hull_clearance(const dx_hull *a, const dx_hull *b, const double n[3], 
         double m[3], both[2];
         unit_cross(&a->we[i], &b->we[j], m);
         pair_depths(a, i, b, j, m, both);
-        best = fmin(best, edge_clearance(n, m, both));
+        best = least(best, edge_clearance(n, m, both));
     }
     for (unsigned i = 0; found->overflow && i < a->nedges; i++) {
         for (unsigned j = 0; j < b->nedges; j++) {
             double m[3], both[2];
             if (!edge_axis(a, i, b, j, m)) continue;
             pair_depths(a, i, b, j, m, both);
-            best = fmin(best, edge_clearance(n, m, both));
+            best = least(best, edge_clearance(n, m, both));
         }
     }
     return best;
