@@ -227,18 +227,40 @@ int dx_hull_axis_separates(const dx_hull *a, const dx_hull *b, const double n[3]
 // its faces' floors, its edges.
 enum { POSED_FLOORS = 1, POSED_EDGES = 2 };
 
+#ifdef DX_SIGNS_AVX2
+// pose_floors' first faces four at a time; returns how many it made.
+__attribute__((target("avx2"))) static inline unsigned floors4(dx_hull *h, double slack)
+{
+    const __m256d sl = _mm256_set1_pd(slack);
+    unsigned f = 0;
+    for (; f + 4 <= h->nplanes; f += 4) {
+        __m256d dev = h->plane_dev ? _mm256_loadu_pd(h->plane_dev + f) : _mm256_setzero_pd();
+        _mm256_storeu_pd(h->face_low + f,
+                         _mm256_sub_pd(_mm256_sub_pd(_mm256_loadu_pd(h->wd + f), dev), sl));
+    }
+    return f;
+}
+#endif
+
 // Poses h's faces' floors (once per pose): a floor under n . x over face
 // f's polygon, without visiting it: the plane's offset less how far the
 // polygon dips under the plane in the hull's frame (plane_dev), less what
 // R's departure from a rotation can add (n . x = (n' R^T R x' + ...) /
 // |n'|: |E| size, E = R^T R - I), less rounding (the products' sizes
-// times 8 units in the last place).
-static void pose_floors(dx_hull *h)
+// times 8 units in the last place). With AVX2 (avx2 1, in a function
+// built for it) four faces at a time (the same differences).
+static inline __attribute__((always_inline)) void pose_floors(dx_hull *h, int avx2)
 {
     if (*h->edges_posed & POSED_FLOORS) return;
     double reach = h->size + fabs(h->c[0]) + fabs(h->c[1]) + fabs(h->c[2]);
     double slack = h->rot_err * h->size + 8 * DBL_EPSILON * reach;
-    for (unsigned f = 0; f < h->nplanes; f++)
+    unsigned f = 0;
+#ifdef DX_SIGNS_AVX2
+    if (avx2) f = floors4(h, slack);
+#else
+    (void)avx2;
+#endif
+    for (; f < h->nplanes; f++)
         h->face_low[f] = h->wd[f] - (h->plane_dev ? h->plane_dev[f] : 0) - slack;
     *h->edges_posed |= POSED_FLOORS;
 }
@@ -1226,8 +1248,8 @@ sat_with(dx_hull *a, dx_hull *b, sat_hint *hint, sat_axis *face, sat_axis *edge,
     for (int i = 0; i < 3; i++) scale += fabs(a->c[i]) + fabs(b->c[i]);
     found->margin = 1e-12 * scale;
     face->depth = edge->depth = INFINITY;
-    pose_floors(a);
-    pose_floors(b);
+    pose_floors(a, avx2);
+    pose_floors(b, avx2);
     // A face's depth is at least its gap: faces clearly deeper than a first
     // guess (the hinted face, else the face of least gap) are skipped.
     double gaps[2][MASK_BITS], guess = INFINITY;
