@@ -1379,6 +1379,37 @@ static inline double least(double a, double b)
     return b != b ? a : a < b ? a : b;
 }
 
+#ifdef DX_SIGNS_AVX2
+// The face axes' part of dx_hull_clearance where found keeps the faces'
+// depths: each face's m . n made four at a time (as dot3 makes it, from
+// the padded normal rows; a's axes are its normals turned, m . n = -(n_f
+// . n) but for the sign of a zero, which m . n > 0 leaves out either way),
+// then the faces facing n taken in dx_hull_clearance's order.
+__attribute__((target("avx2"))) static double faces_clearance4(const dx_hull *a, const dx_hull *b,
+                                                               const double n[3], double best,
+                                                               const edge_axes *found)
+{
+    const __m256d n0 = _mm256_set1_pd(n[0]), n1 = _mm256_set1_pd(n[1]), n2 = _mm256_set1_pd(n[2]);
+    for (int side = 0; side < 2; side++) {
+        const dx_hull *h = side ? b : a;
+        double prod[KEPT_FACES];
+        for (unsigned f = 0; f < h->nplanes; f += 4)
+            _mm256_storeu_pd(prod + f,
+                             _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(h->nx + f), n0),
+                                                         _mm256_mul_pd(_mm256_loadu_pd(h->ny + f), n1)),
+                                           _mm256_mul_pd(_mm256_loadu_pd(h->nz + f), n2)));
+        for (unsigned f = 0; f < h->nplanes; f++) {
+            double mn = side ? prod[f] : -prod[f];
+            if (mn > 0) {
+                double s = found->tested[side] >> f & 1 ? found->face_s[side][f] : INFINITY;
+                best = least(best, s / mn);
+            }
+        }
+    }
+    return best;
+}
+#endif
+
 // The exact translation of a along the unit n that parts it from b (as
 // box_clearance in collide_box.c): a moved by t n is clear of b along a
 // candidate axis m once t (m . n) > s(m); the least such t over the axes
@@ -1388,6 +1419,11 @@ double dx_hull_clearance(const dx_hull *a, const dx_hull *b, const double n[3], 
                          const edge_axes *found)
 {
     double best = s_n;
+#ifdef DX_SIGNS_AVX2
+    if (found->faces_kept && __builtin_cpu_supports("avx2")) {
+        best = faces_clearance4(a, b, n, best, found);
+    } else
+#endif
     for (int side = 0; side < 2; side++) {
         const dx_hull *h = side ? b : a;
         for (unsigned f = 0; f < h->nplanes; f++) {
