@@ -1031,6 +1031,46 @@ static inline unsigned pack_circles(const dx_hull *b, uint64_t edges, double *x,
     return up_to_four(n);
 }
 
+// face_signs_near for at most eight near edges: their circles gathered
+// into registers (lanes past them zero), each face's products with them
+// made as dot_signs4 makes them.
+__attribute__((target("avx2,bmi2"))) static inline void
+face_signs_near8(const dx_hull *a, const dx_hull *b, uint64_t faces, uint64_t near,
+                 uint64_t *above, uint64_t *below)
+{
+    int32_t idx[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
+    int n = 0;
+    for (uint64_t e = near; e; e &= e - 1) idx[n++] = (int32_t)__builtin_ctzll(e);
+    const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    __m256i live = _mm256_cmpgt_epi32(_mm256_set1_epi32(n), lane);
+    __m256i at = _mm256_loadu_si256((const __m256i *)idx);
+    __m128i at0 = _mm256_castsi256_si128(at), at1 = _mm256_extracti128_si256(at, 1);
+    __m256d m0 = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(_mm256_castsi256_si128(live)));
+    __m256d m1 = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(_mm256_extracti128_si256(live, 1)));
+    const __m256d zero = _mm256_setzero_pd();
+    __m256d x0 = _mm256_mask_i32gather_pd(zero, b->ex, at0, m0, 8);
+    __m256d y0 = _mm256_mask_i32gather_pd(zero, b->ey, at0, m0, 8);
+    __m256d z0 = _mm256_mask_i32gather_pd(zero, b->ez, at0, m0, 8);
+    __m256d x1 = _mm256_mask_i32gather_pd(zero, b->ex, at1, m1, 8);
+    __m256d y1 = _mm256_mask_i32gather_pd(zero, b->ey, at1, m1, 8);
+    __m256d z1 = _mm256_mask_i32gather_pd(zero, b->ez, at1, m1, 8);
+    for (; faces; faces &= faces - 1) {
+        unsigned f = (unsigned)__builtin_ctzll(faces);
+        __m256d c0 = _mm256_set1_pd(a->wn[f][0]), c1 = _mm256_set1_pd(a->wn[f][1]);
+        __m256d c2 = _mm256_set1_pd(a->wn[f][2]);
+        __m256d d0 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(c0, x0), _mm256_mul_pd(c1, y0)),
+                                   _mm256_mul_pd(c2, z0));
+        __m256d d1 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(c0, x1), _mm256_mul_pd(c1, y1)),
+                                   _mm256_mul_pd(c2, z1));
+        uint64_t p = (uint64_t)(_mm256_movemask_pd(_mm256_cmp_pd(d0, zero, _CMP_GT_OQ)) |
+                                _mm256_movemask_pd(_mm256_cmp_pd(d1, zero, _CMP_GT_OQ)) << 4);
+        uint64_t q = (uint64_t)(_mm256_movemask_pd(_mm256_cmp_pd(d0, zero, _CMP_LT_OQ)) |
+                                _mm256_movemask_pd(_mm256_cmp_pd(d1, zero, _CMP_LT_OQ)) << 4);
+        above[f] = _pdep_u64(p, near);
+        below[f] = _pdep_u64(q, near);
+    }
+}
+
 // For each of a's faces f in the set faces, the sets of b's edges in
 // near (at most 64) whose circle f's normal is above (above[f]) and
 // below (below[f]): the products of the near edges' circles alone, packed
@@ -1040,6 +1080,10 @@ __attribute__((target("avx2,bmi2"))) static inline void
 face_signs_near(const dx_hull *a, const dx_hull *b, uint64_t faces, uint64_t near,
                 uint64_t *above, uint64_t *below)
 {
+    if (__builtin_popcountll(near) <= 8) {
+        face_signs_near8(a, b, faces, near, above, below);
+        return;
+    }
     double x[MASK_BITS], y[MASK_BITS], z[MASK_BITS];
     unsigned n = pack_circles(b, near, x, y, z);
     for (; faces; faces &= faces - 1) {
