@@ -605,7 +605,7 @@ __attribute__((target("avx2"))) static int kept_points4(const dx_hull *r, const 
     }
     double tol = DX_HULL_EPS * (r->size + inc->size);
     const __m256d reach_r = _mm256_set1_pd(tol / lr->dl), reach_i = _mm256_set1_pd(tol / li->dl);
-    for (int k = nb; k < ((nb + 3) & ~3); k++) below[k] = below[nb - 1];   // the last four padded
+    if (nb) below[nb] = below[nb + 1] = below[nb + 2] = below[nb - 1];   // the last four padded
     for (int k = 0; k < nb; k += 4) {
         __m256d p0 = _mm256_loadu_pd(below[k]->p), p1 = _mm256_loadu_pd(below[k + 1]->p);
         __m256d p2 = _mm256_loadu_pd(below[k + 2]->p), p3 = _mm256_loadu_pd(below[k + 3]->p);
