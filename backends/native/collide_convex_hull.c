@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
-// collide_convex_hull.c -- convex hulls in the world, and hull against hull.
+// collide_convex_hull.c -- convex hulls in the world, and hull against hull
+// (the colliders of a convex geom against a convex geom or a box).
 // A convex geom's hull is posed once per pose (kept on the geom); a box's
 // on each call. The pair test is the separating axis test of
 // collide_convex_sat.c. As for box-box (collide_box.c), an edge axis wins
@@ -865,8 +866,11 @@ static void keep_face(dx_hull *h, dxHullAxisHint *found, const void *other, int 
     e->other_point = other_point;
 }
 
-int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
-                 dContactGeom *out, int skip)
+// dx_hull_hull, built into each caller (the colliders below call it
+// with nothing left to do after it).
+static inline __attribute__((always_inline)) int hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1,
+                                                           dxGeom *o2, int flags,
+                                                           dContactGeom *out, int skip)
 {
     // Bounding spheres apart part the hulls (a margin over the radii'
     // bounds for the rounding here).
@@ -934,4 +938,29 @@ int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
         put(out, k, skip, pts[k].p, face.n, depth, o1, o2);
     }
     return n;
+}
+
+int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
+                 dContactGeom *out, int skip)
+{
+    return hull_hull(a, b, o1, o2, flags, out, skip);
+}
+
+// The convex geom g's kept hull, posed (dx_hull_posed's convex case, here
+// where the class is known).
+static dx_hull *convex_posed(dxGeom *g)
+{
+    dxConvex *c = (dxConvex *)g;
+    dxConvexPoseIfMoved(c);
+    return &c->hull;
+}
+
+int dxCollideConvexConvex(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)
+{
+    return hull_hull(convex_posed(o1), convex_posed(o2), o1, o2, flags, out, skip);
+}
+
+int dxCollideConvexBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)
+{
+    return hull_hull(convex_posed(o1), box_posed(o2), o1, o2, flags, out, skip);
 }
