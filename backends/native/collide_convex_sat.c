@@ -173,9 +173,9 @@ void dx_hull_interval(const dx_hull *h, const double m[3], double *lo, double *h
 #ifdef DX_SIGNS_AVX2
 // dot_range four at a time (the same products): the same least and
 // largest numbers, but for which of +0 and -0 a tie between them gives.
-__attribute__((target("avx2"))) static void dot_range4(const double m[3], const double *x,
-                                                       const double *y, const double *z,
-                                                       unsigned n, double *lo, double *hi)
+__attribute__((target("avx2"))) static inline void dot_range4(const double m[3], const double *x,
+                                                              const double *y, const double *z,
+                                                              unsigned n, double *lo, double *hi)
 {
     __m256d m0 = _mm256_set1_pd(m[0]), m1 = _mm256_set1_pd(m[1]), m2 = _mm256_set1_pd(m[2]);
     __m256d vlo = _mm256_set1_pd(INFINITY), vhi = _mm256_set1_pd(-INFINITY);
@@ -290,7 +290,7 @@ static inline void pose_edge(dx_hull *h, unsigned k)
 // same order: the same numbers).
 _Static_assert(sizeof(dxHullEdge) == 4 * sizeof(int32_t), "an edge is four 32-bit indices");
 _Static_assert(sizeof(dxHullPosedEdge) == 8 * sizeof(double), "a posed edge is eight doubles");
-__attribute__((target("avx2"))) static void pose_edges4(dx_hull *h, unsigned k)
+__attribute__((target("avx2"))) static inline void pose_edges4(dx_hull *h, unsigned k)
 {
     // The four edges' (a, b, f1, f2) into rows a0..a3, b0..b3, f1, f2.
     const __m256i spread = _mm256_setr_epi32(0, 4, 1, 5, 2, 6, 3, 7);
@@ -335,7 +335,7 @@ __attribute__((target("avx2"))) static void pose_edges4(dx_hull *h, unsigned k)
 // Poses h's edges (once per pose, when a test first reaches the edge
 // pairs: not for pairs that a face axis parts); with AVX2 (avx2 1) four
 // at a time.
-static void pose_edges(dx_hull *h, int avx2)
+static inline __attribute__((always_inline)) void pose_edges(dx_hull *h, int avx2)
 {
     if (*h->edges_posed & POSED_EDGES) return;
     unsigned k = 0;
