@@ -875,9 +875,8 @@ typedef struct pair_batch {
 // comparisons as edge_candidate's (no fused multiply-add: the same
 // numbers; a NaN compares false there as here). Lone edges are not looked
 // at here (the caller keeps their pairs).
-__attribute__((target("avx2"))) static uint64_t screen_pairs(const dx_hull *a, const dx_hull *b,
-                                                             const pair_batch *pb,
-                                                             const edge_search *es)
+__attribute__((target("avx2"), always_inline)) static inline uint64_t
+screen_pairs(const dx_hull *a, const dx_hull *b, const pair_batch *pb, const edge_search *es)
 {
     const double *xa = a->we[0].u, *xb = b->we[0].u;
     const double *pa[3] = { a->px, a->py, a->pz }, *pb3[3] = { b->px, b->py, b->pz };
