@@ -726,31 +726,31 @@ static int face_points(const dx_hull *r, unsigned f, const double nf[3], double 
     return face_points_with(r, f, nf, df, inc, max, pts, 0);
 }
 
-// The edge of h through its point v parallel to h's edge e (the copy of
-// that edge on the side facing the other hull), or e itself: its ends.
-static void supporting_edge(const dx_hull *h, unsigned v, const dxHullEdge *e, double p0[3],
+// The edge of h through its point v parallel to h's edge ei (the copy of
+// that edge on the side facing the other hull), or ei itself: its ends.
+// The edges are posed (an edge axis won): each direction and its square
+// are the posed edge's, the same numbers as from its ends.
+static void supporting_edge(const dx_hull *h, unsigned v, unsigned ei, double p0[3],
                             double p1[3])
 {
-    double u[3];
+    const dxHullEdge *e = &h->edges[ei];
+    const double *u = h->we[ei].u;
     dx_hull_vertex(h, e->a, p0);
     dx_hull_vertex(h, e->b, p1);
-    for (int i = 0; i < 3; i++) u[i] = p1[i] - p0[i];
-    double lu = sqrt(dot3(u, u)), best = 0;
+    double lu = sqrt(h->we[ei].uu), best = 0;
     // The edges at v: from the point's list where the hull keeps one.
     unsigned k = h->vert_start ? h->vert_start[v] : 0;
     unsigned end = h->vert_start ? h->vert_start[v + 1] : h->nedges;
     for (; k < end; k++) {
-        const dxHullEdge *f = &h->edges[h->vert_start ? h->vert_edges[k] : k];
+        unsigned fk = h->vert_start ? h->vert_edges[k] : k;
+        const dxHullEdge *f = &h->edges[fk];
         if (f->a != v && f->b != v) continue;
-        double q0[3], q1[3], d[3];
-        dx_hull_vertex(h, f->a, q0);
-        dx_hull_vertex(h, f->b, q1);
-        for (int i = 0; i < 3; i++) d[i] = q1[i] - q0[i];
-        double c = fabs(dot3(d, u)) / (sqrt(dot3(d, d)) * lu);
+        const dxHullPosedEdge *d = &h->we[fk];
+        double c = fabs(dot3(d->u, u)) / (sqrt(d->uu) * lu);
         if (c > best && c > 1 - DX_HULL_EPS) {
             best = c;
-            memcpy(p0, q0, sizeof q0);
-            memcpy(p1, q1, sizeof q1);
+            dx_hull_vertex(h, f->a, p0);
+            dx_hull_vertex(h, f->b, p1);
         }
     }
 }
@@ -765,8 +765,8 @@ static void edge_point(const dx_hull *a, const dx_hull *b, const sat_axis *ax, d
     dx_hull_extent(a, m, &va);
     dx_hull_extent(b, ax->n, &vb);
     double a0[3], a1[3], b0[3], b1[3], u[3], v[3], w[3];
-    supporting_edge(a, va, &a->edges[ax->ea], a0, a1);
-    supporting_edge(b, vb, &b->edges[ax->eb], b0, b1);
+    supporting_edge(a, va, ax->ea, a0, a1);
+    supporting_edge(b, vb, ax->eb, b0, b1);
     for (int i = 0; i < 3; i++) {
         u[i] = a1[i] - a0[i];
         v[i] = b1[i] - b0[i];
