@@ -208,9 +208,8 @@ static int same_bits(const dReal *a, const dReal *b, int n)
     return d == 0;
 }
 
-// The bounding box of the posed points (lo, hi by axis) into box, and
-// their mean into centre (each coordinate summed in the points' order).
-static void box_and_centre(const dxHullPose *pose, unsigned n, double box[6], double centre[3])
+// The bounding box of the posed points (lo, hi by axis) into box.
+static void points_box(const dxHullPose *pose, unsigned n, double box[6])
 {
     const double *p3[3] = { pose->px, pose->py, pose->pz };
     for (int i = 0; i < 3; i++) {
@@ -237,18 +236,13 @@ static void box_and_centre(const dxHullPose *pose, unsigned n, double box[6], do
         box[2 * i] = lo;
         box[2 * i + 1] = hi;
     }
-    double sum[3] = { 0, 0, 0 };
-    for (unsigned v = 0; v < n; v++)
-        for (int i = 0; i < 3; i++) sum[i] += pose->pts[v][i];
-    for (int i = 0; i < 3; i++) centre[i] = sum[i] / n;
 }
 
 #ifdef DX_POSE_AVX2
-// box_and_centre four points at a time for the box (the same least and
-// largest numbers, but for which of +0 and -0 a tie between them gives)
-// and the three coordinates at once for the mean (the same sums).
-__attribute__((target("avx2"))) static void box_and_centre_avx2(const dxHullPose *pose, unsigned n,
-                                                                double box[6], double centre[3])
+// points_box four points at a time (the same least and largest numbers,
+// but for which of +0 and -0 a tie between them gives).
+__attribute__((target("avx2"))) static void points_box_avx2(const dxHullPose *pose, unsigned n,
+                                                            double box[6])
 {
     const double *p3[3] = { pose->px, pose->py, pose->pz };
     __m256d lo[3], hi[3];
@@ -276,10 +270,6 @@ __attribute__((target("avx2"))) static void box_and_centre_avx2(const dxHullPose
         box[2 * i] = a;
         box[2 * i + 1] = b;
     }
-    const __m256i xyz = _mm256_setr_epi64x(-1, -1, -1, 0);
-    __m256d sum = _mm256_setzero_pd();
-    for (unsigned k = 0; k < n; k++) sum = _mm256_add_pd(sum, _mm256_maskload_pd(pose->pts[k], xyz));
-    _mm256_maskstore_pd(centre, xyz, _mm256_div_pd(sum, _mm256_set1_pd((double)n)));
 }
 #endif
 
@@ -300,11 +290,13 @@ void dxConvexPose(dxConvex *c)
                            pose->offsets);
 #ifdef DX_POSE_AVX2
     if (__builtin_cpu_supports("avx2"))
-        box_and_centre_avx2(pose, c->pointcount, pose->box, pose->centre);
+        points_box_avx2(pose, c->pointcount, pose->box);
     else
 #endif
-        box_and_centre(pose, c->pointcount, pose->box, pose->centre);
-    memcpy(h->centre, pose->centre, sizeof h->centre);
+        points_box(pose, c->pointcount, pose->box);
+    for (int i = 0; i < 3; i++)
+        h->centre[i] = h->c[i] + h->R[3 * i] * c->mean[0] + h->R[3 * i + 1] * c->mean[1] +
+                       h->R[3 * i + 2] * c->mean[2];
     memcpy(pose->pos, g->pos, sizeof pose->pos);
     memcpy(pose->R, g->R, sizeof pose->R);
     pose->valid = 1;
@@ -530,8 +522,10 @@ static void convex_set(dxConvex *c, const dReal *planes, unsigned planecount,
     }
     convex_view(c);
     double r2 = 0;
+    for (int i = 0; i < 3; i++) c->mean[i] = 0;
     for (unsigned v = 0; v < pointcount; v++) {
         const dReal *p = points + 3 * v;
+        for (int i = 0; i < 3; i++) c->mean[i] += (double)p[i] / pointcount;
         double d2 = (double)p[0] * p[0] + (double)p[1] * p[1] + (double)p[2] * p[2];
         if (d2 > r2) r2 = d2;
     }

@@ -59,7 +59,6 @@ typedef struct dxHullPose {
     // The normals' and edges' rows hold a multiple of four, zero past the
     // planes and the edges.
     double *px, *py, *pz, *nx, *ny, *nz, *ex, *ey, *ez;
-    double centre[3];             // the mean of the points: inside the hull
     double box[6];                // their bounding box (lo, hi by axis)
 } dxHullPose;
 
@@ -82,7 +81,8 @@ typedef struct dx_hull {
     double size;              // the largest distance of a point from the origin of the frame
     double rot_err;           // |R^T R - I| (Frobenius): how far R is from a rotation
     double radius;            // a bound on |x - c| over the points as posed
-    double centre[3];         // a point inside, in the world
+    double centre[3];         // a point inside, in the world (for the colliders' first
+                              // guesses only: no result depends on which)
     const double (*wp)[3];    // the points in the world
     const double (*wn)[3];    // the planes in the world: unit outward normals ...
     const double *wd;         // ... and offsets
@@ -125,6 +125,7 @@ typedef struct dxConvex {
     uint64_t *nbr;                // per plane: it and the planes it shares an edge with
     uint8_t edge_faces[2][32];    // dx_hull's, if the hull has at most 32 edges, 16 planes
     double size;                  // the largest distance of a point from the frame's origin
+    double mean[3];               // the points' mean (the hull's centre, posed)
     double *plane_len;            // per plane: the length of its normal as given ...
     double *plane_dev;            // ... and how far below it its polygon's points reach
     dxHullAxisHint hints[DX_CONVEX_AXIS_CACHE];

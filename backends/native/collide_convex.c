@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
 // collide_convex.c -- the convex hull (ODE 0.16's dCreateConvex) against
-// every class but the triangle mesh. Boxes and hulls go through the
-// separating axis test of collide_convex_hull.c; planes take the hull's
+// every class but the triangle mesh, boxes and hulls (whose colliders are
+// in collide_convex_hull.c, with the separating axis test); planes take the hull's
 // points below them; rays clip their line by the hull's planes; a sphere
 // meets the hull's closest point (or its nearest face from inside); a
 // capsule is its axis segment grown by the radius: the segment's distance
@@ -277,18 +277,6 @@ static int clip_to_face_prism(const dx_hull *h, unsigned f, const double nf[3], 
 }
 
 // ---- pairs ------------------------------------------------------------------------
-
-int dxCollideConvexConvex(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)
-{
-    dx_hull *a = dx_hull_posed(o1), *b = dx_hull_posed(o2);
-    return dx_hull_hull(a, b, o1, o2, flags, out, skip);
-}
-
-int dxCollideConvexBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)
-{
-    dx_hull *a = dx_hull_posed(o1), *b = dx_hull_posed(o2);
-    return dx_hull_hull(a, b, o1, o2, flags, out, skip);
-}
 
 // The hull's points below the plane, deepest first, at most max.
 int dxCollideConvexPlane(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
-// collide_convex_hull.c -- convex hulls in the world, and hull against hull.
+// collide_convex_hull.c -- convex hulls in the world, and hull against hull
+// (the colliders of a convex geom against a convex geom or a box).
 // A convex geom's hull is posed once per pose (kept on the geom); a box's
 // on each call. The pair test is the separating axis test of
 // collide_convex_sat.c. As for box-box (collide_box.c), an edge axis wins
@@ -538,6 +539,102 @@ static inline __attribute__((always_inline)) unsigned incident_face(const dx_hul
     return incident_face_from(inc, nf, 0, INFINITY, 0);
 }
 
+// Keeps a face contact's point p (of depth depth, the middle of its line
+// inside both hulls at pos) in pts, after the kept ones; *deepest: the
+// first of the deepest.
+static inline void keep_point(hull_point *pts, int *kept, int *deepest, const double pos[3],
+                              double depth)
+{
+    if (*kept == 0 || depth > pts[*deepest].depth) *deepest = *kept;
+    hull_point *q = &pts[(*kept)++];
+    memcpy(q->p, pos, sizeof q->p);
+    q->depth = depth;
+}
+
+#ifdef DX_CLIP_AVX2
+// narrow_from(h, lp, 0, ...) for four lines at once, one a lane (their
+// points' x, y, z; the same direction): every plane in order, with the
+// same products, sums and quotients, each lane's exit kept where less (the
+// earlier of equal values stays, a NaN is passed over: min(t, hi) is t <
+// hi ? t : hi) and its entry where larger, so each lane ends with the
+// numbers narrow_from gives its line alone. Lanes that a plane along the
+// lines has outside by more than tol are set in *bad.
+__attribute__((target("avx2"))) static inline void
+narrow_lanes(const dx_hull *h, const line_planes *lp, __m256d x, __m256d y, __m256d z, double tol,
+             __m256d *lo, __m256d *hi, __m256d *bad)
+{
+    const __m256d low = _mm256_set1_pd(-tol);
+    double par_lim = DX_HULL_EPS * lp->dl;
+    for (unsigned f = 0; f < h->nplanes; f++) {
+        double nd = lp->nd[f];
+        __m256d no = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(h->nx[f]), x),
+                                                 _mm256_mul_pd(_mm256_set1_pd(h->ny[f]), y)),
+                                   _mm256_mul_pd(_mm256_set1_pd(h->nz[f]), z));
+        __m256d gap = _mm256_sub_pd(_mm256_set1_pd(h->wd[f]), no);
+        if (fabs(nd) <= par_lim) {
+            *bad = _mm256_or_pd(*bad, _mm256_cmp_pd(gap, low, _CMP_LT_OQ));
+            continue;
+        }
+        __m256d t = _mm256_div_pd(gap, _mm256_set1_pd(nd));
+        if (nd > 0)
+            *hi = _mm256_min_pd(t, *hi);
+        else
+            *lo = _mm256_max_pd(t, *lo);
+    }
+}
+
+// The kept points of a face contact (face_points_with's last loop) four
+// lines at a time: the points of poly (n) not above the reference face
+// (depth df - nf . p not below 0) whose line p + t nf has a part inside r
+// and inc (their planes' products with nf in lr, li), at the middle of
+// that part, into pts in poly's order (middle_inside_along's numbers);
+// returns how many, *deepest the first of the deepest.
+__attribute__((target("avx2"))) static int kept_points4(const dx_hull *r, const line_planes *lr,
+                                                        const dx_hull *inc, const line_planes *li,
+                                                        const hull_point *poly, int n,
+                                                        const double nf[3], double df,
+                                                        hull_point *pts, int *deepest)
+{
+    const hull_point *below[MAXP + 3];
+    double depth[MAXP];
+    int nb = 0, kept = 0;
+    for (int k = 0; k < n; k++) {
+        double d = df - dot3(nf, poly[k].p);
+        if (d < 0) continue;
+        depth[nb] = d;
+        below[nb++] = &poly[k];
+    }
+    double tol = DX_HULL_EPS * (r->size + inc->size);
+    const __m256d reach_r = _mm256_set1_pd(tol / lr->dl), reach_i = _mm256_set1_pd(tol / li->dl);
+    if (nb) below[nb] = below[nb + 1] = below[nb + 2] = below[nb - 1];   // the last four padded
+    for (int k = 0; k < nb; k += 4) {
+        __m256d p0 = _mm256_loadu_pd(below[k]->p), p1 = _mm256_loadu_pd(below[k + 1]->p);
+        __m256d p2 = _mm256_loadu_pd(below[k + 2]->p), p3 = _mm256_loadu_pd(below[k + 3]->p);
+        __m256d t0 = _mm256_unpacklo_pd(p0, p1), t1 = _mm256_unpackhi_pd(p0, p1);   // x z, y -
+        __m256d t2 = _mm256_unpacklo_pd(p2, p3), t3 = _mm256_unpackhi_pd(p2, p3);
+        __m256d x = _mm256_permute2f128_pd(t0, t2, 0x20), z = _mm256_permute2f128_pd(t0, t2, 0x31);
+        __m256d y = _mm256_permute2f128_pd(t1, t3, 0x20);
+        __m256d lo = _mm256_set1_pd(-INFINITY), hi = _mm256_set1_pd(INFINITY);
+        __m256d bad = _mm256_setzero_pd();
+        narrow_lanes(r, lr, x, y, z, tol, &lo, &hi, &bad);
+        bad = _mm256_or_pd(bad, _mm256_cmp_pd(lo, _mm256_add_pd(hi, reach_r), _CMP_NLE_UQ));
+        narrow_lanes(inc, li, x, y, z, tol, &lo, &hi, &bad);
+        bad = _mm256_or_pd(bad, _mm256_cmp_pd(lo, _mm256_add_pd(hi, reach_i), _CMP_NLE_UQ));
+        int ok = ~_mm256_movemask_pd(bad);
+        double los[4], his[4];
+        _mm256_storeu_pd(los, lo);
+        _mm256_storeu_pd(his, hi);
+        for (int q = 0; q < 4 && k + q < nb; q++) {
+            if (!(ok >> q & 1)) continue;
+            double t = (los[q] + his[q]) / 2, pos[3];
+            for (int i = 0; i < 3; i++) pos[i] = below[k + q]->p[i] + t * nf[i];
+            keep_point(pts, &kept, deepest, pos, depth[k + q]);
+        }
+    }
+    return kept;
+}
+#endif
+
 // The face contacts: the reference hull r's face f (outward unit nf at
 // offset df, facing the incident hull i). Writes the points, deepest first,
 // at most max (spread), into pts; returns the count (0 if none was found).
@@ -579,18 +676,20 @@ face_points_with(const dx_hull *r, unsigned f, const double nf[3], double df, co
     int kept = 0, deepest = 0;
     line_planes lr, li;
     int along = line_planes_with(r, nf, &lr, avx2) && line_planes_with(inc, nf, &li, avx2);
-    for (int k = 0; k < n; k++) {
-        hull_point *p = &buf[cur][k];
-        double depth = df - dot3(nf, p->p);
-        if (depth < 0) continue;
-        hull_point q;
-        if (along ? !middle_inside_along(r, &lr, inc, &li, p->p, nf, -INFINITY, INFINITY, q.p)
-                  : !middle_inside(r, inc, p->p, nf, -INFINITY, INFINITY, q.p))
-            continue;
-        q.depth = depth;
-        if (kept == 0 || q.depth > pts[deepest].depth) deepest = kept;
-        pts[kept++] = q;
-    }
+#ifdef DX_CLIP_AVX2
+    if (along && avx2)
+        kept = kept_points4(r, &lr, inc, &li, buf[cur], n, nf, df, pts, &deepest);
+    else
+#endif
+        for (int k = 0; k < n; k++) {
+            const hull_point *p = &buf[cur][k];
+            double depth = df - dot3(nf, p->p), pos[3];
+            if (depth < 0) continue;
+            if (along ? !middle_inside_along(r, &lr, inc, &li, p->p, nf, -INFINITY, INFINITY, pos)
+                      : !middle_inside(r, inc, p->p, nf, -INFINITY, INFINITY, pos))
+                continue;
+            keep_point(pts, &kept, &deepest, pos, depth);
+        }
     if (kept == 0) return 0;
     hull_point t = pts[0];
     pts[0] = pts[deepest];
@@ -627,31 +726,31 @@ static int face_points(const dx_hull *r, unsigned f, const double nf[3], double 
     return face_points_with(r, f, nf, df, inc, max, pts, 0);
 }
 
-// The edge of h through its point v parallel to h's edge e (the copy of
-// that edge on the side facing the other hull), or e itself: its ends.
-static void supporting_edge(const dx_hull *h, unsigned v, const dxHullEdge *e, double p0[3],
+// The edge of h through its point v parallel to h's edge ei (the copy of
+// that edge on the side facing the other hull), or ei itself: its ends.
+// The edges are posed (an edge axis won): each direction and its square
+// are the posed edge's, the same numbers as from its ends.
+static void supporting_edge(const dx_hull *h, unsigned v, unsigned ei, double p0[3],
                             double p1[3])
 {
-    double u[3];
+    const dxHullEdge *e = &h->edges[ei];
+    const double *u = h->we[ei].u;
     dx_hull_vertex(h, e->a, p0);
     dx_hull_vertex(h, e->b, p1);
-    for (int i = 0; i < 3; i++) u[i] = p1[i] - p0[i];
-    double lu = sqrt(dot3(u, u)), best = 0;
+    double lu = sqrt(h->we[ei].uu), best = 0;
     // The edges at v: from the point's list where the hull keeps one.
     unsigned k = h->vert_start ? h->vert_start[v] : 0;
     unsigned end = h->vert_start ? h->vert_start[v + 1] : h->nedges;
     for (; k < end; k++) {
-        const dxHullEdge *f = &h->edges[h->vert_start ? h->vert_edges[k] : k];
+        unsigned fk = h->vert_start ? h->vert_edges[k] : k;
+        const dxHullEdge *f = &h->edges[fk];
         if (f->a != v && f->b != v) continue;
-        double q0[3], q1[3], d[3];
-        dx_hull_vertex(h, f->a, q0);
-        dx_hull_vertex(h, f->b, q1);
-        for (int i = 0; i < 3; i++) d[i] = q1[i] - q0[i];
-        double c = fabs(dot3(d, u)) / (sqrt(dot3(d, d)) * lu);
+        const dxHullPosedEdge *d = &h->we[fk];
+        double c = fabs(dot3(d->u, u)) / (sqrt(d->uu) * lu);
         if (c > best && c > 1 - DX_HULL_EPS) {
             best = c;
-            memcpy(p0, q0, sizeof q0);
-            memcpy(p1, q1, sizeof q1);
+            dx_hull_vertex(h, f->a, p0);
+            dx_hull_vertex(h, f->b, p1);
         }
     }
 }
@@ -666,8 +765,8 @@ static void edge_point(const dx_hull *a, const dx_hull *b, const sat_axis *ax, d
     dx_hull_extent(a, m, &va);
     dx_hull_extent(b, ax->n, &vb);
     double a0[3], a1[3], b0[3], b1[3], u[3], v[3], w[3];
-    supporting_edge(a, va, &a->edges[ax->ea], a0, a1);
-    supporting_edge(b, vb, &b->edges[ax->eb], b0, b1);
+    supporting_edge(a, va, ax->ea, a0, a1);
+    supporting_edge(b, vb, ax->eb, b0, b1);
     for (int i = 0; i < 3; i++) {
         u[i] = a1[i] - a0[i];
         v[i] = b1[i] - b0[i];
@@ -767,8 +866,11 @@ static void keep_face(dx_hull *h, dxHullAxisHint *found, const void *other, int 
     e->other_point = other_point;
 }
 
-int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
-                 dContactGeom *out, int skip)
+// dx_hull_hull, built into each caller (the colliders below call it
+// with nothing left to do after it).
+static inline __attribute__((always_inline)) int hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1,
+                                                           dxGeom *o2, int flags,
+                                                           dContactGeom *out, int skip)
 {
     // Bounding spheres apart part the hulls (a margin over the radii'
     // bounds for the rounding here).
@@ -836,4 +938,29 @@ int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
         put(out, k, skip, pts[k].p, face.n, depth, o1, o2);
     }
     return n;
+}
+
+int dx_hull_hull(dx_hull *a, dx_hull *b, dxGeom *o1, dxGeom *o2, int flags,
+                 dContactGeom *out, int skip)
+{
+    return hull_hull(a, b, o1, o2, flags, out, skip);
+}
+
+// The convex geom g's kept hull, posed (dx_hull_posed's convex case, here
+// where the class is known).
+static dx_hull *convex_posed(dxGeom *g)
+{
+    dxConvex *c = (dxConvex *)g;
+    dxConvexPoseIfMoved(c);
+    return &c->hull;
+}
+
+int dxCollideConvexConvex(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)
+{
+    return hull_hull(convex_posed(o1), convex_posed(o2), o1, o2, flags, out, skip);
+}
+
+int dxCollideConvexBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out, int skip)
+{
+    return hull_hull(convex_posed(o1), box_posed(o2), o1, o2, flags, out, skip);
 }

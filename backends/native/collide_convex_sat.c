@@ -173,9 +173,9 @@ void dx_hull_interval(const dx_hull *h, const double m[3], double *lo, double *h
 #ifdef DX_SIGNS_AVX2
 // dot_range four at a time (the same products): the same least and
 // largest numbers, but for which of +0 and -0 a tie between them gives.
-__attribute__((target("avx2"))) static void dot_range4(const double m[3], const double *x,
-                                                       const double *y, const double *z,
-                                                       unsigned n, double *lo, double *hi)
+__attribute__((target("avx2"))) static inline void dot_range4(const double m[3], const double *x,
+                                                              const double *y, const double *z,
+                                                              unsigned n, double *lo, double *hi)
 {
     __m256d m0 = _mm256_set1_pd(m[0]), m1 = _mm256_set1_pd(m[1]), m2 = _mm256_set1_pd(m[2]);
     __m256d vlo = _mm256_set1_pd(INFINITY), vhi = _mm256_set1_pd(-INFINITY);
@@ -227,18 +227,40 @@ int dx_hull_axis_separates(const dx_hull *a, const dx_hull *b, const double n[3]
 // its faces' floors, its edges.
 enum { POSED_FLOORS = 1, POSED_EDGES = 2 };
 
+#ifdef DX_SIGNS_AVX2
+// pose_floors' first faces four at a time; returns how many it made.
+__attribute__((target("avx2"))) static inline unsigned floors4(dx_hull *h, double slack)
+{
+    const __m256d sl = _mm256_set1_pd(slack);
+    unsigned f = 0;
+    for (; f + 4 <= h->nplanes; f += 4) {
+        __m256d dev = h->plane_dev ? _mm256_loadu_pd(h->plane_dev + f) : _mm256_setzero_pd();
+        _mm256_storeu_pd(h->face_low + f,
+                         _mm256_sub_pd(_mm256_sub_pd(_mm256_loadu_pd(h->wd + f), dev), sl));
+    }
+    return f;
+}
+#endif
+
 // Poses h's faces' floors (once per pose): a floor under n . x over face
 // f's polygon, without visiting it: the plane's offset less how far the
 // polygon dips under the plane in the hull's frame (plane_dev), less what
 // R's departure from a rotation can add (n . x = (n' R^T R x' + ...) /
 // |n'|: |E| size, E = R^T R - I), less rounding (the products' sizes
-// times 8 units in the last place).
-static void pose_floors(dx_hull *h)
+// times 8 units in the last place). With AVX2 (avx2 1, in a function
+// built for it) four faces at a time (the same differences).
+static inline __attribute__((always_inline)) void pose_floors(dx_hull *h, int avx2)
 {
     if (*h->edges_posed & POSED_FLOORS) return;
     double reach = h->size + fabs(h->c[0]) + fabs(h->c[1]) + fabs(h->c[2]);
     double slack = h->rot_err * h->size + 8 * DBL_EPSILON * reach;
-    for (unsigned f = 0; f < h->nplanes; f++)
+    unsigned f = 0;
+#ifdef DX_SIGNS_AVX2
+    if (avx2) f = floors4(h, slack);
+#else
+    (void)avx2;
+#endif
+    for (; f < h->nplanes; f++)
         h->face_low[f] = h->wd[f] - (h->plane_dev ? h->plane_dev[f] : 0) - slack;
     *h->edges_posed |= POSED_FLOORS;
 }
@@ -268,7 +290,7 @@ static inline void pose_edge(dx_hull *h, unsigned k)
 // same order: the same numbers).
 _Static_assert(sizeof(dxHullEdge) == 4 * sizeof(int32_t), "an edge is four 32-bit indices");
 _Static_assert(sizeof(dxHullPosedEdge) == 8 * sizeof(double), "a posed edge is eight doubles");
-__attribute__((target("avx2"))) static void pose_edges4(dx_hull *h, unsigned k)
+__attribute__((target("avx2"))) static inline void pose_edges4(dx_hull *h, unsigned k)
 {
     // The four edges' (a, b, f1, f2) into rows a0..a3, b0..b3, f1, f2.
     const __m256i spread = _mm256_setr_epi32(0, 4, 1, 5, 2, 6, 3, 7);
@@ -313,7 +335,7 @@ __attribute__((target("avx2"))) static void pose_edges4(dx_hull *h, unsigned k)
 // Poses h's edges (once per pose, when a test first reaches the edge
 // pairs: not for pairs that a face axis parts); with AVX2 (avx2 1) four
 // at a time.
-static void pose_edges(dx_hull *h, int avx2)
+static inline __attribute__((always_inline)) void pose_edges(dx_hull *h, int avx2)
 {
     if (*h->edges_posed & POSED_EDGES) return;
     unsigned k = 0;
@@ -853,9 +875,8 @@ typedef struct pair_batch {
 // comparisons as edge_candidate's (no fused multiply-add: the same
 // numbers; a NaN compares false there as here). Lone edges are not looked
 // at here (the caller keeps their pairs).
-__attribute__((target("avx2"))) static uint64_t screen_pairs(const dx_hull *a, const dx_hull *b,
-                                                             const pair_batch *pb,
-                                                             const edge_search *es)
+__attribute__((target("avx2"), always_inline)) static inline uint64_t
+screen_pairs(const dx_hull *a, const dx_hull *b, const pair_batch *pb, const edge_search *es)
 {
     const double *xa = a->we[0].u, *xb = b->we[0].u;
     const double *pa[3] = { a->px, a->py, a->pz }, *pb3[3] = { b->px, b->py, b->pz };
@@ -991,6 +1012,89 @@ __attribute__((target("avx2"))) static inline void edges_of_faces(const dx_hull 
 }
 #endif
 
+#ifdef DX_SIGNS_AVX2
+// The circles' normals (n2 x n1) of b's edges in the set edges, in order,
+// by coordinate into x, y, z, zero past them up to a multiple of four (no
+// sign: no bit in dot_signs4); returns that multiple.
+static inline unsigned pack_circles(const dx_hull *b, uint64_t edges, double *x, double *y,
+                                    double *z)
+{
+    unsigned n = 0;
+    for (; edges; edges &= edges - 1, n++) {
+        unsigned j = (unsigned)__builtin_ctzll(edges);
+        x[n] = b->ex[j];
+        y[n] = b->ey[j];
+        z[n] = b->ez[j];
+    }
+    for (unsigned k = n; k % 4; k++) x[k] = y[k] = z[k] = 0;
+    return up_to_four(n);
+}
+
+// face_signs_near for at most eight near edges: their circles gathered
+// into registers (lanes past them zero), each face's products with them
+// made as dot_signs4 makes them.
+__attribute__((target("avx2,bmi2"))) static inline void
+face_signs_near8(const dx_hull *a, const dx_hull *b, uint64_t faces, uint64_t near,
+                 uint64_t *above, uint64_t *below)
+{
+    int32_t idx[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
+    int n = 0;
+    for (uint64_t e = near; e; e &= e - 1) idx[n++] = (int32_t)__builtin_ctzll(e);
+    const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    __m256i live = _mm256_cmpgt_epi32(_mm256_set1_epi32(n), lane);
+    __m256i at = _mm256_loadu_si256((const __m256i *)idx);
+    __m128i at0 = _mm256_castsi256_si128(at), at1 = _mm256_extracti128_si256(at, 1);
+    __m256d m0 = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(_mm256_castsi256_si128(live)));
+    __m256d m1 = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(_mm256_extracti128_si256(live, 1)));
+    const __m256d zero = _mm256_setzero_pd();
+    __m256d x0 = _mm256_mask_i32gather_pd(zero, b->ex, at0, m0, 8);
+    __m256d y0 = _mm256_mask_i32gather_pd(zero, b->ey, at0, m0, 8);
+    __m256d z0 = _mm256_mask_i32gather_pd(zero, b->ez, at0, m0, 8);
+    __m256d x1 = _mm256_mask_i32gather_pd(zero, b->ex, at1, m1, 8);
+    __m256d y1 = _mm256_mask_i32gather_pd(zero, b->ey, at1, m1, 8);
+    __m256d z1 = _mm256_mask_i32gather_pd(zero, b->ez, at1, m1, 8);
+    for (; faces; faces &= faces - 1) {
+        unsigned f = (unsigned)__builtin_ctzll(faces);
+        __m256d c0 = _mm256_set1_pd(a->wn[f][0]), c1 = _mm256_set1_pd(a->wn[f][1]);
+        __m256d c2 = _mm256_set1_pd(a->wn[f][2]);
+        __m256d d0 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(c0, x0), _mm256_mul_pd(c1, y0)),
+                                   _mm256_mul_pd(c2, z0));
+        __m256d d1 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(c0, x1), _mm256_mul_pd(c1, y1)),
+                                   _mm256_mul_pd(c2, z1));
+        uint64_t p = (uint64_t)(_mm256_movemask_pd(_mm256_cmp_pd(d0, zero, _CMP_GT_OQ)) |
+                                _mm256_movemask_pd(_mm256_cmp_pd(d1, zero, _CMP_GT_OQ)) << 4);
+        uint64_t q = (uint64_t)(_mm256_movemask_pd(_mm256_cmp_pd(d0, zero, _CMP_LT_OQ)) |
+                                _mm256_movemask_pd(_mm256_cmp_pd(d1, zero, _CMP_LT_OQ)) << 4);
+        above[f] = _pdep_u64(p, near);
+        below[f] = _pdep_u64(q, near);
+    }
+}
+
+// For each of a's faces f in the set faces, the sets of b's edges in
+// near (at most 64) whose circle f's normal is above (above[f]) and
+// below (below[f]): the products of the near edges' circles alone, packed
+// (pack_circles), their bits put back in place by pdep; no bit for the
+// other edges.
+__attribute__((target("avx2,bmi2"))) static inline void
+face_signs_near(const dx_hull *a, const dx_hull *b, uint64_t faces, uint64_t near,
+                uint64_t *above, uint64_t *below)
+{
+    if (__builtin_popcountll(near) <= 8) {
+        face_signs_near8(a, b, faces, near, above, below);
+        return;
+    }
+    double x[MASK_BITS], y[MASK_BITS], z[MASK_BITS];
+    unsigned n = pack_circles(b, near, x, y, z);
+    for (; faces; faces &= faces - 1) {
+        unsigned f = (unsigned)__builtin_ctzll(faces);
+        uint64_t p, q;
+        dot_signs4(a->wn[f], x, y, z, n, &p, &q);
+        above[f] = _pdep_u64(p, near);
+        below[f] = _pdep_u64(q, near);
+    }
+}
+#endif
+
 // The edges of b whose first face is in the set faces, and whose second
 // face is, into *first and *second (by_f1 and by_f2 over the set's faces);
 // with AVX2 (avx2 1) by edges_of_faces where b has its edges' faces as
@@ -1036,6 +1140,12 @@ masked_edge_pairs_with(const dx_hull *a, const dx_hull *b, edge_search *es, cons
         unsigned f = (unsigned)__builtin_ctzll(m);
         near_b |= first[f] | second[f];
     }
+#ifdef DX_SIGNS_AVX2
+    if (avx2) {   // only the near edges' signs count (cand is within near_b)
+        face_signs_near(a, b, faces, near_b, above, below);
+        faces = 0;
+    }
+#endif
     for (; faces; faces &= faces - 1) {
         unsigned f = (unsigned)__builtin_ctzll(faces);
         dot_signs_padded(a->wn[f], b->ex, b->ey, b->ez, up_to_four(b->nedges), &above[f],
@@ -1181,8 +1291,8 @@ sat_with(dx_hull *a, dx_hull *b, sat_hint *hint, sat_axis *face, sat_axis *edge,
     for (int i = 0; i < 3; i++) scale += fabs(a->c[i]) + fabs(b->c[i]);
     found->margin = 1e-12 * scale;
     face->depth = edge->depth = INFINITY;
-    pose_floors(a);
-    pose_floors(b);
+    pose_floors(a, avx2);
+    pose_floors(b, avx2);
     // A face's depth is at least its gap: faces clearly deeper than a first
     // guess (the hinted face, else the face of least gap) are skipped.
     double gaps[2][MASK_BITS], guess = INFINITY;
@@ -1254,7 +1364,7 @@ sat_with(dx_hull *a, dx_hull *b, sat_hint *hint, sat_axis *face, sat_axis *edge,
 }
 
 #ifdef DX_SIGNS_AVX2
-__attribute__((target("avx2"))) static int sat_avx2(dx_hull *a, dx_hull *b, sat_hint *hint,
+__attribute__((target("avx2,bmi2"))) static int sat_avx2(dx_hull *a, dx_hull *b, sat_hint *hint,
                                                     sat_axis *face, sat_axis *edge,
                                                     edge_axes *found, double sep[3])
 {
@@ -1266,7 +1376,8 @@ int dx_hull_sat(dx_hull *a, dx_hull *b, sat_hint *hint, sat_axis *face, sat_axis
                 edge_axes *found, double sep[3])
 {
 #ifdef DX_SIGNS_AVX2
-    if (__builtin_cpu_supports("avx2")) return sat_avx2(a, b, hint, face, edge, found, sep);
+    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("bmi2"))
+        return sat_avx2(a, b, hint, face, edge, found, sep);
 #endif
     return sat_with(a, b, hint, face, edge, found, sep, 0);
 }
@@ -1303,6 +1414,45 @@ static int edge_may_clear(const dx_hull *a, unsigned i, const dx_hull *b, unsign
     return depth <= (best * (1 + 1e-9) + margin) * fabs(cn);
 }
 
+// fmin(a, b) without the library's call (the clearance takes one per
+// face): the other where one is a NaN, else a < b ? a : b, so that of a
+// +0 and a -0 b is kept, as the library's minsd keeps it.
+static inline double least(double a, double b)
+{
+    return b != b ? a : a < b ? a : b;
+}
+
+#ifdef DX_SIGNS_AVX2
+// The face axes' part of dx_hull_clearance where found keeps the faces'
+// depths: each face's m . n made four at a time (as dot3 makes it, from
+// the padded normal rows; a's axes are its normals turned, m . n = -(n_f
+// . n) but for the sign of a zero, which m . n > 0 leaves out either way),
+// then the faces facing n taken in dx_hull_clearance's order.
+__attribute__((target("avx2"))) static double faces_clearance4(const dx_hull *a, const dx_hull *b,
+                                                               const double n[3], double best,
+                                                               const edge_axes *found)
+{
+    const __m256d n0 = _mm256_set1_pd(n[0]), n1 = _mm256_set1_pd(n[1]), n2 = _mm256_set1_pd(n[2]);
+    for (int side = 0; side < 2; side++) {
+        const dx_hull *h = side ? b : a;
+        double prod[KEPT_FACES];
+        for (unsigned f = 0; f < h->nplanes; f += 4)
+            _mm256_storeu_pd(prod + f,
+                             _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(h->nx + f), n0),
+                                                         _mm256_mul_pd(_mm256_loadu_pd(h->ny + f), n1)),
+                                           _mm256_mul_pd(_mm256_loadu_pd(h->nz + f), n2)));
+        for (unsigned f = 0; f < h->nplanes; f++) {
+            double mn = side ? prod[f] : -prod[f];
+            if (mn > 0) {
+                double s = found->tested[side] >> f & 1 ? found->face_s[side][f] : INFINITY;
+                best = least(best, s / mn);
+            }
+        }
+    }
+    return best;
+}
+#endif
+
 // The exact translation of a along the unit n that parts it from b (as
 // box_clearance in collide_box.c): a moved by t n is clear of b along a
 // candidate axis m once t (m . n) > s(m); the least such t over the axes
@@ -1312,6 +1462,11 @@ double dx_hull_clearance(const dx_hull *a, const dx_hull *b, const double n[3], 
                          const edge_axes *found)
 {
     double best = s_n;
+#ifdef DX_SIGNS_AVX2
+    if (found->faces_kept && __builtin_cpu_supports("avx2")) {
+        best = faces_clearance4(a, b, n, best, found);
+    } else
+#endif
     for (int side = 0; side < 2; side++) {
         const dx_hull *h = side ? b : a;
         for (unsigned f = 0; f < h->nplanes; f++) {
@@ -1324,7 +1479,7 @@ double dx_hull_clearance(const dx_hull *a, const dx_hull *b, const double n[3], 
                 double s = !found->faces_kept              ? depth_along(a, b, m)
                            : found->tested[side] >> f & 1 ? found->face_s[side][f]
                                                           : INFINITY;
-                best = fmin(best, s / mn);
+                best = least(best, s / mn);
             }
         }
     }
@@ -1334,14 +1489,14 @@ double dx_hull_clearance(const dx_hull *a, const dx_hull *b, const double n[3], 
         double m[3], both[2];
         unit_cross(&a->we[i], &b->we[j], m);
         pair_depths(a, i, b, j, m, both);
-        best = fmin(best, edge_clearance(n, m, both));
+        best = least(best, edge_clearance(n, m, both));
     }
     for (unsigned i = 0; found->overflow && i < a->nedges; i++) {
         for (unsigned j = 0; j < b->nedges; j++) {
             double m[3], both[2];
             if (!edge_axis(a, i, b, j, m)) continue;
             pair_depths(a, i, b, j, m, both);
-            best = fmin(best, edge_clearance(n, m, both));
+            best = least(best, edge_clearance(n, m, both));
         }
     }
     return best;
