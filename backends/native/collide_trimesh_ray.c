@@ -233,6 +233,7 @@ static inline __attribute__((always_inline)) void prefetch_slot(const dxTriMeshD
     } else if (d->leaf_vertices) {
         p = (const char *)(d->leaf_vertices + 9 * node->first[j]);
         size = 9 * sizeof(dReal) * (size_t)node->count[j];
+        __builtin_prefetch(d->order + node->first[j]);   // the triangles' indices
     } else {
         return;
     }
@@ -333,6 +334,13 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
         // triangle's index and normal, after. A hit beyond the limit could
         // not be kept.
         int end = first + node->count[slot];
+        // A hit reads its triangle's normal through order[]: asked for now,
+        // while the vertices arrive, not after the test (two misses in turn).
+        for (int j = first; j < end; j++) {
+            const dReal *n = d->normal + 3 * d->order[j];
+            __builtin_prefetch(n);
+            __builtin_prefetch(n + 2);
+        }
         for (int j = first; j < end; j += 2) {
             dReal dist[2], bu[2], bv[2];
             unsigned crossed = 0;
