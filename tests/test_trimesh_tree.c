@@ -125,10 +125,12 @@ static void mesh_destroy(mesh *m)
 // Every used slot's box holds what is below it (triangles or a node's
 // slots), children come after their parent, unused slots last, and the
 // leaves met depth first, slot by slot, cover order[] once, in order
-// (counted into *leaves).
+// (counted into *leaves); the node's span is the leaf-order triangles met
+// below it.
 static int check_node(const dxTriMeshData *d, int i, int *next_first, int *leaves)
 {
     const dxTriMeshNode *node = &d->nodes[i];
+    const int span_first = *next_first;
     int used = 0;
     for (int s = 0; s < 4; s++) {
         if (node->count[s] < 0) continue;
@@ -168,6 +170,7 @@ static int check_node(const dxTriMeshData *d, int i, int *next_first, int *leave
         }
     }
     CHECK(used > 0);
+    CHECK(d->node_span[2 * i] == span_first && d->node_span[2 * i + 1] == *next_first - span_first);
     return 0;
 }
 
@@ -176,8 +179,10 @@ static int check_shape(const dxTriMeshData *d)
     int next_first = 0, leaves = 0;
     // the nodes and the leaf-order vertices start at cache lines
     CHECK((uintptr_t)d->nodes % 64 == 0 && (uintptr_t)d->leaf_vertices % 64 == 0);
+    CHECK((uintptr_t)d->node_span % 64 == 0);
+    CHECK((const char *)d->node_span >= (const char *)(d->nodes + d->node_count));
     CHECK((const char *)d->leaf_vertices >=
-          (const char *)(d->nodes + d->node_count));   // one block, not overlapping
+          (const char *)(d->node_span + 2 * d->node_count));   // one block, not overlapping
     CHECK((uintptr_t)d->leaf_boxes % 64 == 0 &&
           (const char *)d->leaf_boxes >= (const char *)(d->leaf_vertices + 9 * d->tri_count));
     if (check_node(d, 0, &next_first, &leaves)) return 1;
