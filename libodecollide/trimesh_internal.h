@@ -181,8 +181,8 @@ struct dxTriMeshData {
                                           // float rounded outwards; 2 more floats
                                           // at the end (read, never used)
     void *tree_block;                     // one allocation holding nodes,
-    size_t tree_block_size;               // node_span, leaf_vertices and
-                                          // leaf_boxes, each at a cache line
+    size_t tree_block_size;               // leaf_vertices, leaf_boxes and
+                                          // node_span, each at a cache line
     uint64_t tree_stamp;                  // unique per build and refit; 0: no
                                           // temporal coherence (a heightfield patch)
     unsigned char *built_flags;           // Preprocess: use flags

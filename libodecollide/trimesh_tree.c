@@ -305,23 +305,23 @@ static char *line_start(char *p)
     return p + ((64 - (uintptr_t)p % 64) % 64);
 }
 
-// One block for the nodes (node_count of them), their spans, the
-// leaf-order vertices and the triangles' boxes, each at the start of a
-// cache line: a node is read as two lines, not three, and a leaf's
-// vertices touch the fewest lines.
+// One block for the nodes (node_count of them), the leaf-order vertices,
+// the triangles' boxes and the nodes' spans, each at the start of a cache
+// line: a node is read as two lines, not three, and a leaf's vertices
+// touch the fewest lines.
 static void place_tree(dxTriMeshData *d)
 {
     size_t node_room = ((size_t)d->node_count * sizeof(dxTriMeshNode) + 63) / 64 * 64;
-    size_t span_room = (2 * (size_t)d->node_count * sizeof(int) + 63) / 64 * 64;
     size_t vertex_room = (9 * (size_t)d->tri_count * sizeof(dReal) + 63) / 64 * 64;
-    size_t box_room = (6 * (size_t)d->tri_count + 2) * sizeof(float);
-    d->tree_block_size = 64 + node_room + span_room + vertex_room + box_room;
+    size_t box_room = ((6 * (size_t)d->tri_count + 2) * sizeof(float) + 63) / 64 * 64;
+    size_t span_room = 2 * (size_t)d->node_count * sizeof(int);
+    d->tree_block_size = 64 + node_room + vertex_room + box_room + span_room;
     d->tree_block = dAlloc(d->tree_block_size);
     char *p = line_start((char *)d->tree_block);
     d->nodes = (dxTriMeshNode *)p;
-    d->node_span = (int *)(p + node_room);
-    d->leaf_vertices = (dReal *)(p + node_room + span_room);
-    d->leaf_boxes = (float *)(p + node_room + span_room + vertex_room);
+    d->leaf_vertices = (dReal *)(p + node_room);
+    d->leaf_boxes = (float *)(p + node_room + vertex_room);
+    d->node_span = (int *)(p + node_room + vertex_room + box_room);
     d->leaf_boxes[6 * d->tri_count] = d->leaf_boxes[6 * d->tri_count + 1] = 0;
 }
 
