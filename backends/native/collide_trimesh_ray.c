@@ -234,8 +234,9 @@ enum { SPAN_AHEAD = 16 };
 // Ask for what a slot pushed on the stack will read when popped while
 // other slots are tested. An inner slot: its node, and a small subtree's
 // vertices and indices (node_span), a level before the walk reaches its
-// leaves. A leaf: its vertices and indices, and its triangles' normals (a
-// hit reads its normal through order[]: two misses in turn otherwise).
+// leaves. A leaf: its vertices, and its triangles' normals (a hit reads its
+// normal through order[]: two misses in turn otherwise; the loads of
+// order[] that address them ask for its line).
 // Inlined always: GCC finds a function that only prefetches free of side
 // effects and drops the calls.
 static inline __attribute__((always_inline)) void prefetch_slot(const dxTriMeshData *d,
@@ -251,7 +252,6 @@ static inline __attribute__((always_inline)) void prefetch_slot(const dxTriMeshD
         prefetch_bytes(d->order + span[0], sizeof(int) * (size_t)span[1]);
     } else if (d->leaf_vertices) {
         prefetch_bytes(d->leaf_vertices + 9 * first, 9 * sizeof(dReal) * (size_t)count);
-        prefetch_bytes(d->order + first, sizeof(int) * (size_t)count);
         for (int t = first; t < first + count; t++) {
             const dReal *n = d->normal + 3 * d->order[t];
             __builtin_prefetch(n);
