@@ -95,6 +95,7 @@ static void clear_derived(dxTriMeshData *d)
     d->leaf_boxes = NULL;
     d->tree_stamp = 0;
     d->nodes = NULL;
+    d->node_span = NULL;
     d->built_flags = NULL;
     d->weld = NULL;
     d->vertex_first = d->vertex_adj = NULL;

@@ -169,6 +169,9 @@ struct dxTriMeshData {
     unsigned char *features;              // DX_TRI_*_FEATURE bits per triangle
     dxTriMeshNode *nodes;                 // the box tree, root first
     int node_count;
+    int *node_span;                       // 2 per node: its subtree's triangles
+                                          // are order[first .. first + count)
+                                          // (rays ask for a small one's early)
     dReal lo[3], hi[3];                   // the exact box of the triangles (with nodes)
     int *order;                           // triangles in leaf order
     dReal *leaf_vertices;                 // 9 per triangle in leaf order: the
@@ -178,8 +181,8 @@ struct dxTriMeshData {
                                           // float rounded outwards; 2 more floats
                                           // at the end (read, never used)
     void *tree_block;                     // one allocation holding nodes,
-    size_t tree_block_size;               // leaf_vertices and leaf_boxes, each
-                                          // at a cache line
+    size_t tree_block_size;               // leaf_vertices, leaf_boxes and
+                                          // node_span, each at a cache line
     uint64_t tree_stamp;                  // unique per build and refit; 0: no
                                           // temporal coherence (a heightfield patch)
     unsigned char *built_flags;           // Preprocess: use flags

@@ -278,27 +278,50 @@ static void fit_boxes(dxTriMeshData *d)
     dFree(exact, size);
 }
 
+// Every node's span (node_span): the leaf-order triangles of its subtree,
+// from its first slot's to its last used slot's (a subtree's leaves are
+// consecutive in leaf order). Children come after their parent: going
+// backwards meets them first.
+static void set_spans(dxTriMeshData *d)
+{
+    for (int i = d->node_count - 1; i >= 0; i--) {
+        const dxTriMeshNode *node = &d->nodes[i];
+        int first = 0, end = 0;
+        for (int s = 0; s < 4 && node->count[s] >= 0; s++) {
+            const int *child = d->node_span + 2 * node->first[s];
+            int lo = node->count[s] > 0 ? node->first[s] : child[0];
+            int hi = node->count[s] > 0 ? node->first[s] + node->count[s] : child[0] + child[1];
+            if (s == 0) first = lo;
+            end = hi;
+        }
+        d->node_span[2 * i] = first;
+        d->node_span[2 * i + 1] = end - first;
+    }
+}
+
 // Where the next cache line starts at or after p.
 static char *line_start(char *p)
 {
     return p + ((64 - (uintptr_t)p % 64) % 64);
 }
 
-// One block for the nodes (node_count of them), the leaf-order vertices
-// and the triangles' boxes, each at the start of a cache line: a node is
-// read as two lines, not three, and a leaf's vertices touch the fewest
-// lines.
+// One block for the nodes (node_count of them), the leaf-order vertices,
+// the triangles' boxes and the nodes' spans, each at the start of a cache
+// line: a node is read as two lines, not three, and a leaf's vertices
+// touch the fewest lines.
 static void place_tree(dxTriMeshData *d)
 {
     size_t node_room = ((size_t)d->node_count * sizeof(dxTriMeshNode) + 63) / 64 * 64;
     size_t vertex_room = (9 * (size_t)d->tri_count * sizeof(dReal) + 63) / 64 * 64;
-    size_t box_room = (6 * (size_t)d->tri_count + 2) * sizeof(float);
-    d->tree_block_size = 64 + node_room + vertex_room + box_room;
+    size_t box_room = ((6 * (size_t)d->tri_count + 2) * sizeof(float) + 63) / 64 * 64;
+    size_t span_room = 2 * (size_t)d->node_count * sizeof(int);
+    d->tree_block_size = 64 + node_room + vertex_room + box_room + span_room;
     d->tree_block = dAlloc(d->tree_block_size);
     char *p = line_start((char *)d->tree_block);
     d->nodes = (dxTriMeshNode *)p;
     d->leaf_vertices = (dReal *)(p + node_room);
     d->leaf_boxes = (float *)(p + node_room + vertex_room);
+    d->node_span = (int *)(p + node_room + vertex_room + box_room);
     d->leaf_boxes[6 * d->tri_count] = d->leaf_boxes[6 * d->tri_count + 1] = 0;
 }
 
@@ -308,6 +331,7 @@ void dxTriMeshFreeTree(dxTriMeshData *d)
     d->tree_block = NULL;
     d->tree_block_size = 0;
     d->nodes = NULL;
+    d->node_span = NULL;
     d->leaf_vertices = NULL;
     d->leaf_boxes = NULL;
 }
@@ -334,6 +358,7 @@ void dxTriMeshBuildTree(dxTriMeshData *d)
     used = 1;
     lift_node(d, bin, 0, 0, &used);
     dFree(bin, bin_size);
+    set_spans(d);
     copy_leaf_vertices(d);
     fit_boxes(d);
     d->tree_stamp = dxTriMeshNewStamp();

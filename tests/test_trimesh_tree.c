@@ -125,10 +125,12 @@ static void mesh_destroy(mesh *m)
 // Every used slot's box holds what is below it (triangles or a node's
 // slots), children come after their parent, unused slots last, and the
 // leaves met depth first, slot by slot, cover order[] once, in order
-// (counted into *leaves).
+// (counted into *leaves); the node's span is the leaf-order triangles met
+// below it.
 static int check_node(const dxTriMeshData *d, int i, int *next_first, int *leaves)
 {
     const dxTriMeshNode *node = &d->nodes[i];
+    const int span_first = *next_first;
     int used = 0;
     for (int s = 0; s < 4; s++) {
         if (node->count[s] < 0) continue;
@@ -168,6 +170,7 @@ static int check_node(const dxTriMeshData *d, int i, int *next_first, int *leave
         }
     }
     CHECK(used > 0);
+    CHECK(d->node_span[2 * i] == span_first && d->node_span[2 * i + 1] == *next_first - span_first);
     return 0;
 }
 
@@ -180,6 +183,8 @@ static int check_shape(const dxTriMeshData *d)
           (const char *)(d->nodes + d->node_count));   // one block, not overlapping
     CHECK((uintptr_t)d->leaf_boxes % 64 == 0 &&
           (const char *)d->leaf_boxes >= (const char *)(d->leaf_vertices + 9 * d->tri_count));
+    CHECK((uintptr_t)d->node_span % 64 == 0 &&
+          (const char *)d->node_span >= (const char *)(d->leaf_boxes + 6 * d->tri_count + 2));
     if (check_node(d, 0, &next_first, &leaves)) return 1;
     CHECK(next_first == d->tri_count);
     // nodes mostly full: about a third as many as leaves

@@ -218,29 +218,46 @@ static inline unsigned ray_slots(const ray_lanes *r, const dxTriMeshNode *node, 
 }
 #endif
 
-// Ask for what a slot pushed on the stack will read when popped (its
-// node, or its triangles' vertices) while other slots are tested.
+// Every line the bytes [p, p + size) touch (size > 0): they need not start
+// a line, so the last byte's line too (a loop from p's line would run a
+// count of times that varies with the alignment, which a predictor misses).
+static inline __attribute__((always_inline)) void prefetch_bytes(const void *p, size_t size)
+{
+    for (size_t k = 0; k < size; k += 64) __builtin_prefetch((const char *)p + k);
+    __builtin_prefetch((const char *)p + size - 1);
+}
+
+// A subtree of at most this many triangles (a node over four leaves) has
+// its vertices and indices asked for with its node.
+enum { SPAN_AHEAD = 16 };
+
+// Ask for what a slot pushed on the stack will read when popped while
+// other slots are tested. An inner slot: its node, and a small subtree's
+// vertices and indices (node_span), a level before the walk reaches its
+// leaves. A leaf: its vertices, and its triangles' normals (a hit reads its
+// normal through order[]: two misses in turn otherwise; the loads of
+// order[] that address them ask for its line).
 // Inlined always: GCC finds a function that only prefetches free of side
 // effects and drops the calls.
 static inline __attribute__((always_inline)) void prefetch_slot(const dxTriMeshData *d,
                                                                 const dxTriMeshNode *node, int j)
 {
-    const char *p;
-    size_t size;
-    if (node->count[j] == 0) {
-        p = (const char *)&d->nodes[node->first[j]];
-        size = sizeof(dxTriMeshNode);
+    const int first = node->first[j], count = node->count[j];
+    if (count == 0) {
+        prefetch_bytes(&d->nodes[first], sizeof(dxTriMeshNode));
+        if (!d->node_span) return;
+        const int *span = d->node_span + 2 * first;
+        if (span[1] > SPAN_AHEAD) return;
+        prefetch_bytes(d->leaf_vertices + 9 * span[0], 9 * sizeof(dReal) * (size_t)span[1]);
+        prefetch_bytes(d->order + span[0], sizeof(int) * (size_t)span[1]);
     } else if (d->leaf_vertices) {
-        p = (const char *)(d->leaf_vertices + 9 * node->first[j]);
-        size = 9 * sizeof(dReal) * (size_t)node->count[j];
-    } else {
-        return;
+        prefetch_bytes(d->leaf_vertices + 9 * first, 9 * sizeof(dReal) * (size_t)count);
+        for (int t = first; t < first + count; t++) {
+            const dReal *n = d->normal + 3 * d->order[t];
+            __builtin_prefetch(n);
+            __builtin_prefetch(n + 2);
+        }
     }
-    // Every line the bytes [p, p + size) touch: they need not start a line,
-    // so the last byte's line too (a loop from p's line would run a count
-    // of times that varies with the alignment, which a predictor misses).
-    for (size_t k = 0; k < size; k += 64) __builtin_prefetch(p + k);
-    __builtin_prefetch(p + size - 1);
 }
 
 // Keep the nearest `max` hits in m->raw (a scratch set) sorted by distance (then triangle):
