@@ -342,7 +342,7 @@ static int check_packing(unsigned seed, int nbodies)
                 const int n = blk->n, ne = blk->two ? 12 : 6;
                 const dReal *J = (const dReal *)blk->J, *A = b->soa + 2 * QS_LANES * n * ne;
                 ok = ok && b->soa[QS_LANES * (ne + 1) + i] == J[13] &&
-                     A[QS_LANES * (1 * n + 0) + i] == blk->Ainv[QS_PAD(n)];
+                     A[QS_LANES * 1 + i] == blk->Ainv[QS_PAD(n)];   // (1, 0): lower triangle
             }
         }
     }
