@@ -342,7 +342,7 @@ static int check_packing(unsigned seed, int nbodies)
                 const int n = blk->n, ne = blk->two ? 12 : 6;
                 const dReal *J = (const dReal *)blk->J, *A = b->soa + 2 * QS_LANES * n * ne;
                 ok = ok && b->soa[QS_LANES * (ne + 1) + i] == J[13] &&
-                     A[QS_LANES * (1 * n + 0) + i] == blk->Ainv[QS_PAD(n)];
+                     A[QS_LANES * 1 + i] == blk->Ainv[QS_PAD(n)];   // (1, 0): lower triangle
             }
         }
     }
@@ -393,11 +393,115 @@ static int test_packing_off_leaves_bseq(void)
     return 0;
 }
 
+// ---- the ball form on random numbers --------------------------------------------
+
+enum { FORM_BLOCKS = 20, FORM_BODIES = 48 };
+
+// Random blocks of the ball form (rows 0-2 with J_lin e_a, the others with
+// J_lin zero, the second body's -J_lin, M^-1 J^T's linear part im J_lin;
+// some angular numbers exactly zero, as a ball row's), four of each kind
+// (sizes 3 and 5, one body and two) on different bodies, and four of the
+// general form (J_lin random); swept in batches and one by one from the same fc and
+// lambdas (some +0): every number must come out the same.
+static int check_forms(unsigned seed)
+{
+    static qs_block blocks[FORM_BLOCKS];
+    static const qs_block *bseq[FORM_BLOCKS];
+    static dReal numbers[FORM_BLOCKS][12 * 6 * 2 + 36 + 12];
+    static qs_row rows[1];   // none coupled
+    static dReal inv_mass[FORM_BODIES], fc[2][6 * FORM_BODIES], lambda[2][FORM_BLOCKS * 6 + 1];
+    unsigned r = seed;
+#define RND() (r = r * 1103515245u + 12345u, (dReal)((int)((r >> 8) % 2001) - 1000) / 250)
+    for (int b = 0; b < FORM_BODIES; b++) {
+        inv_mass[b] = 1 / (1 + dFabs(RND()));
+        for (int e = 0; e < 6; e++) fc[0][6 * b + e] = (b + e) % 5 ? RND() : 0;
+    }
+    int first = 0;
+    for (int k = 0; k < FORM_BLOCKS; k++) {
+        qs_block *blk = &blocks[k];
+        memset(blk, 0, sizeof *blk);
+        const int kind = k % 4, general = k >= 16;
+        blk->n = general ? 4 : (kind & 1) ? 5 : 3;
+        blk->two = general || kind >= 2;
+        blk->o0 = 6 * (2 * k);
+        blk->o1 = blk->two ? 6 * (2 * k + 1) : 6 * (FORM_BODIES - 1);
+        blk->first = first;
+        first += blk->n;
+        dReal *p = numbers[k];
+        dReal *J = p, *M = p + 72;
+        const dReal im0 = inv_mass[blk->o0 / 6], im1 = inv_mass[blk->o1 / 6];
+        for (int a = 0; a < blk->n; a++) {
+            for (int e = 0; e < 12; e++) J[12 * a + e] = (a + e) % 4 ? RND() : 0;
+            for (int e = 0; e < 3; e++) {
+                if (!general) J[12 * a + e] = a == e ? 1 : 0;
+                J[12 * a + 6 + e] = blk->two ? -J[12 * a + e] : 0;
+                M[12 * a + e] = im0 * J[12 * a + e];
+                M[12 * a + 6 + e] = blk->two ? im1 * J[12 * a + 6 + e] : 0;
+                M[12 * a + 3 + e] = RND();
+                M[12 * a + 9 + e] = blk->two ? RND() : 0;
+                if (!blk->two) J[12 * a + 9 + e] = 0;
+            }
+        }
+        dReal *A = p + 144;
+        const int w = QS_PAD(blk->n);
+        for (int c = 0; c < blk->n; c++)
+            for (int a = 0; a <= c; a++) A[c * w + a] = A[a * w + c] = RND() / 8;
+        blk->J = (qs_v2 *)J;
+        blk->M = (qs_v2 *)M;
+        blk->Ainv = A;
+        blk->rhs = p + 180;
+        blk->cfm = p + 186;
+        for (int a = 0; a < blk->n; a++) {
+            blk->rhs[a] = RND();
+            blk->cfm[a] = dFabs(RND()) / 100;
+            lambda[0][blk->first + a] = a == 1 ? 0 : RND();
+        }
+        bseq[k] = blk;
+    }
+#undef RND
+    memcpy(fc[1], fc[0], sizeof fc[0]);
+    memcpy(lambda[1], lambda[0], sizeof lambda[0]);
+    int full = 0;
+    for (int run = 0; run < 2; run++) {
+        qs_system sys;
+        memset(&sys, 0, sizeof sys);
+        sys.nblocks = FORM_BLOCKS;
+        sys.nbodies = FORM_BODIES;
+        sys.bseq = bseq;
+        sys.inv_mass = inv_mass;
+        sys.rows = rows;
+        sys.fc = fc[run];
+        sys.lambda = lambda[run];
+        dxArena arena;
+        dxArenaInit(&arena);
+        qs_group group = { 0, FORM_BLOCKS, 0, 0, 2, 0, 0, 0, 0 };
+        dxQuickBlockBatches = run == 0;
+        dxQuickBatchBlocks(&arena, &sys, &group, 1);
+        dxQuickBlockBatches = 1;
+        for (int t = 0; t < sys.nbatches; t++) full += sys.batches[t].soa != NULL;
+        for (int sweep = 0; sweep < 5; sweep++) dxQuickSweep(&sys, 0);
+        dxArenaFree(&arena);
+    }
+    CHECK(full == FORM_BLOCKS / QS_LANES);   // every block in a full batch
+    CHECK(memcmp(fc[0], fc[1], sizeof fc[0]) == 0);
+    CHECK(memcmp(lambda[0], lambda[1], sizeof lambda[0]) == 0);
+    CHECK(fc[0][0] != 0 && lambda[0][0] != 0);
+    return 0;
+}
+
+static int test_ball_form_gives_the_same_bits(void)
+{
+    for (unsigned seed = 1; seed <= 20; seed++)
+        if (check_forms(seed)) return 1;
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_ragdolls_step_the_same_either_way),
     TEST_CASE(test_chains_step_the_same_either_way),
     TEST_CASE(test_machines_step_the_same_either_way),
     TEST_CASE(test_packing_keeps_the_order_of_blocks_on_a_body),
     TEST_CASE(test_packing_off_leaves_bseq),
+    TEST_CASE(test_ball_form_gives_the_same_bits),
     TEST_END,
 };

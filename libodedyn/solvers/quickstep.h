@@ -97,12 +97,13 @@ typedef struct qs_block {
     int coupled, ncoupled;   // the joint's rows coupled to the block: rows[coupled...]
 } qs_block;
 
-// Up to QS_LANES blocks of the same size and number of bodies that share no
-// body, updated side by side, one block a lane (quickstep_block_batch.c).
-// A full batch has its blocks' numbers copied by lane (soa: each number of
-// J, M, Ainv, rhs and cfm as QS_LANES consecutive numbers, one a lane; then
-// those of the coupled rows); a batch of one block (soa NULL) is updated on
-// its own as in bseq.
+// Up to QS_LANES blocks of the same size, number of bodies and form that
+// share no body, updated side by side, one block a lane
+// (quickstep_block_batch.c). A full batch has its blocks' numbers copied by
+// lane (soa: each number as QS_LANES consecutive numbers, one a lane; then
+// those of the coupled rows), without those the rows' structure makes known
+// (its form); a batch of one block (soa NULL) is updated on its own as in
+// bseq.
 #define QS_LANES 4
 typedef struct qs_batch {
     const qs_block *blk[QS_LANES];
@@ -110,6 +111,7 @@ typedef struct qs_batch {
     int ncoupled;       // each lane's coupled rows, side by side too (their
                         // numbers after the blocks' in soa); -1: the lanes
                         // differ, each lane's are updated on their own
+    int form;           // what soa leaves out (quickstep_block_batch.c)
 } qs_batch;
 
 // A row updated on its own. With D = sor_w / A_ii and s = |lambda[f]|:

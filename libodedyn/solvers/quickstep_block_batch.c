@@ -39,176 +39,7 @@ int dxQuickBlockBatches = 1;
 #define QS_BATCH_CLONES
 #endif
 
-// ---- packing -------------------------------------------------------------------
-
-// The numbers of a full batch of blocks of n rows on `two` + 1 bodies:
-// J and M (n rows of ne = 6 or 12 numbers), Ainv (n x n, its padding
-// left out), rhs and cfm (n); then per coupled row (ncoupled of each lane)
-// its J and M (ne), rhs, cfm, lo, hi and g (n). Each number QS_LANES times,
-// one a lane.
-static size_t soa_size(int n, int two, int ncoupled)
-{
-    const size_t ne = two ? 12 : 6;
-    return QS_LANES * ((size_t)n * (2 * ne + (size_t)n + 2) +
-                       (size_t)ncoupled * (2 * ne + 4 + (size_t)n));
-}
-
-// Copy block blk's numbers (n rows, ne numbers of J a row, nc coupled rows:
-// constants after inlining) into lane i of a full batch's soa.
-QS_INLINE void soa_fill(dReal *soa, const qs_block *blk, const qs_row *rows, int i, int n,
-                        int ne, int nc)
-{
-    const int w = QS_PAD(n);
-    const dReal *J = (const dReal *)blk->J, *M = (const dReal *)blk->M;
-    dReal *s = soa + i;
-    for (int a = 0; a < n; a++)   // rows of 12 numbers (quickstep.h)
-        for (int e = 0; e < ne; e++) s[QS_LANES * (a * ne + e)] = J[12 * a + e];
-    s += QS_LANES * n * ne;
-    for (int a = 0; a < n; a++)
-        for (int e = 0; e < ne; e++) s[QS_LANES * (a * ne + e)] = M[12 * a + e];
-    s += QS_LANES * n * ne;
-    for (int c = 0; c < n; c++)
-        for (int a = 0; a < n; a++) s[QS_LANES * (c * n + a)] = blk->Ainv[c * w + a];
-    s += QS_LANES * n * n;
-    for (int a = 0; a < n; a++) {
-        s[QS_LANES * a] = blk->rhs[a];
-        s[QS_LANES * (n + a)] = blk->cfm[a];
-    }
-    s += QS_LANES * 2 * n;
-    for (int c = 0; c < nc; c++) {
-        const qs_row *q = rows + blk->coupled + c;
-        const dReal *qJ0 = (const dReal *)q->J, *qJ1 = (const dReal *)q->J1;
-        const dReal *qM0 = (const dReal *)q->M, *qM1 = (const dReal *)q->M1;
-        for (int e = 0; e < ne; e++) {
-            s[QS_LANES * e] = e < 6 ? qJ0[e] : qJ1[e - 6];
-            s[QS_LANES * (ne + e)] = e < 6 ? qM0[e] : qM1[e - 6];
-        }
-        s += QS_LANES * 2 * ne;
-        s[0] = q->rhs;
-        s[QS_LANES] = q->cfm;
-        s[2 * QS_LANES] = q->lo;
-        s[3 * QS_LANES] = q->hi;
-        s += 4 * QS_LANES;
-        for (int a = 0; a < n; a++) s[QS_LANES * a] = q->g[a];
-        s += QS_LANES * n;
-    }
-}
-
-QS_INLINE void soa_fill_n(dReal *soa, const qs_block *blk, const qs_row *rows, int i, int n,
-                          int nc)
-{
-    if (blk->two) soa_fill(soa, blk, rows, i, n, 12, nc);
-    else soa_fill(soa, blk, rows, i, n, 6, nc);
-}
-
-// Into lane i of soa: its block's numbers and nc coupled rows' (nc: the
-// batch's ncoupled, or 0 when its lanes differ).
-static void soa_copy(dReal *soa, const qs_block *blk, const qs_row *rows, int i, int nc)
-{
-    switch (blk->n) {   // constant sizes let the compiler unroll
-    case 2: soa_fill_n(soa, blk, rows, i, 2, nc); break;
-    case 3: soa_fill_n(soa, blk, rows, i, 3, nc); break;
-    case 4: soa_fill_n(soa, blk, rows, i, 4, nc); break;
-    case 5: soa_fill_n(soa, blk, rows, i, 5, nc); break;
-    default: soa_fill_n(soa, blk, rows, i, QS_MAX_BLOCK, nc); break;
-    }
-}
-
-// Can block blk's coupled rows go side by side with other lanes': none reads
-// its bound from the block's own lambdas (the block's lambdas stay in
-// registers while its coupled rows are updated)?
-static int coupled_apart(const qs_block *blk, const qs_row *rows)
-{
-    for (int c = 0; c < blk->ncoupled; c++) {
-        const int f = rows[blk->coupled + c].f;
-        if (f >= blk->first && f < blk->first + blk->n) return 0;
-    }
-    return 1;
-}
-
-void dxQuickBatchBlocks(dxArena *a, qs_system *sys, qs_group *groups, int ngroups)
-{
-    sys->batches = NULL;
-    sys->nbatches = 0;
-    const int nb = sys->nblocks;
-    int several = 0;   // a group of two islands or more
-    for (int g = 0; g < ngroups; g++) several |= groups[g].islands >= 2;
-    if (!dxQuickBlockBatches || nb < QS_LANES || !several) return;
-    // Each block's batch (slot) by bseq's order: the latest batch of its kind
-    // (size, bodies) in its group if that has a free lane and comes after
-    // every batch holding an earlier block on one of its bodies (last), else
-    // a new one. Per batch: its blocks (count) and their common number of
-    // coupled rows (nc; -1: they differ). Per group: its first batch.
-    int *last = DX_ARENA_ARRAY(a, int, sys->nbodies);
-    int *slot = DX_ARENA_ARRAY(a, int, nb);
-    int *count = DX_ARENA_ARRAY(a, int, nb), *nc = DX_ARENA_ARRAY(a, int, nb);
-    int *first = DX_ARENA_ARRAY(a, int, ngroups + 1);
-    int open[2 * (QS_MAX_BLOCK + 1)];   // per kind: its latest batch
-    for (int b = 0; b < sys->nbodies; b++) last[b] = -1;
-    int nbatch = 0, full = 0;
-    for (int g = 0; g < ngroups; g++) {
-        first[g] = nbatch;
-        for (int k = 0; k < 2 * (QS_MAX_BLOCK + 1); k++) open[k] = -1;
-        const int apart = groups[g].islands < 2;   // each block a batch of its own
-        for (int k = groups[g].block0; k < groups[g].block0 + groups[g].nblocks; k++) {
-            const qs_block *blk = sys->bseq[k];
-            const int b0 = blk->o0 / 6, b1 = blk->o1 / 6;
-            int after = last[b0];
-            if (blk->two && last[b1] > after) after = last[b1];
-            const int kind = 2 * blk->n + blk->two;
-            int t = open[kind];
-            const int ncoupled = coupled_apart(blk, sys->rows) ? blk->ncoupled : -1;
-            if (apart || t < 0 || t <= after || count[t] == QS_LANES) {
-                t = open[kind] = nbatch++;
-                count[t] = 0;
-                nc[t] = ncoupled;
-            }
-            if (nc[t] != ncoupled) nc[t] = -1;
-            if (++count[t] == QS_LANES) full++;
-            slot[k] = t;
-            last[b0] = t;
-            if (blk->two) last[b1] = t;
-        }
-    }
-    first[ngroups] = nbatch;
-    if (full == 0) return;
-    // The sweep's entries: a full batch is one, a partial one's blocks are
-    // one each (start: each batch's first entry; fill: its blocks so far).
-    int *start = DX_ARENA_ARRAY(a, int, nbatch + 1), *fill = DX_ARENA_ARRAY(a, int, nbatch);
-    sys->nbatches = 0;
-    for (int t = 0; t < nbatch; t++) {
-        start[t] = sys->nbatches;
-        sys->nbatches += count[t] == QS_LANES ? 1 : count[t];
-        fill[t] = 0;
-    }
-    start[nbatch] = sys->nbatches;
-    for (int g = 0; g < ngroups; g++) {
-        groups[g].batch0 = start[first[g]];
-        groups[g].nbatches = start[first[g + 1]] - groups[g].batch0;
-    }
-    qs_batch *out = DX_ARENA_ARRAY(a, qs_batch, sys->nbatches);
-    for (int k = 0; k < nb; k++) {
-        const qs_block *blk = sys->bseq[k];
-        const int t = slot[k];
-        if (count[t] < QS_LANES) {
-            qs_batch *one = &out[start[t] + fill[t]++];
-            memset(one, 0, sizeof *one);
-            one->blk[0] = blk;
-            continue;
-        }
-        qs_batch *b = &out[start[t]];
-        const int i = fill[t]++, c = nc[t] > 0 ? nc[t] : 0;
-        if (i == 0) {
-            b->soa = DX_ARENA_ARRAY(a, dReal, soa_size(blk->n, blk->two, c));
-            b->ncoupled = nc[t];
-        }
-        b->blk[i] = blk;
-        soa_copy((dReal *)b->soa, blk, sys->rows, i, c);
-    }
-    sys->batches = out;
-}
-
-// ---- the update ----------------------------------------------------------------
+// ---- fours of numbers ----------------------------------------------------------
 
 // Fours of numbers, one a lane (GNU vector extensions: one AVX operation
 // for doubles in the AVX2 build, two SSE2 ones in the baseline; elsewhere
@@ -270,6 +101,243 @@ QS_INLINE qb_v4 qb_load(const dReal *p)
     return v;
 }
 
+// ---- packing -------------------------------------------------------------------
+
+// A batch's copy leaves out what the rows' structure makes known. Ainv is
+// symmetric: its lower triangle is enough. A block of the ball form (the
+// rows of ball, hinge, universal and fixed joints) has more: its first
+// three rows' J_lin are the unit vectors e_0, e_1, e_2 (the second body's
+// -e_0, -e_1, -e_2) and its other rows' zero, so its dots take fc's linear
+// numbers as they are (x for 1 x, subtracted for -1 x), and, as M^-1 J^T's
+// linear part is im J_lin (quickstep_build.c: side_parts; im the body's
+// inverse mass), fc's linear numbers change by im delta of their own row
+// alone; a lane holds per row J's and M^-1 J^T's angular parts (3 + 3 a
+// body) and the bodies' inverse masses. Other blocks (the general form)
+// keep J and M^-1 J^T in full.
+// Every product and sum the ball form's update makes is the same number as
+// the full form's but for the zero products it leaves out. Those change at
+// most the sign of a zero in a dot or a delta, which no state can see: fc
+// and a block's lambdas start at +0 or a nonzero number and only ever have
+// numbers added, so they are never -0, and x + (+-0) is x.
+enum { SOA_GENERAL = 0, SOA_BALL = 1 };
+// Numbers a lane holds per row of J (je) and of M (me) and per block of
+// inverse masses (mass), for a block of the given form on two + 1 bodies.
+#define SOA_JE(form, two) ((form) ? ((two) ? 6 : 3) : ((two) ? 12 : 6))
+#define SOA_ME(form, two) ((form) ? ((two) ? 6 : 3) : ((two) ? 12 : 6))
+#define SOA_MASS(form, two) ((form) ? (two) + 1 : 0)
+// Place of Ainv's (c, a) in its lower triangle (Ainv is symmetric).
+#define SOA_TRI(c, a) ((c) >= (a) ? (c) * ((c) + 1) / 2 + (a) : (a) * ((a) + 1) / 2 + (c))
+
+// The numbers of a full batch of blocks of n rows of a form on `two` + 1
+// bodies: J and M (n rows of je and me numbers), the inverse masses,
+// Ainv's lower triangle, rhs and cfm (n); then per coupled row (ncoupled
+// of each lane) its J and M in full (ne = 6 or 12), rhs, cfm, lo, hi and g
+// (n). Each number QS_LANES times, one a lane.
+static size_t soa_size(int n, int form, int two, int ncoupled)
+{
+    const size_t ne = two ? 12 : 6, nn = (size_t)n;
+    return QS_LANES * (nn * (size_t)(SOA_JE(form, two) + SOA_ME(form, two)) +
+                       (size_t)SOA_MASS(form, two) + nn * (nn + 1) / 2 + 2 * nn +
+                       (size_t)ncoupled * (2 * ne + 4 + nn));
+}
+
+// Block blk's form (above): the ball form if its rows have that
+// structure. Equal as numbers is enough: a zero of the other sign only
+// changes zero products' signs.
+static int block_form(const qs_block *blk)
+{
+    if (blk->n < 3) return SOA_GENERAL;
+    const dReal *J = (const dReal *)blk->J;
+    for (int a = 0; a < blk->n; a++, J += 12)
+        for (int e = 0; e < 3; e++) {
+            const dReal unit = a == e ? 1 : 0;
+            if (!(J[e] == unit && (!blk->two || J[6 + e] == -unit))) return SOA_GENERAL;
+        }
+    return SOA_BALL;
+}
+
+// Copy block blk's numbers (n rows, form, two: on two bodies, nc coupled
+// rows: constants after inlining) into lane i of a full batch's soa.
+QS_INLINE void soa_fill(dReal *soa, const qs_block *blk, const qs_row *rows,
+                        const dReal *inv_mass, int i, int n, int form, int two, int nc)
+{
+    const int w = QS_PAD(n), je = SOA_JE(form, two), me = SOA_ME(form, two);
+    const int ne = two ? 12 : 6, e0 = form == SOA_BALL ? 3 : 0;
+    const dReal *J = (const dReal *)blk->J, *M = (const dReal *)blk->M;
+    dReal *s = soa + i;
+    for (int a = 0; a < n; a++) {   // rows of 12 numbers (quickstep.h)
+        int k = QS_LANES * a * je;
+        for (int e = e0; e < 6; e++, k += QS_LANES) s[k] = J[12 * a + e];
+        if (two)
+            for (int e = 6 + e0; e < 12; e++, k += QS_LANES) s[k] = J[12 * a + e];
+    }
+    s += QS_LANES * n * je;
+    for (int a = 0; a < n; a++) {
+        int k = QS_LANES * a * me;
+        for (int e = e0; e < 6; e++, k += QS_LANES) s[k] = M[12 * a + e];
+        if (two)
+            for (int e = 6 + e0; e < 12; e++, k += QS_LANES) s[k] = M[12 * a + e];
+    }
+    s += QS_LANES * n * me;
+    if (form == SOA_BALL) {
+        s[0] = inv_mass[blk->o0 / 6];
+        if (two) s[QS_LANES] = inv_mass[blk->o1 / 6];
+    }
+    s += QS_LANES * SOA_MASS(form, two);
+    for (int c = 0; c < n; c++)
+        for (int a = 0; a <= c; a++) s[QS_LANES * SOA_TRI(c, a)] = blk->Ainv[c * w + a];
+    s += QS_LANES * n * (n + 1) / 2;
+    for (int a = 0; a < n; a++) {
+        s[QS_LANES * a] = blk->rhs[a];
+        s[QS_LANES * (n + a)] = blk->cfm[a];
+    }
+    s += QS_LANES * 2 * n;
+    for (int c = 0; c < nc; c++) {
+        const qs_row *q = rows + blk->coupled + c;
+        const dReal *qJ0 = (const dReal *)q->J, *qJ1 = (const dReal *)q->J1;
+        const dReal *qM0 = (const dReal *)q->M, *qM1 = (const dReal *)q->M1;
+        for (int e = 0; e < ne; e++) {
+            s[QS_LANES * e] = e < 6 ? qJ0[e] : qJ1[e - 6];
+            s[QS_LANES * (ne + e)] = e < 6 ? qM0[e] : qM1[e - 6];
+        }
+        s += QS_LANES * 2 * ne;
+        s[0] = q->rhs;
+        s[QS_LANES] = q->cfm;
+        s[2 * QS_LANES] = q->lo;
+        s[3 * QS_LANES] = q->hi;
+        s += 4 * QS_LANES;
+        for (int a = 0; a < n; a++) s[QS_LANES * a] = q->g[a];
+        s += QS_LANES * n;
+    }
+}
+
+QS_INLINE void soa_fill_n(dReal *soa, const qs_block *blk, const qs_row *rows,
+                          const dReal *inv_mass, int i, int n, int form, int nc)
+{
+    if (form == SOA_BALL) {
+        if (blk->two) soa_fill(soa, blk, rows, inv_mass, i, n, SOA_BALL, 1, nc);
+        else soa_fill(soa, blk, rows, inv_mass, i, n, SOA_BALL, 0, nc);
+    } else {
+        if (blk->two) soa_fill(soa, blk, rows, inv_mass, i, n, SOA_GENERAL, 1, nc);
+        else soa_fill(soa, blk, rows, inv_mass, i, n, SOA_GENERAL, 0, nc);
+    }
+}
+
+// Into lane i of soa: its block's numbers in the batch's form and nc
+// coupled rows' (nc: the batch's ncoupled, or 0 when its lanes differ).
+static void soa_copy(dReal *soa, const qs_block *blk, const qs_row *rows, const dReal *inv_mass,
+                     int i, int form, int nc)
+{
+    switch (blk->n) {   // constant sizes let the compiler unroll
+    case 2: soa_fill_n(soa, blk, rows, inv_mass, i, 2, form, nc); break;
+    case 3: soa_fill_n(soa, blk, rows, inv_mass, i, 3, form, nc); break;
+    case 4: soa_fill_n(soa, blk, rows, inv_mass, i, 4, form, nc); break;
+    case 5: soa_fill_n(soa, blk, rows, inv_mass, i, 5, form, nc); break;
+    default: soa_fill_n(soa, blk, rows, inv_mass, i, QS_MAX_BLOCK, form, nc); break;
+    }
+}
+
+// Can block blk's coupled rows go side by side with other lanes': none reads
+// its bound from the block's own lambdas (the block's lambdas stay in
+// registers while its coupled rows are updated)?
+static int coupled_apart(const qs_block *blk, const qs_row *rows)
+{
+    for (int c = 0; c < blk->ncoupled; c++) {
+        const int f = rows[blk->coupled + c].f;
+        if (f >= blk->first && f < blk->first + blk->n) return 0;
+    }
+    return 1;
+}
+
+void dxQuickBatchBlocks(dxArena *a, qs_system *sys, qs_group *groups, int ngroups)
+{
+    sys->batches = NULL;
+    sys->nbatches = 0;
+    const int nb = sys->nblocks;
+    int several = 0;   // a group of two islands or more
+    for (int g = 0; g < ngroups; g++) several |= groups[g].islands >= 2;
+    if (!dxQuickBlockBatches || nb < QS_LANES || !several) return;
+    // Each block's batch (slot) by bseq's order: the latest batch of its kind
+    // (size, bodies, form) in its group if that has a free lane and comes after
+    // every batch holding an earlier block on one of its bodies (last), else
+    // a new one. Per batch: its blocks (count) and their common number of
+    // coupled rows (nc; -1: they differ), their form. Per group: its first
+    // batch.
+    int *last = DX_ARENA_ARRAY(a, int, sys->nbodies);
+    int *slot = DX_ARENA_ARRAY(a, int, nb);
+    int *count = DX_ARENA_ARRAY(a, int, nb), *nc = DX_ARENA_ARRAY(a, int, nb);
+    int *first = DX_ARENA_ARRAY(a, int, ngroups + 1);
+    int *forms = DX_ARENA_ARRAY(a, int, nb);
+    int open[4 * (QS_MAX_BLOCK + 1)];   // per kind: its latest batch
+    for (int b = 0; b < sys->nbodies; b++) last[b] = -1;
+    int nbatch = 0, full = 0;
+    for (int g = 0; g < ngroups; g++) {
+        first[g] = nbatch;
+        for (int k = 0; k < 4 * (QS_MAX_BLOCK + 1); k++) open[k] = -1;
+        const int apart = groups[g].islands < 2;   // each block a batch of its own
+        for (int k = groups[g].block0; k < groups[g].block0 + groups[g].nblocks; k++) {
+            const qs_block *blk = sys->bseq[k];
+            const int b0 = blk->o0 / 6, b1 = blk->o1 / 6;
+            int after = last[b0];
+            if (blk->two && last[b1] > after) after = last[b1];
+            const int ncoupled = coupled_apart(blk, sys->rows) ? blk->ncoupled : -1;
+            const int form = block_form(blk);
+            const int kind = 2 * (2 * blk->n + blk->two) + form;
+            int t = open[kind];
+            if (apart || t < 0 || t <= after || count[t] == QS_LANES) {
+                t = open[kind] = nbatch++;
+                count[t] = 0;
+                nc[t] = ncoupled;
+                forms[t] = form;
+            }
+            if (nc[t] != ncoupled) nc[t] = -1;
+            if (++count[t] == QS_LANES) full++;
+            slot[k] = t;
+            last[b0] = t;
+            if (blk->two) last[b1] = t;
+        }
+    }
+    first[ngroups] = nbatch;
+    if (full == 0) return;
+    // The sweep's entries: a full batch is one, a partial one's blocks are
+    // one each (start: each batch's first entry; fill: its blocks so far).
+    int *start = DX_ARENA_ARRAY(a, int, nbatch + 1), *fill = DX_ARENA_ARRAY(a, int, nbatch);
+    sys->nbatches = 0;
+    for (int t = 0; t < nbatch; t++) {
+        start[t] = sys->nbatches;
+        sys->nbatches += count[t] == QS_LANES ? 1 : count[t];
+        fill[t] = 0;
+    }
+    start[nbatch] = sys->nbatches;
+    for (int g = 0; g < ngroups; g++) {
+        groups[g].batch0 = start[first[g]];
+        groups[g].nbatches = start[first[g + 1]] - groups[g].batch0;
+    }
+    qs_batch *out = DX_ARENA_ARRAY(a, qs_batch, sys->nbatches);
+    for (int k = 0; k < nb; k++) {
+        const qs_block *blk = sys->bseq[k];
+        const int t = slot[k];
+        if (count[t] < QS_LANES) {
+            qs_batch *one = &out[start[t] + fill[t]++];
+            memset(one, 0, sizeof *one);
+            one->blk[0] = blk;
+            continue;
+        }
+        qs_batch *b = &out[start[t]];
+        const int i = fill[t]++, c = nc[t] > 0 ? nc[t] : 0;
+        if (i == 0) {
+            b->soa = DX_ARENA_ARRAY(a, dReal, soa_size(blk->n, forms[t], blk->two, c));
+            b->ncoupled = nc[t];
+            b->form = forms[t];
+        }
+        b->blk[i] = blk;
+        soa_copy((dReal *)b->soa, blk, sys->rows, sys->inv_mass, i, forms[t], c);
+    }
+    sys->batches = out;
+}
+
+// ---- the update ----------------------------------------------------------------
+
 // p[0][e], p[1][e], p[2][e], p[3][e].
 QS_INLINE qb_v4 qb_gather(dReal *const *p, int e)
 {
@@ -284,15 +352,35 @@ QS_INLINE void qb_scatter(qb_v4 v, dReal *const *p, int e)
 }
 
 // Row a's J . fc in every lane (x: the bodies' numbers by lane), summed as
-// the block update does (quickstep_sweep.c: block_dot, then its two lanes).
-QS_INLINE qb_v4 batch_dot(const dReal *J, const qb_v4 *x, int two)
+// the block update does (quickstep_sweep.c: block_dot, then its two lanes),
+// for a block of the general form or a coupled row (J in full: ne numbers).
+QS_INLINE qb_v4 general_dot(const dReal *J, const qb_v4 *x, int two)
 {
-#define JX(e) qb_mul(qb_load(J + QS_LANES * (e)), x[e])
-    qb_v4 s0 = qb_add(qb_add(JX(0), JX(2)), JX(4));
-    qb_v4 s1 = qb_add(qb_add(JX(1), JX(3)), JX(5));
+#define JX(k, e) qb_mul(qb_load(J + QS_LANES * (k)), x[e])
+    qb_v4 s0 = qb_add(qb_add(JX(0, 0), JX(2, 2)), JX(4, 4));
+    qb_v4 s1 = qb_add(qb_add(JX(1, 1), JX(3, 3)), JX(5, 5));
     if (two) {
-        s0 = qb_add(s0, qb_add(qb_add(JX(6), JX(8)), JX(10)));
-        s1 = qb_add(s1, qb_add(qb_add(JX(7), JX(9)), JX(11)));
+        s0 = qb_add(s0, qb_add(qb_add(JX(6, 6), JX(8, 8)), JX(10, 10)));
+        s1 = qb_add(s1, qb_add(qb_add(JX(7, 7), JX(9, 9)), JX(11, 11)));
+    }
+    return qb_add(s0, s1);
+}
+
+// The same for row a (a constant after inlining) of a block of the ball
+// form (J: the row's angular numbers): J_lin is e_a (a < 3) or zero, and
+// the second body's -e_a.
+QS_INLINE qb_v4 ball_dot(const dReal *J, const qb_v4 *x, int two, int a)
+{
+    qb_v4 s0 = JX(1, 4), s1 = JX(0, 3);
+    if (a == 0 || a == 2) s0 = qb_add(x[a], s0);
+    if (a == 1) s1 = qb_add(x[1], s1);
+    s1 = qb_add(s1, JX(2, 5));
+    if (two) {
+        qb_v4 t0 = JX(4, 10), t1 = JX(3, 9);
+        if (a == 0 || a == 2) t0 = qb_sub(t0, x[6 + a]);
+        if (a == 1) t1 = qb_sub(t1, x[7]);
+        s0 = qb_add(s0, t0);
+        s1 = qb_add(s1, qb_add(t1, JX(5, 11)));
     }
 #undef JX
     return qb_add(s0, s1);
@@ -316,7 +404,7 @@ QS_INLINE void batch_coupled(const qs_batch *b, int n, int two, int nc, const dR
         }
         const dReal *M = cs + QS_LANES * ne, *k = M + QS_LANES * ne, *g = k + 4 * QS_LANES;
         const qb_v4 r = qb_sub(qb_add(old, qb_load(k)), qb_mul(qb_load(k + QS_LANES), old));
-        const qb_v4 now = qb_clamp(qb_sub(r, batch_dot(cs, x, two)),
+        const qb_v4 now = qb_clamp(qb_sub(r, general_dot(cs, x, two)),
                                    qb_mul(qb_load(k + 2 * QS_LANES), s),
                                    qb_mul(qb_load(k + 3 * QS_LANES), s));
         for (int i = 0; i < QS_LANES; i++) *pos[i] = qb_lane(now, i);
@@ -327,14 +415,13 @@ QS_INLINE void batch_coupled(const qs_batch *b, int n, int two, int nc, const dR
     }
 }
 
-// A full batch of blocks of n rows on two + 1 bodies (constants after
-// inlining): each lane the update_block of its block, then its coupled rows
-// (side by side when the lanes have as many, nc >= 0; else each lane's on
-// its own).
-QS_INLINE void batch_update(const qs_batch *b, int n, int two, int nc, const qs_row *rows,
-                            dReal *lambda, dReal *fc)
+// A full batch of blocks of n rows of a form on two + 1 bodies (constants
+// after inlining): each lane the update_block of its block, then its
+// coupled rows (side by side when the lanes have as many, nc >= 0; else
+// each lane's on its own).
+QS_INLINE void batch_update(const qs_batch *b, int n, int form, int two, int nc,
+                            const qs_row *rows, dReal *lambda, dReal *fc)
 {
-    const int ne = two ? 12 : 6;
     dReal *f0[QS_LANES], *f1[QS_LANES], *l[QS_LANES];
     for (int i = 0; i < QS_LANES; i++) {
         f0[i] = fc + b->blk[i]->o0;
@@ -345,24 +432,43 @@ QS_INLINE void batch_update(const qs_batch *b, int n, int two, int nc, const qs_
     for (int e = 0; e < 6; e++) x[e] = qb_gather(f0, e);
     if (two)
         for (int e = 0; e < 6; e++) x[6 + e] = qb_gather(f1, e);
-    const dReal *J = b->soa, *M = J + QS_LANES * n * ne, *A = M + QS_LANES * n * ne;
-    const dReal *rhs = A + QS_LANES * n * n, *cfm = rhs + QS_LANES * n;
+    const int je = SOA_JE(form, two), me = SOA_ME(form, two);
+    const dReal *J = b->soa, *M = J + QS_LANES * n * je, *im = M + QS_LANES * n * me;
+    const dReal *A = im + QS_LANES * SOA_MASS(form, two);
+    const dReal *rhs = A + QS_LANES * n * (n + 1) / 2, *cfm = rhs + QS_LANES * n;
     for (int a = 0; a < n; a++) {
         L[a] = qb_gather(l, a);
         const qb_v4 r = qb_sub(qb_load(rhs + QS_LANES * a), qb_mul(qb_load(cfm + QS_LANES * a), L[a]));
-        res[a] = qb_sub(r, batch_dot(J + QS_LANES * ne * a, x, two));
+        const dReal *Ja = J + QS_LANES * je * a;
+        res[a] = qb_sub(r, form == SOA_BALL ? ball_dot(Ja, x, two, a) : general_dot(Ja, x, two));
     }
     // delta = Ainv res, column products summed in row order; lambda +=
     // delta; fc += M^-1 J^T delta, row by row.
     qb_v4 d[QS_MAX_BLOCK];
     for (int a = 0; a < n; a++) {
-        d[a] = qb_mul(qb_load(A + QS_LANES * a), res[0]);
-        for (int c = 1; c < n; c++) d[a] = qb_add(d[a], qb_mul(qb_load(A + QS_LANES * (c * n + a)), res[c]));
+        d[a] = qb_mul(qb_load(A + QS_LANES * SOA_TRI(0, a)), res[0]);
+        for (int c = 1; c < n; c++)
+            d[a] = qb_add(d[a], qb_mul(qb_load(A + QS_LANES * SOA_TRI(c, a)), res[c]));
         L[a] = qb_add(L[a], d[a]);
     }
-    for (int a = 0; a < n; a++)
-        for (int e = 0; e < ne; e++)
-            x[e] = qb_add(x[e], qb_mul(d[a], qb_load(M + QS_LANES * (a * ne + e))));
+    if (form == SOA_BALL) {
+        // Linear numbers: row e's alone, M^-1 J^T im (first body) and -im.
+        const qb_v4 im0 = qb_load(im);
+        for (int e = 0; e < 3; e++) x[e] = qb_add(x[e], qb_mul(d[e], im0));
+        if (two) {
+            const qb_v4 im1 = qb_load(im + QS_LANES);
+            for (int e = 0; e < 3; e++) x[6 + e] = qb_sub(x[6 + e], qb_mul(d[e], im1));
+        }
+        for (int a = 0; a < n; a++)
+            for (int e = 0; e < me; e++) {
+                const int k = e < 3 ? 3 + e : 6 + e;   // angular numbers
+                x[k] = qb_add(x[k], qb_mul(d[a], qb_load(M + QS_LANES * (a * me + e))));
+            }
+    } else {
+        for (int a = 0; a < n; a++)
+            for (int e = 0; e < me; e++)
+                x[e] = qb_add(x[e], qb_mul(d[a], qb_load(M + QS_LANES * (a * me + e))));
+    }
     if (nc > 0) batch_coupled(b, n, two, nc, cfm + QS_LANES * n, rows, lambda, x, L);
     for (int a = 0; a < n; a++) qb_scatter(L[a], l, a);
     for (int e = 0; e < 6; e++) qb_scatter(x[e], f0, e);
@@ -374,23 +480,31 @@ QS_INLINE void batch_update(const qs_batch *b, int n, int two, int nc, const qs_
 }
 
 // nc: the batch's coupled rows a lane, a constant for the common cases.
-QS_INLINE void batch_update_c(const qs_batch *b, int n, int two, const qs_row *rows,
+QS_INLINE void batch_update_c(const qs_batch *b, int n, int form, int two, const qs_row *rows,
                               dReal *lambda, dReal *fc)
 {
     switch (b->ncoupled) {
-    case 0: batch_update(b, n, two, 0, rows, lambda, fc); break;
-    case 1: batch_update(b, n, two, 1, rows, lambda, fc); break;
-    case 2: batch_update(b, n, two, 2, rows, lambda, fc); break;
-    case -1: batch_update(b, n, two, -1, rows, lambda, fc); break;
-    default: batch_update(b, n, two, b->ncoupled, rows, lambda, fc); break;
+    case 0: batch_update(b, n, form, two, 0, rows, lambda, fc); break;
+    case 1: batch_update(b, n, form, two, 1, rows, lambda, fc); break;
+    case 2: batch_update(b, n, form, two, 2, rows, lambda, fc); break;
+    case -1: batch_update(b, n, form, two, -1, rows, lambda, fc); break;
+    default: batch_update(b, n, form, two, b->ncoupled, rows, lambda, fc); break;
     }
 }
 
+QS_INLINE void batch_update_f(const qs_batch *b, int n, int form, const qs_row *rows,
+                              dReal *lambda, dReal *fc)
+{
+    if (b->blk[0]->two) batch_update_c(b, n, form, 1, rows, lambda, fc);
+    else batch_update_c(b, n, form, 0, rows, lambda, fc);
+}
+
+// The ball form has three rows or more.
 QS_INLINE void batch_update_n(const qs_batch *b, int n, const qs_row *rows, dReal *lambda,
                               dReal *fc)
 {
-    if (b->blk[0]->two) batch_update_c(b, n, 1, rows, lambda, fc);
-    else batch_update_c(b, n, 0, rows, lambda, fc);
+    if (n >= 3 && b->form == SOA_BALL) batch_update_f(b, n, SOA_BALL, rows, lambda, fc);
+    else batch_update_f(b, n, SOA_GENERAL, rows, lambda, fc);
 }
 
 QS_BATCH_CLONES void dxQuickBatchUpdate(const qs_batch *b, const qs_row *rows, dReal *lambda,
