@@ -311,21 +311,30 @@ static int clipped_face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism
     dReal eps = DX_COLLIDE_EPS * q->scale;
     dxTriClipped c;
     n = dxTriClipToPrismWith(p, t, corner, made, n, inside, &c);
-    int added = 0;
+    // Which points are added follows the data: their bits first, without
+    // branches, then the contacts of those set. bit: a box corner's seen
+    // bit (none without `seen`, or for a point the clip made); a corner is
+    // in the clip's list once at most.
+    const unsigned was = seen ? *seen : 0, use_seen = seen ? ~0u : 0;
+    unsigned now = was;
+    uint64_t add = 0;
+    dReal depth[2 * DX_TRI_POLY_MAX];
     for (int i = 0; i < n; i++) {
-        unsigned bit = 0;
-        int tag = c.made[i];
-        if (seen && tag >= DX_TRI_MADE_CORNER) {
-            bit = 1u << (tag - DX_TRI_MADE_CORNER);
-            if (*seen & bit) continue;
-        }
-        dReal depth = -dxTriHeight(t, c.pt[i]);
-        if (depth < -eps || tag == DX_TRI_MADE_AT_FLAT_EDGE) continue;
-        if (seen) *seen |= bit;
-        dxTriAdd(q, c.pt[i], t->n, dMax(depth, 0), t->index);
-        added = 1;
+        const int tag = c.made[i];
+        const unsigned bit =
+            (unsigned)(tag >= DX_TRI_MADE_CORNER) << ((tag - DX_TRI_MADE_CORNER) & 31) & use_seen;
+        depth[i] = -dxTriHeight(t, c.pt[i]);
+        const unsigned a = !(was & bit) & !(depth[i] < -eps) & (tag != DX_TRI_MADE_AT_FLAT_EDGE);
+        add = add >> 1 | (uint64_t)a << 63;   // (shifted down below: constant shifts)
+        now |= bit & -a;
     }
-    return added;
+    add = add >> (63 - n) >> 1;
+    if (seen) *seen = now;
+    for (uint64_t left = add; left; left &= left - 1) {
+        const int i = __builtin_ctzll(left);
+        dxTriAdd(q, c.pt[i], t->n, dMax(depth[i], 0), t->index);
+    }
+    return add != 0;
 }
 
 // The same for any face (polygon a): one wholly in front of the plane adds
@@ -497,11 +506,15 @@ static int separates_box01(const box_pair *b, const dxTri *t, const dReal e[3],
 static int edge_through(const box_pair *b, const dReal a[3], const dReal e[3])
 {
     // Both ends beyond one side of a slab: no point of the edge is within
-    // (the slabs' test below says the same, after its divisions).
+    // (the slabs' test below says the same, after its divisions). The six
+    // sides' answers together, one branch (which way it goes depends on
+    // the triangle).
+    int beyond = 0;
     for (int j = 0; j < 3; j++) {
         const dReal w = b->through[j];
-        if ((a[j] > w && e[j] > w) || (a[j] < -w && e[j] < -w)) return 0;
+        beyond |= ((a[j] > w) & (e[j] > w)) | ((a[j] < -w) & (e[j] < -w));
     }
+    if (beyond) return 0;
     dReal d[3] = { e[0] - a[0], e[1] - a[1], e[2] - a[2] }, s0 = 0, s1 = 1;
     for (int j = 0; j < 3; j++) {
         dReal w = b->through[j];
@@ -583,13 +596,15 @@ static int box_separated(const box_pair *b, const dxTri *t, const dReal c[3], dR
     // sums below: no edge pair can separate, and they are not worked out.
     // Bit i of near: vertex i is within b->reach of the centre along each
     // axis (an end edge_through takes).
+    // Both as bits for the three vertices, then one branch.
     const dReal *in = b->inner, reach = b->reach;
-    unsigned near = 0;
+    unsigned near = 0, inner = 0;
     for (int i = 0; i < 3; i++) {
         dReal x = dFabs(p[i][0]), y = dFabs(p[i][1]), z = dFabs(p[i][2]);
-        if (x <= in[0] && y <= in[1] && z <= in[2]) return 0;
-        near |= (unsigned)(x <= reach && y <= reach && z <= reach) << i;
+        inner |= (unsigned)((x <= in[0]) & (y <= in[1]) & (z <= in[2])) << i;
+        near |= (unsigned)((x <= reach) & (y <= reach) & (z <= reach)) << i;
     }
+    if (inner) return 0;
     for (int k = 0; k < 3; k++) {
         int k1 = k < 2 ? k + 1 : 0;
         if ((near >> k & near >> k1 & 1) && edge_through(b, p[k], p[k1])) return 0;
@@ -709,16 +724,30 @@ static void low_part_sides(int f, const dReal hv[8], unsigned low, dReal H,
 {
     const int *fv = box_faces[f];
     unsigned a = *away, w = *within;
-    for (int i = 0; i < 4 && (a | w); i++) {
-        int u = fv[i], x = fv[(i + 1) & 3];
-        if ((low >> u & 1) == (low >> x & 1)) continue;
+    // The edges that cross the level (bit i: from corner fv[i] to the
+    // next), found without branches; at each, the three sides' bits
+    // cleared by masks (a bit already clear stays clear), so that only
+    // the loop over the crossings (two but for rounding) branches.
+    unsigned cross = 0;
+    for (int i = 0; i < 4; i++) cross |= ((low >> fv[i] ^ low >> fv[(i + 1) & 3]) & 1u) << i;
+    for (; cross; cross &= cross - 1) {
+        const int i = __builtin_ctz(cross), u = fv[i], x = fv[(i + 1) & 3];
         dReal s = (H - hv[u]) / (hv[x] - hv[u]);
+#if defined(__SSE2__) && !defined(dSINGLE)
+        // Sides 0 and 1 side by side (the same sums), side 2 alone.
+        const __m128d fu = _mm_set_pd(fk[1][u], fk[0][u]), fx = _mm_set_pd(fk[1][x], fk[0][x]);
+        const __m128d fc = _mm_add_pd(fu, _mm_mul_pd(_mm_set1_pd(s), _mm_sub_pd(fx, fu)));
+        const dReal fc2 = fk[2][u] + s * (fk[2][x] - fk[2][u]);
+        a &= (unsigned)_mm_movemask_pd(_mm_cmplt_pd(fc, _mm_setzero_pd())) | (unsigned)(fc2 < 0) << 2;
+        w &= (unsigned)_mm_movemask_pd(_mm_cmpge_pd(fc, _mm_loadu_pd(lim))) |
+             (unsigned)(fc2 >= lim[2]) << 2;
+#else
         for (int k = 0; k < 3; k++) {
-            if (!((a | w) >> k & 1)) continue;
             dReal fc = fk[k][u] + s * (fk[k][x] - fk[k][u]);
-            if (!(fc < 0)) a &= ~(1u << k);
-            if (!(fc >= lim[k])) w &= ~(1u << k);
+            a &= ~((unsigned)!(fc < 0) << k);
+            w &= ~((unsigned)!(fc >= lim[k]) << k);
         }
+#endif
     }
     *away = a;
     *within = w;
