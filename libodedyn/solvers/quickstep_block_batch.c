@@ -21,6 +21,7 @@
 // when every lane has as many, else each lane's on their own.
 
 #include "quickstep.h"
+#include "quickstep_v4.h"
 #include "dx_clones.h"
 
 #include <stdint.h>
@@ -38,68 +39,6 @@ int dxQuickBlockBatches = 1;
 #ifndef QS_BATCH_CLONES
 #define QS_BATCH_CLONES
 #endif
-
-// ---- fours of numbers ----------------------------------------------------------
-
-// Fours of numbers, one a lane (GNU vector extensions: one AVX operation
-// for doubles in the AVX2 build, two SSE2 ones in the baseline; elsewhere
-// four scalar operations).
-#if defined(__GNUC__)
-typedef dReal qb_v4 __attribute__((vector_size(QS_LANES * sizeof(dReal))));
-#define qb_add(x, y) ((x) + (y))
-#define qb_sub(x, y) ((x) - (y))
-#define qb_mul(x, y) ((x) * (y))
-#define qb_lane(v, i) ((v)[i])
-#if defined(dSINGLE)
-typedef int32_t qb_m4 __attribute__((vector_size(QS_LANES * sizeof(dReal))));
-#else
-typedef int64_t qb_m4 __attribute__((vector_size(QS_LANES * sizeof(dReal))));
-#endif
-// l projected on lo..hi in each lane, as the scalar update does: hi where
-// l > hi, then lo where l < lo (comparisons are masks of all ones).
-QS_INLINE qb_v4 qb_clamp(qb_v4 l, qb_v4 lo, qb_v4 hi)
-{
-    qb_m4 m = l > hi;
-    l = (qb_v4)(((qb_m4)hi & m) | ((qb_m4)l & ~m));
-    m = l < lo;
-    return (qb_v4)(((qb_m4)lo & m) | ((qb_m4)l & ~m));
-}
-#else
-typedef struct qb_v4 {
-    dReal e[QS_LANES];
-} qb_v4;
-static inline qb_v4 qb_add(qb_v4 x, qb_v4 y)
-{
-    qb_v4 v = { { x.e[0] + y.e[0], x.e[1] + y.e[1], x.e[2] + y.e[2], x.e[3] + y.e[3] } };
-    return v;
-}
-static inline qb_v4 qb_sub(qb_v4 x, qb_v4 y)
-{
-    qb_v4 v = { { x.e[0] - y.e[0], x.e[1] - y.e[1], x.e[2] - y.e[2], x.e[3] - y.e[3] } };
-    return v;
-}
-static inline qb_v4 qb_mul(qb_v4 x, qb_v4 y)
-{
-    qb_v4 v = { { x.e[0] * y.e[0], x.e[1] * y.e[1], x.e[2] * y.e[2], x.e[3] * y.e[3] } };
-    return v;
-}
-#define qb_lane(v, i) ((v).e[i])
-static inline qb_v4 qb_clamp(qb_v4 l, qb_v4 lo, qb_v4 hi)
-{
-    for (int i = 0; i < QS_LANES; i++) {
-        l.e[i] = l.e[i] > hi.e[i] ? hi.e[i] : l.e[i];
-        l.e[i] = l.e[i] < lo.e[i] ? lo.e[i] : l.e[i];
-    }
-    return l;
-}
-#endif
-
-QS_INLINE qb_v4 qb_load(const dReal *p)
-{
-    qb_v4 v;
-    memcpy(&v, p, sizeof v);
-    return v;
-}
 
 // ---- packing -------------------------------------------------------------------
 
@@ -339,78 +278,78 @@ void dxQuickBatchBlocks(dxArena *a, qs_system *sys, qs_group *groups, int ngroup
 // ---- the update ----------------------------------------------------------------
 
 // p[0][e], p[1][e], p[2][e], p[3][e].
-QS_INLINE qb_v4 qb_gather(dReal *const *p, int e)
+QS_INLINE qs_v4 qb_gather(dReal *const *p, int e)
 {
-    qb_v4 v;
-    for (int i = 0; i < QS_LANES; i++) qb_lane(v, i) = p[i][e];
+    qs_v4 v;
+    for (int i = 0; i < QS_LANES; i++) v4_lane(v, i) = p[i][e];
     return v;
 }
 
-QS_INLINE void qb_scatter(qb_v4 v, dReal *const *p, int e)
+QS_INLINE void qb_scatter(qs_v4 v, dReal *const *p, int e)
 {
-    for (int i = 0; i < QS_LANES; i++) p[i][e] = qb_lane(v, i);
+    for (int i = 0; i < QS_LANES; i++) p[i][e] = v4_lane(v, i);
 }
 
 // Row a's J . fc in every lane (x: the bodies' numbers by lane), summed as
 // the block update does (quickstep_sweep.c: block_dot, then its two lanes),
 // for a block of the general form or a coupled row (J in full: ne numbers).
-QS_INLINE qb_v4 general_dot(const dReal *J, const qb_v4 *x, int two)
+QS_INLINE qs_v4 general_dot(const dReal *J, const qs_v4 *x, int two)
 {
-#define JX(k, e) qb_mul(qb_load(J + QS_LANES * (k)), x[e])
-    qb_v4 s0 = qb_add(qb_add(JX(0, 0), JX(2, 2)), JX(4, 4));
-    qb_v4 s1 = qb_add(qb_add(JX(1, 1), JX(3, 3)), JX(5, 5));
+#define JX(k, e) v4_mul(v4_load(J + QS_LANES * (k)), x[e])
+    qs_v4 s0 = v4_add(v4_add(JX(0, 0), JX(2, 2)), JX(4, 4));
+    qs_v4 s1 = v4_add(v4_add(JX(1, 1), JX(3, 3)), JX(5, 5));
     if (two) {
-        s0 = qb_add(s0, qb_add(qb_add(JX(6, 6), JX(8, 8)), JX(10, 10)));
-        s1 = qb_add(s1, qb_add(qb_add(JX(7, 7), JX(9, 9)), JX(11, 11)));
+        s0 = v4_add(s0, v4_add(v4_add(JX(6, 6), JX(8, 8)), JX(10, 10)));
+        s1 = v4_add(s1, v4_add(v4_add(JX(7, 7), JX(9, 9)), JX(11, 11)));
     }
-    return qb_add(s0, s1);
+    return v4_add(s0, s1);
 }
 
 // The same for row a (a constant after inlining) of a block of the ball
 // form (J: the row's angular numbers): J_lin is e_a (a < 3) or zero, and
 // the second body's -e_a.
-QS_INLINE qb_v4 ball_dot(const dReal *J, const qb_v4 *x, int two, int a)
+QS_INLINE qs_v4 ball_dot(const dReal *J, const qs_v4 *x, int two, int a)
 {
-    qb_v4 s0 = JX(1, 4), s1 = JX(0, 3);
-    if (a == 0 || a == 2) s0 = qb_add(x[a], s0);
-    if (a == 1) s1 = qb_add(x[1], s1);
-    s1 = qb_add(s1, JX(2, 5));
+    qs_v4 s0 = JX(1, 4), s1 = JX(0, 3);
+    if (a == 0 || a == 2) s0 = v4_add(x[a], s0);
+    if (a == 1) s1 = v4_add(x[1], s1);
+    s1 = v4_add(s1, JX(2, 5));
     if (two) {
-        qb_v4 t0 = JX(4, 10), t1 = JX(3, 9);
-        if (a == 0 || a == 2) t0 = qb_sub(t0, x[6 + a]);
-        if (a == 1) t1 = qb_sub(t1, x[7]);
-        s0 = qb_add(s0, t0);
-        s1 = qb_add(s1, qb_add(t1, JX(5, 11)));
+        qs_v4 t0 = JX(4, 10), t1 = JX(3, 9);
+        if (a == 0 || a == 2) t0 = v4_sub(t0, x[6 + a]);
+        if (a == 1) t1 = v4_sub(t1, x[7]);
+        s0 = v4_add(s0, t0);
+        s1 = v4_add(s1, v4_add(t1, JX(5, 11)));
     }
 #undef JX
-    return qb_add(s0, s1);
+    return v4_add(s0, s1);
 }
 
 // The coupled rows of a full batch whose lanes have nc each (the block
 // part done: x its bodies' numbers, L its lambdas, by lane), side by side:
 // each lane coupled_row of quickstep_sweep.c. cs: their numbers (soa).
 QS_INLINE void batch_coupled(const qs_batch *b, int n, int two, int nc, const dReal *cs,
-                             const qs_row *rows, dReal *lambda, qb_v4 *x, qb_v4 *L)
+                             const qs_row *rows, dReal *lambda, qs_v4 *x, qs_v4 *L)
 {
     const int ne = two ? 12 : 6;
     for (int c = 0; c < nc; c++) {
         dReal *pos[QS_LANES];
-        qb_v4 s, old;
+        qs_v4 s, old;
         for (int i = 0; i < QS_LANES; i++) {
             const qs_row *q = rows + b->blk[i]->coupled + c;
             pos[i] = lambda + q->pos;
-            qb_lane(s, i) = dFabs(lambda[q->f]);
-            qb_lane(old, i) = *pos[i];
+            v4_lane(s, i) = dFabs(lambda[q->f]);
+            v4_lane(old, i) = *pos[i];
         }
         const dReal *M = cs + QS_LANES * ne, *k = M + QS_LANES * ne, *g = k + 4 * QS_LANES;
-        const qb_v4 r = qb_sub(qb_add(old, qb_load(k)), qb_mul(qb_load(k + QS_LANES), old));
-        const qb_v4 now = qb_clamp(qb_sub(r, general_dot(cs, x, two)),
-                                   qb_mul(qb_load(k + 2 * QS_LANES), s),
-                                   qb_mul(qb_load(k + 3 * QS_LANES), s));
-        for (int i = 0; i < QS_LANES; i++) *pos[i] = qb_lane(now, i);
-        const qb_v4 delta = qb_sub(now, old);
-        for (int e = 0; e < ne; e++) x[e] = qb_add(x[e], qb_mul(delta, qb_load(M + QS_LANES * e)));
-        for (int a = 0; a < n; a++) L[a] = qb_add(L[a], qb_mul(delta, qb_load(g + QS_LANES * a)));
+        const qs_v4 r = v4_sub(v4_add(old, v4_load(k)), v4_mul(v4_load(k + QS_LANES), old));
+        const qs_v4 now = v4_clamp(v4_sub(r, general_dot(cs, x, two)),
+                                   v4_mul(v4_load(k + 2 * QS_LANES), s),
+                                   v4_mul(v4_load(k + 3 * QS_LANES), s));
+        for (int i = 0; i < QS_LANES; i++) *pos[i] = v4_lane(now, i);
+        const qs_v4 delta = v4_sub(now, old);
+        for (int e = 0; e < ne; e++) x[e] = v4_add(x[e], v4_mul(delta, v4_load(M + QS_LANES * e)));
+        for (int a = 0; a < n; a++) L[a] = v4_add(L[a], v4_mul(delta, v4_load(g + QS_LANES * a)));
         cs = g + QS_LANES * n;
     }
 }
@@ -428,7 +367,7 @@ QS_INLINE void batch_update(const qs_batch *b, int n, int form, int two, int nc,
         f1[i] = fc + b->blk[i]->o1;
         l[i] = lambda + b->blk[i]->first;
     }
-    qb_v4 x[12], res[QS_MAX_BLOCK], L[QS_MAX_BLOCK];
+    qs_v4 x[12], res[QS_MAX_BLOCK], L[QS_MAX_BLOCK];
     for (int e = 0; e < 6; e++) x[e] = qb_gather(f0, e);
     if (two)
         for (int e = 0; e < 6; e++) x[6 + e] = qb_gather(f1, e);
@@ -438,36 +377,36 @@ QS_INLINE void batch_update(const qs_batch *b, int n, int form, int two, int nc,
     const dReal *rhs = A + QS_LANES * n * (n + 1) / 2, *cfm = rhs + QS_LANES * n;
     for (int a = 0; a < n; a++) {
         L[a] = qb_gather(l, a);
-        const qb_v4 r = qb_sub(qb_load(rhs + QS_LANES * a), qb_mul(qb_load(cfm + QS_LANES * a), L[a]));
+        const qs_v4 r = v4_sub(v4_load(rhs + QS_LANES * a), v4_mul(v4_load(cfm + QS_LANES * a), L[a]));
         const dReal *Ja = J + QS_LANES * je * a;
-        res[a] = qb_sub(r, form == SOA_BALL ? ball_dot(Ja, x, two, a) : general_dot(Ja, x, two));
+        res[a] = v4_sub(r, form == SOA_BALL ? ball_dot(Ja, x, two, a) : general_dot(Ja, x, two));
     }
     // delta = Ainv res, column products summed in row order; lambda +=
     // delta; fc += M^-1 J^T delta, row by row.
-    qb_v4 d[QS_MAX_BLOCK];
+    qs_v4 d[QS_MAX_BLOCK];
     for (int a = 0; a < n; a++) {
-        d[a] = qb_mul(qb_load(A + QS_LANES * SOA_TRI(0, a)), res[0]);
+        d[a] = v4_mul(v4_load(A + QS_LANES * SOA_TRI(0, a)), res[0]);
         for (int c = 1; c < n; c++)
-            d[a] = qb_add(d[a], qb_mul(qb_load(A + QS_LANES * SOA_TRI(c, a)), res[c]));
-        L[a] = qb_add(L[a], d[a]);
+            d[a] = v4_add(d[a], v4_mul(v4_load(A + QS_LANES * SOA_TRI(c, a)), res[c]));
+        L[a] = v4_add(L[a], d[a]);
     }
     if (form == SOA_BALL) {
         // Linear numbers: row e's alone, M^-1 J^T im (first body) and -im.
-        const qb_v4 im0 = qb_load(im);
-        for (int e = 0; e < 3; e++) x[e] = qb_add(x[e], qb_mul(d[e], im0));
+        const qs_v4 im0 = v4_load(im);
+        for (int e = 0; e < 3; e++) x[e] = v4_add(x[e], v4_mul(d[e], im0));
         if (two) {
-            const qb_v4 im1 = qb_load(im + QS_LANES);
-            for (int e = 0; e < 3; e++) x[6 + e] = qb_sub(x[6 + e], qb_mul(d[e], im1));
+            const qs_v4 im1 = v4_load(im + QS_LANES);
+            for (int e = 0; e < 3; e++) x[6 + e] = v4_sub(x[6 + e], v4_mul(d[e], im1));
         }
         for (int a = 0; a < n; a++)
             for (int e = 0; e < me; e++) {
                 const int k = e < 3 ? 3 + e : 6 + e;   // angular numbers
-                x[k] = qb_add(x[k], qb_mul(d[a], qb_load(M + QS_LANES * (a * me + e))));
+                x[k] = v4_add(x[k], v4_mul(d[a], v4_load(M + QS_LANES * (a * me + e))));
             }
     } else {
         for (int a = 0; a < n; a++)
             for (int e = 0; e < me; e++)
-                x[e] = qb_add(x[e], qb_mul(d[a], qb_load(M + QS_LANES * (a * me + e))));
+                x[e] = v4_add(x[e], v4_mul(d[a], v4_load(M + QS_LANES * (a * me + e))));
     }
     if (nc > 0) batch_coupled(b, n, two, nc, cfm + QS_LANES * n, rows, lambda, x, L);
     for (int a = 0; a < n; a++) qb_scatter(L[a], l, a);

@@ -21,6 +21,7 @@
 // lanes are then turned into rows four numbers at a time (a 4 x 4
 // transpose per four consecutive numbers of qs_row).
 
+#include "quickstep_v4.h"
 #include "quickstep_warm_match.h"
 #include "joint_contact.h"
 #include "dx_clones.h"
@@ -44,76 +45,10 @@ int dxQuickContactDirect = 1;
 #define QS_CONTACT_CLONES
 #endif
 
-// Fours of numbers, one lane per row (GNU vector extensions: one AVX
-// operation for doubles in the AVX2 build, two SSE2 ones in the baseline;
-// elsewhere four scalar operations).
-#if defined(__GNUC__)
-typedef dReal qc_v4 __attribute__((vector_size(4 * sizeof(dReal))));
-#define qc_lane(v, i) ((v)[i])
-QS_INLINE qc_v4 qc_make(dReal a, dReal b, dReal c, dReal d)
-{
-    const qc_v4 v = { a, b, c, d };
-    return v;
-}
-#define qc_add(x, y) ((x) + (y))
-#define qc_sub(x, y) ((x) - (y))
-#define qc_mul(x, y) ((x) * (y))
-#define qc_neg(x) (-(x))
-#else
-typedef struct qc_v4 {
-    dReal e[4];
-} qc_v4;
-#define qc_lane(v, i) ((v).e[i])
-static inline qc_v4 qc_make(dReal a, dReal b, dReal c, dReal d)
-{
-    const qc_v4 v = { { a, b, c, d } };
-    return v;
-}
-static inline qc_v4 qc_add(qc_v4 x, qc_v4 y)
-{
-    return qc_make(x.e[0] + y.e[0], x.e[1] + y.e[1], x.e[2] + y.e[2], x.e[3] + y.e[3]);
-}
-static inline qc_v4 qc_sub(qc_v4 x, qc_v4 y)
-{
-    return qc_make(x.e[0] - y.e[0], x.e[1] - y.e[1], x.e[2] - y.e[2], x.e[3] - y.e[3]);
-}
-static inline qc_v4 qc_mul(qc_v4 x, qc_v4 y)
-{
-    return qc_make(x.e[0] * y.e[0], x.e[1] * y.e[1], x.e[2] * y.e[2], x.e[3] * y.e[3]);
-}
-static inline qc_v4 qc_neg(qc_v4 x)
-{
-    return qc_make(-x.e[0], -x.e[1], -x.e[2], -x.e[3]);
-}
-#endif
-
-#if defined(__GNUC__)
-QS_INLINE qc_v4 qc_splat(dReal a)
-{
-    const qc_v4 v = { a };   // (then spread: one vbroadcastsd with AVX2)
-    return __builtin_shufflevector(v, v, 0, 0, 0, 0);
-}
-#else
-static inline qc_v4 qc_splat(dReal a)
-{
-    return qc_make(a, a, a, a);
-}
-#endif
-
-// Lane i of v in all four lanes. A number that sits among others in memory
-// is loaded with them as a four and spread from there: one AVX2 vpermpd (its
-// load folded in), where GCC makes qc_splat of a loaded number as a load, an
-// unpack and an insert.
-#if defined(__GNUC__)
-#define qc_spread(v, i) __builtin_shufflevector(v, v, i, i, i, i)
-#else
-#define qc_spread(v, i) qc_splat(qc_lane(v, i))
-#endif
-
 // D = sor_w / diag per lane, in double as fill_row makes it (diag =
 // (double)ms + cfm), 0 where diag is not positive (an empty row without
 // cfm leaves its force at 0; the absent rows' lanes).
-QS_INLINE qc_v4 qc_factor(qc_v4 ms, qc_v4 cfm, qc_v4 sor_w)
+QS_INLINE qs_v4 qc_factor(qs_v4 ms, qs_v4 cfm, qs_v4 sor_w)
 {
 #if defined(__GNUC__)
     typedef double d4 __attribute__((vector_size(4 * sizeof(double))));
@@ -124,9 +59,9 @@ QS_INLINE qc_v4 qc_factor(qc_v4 ms, qc_v4 cfm, qc_v4 sor_w)
     // Divide by 1 where diag is not used: no division by zero.
     const d4 safe = (d4)(((m4)diag & pos) | ((m4)one & ~pos));
     const d4 D = (d4)((m4)(__builtin_convertvector(sor_w, d4) / safe) & pos);
-    return __builtin_convertvector(D, qc_v4);
+    return __builtin_convertvector(D, qs_v4);
 #else
-    qc_v4 D;
+    qs_v4 D;
     for (int i = 0; i < 4; i++) {
         const double diag = (double)ms.e[i] + cfm.e[i];
         D.e[i] = diag > 0 ? (dReal)(sor_w.e[i] / diag) : 0;
@@ -135,35 +70,28 @@ QS_INLINE qc_v4 qc_factor(qc_v4 ms, qc_v4 cfm, qc_v4 sor_w)
 #endif
 }
 
-QS_INLINE qc_v4 qc_load(const dReal *p)
-{
-    qc_v4 v;
-    memcpy(&v, p, sizeof v);
-    return v;
-}
-
 // Lanes 0..2 of a, b, c, d as fours (a 4 x 4 transpose, its fourth row
 // left out): out[i] = (a_i, b_i, c_i, d_i).
-QS_INLINE void qc_transpose(qc_v4 a, qc_v4 b, qc_v4 c, qc_v4 d, qc_v4 out[3])
+QS_INLINE void qc_transpose(qs_v4 a, qs_v4 b, qs_v4 c, qs_v4 d, qs_v4 out[3])
 {
 #if defined(__GNUC__)
-    const qc_v4 t0 = __builtin_shufflevector(a, b, 0, 4, 2, 6);
-    const qc_v4 t1 = __builtin_shufflevector(a, b, 1, 5, 3, 7);
-    const qc_v4 t2 = __builtin_shufflevector(c, d, 0, 4, 2, 6);
-    const qc_v4 t3 = __builtin_shufflevector(c, d, 1, 5, 3, 7);
+    const qs_v4 t0 = __builtin_shufflevector(a, b, 0, 4, 2, 6);
+    const qs_v4 t1 = __builtin_shufflevector(a, b, 1, 5, 3, 7);
+    const qs_v4 t2 = __builtin_shufflevector(c, d, 0, 4, 2, 6);
+    const qs_v4 t3 = __builtin_shufflevector(c, d, 1, 5, 3, 7);
     out[0] = __builtin_shufflevector(t0, t2, 0, 1, 4, 5);
     out[1] = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
     out[2] = __builtin_shufflevector(t0, t2, 2, 3, 6, 7);
 #else
-    for (int i = 0; i < 3; i++) out[i] = qc_make(a.e[i], b.e[i], c.e[i], d.e[i]);
+    for (int i = 0; i < 3; i++) out[i] = v4_make(a.e[i], b.e[i], c.e[i], d.e[i]);
 #endif
 }
 
 // The four numbers a, b, c, d of each of the first m rows (lanes), stored
 // at byte offset off of rows[0..m).
-QS_INLINE void qc_store(qs_row *rows, int m, size_t off, qc_v4 a, qc_v4 b, qc_v4 c, qc_v4 d)
+QS_INLINE void qc_store(qs_row *rows, int m, size_t off, qs_v4 a, qs_v4 b, qs_v4 c, qs_v4 d)
 {
-    qc_v4 out[3];
+    qs_v4 out[3];
     qc_transpose(a, b, c, d, out);
     memcpy((char *)&rows[0] + off, &out[0], sizeof out[0]);
     if (m > 1) memcpy((char *)&rows[1] + off, &out[1], sizeof out[1]);
@@ -193,12 +121,12 @@ typedef struct qs_cbodies {
 
 // x = I a for the lanes' a (I: a world inverse inertia, dMatrix3), each
 // entry of I spread once: I0 a0 + I1 a1 + I2 a2, in that order.
-QS_INLINE void inertia_lanes(const dReal *I, qc_v4 ax, qc_v4 ay, qc_v4 az, qc_v4 x[3])
+QS_INLINE void inertia_lanes(const dReal *I, qs_v4 ax, qs_v4 ay, qs_v4 az, qs_v4 x[3])
 {
     for (int i = 0; i < 3; i++) {
-        const qc_v4 row = qc_load(I + 4 * i);
-        const qc_v4 c0 = qc_spread(row, 0), c1 = qc_spread(row, 1), c2 = qc_spread(row, 2);
-        x[i] = qc_add(qc_add(qc_mul(c0, ax), qc_mul(c1, ay)), qc_mul(c2, az));
+        const qs_v4 row = v4_load(I + 4 * i);
+        const qs_v4 c0 = v4_spread(row, 0), c1 = v4_spread(row, 1), c2 = v4_spread(row, 2);
+        x[i] = v4_add(v4_add(v4_mul(c0, ax), v4_mul(c1, ay)), v4_mul(c2, az));
     }
 }
 
@@ -215,72 +143,72 @@ QS_INLINE void inertia_lanes(const dReal *I, qc_v4 ax, qc_v4 ay, qc_v4 az, qc_v4
 // x, y, z as lanes (the missing rows' zero). m and two are constants where
 // the caller makes them so (the usual three rows).
 QS_INLINE void lanes_rows(const qs_input *in, const qs_cbodies *cb, const dxContactRows *r,
-                          const qc_v4 d[3], qc_v4 cfm_rows, qc_v4 sor_w, const int m,
+                          const qs_v4 d[3], qs_v4 cfm_rows, qs_v4 sor_w, const int m,
                           const int two, qs_row *rows)
 {
     const size_t J = offsetof(qs_row, J), n = sizeof(dReal);
-    const qc_v4 dx = d[0], dy = d[1], dz = d[2];
+    const qs_v4 dx = d[0], dy = d[1], dz = d[2];
     // Body 0: J = [d, arm0 x d], M^-1 J^T = [im0 d, I0 (arm0 x d)].
-    const qc_v4 A = qc_load(r->arm[0]);   // (a dVector3: four numbers)
-    const qc_v4 A0 = qc_spread(A, 0), A1 = qc_spread(A, 1), A2 = qc_spread(A, 2);
-    const qc_v4 ax = qc_sub(qc_mul(A1, dz), qc_mul(A2, dy));
-    const qc_v4 ay = qc_sub(qc_mul(A2, dx), qc_mul(A0, dz));
-    const qc_v4 az = qc_sub(qc_mul(A0, dy), qc_mul(A1, dx));
-    const qc_v4 im = qc_splat(cb->im0);
-    const qc_v4 m0 = qc_mul(im, dx), m1 = qc_mul(im, dy), m2 = qc_mul(im, dz);
-    qc_v4 ia[3];
+    const qs_v4 A = v4_load(r->arm[0]);   // (a dVector3: four numbers)
+    const qs_v4 A0 = v4_spread(A, 0), A1 = v4_spread(A, 1), A2 = v4_spread(A, 2);
+    const qs_v4 ax = v4_sub(v4_mul(A1, dz), v4_mul(A2, dy));
+    const qs_v4 ay = v4_sub(v4_mul(A2, dx), v4_mul(A0, dz));
+    const qs_v4 az = v4_sub(v4_mul(A0, dy), v4_mul(A1, dx));
+    const qs_v4 im = v4_splat(cb->im0);
+    const qs_v4 m0 = v4_mul(im, dx), m1 = v4_mul(im, dy), m2 = v4_mul(im, dz);
+    qs_v4 ia[3];
     inertia_lanes(cb->I0, ax, ay, az, ia);
-    const qc_v4 m3 = ia[0], m4 = ia[1], m5 = ia[2];
+    const qs_v4 m3 = ia[0], m4 = ia[1], m5 = ia[2];
     qc_store(rows, m, J + 8 * n, m2, m3, m4, m5);
     // The rates: R[0..3] and R[2..5] as fours (a body's six numbers).
-    const qc_v4 R = qc_load(cb->R0), R2 = qc_load(cb->R0 + 2);
-    const qc_v4 ra = qc_add(qc_mul(dx, qc_spread(R, 0)), qc_mul(dz, qc_spread(R, 2)));
-    const qc_v4 rb = qc_add(qc_mul(dy, qc_spread(R, 1)), qc_mul(ax, qc_spread(R, 3)));
-    const qc_v4 ma = qc_add(qc_mul(dx, m0), qc_mul(dz, m2));
-    const qc_v4 mb = qc_add(qc_mul(dy, m1), qc_mul(ax, m3));
-    qc_v4 rc = qc_mul(ay, qc_spread(R2, 2)), rd = qc_mul(az, qc_spread(R2, 3));
-    qc_v4 mc = qc_mul(ay, m4), md = qc_mul(az, m5);
+    const qs_v4 R = v4_load(cb->R0), R2 = v4_load(cb->R0 + 2);
+    const qs_v4 ra = v4_add(v4_mul(dx, v4_spread(R, 0)), v4_mul(dz, v4_spread(R, 2)));
+    const qs_v4 rb = v4_add(v4_mul(dy, v4_spread(R, 1)), v4_mul(ax, v4_spread(R, 3)));
+    const qs_v4 ma = v4_add(v4_mul(dx, m0), v4_mul(dz, m2));
+    const qs_v4 mb = v4_add(v4_mul(dy, m1), v4_mul(ax, m3));
+    qs_v4 rc = v4_mul(ay, v4_spread(R2, 2)), rd = v4_mul(az, v4_spread(R2, 3));
+    qs_v4 mc = v4_mul(ay, m4), md = v4_mul(az, m5);
     // Body 1: J = [-d, d x arm1], M^-1 J^T = [im1 (-d), I1 (d x arm1)].
-    qc_v4 lx, ly, lz, bx, by, bz, n0, n1;
+    qs_v4 lx, ly, lz, bx, by, bz, n0, n1;
     if (two) {
-        lx = qc_neg(dx);
-        ly = qc_neg(dy);
-        lz = qc_neg(dz);
-        const qc_v4 B = qc_load(r->arm[1]);
-        const qc_v4 B0 = qc_spread(B, 0), B1 = qc_spread(B, 1), B2 = qc_spread(B, 2);
-        bx = qc_sub(qc_mul(dy, B2), qc_mul(dz, B1));
-        by = qc_sub(qc_mul(dz, B0), qc_mul(dx, B2));
-        bz = qc_sub(qc_mul(dx, B1), qc_mul(dy, B0));
-        const qc_v4 im1 = qc_splat(cb->im1);
-        n0 = qc_mul(im1, lx);
-        n1 = qc_mul(im1, ly);
-        const qc_v4 n2 = qc_mul(im1, lz);
-        qc_v4 ib[3];
+        lx = v4_neg(dx);
+        ly = v4_neg(dy);
+        lz = v4_neg(dz);
+        const qs_v4 B = v4_load(r->arm[1]);
+        const qs_v4 B0 = v4_spread(B, 0), B1 = v4_spread(B, 1), B2 = v4_spread(B, 2);
+        bx = v4_sub(v4_mul(dy, B2), v4_mul(dz, B1));
+        by = v4_sub(v4_mul(dz, B0), v4_mul(dx, B2));
+        bz = v4_sub(v4_mul(dx, B1), v4_mul(dy, B0));
+        const qs_v4 im1 = v4_splat(cb->im1);
+        n0 = v4_mul(im1, lx);
+        n1 = v4_mul(im1, ly);
+        const qs_v4 n2 = v4_mul(im1, lz);
+        qs_v4 ib[3];
         inertia_lanes(cb->I1, bx, by, bz, ib);
-        const qc_v4 n3 = ib[0], n4 = ib[1], n5 = ib[2];
+        const qs_v4 n3 = ib[0], n4 = ib[1], n5 = ib[2];
         qc_store(rows, m, J + 20 * n, n2, n3, n4, n5);
-        const qc_v4 S = qc_load(cb->R1), S2 = qc_load(cb->R1 + 2);
-        rc = qc_add(qc_add(rc, qc_mul(lx, qc_spread(S, 0))),
-                    qc_add(qc_mul(lz, qc_spread(S, 2)), qc_mul(by, qc_spread(S2, 2))));
-        rd = qc_add(qc_add(rd, qc_mul(ly, qc_spread(S, 1))),
-                    qc_add(qc_mul(bx, qc_spread(S, 3)), qc_mul(bz, qc_spread(S2, 3))));
-        mc = qc_add(qc_add(mc, qc_mul(lx, n0)), qc_add(qc_mul(lz, n2), qc_mul(by, n4)));
-        md = qc_add(qc_add(md, qc_mul(ly, n1)), qc_add(qc_mul(bx, n3), qc_mul(bz, n5)));
+        const qs_v4 S = v4_load(cb->R1), S2 = v4_load(cb->R1 + 2);
+        rc = v4_add(v4_add(rc, v4_mul(lx, v4_spread(S, 0))),
+                    v4_add(v4_mul(lz, v4_spread(S, 2)), v4_mul(by, v4_spread(S2, 2))));
+        rd = v4_add(v4_add(rd, v4_mul(ly, v4_spread(S, 1))),
+                    v4_add(v4_mul(bx, v4_spread(S, 3)), v4_mul(bz, v4_spread(S2, 3))));
+        mc = v4_add(v4_add(mc, v4_mul(lx, n0)), v4_add(v4_mul(lz, n2), v4_mul(by, n4)));
+        md = v4_add(v4_add(md, v4_mul(ly, n1)), v4_add(v4_mul(bx, n3), v4_mul(bz, n5)));
     } else {
-        lx = ly = lz = bx = by = bz = n0 = n1 = qc_splat(0);
+        lx = ly = lz = bx = by = bz = n0 = n1 = v4_splat(0);
     }
-    const qc_v4 rate = qc_add(qc_add(ra, rc), qc_add(rb, rd));
-    const qc_v4 ms = qc_add(qc_add(ma, mc), qc_add(mb, md));
-    const qc_v4 fps = qc_splat(in->fps);
-    const qc_v4 cfm = qc_mul(cfm_rows, fps);
-    const qc_v4 D = qc_factor(ms, cfm, sor_w);
-    qc_store(rows, m, 0, qc_mul(qc_sub(qc_mul(qc_load(r->c), fps), rate), D), qc_mul(cfm, D),
-             qc_load(r->lo), qc_load(r->hi));
-    qc_store(rows, m, J, qc_mul(D, dx), qc_mul(D, dy), qc_mul(D, dz), qc_mul(D, ax));
-    qc_store(rows, m, J + 4 * n, qc_mul(D, ay), qc_mul(D, az), m0, m1);
+    const qs_v4 rate = v4_add(v4_add(ra, rc), v4_add(rb, rd));
+    const qs_v4 ms = v4_add(v4_add(ma, mc), v4_add(mb, md));
+    const qs_v4 fps = v4_splat(in->fps);
+    const qs_v4 cfm = v4_mul(cfm_rows, fps);
+    const qs_v4 D = qc_factor(ms, cfm, sor_w);
+    qc_store(rows, m, 0, v4_mul(v4_sub(v4_mul(v4_load(r->c), fps), rate), D), v4_mul(cfm, D),
+             v4_load(r->lo), v4_load(r->hi));
+    qc_store(rows, m, J, v4_mul(D, dx), v4_mul(D, dy), v4_mul(D, dz), v4_mul(D, ax));
+    qc_store(rows, m, J + 4 * n, v4_mul(D, ay), v4_mul(D, az), m0, m1);
     if (two) {
-        qc_store(rows, m, J + 12 * n, qc_mul(D, lx), qc_mul(D, ly), qc_mul(D, lz), qc_mul(D, bx));
-        qc_store(rows, m, J + 16 * n, qc_mul(D, by), qc_mul(D, bz), n0, n1);
+        qc_store(rows, m, J + 12 * n, v4_mul(D, lx), v4_mul(D, ly), v4_mul(D, lz), v4_mul(D, bx));
+        qc_store(rows, m, J + 16 * n, v4_mul(D, by), v4_mul(D, bz), n0, n1);
     }
 }
 
@@ -292,15 +220,15 @@ QS_INLINE qs_v2 load_pair(const dReal *p)
 }
 
 // a, b += li M (M: a row's six numbers for one body, li spread to the four).
-QS_INLINE void start_row(qc_v4 *a, qs_v2 *b, const qs_row *row, size_t off, qc_v4 li)
+QS_INLINE void start_row(qs_v4 *a, qs_v2 *b, const qs_row *row, size_t off, qs_v4 li)
 {
     const dReal *M = (const dReal *)((const char *)row + off);
 #if defined(__GNUC__)
     const qs_v2 li2 = __builtin_shufflevector(li, li, 0, 1);
 #else
-    const qs_v2 li2 = qs_splat(qc_lane(li, 0));
+    const qs_v2 li2 = qs_splat(v4_lane(li, 0));
 #endif
-    *a = qc_add(*a, qc_mul(li, qc_load(M)));
+    *a = v4_add(*a, v4_mul(li, v4_load(M)));
     *b = qs_add(*b, qs_mul(li2, load_pair(M + 4)));
 }
 
@@ -309,22 +237,22 @@ QS_INLINE void start_row(qc_v4 *a, qs_v2 *b, const qs_row *row, size_t off, qc_v
 // start_row, row by row: the same sums; the bodies' numbers are apart), fc
 // as a four and a pair; l as a four, each spread from it.
 QS_INLINE void start_bodies(dReal *fc0, dReal *fc1, const qs_row *rows, const int m,
-                            const int two, qc_v4 l)
+                            const int two, qs_v4 l)
 {
     const size_t M = offsetof(qs_row, M), M1 = offsetof(qs_row, M1);
-    qc_v4 a0 = qc_load(fc0), a1 = two ? qc_load(fc1) : qc_splat(0);
+    qs_v4 a0 = v4_load(fc0), a1 = two ? v4_load(fc1) : v4_splat(0);
     qs_v2 b0 = load_pair(fc0 + 4), b1 = two ? load_pair(fc1 + 4) : qs_splat(0);
-    if (qc_lane(l, 0) != 0) {
-        start_row(&a0, &b0, &rows[0], M, qc_spread(l, 0));
-        if (two) start_row(&a1, &b1, &rows[0], M1, qc_spread(l, 0));
+    if (v4_lane(l, 0) != 0) {
+        start_row(&a0, &b0, &rows[0], M, v4_spread(l, 0));
+        if (two) start_row(&a1, &b1, &rows[0], M1, v4_spread(l, 0));
     }
-    if (m > 1 && qc_lane(l, 1) != 0) {
-        start_row(&a0, &b0, &rows[1], M, qc_spread(l, 1));
-        if (two) start_row(&a1, &b1, &rows[1], M1, qc_spread(l, 1));
+    if (m > 1 && v4_lane(l, 1) != 0) {
+        start_row(&a0, &b0, &rows[1], M, v4_spread(l, 1));
+        if (two) start_row(&a1, &b1, &rows[1], M1, v4_spread(l, 1));
     }
-    if (m > 2 && qc_lane(l, 2) != 0) {
-        start_row(&a0, &b0, &rows[2], M, qc_spread(l, 2));
-        if (two) start_row(&a1, &b1, &rows[2], M1, qc_spread(l, 2));
+    if (m > 2 && v4_lane(l, 2) != 0) {
+        start_row(&a0, &b0, &rows[2], M, v4_spread(l, 2));
+        if (two) start_row(&a1, &b1, &rows[2], M1, v4_spread(l, 2));
     }
     memcpy(fc0, &a0, sizeof a0);
     memcpy(fc0 + 4, &b0, sizeof b0);
@@ -339,38 +267,38 @@ QS_INLINE void start_bodies(dReal *fc0, dReal *fc1, const qs_row *rows, const in
 // WARM_SCALE max(fn, 0) = l0, a friction row WARM_SCALE (f . d_i) clamped
 // to its bounds, times l0 where pyramid (each lane the same operations in
 // the same order). d: the directions' x, y, z as lanes.
-QS_INLINE qc_v4 warm_forces(const dxContactRows *r, const dReal *f, const qc_v4 d[3])
+QS_INLINE qs_v4 warm_forces(const dxContactRows *r, const dReal *f, const qs_v4 d[3])
 {
     const dReal fn = f[3];
     const dReal l0 = WARM_SCALE * (fn > 0 ? fn : 0);
 #if defined(__GNUC__)
     typedef dxRealMask mask __attribute__((vector_size(4 * sizeof(dxRealMask))));
-    const qc_v4 F = qc_load(f);
-    const qc_v4 dot = qc_add(qc_add(qc_mul(qc_spread(F, 0), d[0]), qc_mul(qc_spread(F, 1), d[1])),
-                             qc_mul(qc_spread(F, 2), d[2]));
-    const qc_v4 li = qc_mul(qc_splat(WARM_SCALE), dot);
-    const qc_v4 hi4 = qc_load(r->hi), lo4 = qc_load(r->lo), scaled = qc_mul(hi4, qc_splat(l0));
+    const qs_v4 F = v4_load(f);
+    const qs_v4 dot = v4_add(v4_add(v4_mul(v4_spread(F, 0), d[0]), v4_mul(v4_spread(F, 1), d[1])),
+                             v4_mul(v4_spread(F, 2), d[2]));
+    const qs_v4 li = v4_mul(v4_splat(WARM_SCALE), dot);
+    const qs_v4 hi4 = v4_load(r->hi), lo4 = v4_load(r->lo), scaled = v4_mul(hi4, v4_splat(l0));
     mask pyr;
     memcpy(&pyr, r->pyramid, sizeof pyr);
     const mask hi = ((mask)scaled & pyr) | ((mask)hi4 & ~pyr);
-    const mask lo = ((mask)qc_neg(scaled) & pyr) | ((mask)lo4 & ~pyr);
-    const mask gt = li > (qc_v4)hi, lt = li < (qc_v4)lo;
+    const mask lo = ((mask)v4_neg(scaled) & pyr) | ((mask)lo4 & ~pyr);
+    const mask gt = li > (qs_v4)hi, lt = li < (qs_v4)lo;
     // li > hi ? hi : li < lo ? lo : li (not a number: li)
-    qc_v4 l = (qc_v4)((hi & gt) | (~gt & ((lo & lt) | ((mask)li & ~lt))));
+    qs_v4 l = (qs_v4)((hi & gt) | (~gt & ((lo & lt) | ((mask)li & ~lt))));
     l[0] = l0;
     return l;
 #else
-    qc_v4 l = qc_splat(0);
-    qc_lane(l, 0) = l0;
+    qs_v4 l = v4_splat(0);
+    v4_lane(l, 0) = l0;
     for (int i = 1; i < 3; i++) {
         dReal lo = r->lo[i], hi = r->hi[i];
         if (r->pyramid[i]) {
             hi = r->hi[i] * l0;
             lo = -hi;
         }
-        const dReal li = WARM_SCALE * (f[0] * qc_lane(d[0], i) + f[1] * qc_lane(d[1], i) +
-                                       f[2] * qc_lane(d[2], i));
-        qc_lane(l, i) = li > hi ? hi : li < lo ? lo : li;
+        const dReal li = WARM_SCALE * (f[0] * v4_lane(d[0], i) + f[1] * v4_lane(d[1], i) +
+                                       f[2] * v4_lane(d[2], i));
+        v4_lane(l, i) = li > hi ? hi : li < lo ? lo : li;
     }
     return l;
 #endif
@@ -387,16 +315,16 @@ QS_INLINE qc_v4 warm_forces(const dxContactRows *r, const dReal *f, const qc_v4 
 // lambda and fc then start from them, and the normal row is relaxed with
 // 1), or NULL. cfm, m and two as in lanes_rows.
 QS_INLINE void append_rows(const qs_input *in, const qs_cbodies *cb, const dxContactRows *r,
-                           qc_v4 cfm, const dReal *f, qs_system *sys, const int m,
+                           qs_v4 cfm, const dReal *f, qs_system *sys, const int m,
                            const int two)
 {
     const int first = sys->next, one = sys->m, nrows = sys->nrows;
     qs_row *rows = sys->rows + nrows;
-    qc_v4 d[3];   // the directions' x, y, z (the missing rows' are zero)
-    qc_transpose(qc_load(r->d[0]), qc_load(r->d[1]), qc_load(r->d[2]), qc_splat(0), d);
-    const qc_v4 l = f ? warm_forces(r, f, d) : qc_splat(0);
+    qs_v4 d[3];   // the directions' x, y, z (the missing rows' are zero)
+    qc_transpose(v4_load(r->d[0]), v4_load(r->d[1]), v4_load(r->d[2]), v4_splat(0), d);
+    const qs_v4 l = f ? warm_forces(r, f, d) : v4_splat(0);
     const dReal w = in->sor_w;
-    lanes_rows(in, cb, r, d, cfm, qc_make(f ? 1 : w, w, w, w), m, two, rows);
+    lanes_rows(in, cb, r, d, cfm, v4_make(f ? 1 : w, w, w, w), m, two, rows);
     // The integers the rows share, copied whole into each, then its own
     // lambda position and its bound's.
     qs_row ints;
@@ -428,10 +356,10 @@ QS_INLINE void append_rows(const qs_input *in, const qs_cbodies *cb, const dxCon
     // The lambdas start at zero, or warm: there a zero force (+-0) starts
     // at +0, the others as they are (x + 0 is x but for -0).
     dReal *lambda = sys->lambda + first;
-    const qc_v4 l0 = f ? qc_add(l, qc_splat(0)) : qc_splat(0);
-    lambda[0] = qc_lane(l0, 0);
-    if (m > 1) lambda[1] = qc_lane(l0, 1);
-    if (m > 2) lambda[2] = qc_lane(l0, 2);
+    const qs_v4 l0 = f ? v4_add(l, v4_splat(0)) : v4_splat(0);
+    lambda[0] = v4_lane(l0, 0);
+    if (m > 1) lambda[1] = v4_lane(l0, 1);
+    if (m > 2) lambda[2] = v4_lane(l0, 2);
     if (f) start_bodies(sys->fc + cb->o0, sys->fc + cb->o1, rows, m, two, l);
 }
 
@@ -443,12 +371,12 @@ QS_CONTACT_CLONES void dxQuickContact(const qs_input *in, dxJoint *j, qs_system 
     const dxContactRows *r = dxJointContactStep(c, b, in->fps, in->erp);
     // The rows' cfm: the world's (the lanes from r->m on are not stored),
     // unless a mode gives a row its own (dxJointContactRows' numbers).
-    qc_v4 cfm;
+    qs_v4 cfm;
     if (c->own_numbers) {
         dxJointContactCfm(c);
-        cfm = qc_load(r->cfm);
+        cfm = v4_load(r->cfm);
     } else {
-        cfm = qc_splat(c->base.world->cfm);
+        cfm = v4_splat(c->base.world->cfm);
     }
     const dxIslandBodies *bd = in->bd;
     qs_cbodies cb;

@@ -10,6 +10,7 @@
 // only on one body or two.
 
 #include "quickstep.h"
+#include "quickstep_v4.h"
 #include "dx_clones.h"
 
 #include <string.h>
@@ -57,63 +58,10 @@ QS_INLINE void store2(qs_v2 v, dReal *p)
     memcpy(p, &v, sizeof v);
 }
 
-// Fours of numbers: a body's 6 numbers of J, M or fc are a four and a pair
-// (4 + 2), so that an update takes half the arithmetic of pairs alone where
-// the machine has 4-wide vectors (AVX: the sweeps are built for it too,
-// above); elsewhere the compiler splits them in pairs. Sums are made in the
-// same order either way: the results do not depend on which code runs.
-#if defined(__GNUC__)
-typedef dReal qs_v4 __attribute__((vector_size(4 * sizeof(dReal))));
-#define v4_add(x, y) ((x) + (y))
-#define v4_mul(x, y) ((x) * (y))
-QS_INLINE qs_v4 v4_splat(dReal a)
-{
-    const qs_v4 v = { a };   // (then spread: one vbroadcastsd with AVX2)
-    return __builtin_shufflevector(v, v, 0, 0, 0, 0);
-}
-// [a0 + a2, a1 + a3] + b
-QS_INLINE qs_v2 v4_fold(qs_v4 a, qs_v2 b)
-{
-    const qs_v2 lo = { a[0], a[1] }, hi = { a[2], a[3] };
-    return (lo + hi) + b;
-}
-#else
-typedef struct qs_v4 {
-    dReal e[4];
-} qs_v4;
-static inline qs_v4 v4_add(qs_v4 x, qs_v4 y)
-{
-    qs_v4 v = { { x.e[0] + y.e[0], x.e[1] + y.e[1], x.e[2] + y.e[2], x.e[3] + y.e[3] } };
-    return v;
-}
-static inline qs_v4 v4_mul(qs_v4 x, qs_v4 y)
-{
-    qs_v4 v = { { x.e[0] * y.e[0], x.e[1] * y.e[1], x.e[2] * y.e[2], x.e[3] * y.e[3] } };
-    return v;
-}
-static inline qs_v4 v4_splat(dReal a)
-{
-    qs_v4 v = { { a, a, a, a } };
-    return v;
-}
-static inline qs_v2 v4_fold(qs_v4 a, qs_v2 b)
-{
-    qs_v2 v = { { (a.e[0] + a.e[2]) + b.e[0], (a.e[1] + a.e[3]) + b.e[1] } };
-    return v;
-}
-#endif
-
-QS_INLINE qs_v4 load4(const dReal *p)
-{
-    qs_v4 v;
-    memcpy(&v, p, sizeof v);
-    return v;
-}
-
-QS_INLINE void store4(qs_v4 v, dReal *p)
-{
-    memcpy(p, &v, sizeof v);
-}
+// A body's 6 numbers of J, M or fc are a four and a pair (4 + 2;
+// quickstep_v4.h), so that an update takes half the arithmetic of pairs
+// alone where the machine has 4-wide vectors; sums are made in the same order
+// either way.
 
 // A body's 6 numbers of fc, in registers.
 typedef struct qs_b6 {
@@ -123,13 +71,13 @@ typedef struct qs_b6 {
 
 QS_INLINE qs_b6 b6_load(const dReal *p)
 {
-    qs_b6 x = { load4(p), load2(p + 4) };
+    qs_b6 x = { v4_load(p), load2(p + 4) };
     return x;
 }
 
 QS_INLINE void b6_store(qs_b6 x, dReal *p)
 {
-    store4(x.a, p);
+    v4_store(x.a, p);
     store2(x.b, p + 4);
 }
 
@@ -137,13 +85,13 @@ QS_INLINE void b6_store(qs_b6 x, dReal *p)
 // summed: lane k is (J_k x_k + J_k+2 x_k+2) + J_k+4 x_k+4.
 QS_INLINE qs_v2 b6_dot(const dReal *J, qs_b6 x)
 {
-    return v4_fold(v4_mul(load4(J), x.a), qs_mul(load2(J + 4), x.b));
+    return v4_fold(v4_mul(v4_load(J), x.a), qs_mul(load2(J + 4), x.b));
 }
 
 // x + delta M for one body's 6 numbers of M (d4, d2: delta splat).
 QS_INLINE qs_b6 b6_add(qs_b6 x, qs_v4 d4, qs_v2 d2, const dReal *M)
 {
-    qs_b6 y = { v4_add(x.a, v4_mul(d4, load4(M))), qs_add(x.b, qs_mul(d2, load2(M + 4))) };
+    qs_b6 y = { v4_add(x.a, v4_mul(d4, v4_load(M))), qs_add(x.b, qs_mul(d2, load2(M + 4))) };
     return y;
 }
 
@@ -242,7 +190,7 @@ QS_INLINE void coupled_row(const qs_row *q, int n, int np, dReal *lambda, qs_b6 
     const qs_v4 d4 = v4_splat(delta);
     dReal *lb = lambda + q->gfirst;
     int a = 0;
-    for (; a + 4 <= n; a += 4) store4(v4_add(load4(lb + a), v4_mul(d4, load4(q->g + a))), lb + a);
+    for (; a + 4 <= n; a += 4) v4_store(v4_add(v4_load(lb + a), v4_mul(d4, v4_load(q->g + a))), lb + a);
     for (; a < n; a++) lb[a] += delta * q->g[a];
 }
 

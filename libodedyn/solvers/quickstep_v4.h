@@ -1,0 +1,117 @@
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// quickstep_v4.h -- fours of numbers for QuickStep's SIMD paths: a body's 6
+// numbers as a four and a pair (quickstep_sweep.c), a contact's rows one a
+// lane (quickstep_contact.c), a batch's blocks one a lane
+// (quickstep_block_batch.c). GNU vector extensions: one AVX operation for
+// doubles in the AVX2 clones, two SSE2 ones in the baseline; elsewhere four
+// scalar operations. Every operation is lane by lane, so the results are the
+// same bits whichever code runs.
+
+#ifndef QUICKSTEP_V4_H
+#define QUICKSTEP_V4_H
+
+#include "quickstep.h"
+#include "dx_clones.h"   // (quiets -Wpsabi: fours pass between inlined functions)
+
+#include <stdint.h>
+#include <string.h>
+
+#if defined(__GNUC__)
+typedef dReal qs_v4 __attribute__((vector_size(4 * sizeof(dReal))));
+#if defined(dSINGLE)
+typedef int32_t qs_m4 __attribute__((vector_size(4 * sizeof(dReal))));
+#else
+typedef int64_t qs_m4 __attribute__((vector_size(4 * sizeof(dReal))));
+#endif
+#define v4_lane(v, i) ((v)[i])
+#define v4_add(x, y) ((x) + (y))
+#define v4_sub(x, y) ((x) - (y))
+#define v4_mul(x, y) ((x) * (y))
+#define v4_neg(x) (-(x))
+// Lane i of v in all four lanes (one vpermpd with AVX2).
+#define v4_spread(v, i) __builtin_shufflevector(v, v, i, i, i, i)
+QS_INLINE qs_v4 v4_make(dReal a, dReal b, dReal c, dReal d)
+{
+    const qs_v4 v = { a, b, c, d };
+    return v;
+}
+QS_INLINE qs_v4 v4_splat(dReal a)
+{
+    const qs_v4 v = { a };   // (then spread: one vbroadcastsd with AVX2)
+    return __builtin_shufflevector(v, v, 0, 0, 0, 0);
+}
+// l projected on lo..hi in each lane, as the scalar update does: hi where
+// l > hi, then lo where l < lo (comparisons are masks of all ones).
+QS_INLINE qs_v4 v4_clamp(qs_v4 l, qs_v4 lo, qs_v4 hi)
+{
+    qs_m4 m = l > hi;
+    l = (qs_v4)(((qs_m4)hi & m) | ((qs_m4)l & ~m));
+    m = l < lo;
+    return (qs_v4)(((qs_m4)lo & m) | ((qs_m4)l & ~m));
+}
+// [a0 + a2, a1 + a3] + b
+QS_INLINE qs_v2 v4_fold(qs_v4 a, qs_v2 b)
+{
+    const qs_v2 lo = { a[0], a[1] }, hi = { a[2], a[3] };
+    return (lo + hi) + b;
+}
+#else
+typedef struct qs_v4 {
+    dReal e[4];
+} qs_v4;
+#define v4_lane(v, i) ((v).e[i])
+static inline qs_v4 v4_make(dReal a, dReal b, dReal c, dReal d)
+{
+    const qs_v4 v = { { a, b, c, d } };
+    return v;
+}
+static inline qs_v4 v4_add(qs_v4 x, qs_v4 y)
+{
+    return v4_make(x.e[0] + y.e[0], x.e[1] + y.e[1], x.e[2] + y.e[2], x.e[3] + y.e[3]);
+}
+static inline qs_v4 v4_sub(qs_v4 x, qs_v4 y)
+{
+    return v4_make(x.e[0] - y.e[0], x.e[1] - y.e[1], x.e[2] - y.e[2], x.e[3] - y.e[3]);
+}
+static inline qs_v4 v4_mul(qs_v4 x, qs_v4 y)
+{
+    return v4_make(x.e[0] * y.e[0], x.e[1] * y.e[1], x.e[2] * y.e[2], x.e[3] * y.e[3]);
+}
+static inline qs_v4 v4_neg(qs_v4 x)
+{
+    return v4_make(-x.e[0], -x.e[1], -x.e[2], -x.e[3]);
+}
+static inline qs_v4 v4_splat(dReal a)
+{
+    return v4_make(a, a, a, a);
+}
+#define v4_spread(v, i) v4_splat(v4_lane(v, i))
+static inline qs_v4 v4_clamp(qs_v4 l, qs_v4 lo, qs_v4 hi)
+{
+    for (int i = 0; i < 4; i++) {
+        l.e[i] = l.e[i] > hi.e[i] ? hi.e[i] : l.e[i];
+        l.e[i] = l.e[i] < lo.e[i] ? lo.e[i] : l.e[i];
+    }
+    return l;
+}
+static inline qs_v2 v4_fold(qs_v4 a, qs_v2 b)
+{
+    qs_v2 v = { { (a.e[0] + a.e[2]) + b.e[0], (a.e[1] + a.e[3]) + b.e[1] } };
+    return v;
+}
+#endif
+
+QS_INLINE qs_v4 v4_load(const dReal *p)
+{
+    qs_v4 v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+
+QS_INLINE void v4_store(qs_v4 v, dReal *p)
+{
+    memcpy(p, &v, sizeof v);
+}
+
+#endif
