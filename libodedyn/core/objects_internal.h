@@ -171,6 +171,7 @@ struct dxJoint {
     struct dxJoint *group_prev;   // the group's next older joint (its list, newest first)
     void *userdata;
     unsigned flags;               // DX_JOINT_...
+    unsigned walk;                // the world's island_walk when the island walk last met it
     dxJointNode node[2];          // node[k] is in the list of body k
     dJointFeedback *feedback;
     int tag;                      // scratch for the island walk and steppers
@@ -236,6 +237,8 @@ struct dxWorld {
     unsigned islands_max_threads;
     dCallWaitID step_wait;        // of threading_impl, allocated at the first threaded step
     uint32_t step_count;          // steps taken (any stepper), for the warm start
+    unsigned island_walk;         // the island walks so far (never 0 during one): a joint
+                                  // met by this step's walk has it as its walk
     struct dxWarmCache *qs_warm;  // dWorldQuickStep's contact forces of the last
                                   // step (quickstep_warm.c), NULL until one
     struct dxWatchdog *watchdog;  // dWorldSetWatchdog's (watchdog.c), NULL when off
