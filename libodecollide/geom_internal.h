@@ -42,11 +42,16 @@ typedef struct dxGeomClassOps {
 struct dxGeom {
     uint32_t magic;
     uint32_t generation;
-    size_t alloc_size;            // bytes of the whole class structure
-    const dxGeomClassOps *ops;
+    // What a space's pair test reads, together in the first 96 bytes: the
+    // box first (most pairs end at it), then the rest of the test.
     unsigned flags;               // DX_GEOM_...
-    void *data;                   // user data
+    int space_index;              // its index in space->geoms
+    dReal aabb[6];                // minx maxx miny maxy minz maxz, valid unless AABB_BAD
     dBodyID body;                 // attached body, or NULL
+    const dxGeomClassOps *ops;
+    unsigned long category_bits, collide_bits;
+    size_t alloc_size;            // bytes of the whole class structure
+    void *data;                   // user data
     dxGeom *body_next;            // next geom of the same body
     // The pose: pos and R point at the body's when attached, else at the
     // geom's own storage (own_pos, own_R). Only placeable geoms have one.
@@ -54,11 +59,8 @@ struct dxGeom {
     const dReal *R;
     dVector3 own_pos;
     dMatrix3 own_R;
-    dReal aabb[6];                // minx maxx miny maxy minz maxz, valid unless AABB_BAD
-    unsigned long category_bits, collide_bits;
     dxSpace *space;               // the space that holds it, or NULL
     dxGeom *holder;               // the geometry transform that holds it, or NULL
-    int space_index;              // its index in space->geoms
     unsigned shape_version;       // bumped when size parameters change (backend caches)
     struct dxGeomOffset *offset;  // its pose relative to its body, or NULL
                                   // (then pos and R are own_pos, own_R: the

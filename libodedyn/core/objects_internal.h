@@ -73,10 +73,17 @@ typedef struct dxDamping {
 
 struct dxBody {
     dxObjectHeader hdr;
+    // What the island walk, dJointAttach and the notification after the
+    // move read, in the first 64 bytes; then what a step reads of every
+    // body; the rest last.
     struct dxWorld *world;
-    struct dxBody *next, *prev;   // the world's body list
-    void *userdata;
+    struct dxBody *next;          // the world's body list
     unsigned flags;               // DX_BODY_...
+    int tag;                      // scratch for the island walk and steppers
+    dxJointNode *joints;          // the nodes of the joints attached here
+    int num_joints;
+    dGeomID first_geom;           // kept for the collision library
+    void (*moved_callback)(dBodyID);
 
     dMass mass;                   // centre of mass at the body origin
     dReal inv_mass;
@@ -86,18 +93,16 @@ struct dxBody {
     dMatrix3 R;                   // always the rotation of q
     dVector3 lvel, avel;
     dVector3 force, torque;       // accumulators, zeroed after each step
-    dVector3 finite_rot_axis;
     // The gyroscopic work ledger (solvers/rows.c): this step's gyroscopic
     // torque (world), its work over the first half of the step, and the work
     // it did in the last step, which the next step's torque gives back.
     dVector3 gyro_torque;
     dReal gyro_work, gyro_pending;
+    dxDamping damping;
 
-    dxJointNode *joints;          // the nodes of the joints attached here
-    int num_joints;
-    dGeomID first_geom;           // kept for the collision library
-    void (*moved_callback)(dBodyID);
-
+    struct dxBody *prev;
+    void *userdata;
+    dVector3 finite_rot_axis;
     dxAutoDisable adis;
     int adis_idle_steps;          // consecutive idle steps so far
     dReal adis_idle_time;
@@ -106,9 +111,6 @@ struct dxBody {
     unsigned adis_sample_next, adis_samples_taken, adis_samples_size;
     dReal sf1_threshold;          // StepFast1 auto-disable
     int sf1_steps, sf1_idle_steps;
-    dxDamping damping;
-
-    int tag;                      // scratch for the island walk and steppers
 };
 
 // ---- joints ------------------------------------------------------------
@@ -169,6 +171,7 @@ struct dxJoint {
     struct dxJoint *group_prev;   // the group's next older joint (its list, newest first)
     void *userdata;
     unsigned flags;               // DX_JOINT_...
+    unsigned walk;                // the world's island_walk when the island walk last met it
     dxJointNode node[2];          // node[k] is in the list of body k
     dJointFeedback *feedback;
     int tag;                      // scratch for the island walk and steppers
@@ -234,6 +237,8 @@ struct dxWorld {
     unsigned islands_max_threads;
     dCallWaitID step_wait;        // of threading_impl, allocated at the first threaded step
     uint32_t step_count;          // steps taken (any stepper), for the warm start
+    unsigned island_walk;         // the island walks so far (never 0 during one): a joint
+                                  // met by this step's walk has it as its walk
     struct dxWarmCache *qs_warm;  // dWorldQuickStep's contact forces of the last
                                   // step (quickstep_warm.c), NULL until one
     struct dxWatchdog *watchdog;  // dWorldSetWatchdog's (watchdog.c), NULL when off

@@ -64,6 +64,7 @@ static inline dxJoint *dxJointCreateBareInline(struct dxWorld *w, struct dxJoint
     j->group = g;
     j->userdata = NULL;
     j->flags = g ? DX_JOINT_IN_GROUP : 0;
+    j->walk = 0;
     for (int k = 0; k < 2; k++) {
         j->node[k].joint = j;
         j->node[k].other = NULL;

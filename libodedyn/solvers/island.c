@@ -7,8 +7,10 @@
 
 #include "step_internal.h"
 
-// Walk from `seed` over joints, appending to the island arrays.
-static void grow_island(struct dxBody *seed, struct dxBody **stack, dxIsland *is)
+// Walk from `seed` over joints, appending to the island arrays; a joint
+// met is marked with this walk's number.
+static void grow_island(struct dxBody *seed, struct dxBody **stack, dxIsland *is,
+                        unsigned walk)
 {
     int top = 0;
     stack[top++] = seed;
@@ -18,8 +20,8 @@ static void grow_island(struct dxBody *seed, struct dxBody **stack, dxIsland *is
         is->bodies[is->nb++] = b;
         for (dxJointNode *n = b->joints; n; n = n->next) {
             dxJoint *j = n->joint;
-            if (j->tag || (j->flags & DX_JOINT_DISABLED)) continue;
-            j->tag = 1;
+            if (j->walk == walk || (j->flags & DX_JOINT_DISABLED)) continue;
+            j->walk = walk;
             is->joints[is->nj++] = j;
             struct dxBody *o = n->other;
             if (!o || o->tag || (o->flags & DX_BODY_KINEMATIC)) continue;
@@ -49,8 +51,13 @@ int dxStepBegin(struct dxWorld *w, dReal h, const char *function, dxIsland **isl
     struct dxBody **stack = DX_ARENA_ARRAY(a, struct dxBody *, w->num_bodies + 1);
     dxIsland *list = DX_ARENA_ARRAY(a, dxIsland, w->num_bodies + 1);
 
+    // Joints are marked by the walk's number, so they need no clearing pass
+    // (a new joint has 0); after 2^32 walks the numbers start again.
+    if (++w->island_walk == 0) {
+        for (dxJoint *j = w->joints; j; j = j->next) j->walk = 0;
+        w->island_walk = 1;
+    }
     for (struct dxBody *b = w->bodies; b; b = b->next) b->tag = 0;
-    for (dxJoint *j = w->joints; j; j = j->next) j->tag = 0;
 
     int n = 0;
     struct dxBody **next_body = all_bodies;
@@ -61,7 +68,7 @@ int dxStepBegin(struct dxWorld *w, dReal h, const char *function, dxIsland **isl
         is->bodies = next_body;
         is->joints = next_joint;
         is->nb = is->nj = 0;
-        grow_island(b, stack, is);
+        grow_island(b, stack, is, w->island_walk);
         next_body += is->nb;
         next_joint += is->nj;
     }
