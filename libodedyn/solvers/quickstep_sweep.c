@@ -35,8 +35,10 @@
 // The rows are read in a random order that hardware prefetchers cannot
 // guess, and a big island's rows do not fit in the caches: the row this many
 // places ahead is fetched while the current one is updated, when the rows
-// take more than PREFETCH_BYTES (smaller ones stay in the caches).
-#define PREFETCH_AHEAD 3
+// take more than PREFETCH_BYTES (smaller ones stay in the caches). 8 rows
+// (about 200 cycles of updates) cover a row's fetch from the last-level
+// cache or memory; 3 did not (docs/perf.md: pyramid-40's sweeps).
+#define PREFETCH_AHEAD 8
 #define PREFETCH_BYTES ((size_t)256 * 1024)
 
 // l projected on lo..hi (minsd, maxsd: no branches).
