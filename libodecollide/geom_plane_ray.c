@@ -7,6 +7,7 @@
 
 #include <ode/rotation.h>
 
+#include "../libodedyn/math/orthogonalize.h"
 #include "../libodedyn/math/unit_vector.h"
 
 #define CHECK_CLASS(g, c, label, on_fail) \
@@ -124,7 +125,8 @@ dReal dGeomRayGetLength(dGeomID g)
 // moves the last bits of the rows, so it is kept) and dGeomSetPosition,
 // without their checks of what is already known finite and unit (the
 // normalisations and the plane space inline: dSafeNormalize3's and
-// dPlaneSpace's arithmetic), and with one walk up the spaces.
+// dPlaneSpace's arithmetic, and dOrthogonalizeR's, orthogonalize.h), and
+// with one walk up the spaces.
 void dGeomRaySet(dGeomID g, dReal px, dReal py, dReal pz, dReal dx, dReal dy, dReal dz)
 {
     CHECK_CLASS(g, dRayClass, "ray", return);
@@ -143,7 +145,7 @@ void dGeomRaySet(dGeomID g, dReal px, dReal py, dReal pz, dReal dx, dReal dy, dR
             R[4 * i + 2] = d[i];
             R[4 * i + 3] = 0;
         }
-        if (dOrthogonalizeR(R)) {
+        if (dxOrthogonalizeR(R, 1)) {   // p, q, d unit: finite
             dCopyMatrix4x3(g->own_R, R);
             dAssignVector3(g->own_pos, px, py, pz);
             dxGeomMarkMoved(g);

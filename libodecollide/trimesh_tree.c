@@ -29,11 +29,11 @@
 #endif
 
 
-// Leaves of at most LEAF triangles. A median split halves the triangles,
-// so the binary depth stays below log2(tri_count) + 2 and the four-way
-// depth below half that: a walk stacks at most one node a level, far below
-// DX_TRI_WALK_STACK.
-enum { LEAF = 4 };
+// Leaves of at most LEAF triangles (DX_TRI_LEAF_MAX). A median split
+// halves the triangles, so the binary depth stays below log2(tri_count) + 2
+// and the four-way depth below half that: a walk stacks at most one node a
+// level, far below DX_TRI_WALK_STACK.
+enum { LEAF = DX_TRI_LEAF_MAX };
 
 void dxTriMeshBuildTree(dxTriMeshData *d);
 void dxTriMeshRefitTree(dxTriMeshData *d);

@@ -431,6 +431,44 @@ static int test_ray_setters(void)
     return 0;
 }
 
+// dGeomRaySet on a ray without a body gives the same bits of position and
+// rotation as placing the ray the general way (the direction normalised,
+// as dGeomRaySet's check does, then dRFromZAxis, which normalises it again,
+// dGeomSetRotation, whose orthogonalisation moves the last bits, and
+// dGeomSetPosition): random directions of every size and sign, the axes and
+// directions just off them, read back through dGeomGetRotation and
+// dGeomGetPosition.
+static int test_ray_set_same_bits(void)
+{
+    dGeomID fast = dCreateRay(0, 3), slow = dCreateRay(0, 3);
+    const dReal fixed[][3] = { { 0, 0, 1 }, { 0, 0, -1 }, { 1, 0, 0 }, { 0, -1, 0 },
+                               { 1e-9, 0, -1 }, { 1, 1e-12, 0 }, { 1, 1, 1 },
+                               { -0.7071, 0.7072, 0 }, { 3e-30, 1e-30, -2e-30 },
+                               { 1e30, -3e30, 2e30 } };
+    const int nfixed = (int)(sizeof fixed / sizeof fixed[0]);
+    for (int i = 0; i < nfixed + 2000; i++) {
+        dReal d[3], p[3] = { rnd(-50, 50), rnd(-50, 50), rnd(-50, 50) };
+        for (int k = 0; k < 3; k++) {
+            d[k] = i < nfixed ? fixed[i][k] : rnd(-1, 1);
+            if (i >= nfixed && i % 3 == 0) d[k] *= rnd(1e-6, 1e6);
+        }
+        dGeomRaySet(fast, p[0], p[1], p[2], d[0], d[1], d[2]);
+        dVector3 n = { d[0], d[1], d[2], 0 };
+        CHECK(dSafeNormalize3(n));
+        dMatrix3 R;
+        dRFromZAxis(R, n[0], n[1], n[2]);
+        dGeomSetRotation(slow, R);
+        dGeomSetPosition(slow, p[0], p[1], p[2]);
+        const dReal *rf = dGeomGetRotation(fast), *rs = dGeomGetRotation(slow);
+        for (int k = 0; k < 12; k++)
+            if (k % 4 != 3) CHECK(memcmp(&rf[k], &rs[k], sizeof(dReal)) == 0);
+        CHECK(memcmp(dGeomGetPosition(fast), dGeomGetPosition(slow), 3 * sizeof(dReal)) == 0);
+    }
+    dGeomDestroy(fast);
+    dGeomDestroy(slow);
+    return 0;
+}
+
 // A ray on a body points along the body's z axis from its position.
 static int test_ray_on_body(void)
 {
@@ -619,6 +657,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_ray_flags_and_skip),
     TEST_CASE(test_ray_in_space),
     TEST_CASE(test_ray_setters),
+    TEST_CASE(test_ray_set_same_bits),
     TEST_CASE(test_ray_on_body),
     TEST_CASE(test_random_ray_sphere),
     TEST_CASE(test_random_ray_box),

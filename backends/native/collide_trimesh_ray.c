@@ -227,6 +227,27 @@ static inline __attribute__((always_inline)) void prefetch_bytes(const void *p, 
     __builtin_prefetch((const char *)p + size - 1);
 }
 
+// A leaf's vertices and its triangles' normals (1 <= count <= DX_TRI_LEAF_MAX:
+// a leaf of the built tree, the only kind with a leaf copy), each line as
+// prefetch_bytes and its normals' loop ask for, but without loops: an
+// offset or triangle past the leaf's last is clamped to its last, which
+// asks for a line again, not a line the leaf does not touch (the loops'
+// counts, 3 or 4, were branches a predictor missed).
+static inline __attribute__((always_inline)) void prefetch_leaf(const dxTriMeshData *d,
+                                                                int first, int count)
+{
+    const char *p = (const char *)(d->leaf_vertices + 9 * first);
+    const size_t last = 9 * sizeof(dReal) * (size_t)count - 1;
+    for (size_t k = 0; k < 9 * sizeof(dReal) * DX_TRI_LEAF_MAX; k += 64)
+        __builtin_prefetch(p + (k < last ? k : last));
+    __builtin_prefetch(p + last);
+    for (int t = 0; t < DX_TRI_LEAF_MAX; t++) {
+        const dReal *n = d->normal + 3 * d->order[first + (t < count ? t : count - 1)];
+        __builtin_prefetch(n);
+        __builtin_prefetch(n + 2);
+    }
+}
+
 // A subtree of at most this many triangles (a node over four leaves) has
 // its vertices and indices asked for with its node.
 enum { SPAN_AHEAD = 16 };
@@ -251,12 +272,7 @@ static inline __attribute__((always_inline)) void prefetch_slot(const dxTriMeshD
         prefetch_bytes(d->leaf_vertices + 9 * span[0], 9 * sizeof(dReal) * (size_t)span[1]);
         prefetch_bytes(d->order + span[0], sizeof(int) * (size_t)span[1]);
     } else if (d->leaf_vertices) {
-        prefetch_bytes(d->leaf_vertices + 9 * first, 9 * sizeof(dReal) * (size_t)count);
-        for (int t = first; t < first + count; t++) {
-            const dReal *n = d->normal + 3 * d->order[t];
-            __builtin_prefetch(n);
-            __builtin_prefetch(n + 2);
-        }
+        prefetch_leaf(d, first, count);
     }
 }
 
@@ -285,9 +301,10 @@ static void keep_hit(dxTriScratch *m, int max, dReal dist, int tri, const dReal 
 
 // Stack the slots of nodes[i] that the ray enters within limit (rounded
 // up to a float), the farthest first (so the nearest is walked first), with
-// where it enters.
-static inline void push_slots(const dxTriMeshData *d, int i, const ray_lanes *r, float limit,
-                              int *stack, float *entry, int *top)
+// where it enters, above stack[top - 1]: the new top. (The top is a value,
+// not a pointer: through a pointer each store to the stack would reload it.)
+static inline int push_slots(const dxTriMeshData *d, int i, const ray_lanes *r, float limit,
+                             int *stack, float *entry, int top)
 {
     const dxTriMeshNode *node = &d->nodes[i];
     float enter[4];
@@ -303,9 +320,10 @@ static inline void push_slots(const dxTriMeshData *d, int i, const ray_lanes *r,
     }
     while (n > 0) {
         int j = sorted[--n];
-        stack[*top] = 4 * i + j;
-        entry[(*top)++] = enter[j];
+        stack[top] = 4 * i + j;
+        entry[top++] = enter[j];
     }
+    return top;
 }
 
 // The tree is walked along the ray, nearer slot first; once `max` hits
@@ -334,14 +352,14 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
     float entry[128];
     dReal limit = ray->length;   // the farthest hit kept once `max` are
     float limit_up = dxFloatAbove(limit);
-    push_slots(d, 0, &lanes, limit_up, stack, entry, &top);
+    top = push_slots(d, 0, &lanes, limit_up, stack, entry, top);
     while (top > 0) {
         top--;
         if (entry[top] > limit) continue;
         const dxTriMeshNode *node = &d->nodes[stack[top] >> 2];
         int slot = stack[top] & 3, first = node->first[slot];
         if (node->count[slot] == 0) {
-            push_slots(d, first, &lanes, limit_up, stack, entry, &top);
+            top = push_slots(d, first, &lanes, limit_up, stack, entry, top);
             continue;
         }
         // Only the vertices are read until a hit (memory traffic is what a

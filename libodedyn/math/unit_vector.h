@@ -9,6 +9,24 @@
 
 #include <ode/common.h>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+// The square root of x >= 0 (or NaN): dSqrt's correctly rounded result, as
+// one instruction. GCC keeps sqrt's errno case as a library call, which it
+// sometimes makes for every argument.
+static inline dReal dxSqrtNonNeg(dReal x)
+{
+#if defined(__SSE2__) && defined(dSINGLE)
+    return _mm_cvtss_f32(_mm_sqrt_ss(_mm_set_ss(x)));
+#elif defined(__SSE2__)
+    return _mm_cvtsd_f64(_mm_sqrt_sd(_mm_setzero_pd(), _mm_set_sd(x)));
+#else
+    return dSqrt(x);
+#endif
+}
+
 // Scale a finite, nonzero 3-vector to unit length. Dividing by the largest
 // component first keeps the sum of squares in [1, 3], so tiny or huge
 // vectors neither underflow nor overflow. Returns 0 (a untouched) for a zero
@@ -19,7 +37,7 @@ static inline int dxUnitVector3(dReal *a)
     const dReal m = x > y ? (x > z ? x : z) : (y > z ? y : z);
     if (!(m > 0)) return 0;
     const dReal s0 = a[0] / m, s1 = a[1] / m, s2 = a[2] / m;
-    const dReal len = dSqrt(s0 * s0 + s1 * s1 + s2 * s2);
+    const dReal len = dxSqrtNonNeg(s0 * s0 + s1 * s1 + s2 * s2);
     a[0] = s0 / len;
     a[1] = s1 / len;
     a[2] = s2 / len;
@@ -34,7 +52,7 @@ static inline void dxPlaneSpaceUnit(const dReal *n, dReal *p, dReal *q)
     dReal pp[3], qq[3];
     if (dFabs(n[2]) > M_SQRT1_2) {
         // p in the y-z plane
-        const dReal a = n[1] * n[1] + n[2] * n[2], k = dRecipSqrt(a);
+        const dReal a = n[1] * n[1] + n[2] * n[2], k = 1 / dxSqrtNonNeg(a);
         pp[0] = 0;
         pp[1] = -n[2] * k;
         pp[2] = n[1] * k;
@@ -43,7 +61,7 @@ static inline void dxPlaneSpaceUnit(const dReal *n, dReal *p, dReal *q)
         qq[2] = n[0] * pp[1];
     } else {
         // p in the x-y plane
-        const dReal a = n[0] * n[0] + n[1] * n[1], k = dRecipSqrt(a);
+        const dReal a = n[0] * n[0] + n[1] * n[1], k = 1 / dxSqrtNonNeg(a);
         pp[0] = -n[1] * k;
         pp[1] = n[0] * k;
         pp[2] = 0;
