@@ -887,7 +887,8 @@ static inline int edge_candidate(const dx_hull *a, unsigned i, const dx_hull *b,
 // at a time first (screen_pairs).
 enum { PAIR_BATCH = 64 };
 typedef struct pair_batch {
-    int32_t i[PAIR_BATCH + 3], j[PAIR_BATCH + 3];   // room for a four's padding
+    int32_t i[PAIR_BATCH + 3], j[PAIR_BATCH + 3];   // room for a four's padding (and
+                                                      // add_pairs' two past a full batch)
     unsigned n;
 } pair_batch;
 
@@ -959,6 +960,25 @@ screen_pairs(const dx_hull *a, const dx_hull *b, const pair_batch *pb, const edg
         alone |= (uint64_t)_mm256_movemask_pd(_mm256_or_pd(parallel, skipped)) << k;
     }
     return alone;
+}
+
+// Adds the pairs of a's edge i with b's edges in the set cand (count of
+// them, room for them in the batch) in order: the first two written
+// whether there are two or not (past the count: not read), the rest (rare)
+// one by one, so that how many there are is not a branch.
+static inline void add_pairs(pair_batch *pb, unsigned i, uint64_t cand, unsigned count)
+{
+    const uint64_t stop = (uint64_t)1 << 63;   // what a missing pair's edge reads as
+    unsigned n = pb->n;
+    uint64_t rest = cand & (cand - 1);
+    pb->i[n] = pb->i[n + 1] = (int32_t)i;
+    pb->j[n] = (int32_t)__builtin_ctzll(cand | stop);
+    pb->j[n + 1] = (int32_t)__builtin_ctzll(rest | stop);
+    for (rest &= rest - 1, n += 2; rest; rest &= rest - 1, n++) {
+        pb->i[n] = (int32_t)i;
+        pb->j[n] = (int32_t)__builtin_ctzll(rest);
+    }
+    pb->n += count;
 }
 
 // edge_candidate for the batch's pairs in order, but for those the screen
@@ -1214,11 +1234,9 @@ masked_edge_pairs_with(const dx_hull *a, const dx_hull *b, edge_search *es, cons
         }
 #ifdef DX_SIGNS_AVX2
         if (screened) {
-            for (; cand; cand &= cand - 1) {
-                batch.i[batch.n] = (int32_t)i;
-                batch.j[batch.n++] = (int32_t)__builtin_ctzll(cand);
-                if (batch.n == PAIR_BATCH && !flush_pairs(a, b, &batch, es)) return 0;
-            }
+            unsigned count = (unsigned)__builtin_popcountll(cand);   // at most 32: b's edges
+            if (batch.n + count > PAIR_BATCH && !flush_pairs(a, b, &batch, es)) return 0;
+            add_pairs(&batch, i, cand, count);
             continue;
         }
 #endif
