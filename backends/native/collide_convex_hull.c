@@ -241,6 +241,22 @@ __attribute__((target("avx2"))) static inline unsigned normal_products4(const dx
                                        _mm256_mul_pd(_mm256_loadu_pd(h->nz + f), m2)));
     return f;
 }
+
+// normal_products4 over h's planes' count rounded up to a multiple of four
+// (the rows are zero past the planes, and so are the products there).
+__attribute__((target("avx2"))) static inline unsigned normal_products_padded4(const dx_hull *h,
+                                                                               const double m[3],
+                                                                               double *out)
+{
+    __m256d m0 = _mm256_set1_pd(m[0]), m1 = _mm256_set1_pd(m[1]), m2 = _mm256_set1_pd(m[2]);
+    unsigned f = 0;
+    for (; f < h->nplanes; f += 4)
+        _mm256_storeu_pd(out + f,
+                         _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(h->nx + f), m0),
+                                                     _mm256_mul_pd(_mm256_loadu_pd(h->ny + f), m1)),
+                                       _mm256_mul_pd(_mm256_loadu_pd(h->nz + f), m2)));
+    return f;
+}
 #endif
 
 // line_planes for h along d; with AVX2 (avx2 1, in a function built for
@@ -253,7 +269,7 @@ static inline __attribute__((always_inline)) int line_planes_with(const dx_hull 
     lp->dl = sqrt(dot3(d, d));
     unsigned f = 0;
 #ifdef DX_CLIP_AVX2
-    if (avx2) f = normal_products4(h, d, lp->nd);
+    if (avx2) f = normal_products_padded4(h, d, lp->nd);
 #endif
     for (; f < h->nplanes; f++) lp->nd[f] = dot3(h->wn[f], d);
     lp->avx2 = avx2;
@@ -552,34 +568,65 @@ static inline void keep_point(hull_point *pts, int *kept, int *deepest, const do
 }
 
 #ifdef DX_CLIP_AVX2
+// h's planes (at least one, at most LINE_PLANES) by how they narrow a line along lp's
+// direction, as narrow_to_plane takes them: along it (|n . d| not above
+// its limit), its exit (n . d > 0), or its entry (the rest, a NaN too).
+typedef struct plane_kinds {
+    uint64_t along, exits, entries;
+} plane_kinds;
+
+__attribute__((target("avx2"))) static inline plane_kinds kinds_of_planes(const dx_hull *h,
+                                                                         const line_planes *lp)
+{
+    const __m256d sign = _mm256_set1_pd(-0.0), zero = _mm256_setzero_pd();
+    const __m256d lim = _mm256_set1_pd(DX_HULL_EPS * lp->dl);
+    uint64_t along = 0, up = 0;
+    for (unsigned f = 0; f < h->nplanes; f += 4) {   // lp->nd padded (line_planes_with)
+        __m256d nd = _mm256_loadu_pd(lp->nd + f);
+        along |= (uint64_t)_mm256_movemask_pd(
+                     _mm256_cmp_pd(_mm256_andnot_pd(sign, nd), lim, _CMP_LE_OQ))
+                 << f;
+        up |= (uint64_t)_mm256_movemask_pd(_mm256_cmp_pd(nd, zero, _CMP_GT_OQ)) << f;
+    }
+    uint64_t all = ((uint64_t)2 << (h->nplanes - 1)) - 1;   // a face contact's hulls have planes
+    along &= all;
+    plane_kinds k = { along, up & ~along, all & ~along & ~up };   // no padded plane is up
+    return k;
+}
+
+// wd - n . x of h's plane f for four points, one a lane.
+__attribute__((target("avx2"))) static inline __m256d gap_lanes(const dx_hull *h, unsigned f,
+                                                                __m256d x, __m256d y, __m256d z)
+{
+    __m256d no = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(h->nx[f]), x),
+                                             _mm256_mul_pd(_mm256_set1_pd(h->ny[f]), y)),
+                               _mm256_mul_pd(_mm256_set1_pd(h->nz[f]), z));
+    return _mm256_sub_pd(_mm256_set1_pd(h->wd[f]), no);
+}
+
 // narrow_from(h, lp, 0, ...) for four lines at once, one a lane (their
-// points' x, y, z; the same direction): every plane in order, with the
-// same products, sums and quotients, each lane's exit kept where less (the
-// earlier of equal values stays, a NaN is passed over: min(t, hi) is t <
-// hi ? t : hi) and its entry where larger, so each lane ends with the
-// numbers narrow_from gives its line alone. Lanes that a plane along the
-// lines has outside by more than tol are set in *bad.
+// points' x, y, z; the same direction; kinds: h's planes by kind): the
+// planes of each kind in order, with the same products, sums and
+// quotients, each lane's exit kept where less (the earlier of equal values
+// stays, a NaN is passed over: min(t, hi) is t < hi ? t : hi) and its
+// entry where larger, so each lane ends with the numbers narrow_from gives
+// its line alone (exits and entries narrow apart). Lanes that a plane
+// along the lines has outside by more than tol are set in *bad.
 __attribute__((target("avx2"))) static inline void
-narrow_lanes(const dx_hull *h, const line_planes *lp, __m256d x, __m256d y, __m256d z, double tol,
-             __m256d *lo, __m256d *hi, __m256d *bad)
+narrow_lanes(const dx_hull *h, const line_planes *lp, const plane_kinds *kinds, __m256d x,
+             __m256d y, __m256d z, double tol, __m256d *lo, __m256d *hi, __m256d *bad)
 {
     const __m256d low = _mm256_set1_pd(-tol);
-    double par_lim = DX_HULL_EPS * lp->dl;
-    for (unsigned f = 0; f < h->nplanes; f++) {
-        double nd = lp->nd[f];
-        __m256d no = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(h->nx[f]), x),
-                                                 _mm256_mul_pd(_mm256_set1_pd(h->ny[f]), y)),
-                                   _mm256_mul_pd(_mm256_set1_pd(h->nz[f]), z));
-        __m256d gap = _mm256_sub_pd(_mm256_set1_pd(h->wd[f]), no);
-        if (fabs(nd) <= par_lim) {
-            *bad = _mm256_or_pd(*bad, _mm256_cmp_pd(gap, low, _CMP_LT_OQ));
-            continue;
-        }
-        __m256d t = _mm256_div_pd(gap, _mm256_set1_pd(nd));
-        if (nd > 0)
-            *hi = _mm256_min_pd(t, *hi);
-        else
-            *lo = _mm256_max_pd(t, *lo);
+    for (uint64_t m = kinds->along; m; m &= m - 1)
+        *bad = _mm256_or_pd(*bad, _mm256_cmp_pd(gap_lanes(h, (unsigned)__builtin_ctzll(m), x, y, z),
+                                                low, _CMP_LT_OQ));
+    for (uint64_t m = kinds->exits; m; m &= m - 1) {
+        unsigned f = (unsigned)__builtin_ctzll(m);
+        *hi = _mm256_min_pd(_mm256_div_pd(gap_lanes(h, f, x, y, z), _mm256_set1_pd(lp->nd[f])), *hi);
+    }
+    for (uint64_t m = kinds->entries; m; m &= m - 1) {
+        unsigned f = (unsigned)__builtin_ctzll(m);
+        *lo = _mm256_max_pd(_mm256_div_pd(gap_lanes(h, f, x, y, z), _mm256_set1_pd(lp->nd[f])), *lo);
     }
 }
 
@@ -607,6 +654,7 @@ __attribute__((target("avx2"))) static int kept_points4(const dx_hull *r, const 
     double tol = DX_HULL_EPS * (r->size + inc->size);
     const __m256d reach_r = _mm256_set1_pd(tol / lr->dl), reach_i = _mm256_set1_pd(tol / li->dl);
     if (nb) below[nb] = below[nb + 1] = below[nb + 2] = below[nb - 1];   // the last four padded
+    plane_kinds kr = kinds_of_planes(r, lr), ki = kinds_of_planes(inc, li);
     for (int k = 0; k < nb; k += 4) {
         __m256d p0 = _mm256_loadu_pd(below[k]->p), p1 = _mm256_loadu_pd(below[k + 1]->p);
         __m256d p2 = _mm256_loadu_pd(below[k + 2]->p), p3 = _mm256_loadu_pd(below[k + 3]->p);
@@ -616,9 +664,9 @@ __attribute__((target("avx2"))) static int kept_points4(const dx_hull *r, const 
         __m256d y = _mm256_permute2f128_pd(t1, t3, 0x20);
         __m256d lo = _mm256_set1_pd(-INFINITY), hi = _mm256_set1_pd(INFINITY);
         __m256d bad = _mm256_setzero_pd();
-        narrow_lanes(r, lr, x, y, z, tol, &lo, &hi, &bad);
+        narrow_lanes(r, lr, &kr, x, y, z, tol, &lo, &hi, &bad);
         bad = _mm256_or_pd(bad, _mm256_cmp_pd(lo, _mm256_add_pd(hi, reach_r), _CMP_NLE_UQ));
-        narrow_lanes(inc, li, x, y, z, tol, &lo, &hi, &bad);
+        narrow_lanes(inc, li, &ki, x, y, z, tol, &lo, &hi, &bad);
         bad = _mm256_or_pd(bad, _mm256_cmp_pd(lo, _mm256_add_pd(hi, reach_i), _CMP_NLE_UQ));
         int ok = ~_mm256_movemask_pd(bad);
         double los[4], his[4];

@@ -428,8 +428,30 @@ static inline __attribute__((always_inline)) void dot_signs(const double c[3], c
     dot_signs_from(c, x, y, z, k, n, pos, neg);
 }
 
+#ifdef DX_SIGNS_AVX2
+// dot_signs4 for n = 8 (the same products), without a loop.
+__attribute__((target("avx2"))) static inline void dot_signs8(const double c[3], const double *x,
+                                                              const double *y, const double *z,
+                                                              uint64_t *pos, uint64_t *neg)
+{
+    __m256d c0 = _mm256_set1_pd(c[0]), c1 = _mm256_set1_pd(c[1]), c2 = _mm256_set1_pd(c[2]);
+    __m256d zero = _mm256_setzero_pd();
+    __m256d d0 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(c0, _mm256_loadu_pd(x)),
+                                             _mm256_mul_pd(c1, _mm256_loadu_pd(y))),
+                               _mm256_mul_pd(c2, _mm256_loadu_pd(z)));
+    __m256d d1 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(c0, _mm256_loadu_pd(x + 4)),
+                                             _mm256_mul_pd(c1, _mm256_loadu_pd(y + 4))),
+                               _mm256_mul_pd(c2, _mm256_loadu_pd(z + 4)));
+    *pos = (uint64_t)(_mm256_movemask_pd(_mm256_cmp_pd(d0, zero, _CMP_GT_OQ)) |
+                      _mm256_movemask_pd(_mm256_cmp_pd(d1, zero, _CMP_GT_OQ)) << 4);
+    *neg = (uint64_t)(_mm256_movemask_pd(_mm256_cmp_pd(d0, zero, _CMP_LT_OQ)) |
+                      _mm256_movemask_pd(_mm256_cmp_pd(d1, zero, _CMP_LT_OQ)) << 4);
+}
+#endif
+
 // dot_signs for n a multiple of four (rows padded with zeros: see
-// up_to_four): no tail after the fours.
+// up_to_four): no tail after the fours; eight (a prism's or a box's
+// planes, padded) without a loop.
 static inline __attribute__((always_inline)) void dot_signs_padded(const double c[3],
                                                                     const double *x,
                                                                     const double *y,
@@ -439,7 +461,10 @@ static inline __attribute__((always_inline)) void dot_signs_padded(const double 
 {
 #ifdef DX_SIGNS_AVX2
     if (avx2) {
-        dot_signs4(c, x, y, z, n, pos, neg);
+        if (n == 8)
+            dot_signs8(c, x, y, z, pos, neg);
+        else
+            dot_signs4(c, x, y, z, n, pos, neg);
         return;
     }
 #else
@@ -862,7 +887,8 @@ static inline int edge_candidate(const dx_hull *a, unsigned i, const dx_hull *b,
 // at a time first (screen_pairs).
 enum { PAIR_BATCH = 64 };
 typedef struct pair_batch {
-    int32_t i[PAIR_BATCH + 3], j[PAIR_BATCH + 3];   // room for a four's padding
+    int32_t i[PAIR_BATCH + 3], j[PAIR_BATCH + 3];   // room for a four's padding (and
+                                                      // add_pairs' two past a full batch)
     unsigned n;
 } pair_batch;
 
@@ -936,16 +962,35 @@ screen_pairs(const dx_hull *a, const dx_hull *b, const pair_batch *pb, const edg
     return alone;
 }
 
+// Adds the pairs of a's edge i with b's edges in the set cand (count of
+// them, room for them in the batch) in order: the first two written
+// whether there are two or not (past the count: not read), the rest (rare)
+// one by one, so that how many there are is not a branch.
+static inline void add_pairs(pair_batch *pb, unsigned i, uint64_t cand, unsigned count)
+{
+    const uint64_t stop = (uint64_t)1 << 63;   // what a missing pair's edge reads as
+    unsigned n = pb->n;
+    uint64_t rest = cand & (cand - 1);
+    pb->i[n] = pb->i[n + 1] = (int32_t)i;
+    pb->j[n] = (int32_t)__builtin_ctzll(cand | stop);
+    pb->j[n + 1] = (int32_t)__builtin_ctzll(rest | stop);
+    for (rest &= rest - 1, n += 2; rest; rest &= rest - 1, n++) {
+        pb->i[n] = (int32_t)i;
+        pb->j[n] = (int32_t)__builtin_ctzll(rest);
+    }
+    pb->n += count;
+}
+
 // edge_candidate for the batch's pairs in order, but for those the screen
 // leaves alone (that would do nothing there); 0 (the axis into es->sep) as
 // soon as one parts the hulls. Empties the batch.
 __attribute__((target("avx2"))) static int flush_pairs(const dx_hull *a, const dx_hull *b,
                                                        pair_batch *pb, edge_search *es)
 {
-    unsigned n = pb->n;
-    for (unsigned k = n; k % 4; k++) {   // the last four padded with its first pair
-        pb->i[k] = pb->i[n & ~3u];
-        pb->j[k] = pb->j[n & ~3u];
+    unsigned n = pb->n, first = (n - 1) & ~3u;   // n > 0: the last four's first pair
+    for (unsigned k = n; k < n + 3; k++) {   // that four padded with it (past it: unread)
+        pb->i[k] = pb->i[first];
+        pb->j[k] = pb->j[first];
     }
     uint64_t to_test = ~screen_pairs(a, b, pb, es);
     if (n < 64) to_test &= ((uint64_t)1 << n) - 1;
@@ -1189,11 +1234,9 @@ masked_edge_pairs_with(const dx_hull *a, const dx_hull *b, edge_search *es, cons
         }
 #ifdef DX_SIGNS_AVX2
         if (screened) {
-            for (; cand; cand &= cand - 1) {
-                batch.i[batch.n] = (int32_t)i;
-                batch.j[batch.n++] = (int32_t)__builtin_ctzll(cand);
-                if (batch.n == PAIR_BATCH && !flush_pairs(a, b, &batch, es)) return 0;
-            }
+            unsigned count = (unsigned)__builtin_popcountll(cand);   // at most 32: b's edges
+            if (batch.n + count > PAIR_BATCH && !flush_pairs(a, b, &batch, es)) return 0;
+            add_pairs(&batch, i, cand, count);
             continue;
         }
 #endif
@@ -1424,32 +1467,45 @@ static inline double least(double a, double b)
 
 #ifdef DX_SIGNS_AVX2
 // The face axes' part of dx_hull_clearance where found keeps the faces'
-// depths: each face's m . n made four at a time (as dot3 makes it, from
-// the padded normal rows; a's axes are its normals turned, m . n = -(n_f
-// . n) but for the sign of a zero, which m . n > 0 leaves out either way),
-// then the faces facing n taken in dx_hull_clearance's order.
+// depths, without a branch per face: each face's m . n made four at a time
+// (as dot3 makes it, from the padded normal rows; a's axes are its normals
+// turned, m . n = -(n_f . n) but for the sign of a zero, which m . n > 0
+// leaves out either way), its s / m . n (s infinite for a face not tested;
+// no number for a face not facing n, which least passes over), then
+// least taken over the faces in dx_hull_clearance's order (best is never
+// a NaN: it starts at a depth that is one).
 __attribute__((target("avx2"))) static double faces_clearance4(const dx_hull *a, const dx_hull *b,
                                                                const double n[3], double best,
                                                                const edge_axes *found)
 {
     const __m256d n0 = _mm256_set1_pd(n[0]), n1 = _mm256_set1_pd(n[1]), n2 = _mm256_set1_pd(n[2]);
+    const __m256d inf = _mm256_set1_pd(INFINITY), nan = _mm256_set1_pd(NAN);
+    const __m256d zero = _mm256_setzero_pd();
+    const __m256i lane_bit = _mm256_setr_epi64x(1, 2, 4, 8);
+    __m128d least_so_far = _mm_set_sd(best);
     for (int side = 0; side < 2; side++) {
         const dx_hull *h = side ? b : a;
-        double prod[KEPT_FACES];
-        for (unsigned f = 0; f < h->nplanes; f += 4)
-            _mm256_storeu_pd(prod + f,
-                             _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(h->nx + f), n0),
-                                                         _mm256_mul_pd(_mm256_loadu_pd(h->ny + f), n1)),
-                                           _mm256_mul_pd(_mm256_loadu_pd(h->nz + f), n2)));
-        for (unsigned f = 0; f < h->nplanes; f++) {
-            double mn = side ? prod[f] : -prod[f];
-            if (mn > 0) {
-                double s = found->tested[side] >> f & 1 ? found->face_s[side][f] : INFINITY;
-                best = least(best, s / mn);
-            }
+        const __m256d turn = _mm256_set1_pd(side ? 0.0 : -0.0);
+        double ratio[KEPT_FACES];
+        for (unsigned f = 0; f < h->nplanes; f += 4) {
+            __m256d mn = _mm256_xor_pd(
+                _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(h->nx + f), n0),
+                                            _mm256_mul_pd(_mm256_loadu_pd(h->ny + f), n1)),
+                              _mm256_mul_pd(_mm256_loadu_pd(h->nz + f), n2)),
+                turn);
+            __m256i bits = _mm256_set1_epi64x((long long)(found->tested[side] >> f & 15));
+            __m256i tested = _mm256_cmpeq_epi64(_mm256_and_si256(bits, lane_bit), lane_bit);
+            __m256d s = _mm256_blendv_pd(
+                inf, _mm256_maskload_pd(found->face_s[side] + f, tested), _mm256_castsi256_pd(tested));
+            __m256d facing = _mm256_cmp_pd(mn, zero, _CMP_GT_OQ);
+            _mm256_storeu_pd(ratio + f, _mm256_blendv_pd(nan, _mm256_div_pd(s, mn), facing));
+        }
+        for (unsigned f = 0; f < h->nplanes; f++) {   // least(best, ratio): no NaN taken
+            __m128d r = _mm_load_sd(ratio + f);
+            least_so_far = _mm_blendv_pd(least_so_far, r, _mm_cmple_sd(r, least_so_far));
         }
     }
-    return best;
+    return _mm_cvtsd_f64(least_so_far);
 }
 #endif
 
