@@ -362,9 +362,7 @@ int dxTriMeshQueryBox(const dxTriMeshData *d, const dReal lo[3], const dReal hi[
                       int *cap);
 // The leaves (node * 4 + slot) whose box overlaps [lo, hi], in the order
 // dxTriMeshQueryBox lists their triangles, into leaf[]; returns the count,
-// or -1 (stopping) if there are more than max. leaf[] has room for
-// max + DX_TRI_QUERY_LEAVES_PAD: the walk writes up to that far.
-enum { DX_TRI_QUERY_LEAVES_PAD = 4 };
+// or -1 (stopping) if there are more than max.
 int dxTriMeshQueryLeaves(const dxTriMeshData *d, const dReal lo[3], const dReal hi[3], int *leaf,
                          int max);
 // The same for the box whose floats (dxFloatBox) are lo_f, hi_f.

@@ -18,6 +18,16 @@
 #include <string.h>
 
 #include "trimesh_internal.h"
+#include "../libodedyn/core/dx_clones.h"
+
+// The query's walk in two versions (see query_leaves); clang (14) builds
+// the baseline alone, as for box-box (collide_box.c).
+#if !defined(__clang__) && defined(DX_AVX2_CLONES)
+#define QUERY_CLONES DX_AVX2_CLONES
+#else
+#define QUERY_CLONES
+#endif
+
 
 // Leaves of at most LEAF triangles (DX_TRI_LEAF_MAX). A median split
 // halves the triangles, so the binary depth stays below log2(tri_count) + 2
@@ -380,10 +390,12 @@ int dxTriMeshQueryBox(const dxTriMeshData *d, const dReal lo[3], const dReal hi[
     return n;
 }
 
-// dxTriMeshQueryLeaves's walk in leaf order: a node's slots in order,
-// each inner slot's subtree before the next slot.
-static int leaves_in_order(const dxTriMeshData *d, const float lo_f[3], const float hi_f[3],
-                           int *leaf, int max)
+// dxTriMeshQueryLeaves's walk, built twice where the library can pick a
+// version when loaded (dx_clones.h): with AVX2 (the same comparisons, in
+// three-operand form) and for the baseline. Static, called through the
+// plain function below (GCC 12 exports a clone whatever the visibility).
+QUERY_CLONES static int query_leaves(const dxTriMeshData *d, const float lo_f[3],
+                                     const float hi_f[3], int *leaf, int max)
 {
     dxTriTreeWalk w;
     dxTriTreeWalkStartF(d, lo_f, hi_f, &w);
@@ -393,144 +405,6 @@ static int leaves_in_order(const dxTriMeshData *d, const float lo_f[3], const fl
         leaf[n++] = id;
     }
     return n;
-}
-
-// The same list without a branch that follows the tree: a node taken
-// from the stack writes its overlapping leaf slots (as node * 4 + slot)
-// at the list's end and its overlapping inner slots onto the stack, each
-// write made for all four slots with the list's or the stack's end moved
-// on by the count of those that count. Inner slots are stacked last slot
-// first, so that they come off the stack in order: the list is then in
-// leaf order but where a node's overlapping leaf slot follows one of its
-// overlapping inner slots (the leaf would come before the inner slot's
-// subtree). There, as past max, the walk hands over to leaves_in_order.
-// The stack holds at most three slots a level of the four-way depth
-// (below 17) and the first: 52, and four more written past its end.
-enum { QUERY_STACK = 56 };
-
-#if defined(__GNUC__) && defined(__x86_64__) && defined(__SSE2__)
-#define QUERY_AVX2 1
-#include <immintrin.h>
-
-// Per four-bit mask, the slots whose bit is set: in order (slots_up) and
-// last first (slots_down), then 0s.
-#define S4(a, b, c, d) { a, b, c, d }
-static const int slots_up[16][4] __attribute__((aligned(16))) = {
-    S4(0, 0, 0, 0), S4(0, 0, 0, 0), S4(1, 0, 0, 0), S4(0, 1, 0, 0),
-    S4(2, 0, 0, 0), S4(0, 2, 0, 0), S4(1, 2, 0, 0), S4(0, 1, 2, 0),
-    S4(3, 0, 0, 0), S4(0, 3, 0, 0), S4(1, 3, 0, 0), S4(0, 1, 3, 0),
-    S4(2, 3, 0, 0), S4(0, 2, 3, 0), S4(1, 2, 3, 0), S4(0, 1, 2, 3)
-};
-static const int slots_down[16][4] __attribute__((aligned(16))) = {
-    S4(0, 0, 0, 0), S4(0, 0, 0, 0), S4(1, 0, 0, 0), S4(1, 0, 0, 0),
-    S4(2, 0, 0, 0), S4(2, 0, 0, 0), S4(2, 1, 0, 0), S4(2, 1, 0, 0),
-    S4(3, 0, 0, 0), S4(3, 0, 0, 0), S4(3, 1, 0, 0), S4(3, 1, 0, 0),
-    S4(3, 2, 0, 0), S4(3, 2, 0, 0), S4(3, 2, 1, 0), S4(3, 2, 1, 0)
-};
-#undef S4
-
-// The lanes of x that a row of slots_down names.
-__attribute__((target("avx2"))) static inline __m128i pick_slots(__m128i x, const int slots[4])
-{
-    return _mm_castps_si128(
-        _mm_permutevar_ps(_mm_castsi128_ps(x), _mm_load_si128((const __m128i *)slots)));
-}
-#endif
-
-// Per four-bit mask, the bits below its highest: an overlapping inner
-// slot there comes before an overlapping leaf slot.
-static const unsigned char before_last[16] = { 0, 0, 1, 1, 3, 3, 3, 3, 7, 7, 7, 7, 7, 7, 7, 7 };
-
-// How many of a four-bit mask's bits are set (four bits per mask).
-static inline int bits4(unsigned m)
-{
-    return (int)(0x4332322132212110ull >> (4 * m) & 15);
-}
-
-// The walk (leaf[] with room for max + 4). With AVX2 (avx2 1, in a
-// function built for it) a node's inner slots picked by one permute and
-// its leaves' ids made from their slots' list. The query's sides are
-// broadcast once (dxTriNodeOverlaps's comparisons).
-static inline __attribute__((always_inline)) int walk_leaves(const dxTriMeshData *d,
-                                                             const float lo_f[3],
-                                                             const float hi_f[3], int *leaf,
-                                                             int max, int avx2)
-{
-    const dxTriMeshNode *nodes = d->nodes;
-    dxTriF4 qlo[3], qhi[3];
-    for (int k = 0; k < 3; k++) {
-        qlo[k] = (dxTriF4){ lo_f[k], lo_f[k], lo_f[k], lo_f[k] };
-        qhi[k] = (dxTriF4){ hi_f[k], hi_f[k], hi_f[k], hi_f[k] };
-    }
-    int stack[QUERY_STACK], top = 1, n = 0;
-    stack[0] = 0;
-    do {
-        const int at = stack[--top];
-        const dxTriMeshNode *node = &nodes[at];
-        dxTriI4 count, m = { -1, -1, -1, -1 };
-        memcpy(&count, node->count, sizeof count);
-        for (int k = 0; k < 3; k++) {
-            dxTriF4 slo, shi;
-            memcpy(&slo, node->lo[k], sizeof slo);
-            memcpy(&shi, node->hi[k], sizeof shi);
-            m &= (slo <= qhi[k]) & (shi >= qlo[k]);
-        }
-        // Leaf slots (count > 0) and inner ones (count 0); an unused one
-        // (count -1) is neither.
-        const dxTriI4 lv = m & (count > 0), iv = m & (count == 0);
-#if defined(__SSE__)
-        const unsigned lm = (unsigned)_mm_movemask_ps((__m128)lv);
-        const unsigned im = (unsigned)_mm_movemask_ps((__m128)iv);
-#else
-        const unsigned lm = (unsigned)((lv[0] & 1) | (lv[1] & 2) | (lv[2] & 4) | (lv[3] & 8));
-        const unsigned im = (unsigned)((iv[0] & 1) | (iv[1] & 2) | (iv[2] & 4) | (iv[3] & 8));
-#endif
-#ifdef QUERY_AVX2
-        if (avx2) {
-            const __m128i first = _mm_loadu_si128((const __m128i *)node->first);
-            const __m128i up = _mm_load_si128((const __m128i *)slots_up[lm]);
-            _mm_storeu_si128((__m128i *)(leaf + n), _mm_add_epi32(_mm_set1_epi32(4 * at), up));
-            _mm_storeu_si128((__m128i *)(stack + top), pick_slots(first, slots_down[im]));
-            n += __builtin_popcount(lm);
-            top += __builtin_popcount(im);
-        } else
-#endif
-        {
-            (void)avx2;
-            for (int s = 0, k = n; s < 4; s++) {
-                leaf[k] = 4 * at + s;
-                k += (int)(lm >> s & 1);
-            }
-            for (int s = 3, k = top; s >= 0; s--) {
-                stack[k] = node->first[s];
-                k += (int)(im >> s & 1);
-            }
-            n += bits4(lm);
-            top += bits4(im);
-        }
-        if ((n > max) | ((im & before_last[lm]) != 0))
-            return leaves_in_order(d, lo_f, hi_f, leaf, max);
-    } while (top > 0);
-    return n;
-}
-
-#ifdef QUERY_AVX2
-__attribute__((target("avx2"))) static int walk_leaves_avx2(const dxTriMeshData *d,
-                                                            const float lo_f[3],
-                                                            const float hi_f[3], int *leaf,
-                                                            int max)
-{
-    return walk_leaves(d, lo_f, hi_f, leaf, max, 1);
-}
-#endif
-
-static int query_leaves(const dxTriMeshData *d, const float lo_f[3], const float hi_f[3],
-                        int *leaf, int max)
-{
-#ifdef QUERY_AVX2
-    if (__builtin_cpu_supports("avx2")) return walk_leaves_avx2(d, lo_f, hi_f, leaf, max);
-#endif
-    return walk_leaves(d, lo_f, hi_f, leaf, max, 0);
 }
 
 int dxTriMeshQueryLeaves(const dxTriMeshData *d, const dReal lo[3], const dReal hi[3], int *leaf,

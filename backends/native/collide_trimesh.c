@@ -712,7 +712,7 @@ int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dReal reach, dxT
     // Without temporal coherence the tree's leaves are walked in place:
     // the same triangles in the same order as dxTriMeshQueryBox lists
     // them, their vertices read from the leaf-order copy.
-    int leaf[LEAF_WALK_MAX + DX_TRI_QUERY_LEAVES_PAD], leaves = -1;
+    int leaf[LEAF_WALK_MAX], leaves = -1;
     if (d->leaf_vertices && (d->tree_stamp == 0 || !dxTriMeshTCOn(m, other->ops->cls))) {
         float lo_f[4], hi_f[4];
         dxFloatBox(lo, hi, lo_f, hi_f);

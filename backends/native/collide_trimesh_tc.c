@@ -38,7 +38,7 @@ typedef struct tc_entry {
     uint64_t used;         // the table's clock when last used
     dReal lo[3], hi[3];    // the fat box
     int n;                 // leaves, or -1: more than LEAVES
-    int leaf[LEAVES + DX_TRI_QUERY_LEAVES_PAD];   // (the query's room)
+    int leaf[LEAVES];
 } tc_entry;
 
 typedef struct tc_table {
