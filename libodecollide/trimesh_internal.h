@@ -36,6 +36,10 @@ enum {
 // bumps).
 enum { DX_TRI_EDGE_FEATURE = 0x01, DX_TRI_VERTEX_FEATURE = 0x08 };
 
+// The most triangles a leaf of a built tree holds (a heightfield's patch,
+// a tree of one leaf without the leaf copy, may hold more).
+enum { DX_TRI_LEAF_MAX = 4 };
+
 // A node of the box tree: up to four children ("slots") with their boxes
 // side by side per axis, so that a query or a ray tests the four at once
 // (128 bytes: two cache lines, the nodes starting at a line's start).
@@ -47,10 +51,6 @@ enum { DX_TRI_EDGE_FEATURE = 0x01, DX_TRI_VERTEX_FEATURE = 0x08 };
 // trimesh_tree.c): its leaves, their order and their boxes are the binary
 // tree's.
 // A leaf is named by node * 4 + slot (temporal coherence).
-// The most triangles a leaf of a built tree holds (a heightfield's patch,
-// a tree of one leaf without the leaf copy, may hold more).
-enum { DX_TRI_LEAF_MAX = 4 };
-
 typedef struct dxTriMeshNode {
     float lo[3][4], hi[3][4];
     int first[4], count[4];
