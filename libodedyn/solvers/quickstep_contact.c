@@ -212,13 +212,6 @@ QS_INLINE void lanes_rows(const qs_input *in, const qs_cbodies *cb, const dxCont
     }
 }
 
-QS_INLINE qs_v2 load_pair(const dReal *p)
-{
-    qs_v2 v;
-    memcpy(&v, p, sizeof v);
-    return v;
-}
-
 // a, b += li M (M: a row's six numbers for one body, li spread to the four).
 QS_INLINE void start_row(qs_v4 *a, qs_v2 *b, const qs_row *row, size_t off, qs_v4 li)
 {
@@ -229,7 +222,7 @@ QS_INLINE void start_row(qs_v4 *a, qs_v2 *b, const qs_row *row, size_t off, qs_v
     const qs_v2 li2 = qs_splat(v4_lane(li, 0));
 #endif
     *a = v4_add(*a, v4_mul(li, v4_load(M)));
-    *b = qs_add(*b, qs_mul(li2, load_pair(M + 4)));
+    *b = qs_add(*b, qs_mul(li2, v2_load(M + 4)));
 }
 
 // fc += M^-1 J^T l of body 0 (at fc0, the rows' M) and with two of body 1
@@ -241,7 +234,7 @@ QS_INLINE void start_bodies(dReal *fc0, dReal *fc1, const qs_row *rows, const in
 {
     const size_t M = offsetof(qs_row, M), M1 = offsetof(qs_row, M1);
     qs_v4 a0 = v4_load(fc0), a1 = two ? v4_load(fc1) : v4_splat(0);
-    qs_v2 b0 = load_pair(fc0 + 4), b1 = two ? load_pair(fc1 + 4) : qs_splat(0);
+    qs_v2 b0 = v2_load(fc0 + 4), b1 = two ? v2_load(fc1 + 4) : qs_splat(0);
     if (v4_lane(l, 0) != 0) {
         start_row(&a0, &b0, &rows[0], M, v4_spread(l, 0));
         if (two) start_row(&a1, &b1, &rows[0], M1, v4_spread(l, 0));

@@ -48,18 +48,6 @@ QS_INLINE dReal clamp(dReal l, dReal lo, dReal hi)
     return l < lo ? lo : l;
 }
 
-QS_INLINE qs_v2 load2(const dReal *p)
-{
-    qs_v2 v;
-    memcpy(&v, p, sizeof v);
-    return v;
-}
-
-QS_INLINE void store2(qs_v2 v, dReal *p)
-{
-    memcpy(p, &v, sizeof v);
-}
-
 // A body's 6 numbers of J, M or fc are a four and a pair (4 + 2;
 // quickstep_v4.h), so that an update takes half the arithmetic of pairs
 // alone where the machine has 4-wide vectors; sums are made in the same order
@@ -73,27 +61,27 @@ typedef struct qs_b6 {
 
 QS_INLINE qs_b6 b6_load(const dReal *p)
 {
-    qs_b6 x = { v4_load(p), load2(p + 4) };
+    qs_b6 x = { v4_load(p), v2_load(p + 4) };
     return x;
 }
 
 QS_INLINE void b6_store(qs_b6 x, dReal *p)
 {
     v4_store(x.a, p);
-    store2(x.b, p + 4);
+    v2_store(x.b, p + 4);
 }
 
 // One body's part of J . x (J: its 6 numbers), the two lanes not yet
 // summed: lane k is (J_k x_k + J_k+2 x_k+2) + J_k+4 x_k+4.
 QS_INLINE qs_v2 b6_dot(const dReal *J, qs_b6 x)
 {
-    return v4_fold(v4_mul(v4_load(J), x.a), qs_mul(load2(J + 4), x.b));
+    return v4_fold(v4_mul(v4_load(J), x.a), qs_mul(v2_load(J + 4), x.b));
 }
 
 // x + delta M for one body's 6 numbers of M (d4, d2: delta splat).
 QS_INLINE qs_b6 b6_add(qs_b6 x, qs_v4 d4, qs_v2 d2, const dReal *M)
 {
-    qs_b6 y = { v4_add(x.a, v4_mul(d4, v4_load(M))), qs_add(x.b, qs_mul(d2, load2(M + 4))) };
+    qs_b6 y = { v4_add(x.a, v4_mul(d4, v4_load(M))), qs_add(x.b, qs_mul(d2, v2_load(M + 4))) };
     return y;
 }
 
@@ -144,7 +132,7 @@ QS_INLINE void block_delta(const qs_block *blk, int n, int np, qs_b6 x0, qs_b6 x
         const qs_v2 sa = block_dot(J, a, x0, x1, np);
         if (a + 1 < n) {
             const qs_v2 sb = block_dot(J, a + 1, x0, x1, np);
-            const qs_v2 r = qs_sub(load2(blk->rhs + a), qs_mul(load2(blk->cfm + a), load2(l + a)));
+            const qs_v2 r = qs_sub(v2_load(blk->rhs + a), qs_mul(v2_load(blk->cfm + a), v2_load(l + a)));
             res[a / 2] = qs_sub(r, hadd2(sa, sb));
         } else {
             res[a / 2] = qs_splat(blk->rhs[a] - blk->cfm[a] * l[a] - lane_sum(sa));
@@ -157,7 +145,7 @@ QS_INLINE void block_delta(const qs_block *blk, int n, int np, qs_b6 x0, qs_b6 x
         delta[a] = qs_lane(d, 0);
         if (a + 1 < n) {
             delta[a + 1] = qs_lane(d, 1);
-            store2(qs_add(load2(l + a), d), l + a);
+            v2_store(qs_add(v2_load(l + a), d), l + a);
         } else {
             l[a] += qs_lane(d, 0);
         }

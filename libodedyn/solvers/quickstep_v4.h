@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
-// quickstep_v4.h -- fours of numbers for QuickStep's SIMD paths: a body's 6
+// quickstep_v4.h -- fours of numbers for QuickStep's SIMD paths, and the
+// loads and stores of fours and of pairs (qs_v2, quickstep.h): a body's 6
 // numbers as a four and a pair (quickstep_sweep.c), a contact's rows one a
 // lane (quickstep_contact.c), a batch's blocks one a lane
 // (quickstep_block_batch.c). GNU vector extensions: one AVX operation for
@@ -101,6 +102,18 @@ static inline qs_v2 v4_fold(qs_v4 a, qs_v2 b)
     return v;
 }
 #endif
+
+QS_INLINE qs_v2 v2_load(const dReal *p)
+{
+    qs_v2 v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+
+QS_INLINE void v2_store(qs_v2 v, dReal *p)
+{
+    memcpy(p, &v, sizeof v);
+}
 
 QS_INLINE qs_v4 v4_load(const dReal *p)
 {

@@ -102,35 +102,34 @@ static inline dReal isolation_by(dReal iso, dReal d2)
 
 #if defined(__GNUC__)
 // The smaller of x and y in each lane.
-QS_INLINE warm_v4 min4(warm_v4 x, warm_v4 y)
+QS_INLINE qs_v4 min4(qs_v4 x, qs_v4 y)
 {
-    typedef __typeof__(x < y) mask;
-    const mask lt = x < y;
-    return (warm_v4)(((mask)x & lt) | ((mask)y & ~lt));
+    const qs_m4 lt = x < y;
+    return (qs_v4)(((qs_m4)x & lt) | ((qs_m4)y & ~lt));
 }
 
 // Of four contacts (a box face's): their points as x, y and z fours, each
 // against the next and the one after that (all six pairs), a lane a pair.
 QS_INLINE dReal isolation4(const warm_point *e)
 {
-    const warm_v4 a = load4(e[0].p), b = load4(e[1].p), c = load4(e[2].p), d = load4(e[3].p);
-    const warm_v4 ab = __builtin_shufflevector(a, b, 0, 4, 1, 5);   // a0 b0 a1 b1
-    const warm_v4 cd = __builtin_shufflevector(c, d, 0, 4, 1, 5);
-    const warm_v4 X = __builtin_shufflevector(ab, cd, 0, 1, 4, 5);
-    const warm_v4 Y = __builtin_shufflevector(ab, cd, 2, 3, 6, 7);
-    const warm_v4 ab2 = __builtin_shufflevector(a, b, 2, 6, 2, 6);   // a2 b2 a2 b2
-    const warm_v4 cd2 = __builtin_shufflevector(c, d, 2, 6, 2, 6);
-    const warm_v4 Z = __builtin_shufflevector(ab2, cd2, 0, 1, 4, 5);
-    const warm_v4 x1 = X - __builtin_shufflevector(X, X, 1, 2, 3, 0);
-    const warm_v4 y1 = Y - __builtin_shufflevector(Y, Y, 1, 2, 3, 0);
-    const warm_v4 z1 = Z - __builtin_shufflevector(Z, Z, 1, 2, 3, 0);
-    const warm_v4 x2 = X - __builtin_shufflevector(X, X, 2, 3, 0, 1);
-    const warm_v4 y2 = Y - __builtin_shufflevector(Y, Y, 2, 3, 0, 1);
-    const warm_v4 z2 = Z - __builtin_shufflevector(Z, Z, 2, 3, 0, 1);
-    const warm_v4 d1 = x1 * x1 + y1 * y1 + z1 * z1, d2 = x2 * x2 + y2 * y2 + z2 * z2;
-    const warm_v4 sum = d1 + d2;   // not a number if one of them is not
+    const qs_v4 a = v4_load(e[0].p), b = v4_load(e[1].p), c = v4_load(e[2].p), d = v4_load(e[3].p);
+    const qs_v4 ab = __builtin_shufflevector(a, b, 0, 4, 1, 5);   // a0 b0 a1 b1
+    const qs_v4 cd = __builtin_shufflevector(c, d, 0, 4, 1, 5);
+    const qs_v4 X = __builtin_shufflevector(ab, cd, 0, 1, 4, 5);
+    const qs_v4 Y = __builtin_shufflevector(ab, cd, 2, 3, 6, 7);
+    const qs_v4 ab2 = __builtin_shufflevector(a, b, 2, 6, 2, 6);   // a2 b2 a2 b2
+    const qs_v4 cd2 = __builtin_shufflevector(c, d, 2, 6, 2, 6);
+    const qs_v4 Z = __builtin_shufflevector(ab2, cd2, 0, 1, 4, 5);
+    const qs_v4 x1 = X - __builtin_shufflevector(X, X, 1, 2, 3, 0);
+    const qs_v4 y1 = Y - __builtin_shufflevector(Y, Y, 1, 2, 3, 0);
+    const qs_v4 z1 = Z - __builtin_shufflevector(Z, Z, 1, 2, 3, 0);
+    const qs_v4 x2 = X - __builtin_shufflevector(X, X, 2, 3, 0, 1);
+    const qs_v4 y2 = Y - __builtin_shufflevector(Y, Y, 2, 3, 0, 1);
+    const qs_v4 z2 = Z - __builtin_shufflevector(Z, Z, 2, 3, 0, 1);
+    const qs_v4 d1 = x1 * x1 + y1 * y1 + z1 * z1, d2 = x2 * x2 + y2 * y2 + z2 * z2;
+    const qs_v4 sum = d1 + d2;   // not a number if one of them is not
     if (!(sum[0] + sum[1] + sum[2] + sum[3] >= 0)) return 0;
-    const warm_v4 m = min4(d1, d2), m2 = min4(m, __builtin_shufflevector(m, m, 2, 3, 0, 1));
+    const qs_v4 m = min4(d1, d2), m2 = min4(m, __builtin_shufflevector(m, m, 2, 3, 0, 1));
     return m2[0] < m2[1] ? m2[0] : m2[1];
 }
 #endif
@@ -308,8 +307,8 @@ WARM_CLONES void dxQuickWarmEnd(struct dxWorld *w, dxWarmCache *c, const dReal *
             const dReal l2 = pend->pos[2] >= 0 ? lambda[pend->pos[2]] : 0;
             e->ln = lambda[pend->pos[0]];
 #if defined(__GNUC__)
-            const warm_v4 L1 = { l1, l1, l1, l1 }, L2 = { l2, l2, l2, l2 };
-            to_body4_v(e->f, R, L1 * load4(pend->t1) + L2 * load4(pend->t2));
+            const qs_v4 L1 = { l1, l1, l1, l1 }, L2 = { l2, l2, l2, l2 };
+            to_body4_v(e->f, R, L1 * v4_load(pend->t1) + L2 * v4_load(pend->t2));
 #else
             dVector3 fw;
             for (int i = 0; i < 3; i++) fw[i] = l1 * pend->t1[i] + l2 * pend->t2[i];

@@ -9,7 +9,7 @@
 #define DX_QUICKSTEP_WARM_MATCH_H
 
 #include "quickstep.h"
-#include "dx_clones.h"   // (its fours pass only between inlined functions)
+#include "quickstep_v4.h"
 
 #include <stddef.h>
 #include <string.h>
@@ -83,26 +83,16 @@ QS_INLINE void to_world(dReal *x, const dReal *R, const dReal *v)
 // in the same order), x and v four numbers (the fourth of x whatever R's
 // padding makes it).
 #if defined(__GNUC__)
-typedef dReal warm_v4 __attribute__((vector_size(4 * sizeof(dReal))));
-
-QS_INLINE warm_v4 load4(const dReal *p)
+QS_INLINE void to_body4_v(dReal *x, const dReal *R, qs_v4 v)
 {
-    warm_v4 v;
-    memcpy(&v, p, sizeof v);
-    return v;
-}
-
-QS_INLINE void to_body4_v(dReal *x, const dReal *R, warm_v4 v)
-{
-    const warm_v4 r = load4(R) * __builtin_shufflevector(v, v, 0, 0, 0, 0) +
-                      load4(R + 4) * __builtin_shufflevector(v, v, 1, 1, 1, 1) +
-                      load4(R + 8) * __builtin_shufflevector(v, v, 2, 2, 2, 2);
-    memcpy(x, &r, sizeof r);
+    v4_store(v4_load(R) * v4_spread(v, 0) + v4_load(R + 4) * v4_spread(v, 1) +
+                 v4_load(R + 8) * v4_spread(v, 2),
+             x);
 }
 
 QS_INLINE void to_body4(dReal *x, const dReal *R, const dReal *v)
 {
-    to_body4_v(x, R, load4(v));
+    to_body4_v(x, R, v4_load(v));
 }
 #else
 static inline void to_body4(dReal *x, const dReal *R, const dReal *v)
@@ -205,12 +195,12 @@ QS_INLINE const warm_point *warm_match(dxWarmCache *c, int k, const struct dxBod
     warm_point *e = &c->cur[k];
     dReal reach2, r2 = 0;   // the lever arms, squared
 #if defined(__GNUC__)
-    const warm_v4 a = load4(point) - load4(b0->pos);   // (the fourth: whatever)
+    const qs_v4 a = v4_load(point) - v4_load(b0->pos);   // (the fourth: whatever)
     to_body4_v(e->p, b0->R, a);
-    const warm_v4 aa = a * a;
+    const qs_v4 aa = a * a;
     reach2 = aa[0] + aa[1] + aa[2];
     if (b1) {
-        const warm_v4 a1 = load4(point) - load4(b1->pos), bb = a1 * a1;
+        const qs_v4 a1 = v4_load(point) - v4_load(b1->pos), bb = a1 * a1;
         r2 = bb[0] + bb[1] + bb[2];
     }
 #else
@@ -277,10 +267,10 @@ QS_INLINE int warm_contact_rows(dxWarmCache *c, const struct dxBody *b0, const s
         }
         c->cols_of = c->run;
     }
-    const warm_v4 F = load4(old->f);
-    const warm_v4 x = load4(c->cols[0]) * __builtin_shufflevector(F, F, 0, 0, 0, 0) +
-                      load4(c->cols[1]) * __builtin_shufflevector(F, F, 1, 1, 1, 1) +
-                      load4(c->cols[2]) * __builtin_shufflevector(F, F, 2, 2, 2, 2);
+    const qs_v4 F = v4_load(old->f);
+    const qs_v4 x = v4_load(c->cols[0]) * __builtin_shufflevector(F, F, 0, 0, 0, 0) +
+                      v4_load(c->cols[1]) * __builtin_shufflevector(F, F, 1, 1, 1, 1) +
+                      v4_load(c->cols[2]) * __builtin_shufflevector(F, F, 2, 2, 2, 2);
     memcpy(f, &x, sizeof x);
 #else
     to_world(f, b0->R, old->f);
