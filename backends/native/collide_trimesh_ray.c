@@ -16,6 +16,7 @@
 
 #include <float.h>
 #include <math.h>
+#include <stddef.h>
 
 #if defined(__SSE__)
 #include <emmintrin.h>
@@ -112,33 +113,65 @@ static inline unsigned ray_triangle_pair(const dReal s[3], const dReal v[3], dRe
 }
 #endif
 
-// The ray as the slot tests take it (mesh frame, in float): its start s,
-// the inverses of its direction's components, and per axis a slack that
-// covers every rounding of a crossing computed in float (the start's, the
-// difference's, the inverse's and the product's: together under
+// The ray as the general slot test takes it (mesh frame, in float): its
+// start s, the inverses of its direction's components, and per axis a slack
+// that covers every rounding of a crossing computed in float (the start's,
+// the difference's, the inverse's and the product's: together under
 // 8 2^-24 m |inv|, m the largest coordinate in play, the box's or the
 // start's; the slack is 64 2^-24 m |inv|), so that each slab's [near, far]
 // holds the exact one. The tests can only keep a box an exact test would
 // drop, never drop one it would keep: the walk finds the hits of an exact
-// walk. An
-// axis the ray runs along (|v| under 1e-30, or 0) is tested as a slab the
-// start must lie in, [s_lo, s_hi]: the start widened by how far the ray
-// moves along that axis, and a float step more each side. Each number is
-// there four times, as the four slots take it (one load, not a load and a
-// shuffle per node).
+// walk. An axis the ray runs along (|v| under 1e-30, or 0) is tested as a
+// slab the start must lie in, [s_lo, s_hi]: the start widened by how far
+// the ray moves along that axis, and a float step more each side. Each
+// number is there four times, as the four slots take it (one load, not a
+// load and a shuffle per node). This test serves the rays the plane test
+// (ray_planes) cannot take: along an axis, or so far out that a product
+// could overflow.
 typedef struct ray_lanes {
     float s[3][4], inv[3][4], slack[3][4], s_lo[3][4], s_hi[3][4];
     int along[3];
 } ray_lanes;
 
-// Set the four lanes of a ray_lanes number.
-static void set_lanes(float lanes[4], float f)
+// The common ray as the plane test takes it. Per axis the node's plane it
+// enters by is known from the direction's sign (lo for a positive
+// component, hi for a negative one: byte offsets near[k], far[k] in a
+// node), and the crossing (P - s) / v of a plane P is taken as
+// P inv + c with inv = (float)(1 / v) and the start folded into
+// c_near = below(-s inv - slack), c_far = above(-s inv + slack) (in double,
+// then rounded outwards to float), the slack as ray_lanes' (64 2^-24 m |inv|
+// + FLT_MIN). Conservative: against the exact crossing T = (P - s) / v the
+// float inverse moves (P - s) inv by at most 2^-24 |P - s| |inv| <=
+// 2^-23 m |inv|, the product P inv's rounding by 2^-24 m |inv|, the sum's
+// rounding by 2^-24 (2 m |inv| + slack), the double arithmetic of c by
+// far less; c itself is rounded away from the slab. Together under
+// 6 2^-24 m |inv| + 2^-24 slack + FLT_MIN's share for underflow, which the
+// slack covers: near <= T <= far for every used slot, so the test may keep
+// a box the exact test drops, never drop one it keeps. Taken only when
+// every |v| >= 1e-30 and m |inv| <= 2^64 (no product or constant near
+// overflow). Unused slots (lo = +inf, hi = -inf) give near = +inf or
+// far = -inf and fail without their count's mask (inv is finite and not 0,
+// so no NaN). Each number four times, 16-byte aligned, as the lanes take it.
+typedef struct ray_planes {
+    _Alignas(16) float inv[3][4];
+    _Alignas(16) float c_near[3][4];
+    _Alignas(16) float c_far[3][4];
+    int near[3], far[3];
+} ray_planes;
+
+// Set the four lanes of a ray_lanes or ray_planes number.
+static inline void set_lanes(float lanes[4], float f)
 {
+#if defined(__SSE__)
+    _mm_storeu_ps(lanes, _mm_set1_ps(f));
+#else
     for (int j = 0; j < 4; j++) lanes[j] = f;
+#endif
 }
 
-static void ray_setup(ray_lanes *r, const dxTriMeshData *d, const dReal s[3], const dReal v[3],
-                      dReal len)
+// The general test's numbers (ray_lanes) for the ray from s along v over len.
+static void ray_setup_lanes(ray_lanes *r, const dxTriMeshData *d, const dReal s[3],
+                            const dReal v[3], dReal len)
 {
     for (int k = 0; k < 3; k++) {
         set_lanes(r->s[k], (float)s[k]);
@@ -158,6 +191,31 @@ static void ray_setup(ray_lanes *r, const dxTriMeshData *d, const dReal s[3], co
         set_lanes(r->inv[k], (float)inv);
         set_lanes(r->slack[k], slack < FLT_MAX ? (float)slack : FLT_MAX);
     }
+}
+
+// The plane test's numbers (ray_planes) for the ray from s along v: 0 if
+// the ray needs the general test (an axis it runs along, or coordinates
+// and inverses whose products could come near a float's range).
+static int ray_setup_planes(ray_planes *r, const dxTriMeshData *d, const dReal s[3],
+                            const dReal v[3])
+{
+    for (int k = 0; k < 3; k++) {
+        const double vk = (double)v[k], sk = (double)s[k];
+        if (!(fabs(vk) >= 1e-30)) return 0;
+        const double m = fmax(fabs(sk), fmax(fabs((double)d->lo[k]), fabs((double)d->hi[k])));
+        const float inv = (float)(1 / vk);
+        const double reach = m * fabs((double)inv);
+        if (!(reach <= 0x1p64)) return 0;
+        const double slack = 32 * (double)FLT_EPSILON * reach + FLT_MIN, c = -sk * inv;
+        set_lanes(r->inv[k], inv);
+        set_lanes(r->c_near[k], dxFloatBelow(c - slack));
+        set_lanes(r->c_far[k], dxFloatAbove(c + slack));
+        const int lo = (int)(offsetof(dxTriMeshNode, lo) + sizeof(float[4]) * (size_t)k);
+        const int hi = (int)(offsetof(dxTriMeshNode, hi) + sizeof(float[4]) * (size_t)k);
+        r->near[k] = vk > 0 ? lo : hi;
+        r->far[k] = vk > 0 ? hi : lo;
+    }
+    return 1;
 }
 
 // Which of the node's slots the ray enters within [0, limit]: bit j set,
@@ -188,6 +246,25 @@ static inline unsigned ray_slots(const ray_lanes *r, const dxTriMeshNode *node, 
     _mm_storeu_ps(enter, t0);
     return (unsigned)_mm_movemask_ps(_mm_and_ps(ok, _mm_cmple_ps(t0, t1)));
 }
+
+// ray_slots for a ray_planes ray: per axis the entry plane's crossing
+// P inv + c_near and the exit plane's P inv + c_far, no minimum, maximum or
+// branch per axis, no count mask (see ray_planes).
+static inline unsigned ray_slots_planes(const ray_planes *r, const dxTriMeshNode *node,
+                                        float limit, float enter[4])
+{
+    const char *b = (const char *)node;
+    __m128 t0 = _mm_setzero_ps(), t1 = _mm_set1_ps(limit);
+    for (int k = 0; k < 3; k++) {
+        const __m128 inv = _mm_load_ps(r->inv[k]);
+        const __m128 near = _mm_mul_ps(_mm_load_ps((const float *)(b + r->near[k])), inv);
+        const __m128 far = _mm_mul_ps(_mm_load_ps((const float *)(b + r->far[k])), inv);
+        t0 = _mm_max_ps(t0, _mm_add_ps(near, _mm_load_ps(r->c_near[k])));
+        t1 = _mm_min_ps(t1, _mm_add_ps(far, _mm_load_ps(r->c_far[k])));
+    }
+    _mm_storeu_ps(enter, t0);
+    return (unsigned)_mm_movemask_ps(_mm_cmple_ps(t0, t1));
+}
 #else
 static inline unsigned ray_slots(const ray_lanes *r, const dxTriMeshNode *node, float limit,
                                  float enter[4])
@@ -213,6 +290,28 @@ static inline unsigned ray_slots(const ray_lanes *r, const dxTriMeshNode *node, 
     for (int j = 0; j < 4; j++) {
         enter[j] = t0[j];
         if (ok[j] && t0[j] <= t1[j]) m |= 1u << j;
+    }
+    return m;
+}
+
+static inline unsigned ray_slots_planes(const ray_planes *r, const dxTriMeshNode *node,
+                                        float limit, float enter[4])
+{
+    const char *b = (const char *)node;
+    float t0[4] = { 0, 0, 0, 0 }, t1[4] = { limit, limit, limit, limit };
+    for (int k = 0; k < 3; k++) {
+        const float *pn = (const float *)(b + r->near[k]), *pf = (const float *)(b + r->far[k]);
+        for (int j = 0; j < 4; j++) {
+            float near = pn[j] * r->inv[k][j] + r->c_near[k][j];
+            float far = pf[j] * r->inv[k][j] + r->c_far[k][j];
+            t0[j] = near > t0[j] ? near : t0[j];
+            t1[j] = far < t1[j] ? far : t1[j];
+        }
+    }
+    unsigned m = 0;
+    for (int j = 0; j < 4; j++) {
+        enter[j] = t0[j];
+        if (t0[j] <= t1[j]) m |= 1u << j;
     }
     return m;
 }
@@ -265,7 +364,9 @@ static inline __attribute__((always_inline)) void prefetch_slot(const dxTriMeshD
 {
     const int first = node->first[j], count = node->count[j];
     if (count == 0) {
-        prefetch_bytes(&d->nodes[first], sizeof(dxTriMeshNode));
+        const char *child = (const char *)&d->nodes[first];   // two lines from a line's start
+        __builtin_prefetch(child);
+        __builtin_prefetch(child + 64);
         if (!d->node_span) return;
         const int *span = d->node_span + 2 * first;
         if (span[1] > SPAN_AHEAD) return;
@@ -303,14 +404,43 @@ static void keep_hit(dxTriScratch *m, int max, dReal dist, int tri, const dReal 
 // up to a float), the farthest first (so the nearest is walked first), with
 // where it enters, above stack[top - 1]: the new top. (The top is a value,
 // not a pointer: through a pointer each store to the stack would reload it.)
-static inline int push_slots(const dxTriMeshData *d, int i, const ray_lanes *r, float limit,
-                             int *stack, float *entry, int top)
+// One slot or two (most nodes deep in the tree) without the insertion sort;
+// ties in slot order. The test is the plane test when `planes` (a constant
+// of each inlined walk), the general one otherwise.
+static inline __attribute__((always_inline)) int
+push_slots(const dxTriMeshData *d, int i, const ray_lanes *r, const ray_planes *rp,
+           const int planes, float limit, int *stack, float *entry, int top)
 {
     const dxTriMeshNode *node = &d->nodes[i];
     float enter[4];
-    int sorted[4], n = 0;
-    for (unsigned m = ray_slots(r, node, limit, enter); m; m &= m - 1) {
-        int j = __builtin_ctz(m), k = n++;   // insertion by entry, ties in slot order
+    const unsigned m = planes ? ray_slots_planes(rp, node, limit, enter)
+                              : ray_slots(r, node, limit, enter);
+    if (!m) return top;
+    const int j0 = __builtin_ctz(m);
+    prefetch_slot(d, node, j0);
+    const unsigned rest = m & (m - 1);
+    if (!rest) {
+        stack[top] = 4 * i + j0;
+        entry[top] = enter[j0];
+        return top + 1;
+    }
+    const int j1 = __builtin_ctz(rest);
+    prefetch_slot(d, node, j1);
+    if (!(rest & (rest - 1))) {
+        const int near = enter[j1] < enter[j0] ? j1 : j0, far = j0 + j1 - near;
+        stack[top] = 4 * i + far;
+        entry[top] = enter[far];
+        stack[top + 1] = 4 * i + near;
+        entry[top + 1] = enter[near];
+        return top + 2;
+    }
+    int sorted[4] = { j0, j1 }, n = 2;
+    if (enter[j1] < enter[j0]) {
+        sorted[0] = j1;
+        sorted[1] = j0;
+    }
+    for (unsigned b = rest & (rest - 1); b; b &= b - 1) {
+        int j = __builtin_ctz(b), k = n++;   // insertion by entry, ties in slot order
         prefetch_slot(d, node, j);
         while (k > 0 && enter[sorted[k - 1]] > enter[j]) {
             sorted[k] = sorted[k - 1];
@@ -326,25 +456,17 @@ static inline int push_slots(const dxTriMeshData *d, int i, const ray_lanes *r, 
     return top;
 }
 
-// The tree is walked along the ray, nearer slot first; once `max` hits
-// are kept, boxes the ray enters beyond the farthest of them are skipped.
-int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
+// The walk of dxCollideTriMeshRay with the plane test (`planes`, a
+// constant: one copy of the walk each) or the general one: the tree along
+// the ray, nearer slot first; once `max` hits are kept, boxes the ray
+// enters beyond the farthest of them are skipped. The hits go to h.
+static inline __attribute__((always_inline)) void
+walk(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], const ray_lanes *r,
+     const ray_planes *rp, const int planes, int max, dxTriScratch *h)
 {
-    dxTriMesh *m = (dxTriMesh *)o1;
+    const dxTriMesh *m = (const dxTriMesh *)o1;
     const dxRay *ray = (const dxRay *)o2;
     const dxTriMeshData *d = m->data;
-    if (!d || d->node_count == 0) return 0;
-    dReal s[3], v[3], dir[3];
-    dx_axis(o2->R, 2, dir);
-    dxTriMeshToLocal(o1, o2->pos, s);
-    dxTriMeshDirToLocal(o1, dir, v);
-    ray_lanes lanes;
-    ray_setup(&lanes, d, s, v, ray->length);
-    int single = ray->closest_hit || ray->first_contact;
-    int max = single ? 1 : dx_max_contacts(flags);
-    dxTriScratch *h = dxTriScratchAcquire();
-    if (!h) return 0;
-    dxTriScratchAddRaw(h, max);
     // Each slot on the stack (node * 4 + slot) with the distance at which
     // the ray enters it: popped beyond the farthest hit kept, it is skipped
     // untested. A node pushes at most 4 and the four-way depth is under 17.
@@ -352,14 +474,14 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
     float entry[128];
     dReal limit = ray->length;   // the farthest hit kept once `max` are
     float limit_up = dxFloatAbove(limit);
-    top = push_slots(d, 0, &lanes, limit_up, stack, entry, top);
+    top = push_slots(d, 0, r, rp, planes, limit_up, stack, entry, top);
     while (top > 0) {
         top--;
         if (entry[top] > limit) continue;
         const dxTriMeshNode *node = &d->nodes[stack[top] >> 2];
         int slot = stack[top] & 3, first = node->first[slot];
         if (node->count[slot] == 0) {
-            top = push_slots(d, first, &lanes, limit_up, stack, entry, top);
+            top = push_slots(d, first, r, rp, planes, limit_up, stack, entry, top);
             continue;
         }
         // Only the vertices are read until a hit (memory traffic is what a
@@ -405,6 +527,32 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
                 }
             }
         }
+    }
+}
+
+// The ray's hits on the mesh as contacts, nearest first.
+int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
+{
+    dxTriMesh *m = (dxTriMesh *)o1;
+    const dxRay *ray = (const dxRay *)o2;
+    const dxTriMeshData *d = m->data;
+    if (!d || d->node_count == 0) return 0;
+    dReal s[3], v[3], dir[3];
+    dx_axis(o2->R, 2, dir);
+    dxTriMeshToLocal(o1, o2->pos, s);
+    dxTriMeshDirToLocal(o1, dir, v);
+    int single = ray->closest_hit || ray->first_contact;
+    int max = single ? 1 : dx_max_contacts(flags);
+    dxTriScratch *h = dxTriScratchAcquire();
+    if (!h) return 0;
+    dxTriScratchAddRaw(h, max);
+    ray_planes planes;
+    if (ray_setup_planes(&planes, d, s, v)) {
+        walk(o1, o2, s, v, NULL, &planes, 1, max, h);
+    } else {
+        ray_lanes lanes;
+        ray_setup_lanes(&lanes, d, s, v, ray->length);
+        walk(o1, o2, s, v, &lanes, NULL, 0, max, h);
     }
     int count = h->raw_count;
     for (int i = 0; i < count; i++) {
