@@ -113,6 +113,70 @@ static inline unsigned ray_triangle_pair(const dReal s[3], const dReal v[3], dRe
 }
 #endif
 
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__SSE2__) && !defined(dSINGLE)
+#define DX_RAY_AVX2 1
+#include <immintrin.h>
+
+// ray_triangle for a leaf's triangles four at once (1 <= count <= 4, the
+// triangles at t, 9 numbers each; lanes past the last repeat it and are
+// masked off): the same operations in the same order per lane as
+// ray_triangle_pair (no fused operations: the target has no FMA), so the
+// same bits. Bit l of the result is set if triangle l is crossed, with
+// dist[l], bu[l], bv[l].
+__attribute__((target("avx2"))) static inline unsigned
+ray_triangle_quad(const dReal s[3], const dReal v[3], dReal len, const dReal *t, int count,
+                  int cull, dReal dist[4], dReal bu[4], dReal bv[4])
+{
+    const int l1 = count > 1 ? 9 : 0, l2 = count > 2 ? 18 : l1, l3 = count > 3 ? 27 : l2;
+    __m256d c[9];
+    for (int i = 0; i < 9; i++)
+        c[i] = _mm256_set_pd(t[l3 + i], t[l2 + i], t[l1 + i], t[i]);
+    __m256d e1[3], e2[3], tv[3], vv[3];
+    for (int i = 0; i < 3; i++) {
+        e1[i] = _mm256_sub_pd(c[3 + i], c[i]);
+        e2[i] = _mm256_sub_pd(c[6 + i], c[i]);
+        tv[i] = _mm256_sub_pd(_mm256_set1_pd(s[i]), c[i]);
+        vv[i] = _mm256_set1_pd(v[i]);
+    }
+#define MUL _mm256_mul_pd
+#define SUB _mm256_sub_pd
+#define DOT(a, b) _mm256_add_pd(_mm256_add_pd(MUL(a[0], b[0]), MUL(a[1], b[1])), MUL(a[2], b[2]))
+    __m256d p[3] = { SUB(MUL(vv[1], e2[2]), MUL(vv[2], e2[1])),
+                     SUB(MUL(vv[2], e2[0]), MUL(vv[0], e2[2])),
+                     SUB(MUL(vv[0], e2[1]), MUL(vv[1], e2[0])) };
+    __m256d det = DOT(e1, p), zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1);
+    __m256d ok;
+    if (cull) {
+        ok = _mm256_cmp_pd(det, zero, _CMP_NLE_UQ);
+    } else {
+        __m256d abs = _mm256_andnot_pd(_mm256_set1_pd(-0.0), det);
+        __m256d eps = _mm256_set1_pd(DX_COLLIDE_EPS);
+        __m256d scale = MUL(DOT(e1, e1), DOT(e2, e2));
+        ok = _mm256_cmp_pd(MUL(abs, abs), MUL(MUL(scale, eps), eps), _CMP_NLE_UQ);
+    }
+    __m256d inv = _mm256_div_pd(one, det);
+    __m256d u = MUL(DOT(tv, p), inv);
+    ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(u, zero, _CMP_NLT_UQ),
+                                         _mm256_cmp_pd(u, one, _CMP_NGT_UQ)));
+    __m256d qv[3] = { SUB(MUL(tv[1], e1[2]), MUL(tv[2], e1[1])),
+                      SUB(MUL(tv[2], e1[0]), MUL(tv[0], e1[2])),
+                      SUB(MUL(tv[0], e1[1]), MUL(tv[1], e1[0])) };
+    __m256d w = MUL(DOT(vv, qv), inv);
+    ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(w, zero, _CMP_NLT_UQ),
+                                         _mm256_cmp_pd(_mm256_add_pd(u, w), one, _CMP_NGT_UQ)));
+    __m256d dd = MUL(DOT(e2, qv), inv);
+    ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(dd, zero, _CMP_NLT_UQ),
+                                         _mm256_cmp_pd(dd, _mm256_set1_pd(len), _CMP_NGT_UQ)));
+#undef MUL
+#undef SUB
+#undef DOT
+    _mm256_storeu_pd(dist, dd);
+    _mm256_storeu_pd(bu, u);
+    _mm256_storeu_pd(bv, w);
+    return (unsigned)_mm256_movemask_pd(ok) & ((1u << count) - 1);
+}
+#endif
+
 // The ray as the general slot test takes it (mesh frame, in float): its
 // start s, the inverses of its direction's components, and per axis a slack
 // that covers every rounding of a crossing computed in float (the start's,
@@ -456,14 +520,38 @@ push_slots(const dxTriMeshData *d, int i, const ray_lanes *r, const ray_planes *
     return top;
 }
 
+// A crossing of the leaf-order triangle j at dist (barycentric bu, bv):
+// kept among the nearest `max` in h if not beyond the limit, not
+// degenerate and not refused by the callbacks; once `max` are kept, the
+// limit (and its float above) is the farthest kept.
+static inline __attribute__((always_inline)) void
+take_hit(dxGeom *o1, dxGeom *o2, dxTriScratch *h, int max, int j, dReal dist, dReal bu, dReal bv,
+         dReal *limit, float *limit_up)
+{
+    const dxTriMesh *m = (const dxTriMesh *)o1;
+    const dxTriMeshData *d = m->data;
+    if (dist > *limit) return;
+    int ti = d->order[j];
+    if (dxTriMeshIsDegenerate(d, ti)) return;
+    if (m->ray_callback && !m->ray_callback(o1, o2, ti, bu, bv)) return;
+    if (m->callback && !m->callback(o1, o2, ti)) return;
+    keep_hit(h, max, dist, ti, d->normal + 3 * ti);
+    if (h->raw_count == max) {
+        *limit = h->raw[max - 1].depth;
+        *limit_up = dxFloatAbove(*limit);
+    }
+}
+
 // The walk of dxCollideTriMeshRay with the plane test (`planes`, a
-// constant: one copy of the walk each) or the general one: the tree along
+// constant: one copy of the walk each) or the general one, a leaf's
+// triangles four at once (`avx2`, in an AVX2 copy) or two: the tree along
 // the ray, nearer slot first; once `max` hits are kept, boxes the ray
 // enters beyond the farthest of them are skipped. The hits go to h.
 static inline __attribute__((always_inline)) void
 walk(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], const ray_lanes *r,
-     const ray_planes *rp, const int planes, int max, dxTriScratch *h)
+     const ray_planes *rp, const int planes, const int avx2, int max, dxTriScratch *h)
 {
+    (void)avx2;
     const dxTriMesh *m = (const dxTriMesh *)o1;
     const dxRay *ray = (const dxRay *)o2;
     const dxTriMeshData *d = m->data;
@@ -490,6 +578,18 @@ walk(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], const ray_lanes
         // triangle's index and normal, after. A hit beyond the limit could
         // not be kept.
         int end = first + node->count[slot];
+#if defined(DX_RAY_AVX2)
+        if (avx2 && d->leaf_vertices) {   // a leaf of the leaf copy: at most 4
+            dReal dist[4], bu[4], bv[4];
+            unsigned crossed = ray_triangle_quad(s, v, limit, d->leaf_vertices + 9 * first,
+                                                 end - first, ray->backface_cull, dist, bu, bv);
+            for (; crossed; crossed &= crossed - 1) {
+                const int l = __builtin_ctz(crossed);
+                take_hit(o1, o2, h, max, first + l, dist[l], bu[l], bv[l], &limit, &limit_up);
+            }
+            continue;
+        }
+#endif
         for (int j = first; j < end; j += 2) {
             dReal dist[2], bu[2], bv[2];
             unsigned crossed = 0;
@@ -514,21 +614,24 @@ walk(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], const ray_lanes
                         crossed |= 1u << l;
                 }
             }
-            for (int l = 0; l < 2; l++) {
-                if (!(crossed >> l & 1) || dist[l] > limit) continue;
-                int ti = d->order[j + l];
-                if (dxTriMeshIsDegenerate(d, ti)) continue;
-                if (m->ray_callback && !m->ray_callback(o1, o2, ti, bu[l], bv[l])) continue;
-                if (m->callback && !m->callback(o1, o2, ti)) continue;
-                keep_hit(h, max, dist[l], ti, d->normal + 3 * ti);
-                if (h->raw_count == max) {
-                    limit = h->raw[max - 1].depth;
-                    limit_up = dxFloatAbove(limit);
-                }
+            for (; crossed; crossed &= crossed - 1) {
+                const int l = __builtin_ctz(crossed);
+                take_hit(o1, o2, h, max, j + l, dist[l], bu[l], bv[l], &limit, &limit_up);
             }
         }
     }
 }
+
+#if defined(DX_RAY_AVX2)
+// The walk with the plane test and a leaf's four triangles at once, all of
+// it in AVX2 code (no FMA: the same bits).
+__attribute__((target("avx2"))) static void
+walk_planes_avx2(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], const ray_planes *rp,
+                 int max, dxTriScratch *h)
+{
+    walk(o1, o2, s, v, NULL, rp, 1, 1, max, h);
+}
+#endif
 
 // The ray's hits on the mesh as contacts, nearest first.
 int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
@@ -548,11 +651,16 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
     dxTriScratchAddRaw(h, max);
     ray_planes planes;
     if (ray_setup_planes(&planes, d, s, v)) {
-        walk(o1, o2, s, v, NULL, &planes, 1, max, h);
+#if defined(DX_RAY_AVX2)
+        if (__builtin_cpu_supports("avx2"))
+            walk_planes_avx2(o1, o2, s, v, &planes, max, h);
+        else
+#endif
+            walk(o1, o2, s, v, NULL, &planes, 1, 0, max, h);
     } else {
         ray_lanes lanes;
         ray_setup_lanes(&lanes, d, s, v, ray->length);
-        walk(o1, o2, s, v, &lanes, NULL, 0, max, h);
+        walk(o1, o2, s, v, &lanes, NULL, 0, 0, max, h);
     }
     int count = h->raw_count;
     for (int i = 0; i < count; i++) {
