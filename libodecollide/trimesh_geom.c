@@ -20,18 +20,6 @@ void dxTriMeshDataFree(dxTriMeshData *d);   // trimesh_data.c
                      (g)->ops->name); \
     } while (0)
 
-void dxTriMeshToLocal(const dxGeom *mesh, const dReal p[3], dReal out[3])
-{
-    dReal d[3] = { p[0] - mesh->pos[0], p[1] - mesh->pos[1], p[2] - mesh->pos[2] };
-    dxTriMeshDirToLocal(mesh, d, out);
-}
-
-void dxTriMeshDirToLocal(const dxGeom *mesh, const dReal v[3], dReal out[3])
-{
-    const dReal *R = mesh->R;
-    for (int i = 0; i < 3; i++) out[i] = R[i] * v[0] + R[4 + i] * v[1] + R[8 + i] * v[2];
-}
-
 // The box around the tree's root box, posed.
 static void trimesh_aabb(dxGeom *g)
 {

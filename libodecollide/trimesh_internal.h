@@ -393,8 +393,17 @@ static inline int dxTriMeshTCOn(const dxTriMesh *m, int cls)
 // The bounding box of the whole mesh in its frame (empty data: a point).
 void dxTriMeshDataBounds(const dxTriMeshData *d, dReal lo[3], dReal hi[3]);
 
-// A geom's world pose as the mesh frame of its collisions: p_mesh = R^T (p - pos).
-void dxTriMeshToLocal(const dxGeom *mesh, const dReal p[3], dReal out[3]);
-void dxTriMeshDirToLocal(const dxGeom *mesh, const dReal v[3], dReal out[3]);
+// A geom's world pose as the mesh frame of its collisions: p_mesh = R^T (p - pos)
+// (inline: a ray's collision is short enough for the calls to count).
+static inline void dxTriMeshDirToLocal(const dxGeom *mesh, const dReal v[3], dReal out[3])
+{
+    const dReal *R = mesh->R;
+    for (int i = 0; i < 3; i++) out[i] = R[i] * v[0] + R[4 + i] * v[1] + R[8 + i] * v[2];
+}
+static inline void dxTriMeshToLocal(const dxGeom *mesh, const dReal p[3], dReal out[3])
+{
+    dReal d[3] = { p[0] - mesh->pos[0], p[1] - mesh->pos[1], p[2] - mesh->pos[2] };
+    dxTriMeshDirToLocal(mesh, d, out);
+}
 
 #endif

@@ -266,7 +266,8 @@ static int ray_setup_planes(ray_planes *r, const dxTriMeshData *d, const dReal s
     for (int k = 0; k < 3; k++) {
         const double vk = (double)v[k], sk = (double)s[k];
         if (!(fabs(vk) >= 1e-30)) return 0;
-        const double m = fmax(fabs(sk), fmax(fabs((double)d->lo[k]), fabs((double)d->hi[k])));
+        const double lo = fabs((double)d->lo[k]), hi = fabs((double)d->hi[k]);
+        const double box = lo > hi ? lo : hi, m = fabs(sk) > box ? fabs(sk) : box;
         const float inv = (float)(1 / vk);
         const double reach = m * fabs((double)inv);
         if (!(reach <= 0x1p64)) return 0;
@@ -274,10 +275,10 @@ static int ray_setup_planes(ray_planes *r, const dxTriMeshData *d, const dReal s
         set_lanes(r->inv[k], inv);
         set_lanes(r->c_near[k], dxFloatBelow(c - slack));
         set_lanes(r->c_far[k], dxFloatAbove(c + slack));
-        const int lo = (int)(offsetof(dxTriMeshNode, lo) + sizeof(float[4]) * (size_t)k);
-        const int hi = (int)(offsetof(dxTriMeshNode, hi) + sizeof(float[4]) * (size_t)k);
-        r->near[k] = vk > 0 ? lo : hi;
-        r->far[k] = vk > 0 ? hi : lo;
+        const int lo_at = (int)(offsetof(dxTriMeshNode, lo) + sizeof(float[4]) * (size_t)k);
+        const int hi_at = (int)(offsetof(dxTriMeshNode, hi) + sizeof(float[4]) * (size_t)k);
+        r->near[k] = vk > 0 ? lo_at : hi_at;
+        r->far[k] = vk > 0 ? hi_at : lo_at;
     }
     return 1;
 }
@@ -384,9 +385,14 @@ static inline unsigned ray_slots_planes(const ray_planes *r, const dxTriMeshNode
 // Every line the bytes [p, p + size) touch (size > 0): they need not start
 // a line, so the last byte's line too (a loop from p's line would run a
 // count of times that varies with the alignment, which a predictor misses).
+// Two lines a turn (the second may be the line after the last: a prefetch
+// does not fault), half the loop's counting.
 static inline __attribute__((always_inline)) void prefetch_bytes(const void *p, size_t size)
 {
-    for (size_t k = 0; k < size; k += 64) __builtin_prefetch((const char *)p + k);
+    for (size_t k = 0; k < size; k += 128) {
+        __builtin_prefetch((const char *)p + k);
+        __builtin_prefetch((const char *)p + k + 64);
+    }
     __builtin_prefetch((const char *)p + size - 1);
 }
 
