@@ -7,6 +7,8 @@
 
 #include <ode/rotation.h>
 
+#include <string.h>
+
 #include "../libodedyn/math/orthogonalize.h"
 #include "../libodedyn/math/unit_vector.h"
 
@@ -146,7 +148,7 @@ void dGeomRaySet(dGeomID g, dReal px, dReal py, dReal pz, dReal dx, dReal dy, dR
             R[4 * i + 3] = 0;
         }
         if (dxOrthogonalizeR(R, 1)) {   // p, q, d unit: finite
-            dCopyMatrix4x3(g->own_R, R);
+            memcpy(g->own_R, R, sizeof(dMatrix3));   // as dCopyMatrix4x3, without its loop
             dAssignVector3(g->own_pos, px, py, pz);
             dxGeomMarkMoved(g);
             return;
