@@ -42,7 +42,12 @@
 // in groups that fit the first-level cache (dxQuickGroupBytes): all the
 // sweeps of one group, then the next, so that a group's rows and blocks are
 // read from the cache in its 20 sweeps instead of streaming the whole
-// system through it in every sweep.
+// system through it in every sweep. A long island of blocks alone (a chain
+// of links, whose blocks each wait for the one before) is swept on its own,
+// its sweeps overlapped (dxQuickSweepOverlapped): each body sees its updates
+// in the same order, so the results are the same bits. (Its blocks in
+// another order, red-black for a chain, made hanging chains come apart
+// three times as far: docs/perf.md.)
 //
 // Warm start. Contacts do not start from lambda = 0 but from the forces of
 // the same contact in the last step, when there is one: contact joints are
@@ -519,6 +524,42 @@ static qs_system group_system(const qs_system *sys, const qs_island *parts, cons
     return one;
 }
 
+// Islands of blocks alone (no free rows) with at least this many blocks,
+// and this many times their lag (below) or more, have all their sweeps
+// overlapped (dxQuickSweepOverlapped).
+#define QS_OVERLAP_BLOCKS 16
+#define QS_OVERLAP_SWEEPS 4
+
+int dxQuickOverlapSweeps = 1;
+
+// The sweeps' lag for island p (nb1: its bodies and dummy) if they are to
+// be overlapped, else 0. An island of blocks alone sweeps its blocks in
+// order, one sweep after the other; blocks lag apart or more in that order
+// share no body (lag: one more than the most blocks apart two blocks on one
+// body are), so all its sweeps can be overlapped, sweep s's block k at time
+// k + s lag, and about n / lag sweeps of its n blocks go side by side. A
+// chain of links (lag 2) pays: each of its blocks shares a body with the one
+// before, so its sweep in order is one long chain of dependent updates.
+// Others do not: small islands overlap with the other islands of their
+// group instead, and a car's blocks on its chassis are far apart in its
+// order. first: scratch for nb1 numbers.
+static int overlap_lag(const qs_system *sys, const qs_island *p, int nb1, int *first)
+{
+    const int n = p->nblocks;
+    if (!dxQuickOverlapSweeps || p->norder > 0 || n < QS_OVERLAP_BLOCKS) return 0;
+    for (int b = 0; b < nb1; b++) first[b] = -1;   // per body: its first block, -1 none
+    const qs_block *blk = sys->blocks + p->block0;
+    int lag = 1;
+    for (int k = 0; k < n && QS_OVERLAP_SWEEPS * lag <= n; k++) {
+        const int b[2] = { blk[k].o0 / 6 - p->body0, blk[k].o1 / 6 - p->body0 };
+        for (int e = 0; e < 1 + (blk[k].two != 0); e++) {
+            if (first[b[e]] < 0) first[b[e]] = k;
+            lag = k - first[b[e]] + 1 > lag ? k - first[b[e]] + 1 : lag;
+        }
+    }
+    return QS_OVERLAP_SWEEPS * lag <= n ? lag : 0;
+}
+
 // `iterations` sweeps over all islands, group by group (make_groups), each
 // island's rows reshuffled every REORDER_PERIOD with its own generator, the
 // odd sweeps going through the rows before the blocks, the blocks in
@@ -526,7 +567,20 @@ static qs_system group_system(const qs_system *sys, const qs_island *parts, cons
 static void solve(dxArena *a, qs_system *sys, qs_island *parts, int count, int iterations,
                   int *list, int *tmp)
 {
-    const int with_blocks = islands_by_length(parts, count, 1, list, tmp, a);
+    int with_blocks = islands_by_length(parts, count, 1, list, tmp, a);
+    // Islands whose sweeps are overlapped are no group's.
+    int kept = 0, *first = DX_ARENA_ARRAY(a, int, sys->nbodies);
+    for (int k = 0; k < with_blocks; k++) {
+        const int i = list[k];
+        const int end = i + 1 < count ? parts[i + 1].body0 : sys->nbodies;
+        const int lag = overlap_lag(sys, &parts[i], end - parts[i].body0, first);
+        if (lag > 0)
+            dxQuickSweepOverlapped(sys, sys->blocks + parts[i].block0, parts[i].nblocks, lag,
+                                   iterations);
+        else
+            list[kept++] = i;
+    }
+    with_blocks = kept;
     int *rlist = DX_ARENA_ARRAY(a, int, count + 1);
     const int n = islands_by_length(parts, count, 0, rlist, tmp, a);
     qs_group *groups = DX_ARENA_ARRAY(a, qs_group, count + 1);

@@ -321,6 +321,22 @@ void dxQuickReshuffle(int *order, int n, uint32_t *state, unsigned base, const u
 // has it; 0: the baseline (for tests that compare the two: the same numbers).
 extern int dxQuickShuffleAVX2;
 
+// `iterations` sweeps, one after the other, over the n blocks blk (in
+// order; each followed by its coupled rows) of an island without free rows,
+// overlapped: sweep s's block k at time k + s lag, the blocks of one time by
+// sweep. Blocks lag apart or more must share no body: then each body sees
+// its updates in the order of the sweeps one after the other (the same
+// bits), while consecutive updates are of different sweeps and share no
+// body, which the processor overlaps (a chain, lag 2: link k of one sweep,
+// link k - 2 of the next, ...), and the island's numbers are read once, a
+// few blocks at a time, instead of once a sweep (quickstep.c).
+void dxQuickSweepOverlapped(const qs_system *sys, const qs_block *blk, int n, int lag,
+                            int iterations);
+// 1 (the default): islands of blocks alone that pay are swept overlapped
+// (quickstep.c); 0: one sweep after the other (for tests that compare the
+// two: the same results).
+extern int dxQuickOverlapSweeps;
+
 // One sweep over all blocks in bseq (each followed by its coupled rows) and
 // all rows in seq: the blocks first, or (rows_first) the rows.
 void dxQuickSweep(const qs_system *sys, int rows_first);

@@ -192,7 +192,8 @@ void dxQuickBatchBlocks(dxArena *a, qs_system *sys, qs_group *groups, int ngroup
 {
     sys->batches = NULL;
     sys->nbatches = 0;
-    const int nb = sys->nblocks;
+    // The groups' blocks (islands swept on their own are in none).
+    const int nb = ngroups > 0 ? groups[ngroups - 1].block0 + groups[ngroups - 1].nblocks : 0;
     int several = 0;   // a group of two islands or more
     for (int g = 0; g < ngroups; g++) several |= groups[g].islands >= 2;
     if (!dxQuickBlockBatches || nb < QS_LANES || !several) return;

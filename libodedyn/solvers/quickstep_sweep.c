@@ -306,6 +306,20 @@ QS_SWEEP_CLONES static void sweep_blocks(const qs_system *sys)
     for (int k = 0; k < sys->nblocks; k++) update_any_block(sys->bseq[k], sys->rows, lambda, fc);
 }
 
+QS_SWEEP_EXTERN_CLONES void dxQuickSweepOverlapped(const qs_system *sys, const qs_block *blk, int n,
+                                                   int lag, int iterations)
+{
+    dReal *lambda = sys->lambda, *fc = sys->fc;
+    const int end = n + (iterations - 1) * lag;   // the last time, plus one
+    for (int t = 0; t < end; t++) {
+        // Sweeps s0 to s1 have a block at time t: t - s lag in [0, n).
+        const int s0 = t < n ? 0 : (t - n) / lag + 1;
+        const int s1 = t / lag < iterations ? t / lag : iterations - 1;
+        const qs_block *b = blk + (t - s0 * lag);
+        for (int s = s0; s <= s1; s++, b -= lag) update_any_block(b, sys->rows, lambda, fc);
+    }
+}
+
 // The rows in seq; those of a big system (beyond PREFETCH_BYTES) fetched
 // ahead.
 QS_SWEEP_CLONES static void sweep_rows(const qs_system *sys)
