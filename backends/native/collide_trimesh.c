@@ -965,23 +965,36 @@ static int clip_polygon(const dReal *const *pt, const int *tp, int n, const dRea
     return k <= DX_TRI_POLY_MAX ? k : 0;
 }
 
-// Whether t's edge k joins two coplanar faces (an edge only of the
-// triangulation, not of the surface).
-static int flat_edge(const dxTriQuery *q, const dxTri *t, int k)
+// Bit k: t's edge k joins two coplanar faces (an edge only of the
+// triangulation, not of the surface). Whether an edge is a feature and
+// whether it has a neighbour follow the mesh, so each edge's answer is
+// worked out whole (a missing neighbour's normal read as triangle 0's and
+// not counted) and no branch follows them.
+static unsigned flat_edges(const dxTriQuery *q, const dxTri *t)
 {
-    if (!q->data) return 0;
-    if (dxTriMeshFeatures(q->data, t->index) & (DX_TRI_EDGE_FEATURE << k)) return 0;
-    int u = q->data->neighbour[3 * t->index + k];
-    return u >= 0 && dx_dot(t->n, q->data->normal + 3 * u) > 1 - 10 * DX_COLLIDE_EPS;
+    const dxTriMeshData *d = q->data;
+    if (!d) return 0;
+    const unsigned features = dxTriMeshFeatures(d, t->index);
+    const int *nb = d->neighbour + 3 * t->index;
+    unsigned flat = 0;
+    for (int k = 0; k < 3; k++) {
+        const int u = nb[k];
+        const dReal *nu = d->normal + 3 * (u < 0 ? 0 : u);
+        flat |= (unsigned)(!(features & (DX_TRI_EDGE_FEATURE << k)) & (u >= 0) &
+                           (dx_dot(t->n, nu) > 1 - 10 * DX_COLLIDE_EPS))
+                << k;
+    }
+    return flat;
 }
 
 void dxTriPrismInit(const dxTriQuery *q, const dxTri *t, dxTriPrism *p)
 {
     dReal eps = DX_COLLIDE_EPS * q->scale;
+    const unsigned flat = flat_edges(q, t);
     for (int k = 0; k < 3; k++) {
         dxTriSideNormal(t, k, p->m[k]);
         p->slack[k] = eps * dSqrt(dx_dot(p->m[k], p->m[k]));
-        p->made[k] = flat_edge(q, t, k) ? DX_TRI_MADE_AT_FLAT_EDGE : DX_TRI_MADE_AT_EDGE;
+        p->made[k] = flat >> k & 1 ? DX_TRI_MADE_AT_FLAT_EDGE : DX_TRI_MADE_AT_EDGE;
     }
 }
 
