@@ -650,81 +650,42 @@ static inline int tri_off_box_f(const float *fb, const off_box_f *f)
 #endif
 }
 
-// At most this many leaves are walked from the vertices' leaf-order copy;
-// a query meeting more goes through the triangle list.
-enum { LEAF_WALK_MAX = 256 };
-
-// The triangle places (in leaf order) of the n leaves (node * 4 + slot)
-// as one list in place: DX_TRI_LEAF_MAX written for every leaf, the end
-// moved on by the leaf's count (place has room for that many past the
-// end), so that the walk's loop runs once a query, not once a leaf.
-static int leaf_places(const dxTriMeshData *d, const int *leaf, int n, int *place)
-{
-    int k = 0;
-    for (int i = 0; i < n; i++) {
-        const dxTriMeshNode *node = &d->nodes[leaf[i] >> 2];
-        const int first = node->first[leaf[i] & 3];
-        for (int s = 0; s < DX_TRI_LEAF_MAX; s++) place[k + s] = first + s;
-        k += node->count[leaf[i] & 3];
-    }
-    return k;
-}
-
-// Of the n places (in place, in order), those whose float box (the data's
-// leaf_boxes) is not off f: j where the float box says it is not, ~j where
-// only the exact test can say (tri_off_box_f's 0 and 2). Every place is
-// written at the list's next place, which moves on only if it is kept:
-// whether a triangle is off follows the data, and no branch follows it.
-static int places_not_off(const float *boxes, int *place, int n, const off_box_f *f)
-{
-    int k = 0;
-    for (int i = 0; i < n; i++) {
-        const int j = place[i];
-#if defined(__SSE__)
-        const __m128 lo = _mm_loadu_ps(boxes + 6 * j), hi = _mm_loadu_ps(boxes + 6 * j + 3);
-        const int off = _mm_movemask_ps(_mm_or_ps(_mm_cmplt_ps(hi, f->a), _mm_cmpgt_ps(lo, f->c)));
-        const int unsure =
-            _mm_movemask_ps(_mm_or_ps(_mm_cmpeq_ps(hi, f->a), _mm_cmpeq_ps(lo, f->c)));
-        place[k] = j ^ -(unsure != 0);
-        k += off == 0;
-#else
-        const int off = tri_off_box_f(boxes + 6 * j, f);
-        place[k] = off == 2 ? ~j : j;
-        k += off != 1;
-#endif
-    }
-    return k;
-}
-
 // The triangles of the n leaves (node * 4 + slot) without a per-triangle
-// callback: the list of their places (leaf_places) less those whose float
-// box (from the data's leaf_boxes) is off fb (places_not_off), then in
-// order: one that the vertices' exact test finds off b where the float box
-// cannot say, one whose height does not pass and a degenerate one (a zero
-// normal) are dropped; the rest go to the test with their vertices and
-// normal where the data keeps them. Those that touch are listed (add_hit)
-// if hits is not NULL.
+// callback, in place: a triangle off the box b is dropped first (by its
+// float box from the data's leaf_boxes against fb, the vertices' exact
+// test only where that cannot say), then one whose height does not pass
+// and a degenerate one (a zero normal); the rest go to the test with
+// their vertices and normal where the data keeps them. Those that touch
+// are listed (add_hit) if hits is not NULL.
 static void walk_leaves(dxTriQuery *q, const int *leaf, int n, const off_box *b,
                         const off_box_f *fb, dReal reach, dxTriTest *test, int *hits)
 {
     const dxTriMeshData *d = q->data;
     const dReal *lv = d->leaf_vertices, *normal = d->normal;
+    const float *boxes = d->leaf_boxes;
     const int *order = d->order;
-    int place[LEAF_WALK_MAX * DX_TRI_LEAF_MAX + DX_TRI_LEAF_MAX];
-    const int count = places_not_off(d->leaf_boxes, place, leaf_places(d, leaf, n, place), fb);
-    for (int i = 0; i < count; i++) {
-        const int j = place[i] < 0 ? ~place[i] : place[i];
-        const dReal *v = lv + 9 * j;
-        if (place[i] < 0 && tri_off_box(v, b)) continue;
-        const int t = order[j];
-        dxTri tri = { .index = t, .v = (const dReal(*)[3])v, .n = normal + 3 * t };
-        if (!height_passes(q, &tri, reach)) continue;
-        // A degenerate triangle's height is 0 (or NaN): only then is its
-        // normal looked at.
-        if (!(tri.h != 0) && tri.n[0] == 0 && tri.n[1] == 0 && tri.n[2] == 0) continue;
-        if (test(q, &tri) && hits) add_hit(q->s, hits, t);
+    for (int i = 0; i < n; i++) {
+        const dxTriMeshNode *node = &d->nodes[leaf[i] >> 2];
+        const int first = node->first[leaf[i] & 3], end = first + node->count[leaf[i] & 3];
+        for (int j = first; j < end; j++) {
+            const int off = tri_off_box_f(boxes + 6 * j, fb);
+            if (off == 1) continue;
+            const dReal *v = lv + 9 * j;
+            if (off == 2 && tri_off_box(v, b)) continue;
+            const int t = order[j];
+            dxTri tri = { .index = t, .v = (const dReal(*)[3])v, .n = normal + 3 * t };
+            if (!height_passes(q, &tri, reach)) continue;
+            // A degenerate triangle's height is 0 (or NaN): only then is its
+            // normal looked at.
+            if (!(tri.h != 0) && tri.n[0] == 0 && tri.n[1] == 0 && tri.n[2] == 0) continue;
+            if (test(q, &tri) && hits) add_hit(q->s, hits, t);
+        }
     }
 }
+
+// At most this many leaves are walked from the vertices' leaf-order copy;
+// a query meeting more goes through the triangle list.
+enum { LEAF_WALK_MAX = 256 };
 
 int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dReal reach, dxTriTest *test)
 {
@@ -965,36 +926,23 @@ static int clip_polygon(const dReal *const *pt, const int *tp, int n, const dRea
     return k <= DX_TRI_POLY_MAX ? k : 0;
 }
 
-// Bit k: t's edge k joins two coplanar faces (an edge only of the
-// triangulation, not of the surface). Whether an edge is a feature and
-// whether it has a neighbour follow the mesh, so each edge's answer is
-// worked out whole (a missing neighbour's normal read as triangle 0's and
-// not counted) and no branch follows them.
-static unsigned flat_edges(const dxTriQuery *q, const dxTri *t)
+// Whether t's edge k joins two coplanar faces (an edge only of the
+// triangulation, not of the surface).
+static int flat_edge(const dxTriQuery *q, const dxTri *t, int k)
 {
-    const dxTriMeshData *d = q->data;
-    if (!d) return 0;
-    const unsigned features = dxTriMeshFeatures(d, t->index);
-    const int *nb = d->neighbour + 3 * t->index;
-    unsigned flat = 0;
-    for (int k = 0; k < 3; k++) {
-        const int u = nb[k];
-        const dReal *nu = d->normal + 3 * (u < 0 ? 0 : u);
-        flat |= (unsigned)(!(features & (DX_TRI_EDGE_FEATURE << k)) & (u >= 0) &
-                           (dx_dot(t->n, nu) > 1 - 10 * DX_COLLIDE_EPS))
-                << k;
-    }
-    return flat;
+    if (!q->data) return 0;
+    if (dxTriMeshFeatures(q->data, t->index) & (DX_TRI_EDGE_FEATURE << k)) return 0;
+    int u = q->data->neighbour[3 * t->index + k];
+    return u >= 0 && dx_dot(t->n, q->data->normal + 3 * u) > 1 - 10 * DX_COLLIDE_EPS;
 }
 
 void dxTriPrismInit(const dxTriQuery *q, const dxTri *t, dxTriPrism *p)
 {
     dReal eps = DX_COLLIDE_EPS * q->scale;
-    const unsigned flat = flat_edges(q, t);
     for (int k = 0; k < 3; k++) {
         dxTriSideNormal(t, k, p->m[k]);
         p->slack[k] = eps * dSqrt(dx_dot(p->m[k], p->m[k]));
-        p->made[k] = flat >> k & 1 ? DX_TRI_MADE_AT_FLAT_EDGE : DX_TRI_MADE_AT_EDGE;
+        p->made[k] = flat_edge(q, t, k) ? DX_TRI_MADE_AT_FLAT_EDGE : DX_TRI_MADE_AT_EDGE;
     }
 }
 

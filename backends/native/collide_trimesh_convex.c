@@ -515,28 +515,22 @@ static int edge_through(const box_pair *b, const dReal a[3], const dReal e[3])
         beyond |= ((a[j] > w) & (e[j] > w)) | ((a[j] < -w) & (e[j] < -w));
     }
     if (beyond) return 0;
-    // The part within the slabs, [s0, s1] of the edge, slab by slab; a slab
-    // the edge runs along (d[j] == 0) leaves it as it is if the edge is
-    // within. Once a slab misses (or the part is empty) the answer is 0
-    // whatever the rest: every slab is worked out and the misses or-ed,
-    // then one branch (the part's later values, after a miss, count for
-    // nothing).
     dReal d[3] = { e[0] - a[0], e[1] - a[1], e[2] - a[2] }, s0 = 0, s1 = 1;
-    int miss = 0;
     for (int j = 0; j < 3; j++) {
-        const dReal w = b->through[j];
-        const int along = d[j] == 0;
-        const dReal inv = 1 / d[j], t0 = (-w - a[j]) * inv, t1 = (w - a[j]) * inv;
-        const dReal n0 = dMax(s0, dMin(t0, t1)), n1 = dMin(s1, dMax(t0, t1));
-        miss |= along ? !(dFabs(a[j]) <= w) : !(n0 <= n1);
-        s0 = along ? s0 : n0;
-        s1 = along ? s1 : n1;
+        dReal w = b->through[j];
+        if (d[j] == 0) {
+            if (!(dFabs(a[j]) <= w)) return 0;
+            continue;
+        }
+        dReal inv = 1 / d[j], t0 = (-w - a[j]) * inv, t1 = (w - a[j]) * inv;
+        s0 = dMax(s0, dMin(t0, t1));
+        s1 = dMin(s1, dMax(t0, t1));
+        if (!(s0 <= s1)) return 0;   // (the slabs met so far already miss)
     }
-    if (miss) return 0;
     dReal s = (s0 + s1) / 2;
-    int within = 1;
-    for (int j = 0; j < 3; j++) within &= dFabs(a[j] + s * d[j]) <= b->through[j];
-    return within;
+    for (int j = 0; j < 3; j++)
+        if (!(dFabs(a[j] + s * d[j]) <= b->through[j])) return 0;
+    return 1;
 }
 
 // Whether a separating axis parts the box b (centre c) from triangle t,
