@@ -179,12 +179,12 @@ QS_INLINE void random_places(uint32_t state, unsigned lo, unsigned count, unsign
 }
 
 // What the reshuffles of a step need, per row of the system (row index):
-// bound: the row that bounds it if that one is in its island's order (a
-// friction row's normal row: sys->normal, made with the rows), else the row
-// itself; at: where the current reshuffle put the row, plus that
+// normal: the row that bounds it if that one is in its island's order (a
+// friction row's normal row: sys->normal, made with the rows), else
+// QS_NO_ROW; at: where the current reshuffle put the row, plus that
 // reshuffle's base (below). Unsigned: row indices index without widening.
 typedef struct qs_reorder {
-    const unsigned *bound;
+    const unsigned *normal;
     unsigned *at;
     int avx2;   // random_places with AVX2
 } qs_reorder;
@@ -219,26 +219,18 @@ static unsigned reshuffle_base(int g, int n)
 // gives (the two-pass form this replaced), as the contacts' rows are
 // disjoint groups (only a contact's friction rows are bounded by a row, and
 // a normal row by the constant 1).
-// Without branches (whether a row is a friction row, and whether its normal
-// row is placed yet, follow the random order): a row without a normal row
-// has itself as its bound, which has just been put at k; a row that does
-// not move has a = k, where the stores write back what is there. (The mask
-// is hidden from GCC, which would branch on it again.)
 QS_INLINE void place(unsigned *o, size_t k, unsigned r, unsigned base, unsigned n,
-                     unsigned *at, const unsigned *bound)
+                     unsigned *at, const unsigned *normal)
 {
     at[r] = base + (unsigned)k;
-    const unsigned q = bound[r];
-    const unsigned aq = at[q] - base;
-    unsigned above = 0u - (unsigned)(aq < n);   // q is placed: at k, or above
-#if defined(__GNUC__)
-    __asm__("" : "+r"(above));
-#endif
-    const unsigned a = (unsigned)k ^ (((unsigned)k ^ aq) & above);
-    const unsigned f = o[a];   // q, a friction row that took its place, or r
+    const unsigned nr = normal[r];
+    if (nr == QS_NO_ROW) return;
+    const unsigned a = at[nr] - base;
+    if (a >= n) return;        // the normal row comes below k
+    const unsigned f = o[a];   // nr, or a friction row that took its place
     o[at[f] - base] = f;
     o[a] = r;
-    o[k] = r ^ ((r ^ q) & above);
+    o[k] = nr;
 }
 
 // Shuffle an island's n rows order[0, n) (Fisher-Yates, downwards) with its
@@ -248,7 +240,7 @@ QS_INLINE void reshuffle(int *order, int n, uint32_t *state, unsigned base, cons
 {
     unsigned j[RANDOM_BLOCK];
     unsigned *o = (unsigned *)order, *at = re->at;
-    const unsigned *bound = re->bound;
+    const unsigned *normal = re->normal;
     uint32_t s = *state;
     for (size_t top = n > 1 ? (size_t)n - 1 : 0; top > 0;) {
         const size_t count = top < RANDOM_BLOCK ? top : RANDOM_BLOCK, lo = top - count + 1;
@@ -261,18 +253,18 @@ QS_INLINE void reshuffle(int *order, int n, uint32_t *state, unsigned base, cons
             const unsigned r = o[j[k - lo]];
             o[j[k - lo]] = o[k];
             o[k] = r;
-            place(o, k, r, base, (unsigned)n, at, bound);
+            place(o, k, r, base, (unsigned)n, at, normal);
         }
         top = lo - 1;
     }
-    if (n > 0) place(o, 0, o[0], base, (unsigned)n, at, bound);
+    if (n > 0) place(o, 0, o[0], base, (unsigned)n, at, normal);
     *state = s;
 }
 
-void dxQuickReshuffle(int *order, int n, uint32_t *state, unsigned base, const unsigned *bound,
+void dxQuickReshuffle(int *order, int n, uint32_t *state, unsigned base, const unsigned *normal,
                       unsigned *at)
 {
-    const qs_reorder re = { bound, at, shuffle_avx2() };
+    const qs_reorder re = { normal, at, shuffle_avx2() };
     reshuffle(order, n, state, base, &re);
 }
 
@@ -370,19 +362,14 @@ static void interleave_blocks(const qs_system *sys, const qs_island *parts, cons
     }
 }
 
-// The reshuffles' data for the step (a: the world arena): each row's bound
-// (its normal row, made with the rows, or itself), and at[] from ~0.
+// The reshuffles' data for the step (a: the world arena): each row's normal
+// row (made with the rows), and at[] from ~0.
 static qs_reorder reorder_begin(dxArena *a, qs_system *sys)
 {
     unsigned *at = DX_ARENA_ARRAY(a, unsigned, sys->nrows + 1);
-    unsigned *bound = DX_ARENA_ARRAY(a, unsigned, sys->nrows + 1);
-    const unsigned *order = (const unsigned *)sys->order, *normal = sys->normal;
-    for (int k = 0; k < sys->norder; k++) {
-        const unsigned r = order[k];
-        at[r] = ~0u;
-        bound[r] = normal[r] == QS_NO_ROW ? r : normal[r];
-    }
-    qs_reorder re = { bound, at, shuffle_avx2() };
+    const int *order = sys->order, n = sys->norder;
+    for (int k = 0; k < n; k++) at[order[k]] = ~0u;
+    qs_reorder re = { sys->normal, at, shuffle_avx2() };
     return re;
 }
 
