@@ -4,7 +4,7 @@
 // against a loop over every triangle: for thousands of rays on a wavy
 // terrain, turned and moved, each ray's hits (distances, triangles, the ray
 // callback's barycentric u and v) must be the loop's, bit for bit: the
-// nearest 16 (or only the nearest, ClosestHit), BackfaceCull off and on.
+// nearest 16 or 3 (or only the nearest, ClosestHit), BackfaceCull off and on.
 // The rays: random ones starting above, below and inside the surface's
 // boxes, ones along the mesh's axes (zero components in the mesh frame:
 // the mesh is turned by an exact quarter turn for them), ones running in
@@ -131,9 +131,10 @@ static int brute_hits(const test_mesh *tm, dGeomID mesh, dGeomID ray, int cull, 
 }
 
 // Collide the ray (start p, direction dir, both in the mesh frame: placed
-// in the world through the mesh's pose) with the mesh, every way (max hits
-// 1 and 16, BackfaceCull off and on); each must match the loop. Counts the
-// hits into *hits.
+// in the world through the mesh's pose) with the mesh, every way (the
+// nearest 16, 3 or, by ClosestHit, 1: the collider keeps a few in a local
+// array and many in its scratch; BackfaceCull off and on); each must match
+// the loop. Counts the hits into *hits.
 static int check_ray(const test_mesh *tm, dGeomID mesh, dGeomID ray, const double p[3],
                      const double dir[3], double len, long *hits)
 {
@@ -145,8 +146,9 @@ static int check_ray(const test_mesh *tm, dGeomID mesh, dGeomID ray, const doubl
     }
     dGeomRaySetLength(ray, (dReal)len);
     dGeomRaySet(ray, wp[0], wp[1], wp[2], wd[0], wd[1], wd[2]);
-    for (int way = 0; way < 4; way++) {
-        const int cull = way & 1, max = way & 2 ? 1 : MAX_HITS;
+    static const int maxes[3] = { MAX_HITS, 1, 3 };
+    for (int way = 0; way < 6; way++) {
+        const int cull = way & 1, max = maxes[way >> 1];
         dGeomRaySetBackfaceCull(ray, cull);
         dGeomRaySetClosestHit(ray, max == 1);
         hit want[MAX_HITS];
@@ -154,7 +156,7 @@ static int check_ray(const test_mesh *tm, dGeomID mesh, dGeomID ray, const doubl
         const int nw = brute_hits(tm, mesh, ray, cull, max, want);
         memset(seen_u, 0xff, sizeof seen_u);   // NaN: a hit without its call fails
         memset(seen_v, 0xff, sizeof seen_v);
-        const int n = dCollide(mesh, ray, MAX_HITS, c, sizeof c[0]);
+        const int n = dCollide(mesh, ray, max == 1 ? MAX_HITS : max, c, sizeof c[0]);
         if (n != nw) {
             test_fail(__FILE__, __LINE__, "ray (%.17g %.17g %.17g) dir (%.17g %.17g %.17g): "
                       "%d hits, the loop %d", p[0], p[1], p[2], dir[0], dir[1], dir[2], n, nw);

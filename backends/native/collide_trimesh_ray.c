@@ -465,27 +465,36 @@ static inline __attribute__((always_inline)) void prefetch_slot(const dxTriMeshD
     }
 }
 
-// Keep the nearest `max` hits in m->raw (a scratch set) sorted by distance (then triangle):
+// The hits kept so far, nearest first: in a local array when few are
+// wanted (a ray's usual one), else in the scratch set's raw array. Only
+// depth and tri are set; a hit's normal is read at the end.
+typedef struct ray_hits {
+    dxTriMeshRaw *raw;
+    int count;
+} ray_hits;
+
+// Hits kept in a local array (no scratch set, so no nesting limit) for
+// rays wanting at most this many.
+enum { RAY_LOCAL_HITS = 4 };
+
+// Keep the nearest `max` hits in h sorted by distance (then triangle):
 // insert this one at its place, the farthest dropping out when full.
-static void keep_hit(dxTriScratch *m, int max, dReal dist, int tri, const dReal n[3])
+static void keep_hit(ray_hits *h, int max, dReal dist, int tri)
 {
-    int k = m->raw_count;
+    int k = h->count;
     if (k == max) {
-        const dxTriMeshRaw *last = &m->raw[max - 1];
+        const dxTriMeshRaw *last = &h->raw[max - 1];
         if (dist > last->depth || (dist == last->depth && tri > last->tri)) return;
     } else {
-        m->raw_count++;
+        h->count++;
     }
-    while (k > 0 && (m->raw[k - 1].depth > dist ||
-                     (m->raw[k - 1].depth == dist && m->raw[k - 1].tri > tri))) {
-        if (k < max) m->raw[k] = m->raw[k - 1];
+    while (k > 0 && (h->raw[k - 1].depth > dist ||
+                     (h->raw[k - 1].depth == dist && h->raw[k - 1].tri > tri))) {
+        if (k < max) h->raw[k] = h->raw[k - 1];
         k--;
     }
-    dxTriMeshRaw *r = &m->raw[k];
-    r->depth = dist;
-    r->tri = tri;
-    r->tri2 = -1;
-    for (int j = 0; j < 3; j++) r->n[j] = n[j];
+    h->raw[k].depth = dist;
+    h->raw[k].tri = tri;
 }
 
 // Stack the slots of nodes[i] that the ray enters within limit (rounded
@@ -549,7 +558,7 @@ push_slots(const dxTriMeshData *d, int i, const ray_lanes *r, const ray_planes *
 // degenerate and not refused by the callbacks; once `max` are kept, the
 // limit (and its float above) is the farthest kept.
 static inline __attribute__((always_inline)) void
-take_hit(dxGeom *o1, dxGeom *o2, dxTriScratch *h, int max, int j, dReal dist, dReal bu, dReal bv,
+take_hit(dxGeom *o1, dxGeom *o2, ray_hits *h, int max, int j, dReal dist, dReal bu, dReal bv,
          dReal *limit, float *limit_up)
 {
     const dxTriMesh *m = (const dxTriMesh *)o1;
@@ -559,8 +568,8 @@ take_hit(dxGeom *o1, dxGeom *o2, dxTriScratch *h, int max, int j, dReal dist, dR
     if (dxTriMeshIsDegenerate(d, ti)) return;
     if (m->ray_callback && !m->ray_callback(o1, o2, ti, bu, bv)) return;
     if (m->callback && !m->callback(o1, o2, ti)) return;
-    keep_hit(h, max, dist, ti, d->normal + 3 * ti);
-    if (h->raw_count == max) {
+    keep_hit(h, max, dist, ti);
+    if (h->count == max) {
         *limit = h->raw[max - 1].depth;
         *limit_up = dxFloatAbove(*limit);
     }
@@ -573,7 +582,7 @@ take_hit(dxGeom *o1, dxGeom *o2, dxTriScratch *h, int max, int j, dReal dist, dR
 // enters beyond the farthest of them are skipped. The hits go to h.
 static inline __attribute__((always_inline)) void
 walk(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], const ray_lanes *r,
-     const ray_planes *rp, const int planes, const int avx2, int max, dxTriScratch *h)
+     const ray_planes *rp, const int planes, const int avx2, int max, ray_hits *h)
 {
     (void)avx2;
     const dxTriMesh *m = (const dxTriMesh *)o1;
@@ -651,7 +660,7 @@ walk(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], const ray_lanes
 // it in AVX2 code (no FMA: the same bits).
 __attribute__((target("avx2"))) static void
 walk_planes_avx2(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], const ray_planes *rp,
-                 int max, dxTriScratch *h)
+                 int max, ray_hits *h)
 {
     walk(o1, o2, s, v, NULL, rp, 1, 1, max, h);
 }
@@ -670,9 +679,15 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
     dxTriMeshDirToLocal(o1, dir, v);
     int single = ray->closest_hit || ray->first_contact;
     int max = single ? 1 : dx_max_contacts(flags);
-    dxTriScratch *h = dxTriScratchAcquire();
-    if (!h) return 0;
-    dxTriScratchAddRaw(h, max);
+    dxTriMeshRaw local[RAY_LOCAL_HITS];
+    ray_hits hits = { local, 0 }, *h = &hits;
+    dxTriScratch *scratch = NULL;
+    if (max > RAY_LOCAL_HITS) {
+        scratch = dxTriScratchAcquire();
+        if (!scratch) return 0;
+        dxTriScratchAddRaw(scratch, max);
+        hits.raw = scratch->raw;
+    }
     ray_planes planes;
     if (ray_setup_planes(&planes, d, s, v)) {
 #if defined(DX_RAY_AVX2)
@@ -686,16 +701,16 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
         ray_setup_lanes(&lanes, d, s, v, ray->length);
         walk(o1, o2, s, v, &lanes, NULL, 0, 0, max, h);
     }
-    int count = h->raw_count;
+    const int count = hits.count;
     for (int i = 0; i < count; i++) {
-        const dxTriMeshRaw *r = &h->raw[i];
+        const dxTriMeshRaw *r = &hits.raw[i];
         dReal pos[3], n[3];
         for (int j = 0; j < 3; j++) pos[j] = o2->pos[j] + dir[j] * r->depth;
-        dx_to_world(o1->R, r->n, n);
+        dx_to_world(o1->R, d->normal + 3 * r->tri, n);
         for (int j = 0; j < 3; j++) n[j] = -n[j];
         dx_put_contact(c, i, skip, pos, n, r->depth, o1, o2);
         dxContactAt(c, i, skip)->side1 = r->tri;
     }
-    dxTriScratchRelease(h);
+    dxTriScratchRelease(scratch);
     return count;
 }
