@@ -4,7 +4,8 @@
 // against a loop over every triangle: for thousands of rays on a wavy
 // terrain, turned and moved, each ray's hits (distances, triangles, the ray
 // callback's barycentric u and v) must be the loop's, bit for bit: the
-// nearest 16 or 3 (or only the nearest, ClosestHit), BackfaceCull off and on.
+// nearest 16 or 3 (or only the nearest, ClosestHit), BackfaceCull off and on,
+// and the same contacts flipped with the ray as the first geom.
 // The rays: random ones starting above, below and inside the surface's
 // boxes, ones along the mesh's axes (zero components in the mesh frame:
 // the mesh is turned by an exact quarter turn for them), ones running in
@@ -166,6 +167,17 @@ static int check_ray(const test_mesh *tm, dGeomID mesh, dGeomID ray, const doubl
             CHECK(c[i].side1 == want[i].tri);
             CHECK(c[i].depth == want[i].dist);
             CHECK(seen_u[want[i].tri] == want[i].u && seen_v[want[i].tri] == want[i].v);
+        }
+        // The ray first: the same contacts flipped, bit for bit.
+        dContactGeom f[MAX_HITS];
+        CHECK(dCollide(ray, mesh, max == 1 ? MAX_HITS : max, f, sizeof f[0]) == n);
+        for (int i = 0; i < n; i++) {
+            dReal flipped[3] = { -c[i].normal[0], -c[i].normal[1], -c[i].normal[2] };
+            CHECK(memcmp(f[i].pos, c[i].pos, sizeof(dReal[3])) == 0);
+            CHECK(memcmp(f[i].normal, flipped, sizeof(dReal[3])) == 0);
+            CHECK(memcmp(&f[i].depth, &c[i].depth, sizeof(dReal)) == 0);
+            CHECK(f[i].g1 == ray && f[i].g2 == mesh && f[i].side1 == -1 &&
+                  f[i].side2 == c[i].side1);
         }
         *hits += n;
     }

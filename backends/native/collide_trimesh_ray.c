@@ -666,8 +666,13 @@ walk_planes_avx2(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], con
 }
 #endif
 
-// The ray's hits on the mesh as contacts, nearest first.
-int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
+// The ray's hits on the mesh m as contacts, nearest first: for the pair
+// (m, ray) when not ray_first (a constant of each copy), for (ray, m)
+// otherwise, with the contacts dxFlipContacts would make of the first's
+// (the normal the triangle's, g1 the ray, side2 the triangle), written
+// directly.
+static inline __attribute__((always_inline)) int
+collide_ray(dxGeom *o1, dxGeom *o2, const int ray_first, int flags, dContactGeom *c, int skip)
 {
     dxTriMesh *m = (dxTriMesh *)o1;
     const dxRay *ray = (const dxRay *)o2;
@@ -707,10 +712,25 @@ int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int 
         dReal pos[3], n[3];
         for (int j = 0; j < 3; j++) pos[j] = o2->pos[j] + dir[j] * r->depth;
         dx_to_world(o1->R, d->normal + 3 * r->tri, n);
-        for (int j = 0; j < 3; j++) n[j] = -n[j];
-        dx_put_contact(c, i, skip, pos, n, r->depth, o1, o2);
-        dxContactAt(c, i, skip)->side1 = r->tri;
+        if (ray_first) {
+            dx_put_contact(c, i, skip, pos, n, r->depth, o2, o1);
+            dxContactAt(c, i, skip)->side2 = r->tri;
+        } else {
+            for (int j = 0; j < 3; j++) n[j] = -n[j];
+            dx_put_contact(c, i, skip, pos, n, r->depth, o1, o2);
+            dxContactAt(c, i, skip)->side1 = r->tri;
+        }
     }
     dxTriScratchRelease(scratch);
     return count;
+}
+
+int dxCollideTriMeshRay(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
+{
+    return collide_ray(o1, o2, 0, flags, c, skip);
+}
+
+int dxCollideRayTriMesh(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
+{
+    return collide_ray(o2, o1, 1, flags, c, skip);
 }

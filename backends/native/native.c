@@ -25,7 +25,7 @@ static dxCollider *const table[NATIVE_CLASSES][NATIVE_CLASSES] = {
     [dRayClass] = { [dSphereClass] = dxCollideRaySphere, [dBoxClass] = dxCollideRayBox,
                     [dCapsuleClass] = dxCollideRayCapsule,
                     [dCylinderClass] = dxCollideRayCylinder, [dPlaneClass] = dxCollideRayPlane,
-                    [dConvexClass] = dxCollideRayConvex },
+                    [dConvexClass] = dxCollideRayConvex, [dTriMeshClass] = dxCollideRayTriMesh },
     [dConvexClass] = { [dSphereClass] = dxCollideConvexSphere, [dBoxClass] = dxCollideConvexBox,
                        [dCapsuleClass] = dxCollideConvexCapsule,
                        [dCylinderClass] = dxCollideConvexCylinder,

@@ -31,6 +31,9 @@ dxCollider dxCollideCylinderBox, dxCollideCylinderCapsule, dxCollideCylinderCyli
 dxCollider dxCollideTriMeshSphere, dxCollideTriMeshBox, dxCollideTriMeshCapsule,
     dxCollideTriMeshCylinder, dxCollideTriMeshPlane, dxCollideTriMeshRay,
     dxCollideTriMeshTriMesh, dxCollideTriMeshConvex;
+// Ray-trimesh with the ray first: dxCollideTriMeshRay's contacts flipped,
+// made so directly.
+dxCollider dxCollideRayTriMesh;
 // Trimesh-trimesh computed with o1 as the first mesh, whatever the addresses
 // (dxCollideTriMeshTriMesh orders the pair by address so that it mirrors).
 dxCollider dxCollideTriMeshTriMeshInOrder;
