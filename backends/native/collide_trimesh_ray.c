@@ -128,9 +128,21 @@ ray_triangle_quad(const dReal s[3], const dReal v[3], dReal len, const dReal *t,
                   int cull, dReal dist[4], dReal bu[4], dReal bv[4])
 {
     const int l1 = count > 1 ? 9 : 0, l2 = count > 2 ? 18 : l1, l3 = count > 3 ? 27 : l2;
+    const dReal *const row[4] = { t, t + l1, t + l2, t + l3 };
+    // c[i]: number i of the four triangles, lane l triangle l's; numbers
+    // 0-7 as two 4 x 4 transposes of the triangles' rows, 8 gathered.
     __m256d c[9];
-    for (int i = 0; i < 9; i++)
-        c[i] = _mm256_set_pd(t[l3 + i], t[l2 + i], t[l1 + i], t[i]);
+    for (int h = 0; h < 8; h += 4) {
+        const __m256d r0 = _mm256_loadu_pd(row[0] + h), r1 = _mm256_loadu_pd(row[1] + h);
+        const __m256d r2 = _mm256_loadu_pd(row[2] + h), r3 = _mm256_loadu_pd(row[3] + h);
+        const __m256d e01 = _mm256_unpacklo_pd(r0, r1), o01 = _mm256_unpackhi_pd(r0, r1);
+        const __m256d e23 = _mm256_unpacklo_pd(r2, r3), o23 = _mm256_unpackhi_pd(r2, r3);
+        c[h] = _mm256_permute2f128_pd(e01, e23, 0x20);
+        c[h + 1] = _mm256_permute2f128_pd(o01, o23, 0x20);
+        c[h + 2] = _mm256_permute2f128_pd(e01, e23, 0x31);
+        c[h + 3] = _mm256_permute2f128_pd(o01, o23, 0x31);
+    }
+    c[8] = _mm256_set_pd(row[3][8], row[2][8], row[1][8], row[0][8]);
     __m256d e1[3], e2[3], tv[3], vv[3];
     for (int i = 0; i < 3; i++) {
         e1[i] = _mm256_sub_pd(c[3 + i], c[i]);
