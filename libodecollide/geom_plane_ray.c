@@ -136,24 +136,27 @@ void dGeomRaySet(dGeomID g, dReal px, dReal py, dReal pz, dReal dx, dReal dy, dR
     dVector3 d = { dx, dy, dz, 0 };
     DX_CHECK_ARG(dxIsFinite3(dx, dy, dz) && dxUnitVector3(d), return,
                  "direction (%g, %g, %g) has no length", (double)dx, (double)dy, (double)dz);
-    dMatrix3 R;
     if (!g->body) {
         dVector3 p, q;
         dxUnitVector3(d);   // as dRFromZAxis: a unit vector's last bits may move
         dxPlaneSpaceUnit(d, p, q);
-        for (int i = 0; i < 3; i++) {
+        // The rows [p q d] that dxOrthogonalizeR reads (rows 0 and 1), made
+        // into the rotation in place: it writes all of it, or nothing if it
+        // fails (it cannot for p, q, d unit and perpendicular; then the
+        // general placement below writes it all).
+        dReal *R = g->own_R;
+        for (int i = 0; i < 2; i++) {
             R[4 * i] = p[i];
             R[4 * i + 1] = q[i];
             R[4 * i + 2] = d[i];
-            R[4 * i + 3] = 0;
         }
         if (dxOrthogonalizeR(R, 1)) {   // p, q, d unit: finite
-            memcpy(g->own_R, R, sizeof(dMatrix3));   // as dCopyMatrix4x3, without its loop
             dAssignVector3(g->own_pos, px, py, pz);
             dxGeomMarkMoved(g);
             return;
         }
     }
+    dMatrix3 R;
     dRFromZAxis(R, d[0], d[1], d[2]);
     dGeomSetRotation(g, R);
     dGeomSetPosition(g, px, py, pz);
