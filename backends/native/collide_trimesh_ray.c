@@ -457,22 +457,24 @@ enum { SPAN_AHEAD = 16 };
 // leaves. A leaf: its vertices, and its triangles' normals (a hit reads its
 // normal through order[]: two misses in turn otherwise; the loads of
 // order[] that address them ask for its line).
-// Inlined always: GCC finds a function that only prefetches free of side
-// effects and drops the calls.
-static inline __attribute__((always_inline)) void prefetch_slot(const dxTriMeshData *d,
-                                                                const dxTriMeshNode *node, int j)
+// `built` (a constant of each inlined walk): the tree is known to have its
+// leaf copy and spans (made together), not looked at per slot. Inlined
+// always: GCC finds a function that only prefetches free of side effects
+// and drops the calls.
+static inline __attribute__((always_inline)) void
+prefetch_slot(const dxTriMeshData *d, const dxTriMeshNode *node, int j, const int built)
 {
     const int first = node->first[j], count = node->count[j];
     if (count == 0) {
         const char *child = (const char *)&d->nodes[first];   // two lines from a line's start
         __builtin_prefetch(child);
         __builtin_prefetch(child + 64);
-        if (!d->node_span) return;
+        if (!built && !d->node_span) return;
         const int *span = d->node_span + 2 * first;
         if (span[1] > SPAN_AHEAD) return;
         prefetch_bytes(d->leaf_vertices + 9 * span[0], 9 * sizeof(dReal) * (size_t)span[1]);
         prefetch_bytes(d->order + span[0], sizeof(int) * (size_t)span[1]);
-    } else if (d->leaf_vertices) {
+    } else if (built || d->leaf_vertices) {
         prefetch_leaf(d, first, count);
     }
 }
@@ -515,10 +517,11 @@ static void keep_hit(ray_hits *h, int max, dReal dist, int tri)
 // not a pointer: through a pointer each store to the stack would reload it.)
 // One slot or two (most nodes deep in the tree) without the insertion sort;
 // ties in slot order. The test is the plane test when `planes` (a constant
-// of each inlined walk), the general one otherwise.
+// of each inlined walk), the general one otherwise; `built` as
+// prefetch_slot's.
 static inline __attribute__((always_inline)) int
 push_slots(const dxTriMeshData *d, int i, const ray_lanes *r, const ray_planes *rp,
-           const int planes, float limit, int *stack, float *entry, int top)
+           const int planes, const int built, float limit, int *stack, float *entry, int top)
 {
     const dxTriMeshNode *node = &d->nodes[i];
     float enter[4];
@@ -526,7 +529,7 @@ push_slots(const dxTriMeshData *d, int i, const ray_lanes *r, const ray_planes *
                               : ray_slots(r, node, limit, enter);
     if (!m) return top;
     const int j0 = __builtin_ctz(m);
-    prefetch_slot(d, node, j0);
+    prefetch_slot(d, node, j0, built);
     const unsigned rest = m & (m - 1);
     if (!rest) {
         stack[top] = 4 * i + j0;
@@ -534,7 +537,7 @@ push_slots(const dxTriMeshData *d, int i, const ray_lanes *r, const ray_planes *
         return top + 1;
     }
     const int j1 = __builtin_ctz(rest);
-    prefetch_slot(d, node, j1);
+    prefetch_slot(d, node, j1, built);
     if (!(rest & (rest - 1))) {
         const int near = enter[j1] < enter[j0] ? j1 : j0, far = j0 + j1 - near;
         stack[top] = 4 * i + far;
@@ -550,7 +553,7 @@ push_slots(const dxTriMeshData *d, int i, const ray_lanes *r, const ray_planes *
     }
     for (unsigned b = rest & (rest - 1); b; b &= b - 1) {
         int j = __builtin_ctz(b), k = n++;   // insertion by entry, ties in slot order
-        prefetch_slot(d, node, j);
+        prefetch_slot(d, node, j, built);
         while (k > 0 && enter[sorted[k - 1]] > enter[j]) {
             sorted[k] = sorted[k - 1];
             k--;
@@ -589,14 +592,14 @@ take_hit(dxGeom *o1, dxGeom *o2, ray_hits *h, int max, int j, dReal dist, dReal 
 
 // The walk of dxCollideTriMeshRay with the plane test (`planes`, a
 // constant: one copy of the walk each) or the general one, a leaf's
-// triangles four at once (`avx2`, in an AVX2 copy) or two: the tree along
-// the ray, nearer slot first; once `max` hits are kept, boxes the ray
+// triangles four at once (`avx2`, in an AVX2 copy, for a tree with its
+// leaf copy and spans only) or two: the tree along the ray, nearer slot
+// first; once `max` hits are kept, boxes the ray
 // enters beyond the farthest of them are skipped. The hits go to h.
 static inline __attribute__((always_inline)) void
 walk(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], const ray_lanes *r,
      const ray_planes *rp, const int planes, const int avx2, int max, ray_hits *h)
 {
-    (void)avx2;
     const dxTriMesh *m = (const dxTriMesh *)o1;
     const dxRay *ray = (const dxRay *)o2;
     const dxTriMeshData *d = m->data;
@@ -607,14 +610,14 @@ walk(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], const ray_lanes
     float entry[128];
     dReal limit = ray->length;   // the farthest hit kept once `max` are
     float limit_up = dxFloatAbove(limit);
-    top = push_slots(d, 0, r, rp, planes, limit_up, stack, entry, top);
+    top = push_slots(d, 0, r, rp, planes, avx2, limit_up, stack, entry, top);
     while (top > 0) {
         top--;
         if (entry[top] > limit) continue;
         const dxTriMeshNode *node = &d->nodes[stack[top] >> 2];
         int slot = stack[top] & 3, first = node->first[slot];
         if (node->count[slot] == 0) {
-            top = push_slots(d, first, r, rp, planes, limit_up, stack, entry, top);
+            top = push_slots(d, first, r, rp, planes, avx2, limit_up, stack, entry, top);
             continue;
         }
         // Only the vertices are read until a hit (memory traffic is what a
@@ -624,7 +627,7 @@ walk(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], const ray_lanes
         // not be kept.
         int end = first + node->count[slot];
 #if defined(DX_RAY_AVX2)
-        if (avx2 && d->leaf_vertices) {   // a leaf of the leaf copy: at most 4
+        if (avx2) {   // a leaf of the leaf copy: at most 4
             dReal dist[4], bu[4], bv[4];
             unsigned crossed = ray_triangle_quad(s, v, limit, d->leaf_vertices + 9 * first,
                                                  end - first, ray->backface_cull, dist, bu, bv);
@@ -669,7 +672,7 @@ walk(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], const ray_lanes
 
 #if defined(DX_RAY_AVX2)
 // The walk with the plane test and a leaf's four triangles at once, all of
-// it in AVX2 code (no FMA: the same bits).
+// it in AVX2 code (no FMA: the same bits), for a tree with its leaf copy.
 __attribute__((target("avx2"))) static void
 walk_planes_avx2(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], const ray_planes *rp,
                  int max, ray_hits *h)
@@ -708,7 +711,7 @@ collide_ray(dxGeom *o1, dxGeom *o2, const int ray_first, int flags, dContactGeom
     ray_planes planes;
     if (ray_setup_planes(&planes, d, s, v)) {
 #if defined(DX_RAY_AVX2)
-        if (__builtin_cpu_supports("avx2"))
+        if (d->leaf_vertices && __builtin_cpu_supports("avx2"))
             walk_planes_avx2(o1, o2, s, v, &planes, max, h);
         else
 #endif
