@@ -241,15 +241,6 @@ static int rays_match_loop(const dMatrix3 R, const dReal pos[3], int count, long
 
 static int test_turned_mesh(void)
 {
-#ifdef dSINGLE
-    // In single precision one ray of the 7 500 here (through the edge of
-    // triangles 604 and 606) gives the loop a hit on 604 that the collider's
-    // triangle test does not, with every box of the walk let through as
-    // well: a difference in the triangle arithmetic, not the walk, whose
-    // cause was not found (docs/perf.md, 2026-11-27).
-    return test_skip("single precision: an edge hit the loop's arithmetic takes and the "
-                     "collider's does not");
-#endif
     dMatrix3 R;
     dRFromEulerAngles(R, 0.3, -0.7, 1.9);
     const dReal pos[3] = { 0.7, -1.3, 2.1 };

@@ -199,7 +199,9 @@ ray_triangle_quad(const dReal s[3], const dReal v[3], dReal len, const dReal *t,
 // drop, never drop one it would keep: the walk finds the hits of an exact
 // walk. An axis the ray runs along (|v| under 1e-30, or 0) is tested as a
 // slab the start must lie in, [s_lo, s_hi]: the start widened by how far
-// the ray moves along that axis, and a float step more each side. Each
+// the ray moves along that axis and by the slack in length (64 2^-24 m:
+// the triangle test's rounding, see ray_setup_lanes), and a float step
+// more each side. Each
 // number is there four times, as the four slots take it (one load, not a
 // load and a shuffle per node). This test serves the rays the plane test
 // (ray_planes) cannot take: along an axis, or so far out that a product
@@ -256,13 +258,19 @@ static void ray_setup_lanes(ray_lanes *r, const dxTriMeshData *d, const dReal s[
         set_lanes(r->slack[k], 0);
         set_lanes(r->s_lo[k], 0);
         set_lanes(r->s_hi[k], 0);
+        dReal m = dMax(dFabs(s[k]), dMax(dFabs(d->lo[k]), dFabs(d->hi[k])));
         if (r->along[k]) {
-            dReal reach = dFabs(v[k]) * len;
+            // Widened, beyond how far the ray moves along the axis, by the
+            // other axes' slack in length (64 2^-24 m): the triangle test's
+            // rounding can take a crossing that far outside a triangle's
+            // box (in single, a ray along y at x = -0.49999994 crosses, by
+            // the test, a triangle whose x ends at -0.5), and the walk must
+            // not drop a triangle the test would take.
+            dReal reach = dFabs(v[k]) * len + 32 * (dReal)FLT_EPSILON * m;
             set_lanes(r->s_lo[k], nextafterf(dxFloatBelow(s[k] - reach), -INFINITY));
             set_lanes(r->s_hi[k], nextafterf(dxFloatAbove(s[k] + reach), INFINITY));
             continue;
         }
-        dReal m = dMax(dFabs(s[k]), dMax(dFabs(d->lo[k]), dFabs(d->hi[k])));
         dReal inv = 1 / v[k], slack = 32 * (dReal)FLT_EPSILON * m * dFabs(inv) + FLT_MIN;
         set_lanes(r->inv[k], (float)inv);
         set_lanes(r->slack[k], slack < FLT_MAX ? (float)slack : FLT_MAX);
