@@ -34,7 +34,10 @@ static inline dReal dxSqrtNonNeg(dReal x)
 static inline int dxUnitVector3(dReal *a)
 {
     const dReal x = dFabs(a[0]), y = dFabs(a[1]), z = dFabs(a[2]);
-    const dReal m = x > y ? (x > z ? x : z) : (y > z ? y : z);
+    // max(x, y, z) as two steps of the form the processor's max takes (no
+    // branch on which component is largest): the same value as nested
+    // choices.
+    const dReal mxy = x > y ? x : y, m = mxy > z ? mxy : z;
     if (!(m > 0)) return 0;
     const dReal s0 = a[0] / m, s1 = a[1] / m, s2 = a[2] / m;
     const dReal len = dxSqrtNonNeg(s0 * s0 + s1 * s1 + s2 * s2);
