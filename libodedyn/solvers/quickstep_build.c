@@ -805,6 +805,10 @@ void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_syst
     sys->scratch = s;
 }
 
+// The joints' loop asks for the lines of the contact this many joints ahead
+// (dxQuickContactPrefetch).
+#define CONTACT_AHEAD 2
+
 void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *bd, dReal h,
                   qs_system *sys, qs_island *part)
 {
@@ -827,6 +831,8 @@ void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *b
     const qs_input in = { bd, rates, fps, w->erp, w->qs_w, part->body0, is->nb, 0 };
     const qs_input in_warm = { bd, rates, fps, w->erp, w->qs_w, part->body0, is->nb, 1 };
     for (int k = 0; k < is->nj; k++) {
+        if (k + CONTACT_AHEAD < is->nj && jrows[k + CONTACT_AHEAD].direct)
+            dxQuickContactPrefetch(is->joints[k + CONTACT_AHEAD]);
         dxJoint *j = is->joints[k];
         qs_jrows *jr = &jrows[k];
         if (jr->m == 0) continue;
