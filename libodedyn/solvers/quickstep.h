@@ -291,10 +291,6 @@ static inline int dxQuickContactIsDirect(const dxJoint *j)
 // last step's forces if it was there; the same rows, bit for bit, as the
 // generic build makes from its joint rows.
 void dxQuickContact(const qs_input *in, dxJoint *j, qs_system *sys);
-// Ask for the lines of such a contact that dxQuickContact reads beyond the
-// joint's first ones (the build asks a few contacts ahead: they were
-// written in collision and have left the first-level cache).
-void dxQuickContactPrefetch(const dxJoint *j);
 
 // Pack sys->bseq in batches (sys->batches; NULL when there would be no full
 // batch): each block in the first batch after every batch holding an earlier

@@ -356,16 +356,6 @@ QS_INLINE void append_rows(const qs_input *in, const qs_cbodies *cb, const dxCon
     if (f) start_bodies(sys->fc + cb->o0, sys->fc + cb->o1, rows, m, two, l);
 }
 
-void dxQuickContactPrefetch(const dxJoint *j)
-{
-#if defined(__GNUC__)
-    // (the joint's first two lines were read when its rows were counted)
-    for (size_t at = 128; at < sizeof(dxJointContact); at += 64) __builtin_prefetch((const char *)j + at);
-#else
-    (void)j;
-#endif
-}
-
 QS_CONTACT_CLONES void dxQuickContact(const qs_input *in, dxJoint *j, qs_system *sys)
 {
     const struct dxBody *const b[2] = { dxJointBody(j, 0), dxJointBody(j, 1) };
