@@ -272,8 +272,8 @@ void dxQuickReshuffle(int *order, int n, uint32_t *state, unsigned base, const u
 // ask for the lines of the body this many places ahead while they work on
 // the current one: the bodies lie far apart, in an order the hardware
 // prefetchers cannot follow, and their lines have left the first-level
-// cache since collision and the island walk (docs/perf.md: a fifth of the
-// quick step's own time waited on them in ragdolls).
+// cache since collision and the island walk (docs/perf.md: about half of
+// dWorldQuickStep's own time waited on them in ragdolls).
 #define BODY_AHEAD 4
 
 // Ask for the line holding p.

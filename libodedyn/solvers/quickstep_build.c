@@ -819,7 +819,8 @@ QS_INLINE void prefetch_contact(const dxJoint *j)
 {
 #if defined(__GNUC__)
 #pragma GCC unroll 8
-    for (size_t at = 128; at < sizeof(dxJointContact); at += 128) __builtin_prefetch((const char *)j + at);
+    for (size_t at = 128; at < sizeof(dxJointContact); at += 128)
+        __builtin_prefetch((const char *)j + at);
 #else
     (void)j;
 #endif
