@@ -276,21 +276,11 @@ void dxQuickReshuffle(int *order, int n, uint32_t *state, unsigned base, const u
 // dWorldQuickStep's own time waited on them in ragdolls).
 #define BODY_AHEAD 4
 
-// Ask for the line holding p.
-QS_INLINE void prefetch_line(const void *p)
-{
-#if defined(__GNUC__)
-    __builtin_prefetch(p);
-#else
-    (void)p;
-#endif
-}
-
 // Ask for the line holding p and the one holding p + bytes - 1.
 QS_INLINE void prefetch_span(const void *p, size_t bytes)
 {
-    prefetch_line(p);
-    prefetch_line((const char *)p + bytes - 1);
+    qs_prefetch(p);
+    qs_prefetch((const char *)p + bytes - 1);
 }
 
 // A seed from the bits of the island's positions and velocities (FNV-1a
@@ -698,7 +688,7 @@ static void finish_island(const dxIsland *is, const dxIslandBodies *bd, const dR
             const struct dxBody *ahead = is->bodies[b + BODY_AHEAD];
             prefetch_span(ahead->lvel, (size_t)((const char *)(ahead->torque + 3) -
                                                 (const char *)ahead->lvel));
-            prefetch_line(ahead->force);
+            qs_prefetch(ahead->force);
         }
         struct dxBody *body = is->bodies[b];
         const dReal *c = fc + 6 * b, *I = bd->inv_inertia + 12 * b, *t = body->torque;

@@ -41,6 +41,17 @@ typedef struct qs_scratch qs_scratch;
 #define QS_INLINE static inline
 #endif
 
+// Ask for the cache line holding p (a hint: nothing where the compiler has
+// no prefetch).
+QS_INLINE void qs_prefetch(const void *p)
+{
+#if defined(__GNUC__)
+    __builtin_prefetch(p);
+#else
+    (void)p;
+#endif
+}
+
 // Pairs of numbers: rows and fc are stored and updated two numbers at a time
 // (SSE2 with doubles); the 12 numbers of a row's J are 6 pairs.
 #if defined(__GNUC__)

@@ -819,11 +819,9 @@ QS_INLINE void prefetch_contact(const dxJoint *j)
 {
 #if defined(__GNUC__)
 #pragma GCC unroll 8
-    for (size_t at = 128; at < sizeof(dxJointContact); at += 128)
-        __builtin_prefetch((const char *)j + at);
-#else
-    (void)j;
 #endif
+    for (size_t at = 128; at < sizeof(dxJointContact); at += 128)
+        qs_prefetch((const char *)j + at);
 }
 
 void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *bd, dReal h,

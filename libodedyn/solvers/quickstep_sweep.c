@@ -236,12 +236,8 @@ QS_INLINE void update_free_row(const qs_row *q, dReal *lambda, dReal *fc)
 // line comes along.
 QS_INLINE void prefetch_row(const qs_row *q)
 {
-#if defined(__GNUC__)
-    __builtin_prefetch(q);
-    __builtin_prefetch((const char *)q + 128);
-#else
-    (void)q;
-#endif
+    qs_prefetch(q);
+    qs_prefetch((const char *)q + 128);
 }
 
 // One block of any size and its coupled rows.
