@@ -15,6 +15,9 @@
 #include "test.h"
 #include "test_trimesh_meshes.h"
 
+#define RNG_SEED 0x9E3779B97F4A7C15ULL
+#include "xorshift.h"
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -31,16 +34,6 @@ static const double HALF = 8;   // grid lines at whole halves: exact
 static double wavy(double x, double y)
 {
     return 0.4 * sin(0.9 * x) * cos(0.7 * y) + 0.05 * x;
-}
-
-static unsigned long long rng_state = 0x9E3779B97F4A7C15ULL;
-
-static double uniform(double a, double b)
-{
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return a + (b - a) * (double)(rng_state >> 11) * (1.0 / 9007199254740992.0);
 }
 
 // The ray callback's u and v per triangle (the last call's).
@@ -190,7 +183,7 @@ static void random_dir(double d[3], int zero_mask)
 {
     double l;
     do {
-        for (int i = 0; i < 3; i++) d[i] = zero_mask >> i & 1 ? 0 : uniform(-1, 1);
+        for (int i = 0; i < 3; i++) d[i] = zero_mask >> i & 1 ? 0 : rnd(-1, 1);
         l = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     } while (l < 0.1);
     for (int i = 0; i < 3; i++) d[i] /= l;
@@ -211,24 +204,24 @@ static int rays_match_loop(const dMatrix3 R, const dReal pos[3], int count, long
     for (int i = 0; i < count && !fail; i++) {
         double p[3], d[3];
         // Random: from above, below or among the surface's boxes.
-        p[0] = uniform(-HALF - 1, HALF + 1);
-        p[1] = uniform(-HALF - 1, HALF + 1);
-        p[2] = uniform(-2, 2);
+        p[0] = rnd(-HALF - 1, HALF + 1);
+        p[1] = rnd(-HALF - 1, HALF + 1);
+        p[2] = rnd(-2, 2);
         random_dir(d, 0);
-        fail |= check_ray(&tm, mesh, ray, p, d, uniform(0.5, 20), hits);
+        fail |= check_ray(&tm, mesh, ray, p, d, rnd(0.5, 20), hits);
         // Along one or two of the mesh's axes (zero components).
         random_dir(d, 1 + (i % 6));
-        fail |= check_ray(&tm, mesh, ray, p, d, uniform(0.5, 20), hits);
+        fail |= check_ray(&tm, mesh, ray, p, d, rnd(0.5, 20), hits);
         // In a grid line's plane (x or y a whole half: the sides of the
         // triangles' boxes), running in it or crossing it.
         p[i & 1] = -HALF + 0.5 * (double)(i % (4 * (int)HALF + 1));
         random_dir(d, i & 2 ? 1 << (i & 1) : 0);
-        fail |= check_ray(&tm, mesh, ray, p, d, uniform(0.5, 20), hits);
+        fail |= check_ray(&tm, mesh, ray, p, d, rnd(0.5, 20), hits);
         // Nearly along an axis, and of length 0 from a grid point.
-        d[0] = uniform(-1e-12, 1e-12);
+        d[0] = rnd(-1e-12, 1e-12);
         d[1] = i & 4 ? 1e-35 : 0;
         d[2] = i & 8 ? 1 : -1;
-        fail |= check_ray(&tm, mesh, ray, p, d, uniform(0.5, 5), hits);
+        fail |= check_ray(&tm, mesh, ray, p, d, rnd(0.5, 5), hits);
         p[2] = wavy(p[0], p[1]);
         fail |= check_ray(&tm, mesh, ray, p, d, 0, hits);
     }
