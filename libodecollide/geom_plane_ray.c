@@ -9,7 +9,6 @@
 
 #include <string.h>
 
-#include "../libodedyn/math/orthogonalize.h"
 #include "../libodedyn/math/unit_vector.h"
 
 #define CHECK_CLASS(g, c, label, on_fail) \
@@ -121,14 +120,33 @@ dReal dGeomRayGetLength(dGeomID g)
     return ((dxRay *)g)->length;
 }
 
-// Place the ray at p pointing along d: a rotation whose z column is d.
-// A ray on no body takes the rotation and position directly: the same
-// numbers as dRFromZAxis then dGeomSetRotation (whose orthogonalisation
-// moves the last bits of the rows, so it is kept) and dGeomSetPosition,
-// without their checks of what is already known finite and unit (the
-// normalisations and the plane space inline: dSafeNormalize3's and
-// dPlaneSpace's arithmetic, and dOrthogonalizeR's, orthogonalize.h), and
-// with one walk up the spaces.
+// A rotation whose z column is the unit vector n, bit for bit, and whose x
+// and y columns complete it to a right-handed orthonormal frame (Duff et
+// al., "Building an orthonormal basis, revisited", 2017): with s the sign of
+// n_z, 1 / (s + n_z) never divides by less than 1 in size, and the frame
+// costs one division, no square root and no branch. Its columns are
+// orthonormal to within a few units in the last place for a unit n.
+static void ray_frame(const dReal n[3], dReal *R)
+{
+    const dReal s = dCopySign((dReal)1, n[2]), a = -1 / (s + n[2]), b = n[0] * n[1] * a;
+    R[0] = 1 + s * n[0] * n[0] * a;
+    R[1] = b;
+    R[2] = n[0];
+    R[4] = s * b;
+    R[5] = s + n[1] * n[1] * a;
+    R[6] = n[1];
+    R[8] = -s * n[0];
+    R[9] = -n[1];
+    R[10] = n[2];
+    R[3] = R[7] = R[11] = 0;
+}
+
+// Place the ray at p pointing along d: the direction is d normalised as
+// dSafeNormalize3 does (the z column of the rotation, as in ODE), the x and
+// y columns ray_frame's. A ray on no body takes them directly, with one walk
+// up the spaces; one on a body turns and moves the body (dGeomSetRotation,
+// whose clean-up of the rotation may move its last bits, and
+// dGeomSetPosition).
 void dGeomRaySet(dGeomID g, dReal px, dReal py, dReal pz, dReal dx, dReal dy, dReal dz)
 {
     CHECK_CLASS(g, dRayClass, "ray", return);
@@ -137,27 +155,13 @@ void dGeomRaySet(dGeomID g, dReal px, dReal py, dReal pz, dReal dx, dReal dy, dR
     DX_CHECK_ARG(dxIsFinite3(dx, dy, dz) && dxUnitVector3(d), return,
                  "direction (%g, %g, %g) has no length", (double)dx, (double)dy, (double)dz);
     if (!g->body) {
-        dVector3 p, q;
-        dxUnitVector3(d);   // as dRFromZAxis: a unit vector's last bits may move
-        dxPlaneSpaceUnit(d, p, q);
-        // The rows [p q d] that dxOrthogonalizeR reads (rows 0 and 1), made
-        // into the rotation in place: it writes all of it, or nothing if it
-        // fails (it cannot for p, q, d unit and perpendicular; then the
-        // general placement below writes it all).
-        dReal *R = g->own_R;
-        for (int i = 0; i < 2; i++) {
-            R[4 * i] = p[i];
-            R[4 * i + 1] = q[i];
-            R[4 * i + 2] = d[i];
-        }
-        if (dxOrthogonalizeR(R, 1)) {   // p, q, d unit: finite
-            dAssignVector3(g->own_pos, px, py, pz);
-            dxGeomMarkMoved(g);
-            return;
-        }
+        ray_frame(d, g->own_R);
+        dAssignVector3(g->own_pos, px, py, pz);
+        dxGeomMarkMoved(g);
+        return;
     }
     dMatrix3 R;
-    dRFromZAxis(R, d[0], d[1], d[2]);
+    ray_frame(d, R);
     dGeomSetRotation(g, R);
     dGeomSetPosition(g, px, py, pz);
 }
