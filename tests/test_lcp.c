@@ -21,20 +21,11 @@
 
 // ---- a small deterministic generator (independent of the library's) ----
 
-static uint64_t rng_state;
+#include "xorshift.h"
 
 static void rng_seed(uint64_t s) { rng_state = s * 0x9E3779B97F4A7C15u + 1; }
 
-static double rnd(void)   // uniform in [0, 1)
-{
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return (double)(rng_state >> 11) * (1.0 / 9007199254740992.0);
-}
-
-static double rnd_in(double a, double b) { return a + (b - a) * rnd(); }
-static int rnd_int(int n) { return (int)(rnd() * n); }
+static int rnd_int(int n) { return (int)rnd(0, n); }   // uniform in 0 .. n - 1
 
 // ---- problems ----
 
@@ -90,7 +81,7 @@ static void make_spd(problem *p, int k, double shift)
 {
     int n = p->n;
     double *B = malloc(sizeof(double) * (size_t)n * (size_t)k);
-    for (int i = 0; i < n * k; i++) B[i] = rnd_in(-1, 1);
+    for (int i = 0; i < n * k; i++) B[i] = rnd(-1, 1);
     for (int i = 0; i < n; i++) {
         for (int j = 0; j <= i; j++) {
             double s = 0;
@@ -170,28 +161,28 @@ static void plant(problem *p, int nub)
     for (int i = 0; i < n; i++) {
         double lo = -INF, hi = INF, x, wi = 0;
         if (i < nub) {
-            x = rnd_in(-2, 2);
+            x = rnd(-2, 2);
         } else {
-            lo = rnd_in(-2, -0.1);
-            hi = rnd_in(0.1, 2);
-            double shift = rnd();
-            if (shift < 0.1) hi = lo + rnd_in(0.1, 1);    // both below 0
-            else if (shift < 0.2) lo = hi - rnd_in(0.1, 1);  // both above 0
-            if (rnd() < 0.1) lo = -INF;
-            if (rnd() < 0.1) hi = INF;
+            lo = rnd(-2, -0.1);
+            hi = rnd(0.1, 2);
+            double shift = rnd(0, 1);
+            if (shift < 0.1) hi = lo + rnd(0.1, 1);    // both below 0
+            else if (shift < 0.2) lo = hi - rnd(0.1, 1);  // both above 0
+            if (rnd(0, 1) < 0.1) lo = -INF;
+            if (rnd(0, 1) < 0.1) hi = INF;
             lo = (dReal)lo;
             hi = (dReal)hi;
             int c = rnd_int(6);
             if (c == 0 && lo == -INF) c = 2;
             if (c == 1 && hi == INF) c = 2;
-            if (c == 0) x = lo, wi = rnd_in(0.1, 1);
-            else if (c == 1) x = hi, wi = -rnd_in(0.1, 1);
+            if (c == 0) x = lo, wi = rnd(0.1, 1);
+            else if (c == 1) x = hi, wi = -rnd(0.1, 1);
             else if (c == 3) x = lo != -INF ? lo : hi != INF ? hi : 0;
-            else if (c == 4) lo = hi = x = (dReal)rnd_in(-1, 1), wi = rnd_in(-1, 1);
-            else if (lo == -INF && hi == INF) x = rnd_in(-1, 1);
-            else if (lo == -INF) x = hi - rnd_in(0.1, 1);
-            else if (hi == INF) x = lo + rnd_in(0.1, 1);
-            else x = lo + (hi - lo) * rnd_in(0.1, 0.9);
+            else if (c == 4) lo = hi = x = (dReal)rnd(-1, 1), wi = rnd(-1, 1);
+            else if (lo == -INF && hi == INF) x = rnd(-1, 1);
+            else if (lo == -INF) x = hi - rnd(0.1, 1);
+            else if (hi == INF) x = lo + rnd(0.1, 1);
+            else x = lo + (hi - lo) * rnd(0.1, 0.9);
         }
         p->lo[i] = (dReal)lo;
         p->hi[i] = (dReal)hi;
@@ -253,7 +244,7 @@ static int test_all_unbounded_equals_linear_solve(void)
         make_spd(&p, n, 0.5);
         double *M = malloc(sizeof(double) * (size_t)(n * n)), *r = malloc(sizeof(double) * n);
         for (int i = 0; i < n; i++) {
-            p.b[i] = (dReal)rnd_in(-3, 3);
+            p.b[i] = (dReal)rnd(-3, 3);
             r[i] = p.b[i];
             for (int j = 0; j < n; j++) M[i * n + j] = *at(&p, i, j);
         }
@@ -328,8 +319,8 @@ static int test_planted_solutions_are_found(void)
     for (int trial = 0; trial < 400; trial++) {
         int n = 1 + rnd_int(40);
         problem p = problem_make(n);
-        make_spd(&p, n, rnd() < 0.5 ? 0.05 : 0.5);
-        plant(&p, rnd() < 0.3 ? rnd_int(n / 2 + 1) : 0);
+        make_spd(&p, n, rnd(0, 1) < 0.5 ? 0.05 : 0.5);
+        plant(&p, rnd(0, 1) < 0.3 ? rnd_int(n / 2 + 1) : 0);
         int ok = solve(&p);
         // A positive definite: the solution is unique. cond(A) <= (n/3 + 2) / 0.05 < 300, so
         // x is accurate to a few hundred eps (measured: 2e-15 and 6e-7 relative).
@@ -390,11 +381,11 @@ static int test_agrees_with_brute_force_enumeration(void)
         int n = 1 + rnd_int(6);
         problem p = problem_make(n);
         make_spd(&p, 1 + rnd_int(n), 0.1);   // low rank + 0.1 I: strongly coupled rows
-        p.nub = rnd() < 0.3 ? rnd_int(n + 1) : 0;
+        p.nub = rnd(0, 1) < 0.3 ? rnd_int(n + 1) : 0;
         for (int i = 0; i < n; i++) {
-            p.b[i] = (dReal)rnd_in(-2, 2);
-            p.lo[i] = rnd() < 0.15 ? -INF : (dReal)rnd_in(-1.5, 0.2);
-            p.hi[i] = rnd() < 0.15 ? INF : (dReal)rnd_in(-0.2, 1.5);
+            p.b[i] = (dReal)rnd(-2, 2);
+            p.lo[i] = rnd(0, 1) < 0.15 ? -INF : (dReal)rnd(-1.5, 0.2);
+            p.hi[i] = rnd(0, 1) < 0.15 ? INF : (dReal)rnd(-0.2, 1.5);
             if (p.hi[i] < p.lo[i]) p.hi[i] = p.lo[i];
         }
         double xs[6];
@@ -609,17 +600,17 @@ static void random_contacts(problem *p, int nb, int nc, double cfm)
 {
     int n = 3 * nc, dof = 6 * nb;
     double *J = calloc((size_t)n * (size_t)dof, sizeof(double)), v0[6 * 8];
-    for (int k = 0; k < dof; k++) v0[k] = rnd_in(-1, 1);
+    for (int k = 0; k < dof; k++) v0[k] = rnd(-1, 1);
     *p = problem_make(n);
     p->findex = malloc(sizeof(int) * (size_t)n);
     for (int c = 0; c < nc; c++) {
-        int body[2] = { rnd_int(nb), rnd() < 0.3 ? -1 : rnd_int(nb) };
+        int body[2] = { rnd_int(nb), rnd(0, 1) < 0.3 ? -1 : rnd_int(nb) };
         if (body[1] == body[0]) body[1] = -1;   // -1: the world
         double d[3][3], r[2][3];
         for (int k = 0; k < 3; k++) {
-            d[0][k] = rnd_in(-1, 1);
-            r[0][k] = rnd_in(-0.5, 0.5);
-            r[1][k] = rnd_in(-0.5, 0.5);
+            d[0][k] = rnd(-1, 1);
+            r[0][k] = rnd(-0.5, 0.5);
+            r[1][k] = rnd(-0.5, 0.5);
         }
         double len = sqrt(d[0][0] * d[0][0] + d[0][1] * d[0][1] + d[0][2] * d[0][2]);
         for (int k = 0; k < 3; k++) d[0][k] /= len;
@@ -631,7 +622,7 @@ static void random_contacts(problem *p, int nb, int nc, double cfm)
         for (int k = 0; k < 3; k++) d[1][k] /= len;
         for (int k = 0; k < 3; k++)
             d[2][k] = d[0][(k + 1) % 3] * d[1][(k + 2) % 3] - d[0][(k + 2) % 3] * d[1][(k + 1) % 3];
-        double mu = rnd() < 0.2 ? 0 : rnd() < 0.1 ? INF : rnd_in(0.1, 1.5);
+        double mu = rnd(0, 1) < 0.2 ? 0 : rnd(0, 1) < 0.1 ? INF : rnd(0.1, 1.5);
         for (int k = 0; k < 3; k++) {
             double *row = J + (size_t)(3 * c + k) * (size_t)dof;
             for (int side = 0; side < 2; side++) {
@@ -762,10 +753,10 @@ static void make_redundant(problem *p, int k, double cfm, double duplicates)
     int n = p->n;
     double *B = malloc(sizeof(double) * (size_t)n * (size_t)k);
     for (int i = 0; i < n; i++) {
-        int src = i > 0 && rnd() < duplicates ? rnd_int(i) : -1;
-        double scale = rnd() < 0.5 ? 1 : rnd_in(-2, 2);
+        int src = i > 0 && rnd(0, 1) < duplicates ? rnd_int(i) : -1;
+        double scale = rnd(0, 1) < 0.5 ? 1 : rnd(-2, 2);
         for (int c = 0; c < k; c++)
-            B[i * k + c] = src >= 0 ? scale * B[src * k + c] : rnd_in(-1, 1);
+            B[i * k + c] = src >= 0 ? scale * B[src * k + c] : rnd(-1, 1);
     }
     for (int i = 0; i < n; i++) {
         for (int j = 0; j <= i; j++) {
@@ -789,7 +780,7 @@ static int test_rank_deficient_planted_problems(void)
         int n = 2 + rnd_int(40), k = 1 + rnd_int(trial % 3 ? n : n / 3 + 1);
         problem p = problem_make(n);
         make_redundant(&p, k, trial % 2 ? 1e-10 : 0, trial % 3 ? 0.4 : 0);
-        plant(&p, rnd() < 0.3 ? rnd_int(n / 2 + 1) : 0);
+        plant(&p, rnd(0, 1) < 0.3 ? rnd_int(n / 2 + 1) : 0);
         int ok = solve(&p);
         if (!ok) printf("# trial %d (n %d, k %d) gave up\n", trial, n, k);
         CHECK(ok == 1);
@@ -833,7 +824,7 @@ static int test_large_banded_n2000_terminates(void)
     problem p = problem_make(n);
     for (int i = 0; i < n; i++) {
         for (int j = i + 1; j <= i + 2 && j < n; j++)
-            *at(&p, i, j) = *at(&p, j, i) = (dReal)rnd_in(-1, 1);
+            *at(&p, i, j) = *at(&p, j, i) = (dReal)rnd(-1, 1);
     }
     for (int i = 0; i < n; i++) {
         double s = 0.5;
@@ -878,8 +869,8 @@ static void make_articulated(problem *p, const articulated *a)
     double *hi = malloc(sizeof(double) * n);
     int *fi = malloc(sizeof(int) * n), *order = malloc(sizeof(int) * n), r = 0;
     for (int k = 0; k < dof; k++) {
-        inv_i[k] = k % 6 < 3 ? 1 : 1 / rnd_in(0.05, 0.5);
-        v0[k] = rnd_in(-1, 1);
+        inv_i[k] = k % 6 < 3 ? 1 : 1 / rnd(0.05, 0.5);
+        v0[k] = rnd(-1, 1);
     }
     // A point constraint between body b0 (or the world, -1) and b1 along direction d at
     // offsets r0, r1 from their centres: J = [d, r0 x d] for b0 and the negative for b1.
@@ -916,15 +907,15 @@ static void make_articulated(problem *p, const articulated *a)
     }
     for (int c = 0; c < a->nc; c++) {
         int body[2] = { rnd_int(nbody), -1 };
-        if (rnd() < 0.4 && a->figures > 1) {
+        if (rnd(0, 1) < 0.4 && a->figures > 1) {
             body[1] = rnd_int(nbody);
             if (body[1] / a->links == body[0] / a->links) body[1] = -1;
         }
         double d[3][3], off[2][3];
         for (int k = 0; k < 3; k++) {
-            d[0][k] = rnd_in(-1, 1);
-            off[0][k] = rnd_in(-0.3, 0.3);
-            off[1][k] = rnd_in(-0.3, 0.3);
+            d[0][k] = rnd(-1, 1);
+            off[0][k] = rnd(-0.3, 0.3);
+            off[1][k] = rnd(-0.3, 0.3);
         }
         double len = sqrt(d[0][0] * d[0][0] + d[0][1] * d[0][1] + d[0][2] * d[0][2]);
         for (int k = 0; k < 3; k++) d[0][k] /= len;
@@ -935,7 +926,7 @@ static void make_articulated(problem *p, const articulated *a)
         for (int k = 0; k < 3; k++) d[1][k] /= len;
         for (int k = 0; k < 3; k++)
             d[2][k] = d[0][(k + 1) % 3] * d[1][(k + 2) % 3] - d[0][(k + 2) % 3] * d[1][(k + 1) % 3];
-        double mu = rnd() < 0.1 ? 0 : rnd_in(0.2, 1.2);
+        double mu = rnd(0, 1) < 0.1 ? 0 : rnd(0.2, 1.2);
         for (int k = 0; k < 3; k++, r++) {
             double *row = J + (size_t)r * dof;
             for (int side = 0; side < 2; side++) {

@@ -20,19 +20,12 @@
 #include <math.h>
 #include <string.h>
 
+#define RNG_SEED 0x2545F4914F6CDD1DULL
+#include "xorshift.h"
+
 static double wavy(double x, double y)
 {
     return 0.4 * sin(0.9 * x) * cos(0.7 * y);
-}
-
-static unsigned long long rng_state = 0x2545F4914F6CDD1DULL;
-
-static double uniform(double a, double b)
-{
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return a + (b - a) * (double)(rng_state >> 11) * (1.0 / 9007199254740992.0);
 }
 
 static int accept_all(dGeomID mesh, dGeomID other, int tri)
@@ -116,12 +109,12 @@ static int test_three_walks_agree(void)
     int total = 0;
     for (int i = 0; i < 2500; i++) {
         dGeomID o = shapes[i % 5];
-        double x = uniform(-4, 4), y = uniform(-4, 4), z = wavy(x, y) + uniform(-0.3, 0.25);
+        double x = rnd(-4, 4), y = rnd(-4, 4), z = wavy(x, y) + rnd(-0.3, 0.25);
         dVector3 p = { x, y, z }, w;
         dMultiply0_331(w, R, p);
         dGeomSetPosition(o, w[0] + 0.3, w[1] - 0.1, w[2] + 0.2);
         dMatrix3 Ro;
-        dRFromEulerAngles(Ro, uniform(0, 6.3), uniform(0, 6.3), uniform(0, 6.3));
+        dRFromEulerAngles(Ro, rnd(0, 6.3), rnd(0, 6.3), rnd(0, 6.3));
         dGeomSetRotation(o, Ro);
         for (int order = 0; order < 2; order++) {
             int n;
@@ -157,8 +150,8 @@ static int test_walks_agree_at_box_sides(void)
         // a side of the shape's box on a grid line, moved by a few float
         // roundings (at 1: 1.2e-7) either way, or by far less
         const double shift = (i % 7 - 3) * (i % 3 ? 3e-8 : 1e-13);
-        double x = round(uniform(-3, 3) * 2) / 2 + r + shift;
-        double y = round(uniform(-3, 3) * 2) / 2 - r - (i % 5 - 2) * 4e-8;
+        double x = round(rnd(-3, 3) * 2) / 2 + r + shift;
+        double y = round(rnd(-3, 3) * 2) / 2 - r - (i % 5 - 2) * 4e-8;
         double z = (i % 4 ? r : 0.1) + (i % 11 - 5) * 2e-8;
         dGeomSetPosition(o, x, y, z);
         for (int order = 0; order < 2; order++) {
@@ -209,7 +202,7 @@ static int test_sphere_height_window(void)
     const double heights[] = { -1e-9, 0, 1e-9, 0.1, 0.2999999, 0.3, 0.3000001, 0.5 };
     dContactGeom c[8];
     for (int i = 0; i < 300; i++) {
-        double x = uniform(-1.5, 1.5), y = uniform(-1.5, 1.5);
+        double x = rnd(-1.5, 1.5), y = rnd(-1.5, 1.5);
         if (i % 3 == 0) x = round(x / 0.4) * 0.4;   // over a grid line
         for (size_t k = 0; k < sizeof heights / sizeof heights[0]; k++) {
             double z = heights[k];
