@@ -18,14 +18,8 @@
 
 enum { MAXC = 4, POSES = 3000 };
 
-static unsigned long long rng_state = 88172645463325252ULL;
-static double rnd(double lo, double hi)
-{
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return lo + (hi - lo) * (double)(rng_state >> 11) / 9007199254740992.0;
-}
+#define RNG_SEED 88172645463325252ULL
+#include "xorshift.h"
 
 // Whether h's bytes name, for each face, the edges of its by_f1 and by_f2
 // and nothing past its edges.
