@@ -93,6 +93,7 @@ static void clear_derived(dxTriMeshData *d)
     d->order = NULL;
     d->leaf_vertices = NULL;
     d->leaf_boxes = NULL;
+    d->leaf_faces = NULL;
     d->tree_stamp = 0;
     d->nodes = NULL;
     d->node_span = NULL;

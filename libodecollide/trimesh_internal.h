@@ -50,11 +50,13 @@ enum { DX_TRI_LEAF_MAX = 4 };
 // a median-split binary tree with levels lifted into their parents (see
 // trimesh_tree.c): its leaves, their order and their boxes are the binary
 // tree's.
-// A leaf is named by node * 4 + slot (temporal coherence).
+// A leaf is named by node * 4 + slot (temporal coherence). Aligned to 16
+// bytes wherever it is placed (a heightfield's patch holds one after its
+// data): the rays load a node's fours as aligned vectors.
 typedef struct dxTriMeshNode {
     float lo[3][4], hi[3][4];
     int first[4], count[4];
-} dxTriMeshNode;
+} __attribute__((aligned(16))) dxTriMeshNode;
 
 // The next float from f towards -infinity (down) or +infinity (up):
 // nextafterf's answers, inline (query boxes are rounded per query); f is
@@ -134,6 +136,28 @@ static inline void dxFloatBox(const dReal lo[3], const dReal hi[3], float lo_f[4
 #endif
 }
 
+// Two neighbouring triangles whose unit normals' dot product is over this
+// are coplanar: the edge between them is one of the triangulation only
+// (ten times the native colliders' relative tolerance, DX_COLLIDE_EPS).
+#ifdef dSINGLE
+#define DX_TRI_COPLANAR_COS (1 - 10 * (dReal)1e-5)
+#else
+#define DX_TRI_COPLANAR_COS (1 - 10 * (dReal)1e-9)
+#endif
+
+// What the colliders' walk reads of the triangle at leaf position j beside
+// its float box and vertices, in leaf order (leaf_faces[j]), so that none
+// of it waits for order[j] first: its index order[j], its normal (a copy
+// of normal[3 order[j]]) and, as bit k of coplanar, whether it has a
+// neighbour across edge k whose normal is within DX_TRI_COPLANAR_COS of
+// its own (the geometry's part of "a flat edge"; the feature bits, which
+// the user may set, are read where needed).
+typedef struct dxTriLeafFace {
+    dReal n[3];
+    int index;
+    unsigned coplanar;
+} dxTriLeafFace;
+
 // Make node a tree of one leaf: the count triangles order[0 ..], in the box
 // [lo, hi] (a heightfield's patch).
 void dxTriMeshNodeSetLeaf(dxTriMeshNode *node, const dReal lo[3], const dReal hi[3], int count);
@@ -184,9 +208,11 @@ struct dxTriMeshData {
                                           // of order[j] at 6 j (lo, then hi), in
                                           // float rounded outwards; 2 more floats
                                           // at the end (read, never used)
+    dxTriLeafFace *leaf_faces;            // 1 per triangle in leaf order
     void *tree_block;                     // one allocation holding nodes,
-    size_t tree_block_size;               // leaf_vertices, leaf_boxes and
-                                          // node_span, each at a cache line
+    size_t tree_block_size;               // leaf_vertices, leaf_boxes,
+                                          // leaf_faces and node_span, each at a
+                                          // cache line
     uint64_t tree_stamp;                  // unique per build and refit; 0: no
                                           // temporal coherence (a heightfield patch)
     unsigned char *built_flags;           // Preprocess: use flags
@@ -344,6 +370,16 @@ static inline int dxTriTreeWalkNext(const dxTriMeshData *d, dxTriTreeWalk *w)
             if (w->m) {
                 w->stack[w->top] = w->node;
                 w->mask[w->top++] = (unsigned char)(w->m | w->leaves << 4);
+                // The node of the next inner slot left, where the walk
+                // comes back to, asked for now: its lines arrive while the
+                // walk goes down the first subtree.
+                const unsigned inner = w->m & ~w->leaves;
+                if (inner) {
+                    const char *next =
+                        (const char *)&d->nodes[d->nodes[w->node].first[__builtin_ctz(inner)]];
+                    __builtin_prefetch(next);
+                    __builtin_prefetch(next + 64);
+                }
             }
             w->node = d->nodes[w->node].first[s];
             w->m = dxTriNodeOverlaps(&d->nodes[w->node], w->lo, w->hi, &w->leaves);

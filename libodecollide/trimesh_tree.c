@@ -10,7 +10,8 @@
 // leaves, for temporal coherence), a node's four boxes tested at once.
 // Beside the tree, a copy of the triangles' vertices in leaf order, so that
 // a ray reads contiguous memory (the user's arrays are indexed twice over:
-// triangle, vertex).
+// triangle, vertex), and of their normals with their indices (the
+// colliders' walk reads them without going through order[]).
 
 #include <math.h>
 #include <ode/memory.h>
@@ -44,11 +45,33 @@ uint64_t dxTriMeshNewStamp(void)
     return atomic_fetch_add(&next, 1);
 }
 
-// (Re)write the leaf-order copy of the vertices from the user's arrays.
-static void copy_leaf_vertices(dxTriMeshData *d)
+// Bit k set for each edge k of triangle t with a coplanar neighbour
+// (dxTriLeafFace): the dot product summed as the colliders sum it.
+static unsigned coplanar_edges(const dxTriMeshData *d, int t)
 {
-    for (int j = 0; j < d->tri_count; j++)
-        dxTriMeshTriangle(d, d->order[j], (dReal(*)[3])(d->leaf_vertices + 9 * j));
+    const dReal *n = d->normal + 3 * t;
+    unsigned bits = 0;
+    for (int k = 0; k < 3; k++) {
+        const int u = d->neighbour[3 * t + k];
+        if (u < 0) continue;
+        const dReal *m = d->normal + 3 * u;
+        if (n[0] * m[0] + n[1] * m[1] + n[2] * m[2] > DX_TRI_COPLANAR_COS) bits |= 1u << k;
+    }
+    return bits;
+}
+
+// (Re)write the leaf-order copies: the vertices from the user's arrays,
+// the faces from the normals and neighbours (found before).
+static void copy_leaf_triangles(dxTriMeshData *d)
+{
+    for (int j = 0; j < d->tri_count; j++) {
+        const int t = d->order[j];
+        dxTriMeshTriangle(d, t, (dReal(*)[3])(d->leaf_vertices + 9 * j));
+        dxTriLeafFace *f = &d->leaf_faces[j];
+        for (int k = 0; k < 3; k++) f->n[k] = d->normal[3 * t + k];
+        f->index = t;
+        f->coplanar = coplanar_edges(d, t);
+    }
 }
 
 // The box of the triangle at leaf position j, from the copy.
@@ -306,22 +329,24 @@ static char *line_start(char *p)
 }
 
 // One block for the nodes (node_count of them), the leaf-order vertices,
-// the triangles' boxes and the nodes' spans, each at the start of a cache
-// line: a node is read as two lines, not three, and a leaf's vertices
-// touch the fewest lines.
+// the triangles' boxes, their faces and the nodes' spans, each at the
+// start of a cache line: a node is read as two lines, not three, and a
+// leaf's vertices touch the fewest lines.
 static void place_tree(dxTriMeshData *d)
 {
     size_t node_room = ((size_t)d->node_count * sizeof(dxTriMeshNode) + 63) / 64 * 64;
     size_t vertex_room = (9 * (size_t)d->tri_count * sizeof(dReal) + 63) / 64 * 64;
     size_t box_room = ((6 * (size_t)d->tri_count + 2) * sizeof(float) + 63) / 64 * 64;
+    size_t face_room = ((size_t)d->tri_count * sizeof(dxTriLeafFace) + 63) / 64 * 64;
     size_t span_room = 2 * (size_t)d->node_count * sizeof(int);
-    d->tree_block_size = 64 + node_room + vertex_room + box_room + span_room;
+    d->tree_block_size = 64 + node_room + vertex_room + box_room + face_room + span_room;
     d->tree_block = dAlloc(d->tree_block_size);
     char *p = line_start((char *)d->tree_block);
     d->nodes = (dxTriMeshNode *)p;
     d->leaf_vertices = (dReal *)(p + node_room);
     d->leaf_boxes = (float *)(p + node_room + vertex_room);
-    d->node_span = (int *)(p + node_room + vertex_room + box_room);
+    d->leaf_faces = (dxTriLeafFace *)(p + node_room + vertex_room + box_room);
+    d->node_span = (int *)(p + node_room + vertex_room + box_room + face_room);
     d->leaf_boxes[6 * d->tri_count] = d->leaf_boxes[6 * d->tri_count + 1] = 0;
 }
 
@@ -334,6 +359,7 @@ void dxTriMeshFreeTree(dxTriMeshData *d)
     d->node_span = NULL;
     d->leaf_vertices = NULL;
     d->leaf_boxes = NULL;
+    d->leaf_faces = NULL;
 }
 
 void dxTriMeshBuildTree(dxTriMeshData *d)
@@ -359,7 +385,7 @@ void dxTriMeshBuildTree(dxTriMeshData *d)
     lift_node(d, bin, 0, 0, &used);
     dFree(bin, bin_size);
     set_spans(d);
-    copy_leaf_vertices(d);
+    copy_leaf_triangles(d);
     fit_boxes(d);
     d->tree_stamp = dxTriMeshNewStamp();
 }
@@ -367,7 +393,7 @@ void dxTriMeshBuildTree(dxTriMeshData *d)
 void dxTriMeshRefitTree(dxTriMeshData *d)
 {
     if (d->node_count == 0) return;
-    copy_leaf_vertices(d);
+    copy_leaf_triangles(d);
     fit_boxes(d);
     d->tree_stamp = dxTriMeshNewStamp();
 }

@@ -204,6 +204,29 @@ static int check_tree_fits(const dxTriMeshData *d)
     return 0;
 }
 
+// The walk's leaf-order faces of d are the current ones: at leaf position
+// j the index order[j], that triangle's normal bit for bit, and bit k of
+// coplanar set exactly when it has a neighbour across edge k whose normal's
+// dot product with its own is over DX_TRI_COPLANAR_COS.
+static int check_leaf_faces(const dxTriMeshData *d)
+{
+    for (int j = 0; j < d->tri_count; j++) {
+        const dxTriLeafFace *f = &d->leaf_faces[j];
+        const int t = d->order[j];
+        CHECK(f->index == t);
+        CHECK(memcmp(f->n, d->normal + 3 * t, sizeof f->n) == 0);
+        unsigned bits = 0;
+        for (int k = 0; k < 3; k++) {
+            const int u = d->neighbour[3 * t + k];
+            const dReal *a = d->normal + 3 * t, *b = u >= 0 ? d->normal + 3 * u : NULL;
+            if (b && a[0] * b[0] + a[1] * b[1] + a[2] * b[2] > DX_TRI_COPLANAR_COS)
+                bits |= 1u << k;
+        }
+        CHECK(f->coplanar == bits);
+    }
+    return 0;
+}
+
 // Cosine above which neighbouring faces are coplanar (trimesh_data.c's).
 #ifdef dSINGLE
 #define FLAT_COS ((dReal)(1 - 1e-5))
@@ -303,7 +326,7 @@ static int check_update(dTriMeshDataID data, mesh *m)
     dTriMeshDataID fresh = dGeomTriMeshDataCreate();
     build_on(fresh, m);
     int fail = check_same_derived(data, fresh) || check_tree_fits(data) ||
-               check_features_by_rule(data);
+               check_leaf_faces(data) || check_features_by_rule(data);
     dGeomTriMeshDataDestroy(fresh);
     return fail;
 }

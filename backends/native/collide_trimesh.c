@@ -40,6 +40,7 @@ void dxTriLoad(const dxTriMeshData *d, int t, dxTriOwn *out)
     out->t.index = t;
     out->t.v = (const dReal(*)[3])out->v;
     out->t.n = out->n;
+    out->t.coplanar = 0;
 }
 
 static dReal dist2(const dReal a[3], const dReal b[3])
@@ -655,15 +656,16 @@ static inline int tri_off_box_f(const float *fb, const off_box_f *f)
 // float box from the data's leaf_boxes against fb, the vertices' exact
 // test only where that cannot say), then one whose height does not pass
 // and a degenerate one (a zero normal); the rest go to the test with
-// their vertices and normal where the data keeps them. Those that touch
+// their vertices, index and normal read from the leaf-order copies
+// (leaf_vertices, leaf_faces: nothing through order[]). Those that touch
 // are listed (add_hit) if hits is not NULL.
 static void walk_leaves(dxTriQuery *q, const int *leaf, int n, const off_box *b,
                         const off_box_f *fb, dReal reach, dxTriTest *test, int *hits)
 {
     const dxTriMeshData *d = q->data;
-    const dReal *lv = d->leaf_vertices, *normal = d->normal;
+    const dReal *lv = d->leaf_vertices;
     const float *boxes = d->leaf_boxes;
-    const int *order = d->order;
+    const dxTriLeafFace *faces = d->leaf_faces;
     for (int i = 0; i < n; i++) {
         const dxTriMeshNode *node = &d->nodes[leaf[i] >> 2];
         const int first = node->first[leaf[i] & 3], end = first + node->count[leaf[i] & 3];
@@ -672,8 +674,10 @@ static void walk_leaves(dxTriQuery *q, const int *leaf, int n, const off_box *b,
             if (off == 1) continue;
             const dReal *v = lv + 9 * j;
             if (off == 2 && tri_off_box(v, b)) continue;
-            const int t = order[j];
-            dxTri tri = { .index = t, .v = (const dReal(*)[3])v, .n = normal + 3 * t };
+            const dxTriLeafFace *f = &faces[j];
+            const int t = f->index;
+            dxTri tri = { .index = t, .v = (const dReal(*)[3])v, .n = f->n,
+                          .coplanar = f->coplanar | DX_TRI_COPLANAR_KNOWN };
             if (!height_passes(q, &tri, reach)) continue;
             // A degenerate triangle's height is 0 (or NaN): only then is its
             // normal looked at.
@@ -927,13 +931,17 @@ static int clip_polygon(const dReal *const *pt, const int *tp, int n, const dRea
 }
 
 // Whether t's edge k joins two coplanar faces (an edge only of the
-// triangulation, not of the surface).
+// triangulation, not of the surface). A walk's triangle carries the
+// answer of the neighbour's normal (the same sum on the same numbers, made
+// with the data), so that its prism does not wait on the neighbour's index
+// and then its normal, both in the user's order.
 static int flat_edge(const dxTriQuery *q, const dxTri *t, int k)
 {
     if (!q->data) return 0;
     if (dxTriMeshFeatures(q->data, t->index) & (DX_TRI_EDGE_FEATURE << k)) return 0;
+    if (t->coplanar & DX_TRI_COPLANAR_KNOWN) return (int)(t->coplanar >> k & 1);
     int u = q->data->neighbour[3 * t->index + k];
-    return u >= 0 && dx_dot(t->n, q->data->normal + 3 * u) > 1 - 10 * DX_COLLIDE_EPS;
+    return u >= 0 && dx_dot(t->n, q->data->normal + 3 * u) > DX_TRI_COPLANAR_COS;
 }
 
 void dxTriPrismInit(const dxTriQuery *q, const dxTri *t, dxTriPrism *p)

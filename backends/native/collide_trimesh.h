@@ -100,7 +100,11 @@ typedef struct dxTri {
     const dReal (*v)[3];   // its three vertices
     const dReal *n;
     dReal h;   // the height of the other geom's position above its plane (the walk's)
+    // DX_TRI_COPLANAR_KNOWN with the data's dxTriLeafFace.coplanar bits (the
+    // walk's triangles), or 0: not known (dxTriPrismInit asks the data).
+    unsigned coplanar;
 } dxTri;
+enum { DX_TRI_COPLANAR_KNOWN = 8 };
 
 // The height of p above triangle t's plane.
 static inline dReal dxTriHeight(const dxTri *t, const dReal p[3])
