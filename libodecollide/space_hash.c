@@ -197,8 +197,17 @@ static int geom_level(const dxHashSpace *hs, const dReal *aabb, int *level, int6
         if (need > L) L = need;
     }
     if (L > hs->maxlevel) return 0;
+    if (!cell_range(aabb, level_scale(L), lo, hi)) return 0;
+    // side is b - a rounded: a box a little longer than 2^L can have a side
+    // of 2^L and reach a third cell on an axis (a = -2^-53, b = 1 at level
+    // 0: cells -1, 0 and 1). One level up it touches at most two, all that
+    // place records.
+    if (hi[0] - lo[0] > 1 || hi[1] - lo[1] > 1 || hi[2] - lo[2] > 1) {
+        if (++L > hs->maxlevel) return 0;
+        if (!cell_range(aabb, level_scale(L), lo, hi)) return 0;
+    }
     *level = L;
-    return cell_range(aabb, level_scale(L), lo, hi);
+    return 1;
 }
 
 // The index of `level` in the sorted level list, inserted if new.
