@@ -26,7 +26,6 @@ typedef struct dxHullEdge {
 // no longer separates is simply not used, and any face is a valid guess.
 enum { DX_CONVEX_AXIS_CACHE = 8 };
 typedef struct dxHullAxisHint {
-    const void *other;
     double axis[3];               // in this hull's frame, if !touching
     int touching;                 // else: the face of this hull (side 0) or the other's,
     int side;                     // and a point of each that bounded the other axes
@@ -128,6 +127,9 @@ typedef struct dxConvex {
     double mean[3];               // the points' mean (the hull's centre, posed)
     double *plane_len;            // per plane: the length of its normal as given ...
     double *plane_dev;            // ... and how far below it its polygon's points reach
+    // The axis hints, hints[k] against the geom hint_other[k] (together in
+    // one cache line: a pair test looks its partner up among them first).
+    const void *hint_other[DX_CONVEX_AXIS_CACHE];
     dxHullAxisHint hints[DX_CONVEX_AXIS_CACHE];
     unsigned next_hint;           // the entry replaced next
     dxHullPose pose;

@@ -60,9 +60,11 @@ typedef struct hash_node {
     int level;
 } hash_node;
 
-// The geoms placed at one level are nodes[start .. start + count).
+// The geoms placed at one level are nodes[start .. start + count); 1 / (cell
+// size) there is scale.
 typedef struct hash_level {
     int level, start, count;
+    double scale;
 } hash_level;
 
 // What a geom of the space is recorded as.
@@ -195,8 +197,17 @@ static int geom_level(const dxHashSpace *hs, const dReal *aabb, int *level, int6
         if (need > L) L = need;
     }
     if (L > hs->maxlevel) return 0;
+    if (!cell_range(aabb, level_scale(L), lo, hi)) return 0;
+    // side is b - a rounded: a box a little longer than 2^L can have a side
+    // of 2^L and reach a third cell on an axis (a = -2^-53, b = 1 at level
+    // 0: cells -1, 0 and 1). One level up it touches at most two, all that
+    // place records.
+    if (hi[0] - lo[0] > 1 || hi[1] - lo[1] > 1 || hi[2] - lo[2] > 1) {
+        if (++L > hs->maxlevel) return 0;
+        if (!cell_range(aabb, level_scale(L), lo, hi)) return 0;
+    }
     *level = L;
-    return cell_range(aabb, level_scale(L), lo, hi);
+    return 1;
 }
 
 // The index of `level` in the sorted level list, inserted if new.
@@ -211,7 +222,7 @@ static int level_index(dxHashSpace *hs, int level)
     if (lo < hs->n_levels && hs->levels[lo].level == level) return lo;
     hs->levels = grow(hs->levels, &hs->levels_cap, hs->n_levels + 1, sizeof *hs->levels);
     memmove(&hs->levels[lo + 1], &hs->levels[lo], (size_t)(hs->n_levels - lo) * sizeof *hs->levels);
-    hs->levels[lo] = (hash_level){ level, 0, 0 };
+    hs->levels[lo] = (hash_level){ level, 0, 0, level_scale(level) };
     hs->n_levels++;
     return lo;
 }
@@ -436,8 +447,10 @@ static inline void test_pair(dxGeom *a, dxGeom *b, void *data, dNearCallback *cb
 
 // g against the geoms of `level` recorded in cell c (g's lowest-cell bits
 // there: lowest).
-static void query_cell(const dxHashSpace *hs, dxGeom *g, int level, const int64_t c[3],
-                       unsigned lowest, void *data, dNearCallback *cb)
+static inline __attribute__((always_inline)) void query_cell(const dxHashSpace *hs, dxGeom *g,
+                                                            int level, const int64_t c[3],
+                                                            unsigned lowest, void *data,
+                                                            dNearCallback *cb)
 {
     const dxHashEntry *en = hs->cells.entries;
     for (int e = dxHashCellsFind(&hs->cells, level, c); e >= 0; e = en[e].next)
@@ -446,19 +459,20 @@ static void query_cell(const dxHashSpace *hs, dxGeom *g, int level, const int64_
 
 // g against the placed geoms of levels[first ..]: through the cells of each
 // level that g's AABB touches, or one by one when those cells outnumber the
-// level's geoms (a big g against small geoms).
+// level's geoms (a big g against small geoms). One cell never outnumbers
+// them (a level lists at least one geom).
 static void query_levels(const dxHashSpace *hs, dxGeom *g, int first, void *data,
                          dNearCallback *cb)
 {
     for (int li = first; li < hs->n_levels; li++) {
         const hash_level *lv = &hs->levels[li];
         int64_t lo[3], hi[3];
-        if (cell_range(g->aabb, level_scale(lv->level), lo, hi) &&
-            cell_count(lo, hi) <= lv->count) {
-            if (lo[0] == hi[0] && lo[1] == hi[1] && lo[2] == hi[2]) {   // the common case
-                query_cell(hs, g, lv->level, lo, ALL_AXES, data, cb);
-                continue;
-            }
+        const int inside = cell_range(g->aabb, lv->scale, lo, hi);
+        if (inside && lo[0] == hi[0] && lo[1] == hi[1] && lo[2] == hi[2]) {   // the common case
+            query_cell(hs, g, lv->level, lo, ALL_AXES, data, cb);
+            continue;
+        }
+        if (inside && cell_count(lo, hi) <= lv->count) {
             for (int64_t i = lo[0]; i <= hi[0]; i++)
                 for (int64_t j = lo[1]; j <= hi[1]; j++)
                     for (int64_t k = lo[2]; k <= hi[2]; k++) {

@@ -387,11 +387,42 @@ static int test_geom_shrinking_after_minlevel_lowered_orders_as_fresh(void)
     return 0;
 }
 
+static int test_box_reaching_a_third_cell_goes_a_level_up(void)
+{
+    // A sphere of radius 1/2 + 2^-53 at (1/2, 1/2, 1/2) has the box
+    // [-2^-53, 1] on every axis (1/2 + r rounds to 1) and a side that rounds
+    // to 1 = 2^0; at level 0 it would touch cells -1, 0 and 1 on each axis,
+    // 27 cells where a geom has room for 8 entries (the neighbours' entries
+    // were overwritten, and the array overrun). It goes to level 1 and meets
+    // its neighbours like any geom, in the order of a space made afresh.
+    // (In single precision the radius rounds to 1/2: two cells, the same
+    // checks.)
+    rng_state = 11;
+    dSpaceID s = dHashSpaceCreate(0);
+    dHashSpaceSetLevels(s, -3, 10);
+    dGeomID big = dCreateSphere(s, REAL(0.5) + (dReal)0x1p-53);   // first: slot 0
+    number(big, 0);
+    dGeomSetPosition(big, REAL(0.5), REAL(0.5), REAL(0.5));
+    for (int i = 1; i <= 40; i++) {
+        dGeomID g = dCreateSphere(s, REAL(0.1));
+        number(g, i);
+        dGeomSetPosition(g, (dReal)rnd(-0.2, 1.2), (dReal)rnd(-0.2, 1.2), (dReal)rnd(-0.2, 1.2));
+    }
+    for (int step = 1; step <= 3; step++) {
+        if (check_collide(s)) return 1;
+        if (check_order_is_fresh(s, -3, 10)) return 1;
+        dGeomSetPosition(dSpaceGetGeom(s, step), REAL(0.5), REAL(0.5), REAL(0.1) * step);
+    }
+    dSpaceDestroy(s);
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_random_edits_find_the_brute_force_pairs_every_step),
     TEST_CASE(test_pair_order_depends_only_on_the_geoms),
     TEST_CASE(test_geoms_changing_cells_allocate_nothing_once_warm),
     TEST_CASE(test_levels_changed_by_the_callback_take_effect_after_it),
     TEST_CASE(test_geom_shrinking_after_minlevel_lowered_orders_as_fresh),
+    TEST_CASE(test_box_reaching_a_third_cell_goes_a_level_up),
     TEST_END
 };

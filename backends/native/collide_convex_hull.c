@@ -875,7 +875,7 @@ static void put(dContactGeom *out, int i, int skip, const double p[3], const dou
 static dxHullAxisHint *find_hint(dx_hull *h, const void *other)
 {
     for (int k = 0; k < DX_CONVEX_AXIS_CACHE; k++)
-        if (h->convex->hints[k].other == other) return &h->convex->hints[k];
+        if (h->convex->hint_other[k] == other) return &h->convex->hints[k];
     return NULL;
 }
 
@@ -884,9 +884,10 @@ static dxHullAxisHint *find_hint(dx_hull *h, const void *other)
 static dxHullAxisHint *hint_entry(dx_hull *h, dxHullAxisHint *e, const void *other)
 {
     if (!e) {
-        e = &h->convex->hints[h->convex->next_hint];
-        h->convex->next_hint = (h->convex->next_hint + 1) % DX_CONVEX_AXIS_CACHE;
-        e->other = other;
+        const unsigned k = h->convex->next_hint;
+        e = &h->convex->hints[k];
+        h->convex->hint_other[k] = other;
+        h->convex->next_hint = (k + 1) % DX_CONVEX_AXIS_CACHE;
     }
     return e;
 }
