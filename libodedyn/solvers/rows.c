@@ -296,12 +296,33 @@ void dxIslandPrepare(struct dxWorld *w, dxArena *a, const dxIsland *is, dReal gy
     dxIslandPrepareAt(w, is, gyro_h, inv_mass, DX_ARENA_ARRAY(a, dReal, 12 * is->nb), out);
 }
 
+// dxIslandPrepareAt asks for the lines of the body this many places ahead in
+// the island while it works on the current one: the bodies lie far apart, in
+// an order the hardware prefetchers cannot follow, and since the island walk
+// only their first line is in the cache (two thirds of the pass's time waited
+// on the first read of each body's mass in ragdolls).
+#define PREPARE_AHEAD 4
+
+// Ask for the lines of body b that the pass reads: from its mass to its
+// gyroscopic fields.
+static inline void prefetch_prepared_body(const struct dxBody *b)
+{
+#if defined(__GNUC__)
+    const char *p = (const char *)&b->mass, *end = (const char *)(&b->gyro_pending + 1);
+    for (; p < end; p += 64) __builtin_prefetch(p);
+    __builtin_prefetch(end - 1);
+#else
+    (void)b;
+#endif
+}
+
 void dxIslandPrepareAt(struct dxWorld *w, const dxIsland *is, dReal gyro_h, dReal *inv_mass,
                        dReal *inv_inertia, dxIslandBodies *out)
 {
     out->inv_mass = inv_mass;
     out->inv_inertia = inv_inertia;
     for (int i = 0; i < is->nb; i++) {
+        if (i + PREPARE_AHEAD < is->nb) prefetch_prepared_body(is->bodies[i + PREPARE_AHEAD]);
         struct dxBody *b = is->bodies[i];
         b->tag = i;
         out->inv_mass[i] = b->inv_mass;
