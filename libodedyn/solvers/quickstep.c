@@ -689,6 +689,7 @@ static void finish_island(const dxIsland *is, const dxIslandBodies *bd, const dR
             prefetch_span(ahead->lvel, (size_t)((const char *)(ahead->torque + 3) -
                                                 (const char *)ahead->lvel));
             qs_prefetch(ahead->force);
+            qs_prefetch(&ahead->flags);   // dxBodyMove's first read (nearly all its time)
         }
         struct dxBody *body = is->bodies[b];
         const dReal *c = fc + 6 * b, *I = bd->inv_inertia + 12 * b, *t = body->torque;
