@@ -519,61 +519,75 @@ static void keep_hit(ray_hits *h, int max, dReal dist, int tri)
     h->raw[k].tri = tri;
 }
 
-// Stack the slots of nodes[i] that the ray enters within limit (rounded
-// up to a float), the farthest first (so the nearest is walked first), with
-// where it enters, above stack[top - 1]: the new top. (The top is a value,
-// not a pointer: through a pointer each store to the stack would reload it.)
-// One slot or two (most nodes deep in the tree) without the insertion sort;
-// ties in slot order. The test is the plane test when `planes` (a constant
-// of each inlined walk), the general one otherwise; `built` as
-// prefetch_slot's.
-static inline __attribute__((always_inline)) int
-push_slots(const dxTriMeshData *d, int i, const ray_lanes *r, const ray_planes *rp,
-           const int planes, const int built, float limit, int *stack, float *entry, int top)
+// A slot the walk visits: the inner node at nodes[first] (count 0) or the
+// leaf of count triangles from leaf-order first; count -1: none.
+typedef struct ray_slot {
+    int first, count;
+} ray_slot;
+
+// What visit_node leaves for the walk: the slot to visit at once (the
+// nearest one the ray enters, or none) and the stack's new top.
+typedef struct ray_next {
+    ray_slot slot;
+    int top;
+} ray_next;
+
+// The slots of nodes[i] that the ray enters within limit_up (the limit
+// rounded up to a float): the nearest is visited at once, unless it lies
+// beyond limit (as a popped slot would be skipped), and the others are
+// stacked above stack[top - 1], the farthest first, with where the ray
+// enters them. This is the order of pushing every slot and popping the top
+// at once, without the push and the pop. One slot or two (most nodes deep
+// in the tree) without branches on their number or order (j1 is j0 when
+// one, and the slot stored above the top is not counted); ties in slot
+// order. The test is the plane test when `planes` (a constant of each
+// inlined walk), the general one otherwise; `built` as prefetch_slot's.
+// (The top is a value, not a pointer: through a pointer each store to the
+// stack would reload it.)
+static inline __attribute__((always_inline)) ray_next
+visit_node(const dxTriMeshData *d, int i, const ray_lanes *r, const ray_planes *rp,
+           const int planes, const int built, dReal limit, float limit_up, ray_slot *stack,
+           float *entry, int top)
 {
     const dxTriMeshNode *node = &d->nodes[i];
     float enter[4];
-    const unsigned m = planes ? ray_slots_planes(rp, node, limit, enter)
-                              : ray_slots(r, node, limit, enter);
-    if (!m) return top;
+    const unsigned m = planes ? ray_slots_planes(rp, node, limit_up, enter)
+                              : ray_slots(r, node, limit_up, enter);
+    ray_next next = { { 0, -1 }, top };
+    if (!m) return next;
     const int j0 = __builtin_ctz(m);
-    prefetch_slot(d, node, j0, built);
     const unsigned rest = m & (m - 1);
-    if (!rest) {
-        stack[top] = 4 * i + j0;
-        entry[top] = enter[j0];
-        return top + 1;
-    }
-    const int j1 = __builtin_ctz(rest);
-    prefetch_slot(d, node, j1, built);
+    int near;
     if (!(rest & (rest - 1))) {
-        const int near = enter[j1] < enter[j0] ? j1 : j0, far = j0 + j1 - near;
-        stack[top] = 4 * i + far;
+        const int j1 = 31 - __builtin_clz(m);
+        near = enter[j1] < enter[j0] ? j1 : j0;
+        const int far = j0 + j1 - near;
+        prefetch_slot(d, node, far, built);
+        if (rest) prefetch_slot(d, node, near, built);
+        stack[top] = (ray_slot){ node->first[far], node->count[far] };
         entry[top] = enter[far];
-        stack[top + 1] = 4 * i + near;
-        entry[top + 1] = enter[near];
-        return top + 2;
-    }
-    int sorted[4] = { j0, j1 }, n = 2;
-    if (enter[j1] < enter[j0]) {
-        sorted[0] = j1;
-        sorted[1] = j0;
-    }
-    for (unsigned b = rest & (rest - 1); b; b &= b - 1) {
-        int j = __builtin_ctz(b), k = n++;   // insertion by entry, ties in slot order
-        prefetch_slot(d, node, j, built);
-        while (k > 0 && enter[sorted[k - 1]] > enter[j]) {
-            sorted[k] = sorted[k - 1];
-            k--;
+        next.top = top + (rest != 0);
+    } else {
+        int sorted[4], n = 0;
+        for (unsigned b = m; b; b &= b - 1) {
+            int j = __builtin_ctz(b), k = n++;   // insertion by entry, ties in slot order
+            prefetch_slot(d, node, j, built);
+            while (k > 0 && enter[sorted[k - 1]] > enter[j]) {
+                sorted[k] = sorted[k - 1];
+                k--;
+            }
+            sorted[k] = j;
         }
-        sorted[k] = j;
+        while (n > 1) {
+            const int j = sorted[--n];
+            stack[top] = (ray_slot){ node->first[j], node->count[j] };
+            entry[top++] = enter[j];
+        }
+        near = sorted[0];
+        next.top = top;
     }
-    while (n > 0) {
-        int j = sorted[--n];
-        stack[top] = 4 * i + j;
-        entry[top++] = enter[j];
-    }
-    return top;
+    if (!(enter[near] > limit)) next.slot = (ray_slot){ node->first[near], node->count[near] };
+    return next;
 }
 
 // A crossing of the leaf-order triangle j at dist (barycentric bu, bv):
@@ -611,21 +625,29 @@ walk(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], const ray_lanes
     const dxTriMesh *m = (const dxTriMesh *)o1;
     const dxRay *ray = (const dxRay *)o2;
     const dxTriMeshData *d = m->data;
-    // Each slot on the stack (node * 4 + slot) with the distance at which
-    // the ray enters it: popped beyond the farthest hit kept, it is skipped
-    // untested. A node pushes at most 4 and the four-way depth is under 17.
-    int stack[128], top = 0;
+    // The slots stacked to visit later with the distance at which the ray
+    // enters each: popped beyond the farthest hit kept, one is skipped
+    // untested. A node stacks at most 3 and the four-way depth is under 17.
+    ray_slot stack[128];
     float entry[128];
     dReal limit = ray->length;   // the farthest hit kept once `max` are
     float limit_up = dxFloatAbove(limit);
-    top = push_slots(d, 0, r, rp, planes, avx2, limit_up, stack, entry, top);
-    while (top > 0) {
-        top--;
-        if (entry[top] > limit) continue;
-        const dxTriMeshNode *node = &d->nodes[stack[top] >> 2];
-        int slot = stack[top] & 3, first = node->first[slot];
-        if (node->count[slot] == 0) {
-            top = push_slots(d, first, r, rp, planes, avx2, limit_up, stack, entry, top);
+    ray_next next = visit_node(d, 0, r, rp, planes, avx2, limit, limit_up, stack, entry, 0);
+    ray_slot cur = next.slot;
+    int top = next.top;
+    for (;;) {
+        if (cur.count < 0) {
+            do {
+                if (top == 0) return;
+                top--;
+            } while (entry[top] > limit);
+            cur = stack[top];
+        }
+        const int first = cur.first;
+        if (cur.count == 0) {
+            next = visit_node(d, first, r, rp, planes, avx2, limit, limit_up, stack, entry, top);
+            cur = next.slot;
+            top = next.top;
             continue;
         }
         // Only the vertices are read until a hit (memory traffic is what a
@@ -633,7 +655,8 @@ walk(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], const ray_lanes
         // none: its arrays), two triangles at a time where SSE2 allows: the
         // triangle's index and normal, after. A hit beyond the limit could
         // not be kept.
-        int end = first + node->count[slot];
+        const int end = first + cur.count;
+        cur.count = -1;
 #if defined(DX_RAY_AVX2)
         if (avx2) {   // a leaf of the leaf copy: at most 4
             dReal dist[4], bu[4], bv[4];
