@@ -434,20 +434,17 @@ static inline __attribute__((always_inline)) void prefetch_bytes(const void *p, 
     __builtin_prefetch((const char *)p + size - 1);
 }
 
-// A leaf's vertices and its triangles' normals (1 <= count <= DX_TRI_LEAF_MAX:
-// a leaf of the built tree, the only kind with a leaf copy), each line as
-// prefetch_bytes and its normals' loop ask for, but without loops: an
-// offset or triangle past the leaf's last is clamped to its last, which
-// asks for a line again, not a line the leaf does not touch (the loops'
-// counts, 3 or 4, were branches a predictor missed).
-static inline __attribute__((always_inline)) void prefetch_leaf(const dxTriMeshData *d,
-                                                                int first, int count)
+// The normals of a leaf's triangles (1 <= count <= DX_TRI_LEAF_MAX: a
+// leaf of the built tree, the only kind with a leaf copy), asked for when
+// the walk comes to the leaf: a hit reads its normal through order[], two
+// misses in turn otherwise (the loads of order[] that address them ask for
+// its line, which the parent's span has asked for already). Without a
+// loop: a triangle past the leaf's last is clamped to its last, which asks
+// for a line again (the loop's count, 3 or 4, was a branch a predictor
+// missed).
+static inline __attribute__((always_inline)) void prefetch_normals(const dxTriMeshData *d,
+                                                                   int first, int count)
 {
-    const char *p = (const char *)(d->leaf_vertices + 9 * first);
-    const size_t last = 9 * sizeof(dReal) * (size_t)count - 1;
-    for (size_t k = 0; k < 9 * sizeof(dReal) * DX_TRI_LEAF_MAX; k += 64)
-        __builtin_prefetch(p + (k < last ? k : last));
-    __builtin_prefetch(p + last);
     for (int t = 0; t < DX_TRI_LEAF_MAX; t++) {
         const dReal *n = d->normal + 3 * d->order[first + (t < count ? t : count - 1)];
         __builtin_prefetch(n);
@@ -459,32 +456,40 @@ static inline __attribute__((always_inline)) void prefetch_leaf(const dxTriMeshD
 // its vertices and indices asked for with its node.
 enum { SPAN_AHEAD = 16 };
 
-// Ask for what a slot pushed on the stack will read when popped while
-// other slots are tested. An inner slot: its node, and a small subtree's
-// vertices and indices (node_span), a level before the walk reaches its
-// leaves. A leaf: its vertices, and its triangles' normals (a hit reads its
-// normal through order[]: two misses in turn otherwise; the loads of
-// order[] that address them ask for its line).
-// `built` (a constant of each inlined walk): the tree is known to have its
-// leaf copy and spans (made together), not looked at per slot. Inlined
-// always: GCC finds a function that only prefetches free of side effects
-// and drops the calls.
+// Ask for the vertices and indices of the triangles under nodes[i] if
+// they are few (node_span), when the walk comes to the node: they arrive
+// while the node and its leaves' nodes are read and tested (the leaves
+// under it read nothing else before a hit). The span's address needs only
+// i, so the request leaves with the node's own. `built` (a constant of
+// each inlined walk): the tree is known to have its leaf copy and spans
+// (made together), not looked at per node. Inlined always: GCC finds a
+// function that only prefetches free of side effects and drops the calls.
+static inline __attribute__((always_inline)) void prefetch_span(const dxTriMeshData *d, int i,
+                                                                const int built)
+{
+    if (!built && !d->node_span) return;
+    const int *span = d->node_span + 2 * i;
+    if (span[1] > SPAN_AHEAD) return;
+    prefetch_bytes(d->leaf_vertices + 9 * span[0], 9 * sizeof(dReal) * (size_t)span[1]);
+    prefetch_bytes(d->order + span[0], sizeof(int) * (size_t)span[1]);
+}
+
+// Ask for the first two lines a stacked slot's visit reads, while the
+// slots before it are walked: an inner slot's node (its two lines from a
+// line's start), a leaf's first vertices (its others came with its
+// parent's span when the parent's subtree was small) or, without a leaf
+// copy, its indices. The address is chosen without a branch (inner or
+// leaf follows the data).
 static inline __attribute__((always_inline)) void
 prefetch_slot(const dxTriMeshData *d, const dxTriMeshNode *node, int j, const int built)
 {
-    const int first = node->first[j], count = node->count[j];
-    if (count == 0) {
-        const char *child = (const char *)&d->nodes[first];   // two lines from a line's start
-        __builtin_prefetch(child);
-        __builtin_prefetch(child + 64);
-        if (!built && !d->node_span) return;
-        const int *span = d->node_span + 2 * first;
-        if (span[1] > SPAN_AHEAD) return;
-        prefetch_bytes(d->leaf_vertices + 9 * span[0], 9 * sizeof(dReal) * (size_t)span[1]);
-        prefetch_bytes(d->order + span[0], sizeof(int) * (size_t)span[1]);
-    } else if (built || d->leaf_vertices) {
-        prefetch_leaf(d, first, count);
-    }
+    const int first = node->first[j];
+    const char *inner = (const char *)&d->nodes[first];
+    const char *leaf = built || d->leaf_vertices ? (const char *)(d->leaf_vertices + 9 * first)
+                                                 : (const char *)(d->order + first);
+    const char *p = node->count[j] == 0 ? inner : leaf;
+    __builtin_prefetch(p);
+    __builtin_prefetch(p + 64);
 }
 
 // The hits kept so far, nearest first: in a local array when few are
@@ -550,6 +555,7 @@ visit_node(const dxTriMeshData *d, int i, const ray_lanes *r, const ray_planes *
            float *entry, int top)
 {
     const dxTriMeshNode *node = &d->nodes[i];
+    prefetch_span(d, i, built);
     float enter[4];
     const unsigned m = planes ? ray_slots_planes(rp, node, limit_up, enter)
                               : ray_slots(r, node, limit_up, enter);
@@ -563,7 +569,6 @@ visit_node(const dxTriMeshData *d, int i, const ray_lanes *r, const ray_planes *
         near = enter[j1] < enter[j0] ? j1 : j0;
         const int far = j0 + j1 - near;
         prefetch_slot(d, node, far, built);
-        if (rest) prefetch_slot(d, node, near, built);
         stack[top] = (ray_slot){ node->first[far], node->count[far] };
         entry[top] = enter[far];
         next.top = top + (rest != 0);
@@ -571,7 +576,6 @@ visit_node(const dxTriMeshData *d, int i, const ray_lanes *r, const ray_planes *
         int sorted[4], n = 0;
         for (unsigned b = m; b; b &= b - 1) {
             int j = __builtin_ctz(b), k = n++;   // insertion by entry, ties in slot order
-            prefetch_slot(d, node, j, built);
             while (k > 0 && enter[sorted[k - 1]] > enter[j]) {
                 sorted[k] = sorted[k - 1];
                 k--;
@@ -580,6 +584,7 @@ visit_node(const dxTriMeshData *d, int i, const ray_lanes *r, const ray_planes *
         }
         while (n > 1) {
             const int j = sorted[--n];
+            prefetch_slot(d, node, j, built);
             stack[top] = (ray_slot){ node->first[j], node->count[j] };
             entry[top++] = enter[j];
         }
@@ -657,6 +662,7 @@ walk(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], const ray_lanes
         // not be kept.
         const int end = first + cur.count;
         cur.count = -1;
+        if (avx2 || d->leaf_vertices) prefetch_normals(d, first, end - first);
 #if defined(DX_RAY_AVX2)
         if (avx2) {   // a leaf of the leaf copy: at most 4
             dReal dist[4], bu[4], bv[4];
