@@ -213,8 +213,8 @@ typedef struct ray_lanes {
 
 // The common ray as the plane test takes it. Per axis the node's plane it
 // enters by is known from the direction's sign (lo for a positive
-// component, hi for a negative one: byte offsets near[k], far[k] in a
-// node), and the crossing (P - s) / v of a plane P is taken as
+// component, hi for a negative one: byte offsets at[k] and at[3 + k] in
+// a node, a row of planes_at), and the crossing (P - s) / v of a plane P is taken as
 // P inv + c with inv = (float)(1 / v) and the start folded into
 // c_near = below(-s inv - slack), c_far = above(-s inv + slack) (in double,
 // then rounded outwards to float), the slack as ray_lanes' (64 2^-24 m |inv|
@@ -234,8 +234,28 @@ typedef struct ray_planes {
     _Alignas(16) float inv[3][4];
     _Alignas(16) float c_near[3][4];
     _Alignas(16) float c_far[3][4];
-    int near[3], far[3];
+    const int *at;
 } ray_planes;
+
+// Per direction's signs (bit k set for a positive component k) the byte
+// offsets in a node of the planes a ray enters by on each axis (lo's for
+// a positive component, hi's otherwise), then of those it leaves by: a
+// ray's row is chosen once, nothing is stored per axis.
+#define RAY_LO_AT(k) ((int)(offsetof(dxTriMeshNode, lo) + sizeof(float[4]) * (k)))
+#define RAY_HI_AT(k) ((int)(offsetof(dxTriMeshNode, hi) + sizeof(float[4]) * (k)))
+#define RAY_NEAR_AT(p, k) ((p) >> (k) & 1 ? RAY_LO_AT(k) : RAY_HI_AT(k))
+#define RAY_FAR_AT(p, k) ((p) >> (k) & 1 ? RAY_HI_AT(k) : RAY_LO_AT(k))
+#define RAY_PLANES_AT(p)                                                                       \
+    { RAY_NEAR_AT(p, 0), RAY_NEAR_AT(p, 1), RAY_NEAR_AT(p, 2),                                 \
+      RAY_FAR_AT(p, 0),  RAY_FAR_AT(p, 1),  RAY_FAR_AT(p, 2) }
+static const int planes_at[8][6] = { RAY_PLANES_AT(0), RAY_PLANES_AT(1), RAY_PLANES_AT(2),
+                                     RAY_PLANES_AT(3), RAY_PLANES_AT(4), RAY_PLANES_AT(5),
+                                     RAY_PLANES_AT(6), RAY_PLANES_AT(7) };
+#undef RAY_PLANES_AT
+#undef RAY_FAR_AT
+#undef RAY_NEAR_AT
+#undef RAY_HI_AT
+#undef RAY_LO_AT
 
 // Set the four lanes of a ray_lanes or ray_planes number.
 static inline void set_lanes(float lanes[4], float f)
@@ -284,6 +304,7 @@ static int ray_setup_planes(ray_planes *r, const dxTriMeshData *d, const dReal s
                             const dReal v[3])
 {
     double c_near[3], c_far[3];
+    int positive = 0;
     for (int k = 0; k < 3; k++) {
         const double vk = (double)v[k], sk = (double)s[k];
         if (!(fabs(vk) >= 1e-30)) return 0;
@@ -296,11 +317,9 @@ static int ray_setup_planes(ray_planes *r, const dxTriMeshData *d, const dReal s
         set_lanes(r->inv[k], inv);
         c_near[k] = c - slack;
         c_far[k] = c + slack;
-        const int lo_at = (int)(offsetof(dxTriMeshNode, lo) + sizeof(float[4]) * (size_t)k);
-        const int hi_at = (int)(offsetof(dxTriMeshNode, hi) + sizeof(float[4]) * (size_t)k);
-        r->near[k] = vk > 0 ? lo_at : hi_at;
-        r->far[k] = vk > 0 ? hi_at : lo_at;
+        positive |= (vk > 0) << k;
     }
+    r->at = planes_at[positive];
     // Rounded outwards to float, the three axes at once where SSE2 allows
     // (the rounding's side follows the data: as branches, a predictor's
     // misses).
@@ -320,6 +339,72 @@ static int ray_setup_planes(ray_planes *r, const dxTriMeshData *d, const dReal s
 #endif
     return 1;
 }
+
+#if defined(DX_RAY_AVX2)
+// dxFloatStep3 for the four lanes of x (in 256 bits): each float below
+// (up = 0) or above x, the same conversion, comparison and step per lane.
+__attribute__((target("avx2"))) static inline __m128 float_step4(__m256d x, int up)
+{
+    const __m128 f = _mm256_cvtpd_ps(x);
+    const __m256d g = _mm256_cvtps_pd(f);
+    const __m256d w = up ? _mm256_cmp_pd(g, x, _CMP_LT_OS) : _mm256_cmp_pd(g, x, _CMP_GT_OS);
+    // The lanes whose float is on the wrong side of x, as 32-bit masks.
+    const __m128i wrong = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(
+        _mm256_castpd_si256(w), _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6)));
+    // Up: +1 for a positive float, -1 for a negative one (down: the opposite).
+    const __m128i bits = _mm_castps_si128(f);
+    const __m128i step = _mm_and_si128(wrong, _mm_or_si128(_mm_srai_epi32(bits, 31),
+                                                           _mm_set1_epi32(1)));
+    return _mm_castsi128_ps(up ? _mm_add_epi32(bits, step) : _mm_sub_epi32(bits, step));
+}
+
+// x[0], x[1], x[2] and a zero in the lanes of 256 bits.
+__attribute__((target("avx2"))) static inline __m256d load3(const double x[3])
+{
+    return _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(x)), _mm_load_sd(x + 2), 1);
+}
+
+// ray_setup_planes with the three axes in the lanes of 256-bit registers
+// (lane 3 a zero start and direction, unused): the same operations per
+// axis, so the same numbers, with one division, no branch per axis and
+// one test of the failing cases. The direction's components too small for
+// the plane test are divided as 1 (their results unused) so that no lane
+// divides by zero where the scalar set-up returns first.
+__attribute__((target("avx2"))) static inline int
+ray_setup_planes_avx2(ray_planes *r, const dxTriMeshData *d, const dReal s[3], const dReal v[3])
+{
+    const __m256d sign = _mm256_set1_pd(-0.0), one = _mm256_set1_pd(1);
+    const __m256d vv = load3(v), sv = load3(s);
+    const __m256d lo = _mm256_andnot_pd(sign, load3(d->lo));
+    const __m256d hi = _mm256_andnot_pd(sign, load3(d->hi));
+    const __m256d m = _mm256_max_pd(_mm256_andnot_pd(sign, sv), _mm256_max_pd(lo, hi));
+    const __m256d tiny = _mm256_cmp_pd(_mm256_andnot_pd(sign, vv), _mm256_set1_pd(1e-30),
+                                       _CMP_NGE_UQ);
+    const __m128 invf = _mm256_cvtpd_ps(_mm256_div_pd(one, _mm256_blendv_pd(vv, one, tiny)));
+    const __m256d inv = _mm256_cvtps_pd(invf);
+    const __m256d reach = _mm256_mul_pd(m, _mm256_andnot_pd(sign, inv));
+    const __m256d far_out = _mm256_cmp_pd(reach, _mm256_set1_pd(0x1p64), _CMP_NLE_UQ);
+    if (_mm256_movemask_pd(_mm256_or_pd(tiny, far_out)) & 7) return 0;
+    const __m256d slack = _mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(32 * (double)FLT_EPSILON),
+                                                      reach),
+                                        _mm256_set1_pd(FLT_MIN));
+    const __m256d c = _mm256_mul_pd(_mm256_xor_pd(sv, sign), inv);
+    const __m128 below = float_step4(_mm256_sub_pd(c, slack), 0);
+    const __m128 above = float_step4(_mm256_add_pd(c, slack), 1);
+    _mm_store_ps(r->inv[0], _mm_permute_ps(invf, 0x00));
+    _mm_store_ps(r->inv[1], _mm_permute_ps(invf, 0x55));
+    _mm_store_ps(r->inv[2], _mm_permute_ps(invf, 0xaa));
+    _mm_store_ps(r->c_near[0], _mm_permute_ps(below, 0x00));
+    _mm_store_ps(r->c_near[1], _mm_permute_ps(below, 0x55));
+    _mm_store_ps(r->c_near[2], _mm_permute_ps(below, 0xaa));
+    _mm_store_ps(r->c_far[0], _mm_permute_ps(above, 0x00));
+    _mm_store_ps(r->c_far[1], _mm_permute_ps(above, 0x55));
+    _mm_store_ps(r->c_far[2], _mm_permute_ps(above, 0xaa));
+    const __m256d positive = _mm256_cmp_pd(vv, _mm256_setzero_pd(), _CMP_GT_OQ);
+    r->at = planes_at[_mm256_movemask_pd(positive) & 7];
+    return 1;
+}
+#endif
 
 // Which of the node's slots the ray enters within [0, limit]: bit j set,
 // and enter[j], at most where it enters. Per axis the slab's crossings
@@ -360,8 +445,8 @@ static inline unsigned ray_slots_planes(const ray_planes *r, const dxTriMeshNode
     __m128 t0 = _mm_setzero_ps(), t1 = _mm_set1_ps(limit);
     for (int k = 0; k < 3; k++) {
         const __m128 inv = _mm_load_ps(r->inv[k]);
-        const __m128 near = _mm_mul_ps(_mm_load_ps((const float *)(b + r->near[k])), inv);
-        const __m128 far = _mm_mul_ps(_mm_load_ps((const float *)(b + r->far[k])), inv);
+        const __m128 near = _mm_mul_ps(_mm_load_ps((const float *)(b + r->at[k])), inv);
+        const __m128 far = _mm_mul_ps(_mm_load_ps((const float *)(b + r->at[3 + k])), inv);
         t0 = _mm_max_ps(t0, _mm_add_ps(near, _mm_load_ps(r->c_near[k])));
         t1 = _mm_min_ps(t1, _mm_add_ps(far, _mm_load_ps(r->c_far[k])));
     }
@@ -403,7 +488,7 @@ static inline unsigned ray_slots_planes(const ray_planes *r, const dxTriMeshNode
     const char *b = (const char *)node;
     float t0[4] = { 0, 0, 0, 0 }, t1[4] = { limit, limit, limit, limit };
     for (int k = 0; k < 3; k++) {
-        const float *pn = (const float *)(b + r->near[k]), *pf = (const float *)(b + r->far[k]);
+        const float *pn = (const float *)(b + r->at[k]), *pf = (const float *)(b + r->at[3 + k]);
         for (int j = 0; j < 4; j++) {
             float near = pn[j] * r->inv[k][j] + r->c_near[k][j];
             float far = pf[j] * r->inv[k][j] + r->c_far[k][j];
@@ -708,13 +793,17 @@ walk(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], const ray_lanes
 }
 
 #if defined(DX_RAY_AVX2)
-// The walk with the plane test and a leaf's four triangles at once, all of
-// it in AVX2 code (no FMA: the same bits), for a tree with its leaf copy.
-__attribute__((target("avx2"))) static void
-walk_planes_avx2(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], const ray_planes *rp,
-                 int max, ray_hits *h)
+// The walk with the plane test and a leaf's four triangles at once, its
+// set-up included, all of it in AVX2 code (no FMA: the same bits), for a
+// tree with its leaf copy: 0 if the ray needs the general test.
+__attribute__((target("avx2"))) static int
+walk_planes_avx2(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], int max,
+                 ray_hits *h)
 {
-    walk(o1, o2, s, v, NULL, rp, 1, 1, max, h);
+    ray_planes planes;
+    if (!ray_setup_planes_avx2(&planes, ((const dxTriMesh *)o1)->data, s, v)) return 0;
+    walk(o1, o2, s, v, NULL, &planes, 1, 1, max, h);
+    return 1;
 }
 #endif
 
@@ -745,15 +834,20 @@ collide_ray(dxGeom *o1, dxGeom *o2, const int ray_first, int flags, dContactGeom
         dxTriScratchAddRaw(scratch, max);
         hits.raw = scratch->raw;
     }
-    ray_planes planes;
-    if (ray_setup_planes(&planes, d, s, v)) {
+    int walked = 0;
 #if defined(DX_RAY_AVX2)
-        if (d->leaf_vertices && __builtin_cpu_supports("avx2"))
-            walk_planes_avx2(o1, o2, s, v, &planes, max, h);
-        else
+    if (d->leaf_vertices && __builtin_cpu_supports("avx2"))
+        walked = walk_planes_avx2(o1, o2, s, v, max, h);
+    else
 #endif
+    {
+        ray_planes planes;
+        if (ray_setup_planes(&planes, d, s, v)) {
             walk(o1, o2, s, v, NULL, &planes, 1, 0, max, h);
-    } else {
+            walked = 1;
+        }
+    }
+    if (!walked) {
         ray_lanes lanes;
         ray_setup_lanes(&lanes, d, s, v, ray->length);
         walk(o1, o2, s, v, &lanes, NULL, 0, 0, max, h);
