@@ -213,8 +213,8 @@ typedef struct ray_lanes {
 
 // The common ray as the plane test takes it. Per axis the node's plane it
 // enters by is known from the direction's sign (lo for a positive
-// component, hi for a negative one: byte offsets near[k], far[k] in a
-// node), and the crossing (P - s) / v of a plane P is taken as
+// component, hi for a negative one: byte offsets at[k] and at[3 + k] in
+// a node, a row of planes_at), and the crossing (P - s) / v of a plane P is taken as
 // P inv + c with inv = (float)(1 / v) and the start folded into
 // c_near = below(-s inv - slack), c_far = above(-s inv + slack) (in double,
 // then rounded outwards to float), the slack as ray_lanes' (64 2^-24 m |inv|
@@ -234,8 +234,28 @@ typedef struct ray_planes {
     _Alignas(16) float inv[3][4];
     _Alignas(16) float c_near[3][4];
     _Alignas(16) float c_far[3][4];
-    int near[3], far[3];
+    const int *at;
 } ray_planes;
+
+// Per direction's signs (bit k set for a positive component k) the byte
+// offsets in a node of the planes a ray enters by on each axis (lo's for
+// a positive component, hi's otherwise), then of those it leaves by: a
+// ray's row is chosen once, nothing is stored per axis.
+#define RAY_LO_AT(k) ((int)(offsetof(dxTriMeshNode, lo) + sizeof(float[4]) * (k)))
+#define RAY_HI_AT(k) ((int)(offsetof(dxTriMeshNode, hi) + sizeof(float[4]) * (k)))
+#define RAY_NEAR_AT(p, k) ((p) >> (k) & 1 ? RAY_LO_AT(k) : RAY_HI_AT(k))
+#define RAY_FAR_AT(p, k) ((p) >> (k) & 1 ? RAY_HI_AT(k) : RAY_LO_AT(k))
+#define RAY_PLANES_AT(p)                                                                       \
+    { RAY_NEAR_AT(p, 0), RAY_NEAR_AT(p, 1), RAY_NEAR_AT(p, 2),                                 \
+      RAY_FAR_AT(p, 0),  RAY_FAR_AT(p, 1),  RAY_FAR_AT(p, 2) }
+static const int planes_at[8][6] = { RAY_PLANES_AT(0), RAY_PLANES_AT(1), RAY_PLANES_AT(2),
+                                     RAY_PLANES_AT(3), RAY_PLANES_AT(4), RAY_PLANES_AT(5),
+                                     RAY_PLANES_AT(6), RAY_PLANES_AT(7) };
+#undef RAY_PLANES_AT
+#undef RAY_FAR_AT
+#undef RAY_NEAR_AT
+#undef RAY_HI_AT
+#undef RAY_LO_AT
 
 // Set the four lanes of a ray_lanes or ray_planes number.
 static inline void set_lanes(float lanes[4], float f)
@@ -284,6 +304,7 @@ static int ray_setup_planes(ray_planes *r, const dxTriMeshData *d, const dReal s
                             const dReal v[3])
 {
     double c_near[3], c_far[3];
+    int positive = 0;
     for (int k = 0; k < 3; k++) {
         const double vk = (double)v[k], sk = (double)s[k];
         if (!(fabs(vk) >= 1e-30)) return 0;
@@ -296,11 +317,9 @@ static int ray_setup_planes(ray_planes *r, const dxTriMeshData *d, const dReal s
         set_lanes(r->inv[k], inv);
         c_near[k] = c - slack;
         c_far[k] = c + slack;
-        const int lo_at = (int)(offsetof(dxTriMeshNode, lo) + sizeof(float[4]) * (size_t)k);
-        const int hi_at = (int)(offsetof(dxTriMeshNode, hi) + sizeof(float[4]) * (size_t)k);
-        r->near[k] = vk > 0 ? lo_at : hi_at;
-        r->far[k] = vk > 0 ? hi_at : lo_at;
+        positive |= (vk > 0) << k;
     }
+    r->at = planes_at[positive];
     // Rounded outwards to float, the three axes at once where SSE2 allows
     // (the rounding's side follows the data: as branches, a predictor's
     // misses).
@@ -320,6 +339,72 @@ static int ray_setup_planes(ray_planes *r, const dxTriMeshData *d, const dReal s
 #endif
     return 1;
 }
+
+#if defined(DX_RAY_AVX2)
+// dxFloatStep3 for the four lanes of x (in 256 bits): each float below
+// (up = 0) or above x, the same conversion, comparison and step per lane.
+__attribute__((target("avx2"))) static inline __m128 float_step4(__m256d x, int up)
+{
+    const __m128 f = _mm256_cvtpd_ps(x);
+    const __m256d g = _mm256_cvtps_pd(f);
+    const __m256d w = up ? _mm256_cmp_pd(g, x, _CMP_LT_OS) : _mm256_cmp_pd(g, x, _CMP_GT_OS);
+    // The lanes whose float is on the wrong side of x, as 32-bit masks.
+    const __m128i wrong = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(
+        _mm256_castpd_si256(w), _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6)));
+    // Up: +1 for a positive float, -1 for a negative one (down: the opposite).
+    const __m128i bits = _mm_castps_si128(f);
+    const __m128i step = _mm_and_si128(wrong, _mm_or_si128(_mm_srai_epi32(bits, 31),
+                                                           _mm_set1_epi32(1)));
+    return _mm_castsi128_ps(up ? _mm_add_epi32(bits, step) : _mm_sub_epi32(bits, step));
+}
+
+// x[0], x[1], x[2] and a zero in the lanes of 256 bits.
+__attribute__((target("avx2"))) static inline __m256d load3(const double x[3])
+{
+    return _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(x)), _mm_load_sd(x + 2), 1);
+}
+
+// ray_setup_planes with the three axes in the lanes of 256-bit registers
+// (lane 3 a zero start and direction, unused): the same operations per
+// axis, so the same numbers, with one division, no branch per axis and
+// one test of the failing cases. The direction's components too small for
+// the plane test are divided as 1 (their results unused) so that no lane
+// divides by zero where the scalar set-up returns first.
+__attribute__((target("avx2"))) static inline int
+ray_setup_planes_avx2(ray_planes *r, const dxTriMeshData *d, const dReal s[3], const dReal v[3])
+{
+    const __m256d sign = _mm256_set1_pd(-0.0), one = _mm256_set1_pd(1);
+    const __m256d vv = load3(v), sv = load3(s);
+    const __m256d lo = _mm256_andnot_pd(sign, load3(d->lo));
+    const __m256d hi = _mm256_andnot_pd(sign, load3(d->hi));
+    const __m256d m = _mm256_max_pd(_mm256_andnot_pd(sign, sv), _mm256_max_pd(lo, hi));
+    const __m256d tiny = _mm256_cmp_pd(_mm256_andnot_pd(sign, vv), _mm256_set1_pd(1e-30),
+                                       _CMP_NGE_UQ);
+    const __m128 invf = _mm256_cvtpd_ps(_mm256_div_pd(one, _mm256_blendv_pd(vv, one, tiny)));
+    const __m256d inv = _mm256_cvtps_pd(invf);
+    const __m256d reach = _mm256_mul_pd(m, _mm256_andnot_pd(sign, inv));
+    const __m256d far_out = _mm256_cmp_pd(reach, _mm256_set1_pd(0x1p64), _CMP_NLE_UQ);
+    if (_mm256_movemask_pd(_mm256_or_pd(tiny, far_out)) & 7) return 0;
+    const __m256d slack = _mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(32 * (double)FLT_EPSILON),
+                                                      reach),
+                                        _mm256_set1_pd(FLT_MIN));
+    const __m256d c = _mm256_mul_pd(_mm256_xor_pd(sv, sign), inv);
+    const __m128 below = float_step4(_mm256_sub_pd(c, slack), 0);
+    const __m128 above = float_step4(_mm256_add_pd(c, slack), 1);
+    _mm_store_ps(r->inv[0], _mm_permute_ps(invf, 0x00));
+    _mm_store_ps(r->inv[1], _mm_permute_ps(invf, 0x55));
+    _mm_store_ps(r->inv[2], _mm_permute_ps(invf, 0xaa));
+    _mm_store_ps(r->c_near[0], _mm_permute_ps(below, 0x00));
+    _mm_store_ps(r->c_near[1], _mm_permute_ps(below, 0x55));
+    _mm_store_ps(r->c_near[2], _mm_permute_ps(below, 0xaa));
+    _mm_store_ps(r->c_far[0], _mm_permute_ps(above, 0x00));
+    _mm_store_ps(r->c_far[1], _mm_permute_ps(above, 0x55));
+    _mm_store_ps(r->c_far[2], _mm_permute_ps(above, 0xaa));
+    const __m256d positive = _mm256_cmp_pd(vv, _mm256_setzero_pd(), _CMP_GT_OQ);
+    r->at = planes_at[_mm256_movemask_pd(positive) & 7];
+    return 1;
+}
+#endif
 
 // Which of the node's slots the ray enters within [0, limit]: bit j set,
 // and enter[j], at most where it enters. Per axis the slab's crossings
@@ -360,8 +445,8 @@ static inline unsigned ray_slots_planes(const ray_planes *r, const dxTriMeshNode
     __m128 t0 = _mm_setzero_ps(), t1 = _mm_set1_ps(limit);
     for (int k = 0; k < 3; k++) {
         const __m128 inv = _mm_load_ps(r->inv[k]);
-        const __m128 near = _mm_mul_ps(_mm_load_ps((const float *)(b + r->near[k])), inv);
-        const __m128 far = _mm_mul_ps(_mm_load_ps((const float *)(b + r->far[k])), inv);
+        const __m128 near = _mm_mul_ps(_mm_load_ps((const float *)(b + r->at[k])), inv);
+        const __m128 far = _mm_mul_ps(_mm_load_ps((const float *)(b + r->at[3 + k])), inv);
         t0 = _mm_max_ps(t0, _mm_add_ps(near, _mm_load_ps(r->c_near[k])));
         t1 = _mm_min_ps(t1, _mm_add_ps(far, _mm_load_ps(r->c_far[k])));
     }
@@ -403,7 +488,7 @@ static inline unsigned ray_slots_planes(const ray_planes *r, const dxTriMeshNode
     const char *b = (const char *)node;
     float t0[4] = { 0, 0, 0, 0 }, t1[4] = { limit, limit, limit, limit };
     for (int k = 0; k < 3; k++) {
-        const float *pn = (const float *)(b + r->near[k]), *pf = (const float *)(b + r->far[k]);
+        const float *pn = (const float *)(b + r->at[k]), *pf = (const float *)(b + r->at[3 + k]);
         for (int j = 0; j < 4; j++) {
             float near = pn[j] * r->inv[k][j] + r->c_near[k][j];
             float far = pf[j] * r->inv[k][j] + r->c_far[k][j];
@@ -434,20 +519,17 @@ static inline __attribute__((always_inline)) void prefetch_bytes(const void *p, 
     __builtin_prefetch((const char *)p + size - 1);
 }
 
-// A leaf's vertices and its triangles' normals (1 <= count <= DX_TRI_LEAF_MAX:
-// a leaf of the built tree, the only kind with a leaf copy), each line as
-// prefetch_bytes and its normals' loop ask for, but without loops: an
-// offset or triangle past the leaf's last is clamped to its last, which
-// asks for a line again, not a line the leaf does not touch (the loops'
-// counts, 3 or 4, were branches a predictor missed).
-static inline __attribute__((always_inline)) void prefetch_leaf(const dxTriMeshData *d,
-                                                                int first, int count)
+// The normals of a leaf's triangles (1 <= count <= DX_TRI_LEAF_MAX: a
+// leaf of the built tree, the only kind with a leaf copy), asked for when
+// the walk comes to the leaf: a hit reads its normal through order[], two
+// misses in turn otherwise (the loads of order[] that address them ask for
+// its line, which the parent's span has asked for already). Without a
+// loop: a triangle past the leaf's last is clamped to its last, which asks
+// for a line again (the loop's count, 3 or 4, was a branch a predictor
+// missed).
+static inline __attribute__((always_inline)) void prefetch_normals(const dxTriMeshData *d,
+                                                                   int first, int count)
 {
-    const char *p = (const char *)(d->leaf_vertices + 9 * first);
-    const size_t last = 9 * sizeof(dReal) * (size_t)count - 1;
-    for (size_t k = 0; k < 9 * sizeof(dReal) * DX_TRI_LEAF_MAX; k += 64)
-        __builtin_prefetch(p + (k < last ? k : last));
-    __builtin_prefetch(p + last);
     for (int t = 0; t < DX_TRI_LEAF_MAX; t++) {
         const dReal *n = d->normal + 3 * d->order[first + (t < count ? t : count - 1)];
         __builtin_prefetch(n);
@@ -459,32 +541,40 @@ static inline __attribute__((always_inline)) void prefetch_leaf(const dxTriMeshD
 // its vertices and indices asked for with its node.
 enum { SPAN_AHEAD = 16 };
 
-// Ask for what a slot pushed on the stack will read when popped while
-// other slots are tested. An inner slot: its node, and a small subtree's
-// vertices and indices (node_span), a level before the walk reaches its
-// leaves. A leaf: its vertices, and its triangles' normals (a hit reads its
-// normal through order[]: two misses in turn otherwise; the loads of
-// order[] that address them ask for its line).
-// `built` (a constant of each inlined walk): the tree is known to have its
-// leaf copy and spans (made together), not looked at per slot. Inlined
-// always: GCC finds a function that only prefetches free of side effects
-// and drops the calls.
+// Ask for the vertices and indices of the triangles under nodes[i] if
+// they are few (node_span), when the walk comes to the node: they arrive
+// while the node and its leaves' nodes are read and tested (the leaves
+// under it read nothing else before a hit). The span's address needs only
+// i, so the request leaves with the node's own. `built` (a constant of
+// each inlined walk): the tree is known to have its leaf copy and spans
+// (made together), not looked at per node. Inlined always: GCC finds a
+// function that only prefetches free of side effects and drops the calls.
+static inline __attribute__((always_inline)) void prefetch_span(const dxTriMeshData *d, int i,
+                                                                const int built)
+{
+    if (!built && !d->node_span) return;
+    const int *span = d->node_span + 2 * i;
+    if (span[1] > SPAN_AHEAD) return;
+    prefetch_bytes(d->leaf_vertices + 9 * span[0], 9 * sizeof(dReal) * (size_t)span[1]);
+    prefetch_bytes(d->order + span[0], sizeof(int) * (size_t)span[1]);
+}
+
+// Ask for the first two lines a stacked slot's visit reads, while the
+// slots before it are walked: an inner slot's node (its two lines from a
+// line's start), a leaf's first vertices (its others came with its
+// parent's span when the parent's subtree was small) or, without a leaf
+// copy, its indices. The address is chosen without a branch (inner or
+// leaf follows the data).
 static inline __attribute__((always_inline)) void
 prefetch_slot(const dxTriMeshData *d, const dxTriMeshNode *node, int j, const int built)
 {
-    const int first = node->first[j], count = node->count[j];
-    if (count == 0) {
-        const char *child = (const char *)&d->nodes[first];   // two lines from a line's start
-        __builtin_prefetch(child);
-        __builtin_prefetch(child + 64);
-        if (!built && !d->node_span) return;
-        const int *span = d->node_span + 2 * first;
-        if (span[1] > SPAN_AHEAD) return;
-        prefetch_bytes(d->leaf_vertices + 9 * span[0], 9 * sizeof(dReal) * (size_t)span[1]);
-        prefetch_bytes(d->order + span[0], sizeof(int) * (size_t)span[1]);
-    } else if (built || d->leaf_vertices) {
-        prefetch_leaf(d, first, count);
-    }
+    const int first = node->first[j];
+    const char *inner = (const char *)&d->nodes[first];
+    const char *leaf = built || d->leaf_vertices ? (const char *)(d->leaf_vertices + 9 * first)
+                                                 : (const char *)(d->order + first);
+    const char *p = node->count[j] == 0 ? inner : leaf;
+    __builtin_prefetch(p);
+    __builtin_prefetch(p + 64);
 }
 
 // The hits kept so far, nearest first: in a local array when few are
@@ -519,61 +609,75 @@ static void keep_hit(ray_hits *h, int max, dReal dist, int tri)
     h->raw[k].tri = tri;
 }
 
-// Stack the slots of nodes[i] that the ray enters within limit (rounded
-// up to a float), the farthest first (so the nearest is walked first), with
-// where it enters, above stack[top - 1]: the new top. (The top is a value,
-// not a pointer: through a pointer each store to the stack would reload it.)
-// One slot or two (most nodes deep in the tree) without the insertion sort;
-// ties in slot order. The test is the plane test when `planes` (a constant
-// of each inlined walk), the general one otherwise; `built` as
-// prefetch_slot's.
-static inline __attribute__((always_inline)) int
-push_slots(const dxTriMeshData *d, int i, const ray_lanes *r, const ray_planes *rp,
-           const int planes, const int built, float limit, int *stack, float *entry, int top)
+// A slot the walk visits: the inner node at nodes[first] (count 0) or the
+// leaf of count triangles from leaf-order first; count -1: none.
+typedef struct ray_slot {
+    int first, count;
+} ray_slot;
+
+// What visit_node leaves for the walk: the slot to visit at once (the
+// nearest one the ray enters, or none) and the stack's new top.
+typedef struct ray_next {
+    ray_slot slot;
+    int top;
+} ray_next;
+
+// The slots of nodes[i] that the ray enters within limit_up (the limit
+// rounded up to a float): the nearest is visited at once, unless it lies
+// beyond limit (as a popped slot would be skipped), and the others are
+// stacked above stack[top - 1], the farthest first, with where the ray
+// enters them. This is the order of pushing every slot and popping the top
+// at once, without the push and the pop. One slot or two (most nodes deep
+// in the tree) without branches on their number or order (j1 is j0 when
+// one, and the slot stored above the top is not counted); ties in slot
+// order. The test is the plane test when `planes` (a constant of each
+// inlined walk), the general one otherwise; `built` as prefetch_slot's.
+// (The top is a value, not a pointer: through a pointer each store to the
+// stack would reload it.)
+static inline __attribute__((always_inline)) ray_next
+visit_node(const dxTriMeshData *d, int i, const ray_lanes *r, const ray_planes *rp,
+           const int planes, const int built, dReal limit, float limit_up, ray_slot *stack,
+           float *entry, int top)
 {
     const dxTriMeshNode *node = &d->nodes[i];
+    prefetch_span(d, i, built);
     float enter[4];
-    const unsigned m = planes ? ray_slots_planes(rp, node, limit, enter)
-                              : ray_slots(r, node, limit, enter);
-    if (!m) return top;
+    const unsigned m = planes ? ray_slots_planes(rp, node, limit_up, enter)
+                              : ray_slots(r, node, limit_up, enter);
+    ray_next next = { { 0, -1 }, top };
+    if (!m) return next;
     const int j0 = __builtin_ctz(m);
-    prefetch_slot(d, node, j0, built);
     const unsigned rest = m & (m - 1);
-    if (!rest) {
-        stack[top] = 4 * i + j0;
-        entry[top] = enter[j0];
-        return top + 1;
-    }
-    const int j1 = __builtin_ctz(rest);
-    prefetch_slot(d, node, j1, built);
+    int near;
     if (!(rest & (rest - 1))) {
-        const int near = enter[j1] < enter[j0] ? j1 : j0, far = j0 + j1 - near;
-        stack[top] = 4 * i + far;
+        const int j1 = 31 - __builtin_clz(m);
+        near = enter[j1] < enter[j0] ? j1 : j0;
+        const int far = j0 + j1 - near;
+        prefetch_slot(d, node, far, built);
+        stack[top] = (ray_slot){ node->first[far], node->count[far] };
         entry[top] = enter[far];
-        stack[top + 1] = 4 * i + near;
-        entry[top + 1] = enter[near];
-        return top + 2;
-    }
-    int sorted[4] = { j0, j1 }, n = 2;
-    if (enter[j1] < enter[j0]) {
-        sorted[0] = j1;
-        sorted[1] = j0;
-    }
-    for (unsigned b = rest & (rest - 1); b; b &= b - 1) {
-        int j = __builtin_ctz(b), k = n++;   // insertion by entry, ties in slot order
-        prefetch_slot(d, node, j, built);
-        while (k > 0 && enter[sorted[k - 1]] > enter[j]) {
-            sorted[k] = sorted[k - 1];
-            k--;
+        next.top = top + (rest != 0);
+    } else {
+        int sorted[4], n = 0;
+        for (unsigned b = m; b; b &= b - 1) {
+            int j = __builtin_ctz(b), k = n++;   // insertion by entry, ties in slot order
+            while (k > 0 && enter[sorted[k - 1]] > enter[j]) {
+                sorted[k] = sorted[k - 1];
+                k--;
+            }
+            sorted[k] = j;
         }
-        sorted[k] = j;
+        while (n > 1) {
+            const int j = sorted[--n];
+            prefetch_slot(d, node, j, built);
+            stack[top] = (ray_slot){ node->first[j], node->count[j] };
+            entry[top++] = enter[j];
+        }
+        near = sorted[0];
+        next.top = top;
     }
-    while (n > 0) {
-        int j = sorted[--n];
-        stack[top] = 4 * i + j;
-        entry[top++] = enter[j];
-    }
-    return top;
+    if (!(enter[near] > limit)) next.slot = (ray_slot){ node->first[near], node->count[near] };
+    return next;
 }
 
 // A crossing of the leaf-order triangle j at dist (barycentric bu, bv):
@@ -611,21 +715,29 @@ walk(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], const ray_lanes
     const dxTriMesh *m = (const dxTriMesh *)o1;
     const dxRay *ray = (const dxRay *)o2;
     const dxTriMeshData *d = m->data;
-    // Each slot on the stack (node * 4 + slot) with the distance at which
-    // the ray enters it: popped beyond the farthest hit kept, it is skipped
-    // untested. A node pushes at most 4 and the four-way depth is under 17.
-    int stack[128], top = 0;
+    // The slots stacked to visit later with the distance at which the ray
+    // enters each: popped beyond the farthest hit kept, one is skipped
+    // untested. A node stacks at most 3 and the four-way depth is under 17.
+    ray_slot stack[128];
     float entry[128];
     dReal limit = ray->length;   // the farthest hit kept once `max` are
     float limit_up = dxFloatAbove(limit);
-    top = push_slots(d, 0, r, rp, planes, avx2, limit_up, stack, entry, top);
-    while (top > 0) {
-        top--;
-        if (entry[top] > limit) continue;
-        const dxTriMeshNode *node = &d->nodes[stack[top] >> 2];
-        int slot = stack[top] & 3, first = node->first[slot];
-        if (node->count[slot] == 0) {
-            top = push_slots(d, first, r, rp, planes, avx2, limit_up, stack, entry, top);
+    ray_next next = visit_node(d, 0, r, rp, planes, avx2, limit, limit_up, stack, entry, 0);
+    ray_slot cur = next.slot;
+    int top = next.top;
+    for (;;) {
+        if (cur.count < 0) {
+            do {
+                if (top == 0) return;
+                top--;
+            } while (entry[top] > limit);
+            cur = stack[top];
+        }
+        const int first = cur.first;
+        if (cur.count == 0) {
+            next = visit_node(d, first, r, rp, planes, avx2, limit, limit_up, stack, entry, top);
+            cur = next.slot;
+            top = next.top;
             continue;
         }
         // Only the vertices are read until a hit (memory traffic is what a
@@ -633,7 +745,9 @@ walk(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], const ray_lanes
         // none: its arrays), two triangles at a time where SSE2 allows: the
         // triangle's index and normal, after. A hit beyond the limit could
         // not be kept.
-        int end = first + node->count[slot];
+        const int end = first + cur.count;
+        cur.count = -1;
+        if (avx2 || d->leaf_vertices) prefetch_normals(d, first, end - first);
 #if defined(DX_RAY_AVX2)
         if (avx2) {   // a leaf of the leaf copy: at most 4
             dReal dist[4], bu[4], bv[4];
@@ -679,13 +793,17 @@ walk(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], const ray_lanes
 }
 
 #if defined(DX_RAY_AVX2)
-// The walk with the plane test and a leaf's four triangles at once, all of
-// it in AVX2 code (no FMA: the same bits), for a tree with its leaf copy.
-__attribute__((target("avx2"))) static void
-walk_planes_avx2(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], const ray_planes *rp,
-                 int max, ray_hits *h)
+// The walk with the plane test and a leaf's four triangles at once, its
+// set-up included, all of it in AVX2 code (no FMA: the same bits), for a
+// tree with its leaf copy: 0 if the ray needs the general test.
+__attribute__((target("avx2"))) static int
+walk_planes_avx2(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], int max,
+                 ray_hits *h)
 {
-    walk(o1, o2, s, v, NULL, rp, 1, 1, max, h);
+    ray_planes planes;
+    if (!ray_setup_planes_avx2(&planes, ((const dxTriMesh *)o1)->data, s, v)) return 0;
+    walk(o1, o2, s, v, NULL, &planes, 1, 1, max, h);
+    return 1;
 }
 #endif
 
@@ -716,15 +834,20 @@ collide_ray(dxGeom *o1, dxGeom *o2, const int ray_first, int flags, dContactGeom
         dxTriScratchAddRaw(scratch, max);
         hits.raw = scratch->raw;
     }
-    ray_planes planes;
-    if (ray_setup_planes(&planes, d, s, v)) {
+    int walked = 0;
 #if defined(DX_RAY_AVX2)
-        if (d->leaf_vertices && __builtin_cpu_supports("avx2"))
-            walk_planes_avx2(o1, o2, s, v, &planes, max, h);
-        else
+    if (d->leaf_vertices && __builtin_cpu_supports("avx2"))
+        walked = walk_planes_avx2(o1, o2, s, v, max, h);
+    else
 #endif
+    {
+        ray_planes planes;
+        if (ray_setup_planes(&planes, d, s, v)) {
             walk(o1, o2, s, v, NULL, &planes, 1, 0, max, h);
-    } else {
+            walked = 1;
+        }
+    }
+    if (!walked) {
         ray_lanes lanes;
         ray_setup_lanes(&lanes, d, s, v, ray->length);
         walk(o1, o2, s, v, &lanes, NULL, 0, 0, max, h);
