@@ -92,7 +92,6 @@ static void clear_derived(dxTriMeshData *d)
     d->features = NULL;
     d->order = NULL;
     d->leaf_vertices = NULL;
-    d->leaf_boxes = NULL;
     d->leaf_faces = NULL;
     d->tree_stamp = 0;
     d->nodes = NULL;

@@ -146,17 +146,20 @@ static inline void dxFloatBox(const dReal lo[3], const dReal hi[3], float lo_f[4
 #endif
 
 // What the colliders' walk reads of the triangle at leaf position j beside
-// its float box and vertices, in leaf order (leaf_faces[j]), so that none
-// of it waits for order[j] first: its index order[j], its normal (a copy
-// of normal[3 order[j]]) and, as bit k of coplanar, whether it has a
-// neighbour across edge k whose normal is within DX_TRI_COPLANAR_COS of
-// its own (the geometry's part of "a flat edge"; the feature bits, which
-// the user may set, are read where needed).
+// its vertices, in leaf order (leaf_faces[j]), so that none of it waits for
+// order[j] first, and all of it in one cache line: its box in float rounded
+// outwards (lo, then hi: the walk's first test, which also reads the index
+// after it as a float and lets it count for nothing), its index
+// order[j], as bit k of coplanar whether it has a neighbour across edge k
+// whose normal is within DX_TRI_COPLANAR_COS of its own (the geometry's
+// part of "a flat edge"; the feature bits, which the user may set, are read
+// where needed), and its normal (a copy of normal[3 order[j]]).
 typedef struct dxTriLeafFace {
-    dReal n[3];
+    float box[6];
     int index;
     unsigned coplanar;
-} dxTriLeafFace;
+    dReal n[3];
+} __attribute__((aligned(64))) dxTriLeafFace;
 
 // Make node a tree of one leaf: the count triangles order[0 ..], in the box
 // [lo, hi] (a heightfield's patch).
@@ -204,15 +207,10 @@ struct dxTriMeshData {
     int *order;                           // triangles in leaf order
     dReal *leaf_vertices;                 // 9 per triangle in leaf order: the
                                           // vertices of order[j] at 9 j (rays)
-    float *leaf_boxes;                    // 6 per triangle in leaf order: the box
-                                          // of order[j] at 6 j (lo, then hi), in
-                                          // float rounded outwards; 2 more floats
-                                          // at the end (read, never used)
     dxTriLeafFace *leaf_faces;            // 1 per triangle in leaf order
     void *tree_block;                     // one allocation holding nodes,
-    size_t tree_block_size;               // leaf_vertices, leaf_boxes,
-                                          // leaf_faces and node_span, each at a
-                                          // cache line
+    size_t tree_block_size;               // leaf_vertices, leaf_faces and
+                                          // node_span, each at a cache line
     uint64_t tree_stamp;                  // unique per build and refit; 0: no
                                           // temporal coherence (a heightfield patch)
     unsigned char *built_flags;           // Preprocess: use flags

@@ -257,7 +257,7 @@ static void lift_node(dxTriMeshData *d, const bin_node *bin, int b, int w, int *
     }
 }
 
-// Every slot's box and every triangle's (leaf_boxes) from the leaf-order
+// Every slot's box and every triangle's (leaf_faces' box) from the leaf-order
 // copy of the vertices, bottom-up
 // (children come after their parent: going backwards meets them first),
 // the nodes' exact boxes kept aside while walking; the root's exact box
@@ -282,8 +282,8 @@ static void fit_boxes(dxTriMeshData *d)
                     leaf_triangle_box(d, j, tlo, thi);
                     grow(slo, shi, tlo, thi);
                     for (int k = 0; k < 3; k++) {
-                        d->leaf_boxes[6 * j + k] = dxFloatBelow(tlo[k]);
-                        d->leaf_boxes[6 * j + 3 + k] = dxFloatAbove(thi[k]);
+                        d->leaf_faces[j].box[k] = dxFloatBelow(tlo[k]);
+                        d->leaf_faces[j].box[3 + k] = dxFloatAbove(thi[k]);
                     }
                 }
             } else {
@@ -329,25 +329,22 @@ static char *line_start(char *p)
 }
 
 // One block for the nodes (node_count of them), the leaf-order vertices,
-// the triangles' boxes, their faces and the nodes' spans, each at the
-// start of a cache line: a node is read as two lines, not three, and a
-// leaf's vertices touch the fewest lines.
+// the triangles' faces and the nodes' spans, each at the start of a cache
+// line: a node is read as two lines, not three, a leaf's vertices touch
+// the fewest lines, and a face is one line.
 static void place_tree(dxTriMeshData *d)
 {
     size_t node_room = ((size_t)d->node_count * sizeof(dxTriMeshNode) + 63) / 64 * 64;
     size_t vertex_room = (9 * (size_t)d->tri_count * sizeof(dReal) + 63) / 64 * 64;
-    size_t box_room = ((6 * (size_t)d->tri_count + 2) * sizeof(float) + 63) / 64 * 64;
     size_t face_room = ((size_t)d->tri_count * sizeof(dxTriLeafFace) + 63) / 64 * 64;
     size_t span_room = 2 * (size_t)d->node_count * sizeof(int);
-    d->tree_block_size = 64 + node_room + vertex_room + box_room + face_room + span_room;
+    d->tree_block_size = 64 + node_room + vertex_room + face_room + span_room;
     d->tree_block = dAlloc(d->tree_block_size);
     char *p = line_start((char *)d->tree_block);
     d->nodes = (dxTriMeshNode *)p;
     d->leaf_vertices = (dReal *)(p + node_room);
-    d->leaf_boxes = (float *)(p + node_room + vertex_room);
-    d->leaf_faces = (dxTriLeafFace *)(p + node_room + vertex_room + box_room);
-    d->node_span = (int *)(p + node_room + vertex_room + box_room + face_room);
-    d->leaf_boxes[6 * d->tri_count] = d->leaf_boxes[6 * d->tri_count + 1] = 0;
+    d->leaf_faces = (dxTriLeafFace *)(p + node_room + vertex_room);
+    d->node_span = (int *)(p + node_room + vertex_room + face_room);
 }
 
 void dxTriMeshFreeTree(dxTriMeshData *d)
@@ -358,7 +355,6 @@ void dxTriMeshFreeTree(dxTriMeshData *d)
     d->nodes = NULL;
     d->node_span = NULL;
     d->leaf_vertices = NULL;
-    d->leaf_boxes = NULL;
     d->leaf_faces = NULL;
 }
 

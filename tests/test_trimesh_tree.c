@@ -162,7 +162,7 @@ static int check_node(const dxTriMeshData *d, int i, int *next_first, int *leave
             for (int k = 0; k < 3; k++) {
                 dReal lo = fmin(tv[0][k], fmin(tv[1][k], tv[2][k]));
                 dReal hi = fmax(tv[0][k], fmax(tv[1][k], tv[2][k]));
-                float flo = d->leaf_boxes[6 * j + k], fhi = d->leaf_boxes[6 * j + 3 + k];
+                float flo = d->leaf_faces[j].box[k], fhi = d->leaf_faces[j].box[3 + k];
                 CHECK(flo == dxFloatBelow(lo) && fhi == dxFloatAbove(hi));
                 CHECK(flo <= lo && hi <= fhi);
                 CHECK(node->lo[k][s] <= flo && fhi <= node->hi[k][s]);
@@ -181,10 +181,10 @@ static int check_shape(const dxTriMeshData *d)
     CHECK((uintptr_t)d->nodes % 64 == 0 && (uintptr_t)d->leaf_vertices % 64 == 0);
     CHECK((const char *)d->leaf_vertices >=
           (const char *)(d->nodes + d->node_count));   // one block, not overlapping
-    CHECK((uintptr_t)d->leaf_boxes % 64 == 0 &&
-          (const char *)d->leaf_boxes >= (const char *)(d->leaf_vertices + 9 * d->tri_count));
+    CHECK((uintptr_t)d->leaf_faces % 64 == 0 && sizeof *d->leaf_faces == 64 &&
+          (const char *)d->leaf_faces >= (const char *)(d->leaf_vertices + 9 * d->tri_count));
     CHECK((uintptr_t)d->node_span % 64 == 0 &&
-          (const char *)d->node_span >= (const char *)(d->leaf_boxes + 6 * d->tri_count + 2));
+          (const char *)d->node_span >= (const char *)(d->leaf_faces + d->tri_count));
     if (check_node(d, 0, &next_first, &leaves)) return 1;
     CHECK(next_first == d->tri_count);
     // nodes mostly full: about a third as many as leaves

@@ -153,7 +153,7 @@ static int check_same_derived(const dxTriMeshData *a, const dxTriMeshData *b)
 }
 
 // The exact box of tree node i's triangles into lo, hi; 1 if every slot's
-// float box, and every triangle's (leaf_boxes), is the one around the exact
+// float box, and every triangle's (leaf_faces' box), is the one around the exact
 // box (rounded outwards).
 static int node_boxes_exact(const dxTriMeshData *d, int i, dReal lo[3], dReal hi[3])
 {
@@ -175,8 +175,8 @@ static int node_boxes_exact(const dxTriMeshData *d, int i, dReal lo[3], dReal hi
                     slo[k] = fmin(slo[k], tlo[k]);
                     shi[k] = fmax(shi[k], thi[k]);
                     // the triangle's own float box (the walk's first test)
-                    if (d->leaf_boxes[6 * j + k] != dxFloatBelow(tlo[k]) ||
-                        d->leaf_boxes[6 * j + 3 + k] != dxFloatAbove(thi[k]))
+                    if (d->leaf_faces[j].box[k] != dxFloatBelow(tlo[k]) ||
+                        d->leaf_faces[j].box[3 + k] != dxFloatAbove(thi[k]))
                         return 0;
                 }
             }

@@ -597,7 +597,7 @@ static inline void add_hit(dxTriScratch *s, int *hits, int t)
     s->hits[0][(*hits)++] = t;
 }
 
-// The widened query box as the triangles' float boxes (leaf_boxes) are
+// The widened query box as the triangles' float boxes (leaf_faces) are
 // compared with it: per axis the float at or above its lower side (a) and
 // the one at or below its upper side (c), a lane 3 of NaN that no
 // comparison counts. A triangle's float box [lo, hi] holds its exact one
@@ -631,8 +631,8 @@ static inline void off_box_f_set(off_box_f *f, const dReal lo[3], const dReal hi
 #endif
 }
 
-// For the triangle with the float box fb (lo, then hi; the two floats
-// after it are read, and count for nothing): 0 if it is not off f, 1 if
+// For the triangle with the float box fb (lo, then hi; the number after it
+// is read as a float, and counts for nothing): 0 if it is not off f, 1 if
 // it is off, 2 if only the exact test can say (a side of its box at a
 // side of the query's in float).
 static inline int tri_off_box_f(const float *fb, const off_box_f *f)
@@ -653,7 +653,7 @@ static inline int tri_off_box_f(const float *fb, const off_box_f *f)
 
 // The triangles of the n leaves (node * 4 + slot) without a per-triangle
 // callback, in place: a triangle off the box b is dropped first (by its
-// float box from the data's leaf_boxes against fb, the vertices' exact
+// float box from the data's leaf_faces against fb, the vertices' exact
 // test only where that cannot say), then one whose height does not pass
 // and a degenerate one (a zero normal); the rest go to the test with
 // their vertices, index and normal read from the leaf-order copies
@@ -664,17 +664,28 @@ static void walk_leaves(dxTriQuery *q, const int *leaf, int n, const off_box *b,
 {
     const dxTriMeshData *d = q->data;
     const dReal *lv = d->leaf_vertices;
-    const float *boxes = d->leaf_boxes;
     const dxTriLeafFace *faces = d->leaf_faces;
+    // Every listed leaf's first and last face (a line each: box, index,
+    // normal) and its first vertices asked for before the walk: they are
+    // the pair's first touch of its part of the mesh, and the walk, which
+    // tests a triangle's box before it reads the rest, would otherwise
+    // wait for them one leaf after another.
+    for (int i = 0; i < n; i++) {
+        const dxTriMeshNode *node = &d->nodes[leaf[i] >> 2];
+        const int first = node->first[leaf[i] & 3], last = first + node->count[leaf[i] & 3] - 1;
+        __builtin_prefetch(&faces[first]);
+        __builtin_prefetch(&faces[last]);
+        __builtin_prefetch(lv + 9 * first);
+    }
     for (int i = 0; i < n; i++) {
         const dxTriMeshNode *node = &d->nodes[leaf[i] >> 2];
         const int first = node->first[leaf[i] & 3], end = first + node->count[leaf[i] & 3];
         for (int j = first; j < end; j++) {
-            const int off = tri_off_box_f(boxes + 6 * j, fb);
+            const dxTriLeafFace *f = &faces[j];
+            const int off = tri_off_box_f(f->box, fb);
             if (off == 1) continue;
             const dReal *v = lv + 9 * j;
             if (off == 2 && tri_off_box(v, b)) continue;
-            const dxTriLeafFace *f = &faces[j];
             const int t = f->index;
             dxTri tri = { .index = t, .v = (const dReal(*)[3])v, .n = f->n,
                           .coplanar = f->coplanar | DX_TRI_COPLANAR_KNOWN };

@@ -370,14 +370,51 @@ static inline dReal geometry_sum(const dContactGeom *g)
            g->normal[2];
 }
 
-// The unit normal into kept.n (4th number 0) from the normal as given, its
-// numbers finite; 0 (after a report) if it has no direction.
+// A contact's frame: the unit normal n, the friction directions t1 (unit,
+// perpendicular to n) and t2 = n x t1, as numbers (kept in registers, not
+// in memory that is loaded again before its stores are done).
+typedef struct contact_frame_t {
+    dReal nx, ny, nz, t1x, t1y, t1z, t2x, t2y, t2z;
+} contact_frame_t;
+
+// The frame of a normal (g0, g1, g2) as given, finite: dSafeNormalize3's
+// normal and dPlaneSpace's directions (their arithmetic, so their bits); 0
+// if it has no direction.
+static inline int contact_frame(dReal g0, dReal g1, dReal g2, contact_frame_t *f)
+{
+    dReal n[3] = { g0, g1, g2 }, t1[3], t2[3];
+    if (!dxUnitVector3(n)) return 0;
+    dxPlaneSpaceUnit(n, t1, t2);
+    *f = (contact_frame_t){ n[0], n[1], n[2], t1[0], t1[1], t1[2], t2[0], t2[1], t2[2] };
+    return 1;
+}
+
+// Store a frame as three dVector3s (4th numbers 0).
+static inline void store_frame(const contact_frame_t *f, dReal *n, dReal *t1, dReal *t2)
+{
+    n[0] = f->nx;
+    n[1] = f->ny;
+    n[2] = f->nz;
+    n[3] = 0;
+    t1[0] = f->t1x;
+    t1[1] = f->t1y;
+    t1[2] = f->t1z;
+    t1[3] = 0;
+    t2[0] = f->t2x;
+    t2[1] = f->t2y;
+    t2[2] = f->t2z;
+    t2[3] = 0;
+}
+
+// The frame (contact_frame) into kept.n, .t1, .t2 from the normal as given,
+// its numbers finite; 0 (after a report) if it has no direction.
 static inline int unit_normal(dxJointContact *c)
 {
-    dReal *n = c->kept.n;
-    dCopyVector3(n, c->contact.geom.normal);
-    n[3] = 0;
-    return dxUnitVector3(n) || bad_normal(&c->contact.geom);
+    const dReal *g = c->contact.geom.normal;
+    contact_frame_t f;
+    if (!contact_frame(g[0], g[1], g[2], &f)) return bad_normal(&c->contact.geom);
+    store_frame(&f, c->kept.n, c->kept.t1, c->kept.t2);
+    return 1;
 }
 
 // check_geometry where the sum of the numbers is not finite: each tested.
@@ -393,23 +430,23 @@ static int geometry_by_number(dxJointContact *c)
     return unit_normal(c);
 }
 
-// Store the unit normal; 0 (after a report) if the geometry is unusable.
+// Store the frame; 0 (after a report) if the geometry is unusable.
 static int check_geometry(dxJointContact *c)
 {
     if (dxIsFinite(geometry_sum(&c->contact.geom))) return unit_normal(c);
     return geometry_by_number(c);
 }
 
-// The usual contact's unit normal and friction directions (check_geometry,
-// then dxPlaneSpaceUnit: see usual_surface), or, when its normal as given has
-// the bits of the last usual contact's in the world (a collider's contacts
-// of one pair share their normal), the ones made from that: the same
-// numbers without the square roots and divisions. 0 (after a report) if the
-// geometry is unusable.
-static int usual_frame(dxJointContact *c)
+// The usual contact's frame (contact_frame; see usual_surface) from the
+// caller's contact g, or, when its normal as given has the bits of the last
+// usual contact's in the world (a collider's contacts of one pair share
+// their normal), the one made from that: the same numbers without the
+// square roots and divisions. Read from g, not from the joint's copy just
+// stored, and stored from registers: loads of lines just written in smaller
+// parts wait for the stores. 0 (after a report) if the geometry is unusable.
+static int usual_frame(dxJointContact *c, const dContactGeom *g)
 {
     dxContactFrame *last = &c->base.world->contact_frame;
-    const dContactGeom *g = &c->contact.geom;
     if (dxIsFinite(geometry_sum(g))) {
         if (memcmp(last->given, g->normal, sizeof last->given) == 0) {
             memcpy(c->kept.n, last->n, sizeof last->n);
@@ -417,40 +454,38 @@ static int usual_frame(dxJointContact *c)
             memcpy(c->kept.t2, last->t2, sizeof last->t2);
             return 1;
         }
-        if (!unit_normal(c)) return 0;
-    } else if (!geometry_by_number(c)) {
-        return 0;
+        const dReal g0 = g->normal[0], g1 = g->normal[1], g2 = g->normal[2];
+        contact_frame_t f;
+        if (!contact_frame(g0, g1, g2, &f)) return bad_normal(g);
+        store_frame(&f, c->kept.n, c->kept.t1, c->kept.t2);
+        last->given[0] = g0;
+        last->given[1] = g1;
+        last->given[2] = g2;
+        store_frame(&f, last->n, last->t1, last->t2);
+        return 1;
     }
-    dxPlaneSpaceUnit(c->kept.n, c->kept.t1, c->kept.t2);
-    c->kept.t1[3] = c->kept.t2[3] = 0;
-    memcpy(last->given, g->normal, sizeof last->given);
-    memcpy(last->n, c->kept.n, sizeof last->n);
-    memcpy(last->t1, c->kept.t1, sizeof last->t1);
-    memcpy(last->t2, c->kept.t2, sizeof last->t2);
-    return 1;
+    return geometry_by_number(c);
 }
 
-// Friction directions: t1 = fdir1 (its part perpendicular to n, unit) with
-// dContactFDir1, else any unit vector perpendicular to n; t2 = n x t1.
+// Friction directions with dContactFDir1: t1 = fdir1's part perpendicular to
+// n, unit, and t2 = n x t1; without it, or if that part is too short, the
+// frame's (contact_frame) as check_geometry stored them.
 static void friction_directions(dxJointContact *c)
 {
     if (c->contact.surface.mode & dContactFDir1) {
         const dReal *f = c->contact.fdir1;
-        dAddScaledVectors3(c->kept.t1, f, c->kept.n, 1, -dCalcVectorDot3(f, c->kept.n));
-        if (dxIsFinite3(c->kept.t1[0], c->kept.t1[1], c->kept.t1[2]) &&
-            dCalcVectorLength3(c->kept.t1) > (dReal)1e-3 * dCalcVectorLength3(f) &&
-            dSafeNormalize3(c->kept.t1)) {
+        dVector3 t1;
+        dAddScaledVectors3(t1, f, c->kept.n, 1, -dCalcVectorDot3(f, c->kept.n));
+        if (dxIsFinite3(t1[0], t1[1], t1[2]) &&
+            dCalcVectorLength3(t1) > (dReal)1e-3 * dCalcVectorLength3(f) && dSafeNormalize3(t1)) {
+            dCopyVector3(c->kept.t1, t1);
             dCalcVectorCross3(c->kept.t2, c->kept.n, c->kept.t1);
-            c->kept.t1[3] = c->kept.t2[3] = 0;
             return;
         }
         dxReportBadArgument("dJointCreateContact", "fdir1 (%g, %g, %g) is not a direction "
                             "across the normal; using an arbitrary one", (double)f[0],
                             (double)f[1], (double)f[2]);
     }
-    // t2 = n x t1 (dPlaneSpace's arithmetic)
-    dxPlaneSpaceUnit(c->kept.n, c->kept.t1, c->kept.t2);
-    c->kept.t1[3] = c->kept.t2[3] = 0;
 }
 
 // The bounds -k..k of friction row `row` (1, 2) with coefficient k, times
@@ -569,7 +604,7 @@ static void contact_init(dxJointContact *c, const dContact *contact)
     }
     c->anchor_body[0] = c->anchor_body[1] = NULL;
     c->negated = 0;
-    if (!(usual ? usual_frame(c) : check_geometry(c))) {
+    if (!(usual ? usual_frame(c, &contact->geom) : check_geometry(c))) {
         dZeroVector3(c->kept.n);
         dZeroVector3(c->kept.t1);
         dZeroVector3(c->kept.t2);
