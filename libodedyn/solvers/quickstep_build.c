@@ -774,11 +774,11 @@ static dReal *rows_piece(dxArena *a, size_t m)
 // ends (one piece, none when every joint is a direct contact or an equality
 // joint); contacts that go straight to the solver's rows and equality
 // joints, whose rows go straight into their block, are only marked (their
-// rows are made in dxQuickBuild).
-static qs_jrows *fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h,
-                                  qs_jrows *jrows)
+// rows are made in dxQuickBuild). Returns the number of equality joints.
+static int fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h, qs_jrows *jrows)
 {
     size_t m = 0;
+    int equality = 0;
     for (int k = 0; k < is->nj; k++) {
         dxJoint *j = is->joints[k];
         qs_jrows *jr = &jrows[k];
@@ -786,6 +786,7 @@ static qs_jrows *fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h
         jr->direct = j->rows.m > 0 && j->cls->type == dJointTypeContact &&
                      dxQuickContactIsDirect(j);
         jr->equality = is_equality_joint(j);
+        equality += jr->equality;
         if (jr->equality) {
             const struct dxBody *b1 = dxJointBody(j, 1);
             jr->b[0] = dxJointBody(j, 0)->tag;
@@ -794,7 +795,7 @@ static qs_jrows *fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h
             m += (size_t)j->rows.m;
         }
     }
-    if (m == 0) return jrows;
+    if (m == 0) return equality;
     dReal *J = rows_piece(w->arena, m);
     dReal *num = J + m * DX_ROW_SKIP;
     int *findex = (int *)(num + 4 * m);
@@ -802,7 +803,7 @@ static qs_jrows *fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h
         qs_jrows *jr = &jrows[k];
         if (!jr->direct && !jr->equality) fill_joint_rows(w, is->joints[k], h, jr, &J, &num, &findex);
     }
-    return jrows;
+    return equality;
 }
 
 // x[0, n) = 0, a body's six numbers at a time in vector stores (memset of
@@ -893,13 +894,16 @@ void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *b
     // Every joint's rows first, the bodies' rates after: a limit motor that
     // powers against its stop adds its force to the bodies while its rows are
     // filled (joint_limot.c), and the rates must include that force.
-    qs_jrows *jrows = fill_island_rows(w, is, h, s->jrows);
+    qs_jrows *jrows = s->jrows;
+    const int equality = fill_island_rows(w, is, h, jrows);
     dReal *rates = sys->rates + 6 * part->body0;
     dxIslandBodyRates(is, bd, fps, rates);
     const qs_input in = { bd, rates, fps, w->erp, w->qs_w, part->body0, is->nb, 0 };
     const qs_input in_warm = { bd, rates, fps, w->erp, w->qs_w, part->body0, is->nb, 1 };
-    equality_island_rows(w, is, &in, jrows);
-    equality_factors(is, in.sor_w, jrows);
+    if (equality > 0) {
+        equality_island_rows(w, is, &in, jrows);
+        equality_factors(is, in.sor_w, jrows);
+    }
     for (int k = 0; k < is->nj; k++) {
         if (k + CONTACT_AHEAD < is->nj && jrows[k + CONTACT_AHEAD].direct)
             prefetch_contact(is->joints[k + CONTACT_AHEAD]);
