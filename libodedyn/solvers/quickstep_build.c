@@ -867,14 +867,15 @@ void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_syst
 // Ask for the lines of a direct contact that dxQuickContact reads beyond the
 // joint's first two (read when the island's rows were counted): they were
 // written in collision and have left the first-level cache (docs/perf.md).
-// Every other line: the second-level prefetcher brings the neighbouring line
-// of each pair along.
+// Every line: with every other one (the second-level prefetcher brings the
+// neighbouring line of a pair, but only into the second level), the rain's
+// contacts waited on the line of their flag and warm-start fields.
 QS_INLINE void prefetch_contact(const dxJoint *j)
 {
 #if defined(__GNUC__)
-#pragma GCC unroll 8
+#pragma GCC unroll 16
 #endif
-    for (size_t at = 128; at < sizeof(dxJointContact); at += 128)
+    for (size_t at = 128; at < sizeof(dxJointContact); at += 64)
         qs_prefetch((const char *)j + at);
 }
 
