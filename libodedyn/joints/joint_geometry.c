@@ -142,17 +142,32 @@ void dxJointRelativeQuaternion(const dxJoint *j, dQuaternion qrel)
     }
 }
 
-dReal dxJointRelativeAngle(const dxJoint *j, const dVector3 axis, const dQuaternion qrel0)
+void dxJointRelativeHalfAngle(const dxJoint *j, const dVector3 axis, const dQuaternion qrel0,
+                              dReal *y, dReal *x)
 {
     dQuaternion now, delta;
     dxJointRelativeQuaternion(j, now);
     dQMultiply2(delta, now, qrel0);   // change of body 1 relative to body 0 since then
     // delta = (cos(phi/2), sin(phi/2) u): body 1 turned by phi about u (body 0
-    // frame); project on the axis and measure body 0 against body 1 (-phi).
-    dReal phi = 2 * dAtan2(dCalcVectorDot3(delta + 1, axis), delta[0]);
+    // frame); project on the axis (dxJointRelativeAngleOf measures body 0
+    // against body 1, -phi).
+    *y = dCalcVectorDot3(delta + 1, axis);
+    *x = delta[0];
+}
+
+dReal dxJointRelativeAngleOf(dReal y, dReal x)
+{
+    dReal phi = 2 * dAtan2(y, x);
     if (phi > M_PI) phi -= 2 * M_PI;
     if (phi <= -M_PI) phi += 2 * M_PI;
     return -phi;
+}
+
+dReal dxJointRelativeAngle(const dxJoint *j, const dVector3 axis, const dQuaternion qrel0)
+{
+    dReal y, x;
+    dxJointRelativeHalfAngle(j, axis, qrel0, &y, &x);
+    return dxJointRelativeAngleOf(y, x);
 }
 
 dReal dxJointRelativeAngleRate(const dxJoint *j, const dVector3 axis_world)

@@ -40,6 +40,12 @@ void dxJointRelativeQuaternion(const dxJoint *j, dQuaternion qrel);
 // The rotation angle (-pi..pi) of body 0 relative to body 1 about axis
 // (body 0 frame, unit) since the relative orientation was qrel0.
 dReal dxJointRelativeAngle(const dxJoint *j, const dVector3 axis, const dQuaternion qrel0);
+// That angle as two numbers y, x: the angle is -2 atan2(y, x), wrapped into
+// (-pi, pi] (dxJointRelativeAngleOf), which a limit test may not need
+// (dxLimotAngleClear takes -y, x).
+void dxJointRelativeHalfAngle(const dxJoint *j, const dVector3 axis, const dQuaternion qrel0,
+                              dReal *y, dReal *x);
+dReal dxJointRelativeAngleOf(dReal y, dReal x);
 // Rate of that angle: axis (world) . (w0 - w1).
 dReal dxJointRelativeAngleRate(const dxJoint *j, const dVector3 axis_world);
 

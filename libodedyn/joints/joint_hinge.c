@@ -33,10 +33,14 @@ static void hinge_count_rows(dxJoint *j, dxJointRowCount *count)
     dxJointHinge *h = (dxJointHinge *)j;
     count->m = 5;
     count->nub = 5;
-    if (h->limot.lostop > -dInfinity || h->limot.histop < dInfinity)
-        dxLimotTestLimit(&h->limot, dxJointRelativeAngle(j, h->axis1, h->qrel));
-    else
+    if (h->limot.lostop > -dInfinity || h->limot.histop < dInfinity) {
+        dReal y, x;
+        dxJointRelativeHalfAngle(j, h->axis1, h->qrel, &y, &x);
+        if (dxLimotAngleClear(&h->limot, -y, x)) h->limot.limit = 0;   // far from the stops
+        else dxLimotTestLimit(&h->limot, dxJointRelativeAngleOf(y, x));
+    } else {
         h->limot.limit = 0;
+    }
     if (dxLimotActive(&h->limot)) count->m = 6;
 }
 

@@ -86,6 +86,42 @@ int dxLimotTestLimit(dxLimot *lm, dReal position)
     return lm->limit != 0;
 }
 
+// How far an angle must be from a stop (and from +-pi, where the wrap
+// turns it over) for dxLimotAngleClear to decide without atan2: over
+// three times the error of its estimate (ANGLE_ESTIMATE_ERROR), so that
+// the exact angle, which differs from the estimate by less than that, is
+// on the same side of every stop.
+#define ANGLE_CLEAR_MARGIN ((dReal)0.01)
+
+// atan(t) for |t| <= 1 within 0.0015 rad (a quadratic correction of
+// pi/4 t, S. Rajan et al., "Efficient approximations for the arctangent
+// function", 2006; tests/test_limot_angle.c checks the bound).
+#define ANGLE_ESTIMATE_ERROR ((dReal)0.0015)
+static dReal atan_estimate(dReal t)
+{
+    const dReal a = dFabs(t);
+    return t * ((dReal)(M_PI / 4) - (a - 1) * ((dReal)0.2447 + (dReal)0.0663 * a));
+}
+
+int dxLimotAngleClear(const dxLimot *lm, dReal y, dReal x)
+{
+    // (x, y) and (-x, -y) give the same wrapped angle: take x >= 0, then
+    // atan2(y, x) = atan(y / x), or sign(y) pi/2 - atan(x / y) where |y| > x.
+    if (x < 0) {
+        x = -x;
+        y = -y;
+    }
+    dReal half;
+    if (dFabs(y) <= x) {
+        half = atan_estimate(y / x);   // NaN for 0 / 0: unsure below
+    } else {
+        const dReal right = y > 0 ? (dReal)(M_PI / 2) : (dReal)(-M_PI / 2);
+        half = right - atan_estimate(x / y);
+    }
+    const dReal angle = 2 * half, m = ANGLE_CLEAR_MARGIN;
+    return dFabs(angle) < (dReal)M_PI - m && angle > lm->lostop + m && angle < lm->histop - m;
+}
+
 int dxLimotActive(const dxLimot *lm) { return lm->fmax > 0 || lm->limit != 0; }
 
 // The relative velocity of body 0 against body 1 along axis.

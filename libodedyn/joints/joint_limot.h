@@ -29,6 +29,11 @@ int dxLimotSetParam(dxLimot *lm, int param, dReal value);
 int dxLimotGetParam(const dxLimot *lm, int param, dReal *value);
 // Decide whether position (an angle or distance) is at a stop; 1 if it is.
 int dxLimotTestLimit(dxLimot *lm, dReal position);
+// 1 if the angle 2 atan2(y, x), wrapped into (-pi, pi], is certainly between
+// the stops, away from both: dxLimotTestLimit would then find no limit, and
+// the caller may set lm->limit = 0 without the angle; 0 if unsure (the
+// angle must be measured). Judged without atan2 (docs/perf.md).
+int dxLimotAngleClear(const dxLimot *lm, dReal y, dReal x);
 // 1 if this axis needs a row this step (after dxLimotTestLimit).
 int dxLimotActive(const dxLimot *lm);
 // Write the row for this axis at `row`: axis is a world unit vector,

@@ -78,15 +78,32 @@ static void set_frame(dxJointUniversal *u)
 // The two angles (-pi..pi); see the file comment. With
 // D = Q(a2, t2) Q(a1', t1) = c1c2 + c2 s1 a1' + c1 s2 a2 + s1 s2 (a2 x a1')
 // for perpendicular unit a1', a2 (c = cos(t/2), s = sin(t/2)).
-static void universal_angles(const dxJointUniversal *u, dReal *angle1, dReal *angle2)
+// The numbers w, x1, x2, xn the two angles are made of (universal_angles).
+static void universal_pairs(const dxJointUniversal *u, dReal p[4])
 {
     dQuaternion r, d;
     user_relative_quaternion(&u->base, r);
     dQMultiply2(d, r, u->qrel);
-    const dReal w = d[0], x1 = dCalcVectorDot3(d + 1, u->e1);
-    const dReal x2 = dCalcVectorDot3(d + 1, u->axis[1]), xn = dCalcVectorDot3(d + 1, u->n);
-    *angle1 = angle_from_pairs(w, x1, x2, xn);   // c2 (c1, s1) and s2 (c1, s1)
-    *angle2 = angle_from_pairs(w, x2, x1, xn);   // c1 (c2, s2) and s1 (c2, s2)
+    p[0] = d[0];
+    p[1] = dCalcVectorDot3(d + 1, u->e1);
+    p[2] = dCalcVectorDot3(d + 1, u->axis[1]);
+    p[3] = dCalcVectorDot3(d + 1, u->n);
+}
+
+static void universal_angles(const dxJointUniversal *u, dReal *angle1, dReal *angle2)
+{
+    dReal p[4];
+    universal_pairs(u, p);
+    *angle1 = angle_from_pairs(p[0], p[1], p[2], p[3]);   // c2 (c1, s1) and s2 (c1, s1)
+    *angle2 = angle_from_pairs(p[0], p[2], p[1], p[3]);   // c1 (c2, s2) and s1 (c2, s2)
+}
+
+// Whether angle_from_pairs(w, x, y, z) is certainly between lm's stops, away
+// from both (dxLimotAngleClear, from the same pair).
+static int pairs_clear(const dxLimot *lm, dReal w, dReal x, dReal y, dReal z)
+{
+    return (w * w + x * x >= y * y + z * z) ? dxLimotAngleClear(lm, x, w)
+                                            : dxLimotAngleClear(lm, z, y);
 }
 
 // Rate of angle k: axis k (world) . (w1 - w2) of the user bodies, which is
@@ -123,13 +140,15 @@ static void universal_count_rows(dxJoint *j, dxJointRowCount *count)
     dxJointUniversal *u = (dxJointUniversal *)j;
     count->m = 4;
     count->nub = 4;
-    dReal angle[2] = { 0, 0 };
-    if (has_stops(&u->limot[0]) || has_stops(&u->limot[1]))
-        universal_angles(u, &angle[0], &angle[1]);
+    dReal p[4] = { 0, 0, 0, 0 };
+    if (has_stops(&u->limot[0]) || has_stops(&u->limot[1])) universal_pairs(u, p);
     for (int k = 0; k < 2; k++) {
-        if (has_stops(&u->limot[k])) dxLimotTestLimit(&u->limot[k], angle[k]);
-        else u->limot[k].limit = 0;
-        if (dxLimotActive(&u->limot[k])) count->m++;
+        dxLimot *lm = &u->limot[k];
+        // angle 1 from (w, x1, x2, xn), angle 2 from (w, x2, x1, xn)
+        const dReal a = p[1 + k], b = p[2 - k];
+        if (!has_stops(lm) || pairs_clear(lm, p[0], a, b, p[3])) lm->limit = 0;
+        else dxLimotTestLimit(lm, angle_from_pairs(p[0], a, b, p[3]));
+        if (dxLimotActive(lm)) count->m++;
     }
 }
 

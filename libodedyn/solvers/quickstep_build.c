@@ -38,10 +38,15 @@ typedef struct qs_jrows {
     dReal im[2];
     const dReal *I[2], *rate[2];
     int o[2];              // their offsets in fc: a missing second body is the dummy
+    // An equality joint's block made ahead (equality_rows, equality_factors):
+    // its piece of arena (J first), whether its rows fit (else the joint
+    // takes the generic way) and whether its matrix factored.
+    qs_v2 *eq;
+    int eq_fit, eq_ok;
 } qs_jrows;
 
 // The solver-order side data of jr's bodies.
-static void joint_sides(const qs_input *in, qs_jrows *jr)
+QS_INLINE void joint_sides(const qs_input *in, qs_jrows *jr)
 {
     const int swap = jr->b[0] < 0;
     for (int side = 0; side < 2; side++) {
@@ -387,28 +392,44 @@ static int equality_rows_fit(int n, const dReal *J, const dReal *c, const dReal 
     return unbounded && total - total == 0;
 }
 
+// The parts of an equality joint's piece of arena (equality_rows): J and M
+// (n x 6 pairs each), Ainv, rhs, cfm.
+static size_t equality_piece_bytes(int n)
+{
+    return sizeof(qs_v2) * 12 * (size_t)n + sizeof(dReal) * (size_t)n * (QS_PAD(n) + 2);
+}
+
+static dReal *equality_ainv(qs_v2 *piece, int n)
+{
+    return (dReal *)(piece + 12 * n);
+}
+
+// An equality joint's blocks are made in three passes over the island, so
+// that the long chains of their factors (a square root, then a division that
+// the next pivot waits for, and the inverse after them: about a quarter of
+// the joints' set-up time on a chain) overlap from joint to joint instead of
+// waiting each between two joints' rows (docs/perf.md). equality_rows makes
+// the rows, equality_factors makes and factors the matrices of the whole
+// island, and equality_append appends a block that factored in the
+// joint's place in the island's order: the same numbers, blocks and rows in
+// the same order as made joint by joint.
+
 // The rows of an equality joint (is_equality_joint; its island bodies in
-// jr->b, joint_sides done) written by the joint straight into its block's J,
-// the block made as make_blocks makes it from the generic rows (the same
-// numbers) and appended to the system with its lambda positions. Returns 0,
-// leaving nothing behind, if the rows are not finite, not all unbounded or
-// their matrix is singular: the joint then takes the generic way. (Out of
-// line: inlined, it made GCC move more of the generic way out of line.)
+// jr->b, joint_sides done) written by the joint straight into its block's J
+// (its piece of arena in jr->eq), M^-1 J^T, rhs and cfm as make_blocks
+// makes them from the generic rows (the same numbers). jr->eq_fit is 0 if
+// the rows are not finite or not all unbounded: the joint then takes the
+// generic way (its piece stays unused until the step ends). (Out of line:
+// inlined, it made GCC move more of the generic way out of line.)
 #if defined(__GNUC__)
 __attribute__((noinline))
 #endif
-static int equality_block(struct dxWorld *w, dxJoint *j, const qs_input *in, qs_jrows *jr,
-                          qs_system *sys)
+static void equality_rows(struct dxWorld *w, dxJoint *j, const qs_input *in, qs_jrows *jr)
 {
     const int n = jr->m;
-    dxArena *a = w->arena;
-    const dxArenaMark mark = dxArenaSave(a);
-    // One piece of arena: J and M (n x 6 pairs each), Ainv, rhs, cfm.
-    const size_t pairs = (size_t)12 * n, reals = (size_t)n * (QS_PAD(n) + 2);
-    qs_v2 *J = dxArenaAlloc(a, sizeof(qs_v2) * pairs + sizeof(dReal) * reals);
+    qs_v2 *J = dxArenaAlloc(w->arena, equality_piece_bytes(n));
     qs_v2 *M = J + 6 * n;
-    dReal *Ainv = (dReal *)(J + pairs);
-    dReal *rhs = Ainv + n * QS_PAD(n), *cfm = rhs + n;
+    dReal *rhs = equality_ainv(J, n) + n * QS_PAD(n), *cfm = rhs + n;
     dReal c[QS_MAX_BLOCK], jcfm[QS_MAX_BLOCK], lo[QS_MAX_BLOCK], hi[QS_MAX_BLOCK];
     int findex[QS_MAX_BLOCK];
     for (int e = 0; e < 6 * n; e++) J[e] = qs_splat(0);
@@ -417,33 +438,65 @@ static int equality_block(struct dxWorld *w, dxJoint *j, const qs_input *in, qs_
     dxJointRows info = { in->fps, w->erp, DX_ROW_SKIP, Jr, Jr + 3, Jr + 6, Jr + 9,
                          c, jcfm, lo, hi, findex };
     j->cls->fill_rows(j, &info);
-    qs_jblock jb;
-    if (equality_rows_fit(n, Jr, c, jcfm, lo, hi, findex)) {
-        jr->J = Jr;
-        for (int k = 0; k < n; k++) {
-            const dReal rate = row_full(jr, k, NULL, M + 6 * k);
-            rhs[k] = c[k] * in->fps - rate;
-            cfm[k] = jcfm[k] * in->fps;
-        }
-        if (factor(J, M, cfm, n, in->sor_w, jb.L, Ainv)) {
-            qs_block *blk = &sys->blocks[sys->nblocks++];
-            blk->n = n;
-            blk->two = is_two_body(jr);
-            blk->o0 = jr->o[0];
-            blk->o1 = jr->o[1];
-            blk->first = sys->next;
-            blk->J = J;
-            blk->M = M;
-            blk->Ainv = Ainv;
-            blk->rhs = rhs;
-            blk->cfm = cfm;
-            blk->coupled = blk->ncoupled = 0;
-            sys->next += n;
-            return 1;
-        }
+    jr->eq = J;
+    jr->eq_ok = 0;
+    jr->eq_fit = equality_rows_fit(n, Jr, c, jcfm, lo, hi, findex);
+    if (!jr->eq_fit) return;
+    jr->J = Jr;
+    for (int k = 0; k < n; k++) {
+        const dReal rate = row_full(jr, k, NULL, M + 6 * k);
+        rhs[k] = c[k] * in->fps - rate;
+        cfm[k] = jcfm[k] * in->fps;
     }
-    dxArenaRestore(a, mark);
-    return 0;
+}
+
+// The island's equality joints' rows (equality_rows).
+static void equality_island_rows(struct dxWorld *w, const dxIsland *is, const qs_input *in,
+                                 qs_jrows *jrows)
+{
+    for (int k = 0; k < is->nj; k++) {
+        qs_jrows *jr = &jrows[k];
+        if (!jr->equality) continue;
+        joint_sides(in, jr);
+        equality_rows(w, is->joints[k], in, jr);
+    }
+}
+
+// The matrices and factors of the island's equality blocks whose rows fit,
+// one after the other with nothing else between them (jr->eq_ok: it
+// factored).
+static void equality_factors(const dxIsland *is, dReal sor_w, qs_jrows *jrows)
+{
+    for (int k = 0; k < is->nj; k++) {
+        qs_jrows *jr = &jrows[k];
+        if (!jr->equality || !jr->eq_fit) continue;
+        const int n = jr->m;
+        double L[QS_MAX_BLOCK * QS_MAX_BLOCK];
+        dReal *Ainv = equality_ainv(jr->eq, n), *cfm = Ainv + n * QS_PAD(n) + n;
+        jr->eq_ok = factor(jr->eq, jr->eq + 6 * n, cfm, n, sor_w, L, Ainv);
+    }
+}
+
+// The block of an equality joint that factored (jr->eq_ok), appended to the
+// system with its lambda positions.
+static void equality_append(const qs_jrows *jr, qs_system *sys)
+{
+    const int n = jr->m;
+    qs_v2 *J = jr->eq;
+    dReal *Ainv = equality_ainv(J, n), *rhs = Ainv + n * QS_PAD(n);
+    qs_block *blk = &sys->blocks[sys->nblocks++];
+    blk->n = n;
+    blk->two = is_two_body(jr);
+    blk->o0 = jr->o[0];
+    blk->o1 = jr->o[1];
+    blk->first = sys->next;
+    blk->J = J;
+    blk->M = J + 6 * n;
+    blk->Ainv = Ainv;
+    blk->rhs = rhs;
+    blk->cfm = rhs + n;
+    blk->coupled = blk->ncoupled = 0;
+    sys->next += n;
 }
 
 // ---- rows --------------------------------------------------------------------
@@ -721,11 +774,11 @@ static dReal *rows_piece(dxArena *a, size_t m)
 // ends (one piece, none when every joint is a direct contact or an equality
 // joint); contacts that go straight to the solver's rows and equality
 // joints, whose rows go straight into their block, are only marked (their
-// rows are made in dxQuickBuild).
-static qs_jrows *fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h,
-                                  qs_jrows *jrows)
+// rows are made in dxQuickBuild). Returns the number of equality joints.
+static int fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h, qs_jrows *jrows)
 {
     size_t m = 0;
+    int equality = 0;
     for (int k = 0; k < is->nj; k++) {
         dxJoint *j = is->joints[k];
         qs_jrows *jr = &jrows[k];
@@ -733,6 +786,7 @@ static qs_jrows *fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h
         jr->direct = j->rows.m > 0 && j->cls->type == dJointTypeContact &&
                      dxQuickContactIsDirect(j);
         jr->equality = is_equality_joint(j);
+        equality += jr->equality;
         if (jr->equality) {
             const struct dxBody *b1 = dxJointBody(j, 1);
             jr->b[0] = dxJointBody(j, 0)->tag;
@@ -741,7 +795,7 @@ static qs_jrows *fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h
             m += (size_t)j->rows.m;
         }
     }
-    if (m == 0) return jrows;
+    if (m == 0) return equality;
     dReal *J = rows_piece(w->arena, m);
     dReal *num = J + m * DX_ROW_SKIP;
     int *findex = (int *)(num + 4 * m);
@@ -749,7 +803,7 @@ static qs_jrows *fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h
         qs_jrows *jr = &jrows[k];
         if (!jr->direct && !jr->equality) fill_joint_rows(w, is->joints[k], h, jr, &J, &num, &findex);
     }
-    return jrows;
+    return equality;
 }
 
 // x[0, n) = 0, a body's six numbers at a time in vector stores (memset of
@@ -813,14 +867,15 @@ void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_syst
 // Ask for the lines of a direct contact that dxQuickContact reads beyond the
 // joint's first two (read when the island's rows were counted): they were
 // written in collision and have left the first-level cache (docs/perf.md).
-// Every other line: the second-level prefetcher brings the neighbouring line
-// of each pair along.
+// Every line: with every other one (the second-level prefetcher brings the
+// neighbouring line of a pair, but only into the second level), the rain's
+// contacts waited on the line of their flag and warm-start fields.
 QS_INLINE void prefetch_contact(const dxJoint *j)
 {
 #if defined(__GNUC__)
-#pragma GCC unroll 8
+#pragma GCC unroll 16
 #endif
-    for (size_t at = 128; at < sizeof(dxJointContact); at += 128)
+    for (size_t at = 128; at < sizeof(dxJointContact); at += 64)
         qs_prefetch((const char *)j + at);
 }
 
@@ -840,11 +895,16 @@ void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *b
     // Every joint's rows first, the bodies' rates after: a limit motor that
     // powers against its stop adds its force to the bodies while its rows are
     // filled (joint_limot.c), and the rates must include that force.
-    qs_jrows *jrows = fill_island_rows(w, is, h, s->jrows);
+    qs_jrows *jrows = s->jrows;
+    const int equality = fill_island_rows(w, is, h, jrows);
     dReal *rates = sys->rates + 6 * part->body0;
     dxIslandBodyRates(is, bd, fps, rates);
     const qs_input in = { bd, rates, fps, w->erp, w->qs_w, part->body0, is->nb, 0 };
     const qs_input in_warm = { bd, rates, fps, w->erp, w->qs_w, part->body0, is->nb, 1 };
+    if (equality > 0) {
+        equality_island_rows(w, is, &in, jrows);
+        equality_factors(is, in.sor_w, jrows);
+    }
     for (int k = 0; k < is->nj; k++) {
         if (k + CONTACT_AHEAD < is->nj && jrows[k + CONTACT_AHEAD].direct)
             prefetch_contact(is->joints[k + CONTACT_AHEAD]);
@@ -855,11 +915,12 @@ void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *b
             dxQuickContact(&in, j, sys);
             continue;
         }
-        joint_sides(&in, jr);
+        if (!jr->equality) joint_sides(&in, jr);   // (equality_island_rows did)
         zero_numbers(sys->lambda + sys->next, jr->m);   // its lambda positions
         if (jr->equality) {
             const int first = sys->next;
-            if (equality_block(w, j, &in, jr, sys)) {
+            if (jr->eq_ok) {
+                equality_append(jr, sys);
                 if (j->feedback) {
                     for (int i = 0; i < jr->m; i++) s->pos[i] = first + i;
                     keep_feedback(a, j, jr, s->pos, sys);
