@@ -44,9 +44,6 @@ typedef struct dxHullPosedEdge {
 
 typedef struct dxHullPose {
     dReal pos[3], R[12];          // the pose the arrays were made for
-    int valid;                    // points and planes hold that pose
-    int edges_valid;              // what else the pair test made for it (bits: the
-                                  // faces' floors, the edges; only when needed)
     double (*pts)[3];             // pointcount world points
     double (*normals)[3];         // planecount unit outward normals ...
     double *offsets;              // ... and offsets (n . x = d)
@@ -59,6 +56,10 @@ typedef struct dxHullPose {
     // planes and the edges.
     double *px, *py, *pz, *nx, *ny, *nz, *ex, *ey, *ez;
     double box[6];                // their bounding box (lo, hi by axis)
+    int edges_valid;              // what else the pair test made for it (bits: the
+                                  // faces' floors, the edges; only when needed)
+    int valid;                    // points and planes hold that pose (last: next to the
+                                  // hull's first fields, dxConvex)
 } dxHullPose;
 
 // A hull as the native colliders see it (backends/native/collide_convex*.c):
@@ -67,6 +68,11 @@ typedef struct dxHullPose {
 // geom's is kept on the geom while its pose stays (dxConvexPose), a box's
 // is made by the collider.
 typedef struct dx_hull {
+    // What a pair test reads first (the bounding spheres, the convex geom's
+    // hints), together.
+    double c[3];
+    double radius;            // a bound on |x - c| over the points as posed
+    struct dxConvex *convex;  // the convex geom (its axis hints), NULL for a box
     const dReal *pts;         // npts x (x, y, z), local
     const dReal *planes;      // nplanes x (a, b, c, d), local, outward
     const unsigned *polys;    // per plane: count, indices
@@ -76,10 +82,8 @@ typedef struct dx_hull {
                               // vert_edges[vert_start[v] .. vert_start[v + 1]) (NULL: none kept)
     unsigned npts, nplanes, nedges;
     double R[9];              // world = R local + c (row-major)
-    double c[3];
     double size;              // the largest distance of a point from the origin of the frame
     double rot_err;           // |R^T R - I| (Frobenius): how far R is from a rotation
-    double radius;            // a bound on |x - c| over the points as posed
     double centre[3];         // a point inside, in the world (for the colliders' first
                               // guesses only: no result depends on which)
     const double (*wp)[3];    // the points in the world
@@ -103,7 +107,6 @@ typedef struct dx_hull {
     // normals and edges zero past their count up to a multiple of four).
     const double *px, *py, *pz, *nx, *ny, *nz;
     double *ex, *ey, *ez;     // (with the edges: n2 x n1)
-    struct dxConvex *convex;  // the convex geom (its axis hints), NULL for a box
 } dx_hull;
 
 typedef struct dxConvex {
@@ -133,7 +136,8 @@ typedef struct dxConvex {
     dxHullAxisHint hints[DX_CONVEX_AXIS_CACHE];
     unsigned next_hint;           // the entry replaced next
     dxHullPose pose;
-    dx_hull hull;                 // the pose as the native colliders see it
+    dx_hull hull;                 // the pose as the native colliders see it (pose.valid and
+                                  // the hull's first fields: what a pair test reads first)
     void *derived;                // one block: edges, poly_start, the pose's arrays
     size_t derived_size;
 } dxConvex;
