@@ -399,9 +399,16 @@ static size_t equality_piece_bytes(int n)
     return sizeof(qs_v2) * 12 * (size_t)n + sizeof(dReal) * (size_t)n * (QS_PAD(n) + 2);
 }
 
-static dReal *equality_ainv(qs_v2 *piece, int n)
+// The parts of that piece, found from its start.
+typedef struct qs_equality_piece {
+    qs_v2 *J, *M;
+    dReal *Ainv, *rhs, *cfm;
+} qs_equality_piece;
+
+static qs_equality_piece equality_piece(qs_v2 *piece, int n)
 {
-    return (dReal *)(piece + 12 * n);
+    dReal *Ainv = (dReal *)(piece + 12 * n), *rhs = Ainv + n * QS_PAD(n);
+    return (qs_equality_piece){ piece, piece + 6 * n, Ainv, rhs, rhs + n };
 }
 
 // An equality joint's blocks are made in three passes over the island, so
@@ -427,9 +434,10 @@ __attribute__((noinline))
 static void equality_rows(struct dxWorld *w, dxJoint *j, const qs_input *in, qs_jrows *jr)
 {
     const int n = jr->m;
-    qs_v2 *J = dxArenaAlloc(w->arena, equality_piece_bytes(n));
-    qs_v2 *M = J + 6 * n;
-    dReal *rhs = equality_ainv(J, n) + n * QS_PAD(n), *cfm = rhs + n;
+    const qs_equality_piece p =
+        equality_piece(dxArenaAlloc(w->arena, equality_piece_bytes(n)), n);
+    qs_v2 *J = p.J, *M = p.M;
+    dReal *rhs = p.rhs, *cfm = p.cfm;
     dReal c[QS_MAX_BLOCK], jcfm[QS_MAX_BLOCK], lo[QS_MAX_BLOCK], hi[QS_MAX_BLOCK];
     int findex[QS_MAX_BLOCK];
     for (int e = 0; e < 6 * n; e++) J[e] = qs_splat(0);
@@ -472,8 +480,8 @@ static void equality_factors(const dxIsland *is, dReal sor_w, qs_jrows *jrows)
         if (!jr->equality || !jr->eq_fit) continue;
         const int n = jr->m;
         double L[QS_MAX_BLOCK * QS_MAX_BLOCK];
-        dReal *Ainv = equality_ainv(jr->eq, n), *cfm = Ainv + n * QS_PAD(n) + n;
-        jr->eq_ok = factor(jr->eq, jr->eq + 6 * n, cfm, n, sor_w, L, Ainv);
+        const qs_equality_piece p = equality_piece(jr->eq, n);
+        jr->eq_ok = factor(p.J, p.M, p.cfm, n, sor_w, L, p.Ainv);
     }
 }
 
@@ -482,19 +490,18 @@ static void equality_factors(const dxIsland *is, dReal sor_w, qs_jrows *jrows)
 static void equality_append(const qs_jrows *jr, qs_system *sys)
 {
     const int n = jr->m;
-    qs_v2 *J = jr->eq;
-    dReal *Ainv = equality_ainv(J, n), *rhs = Ainv + n * QS_PAD(n);
+    const qs_equality_piece p = equality_piece(jr->eq, n);
     qs_block *blk = &sys->blocks[sys->nblocks++];
     blk->n = n;
     blk->two = is_two_body(jr);
     blk->o0 = jr->o[0];
     blk->o1 = jr->o[1];
     blk->first = sys->next;
-    blk->J = J;
-    blk->M = J + 6 * n;
-    blk->Ainv = Ainv;
-    blk->rhs = rhs;
-    blk->cfm = rhs + n;
+    blk->J = p.J;
+    blk->M = p.M;
+    blk->Ainv = p.Ainv;
+    blk->rhs = p.rhs;
+    blk->cfm = p.cfm;
     blk->coupled = blk->ncoupled = 0;
     sys->next += n;
 }
