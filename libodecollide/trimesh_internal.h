@@ -414,16 +414,6 @@ uint64_t dxTriMeshNewStamp(void);
 // Grow an int array to hold n.
 void dxTriMeshReserveInts(int **a, int *cap, int n);
 
-// Whether temporal coherence is on for a geom of class cls: the class's own
-// flag for spheres, boxes and capsules, the box's for cylinders (as ODE
-// 0.16); other classes have none.
-static inline int dxTriMeshTCOn(const dxTriMesh *m, int cls)
-{
-    if (cls == dCylinderClass) cls = dBoxClass;
-    return (cls == dSphereClass || cls == dBoxClass || cls == dCapsuleClass) &&
-           ((m->tc_classes >> cls) & 1);
-}
-
 // The bounding box of the whole mesh in its frame (empty data: a point).
 void dxTriMeshDataBounds(const dxTriMeshData *d, dReal lo[3], dReal hi[3]);
 

@@ -55,6 +55,7 @@ typedef struct dxTriScratch {
     // among them.
     double pair[80];
     int *in_use;      // the owning thread's count of sets in use
+    void *tc;         // the thread's temporal-coherence cache, once asked for
 } dxTriScratch;
 
 // A free set of the calling thread's (NULL, reported, if collisions nest
@@ -64,17 +65,18 @@ dxTriScratch *dxTriScratchAcquire(void);
 void dxTriScratchRelease(dxTriScratch *s);
 // Room for `extra` more contacts in s->raw.
 void dxTriScratchAddRaw(dxTriScratch *s, int extra);
-// The calling thread's temporal-coherence memory: `size` bytes, zeroed when
-// first asked for (always asked for with the same size), freed when the
-// thread exits.
+// The calling thread's temporal-coherence memory: `size` bytes at the start
+// of a cache line, zeroed when first asked for (always asked for with the
+// same size), freed when the thread exits.
 void *dxTriScratchThreadTC(size_t size);
 
-// The triangles whose leaf boxes overlap [lo, hi] (mesh m's frame) into
-// s->cand[0], exactly as dxTriMeshQueryBox lists them; through the calling
-// thread's temporal-coherence cache for the pair (m, other) if m has it on
-// for other's class (collide_trimesh_tc.c). Returns the count.
-int dxTriMeshQueryTC(dxTriScratch *s, const dxTriMesh *m, const dxGeom *other,
-                     const dReal lo[3], const dReal hi[3]);
+// The leaves (node * 4 + slot) that dxTriMeshQueryLeavesF lists for the
+// float box lo_f, hi_f (dxFloatBox; mesh m's frame), the same in the same
+// order, into leaf[] (at most max: -1 if more); through the temporal-
+// coherence cache of s's thread for the pair (m, other), which is always
+// on (collide_trimesh_tc.c).
+int dxTriMeshQueryLeavesCached(dxTriScratch *s, const dxTriMesh *m, const void *other,
+                               const float lo_f[4], const float hi_f[4], int *leaf, int max);
 
 // One pair's query, everything in the mesh frame.
 typedef struct dxTriQuery {

@@ -1,99 +1,147 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
-// collide_trimesh_tc.c -- temporal coherence of the native trimesh colliders
-// (dGeomTriMeshEnableTC): per thread, a cache with an entry per (mesh geom,
-// other geom) pair holding the tree's leaves that an enlarged ("fat") box
-// around the other geom's box meets. While the other's box stays inside the
-// fat box, a query filters those leaves instead of walking the tree, which
-// gives the same triangles in the same order (dxTriMeshFilterLeaves): the
-// contacts never change, only the time.
+// collide_trimesh_tc.c -- temporal coherence of the native trimesh colliders,
+// always on (dGeomTriMeshEnableTC's flags change nothing: the cache is
+// invisible): per thread, a cache with an entry per (mesh geom, other geom)
+// pair holding the tree's leaves that an enlarged ("fat") box around an
+// earlier query box meets. While the query box stays inside the fat box, the
+// leaves the tree walk would list are picked from the kept ones by the walk's
+// own test of their boxes, which gives the same leaves in the same order
+// (see dxTriMeshQueryLeavesCached): the contacts never change, only the time.
 //
 // An entry is found by the mesh's tc_id (unique; ClearTCCache renews it)
 // and the other geom's address, which is compared, never followed: after
 // the other geom is destroyed, its entry can only be found by a new geom at
-// the same address, and is still exact for it. An entry is used only with
-// the tree stamp it was made with (a new build or Update, or other data set
-// on the geom, changes it; a heightfield's patch has stamp 0 and is never
-// cached) and while the query box lies in its fat box; otherwise it is made
-// again. The cache has a fixed size (SETS x WAYS entries, allocated when the
-// thread first uses it): a pair that finds no room takes the entry used
-// least recently in its set. An entry whose fat box meets more than LEAVES
-// leaves records only that, and its pair walks the tree (a large geom gains
+// the same address, and is still exact for it (an entry says which leaves
+// its fat box meets, whoever asks). An entry is used only with the tree
+// stamp it was made with (a new build or Update, or other data set on the
+// geom, changes it; a heightfield's patch has stamp 0 and is never cached)
+// and while the query box lies in its fat box; otherwise it is made again.
+// Boxes are in the mesh's frame, so a moving mesh needs nothing more. The
+// cache has a fixed size (SETS x WAYS entries, allocated when the thread
+// first uses it): a pair that finds no room takes the entry used least
+// recently in its set. An entry whose fat box meets more than LEAVES leaves
+// records only that, and its pair walks the tree (a large geom gains
 // nothing from the cache).
 
 #include "collide_trimesh.h"
 
 #include <stdint.h>
 
-enum { SETS = 512, WAYS = 4, LEAVES = 24 };
+// A set: the keys of its ways in one cache line, then the ways' entries of
+// two lines each (fat box, stamp, clock and 20 leaves).
+enum { SETS = 512, WAYS = 4, LEAVES = 20 };
 
-// Each side of the fat box is this fraction of the box's largest half
+// Each side of the fat box is this fraction of the query box's largest half
 // extent out from the query box.
-#define FAT ((dReal)0.5)
+#define FAT 0.5f
 
-typedef struct tc_entry {
-    uint64_t mesh_id;      // the mesh's tc_id; 0: empty
-    const void *other;     // the other geom (never followed)
-    uint64_t stamp;        // the tree stamp the leaves are from
-    uint64_t used;         // the table's clock when last used
-    dReal lo[3], hi[3];    // the fat box
-    int n;                 // leaves, or -1: more than LEAVES
-    int leaf[LEAVES];
-} tc_entry;
+typedef struct leaf_entry {
+    float lo[4], hi[4];   // the fat box as floats (lane 3: 0, as dxFloatBox's)
+    uint64_t stamp;       // the tree stamp the leaves are from; 0: none
+    uint32_t used;        // the table's clock when last used (wraps: only
+                          // the choice of a way to take over suffers)
+    int n;                // leaves, or -1: more than LEAVES
+    int leaf[LEAVES];     // node * 4 + slot, in leaf order
+} leaf_entry;
 
-typedef struct tc_table {
-    uint64_t clock;
-    tc_entry set[SETS][WAYS];
-} tc_table;
+typedef struct leaf_set {
+    _Alignas(64) uint64_t mesh_id[WAYS];   // the mesh's tc_id; 0: empty
+    const void *other[WAYS];               // the other geom (never followed)
+    leaf_entry entry[WAYS];
+} leaf_set;
 
-// The entry of the pair, or the one of its set to take over (emptied).
-static tc_entry *find_entry(tc_table *t, uint64_t mesh_id, const void *other)
+typedef struct leaf_table {
+    uint32_t clock;
+    leaf_set set[SETS];
+} leaf_table;
+
+// The entry of the pair, or the one of its set to take over (its stamp 0).
+static leaf_entry *find_entry(leaf_table *t, uint64_t mesh_id, const void *other)
 {
-    uint64_t h = mesh_id * 0x9e3779b97f4a7c15u ^ (uint64_t)(uintptr_t)other * 0xc2b2ae3d27d4eb4fu;
-    tc_entry *set = t->set[(h >> 32) % SETS], *oldest = &set[0];
-    t->clock++;
+    const uint64_t h =
+        mesh_id * 0x9e3779b97f4a7c15u ^ (uint64_t)(uintptr_t)other * 0xc2b2ae3d27d4eb4fu;
+    leaf_set *set = &t->set[(h >> 32) % SETS];
+    const uint32_t now = ++t->clock;
     for (int w = 0; w < WAYS; w++) {
-        if (set[w].mesh_id == mesh_id && set[w].other == other) {
-            set[w].used = t->clock;
-            return &set[w];
+        if (set->mesh_id[w] == mesh_id && set->other[w] == other) {
+            set->entry[w].used = now;
+            return &set->entry[w];
         }
-        if (set[w].used < oldest->used) oldest = &set[w];
     }
-    oldest->mesh_id = mesh_id;
-    oldest->other = other;
-    oldest->stamp = 0;
-    oldest->used = t->clock;
-    return oldest;
+    int oldest = 0;
+    for (int w = 1; w < WAYS; w++)
+        if (now - set->entry[w].used > now - set->entry[oldest].used) oldest = w;
+    set->mesh_id[oldest] = mesh_id;
+    set->other[oldest] = other;
+    leaf_entry *e = &set->entry[oldest];
+    e->stamp = 0;
+    e->used = now;
+    return e;
 }
 
-static int inside(const dReal lo[3], const dReal hi[3], const dReal flo[3], const dReal fhi[3])
+// Whether the float box [lo, hi] lies in e's fat box (false for a NaN).
+static inline int inside(const leaf_entry *e, const float lo[4], const float hi[4])
 {
-    return lo[0] >= flo[0] && lo[1] >= flo[1] && lo[2] >= flo[2] && hi[0] <= fhi[0] &&
-           hi[1] <= fhi[1] && hi[2] <= fhi[2];
+    int in = 1;
+    for (int k = 0; k < 3; k++) in &= (lo[k] >= e->lo[k]) & (hi[k] <= e->hi[k]);
+    return in;
 }
 
-// Make the entry for the query box [lo, hi] of data d.
-static void fill_entry(tc_entry *e, const dxTriMeshData *d, const dReal lo[3], const dReal hi[3])
+// Make e for the query box [lo, hi] (floats) of data d: the fat box and the
+// leaves it meets.
+static void fill_entry(leaf_entry *e, const dxTriMeshData *d, const float lo[4],
+                       const float hi[4])
 {
-    dReal half = 0;
-    for (int k = 0; k < 3; k++) half = dMax(half, (hi[k] - lo[k]) / 2);
+    float half = 0;
+    for (int k = 0; k < 3; k++) half = fmaxf(half, (hi[k] - lo[k]) / 2);
     for (int k = 0; k < 3; k++) {
         e->lo[k] = lo[k] - FAT * half;
         e->hi[k] = hi[k] + FAT * half;
     }
+    e->lo[3] = e->hi[3] = 0;
     e->stamp = d->tree_stamp;
-    e->n = dxTriMeshQueryLeaves(d, e->lo, e->hi, e->leaf, LEAVES);
+    e->n = dxTriMeshQueryLeavesF(d, e->lo, e->hi, e->leaf, LEAVES);
 }
 
-int dxTriMeshQueryTC(dxTriScratch *s, const dxTriMesh *m, const dxGeom *other,
-                     const dReal lo[3], const dReal hi[3])
+// Those of e's leaves whose boxes overlap [lo, hi] (floats), as the walk
+// tests them (dxTriNodeOverlaps, one node's four slots at once), into
+// leaf[]; returns the count.
+static int pick_leaves(const dxTriMeshData *d, const leaf_entry *e, const float lo[4],
+                       const float hi[4], int *leaf)
+{
+    int n = 0, node = -1;
+    unsigned meets = 0, leaves;
+    for (int i = 0; i < e->n; i++) {
+        const int id = e->leaf[i];
+        if (id >> 2 != node) {
+            node = id >> 2;
+            meets = dxTriNodeOverlaps(&d->nodes[node], lo, hi, &leaves);
+        }
+        leaf[n] = id;
+        n += meets >> (id & 3) & 1;
+    }
+    return n;
+}
+
+// A leaf whose box overlaps the query box is listed by the walk: each of
+// its parents' boxes holds its box, so overlaps too. A leaf kept for a fat
+// box holding the query box is one of the fat box's, which the walk lists
+// in leaf order as it lists the query's: picking the kept leaves that
+// overlap gives the walk's list, in its order.
+int dxTriMeshQueryLeavesCached(dxTriScratch *s, const dxTriMesh *m, const void *other,
+                               const float lo_f[4], const float hi_f[4], int *leaf, int max)
 {
     const dxTriMeshData *d = m->data;
-    if (d->tree_stamp == 0 || !dxTriMeshTCOn(m, other->ops->cls))
-        return dxTriMeshQueryBox(d, lo, hi, &s->cand[0], &s->cand_cap[0]);
-    tc_table *t = (tc_table *)dxTriScratchThreadTC(sizeof *t);
-    tc_entry *e = find_entry(t, m->tc_id, other);
-    if (e->stamp != d->tree_stamp || !inside(lo, hi, e->lo, e->hi)) fill_entry(e, d, lo, hi);
-    if (e->n < 0) return dxTriMeshQueryBox(d, lo, hi, &s->cand[0], &s->cand_cap[0]);
-    return dxTriMeshFilterLeaves(d, e->leaf, e->n, lo, hi, &s->cand[0], &s->cand_cap[0]);
+    if (d->tree_stamp == 0 || max < LEAVES)
+        return dxTriMeshQueryLeavesF(d, lo_f, hi_f, leaf, max);
+    if (!s->tc) s->tc = dxTriScratchThreadTC(sizeof(leaf_table));
+    leaf_table *t = (leaf_table *)s->tc;
+    leaf_entry *e = find_entry(t, m->tc_id, other);
+    if (e->stamp != d->tree_stamp || !inside(e, lo_f, hi_f)) {
+        fill_entry(e, d, lo_f, hi_f);
+        if (!inside(e, lo_f, hi_f)) return dxTriMeshQueryLeavesF(d, lo_f, hi_f, leaf, max);
+    }
+    if (e->n < 0) return dxTriMeshQueryLeavesF(d, lo_f, hi_f, leaf, max);
+    return pick_leaves(d, e, lo_f, hi_f, leaf);
 }
