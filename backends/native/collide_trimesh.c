@@ -714,6 +714,9 @@ int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dReal reach, dxT
     s->raw_count = 0;
     const dxTriMeshData *d = m->data;
     if (!d || d->tri_count == 0) return 0;
+    // The pair's cached leaves are asked for first: they arrive while the
+    // pose is worked out.
+    if (d->leaf_vertices) dxTriMeshLeavesCachePrefetch(s, m, other);
     dReal lo[3], hi[3], wlo[3], whi[3];
     pose_other(q, lo, hi);
     dReal eps = DX_COLLIDE_EPS * q->scale;

@@ -77,6 +77,9 @@ void *dxTriScratchThreadTC(size_t size);
 // on (collide_trimesh_tc.c).
 int dxTriMeshQueryLeavesCached(dxTriScratch *s, const dxTriMesh *m, const void *other,
                                const float lo_f[4], const float hi_f[4], int *leaf, int max);
+// Ask for the lines of the cache set of the pair (m, other) ahead of
+// dxTriMeshQueryLeavesCached, which waits for them otherwise.
+void dxTriMeshLeavesCachePrefetch(dxTriScratch *s, const dxTriMesh *m, const void *other);
 
 // One pair's query, everything in the mesh frame.
 typedef struct dxTriQuery {

@@ -28,17 +28,19 @@
 
 #include <stdint.h>
 
-// A set: the keys of its ways in one cache line, then the ways' entries of
-// two lines each (fat box, stamp, clock and 20 leaves).
-enum { SETS = 512, WAYS = 4, LEAVES = 20 };
+// A set: WAYS entries of two cache lines each, a pair's key, fat box,
+// stamp and clock in the first line with the first of its LEAVES leaves.
+enum { SETS = 1024, WAYS = 2, LEAVES = 18 };
 
 // Each side of the fat box is this fraction of the query box's largest half
 // extent out from the query box.
 #define FAT 0.5f
 
 typedef struct leaf_entry {
-    float lo[4], hi[4];   // the fat box as floats (lane 3: 0, as dxFloatBox's)
+    uint64_t mesh_id;     // the mesh's tc_id; 0: empty
+    const void *other;    // the other geom (never followed)
     uint64_t stamp;       // the tree stamp the leaves are from; 0: none
+    float lo[3], hi[3];   // the fat box as floats
     uint32_t used;        // the table's clock when last used (wraps: only
                           // the choice of a way to take over suffers)
     int n;                // leaves, or -1: more than LEAVES
@@ -46,9 +48,7 @@ typedef struct leaf_entry {
 } leaf_entry;
 
 typedef struct leaf_set {
-    _Alignas(64) uint64_t mesh_id[WAYS];   // the mesh's tc_id; 0: empty
-    const void *other[WAYS];               // the other geom (never followed)
-    leaf_entry entry[WAYS];
+    _Alignas(64) leaf_entry way[WAYS];
 } leaf_set;
 
 typedef struct leaf_table {
@@ -56,32 +56,44 @@ typedef struct leaf_table {
     leaf_set set[SETS];
 } leaf_table;
 
-// The entry of the pair, or the one of its set to take over (its stamp 0).
-static leaf_entry *find_entry(leaf_table *t, uint64_t mesh_id, const void *other)
+// The set of the pair (mesh_id, other).
+static inline leaf_set *pair_set(leaf_table *t, uint64_t mesh_id, const void *other)
 {
     const uint64_t h =
         mesh_id * 0x9e3779b97f4a7c15u ^ (uint64_t)(uintptr_t)other * 0xc2b2ae3d27d4eb4fu;
-    leaf_set *set = &t->set[(h >> 32) % SETS];
+    return &t->set[(h >> 32) % SETS];
+}
+
+void dxTriMeshLeavesCachePrefetch(dxTriScratch *s, const dxTriMesh *m, const void *other)
+{
+    if (!s->tc) s->tc = dxTriScratchThreadTC(sizeof(leaf_table));
+    const char *set = (const char *)pair_set((leaf_table *)s->tc, m->tc_id, other);
+    for (size_t k = 0; k < sizeof(leaf_set); k += 64) __builtin_prefetch(set + k);
+}
+
+// The entry of the pair, or the one of its set to take over (its stamp 0).
+static leaf_entry *find_entry(leaf_table *t, uint64_t mesh_id, const void *other)
+{
+    leaf_set *set = pair_set(t, mesh_id, other);
     const uint32_t now = ++t->clock;
     for (int w = 0; w < WAYS; w++) {
-        if (set->mesh_id[w] == mesh_id && set->other[w] == other) {
-            set->entry[w].used = now;
-            return &set->entry[w];
+        if (set->way[w].mesh_id == mesh_id && set->way[w].other == other) {
+            set->way[w].used = now;
+            return &set->way[w];
         }
     }
-    int oldest = 0;
+    leaf_entry *e = &set->way[0];
     for (int w = 1; w < WAYS; w++)
-        if (now - set->entry[w].used > now - set->entry[oldest].used) oldest = w;
-    set->mesh_id[oldest] = mesh_id;
-    set->other[oldest] = other;
-    leaf_entry *e = &set->entry[oldest];
+        if (now - set->way[w].used > now - e->used) e = &set->way[w];
+    e->mesh_id = mesh_id;
+    e->other = other;
     e->stamp = 0;
     e->used = now;
     return e;
 }
 
 // Whether the float box [lo, hi] lies in e's fat box (false for a NaN).
-static inline int inside(const leaf_entry *e, const float lo[4], const float hi[4])
+static inline int inside(const leaf_entry *e, const float lo[3], const float hi[3])
 {
     int in = 1;
     for (int k = 0; k < 3; k++) in &= (lo[k] >= e->lo[k]) & (hi[k] <= e->hi[k]);
@@ -99,7 +111,6 @@ static void fill_entry(leaf_entry *e, const dxTriMeshData *d, const float lo[4],
         e->lo[k] = lo[k] - FAT * half;
         e->hi[k] = hi[k] + FAT * half;
     }
-    e->lo[3] = e->hi[3] = 0;
     e->stamp = d->tree_stamp;
     e->n = dxTriMeshQueryLeavesF(d, e->lo, e->hi, e->leaf, LEAVES);
 }
@@ -136,8 +147,7 @@ int dxTriMeshQueryLeavesCached(dxTriScratch *s, const dxTriMesh *m, const void *
     if (d->tree_stamp == 0 || max < LEAVES)
         return dxTriMeshQueryLeavesF(d, lo_f, hi_f, leaf, max);
     if (!s->tc) s->tc = dxTriScratchThreadTC(sizeof(leaf_table));
-    leaf_table *t = (leaf_table *)s->tc;
-    leaf_entry *e = find_entry(t, m->tc_id, other);
+    leaf_entry *e = find_entry((leaf_table *)s->tc, m->tc_id, other);
     if (e->stamp != d->tree_stamp || !inside(e, lo_f, hi_f)) {
         fill_entry(e, d, lo_f, hi_f);
         if (!inside(e, lo_f, hi_f)) return dxTriMeshQueryLeavesF(d, lo_f, hi_f, leaf, max);
