@@ -30,11 +30,14 @@
 
 // A set: WAYS entries of two cache lines each, a pair's key, fat box,
 // stamp and clock in the first line with the first of its LEAVES leaves.
-enum { SETS = 1024, WAYS = 2, LEAVES = 18 };
+enum { SETS = 512, WAYS = 4, LEAVES = 18 };
 
-// Each side of the fat box is this fraction of the query box's largest half
-// extent out from the query box.
-#define FAT 0.5f
+// The fat box: each side this fraction of the query box's largest half
+// extent out from the query box, and on the side the box moves to (from
+// the centre of the pair's last fat box, when it is from the same tree)
+// MOVE times as far as it moved.
+#define FAT 0.25f
+#define MOVE 1.5f
 
 typedef struct leaf_entry {
     uint64_t mesh_id;     // the mesh's tc_id; 0: empty
@@ -67,8 +70,8 @@ static inline leaf_set *pair_set(leaf_table *t, uint64_t mesh_id, const void *ot
 void dxTriMeshLeavesCachePrefetch(dxTriScratch *s, const dxTriMesh *m, const void *other)
 {
     if (!s->tc) s->tc = dxTriScratchThreadTC(sizeof(leaf_table));
-    const char *set = (const char *)pair_set((leaf_table *)s->tc, m->tc_id, other);
-    for (size_t k = 0; k < sizeof(leaf_set); k += 64) __builtin_prefetch(set + k);
+    const leaf_set *set = pair_set((leaf_table *)s->tc, m->tc_id, other);
+    for (int w = 0; w < WAYS; w++) __builtin_prefetch(&set->way[w]);
 }
 
 // The entry of the pair, or the one of its set to take over (its stamp 0).
@@ -79,6 +82,7 @@ static leaf_entry *find_entry(leaf_table *t, uint64_t mesh_id, const void *other
     for (int w = 0; w < WAYS; w++) {
         if (set->way[w].mesh_id == mesh_id && set->way[w].other == other) {
             set->way[w].used = now;
+            __builtin_prefetch(&set->way[w].leaf[LEAVES - 1]);
             return &set->way[w];
         }
     }
@@ -101,18 +105,24 @@ static inline int inside(const leaf_entry *e, const float lo[3], const float hi[
 }
 
 // Make e for the query box [lo, hi] (floats) of data d: the fat box and the
-// leaves it meets.
-static void fill_entry(leaf_entry *e, const dxTriMeshData *d, const float lo[4],
-                       const float hi[4])
+// leaves it meets. A fat box stretched along the motion that meets more
+// than LEAVES leaves is made again without the stretch.
+static void fill_entry(leaf_entry *e, const dxTriMeshData *d, const float lo[3],
+                       const float hi[3])
 {
-    float half = 0;
+    float half = 0, move[3] = { 0, 0, 0 };
     for (int k = 0; k < 3; k++) half = fmaxf(half, (hi[k] - lo[k]) / 2);
-    for (int k = 0; k < 3; k++) {
-        e->lo[k] = lo[k] - FAT * half;
-        e->hi[k] = hi[k] + FAT * half;
+    if (e->stamp == d->tree_stamp)
+        for (int k = 0; k < 3; k++) move[k] = MOVE * ((lo[k] + hi[k]) - (e->lo[k] + e->hi[k])) / 2;
+    for (int stretch = 1; stretch >= 0; stretch--) {
+        for (int k = 0; k < 3; k++) {
+            e->lo[k] = lo[k] - FAT * half + (stretch ? fminf(move[k], 0) : 0);
+            e->hi[k] = hi[k] + FAT * half + (stretch ? fmaxf(move[k], 0) : 0);
+        }
+        e->n = dxTriMeshQueryLeavesF(d, e->lo, e->hi, e->leaf, LEAVES);
+        if (e->n >= 0 || (move[0] == 0 && move[1] == 0 && move[2] == 0)) break;
     }
     e->stamp = d->tree_stamp;
-    e->n = dxTriMeshQueryLeavesF(d, e->lo, e->hi, e->leaf, LEAVES);
 }
 
 // Those of e's leaves whose boxes overlap [lo, hi] (floats), as the walk
