@@ -20,17 +20,20 @@
 // Boxes are in the mesh's frame, so a moving mesh needs nothing more. The
 // cache has a fixed size (SETS x WAYS entries, allocated when the thread
 // first uses it): a pair that finds no room takes the entry used least
-// recently in its set. An entry whose fat box meets more than LEAVES leaves
-// records only that, and its pair walks the tree (a large geom gains
-// nothing from the cache).
+// recently in its set. An entry keeps its leaves as runs of one node's
+// (a node's box test picks a run's leaves at once); one whose fat box meets
+// leaves that make more than RUNS runs records only that, and its pair
+// walks the tree (a large geom gains nothing from the cache).
 
 #include "collide_trimesh.h"
 
 #include <stdint.h>
+#include <string.h>
 
 // A set: WAYS entries of two cache lines each, a pair's key, fat box,
-// stamp and clock in the first line with the first of its LEAVES leaves.
-enum { SETS = 512, WAYS = 4, LEAVES = 18 };
+// stamp and clock in the first line with the first of its RUNS runs of
+// leaves.
+enum { SETS = 512, WAYS = 4, RUNS = 18 };
 
 // The fat box: each side this fraction of the query box's largest half
 // extent out from the query box, and on the side the box moves to (from
@@ -46,9 +49,12 @@ typedef struct leaf_entry {
     float lo[3], hi[3];   // the fat box as floats
     uint32_t used;        // the table's clock when last used (wraps: only
                           // the choice of a way to take over suffers)
-    int n;                // leaves, or -1: more than LEAVES
-    int leaf[LEAVES];     // node * 4 + slot, in leaf order
+    int n;                // runs, or -1: more than RUNS
+    int run[RUNS];        // node * 16 + a bit per kept slot: the kept
+                          // leaves, in leaf order, by runs of one node's
 } leaf_entry;
+
+_Static_assert(sizeof(leaf_entry) == 128, "an entry is two cache lines");
 
 typedef struct leaf_set {
     _Alignas(64) leaf_entry way[WAYS];
@@ -82,7 +88,7 @@ static leaf_entry *find_entry(leaf_table *t, uint64_t mesh_id, const void *other
     for (int w = 0; w < WAYS; w++) {
         if (set->way[w].mesh_id == mesh_id && set->way[w].other == other) {
             set->way[w].used = now;
-            __builtin_prefetch(&set->way[w].leaf[LEAVES - 1]);
+            __builtin_prefetch(&set->way[w].run[RUNS - 1]);
             return &set->way[w];
         }
     }
@@ -104,9 +110,26 @@ static inline int inside(const leaf_entry *e, const float lo[3], const float hi[
     return in;
 }
 
+// The n leaves (node * 4 + slot, in leaf order) as runs of one node's into
+// e; -1 if they make more than RUNS.
+static int make_runs(leaf_entry *e, const int *leaf, int n)
+{
+    int runs = 0;
+    for (int i = 0; i < n; i++) {
+        const int node = leaf[i] >> 2, bit = 1 << (leaf[i] & 3);
+        if (runs > 0 && e->run[runs - 1] >> 4 == node) {
+            e->run[runs - 1] |= bit;
+        } else {
+            if (runs == RUNS) return -1;
+            e->run[runs++] = node << 4 | bit;
+        }
+    }
+    return runs;
+}
+
 // Make e for the query box [lo, hi] (floats) of data d: the fat box and the
-// leaves it meets. A fat box stretched along the motion that meets more
-// than LEAVES leaves is made again without the stretch.
+// leaves it meets. A fat box stretched along the motion whose leaves make
+// more than RUNS runs is made again without the stretch.
 static void fill_entry(leaf_entry *e, const dxTriMeshData *d, const float lo[3],
                        const float hi[3])
 {
@@ -119,28 +142,53 @@ static void fill_entry(leaf_entry *e, const dxTriMeshData *d, const float lo[3],
             e->lo[k] = lo[k] - FAT * half + (stretch ? fminf(move[k], 0) : 0);
             e->hi[k] = hi[k] + FAT * half + (stretch ? fmaxf(move[k], 0) : 0);
         }
-        e->n = dxTriMeshQueryLeavesF(d, e->lo, e->hi, e->leaf, LEAVES);
+        int leaf[4 * RUNS];
+        const int n = dxTriMeshQueryLeavesF(d, e->lo, e->hi, leaf, 4 * RUNS);
+        e->n = n < 0 ? -1 : make_runs(e, leaf, n);
         if (e->n >= 0 || (move[0] == 0 && move[1] == 0 && move[2] == 0)) break;
     }
     e->stamp = d->tree_stamp;
 }
 
-// Those of e's leaves whose boxes overlap [lo, hi] (floats), as the walk
-// tests them (dxTriNodeOverlaps, one node's four slots at once), into
-// leaf[]; returns the count.
-static int pick_leaves(const dxTriMeshData *d, const leaf_entry *e, const float lo[4],
-                       const float hi[4], int *leaf)
+// Bit s set for each slot of node whose box overlaps the query box, its
+// sides each in four lanes (qlo, qhi): dxTriNodeOverlaps's comparisons,
+// the slots' use left out.
+static inline unsigned slots_meeting(const dxTriMeshNode *node, const dxTriF4 qlo[3],
+                                     const dxTriF4 qhi[3])
 {
-    int n = 0, node = -1;
-    unsigned meets = 0, leaves;
+    dxTriI4 m = { -1, -1, -1, -1 };
+    for (int k = 0; k < 3; k++) {
+        dxTriF4 slo, shi;
+        memcpy(&slo, node->lo[k], sizeof slo);
+        memcpy(&shi, node->hi[k], sizeof shi);
+        m &= (slo <= qhi[k]) & (shi >= qlo[k]);
+    }
+#if defined(__SSE__)
+    return (unsigned)_mm_movemask_ps((__m128)m);
+#else
+    return (unsigned)((m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8));
+#endif
+}
+
+// Those of e's leaves whose boxes overlap [lo, hi] (floats), as the walk
+// tests them (one node's four slots at once), into leaf[] (room for 4 RUNS);
+// returns the count.
+static int pick_leaves(const dxTriMeshData *d, const leaf_entry *e, const float lo[3],
+                       const float hi[3], int *leaf)
+{
+    dxTriF4 qlo[3], qhi[3];
+    for (int k = 0; k < 3; k++) {
+        qlo[k] = (dxTriF4){ lo[k], lo[k], lo[k], lo[k] };
+        qhi[k] = (dxTriF4){ hi[k], hi[k], hi[k], hi[k] };
+    }
+    int n = 0;
     for (int i = 0; i < e->n; i++) {
-        const int id = e->leaf[i];
-        if (id >> 2 != node) {
-            node = id >> 2;
-            meets = dxTriNodeOverlaps(&d->nodes[node], lo, hi, &leaves);
+        const int node = e->run[i] >> 4;
+        const unsigned meets = slots_meeting(&d->nodes[node], qlo, qhi) & (unsigned)e->run[i];
+        for (int slot = 0; slot < 4; slot++) {
+            leaf[n] = 4 * node + slot;
+            n += meets >> slot & 1;
         }
-        leaf[n] = id;
-        n += meets >> (id & 3) & 1;
     }
     return n;
 }
@@ -154,7 +202,7 @@ int dxTriMeshQueryLeavesCached(dxTriScratch *s, const dxTriMesh *m, const void *
                                const float lo_f[4], const float hi_f[4], int *leaf, int max)
 {
     const dxTriMeshData *d = m->data;
-    if (d->tree_stamp == 0 || max < LEAVES)
+    if (d->tree_stamp == 0 || max <= 4 * RUNS)
         return dxTriMeshQueryLeavesF(d, lo_f, hi_f, leaf, max);
     if (!s->tc) s->tc = dxTriScratchThreadTC(sizeof(leaf_table));
     leaf_entry *e = find_entry((leaf_table *)s->tc, m->tc_id, other);
