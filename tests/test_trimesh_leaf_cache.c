@@ -76,7 +76,8 @@ static int compare_query(dxTriScratch *s, dGeomID mesh, const void *other, const
     dxFloatBox(lo, hi, lo_f, hi_f);
     int want[MAX_LEAVES], got[MAX_LEAVES];
     const int nw = dxTriMeshQueryLeavesF(m->data, lo_f, hi_f, want, max);
-    const int ng = dxTriMeshQueryLeavesCached(s, m, other, lo_f, hi_f, got, max);
+    dxTriLeafEntry *e = dxTriMeshLeafEntry(s, m, other);
+    const int ng = dxTriMeshQueryLeavesCached(m->data, e, lo_f, hi_f, got, max);
     return nw != ng || (nw > 0 && memcmp(want, got, (size_t)nw * sizeof *want) != 0);
 }
 
@@ -210,8 +211,8 @@ static void *thread_queries(void *arg)
         dxFloatBox(lo, hi, lo_f, hi_f);
         int want[MAX_LEAVES], got[MAX_LEAVES];
         const int nw = dxTriMeshQueryLeavesF(m->data, lo_f, hi_f, want, MAX_LEAVES);
-        const int ng =
-            dxTriMeshQueryLeavesCached(s, m, &other[step % 8], lo_f, hi_f, got, MAX_LEAVES);
+        dxTriLeafEntry *e = dxTriMeshLeafEntry(s, m, &other[step % 8]);
+        const int ng = dxTriMeshQueryLeavesCached(m->data, e, lo_f, hi_f, got, MAX_LEAVES);
         job->bad += nw != ng || (nw > 0 && memcmp(want, got, (size_t)nw * sizeof *want) != 0);
     }
     dxTriScratchRelease(s);

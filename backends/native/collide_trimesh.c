@@ -716,7 +716,7 @@ int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dReal reach, dxT
     if (!d || d->tri_count == 0) return 0;
     // The pair's cached leaves are asked for first: they arrive while the
     // pose is worked out.
-    if (d->leaf_vertices) dxTriMeshLeavesCachePrefetch(s, m, other);
+    dxTriLeafEntry *cached = d->leaf_vertices ? dxTriMeshLeafEntry(s, m, other) : NULL;
     dReal lo[3], hi[3], wlo[3], whi[3];
     pose_other(q, lo, hi);
     dReal eps = DX_COLLIDE_EPS * q->scale;
@@ -734,7 +734,7 @@ int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dReal reach, dxT
     if (d->leaf_vertices) {
         float lo_f[4], hi_f[4];
         dxFloatBox(lo, hi, lo_f, hi_f);
-        leaves = dxTriMeshQueryLeavesCached(s, m, other, lo_f, hi_f, leaf, LEAF_WALK_MAX);
+        leaves = dxTriMeshQueryLeavesCached(d, cached, lo_f, hi_f, leaf, LEAF_WALK_MAX);
     }
     if (leaves >= 0 && !m->callback) {
         off_box_f fb;

@@ -70,16 +70,22 @@ void dxTriScratchAddRaw(dxTriScratch *s, int extra);
 // same size), freed when the thread exits.
 void *dxTriScratchThreadTC(size_t size);
 
+// A pair's entry in the temporal-coherence cache of a thread, which is
+// always on (collide_trimesh_tc.c).
+typedef struct dxTriLeafEntry dxTriLeafEntry;
+// The entry of the pair (m, other) in the cache of s's thread, found (or
+// taken over) ahead of the query: the lines of its leaves' nodes are asked
+// for, and those of the entry found after it last time. NULL if m's tree is
+// not cached (a heightfield's patch).
+dxTriLeafEntry *dxTriMeshLeafEntry(dxTriScratch *s, const dxTriMesh *m, const void *other);
 // The leaves (node * 4 + slot) that dxTriMeshQueryLeavesF lists for the
-// float box lo_f, hi_f (dxFloatBox; mesh m's frame), the same in the same
-// order, into leaf[] (at most max: -1 if more); through the temporal-
-// coherence cache of s's thread for the pair (m, other), which is always
-// on (collide_trimesh_tc.c).
-int dxTriMeshQueryLeavesCached(dxTriScratch *s, const dxTriMesh *m, const void *other,
-                               const float lo_f[4], const float hi_f[4], int *leaf, int max);
-// Ask for the lines of the cache set of the pair (m, other) ahead of
-// dxTriMeshQueryLeavesCached, which waits for them otherwise.
-void dxTriMeshLeavesCachePrefetch(dxTriScratch *s, const dxTriMesh *m, const void *other);
+// float box lo_f, hi_f (dxFloatBox; the mesh's frame) of data d, the same in
+// the same order, into leaf[] (at most max: -1 if more); through the pair's
+// entry e (from dxTriMeshLeafEntry in this thread; NULL: the walk). Any
+// entry gives the walk's list: one is used only with its own tree stamp and
+// for a box inside its fat box, else made again.
+int dxTriMeshQueryLeavesCached(const dxTriMeshData *d, dxTriLeafEntry *e, const float lo_f[4],
+                               const float hi_f[4], int *leaf, int max);
 
 // One pair's query, everything in the mesh frame.
 typedef struct dxTriQuery {

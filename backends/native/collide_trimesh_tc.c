@@ -33,7 +33,7 @@
 // A set: WAYS entries of two cache lines each, a pair's key, fat box,
 // stamp and clock in the first line with the first of its RUNS runs of
 // leaves.
-enum { SETS = 512, WAYS = 4, RUNS = 18 };
+enum { SETS = 512, WAYS = 4, RUNS = 17 };
 
 // The fat box: each side this fraction of the query box's largest half
 // extent out from the query box, and on the side the box moves to (from
@@ -42,13 +42,14 @@ enum { SETS = 512, WAYS = 4, RUNS = 18 };
 #define FAT 0.25f
 #define MOVE 1.5f
 
-typedef struct leaf_entry {
+typedef struct dxTriLeafEntry {
     uint64_t mesh_id;     // the mesh's tc_id; 0: empty
     const void *other;    // the other geom (never followed)
     uint64_t stamp;       // the tree stamp the leaves are from; 0: none
     float lo[3], hi[3];   // the fat box as floats
     uint32_t used;        // the table's clock when last used (wraps: only
                           // the choice of a way to take over suffers)
+    uint32_t next;        // the entry found after this one, last time
     int n;                // runs, or -1: more than RUNS
     int run[RUNS];        // node * 16 + a bit per kept slot: the kept
                           // leaves, in leaf order, by runs of one node's
@@ -56,49 +57,70 @@ typedef struct leaf_entry {
 
 _Static_assert(sizeof(leaf_entry) == 128, "an entry is two cache lines");
 
-typedef struct leaf_set {
-    _Alignas(64) leaf_entry way[WAYS];
-} leaf_set;
-
+// The entries, set after set; the last entry found, and the one expected
+// next (the pairs of a step come in the order of the step before).
 typedef struct leaf_table {
-    uint32_t clock;
-    leaf_set set[SETS];
+    uint32_t clock, last, expected;
+    _Alignas(64) leaf_entry entry[SETS * WAYS];
 } leaf_table;
 
-// The set of the pair (mesh_id, other).
-static inline leaf_set *pair_set(leaf_table *t, uint64_t mesh_id, const void *other)
+// The first way of the pair's set.
+static inline leaf_entry *pair_set(leaf_table *t, uint64_t mesh_id, const void *other)
 {
     const uint64_t h =
         mesh_id * 0x9e3779b97f4a7c15u ^ (uint64_t)(uintptr_t)other * 0xc2b2ae3d27d4eb4fu;
-    return &t->set[(h >> 32) % SETS];
+    return &t->entry[(h >> 32) % SETS * WAYS];
 }
 
-void dxTriMeshLeavesCachePrefetch(dxTriScratch *s, const dxTriMesh *m, const void *other)
-{
-    if (!s->tc) s->tc = dxTriScratchThreadTC(sizeof(leaf_table));
-    const leaf_set *set = pair_set((leaf_table *)s->tc, m->tc_id, other);
-    for (int w = 0; w < WAYS; w++) __builtin_prefetch(&set->way[w]);
-}
-
-// The entry of the pair, or the one of its set to take over (its stamp 0).
+// The entry of the pair (the expected one, else one of its set), or the one
+// of its set to take over (its stamp 0).
 static leaf_entry *find_entry(leaf_table *t, uint64_t mesh_id, const void *other)
 {
-    leaf_set *set = pair_set(t, mesh_id, other);
     const uint32_t now = ++t->clock;
+    leaf_entry *e = &t->entry[t->expected];
+    if (e->mesh_id == mesh_id && e->other == other) {
+        e->used = now;
+        return e;
+    }
+    leaf_entry *set = pair_set(t, mesh_id, other);
     for (int w = 0; w < WAYS; w++) {
-        if (set->way[w].mesh_id == mesh_id && set->way[w].other == other) {
-            set->way[w].used = now;
-            __builtin_prefetch(&set->way[w].run[RUNS - 1]);
-            return &set->way[w];
+        if (set[w].mesh_id == mesh_id && set[w].other == other) {
+            set[w].used = now;
+            return &set[w];
         }
     }
-    leaf_entry *e = &set->way[0];
+    e = &set[0];
     for (int w = 1; w < WAYS; w++)
-        if (now - set->way[w].used > now - e->used) e = &set->way[w];
+        if (now - set[w].used > now - e->used) e = &set[w];
     e->mesh_id = mesh_id;
     e->other = other;
     e->stamp = 0;
     e->used = now;
+    return e;
+}
+
+dxTriLeafEntry *dxTriMeshLeafEntry(dxTriScratch *s, const dxTriMesh *m, const void *other)
+{
+    const dxTriMeshData *d = m->data;
+    if (d->tree_stamp == 0) return NULL;
+    if (!s->tc) s->tc = dxTriScratchThreadTC(sizeof(leaf_table));
+    leaf_table *t = (leaf_table *)s->tc;
+    leaf_entry *e = find_entry(t, m->tc_id, other);
+    const uint32_t i = (uint32_t)(e - t->entry);
+    t->entry[t->last].next = i;
+    t->last = i;
+    t->expected = e->next;
+    const char *next = (const char *)&t->entry[e->next];
+    __builtin_prefetch(next);
+    __builtin_prefetch(next + 64);
+    __builtin_prefetch(&e->run[RUNS - 1]);
+    if (e->stamp == d->tree_stamp) {
+        for (int r = 0; r < e->n; r++) {
+            const char *node = (const char *)&d->nodes[e->run[r] >> 4];
+            __builtin_prefetch(node);
+            __builtin_prefetch(node + 64);
+        }
+    }
     return e;
 }
 
@@ -198,14 +220,10 @@ static int pick_leaves(const dxTriMeshData *d, const leaf_entry *e, const float 
 // box holding the query box is one of the fat box's, which the walk lists
 // in leaf order as it lists the query's: picking the kept leaves that
 // overlap gives the walk's list, in its order.
-int dxTriMeshQueryLeavesCached(dxTriScratch *s, const dxTriMesh *m, const void *other,
-                               const float lo_f[4], const float hi_f[4], int *leaf, int max)
+int dxTriMeshQueryLeavesCached(const dxTriMeshData *d, dxTriLeafEntry *e, const float lo_f[4],
+                               const float hi_f[4], int *leaf, int max)
 {
-    const dxTriMeshData *d = m->data;
-    if (d->tree_stamp == 0 || max <= 4 * RUNS)
-        return dxTriMeshQueryLeavesF(d, lo_f, hi_f, leaf, max);
-    if (!s->tc) s->tc = dxTriScratchThreadTC(sizeof(leaf_table));
-    leaf_entry *e = find_entry((leaf_table *)s->tc, m->tc_id, other);
+    if (!e || max <= 4 * RUNS) return dxTriMeshQueryLeavesF(d, lo_f, hi_f, leaf, max);
     if (e->stamp != d->tree_stamp || !inside(e, lo_f, hi_f)) {
         fill_entry(e, d, lo_f, hi_f);
         if (!inside(e, lo_f, hi_f)) return dxTriMeshQueryLeavesF(d, lo_f, hi_f, leaf, max);
