@@ -394,35 +394,16 @@ static inline int dxTriTreeWalkNext(const dxTriMeshData *d, dxTriTreeWalk *w)
 // as needed, capacity *cap); returns the count.
 int dxTriMeshQueryBox(const dxTriMeshData *d, const dReal lo[3], const dReal hi[3], int **out,
                       int *cap);
-// The leaves (node * 4 + slot) whose box overlaps [lo, hi], in the order
-// dxTriMeshQueryBox lists their triangles, into leaf[]; returns the count,
-// or -1 (stopping) if there are more than max.
-int dxTriMeshQueryLeaves(const dxTriMeshData *d, const dReal lo[3], const dReal hi[3], int *leaf,
-                         int max);
-// The same for the box whose floats (dxFloatBox) are lo_f, hi_f.
+// The leaves (node * 4 + slot) whose box overlaps the box whose floats
+// (dxFloatBox) are lo_f, hi_f, in the order dxTriMeshQueryBox lists their
+// triangles, into leaf[]; returns the count, or -1 (stopping) if there are
+// more than max.
 int dxTriMeshQueryLeavesF(const dxTriMeshData *d, const float lo_f[3], const float hi_f[3],
                           int *leaf, int max);
-// The triangles of those of leaf[0 .. n) whose box overlaps [lo, hi] into
-// *out (grown as needed); returns the count. If leaf[] came from
-// dxTriMeshQueryLeaves for a box containing [lo, hi] (same tree stamp), the
-// list is exactly dxTriMeshQueryBox's for [lo, hi]: a leaf's box lies in
-// its parent's, so the walk reaches every leaf that overlaps, in leaf order.
-int dxTriMeshFilterLeaves(const dxTriMeshData *d, const int *leaf, int n, const dReal lo[3],
-                          const dReal hi[3], int **out, int *cap);
 // A number unique in the process, never 0 (tree stamps, tc_id).
 uint64_t dxTriMeshNewStamp(void);
 // Grow an int array to hold n.
 void dxTriMeshReserveInts(int **a, int *cap, int n);
-
-// Whether temporal coherence is on for a geom of class cls: the class's own
-// flag for spheres, boxes and capsules, the box's for cylinders (as ODE
-// 0.16); other classes have none.
-static inline int dxTriMeshTCOn(const dxTriMesh *m, int cls)
-{
-    if (cls == dCylinderClass) cls = dBoxClass;
-    return (cls == dSphereClass || cls == dBoxClass || cls == dCapsuleClass) &&
-           ((m->tc_classes >> cls) & 1);
-}
 
 // The bounding box of the whole mesh in its frame (empty data: a point).
 void dxTriMeshDataBounds(const dxTriMeshData *d, dReal lo[3], dReal hi[3]);

@@ -412,7 +412,7 @@ int dxTriMeshQueryBox(const dxTriMeshData *d, const dReal lo[3], const dReal hi[
     return n;
 }
 
-// dxTriMeshQueryLeaves's walk, built twice where the library can pick a
+// dxTriMeshQueryLeavesF's walk, built twice where the library can pick a
 // version when loaded (dx_clones.h): with AVX2 (the same comparisons, in
 // three-operand form) and for the baseline. Static, called through the
 // plain function below (GCC 12 exports a clone whatever the visibility).
@@ -429,35 +429,10 @@ QUERY_CLONES static int query_leaves(const dxTriMeshData *d, const float lo_f[3]
     return n;
 }
 
-int dxTriMeshQueryLeaves(const dxTriMeshData *d, const dReal lo[3], const dReal hi[3], int *leaf,
-                         int max)
-{
-    float lo_f[4], hi_f[4];
-    dxFloatBox(lo, hi, lo_f, hi_f);
-    return d->node_count == 0 ? 0 : query_leaves(d, lo_f, hi_f, leaf, max);
-}
-
 int dxTriMeshQueryLeavesF(const dxTriMeshData *d, const float lo_f[3], const float hi_f[3],
                           int *leaf, int max)
 {
     return d->node_count == 0 ? 0 : query_leaves(d, lo_f, hi_f, leaf, max);
-}
-
-int dxTriMeshFilterLeaves(const dxTriMeshData *d, const int *leaf, int n, const dReal lo[3],
-                          const dReal hi[3], int **out, int *cap)
-{
-    int count = 0;
-    for (int i = 0; i < n; i++) {
-        const dxTriMeshNode *node = &d->nodes[leaf[i] >> 2];
-        int s = leaf[i] & 3;
-        if (!(node->lo[0][s] <= hi[0] && node->hi[0][s] >= lo[0] && node->lo[1][s] <= hi[1] &&
-              node->hi[1][s] >= lo[1] && node->lo[2][s] <= hi[2] && node->hi[2][s] >= lo[2]))
-            continue;
-        int first = node->first[s], c = node->count[s];
-        if (count + c > *cap) dxTriMeshReserveInts(out, cap, count + c);
-        for (int j = 0; j < c; j++) (*out)[count++] = d->order[first + j];
-    }
-    return count;
 }
 
 void dxTriMeshDataBounds(const dxTriMeshData *d, dReal lo[3], dReal hi[3])

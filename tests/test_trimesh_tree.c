@@ -226,7 +226,7 @@ static int scan_leaves(const dxTriMeshData *d, const dReal lo[3], const dReal hi
 static int check_queries(const dxTriMeshData *d, double size, const double centre[3])
 {
     int *expect = malloc(sizeof(int) * (size_t)d->tri_count);
-    int *got = NULL, cap = 0, leaf[64];
+    int *got = NULL, cap = 0;
     for (int q = 0; q < 400; q++) {
         dReal lo[3], hi[3];
         for (int k = 0; k < 3; k++) {
@@ -246,18 +246,6 @@ static int check_queries(const dxTriMeshData *d, double size, const double centr
         int m = dxTriMeshQueryBox(d, lo, hi, &got, &cap);
         CHECK(m == n);
         CHECK(n == 0 || memcmp(expect, got, sizeof(int) * (size_t)n) == 0);
-        // through the leaves of a larger box, as temporal coherence does
-        dReal flo[3], fhi[3];
-        for (int k = 0; k < 3; k++) {
-            flo[k] = lo[k] - size / 10;
-            fhi[k] = hi[k] + size / 10;
-        }
-        int nl = dxTriMeshQueryLeaves(d, flo, fhi, leaf, 64);
-        if (nl >= 0) {
-            m = dxTriMeshFilterLeaves(d, leaf, nl, lo, hi, &got, &cap);
-            CHECK(m == n);
-            CHECK(n == 0 || memcmp(expect, got, sizeof(int) * (size_t)n) == 0);
-        }
     }
     free(expect);
     free(got);

@@ -714,6 +714,9 @@ int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dReal reach, dxT
     s->raw_count = 0;
     const dxTriMeshData *d = m->data;
     if (!d || d->tri_count == 0) return 0;
+    // The pair's cached leaves are asked for first: they arrive while the
+    // pose is worked out.
+    dxTriLeafEntry *cached = d->leaf_vertices ? dxTriMeshLeafEntry(s, m, other) : NULL;
     dReal lo[3], hi[3], wlo[3], whi[3];
     pose_other(q, lo, hi);
     dReal eps = DX_COLLIDE_EPS * q->scale;
@@ -724,14 +727,14 @@ int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dReal reach, dxT
     off_box b;
     off_box_set(&b, wlo, whi);
     int hits = 0;
-    // Without temporal coherence the tree's leaves are walked in place:
-    // the same triangles in the same order as dxTriMeshQueryBox lists
-    // them, their vertices read from the leaf-order copy.
+    // The tree's leaves are walked in place: the same triangles in the same
+    // order as dxTriMeshQueryBox lists them, their vertices read from the
+    // leaf-order copy; the leaves from the pair's temporal-coherence cache.
     int leaf[LEAF_WALK_MAX], leaves = -1;
-    if (d->leaf_vertices && (d->tree_stamp == 0 || !dxTriMeshTCOn(m, other->ops->cls))) {
+    if (d->leaf_vertices) {
         float lo_f[4], hi_f[4];
         dxFloatBox(lo, hi, lo_f, hi_f);
-        leaves = dxTriMeshQueryLeavesF(d, lo_f, hi_f, leaf, LEAF_WALK_MAX);
+        leaves = dxTriMeshQueryLeavesCached(d, cached, lo_f, hi_f, leaf, LEAF_WALK_MAX);
     }
     if (leaves >= 0 && !m->callback) {
         off_box_f fb;
@@ -750,7 +753,7 @@ int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dReal reach, dxT
             }
         }
     } else {
-        int count = dxTriMeshQueryTC(s, m, other, lo, hi);
+        int count = dxTriMeshQueryBox(d, lo, hi, &s->cand[0], &s->cand_cap[0]);
         dxTriOwn own;
         for (int i = 0; i < count; i++) {
             int t = s->cand[0][i];

@@ -55,6 +55,7 @@ typedef struct dxTriScratch {
     // among them.
     double pair[80];
     int *in_use;      // the owning thread's count of sets in use
+    void *tc;         // the thread's temporal-coherence cache, once asked for
 } dxTriScratch;
 
 // A free set of the calling thread's (NULL, reported, if collisions nest
@@ -64,17 +65,27 @@ dxTriScratch *dxTriScratchAcquire(void);
 void dxTriScratchRelease(dxTriScratch *s);
 // Room for `extra` more contacts in s->raw.
 void dxTriScratchAddRaw(dxTriScratch *s, int extra);
-// The calling thread's temporal-coherence memory: `size` bytes, zeroed when
-// first asked for (always asked for with the same size), freed when the
-// thread exits.
+// The calling thread's temporal-coherence memory: `size` bytes at the start
+// of a cache line, zeroed when first asked for (always asked for with the
+// same size), freed when the thread exits.
 void *dxTriScratchThreadTC(size_t size);
 
-// The triangles whose leaf boxes overlap [lo, hi] (mesh m's frame) into
-// s->cand[0], exactly as dxTriMeshQueryBox lists them; through the calling
-// thread's temporal-coherence cache for the pair (m, other) if m has it on
-// for other's class (collide_trimesh_tc.c). Returns the count.
-int dxTriMeshQueryTC(dxTriScratch *s, const dxTriMesh *m, const dxGeom *other,
-                     const dReal lo[3], const dReal hi[3]);
+// A pair's entry in the temporal-coherence cache of a thread, which is
+// always on (collide_trimesh_tc.c).
+typedef struct dxTriLeafEntry dxTriLeafEntry;
+// The entry of the pair (m, other) in the cache of s's thread, found (or
+// taken over) ahead of the query: the lines of its leaves' nodes are asked
+// for, and those of the entry found after it last time. NULL if m's tree is
+// not cached (a heightfield's patch).
+dxTriLeafEntry *dxTriMeshLeafEntry(dxTriScratch *s, const dxTriMesh *m, const void *other);
+// The leaves (node * 4 + slot) that dxTriMeshQueryLeavesF lists for the
+// float box lo_f, hi_f (dxFloatBox; the mesh's frame) of data d, the same in
+// the same order, into leaf[] (at most max: -1 if more); through the pair's
+// entry e (from dxTriMeshLeafEntry in this thread; NULL: the walk). Any
+// entry gives the walk's list: one is used only with its own tree stamp and
+// for a box inside its fat box, else made again.
+int dxTriMeshQueryLeavesCached(const dxTriMeshData *d, dxTriLeafEntry *e, const float lo_f[4],
+                               const float hi_f[4], int *leaf, int max);
 
 // One pair's query, everything in the mesh frame.
 typedef struct dxTriQuery {

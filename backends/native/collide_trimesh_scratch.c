@@ -13,6 +13,7 @@
 
 #include <ode/memory.h>
 #include <pthread.h>
+#include <stdint.h>
 #include <string.h>
 
 enum { NESTING = 4 };
@@ -20,8 +21,9 @@ enum { NESTING = 4 };
 typedef struct thread_scratch {
     dxTriScratch set[NESTING];
     int depth;   // sets in use
-    void *tc;    // the temporal-coherence cache (tc_size bytes) or NULL
+    void *tc;    // the temporal-coherence cache's block (tc_size bytes) or NULL
     size_t tc_size;
+    void *tc_line;   // the cache itself: where the block's first cache line starts
 } thread_scratch;
 
 static _Thread_local thread_scratch *mine;
@@ -67,11 +69,12 @@ void *dxTriScratchThreadTC(size_t size)
 {
     thread_scratch *t = thread_mine();
     if (!t->tc) {
-        t->tc = dAlloc(size);
-        memset(t->tc, 0, size);
-        t->tc_size = size;
+        t->tc_size = size + 64;
+        t->tc = dAlloc(t->tc_size);
+        memset(t->tc, 0, t->tc_size);
+        t->tc_line = (char *)t->tc + (64 - (uintptr_t)t->tc % 64) % 64;
     }
-    return t->tc;
+    return t->tc_line;
 }
 
 dxTriScratch *dxTriScratchAcquire(void)
