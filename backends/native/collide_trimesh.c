@@ -875,8 +875,9 @@ void dxTriSideNormal(const dxTri *t, int k, dReal m[3])
 // `made`. Returns the new count, or -1 (nothing written) if every point is
 // kept as it is; 0 if the result has more than DX_TRI_POLY_MAX points (a
 // polygon crossing the boundary more often than a convex one can; npt and
-// ntp have room for twice n).
-static int clip_polygon(const dReal *const *pt, const int *tp, int n, const dReal m[3],
+// ntp have room for twice n). Inline in its one caller: its lists and
+// the result's pointers stay in registers.
+static inline __attribute__((always_inline)) int clip_polygon(const dReal *const *pt, const int *tp, int n, const dReal m[3],
                         const dReal o[3], dReal slack, int made, dxTriClipped *c,
                         const dReal **npt, int *ntp)
 {
@@ -968,28 +969,24 @@ void dxTriPrismInit(const dxTriQuery *q, const dxTri *t, dxTriPrism *p)
 int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, const dReal *const *corner,
                          const int *made, int n, unsigned inside, dxTriClipped *c)
 {
-    // Side by side from one list of pointers into the other and back.
-    const dReal *pb[2 * DX_TRI_POLY_MAX];
-    int tb[2 * DX_TRI_POLY_MAX], in_c = 0;
+    // From one list into the other working list (out), which then holds
+    // the polygon; unchanged clips leave it where it is.
     const dReal *const *pt = corner;
     const int *tp = made;
+    int out = 0;
     c->made_count = 0;
     for (unsigned sides = ~inside & 7; sides && n > 0; sides &= sides - 1) {
         const int k = __builtin_ctz(sides);
-        const dReal **npt = in_c ? pb : c->pt;
-        int *ntp = in_c ? tb : c->made;
-        int m = clip_polygon(pt, tp, n, p->m[k], t->v[k], p->slack[k], p->made[k], c, npt, ntp);
+        const int m = clip_polygon(pt, tp, n, p->m[k], t->v[k], p->slack[k], p->made[k], c,
+                                   c->list[out], c->tags[out]);
         if (m < 0) continue;   // unchanged
         n = m;
-        pt = npt;
-        tp = ntp;
-        in_c = !in_c;
+        pt = c->list[out];
+        tp = c->tags[out];
+        out ^= 1;
     }
-    if (pt != c->pt)
-        for (int i = 0; i < n; i++) {
-            c->pt[i] = pt[i];
-            c->made[i] = tp[i];
-        }
+    c->pt = pt;
+    c->made = tp;
     c->n = n;
     return n;
 }

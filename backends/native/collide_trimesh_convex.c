@@ -499,22 +499,14 @@ static int separates_box01(const box_pair *b, const dxTri *t, const dReal e[3],
 // (box_separated), no axis can part them. The point is the middle of the
 // edge's part within the three slabs |x_j| <= through[j], checked where it
 // is worked out. Only for an edge whose ends are within b->reach of the
-// centre along each axis (the caller checks), so that its ends'
-// coordinates (and the sums that test an axis) are rounded by far less
-// than the margin: 1024 roundings of |c| + h, where the ends are within
+// centre along each axis and not both beyond one side of a slab (the
+// caller checks: then no point of the edge is within, as the slabs' test
+// below would say after its divisions), so that its ends' coordinates
+// (and the sums that test an axis) are rounded by far less than the
+// margin: 1024 roundings of |c| + h, where the ends are within
 // 3.5 (h0 + h1 + h2) of c.
 static int edge_through(const box_pair *b, const dReal a[3], const dReal e[3])
 {
-    // Both ends beyond one side of a slab: no point of the edge is within
-    // (the slabs' test below says the same, after its divisions). The six
-    // sides' answers together, one branch (which way it goes depends on
-    // the triangle).
-    int beyond = 0;
-    for (int j = 0; j < 3; j++) {
-        const dReal w = b->through[j];
-        beyond |= ((a[j] > w) & (e[j] > w)) | ((a[j] < -w) & (e[j] < -w));
-    }
-    if (beyond) return 0;
     dReal d[3] = { e[0] - a[0], e[1] - a[1], e[2] - a[2] }, s0 = 0, s1 = 1;
     for (int j = 0; j < 3; j++) {
         dReal w = b->through[j];
@@ -531,6 +523,55 @@ static int edge_through(const box_pair *b, const dReal a[3], const dReal e[3])
     for (int j = 0; j < 3; j++)
         if (!(dFabs(a[j] + s * d[j]) <= b->through[j])) return 0;
     return 1;
+}
+
+// Where each vertex of a triangle lies against the box b (p[i][j]:
+// vertex i's coordinate along axis j), as bits of where[i]: bit j (j < 3)
+// beyond the side +through[j] of slab j, bit 3 + j beyond -through[j],
+// bit 6 within b->reach of the centre along each axis. Returns whether a
+// vertex is inside the box by more than the margin (|p[i][j]| <= inner[j]
+// for each j). With SSE2 (double) the comparisons of axes 0 and 1 side by
+// side: the same comparisons (NaN makes each false, as one by one).
+static inline int vertex_classes(const box_pair *b, const dReal p[3][3], unsigned where[3])
+{
+    const dReal *in = b->inner, *w = b->through, reach = b->reach;
+    int inner = 0;
+#if defined(__SSE2__) && !defined(dSINGLE)
+    const __m128d sign = _mm_set1_pd(-0.0), w01 = _mm_loadu_pd(w), in01 = _mm_loadu_pd(in);
+    const __m128d mw01 = _mm_xor_pd(w01, sign), reach01 = _mm_set1_pd(reach);
+    for (int i = 0; i < 3; i++) {
+        const __m128d x = _mm_loadu_pd(p[i]), ax = _mm_andnot_pd(sign, x);
+        const dReal z = p[i][2], az = dFabs(z);
+        const unsigned beyond = (unsigned)_mm_movemask_pd(_mm_cmpgt_pd(x, w01)) |
+                                (unsigned)(z > w[2]) << 2 |
+                                (unsigned)_mm_movemask_pd(_mm_cmplt_pd(x, mw01)) << 3 |
+                                (unsigned)(z < -w[2]) << 5;
+        const unsigned near = (unsigned)_mm_movemask_pd(_mm_cmple_pd(ax, reach01)) |
+                              (unsigned)(az <= reach) << 2;
+        inner |= (_mm_movemask_pd(_mm_cmple_pd(ax, in01)) == 3) & (az <= in[2]);
+        where[i] = beyond | (unsigned)(near == 7) << 6;
+    }
+#else
+    for (int i = 0; i < 3; i++) {
+        unsigned beyond = 0, near = 1, in_all = 1;
+        for (int j = 0; j < 3; j++) {
+            const dReal x = p[i][j], ax = dFabs(x);
+            beyond |= (unsigned)(x > w[j]) << j | (unsigned)(x < -w[j]) << (3 + j);
+            near &= ax <= reach;
+            in_all &= ax <= in[j];
+        }
+        inner |= (int)in_all;
+        where[i] = beyond | near << 6;
+    }
+#endif
+    return inner;
+}
+
+// Whether edge_through is to look at the edge between vertices classed
+// wa and wb: both ends near, not both beyond one side of a slab.
+static inline int edge_may_pass(unsigned wa, unsigned wb)
+{
+    return (wa & wb) == 1u << 6;
 }
 
 // Whether a separating axis parts the box b (centre c) from triangle t,
@@ -594,20 +635,12 @@ static int box_separated(const box_pair *b, const dxTri *t, const dReal c[3], dR
     // L, within the box's interval by at least the margin times |L| (the
     // box's |L . a_j| sum to at least |L|), far beyond the rounding of the
     // sums below: no edge pair can separate, and they are not worked out.
-    // Bit i of near: vertex i is within b->reach of the centre along each
-    // axis (an end edge_through takes).
-    // Both as bits for the three vertices, then one branch.
-    const dReal *in = b->inner, reach = b->reach;
-    unsigned near = 0, inner = 0;
-    for (int i = 0; i < 3; i++) {
-        dReal x = dFabs(p[i][0]), y = dFabs(p[i][1]), z = dFabs(p[i][2]);
-        inner |= (unsigned)((x <= in[0]) & (y <= in[1]) & (z <= in[2])) << i;
-        near |= (unsigned)((x <= reach) & (y <= reach) & (z <= reach)) << i;
-    }
-    if (inner) return 0;
+    // Else an edge may pass through the box (edge_through).
+    unsigned where[3];
+    if (vertex_classes(b, p, where)) return 0;
     for (int k = 0; k < 3; k++) {
-        int k1 = k < 2 ? k + 1 : 0;
-        if ((near >> k & near >> k1 & 1) && edge_through(b, p[k], p[k1])) return 0;
+        const int k1 = k < 2 ? k + 1 : 0;
+        if (edge_may_pass(where[k], where[k1]) && edge_through(b, p[k], p[k1])) return 0;
     }
     for (int k = 0; k < 3; k++) {
         dReal e[3], L[3];
@@ -704,6 +737,34 @@ static inline uint32_t faces_low_in(unsigned low, const unsigned m[3])
            faces_all_of[(~low | m[2]) & 0xff] << 2;
 }
 
+// face_crossings[f][m]: the edges of box face f whose ends differ in the
+// corner set m (bit v: corner v), bit i for the edge from its corner i
+// (box_faces) to the next.
+#define CROSSES(m, u, x) (((m) >> (u) ^ (m) >> (x)) & 1)
+#define FACE_CROSSINGS(m, a, b, c, d)                                                      \
+    (CROSSES(m, a, b) | CROSSES(m, b, c) << 1 | CROSSES(m, c, d) << 2 | CROSSES(m, d, a) << 3)
+#define CROSS_4(m, ...)                                                                    \
+    FACE_CROSSINGS(m, __VA_ARGS__), FACE_CROSSINGS((m) + 1, __VA_ARGS__),                    \
+        FACE_CROSSINGS((m) + 2, __VA_ARGS__), FACE_CROSSINGS((m) + 3, __VA_ARGS__)
+#define CROSS_16(m, ...)                                                                   \
+    CROSS_4(m, __VA_ARGS__), CROSS_4((m) + 4, __VA_ARGS__), CROSS_4((m) + 8, __VA_ARGS__),    \
+        CROSS_4((m) + 12, __VA_ARGS__)
+#define CROSS_64(m, ...)                                                                   \
+    CROSS_16(m, __VA_ARGS__), CROSS_16((m) + 16, __VA_ARGS__),                               \
+        CROSS_16((m) + 32, __VA_ARGS__), CROSS_16((m) + 48, __VA_ARGS__)
+#define CROSS_256(...)                                                                     \
+    { CROSS_64(0, __VA_ARGS__), CROSS_64(64, __VA_ARGS__), CROSS_64(128, __VA_ARGS__),        \
+      CROSS_64(192, __VA_ARGS__) }
+static const uint8_t face_crossings[6][256] = { CROSS_256(0, 2, 6, 4), CROSS_256(1, 3, 7, 5),
+                                                CROSS_256(0, 1, 5, 4), CROSS_256(2, 3, 7, 6),
+                                                CROSS_256(0, 1, 3, 2), CROSS_256(4, 5, 7, 6) };
+#undef CROSS_256
+#undef CROSS_64
+#undef CROSS_16
+#undef CROSS_4
+#undef FACE_CROSSINGS
+#undef CROSSES
+
 // From the sides k (bits) a face needs no clip against or its low part is
 // within, those from the last on: the sides whose clips are left out.
 static inline unsigned sides_from_last(unsigned sides)
@@ -725,12 +786,10 @@ static void low_part_sides(int f, const dReal hv[8], unsigned low, dReal H,
     const int *fv = box_faces[f];
     unsigned a = *away, w = *within;
     // The edges that cross the level (bit i: from corner fv[i] to the
-    // next), found without branches; at each, the three sides' bits
-    // cleared by masks (a bit already clear stays clear), so that only
-    // the loop over the crossings (two but for rounding) branches.
-    unsigned cross = 0;
-    for (int i = 0; i < 4; i++) cross |= ((low >> fv[i] ^ low >> fv[(i + 1) & 3]) & 1u) << i;
-    for (; cross; cross &= cross - 1) {
+    // next), looked up; at each, the three sides' bits cleared by masks (a
+    // bit already clear stays clear), so that only the loop over the
+    // crossings (two but for rounding) branches.
+    for (unsigned cross = face_crossings[f][low]; cross; cross &= cross - 1) {
         const int i = __builtin_ctz(cross), u = fv[i], x = fv[(i + 1) & 3];
         dReal s = (H - hv[u]) / (hv[x] - hv[u]);
 #if defined(__SSE2__) && !defined(dSINGLE)
