@@ -942,27 +942,35 @@ static inline __attribute__((always_inline)) int clip_polygon(const dReal *const
     return k <= DX_TRI_POLY_MAX ? k : 0;
 }
 
-// Whether t's edge k joins two coplanar faces (an edge only of the
+// Bit k: t's edge k joins two coplanar faces (an edge only of the
 // triangulation, not of the surface). A walk's triangle carries the
-// answer of the neighbour's normal (the same sum on the same numbers, made
-// with the data), so that its prism does not wait on the neighbour's index
-// and then its normal, both in the user's order.
-static int flat_edge(const dxTriQuery *q, const dxTri *t, int k)
+// answer of the neighbours' normals (the same sum on the same numbers,
+// made with the data), so that its prism does not wait on the neighbours'
+// indices and then their normals, both in the user's order.
+static unsigned flat_edges(const dxTriQuery *q, const dxTri *t)
 {
     if (!q->data) return 0;
-    if (dxTriMeshFeatures(q->data, t->index) & (DX_TRI_EDGE_FEATURE << k)) return 0;
-    if (t->coplanar & DX_TRI_COPLANAR_KNOWN) return (int)(t->coplanar >> k & 1);
-    int u = q->data->neighbour[3 * t->index + k];
-    return u >= 0 && dx_dot(t->n, q->data->normal + 3 * u) > DX_TRI_COPLANAR_COS;
+    const unsigned real = dxTriMeshFeatures(q->data, t->index) / DX_TRI_EDGE_FEATURE & 7;
+    if (t->coplanar & DX_TRI_COPLANAR_KNOWN) return t->coplanar & 7 & ~real;
+    unsigned flat = 0;
+    for (int k = 0; k < 3; k++) {
+        const int u = q->data->neighbour[3 * t->index + k];
+        flat |= (unsigned)(!(real >> k & 1) && u >= 0 &&
+                           dx_dot(t->n, q->data->normal + 3 * u) > DX_TRI_COPLANAR_COS)
+                << k;
+    }
+    return flat;
 }
 
 void dxTriPrismInit(const dxTriQuery *q, const dxTri *t, dxTriPrism *p)
 {
-    dReal eps = DX_COLLIDE_EPS * q->scale;
+    const dReal eps = DX_COLLIDE_EPS * q->scale;
+    const unsigned flat = flat_edges(q, t);
+    _Static_assert(DX_TRI_MADE_AT_FLAT_EDGE == DX_TRI_MADE_AT_EDGE + 1, "a flat edge's tag follows");
     for (int k = 0; k < 3; k++) {
         dxTriSideNormal(t, k, p->m[k]);
         p->slack[k] = eps * dSqrt(dx_dot(p->m[k], p->m[k]));
-        p->made[k] = flat_edge(q, t, k) ? DX_TRI_MADE_AT_FLAT_EDGE : DX_TRI_MADE_AT_EDGE;
+        p->made[k] = DX_TRI_MADE_AT_EDGE + (int)(flat >> k & 1);
     }
 }
 
