@@ -303,10 +303,12 @@ enum { CYL_SIDES = 32, POLY_MAX = DX_TRI_POLY_MAX };
 // corner tagged DX_TRI_MADE_CORNER + v that bit v of *seen says was added
 // already (by another face of the solid, against the same triangle: the
 // same point, depth and normal to the bit) is not added again, and a
-// corner added sets its bit. Returns 1 if any was added.
-static int clipped_face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p,
-                                 const dReal *const *corner, const int *made, int n,
-                                 unsigned inside, unsigned *seen)
+// corner added sets its bit. Returns 1 if any was added. Inline in its
+// callers: box_test's pointers, `seen` and the prism stay in registers.
+static inline __attribute__((always_inline)) int
+clipped_face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p,
+                      const dReal *const *corner, const int *made, int n, unsigned inside,
+                      unsigned *seen)
 {
     dReal eps = DX_COLLIDE_EPS * q->scale;
     dxTriClipped c;
