@@ -240,7 +240,7 @@ typedef struct dxTriClipped {
 // c->pt and c->made may be corner and made themselves);
 // the sides k with bit k of `inside` set are known to keep every point (a
 // polygon within them by more than rounding) and are not clipped against.
-// Returns c->n.
+// Returns c->n. (In collide_trimesh_convex.c, whose clips inline it.)
 int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, const dReal *const *corner,
                          const int *made, int n, unsigned inside, dxTriClipped *c);
 
