@@ -893,7 +893,8 @@ void dxTriPrismInit(const dxTriQuery *q, const dxTri *t, dxTriPrism *p)
 {
     const dReal eps = DX_COLLIDE_EPS * q->scale;
     const unsigned flat = flat_edges(q, t);
-    _Static_assert(DX_TRI_MADE_AT_FLAT_EDGE == DX_TRI_MADE_AT_EDGE + 1, "a flat edge's tag follows");
+    _Static_assert(DX_TRI_MADE_AT_FLAT_EDGE == DX_TRI_MADE_AT_EDGE + 1,
+                   "a flat edge's tag follows");
     for (int k = 0; k < 3; k++) {
         dxTriSideNormal(t, k, p->m[k]);
         p->slack[k] = eps * dSqrt(dx_dot(p->m[k], p->m[k]));

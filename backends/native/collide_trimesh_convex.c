@@ -301,9 +301,9 @@ enum { CYL_SIDES = 32, POLY_MAX = DX_TRI_POLY_MAX };
 // polygon crossing the boundary more often than a convex one can; npt and
 // ntp have room for twice n). Inline in its one caller: its lists and
 // the result's pointers stay in registers.
-static inline __attribute__((always_inline)) int clip_polygon(const dReal *const *pt, const int *tp, int n, const dReal m[3],
-                        const dReal o[3], dReal slack, int made, dxTriClipped *c,
-                        const dReal **npt, int *ntp)
+static inline __attribute__((always_inline)) int
+clip_polygon(const dReal *const *pt, const int *tp, int n, const dReal m[3], const dReal o[3],
+             dReal slack, int made, dxTriClipped *c, const dReal **npt, int *ntp)
 {
     dReal f[DX_TRI_POLY_MAX];
     // Bit i: point i is kept (entered from the top, shifted down at the
