@@ -872,129 +872,37 @@ void dxTriSideNormal(const dxTri *t, int k, dReal m[3])
     m[2] = t->n[0] * e[1] - t->n[1] * e[0];
 }
 
-// Keep the part of the polygon pt (n points, tags tp) where
-// m . (x - o) >= -slack, into npt and ntp: a point kept keeps its pointer
-// and tag, a point made on this boundary (into c->room) gets the tag
-// `made`. Returns the new count, or -1 (nothing written) if every point is
-// kept as it is; 0 if the result has more than DX_TRI_POLY_MAX points (a
-// polygon crossing the boundary more often than a convex one can; npt and
-// ntp have room for twice n).
-static int clip_polygon(const dReal *const *pt, const int *tp, int n, const dReal m[3],
-                        const dReal o[3], dReal slack, int made, dxTriClipped *c,
-                        const dReal **npt, int *ntp)
-{
-    dReal f[DX_TRI_POLY_MAX];
-    // Bit i: point i is kept (entered from the top, shifted down at the
-    // end: constant shifts only).
-    uint64_t kept = 0;
-#if defined(__SSE2__) && !defined(dSINGLE)
-    // x and y side by side, z alone: the same differences, products and
-    // sums in dx_dot's order ((x + y) + z), so the same f.
-    const __m128d o01 = _mm_loadu_pd(o), m01 = _mm_loadu_pd(m);
-    for (int i = 0; i < n; i++) {
-        const dReal *x = pt[i];
-        const __m128d p = _mm_mul_pd(m01, _mm_sub_pd(_mm_loadu_pd(x), o01));
-        f[i] = (_mm_cvtsd_f64(p) + _mm_cvtsd_f64(_mm_unpackhi_pd(p, p)) + m[2] * (x[2] - o[2])) +
-               slack;
-        kept = kept >> 1 | (uint64_t)(f[i] >= 0) << 63;
-    }
-#else
-    for (int i = 0; i < n; i++) {
-        const dReal *x = pt[i];
-        dReal d[3] = { x[0] - o[0], x[1] - o[1], x[2] - o[2] };
-        f[i] = dx_dot(m, d) + slack;
-        kept = kept >> 1 | (uint64_t)(f[i] >= 0) << 63;
-    }
-#endif
-    kept >>= 64 - n;   // (n >= 1)
-    const uint64_t all = ~0ull >> (64 - n);
-    if (kept == all) return -1;
-    // The points' sides follow the data, so the list is made without
-    // branching on them: every point is written at the list's next place,
-    // which moves on only if the point is kept, and then the place of the
-    // point made on the edge to the next point (its room, taken in order),
-    // which moves on only if the edge crosses (bit i of crossing: the two
-    // points are on different sides). Then the points made on the crossing
-    // edges, into their room in the same order (two for a convex polygon).
-    const uint64_t crossing = kept ^ ((kept >> 1 | kept << (n - 1)) & all);
-    int k = 0, room = c->made_count;
-    uint64_t kp = kept, cr = crossing;
-    for (int i = 0; i < n; i++, kp >>= 1, cr >>= 1) {
-        npt[k] = pt[i];
-        ntp[k] = tp[i];
-        k += (int)(kp & 1);
-        npt[k] = c->room[room];
-        ntp[k] = made;
-        k += (int)(cr & 1);
-        room += (int)(cr & 1);
-    }
-    for (uint64_t left = crossing; left; left &= left - 1) {
-        const int i = __builtin_ctzll(left), next = i + 1 < n ? i + 1 : 0;
-        const dReal *a = pt[i], *b = pt[next], fa = f[i], fb = f[next];
-        dReal s = fa / (fa - fb), *x = c->room[c->made_count++];
-#if defined(__SSE2__) && !defined(dSINGLE)
-        const __m128d a01 = _mm_loadu_pd(a);   // x and y side by side: the same sums
-        _mm_storeu_pd(x, _mm_add_pd(a01, _mm_mul_pd(_mm_set1_pd(s),
-                                                    _mm_sub_pd(_mm_loadu_pd(b), a01))));
-        x[2] = a[2] + s * (b[2] - a[2]);
-#else
-        for (int j = 0; j < 3; j++) x[j] = a[j] + s * (b[j] - a[j]);
-#endif
-    }
-    return k <= DX_TRI_POLY_MAX ? k : 0;
-}
-
-// Whether t's edge k joins two coplanar faces (an edge only of the
+// Bit k: t's edge k joins two coplanar faces (an edge only of the
 // triangulation, not of the surface). A walk's triangle carries the
-// answer of the neighbour's normal (the same sum on the same numbers, made
-// with the data), so that its prism does not wait on the neighbour's index
-// and then its normal, both in the user's order.
-static int flat_edge(const dxTriQuery *q, const dxTri *t, int k)
+// answer of the neighbours' normals (the same sum on the same numbers,
+// made with the data), so that its prism does not wait on the neighbours'
+// indices and then their normals, both in the user's order.
+static unsigned flat_edges(const dxTriQuery *q, const dxTri *t)
 {
     if (!q->data) return 0;
-    if (dxTriMeshFeatures(q->data, t->index) & (DX_TRI_EDGE_FEATURE << k)) return 0;
-    if (t->coplanar & DX_TRI_COPLANAR_KNOWN) return (int)(t->coplanar >> k & 1);
-    int u = q->data->neighbour[3 * t->index + k];
-    return u >= 0 && dx_dot(t->n, q->data->normal + 3 * u) > DX_TRI_COPLANAR_COS;
+    const unsigned real = dxTriMeshFeatures(q->data, t->index) / DX_TRI_EDGE_FEATURE & 7;
+    if (t->coplanar & DX_TRI_COPLANAR_KNOWN) return t->coplanar & 7 & ~real;
+    unsigned flat = 0;
+    for (int k = 0; k < 3; k++) {
+        const int u = q->data->neighbour[3 * t->index + k];
+        flat |= (unsigned)(!(real >> k & 1) && u >= 0 &&
+                           dx_dot(t->n, q->data->normal + 3 * u) > DX_TRI_COPLANAR_COS)
+                << k;
+    }
+    return flat;
 }
 
 void dxTriPrismInit(const dxTriQuery *q, const dxTri *t, dxTriPrism *p)
 {
-    dReal eps = DX_COLLIDE_EPS * q->scale;
+    const dReal eps = DX_COLLIDE_EPS * q->scale;
+    const unsigned flat = flat_edges(q, t);
+    _Static_assert(DX_TRI_MADE_AT_FLAT_EDGE == DX_TRI_MADE_AT_EDGE + 1,
+                   "a flat edge's tag follows");
     for (int k = 0; k < 3; k++) {
         dxTriSideNormal(t, k, p->m[k]);
         p->slack[k] = eps * dSqrt(dx_dot(p->m[k], p->m[k]));
-        p->made[k] = flat_edge(q, t, k) ? DX_TRI_MADE_AT_FLAT_EDGE : DX_TRI_MADE_AT_EDGE;
+        p->made[k] = DX_TRI_MADE_AT_EDGE + (int)(flat >> k & 1);
     }
-}
-
-int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, const dReal *const *corner,
-                         const int *made, int n, unsigned inside, dxTriClipped *c)
-{
-    // Side by side from one list of pointers into the other and back.
-    const dReal *pb[2 * DX_TRI_POLY_MAX];
-    int tb[2 * DX_TRI_POLY_MAX], in_c = 0;
-    const dReal *const *pt = corner;
-    const int *tp = made;
-    c->made_count = 0;
-    for (unsigned sides = ~inside & 7; sides && n > 0; sides &= sides - 1) {
-        const int k = __builtin_ctz(sides);
-        const dReal **npt = in_c ? pb : c->pt;
-        int *ntp = in_c ? tb : c->made;
-        int m = clip_polygon(pt, tp, n, p->m[k], t->v[k], p->slack[k], p->made[k], c, npt, ntp);
-        if (m < 0) continue;   // unchanged
-        n = m;
-        pt = npt;
-        tp = ntp;
-        in_c = !in_c;
-    }
-    if (pt != c->pt)
-        for (int i = 0; i < n; i++) {
-            c->pt[i] = pt[i];
-            c->made[i] = tp[i];
-        }
-    c->n = n;
-    return n;
 }
 
 int dxTriClipToPrism(const dxTriQuery *q, const dxTri *t, dReal a[][3], int n, int *made)

@@ -232,21 +232,26 @@ void dxTriPrismInit(const dxTriQuery *q, const dxTri *t, dxTriPrism *p);
 
 // A clip's result: its n corners as pointers (to the polygon's own
 // corners, which keep their bits, or to the points the clip made, in
-// room; pt and made have room for a clip's working list) with their tags
-// (as dxTriClipToPrism's made[], or the tag a corner was given).
+// room) with their tags (as dxTriClipToPrism's made[], or the tag a corner
+// was given), in pt and made: the caller's own lists if no clip changed
+// the polygon, else one of the two working lists (each with room for a
+// clip's output), in which the clips take turns.
 typedef struct dxTriClipped {
     int n, made_count;
-    const dReal *pt[2 * DX_TRI_POLY_MAX];
-    int made[2 * DX_TRI_POLY_MAX];
+    const dReal *const *pt;
+    const int *made;
+    const dReal *list[2][2 * DX_TRI_POLY_MAX];
+    int tags[2][2 * DX_TRI_POLY_MAX];
     dReal room[3 * DX_TRI_POLY_MAX][3];   // at most n points made by each of three clips
 } dxTriClipped;
 // dxTriClipToPrism with the prism made by dxTriPrismInit(q, t, p), the n
 // corners given as pointers with their tags (DX_TRI_MADE_NOT, or
 // DX_TRI_MADE_CORNER + i to follow corner i: a corner kept keeps its tag
-// and its bits), the result into c (nothing copied but the points made);
+// and its bits), the result into c (nothing copied but the points made:
+// c->pt and c->made may be corner and made themselves);
 // the sides k with bit k of `inside` set are known to keep every point (a
 // polygon within them by more than rounding) and are not clipped against.
-// Returns c->n.
+// Returns c->n. (In collide_trimesh_convex.c, whose clips inline it.)
 int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, const dReal *const *corner,
                          const int *made, int n, unsigned inside, dxTriClipped *c);
 

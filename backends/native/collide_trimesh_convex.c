@@ -291,6 +291,114 @@ static int separates_cylinder(const dxTri *t, const dReal L[3], const dReal c[3]
 // gains at most three).
 enum { CYL_SIDES = 32, POLY_MAX = DX_TRI_POLY_MAX };
 
+// ---- clipping to a triangle's prism ------------------------------------------
+
+// Keep the part of the polygon pt (n points, tags tp) where
+// m . (x - o) >= -slack, into npt and ntp: a point kept keeps its pointer
+// and tag, a point made on this boundary (into c->room) gets the tag
+// `made`. Returns the new count, or -1 (nothing written) if every point is
+// kept as it is; 0 if the result has more than DX_TRI_POLY_MAX points (a
+// polygon crossing the boundary more often than a convex one can; npt and
+// ntp have room for twice n). Inline in its one caller: its lists and
+// the result's pointers stay in registers.
+static inline __attribute__((always_inline)) int
+clip_polygon(const dReal *const *pt, const int *tp, int n, const dReal m[3], const dReal o[3],
+             dReal slack, int made, dxTriClipped *c, const dReal **npt, int *ntp)
+{
+    dReal f[DX_TRI_POLY_MAX];
+    // Bit i: point i is kept (entered from the top, shifted down at the
+    // end: constant shifts only).
+    uint64_t kept = 0;
+#if defined(__SSE2__) && !defined(dSINGLE)
+    // x and y side by side, z alone: the same differences, products and
+    // sums in dx_dot's order ((x + y) + z), so the same f.
+    const __m128d o01 = _mm_loadu_pd(o), m01 = _mm_loadu_pd(m);
+    for (int i = 0; i < n; i++) {
+        const dReal *x = pt[i];
+        const __m128d p = _mm_mul_pd(m01, _mm_sub_pd(_mm_loadu_pd(x), o01));
+        f[i] = (_mm_cvtsd_f64(p) + _mm_cvtsd_f64(_mm_unpackhi_pd(p, p)) + m[2] * (x[2] - o[2])) +
+               slack;
+        kept = kept >> 1 | (uint64_t)(f[i] >= 0) << 63;
+    }
+#else
+    for (int i = 0; i < n; i++) {
+        const dReal *x = pt[i];
+        dReal d[3] = { x[0] - o[0], x[1] - o[1], x[2] - o[2] };
+        f[i] = dx_dot(m, d) + slack;
+        kept = kept >> 1 | (uint64_t)(f[i] >= 0) << 63;
+    }
+#endif
+    kept >>= 64 - n;   // (n >= 1)
+    const uint64_t all = ~0ull >> (64 - n);
+    if (kept == all) return -1;
+    // The points' sides follow the data, so the list is made without
+    // branching on them: every point is written at the list's next place,
+    // which moves on only if the point is kept, and then the place of the
+    // point made on the edge to the next point (its room, taken in order),
+    // which moves on only if the edge crosses (bit i of crossing: the two
+    // points are on different sides). Then the points made on the crossing
+    // edges, into their room in the same order (two for a convex polygon).
+    const uint64_t crossing = kept ^ ((kept >> 1 | kept << (n - 1)) & all);
+    int k = 0, room = c->made_count;
+    uint64_t kp = kept, cr = crossing;
+    for (int i = 0; i < n; i++, kp >>= 1, cr >>= 1) {
+        npt[k] = pt[i];
+        ntp[k] = tp[i];
+        k += (int)(kp & 1);
+        npt[k] = c->room[room];
+        ntp[k] = made;
+        k += (int)(cr & 1);
+        room += (int)(cr & 1);
+    }
+    for (uint64_t left = crossing; left; left &= left - 1) {
+        const int i = __builtin_ctzll(left), next = i + 1 < n ? i + 1 : 0;
+        const dReal *a = pt[i], *b = pt[next], fa = f[i], fb = f[next];
+        dReal s = fa / (fa - fb), *x = c->room[c->made_count++];
+#if defined(__SSE2__) && !defined(dSINGLE)
+        const __m128d a01 = _mm_loadu_pd(a);   // x and y side by side: the same sums
+        _mm_storeu_pd(x, _mm_add_pd(a01, _mm_mul_pd(_mm_set1_pd(s),
+                                                    _mm_sub_pd(_mm_loadu_pd(b), a01))));
+        x[2] = a[2] + s * (b[2] - a[2]);
+#else
+        for (int j = 0; j < 3; j++) x[j] = a[j] + s * (b[j] - a[j]);
+#endif
+    }
+    return k <= DX_TRI_POLY_MAX ? k : 0;
+}
+
+// dxTriClipToPrismWith, inline in the box's and the faces' clips.
+static inline __attribute__((always_inline)) int
+clip_to_prism_with(const dxTriPrism *p, const dxTri *t, const dReal *const *corner,
+                   const int *made, int n, unsigned inside, dxTriClipped *c)
+{
+    // From one list into the other working list (out), which then holds
+    // the polygon; unchanged clips leave it where it is.
+    const dReal *const *pt = corner;
+    const int *tp = made;
+    int out = 0;
+    c->made_count = 0;
+    for (unsigned sides = ~inside & 7; sides && n > 0; sides &= sides - 1) {
+        const int k = __builtin_ctz(sides);
+        const int m = clip_polygon(pt, tp, n, p->m[k], t->v[k], p->slack[k], p->made[k], c,
+                                   c->list[out], c->tags[out]);
+        if (m < 0) continue;   // unchanged
+        n = m;
+        pt = c->list[out];
+        tp = c->tags[out];
+        out ^= 1;
+    }
+    c->pt = pt;
+    c->made = tp;
+    c->n = n;
+    return n;
+}
+
+int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, const dReal *const *corner,
+                         const int *made, int n, unsigned inside, dxTriClipped *c)
+{
+    return clip_to_prism_with(p, t, corner, made, n, inside, c);
+}
+
 // One face (n corners, pointers to them in corner[], at least one of them
 // on or behind the triangle's plane) of a convex solid against triangle t
 // (prism p): clipped to the triangle's prism (widened by rounding), its
@@ -303,14 +411,16 @@ enum { CYL_SIDES = 32, POLY_MAX = DX_TRI_POLY_MAX };
 // corner tagged DX_TRI_MADE_CORNER + v that bit v of *seen says was added
 // already (by another face of the solid, against the same triangle: the
 // same point, depth and normal to the bit) is not added again, and a
-// corner added sets its bit. Returns 1 if any was added.
-static int clipped_face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p,
-                                 const dReal *const *corner, const int *made, int n,
-                                 unsigned inside, unsigned *seen)
+// corner added sets its bit. Returns 1 if any was added. Inline in its
+// callers: box_test's pointers, `seen` and the prism stay in registers.
+static inline __attribute__((always_inline)) int
+clipped_face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p,
+                      const dReal *const *corner, const int *made, int n, unsigned inside,
+                      unsigned *seen)
 {
     dReal eps = DX_COLLIDE_EPS * q->scale;
     dxTriClipped c;
-    n = dxTriClipToPrismWith(p, t, corner, made, n, inside, &c);
+    n = clip_to_prism_with(p, t, corner, made, n, inside, &c);
     // Which points are added follows the data: their bits first, without
     // branches, then the contacts of those set. bit: a box corner's seen
     // bit (none without `seen`, or for a point the clip made); a corner is
@@ -499,22 +609,14 @@ static int separates_box01(const box_pair *b, const dxTri *t, const dReal e[3],
 // (box_separated), no axis can part them. The point is the middle of the
 // edge's part within the three slabs |x_j| <= through[j], checked where it
 // is worked out. Only for an edge whose ends are within b->reach of the
-// centre along each axis (the caller checks), so that its ends'
-// coordinates (and the sums that test an axis) are rounded by far less
-// than the margin: 1024 roundings of |c| + h, where the ends are within
+// centre along each axis and not both beyond one side of a slab (the
+// caller checks: then no point of the edge is within, as the slabs' test
+// below would say after its divisions), so that its ends' coordinates
+// (and the sums that test an axis) are rounded by far less than the
+// margin: 1024 roundings of |c| + h, where the ends are within
 // 3.5 (h0 + h1 + h2) of c.
 static int edge_through(const box_pair *b, const dReal a[3], const dReal e[3])
 {
-    // Both ends beyond one side of a slab: no point of the edge is within
-    // (the slabs' test below says the same, after its divisions). The six
-    // sides' answers together, one branch (which way it goes depends on
-    // the triangle).
-    int beyond = 0;
-    for (int j = 0; j < 3; j++) {
-        const dReal w = b->through[j];
-        beyond |= ((a[j] > w) & (e[j] > w)) | ((a[j] < -w) & (e[j] < -w));
-    }
-    if (beyond) return 0;
     dReal d[3] = { e[0] - a[0], e[1] - a[1], e[2] - a[2] }, s0 = 0, s1 = 1;
     for (int j = 0; j < 3; j++) {
         dReal w = b->through[j];
@@ -531,6 +633,55 @@ static int edge_through(const box_pair *b, const dReal a[3], const dReal e[3])
     for (int j = 0; j < 3; j++)
         if (!(dFabs(a[j] + s * d[j]) <= b->through[j])) return 0;
     return 1;
+}
+
+// Where each vertex of a triangle lies against the box b (p[i][j]:
+// vertex i's coordinate along axis j), as bits of where[i]: bit j (j < 3)
+// beyond the side +through[j] of slab j, bit 3 + j beyond -through[j],
+// bit 6 within b->reach of the centre along each axis. Returns whether a
+// vertex is inside the box by more than the margin (|p[i][j]| <= inner[j]
+// for each j). With SSE2 (double) the comparisons of axes 0 and 1 side by
+// side: the same comparisons (NaN makes each false, as one by one).
+static inline int vertex_classes(const box_pair *b, const dReal p[3][3], unsigned where[3])
+{
+    const dReal *in = b->inner, *w = b->through, reach = b->reach;
+    int inner = 0;
+#if defined(__SSE2__) && !defined(dSINGLE)
+    const __m128d sign = _mm_set1_pd(-0.0), w01 = _mm_loadu_pd(w), in01 = _mm_loadu_pd(in);
+    const __m128d mw01 = _mm_xor_pd(w01, sign), reach01 = _mm_set1_pd(reach);
+    for (int i = 0; i < 3; i++) {
+        const __m128d x = _mm_loadu_pd(p[i]), ax = _mm_andnot_pd(sign, x);
+        const dReal z = p[i][2], az = dFabs(z);
+        const unsigned beyond = (unsigned)_mm_movemask_pd(_mm_cmpgt_pd(x, w01)) |
+                                (unsigned)(z > w[2]) << 2 |
+                                (unsigned)_mm_movemask_pd(_mm_cmplt_pd(x, mw01)) << 3 |
+                                (unsigned)(z < -w[2]) << 5;
+        const unsigned near = (unsigned)_mm_movemask_pd(_mm_cmple_pd(ax, reach01)) |
+                              (unsigned)(az <= reach) << 2;
+        inner |= (_mm_movemask_pd(_mm_cmple_pd(ax, in01)) == 3) & (az <= in[2]);
+        where[i] = beyond | (unsigned)(near == 7) << 6;
+    }
+#else
+    for (int i = 0; i < 3; i++) {
+        unsigned beyond = 0, near = 1, in_all = 1;
+        for (int j = 0; j < 3; j++) {
+            const dReal x = p[i][j], ax = dFabs(x);
+            beyond |= (unsigned)(x > w[j]) << j | (unsigned)(x < -w[j]) << (3 + j);
+            near &= ax <= reach;
+            in_all &= ax <= in[j];
+        }
+        inner |= (int)in_all;
+        where[i] = beyond | near << 6;
+    }
+#endif
+    return inner;
+}
+
+// Whether edge_through is to look at the edge between vertices classed
+// wa and wb: both ends near, not both beyond one side of a slab.
+static inline int edge_may_pass(unsigned wa, unsigned wb)
+{
+    return (wa & wb) == 1u << 6;
 }
 
 // Whether a separating axis parts the box b (centre c) from triangle t,
@@ -594,20 +745,12 @@ static int box_separated(const box_pair *b, const dxTri *t, const dReal c[3], dR
     // L, within the box's interval by at least the margin times |L| (the
     // box's |L . a_j| sum to at least |L|), far beyond the rounding of the
     // sums below: no edge pair can separate, and they are not worked out.
-    // Bit i of near: vertex i is within b->reach of the centre along each
-    // axis (an end edge_through takes).
-    // Both as bits for the three vertices, then one branch.
-    const dReal *in = b->inner, reach = b->reach;
-    unsigned near = 0, inner = 0;
-    for (int i = 0; i < 3; i++) {
-        dReal x = dFabs(p[i][0]), y = dFabs(p[i][1]), z = dFabs(p[i][2]);
-        inner |= (unsigned)((x <= in[0]) & (y <= in[1]) & (z <= in[2])) << i;
-        near |= (unsigned)((x <= reach) & (y <= reach) & (z <= reach)) << i;
-    }
-    if (inner) return 0;
+    // Else an edge may pass through the box (edge_through).
+    unsigned where[3];
+    if (vertex_classes(b, p, where)) return 0;
     for (int k = 0; k < 3; k++) {
-        int k1 = k < 2 ? k + 1 : 0;
-        if ((near >> k & near >> k1 & 1) && edge_through(b, p[k], p[k1])) return 0;
+        const int k1 = k < 2 ? k + 1 : 0;
+        if (edge_may_pass(where[k], where[k1]) && edge_through(b, p[k], p[k1])) return 0;
     }
     for (int k = 0; k < 3; k++) {
         dReal e[3], L[3];
@@ -704,6 +847,34 @@ static inline uint32_t faces_low_in(unsigned low, const unsigned m[3])
            faces_all_of[(~low | m[2]) & 0xff] << 2;
 }
 
+// face_crossings[f][m]: the edges of box face f whose ends differ in the
+// corner set m (bit v: corner v), bit i for the edge from its corner i
+// (box_faces) to the next.
+#define CROSSES(m, u, x) (((m) >> (u) ^ (m) >> (x)) & 1)
+#define FACE_CROSSINGS(m, a, b, c, d)                                                      \
+    (CROSSES(m, a, b) | CROSSES(m, b, c) << 1 | CROSSES(m, c, d) << 2 | CROSSES(m, d, a) << 3)
+#define CROSS_4(m, ...)                                                                    \
+    FACE_CROSSINGS(m, __VA_ARGS__), FACE_CROSSINGS((m) + 1, __VA_ARGS__),                    \
+        FACE_CROSSINGS((m) + 2, __VA_ARGS__), FACE_CROSSINGS((m) + 3, __VA_ARGS__)
+#define CROSS_16(m, ...)                                                                   \
+    CROSS_4(m, __VA_ARGS__), CROSS_4((m) + 4, __VA_ARGS__), CROSS_4((m) + 8, __VA_ARGS__),    \
+        CROSS_4((m) + 12, __VA_ARGS__)
+#define CROSS_64(m, ...)                                                                   \
+    CROSS_16(m, __VA_ARGS__), CROSS_16((m) + 16, __VA_ARGS__),                               \
+        CROSS_16((m) + 32, __VA_ARGS__), CROSS_16((m) + 48, __VA_ARGS__)
+#define CROSS_256(...)                                                                     \
+    { CROSS_64(0, __VA_ARGS__), CROSS_64(64, __VA_ARGS__), CROSS_64(128, __VA_ARGS__),        \
+      CROSS_64(192, __VA_ARGS__) }
+static const uint8_t face_crossings[6][256] = { CROSS_256(0, 2, 6, 4), CROSS_256(1, 3, 7, 5),
+                                                CROSS_256(0, 1, 5, 4), CROSS_256(2, 3, 7, 6),
+                                                CROSS_256(0, 1, 3, 2), CROSS_256(4, 5, 7, 6) };
+#undef CROSS_256
+#undef CROSS_64
+#undef CROSS_16
+#undef CROSS_4
+#undef FACE_CROSSINGS
+#undef CROSSES
+
 // From the sides k (bits) a face needs no clip against or its low part is
 // within, those from the last on: the sides whose clips are left out.
 static inline unsigned sides_from_last(unsigned sides)
@@ -725,12 +896,10 @@ static void low_part_sides(int f, const dReal hv[8], unsigned low, dReal H,
     const int *fv = box_faces[f];
     unsigned a = *away, w = *within;
     // The edges that cross the level (bit i: from corner fv[i] to the
-    // next), found without branches; at each, the three sides' bits
-    // cleared by masks (a bit already clear stays clear), so that only
-    // the loop over the crossings (two but for rounding) branches.
-    unsigned cross = 0;
-    for (int i = 0; i < 4; i++) cross |= ((low >> fv[i] ^ low >> fv[(i + 1) & 3]) & 1u) << i;
-    for (; cross; cross &= cross - 1) {
+    // next), looked up; at each, the three sides' bits cleared by masks (a
+    // bit already clear stays clear), so that only the loop over the
+    // crossings (two but for rounding) branches.
+    for (unsigned cross = face_crossings[f][low]; cross; cross &= cross - 1) {
         const int i = __builtin_ctz(cross), u = fv[i], x = fv[(i + 1) & 3];
         dReal s = (H - hv[u]) / (hv[x] - hv[u]);
 #if defined(__SSE2__) && !defined(dSINGLE)
