@@ -182,7 +182,9 @@ QS_INLINE void random_places(uint32_t state, unsigned lo, unsigned count, unsign
 // normal: the row that bounds it if that one is in its island's order (a
 // friction row's normal row: sys->normal, made with the rows), else
 // QS_NO_ROW; at: where the current reshuffle put the row, plus that
-// reshuffle's base (below). Unsigned: row indices index without widening.
+// reshuffle's base (below), and at[-1] (QS_NO_ROW's place, as a signed
+// index) a row that is never placed. Unsigned: row indices index without
+// widening.
 typedef struct qs_reorder {
     const unsigned *normal;
     unsigned *at;
@@ -218,15 +220,16 @@ static unsigned reshuffle_base(int g, int n)
 // upwards swapping each friction row found before its normal row with it
 // gives (the two-pass form this replaced), as the contacts' rows are
 // disjoint groups (only a contact's friction rows are bounded by a row, and
-// a normal row by the constant 1).
+// a normal row by the constant 1). A row without a normal row looks up
+// at[-1], never placed (reshuffle): one branch, not two, on whether the row
+// moves, as both follow the random order (a mispredict in two or three rows).
 QS_INLINE void place(unsigned *o, size_t k, unsigned r, unsigned base, unsigned n,
                      unsigned *at, const unsigned *normal)
 {
     at[r] = base + (unsigned)k;
     const unsigned nr = normal[r];
-    if (nr == QS_NO_ROW) return;
-    const unsigned a = at[nr] - base;
-    if (a >= n) return;        // the normal row comes below k
+    const unsigned a = at[(int)nr] - base;   // QS_NO_ROW: at[-1]
+    if (a >= n) return;        // no normal row, or it comes below k
     const unsigned f = o[a];   // nr, or a friction row that took its place
     o[at[f] - base] = f;
     o[a] = r;
@@ -242,6 +245,7 @@ QS_INLINE void reshuffle(int *order, int n, uint32_t *state, unsigned base, cons
     unsigned *o = (unsigned *)order, *at = re->at;
     const unsigned *normal = re->normal;
     uint32_t s = *state;
+    at[-1] = base - 1;   // (place: never below base + n, whatever the base)
     for (size_t top = n > 1 ? (size_t)n - 1 : 0; top > 0;) {
         const size_t count = top < RANDOM_BLOCK ? top : RANDOM_BLOCK, lo = top - count + 1;
         random_places(s, (unsigned)lo, (unsigned)count, j, re->avx2);
@@ -387,7 +391,7 @@ static void interleave_blocks(const qs_system *sys, const qs_island *parts, cons
 // row (made with the rows), and at[] from ~0.
 static qs_reorder reorder_begin(dxArena *a, qs_system *sys)
 {
-    unsigned *at = DX_ARENA_ARRAY(a, unsigned, sys->nrows + 1);
+    unsigned *at = DX_ARENA_ARRAY(a, unsigned, sys->nrows + 2) + 1;   // and at[-1]
     const int *order = sys->order, n = sys->norder;
     for (int k = 0; k < n; k++) at[order[k]] = ~0u;
     qs_reorder re = { sys->normal, at, shuffle_avx2() };
