@@ -287,6 +287,13 @@ QS_INLINE void prefetch_span(const void *p, size_t bytes)
     qs_prefetch((const char *)p + bytes - 1);
 }
 
+// Ask for the lines island_seed reads of body b.
+QS_INLINE void prefetch_seed(const struct dxBody *b)
+{
+    prefetch_span(b->pos, sizeof(dReal) * 3);
+    prefetch_span(b->lvel, (size_t)((const char *)(b->avel + 3) - (const char *)b->lvel));
+}
+
 // A seed from the bits of the island's positions and velocities (FNV-1a
 // over their words, in three independent lanes): the same state gives the
 // same seed.
@@ -294,12 +301,7 @@ static uint32_t island_seed(const dxIsland *is)
 {
     uint64_t hash[3] = { 0xcbf29ce484222325u, 0x84222325cbf29ce4u, 0x9e3779b97f4a7c15u };
     for (int b = 0; b < is->nb; b++) {
-        if (b + BODY_AHEAD < is->nb) {
-            const struct dxBody *ahead = is->bodies[b + BODY_AHEAD];
-            prefetch_span(ahead->pos, sizeof(dReal) * 3);
-            prefetch_span(ahead->lvel, (size_t)((const char *)(ahead->avel + 3) -
-                                                (const char *)ahead->lvel));
-        }
+        if (b + BODY_AHEAD < is->nb) prefetch_seed(is->bodies[b + BODY_AHEAD]);
         const struct dxBody *body = is->bodies[b];
         const dReal *v[3] = { body->pos, body->lvel, body->avel };
         for (int k = 0; k < 3; k++) {
@@ -727,6 +729,10 @@ int dWorldQuickStep(dWorldID w, dReal stepsize)
     int *list = DX_ARENA_ARRAY(a, int, count + 1);
     int *tmp = DX_ARENA_ARRAY(a, int, count + 1);
     for (int i = 0; i < count; i++) {
+        // The next island's first body, which island_seed's look-ahead
+        // does not reach (most islands of a rain or a heap are one or two
+        // bodies).
+        if (i + 1 < count) prefetch_seed(islands[i + 1].bodies[0]);
         // (an island without joints has no rows to shuffle)
         parts[i].seed = islands[i].nj > 0 ? island_seed(&islands[i]) : 0;
         const int body0 = sys.nbodies;   // where dxQuickBuild puts the island's bodies
