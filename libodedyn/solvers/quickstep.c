@@ -681,6 +681,14 @@ static void joint_feedback(const qs_feedback *q, const dReal *lambda)
     dCopyVector3(fb->t2, f + 9);
 }
 
+// Ask for the lines finish_island reads of body b.
+QS_INLINE void prefetch_finish(const struct dxBody *b)
+{
+    prefetch_span(b->lvel, (size_t)((const char *)(b->torque + 3) - (const char *)b->lvel));
+    qs_prefetch(b->force);
+    qs_prefetch(&b->flags);   // dxBodyMove's first read (nearly all its time)
+}
+
 // v += h M^-1 (f + J^T lambda) for every body of the island, with fc the
 // island's M^-1 J^T lambda (without constraints, fc zero, this is
 // dxIslandUpdateVelocities to the bit); then the island's integration, each
@@ -690,13 +698,7 @@ static void finish_island(const dxIsland *is, const dxIslandBodies *bd, const dR
                           dReal h, int correct)
 {
     for (int b = 0; b < is->nb; b++) {
-        if (b + BODY_AHEAD < is->nb) {
-            const struct dxBody *ahead = is->bodies[b + BODY_AHEAD];
-            prefetch_span(ahead->lvel, (size_t)((const char *)(ahead->torque + 3) -
-                                                (const char *)ahead->lvel));
-            qs_prefetch(ahead->force);
-            qs_prefetch(&ahead->flags);   // dxBodyMove's first read (nearly all its time)
-        }
+        if (b + BODY_AHEAD < is->nb) prefetch_finish(is->bodies[b + BODY_AHEAD]);
         struct dxBody *body = is->bodies[b];
         const dReal *c = fc + 6 * b, *I = bd->inv_inertia + 12 * b, *t = body->torque;
         const dReal k = h * bd->inv_mass[b];
@@ -750,8 +752,10 @@ int dWorldQuickStep(dWorldID w, dReal stepsize)
     for (int k = 0; k < sys.nfeedback; k++) joint_feedback(&sys.feedback[k], sys.lambda);
     dxQuickWarmEnd(w, sys.warm, sys.lambda);   // before the bodies move
     const int correct = w->position_iterations > 0;
-    for (int i = 0; i < count; i++)
+    for (int i = 0; i < count; i++) {
+        if (i + 1 < count) prefetch_finish(islands[i + 1].bodies[0]);   // (as in the set-up)
         finish_island(&islands[i], &bd[i], sys.fc + 6 * parts[i].body0, h, correct);
+    }
     dxStepKinematicBodies(w, h);
     dxStepEnd(islands, count, h);
     return 1;
