@@ -204,10 +204,14 @@ static int shuffle_avx2(void)
 // The base of an island's g-th reshuffle of a step, for its n rows: at[r]
 // minus it is below n exactly for the rows the reshuffle has placed (at[]
 // holds the last or this reshuffle's places, or ~0 from the step's start;
-// unsigned arithmetic wraps).
+// unsigned arithmetic wraps). Each reshuffle places every row of the
+// island, so the bases need only differ from the last one's: 0 and n in
+// turn. Then at[-1] = ~0u (reorder_begin) is never placed (~0u - base >= n
+// for n < 2^31), set once for all islands: threads that sweep islands
+// side by side share at[].
 static unsigned reshuffle_base(int g, int n)
 {
-    return (unsigned)g * (unsigned)n;
+    return (unsigned)(g & 1) * (unsigned)n;
 }
 
 // Row r has just been put at place k by the shuffle (the places above k are
@@ -221,7 +225,7 @@ static unsigned reshuffle_base(int g, int n)
 // gives (the two-pass form this replaced), as the contacts' rows are
 // disjoint groups (only a contact's friction rows are bounded by a row, and
 // a normal row by the constant 1). A row without a normal row looks up
-// at[-1], never placed (reshuffle): one branch, not two, on whether the row
+// at[-1], never placed (reshuffle_base): one branch, not two, on whether the row
 // moves, as both follow the random order (a mispredict in two or three rows).
 QS_INLINE void place(unsigned *o, size_t k, unsigned r, unsigned base, unsigned n,
                      unsigned *at, const unsigned *normal)
@@ -245,7 +249,6 @@ QS_INLINE void reshuffle(int *order, int n, uint32_t *state, unsigned base, cons
     unsigned *o = (unsigned *)order, *at = re->at;
     const unsigned *normal = re->normal;
     uint32_t s = *state;
-    at[-1] = base - 1;   // (place: never below base + n, whatever the base)
     for (size_t top = n > 1 ? (size_t)n - 1 : 0; top > 0;) {
         const size_t count = top < RANDOM_BLOCK ? top : RANDOM_BLOCK, lo = top - count + 1;
         random_places(s, (unsigned)lo, (unsigned)count, j, re->avx2);
@@ -268,6 +271,7 @@ QS_INLINE void reshuffle(int *order, int n, uint32_t *state, unsigned base, cons
 void dxQuickReshuffle(int *order, int n, uint32_t *state, unsigned base, const unsigned *normal,
                       unsigned *at)
 {
+    at[-1] = base - 1;   // never placed, whatever the base (reshuffle_base)
     const qs_reorder re = { normal, at, shuffle_avx2() };
     reshuffle(order, n, state, base, &re);
 }
@@ -395,6 +399,7 @@ static qs_reorder reorder_begin(dxArena *a, qs_system *sys)
 {
     unsigned *at = DX_ARENA_ARRAY(a, unsigned, sys->nrows + 2) + 1;   // and at[-1]
     const int *order = sys->order, n = sys->norder;
+    at[-1] = ~0u;
     for (int k = 0; k < n; k++) at[order[k]] = ~0u;
     qs_reorder re = { sys->normal, at, shuffle_avx2() };
     return re;
