@@ -62,7 +62,8 @@ static uint32_t lcg(uint32_t *s)
 }
 
 static int order_a[MAX_ROWS], order_b[MAX_ROWS], scratch[MAX_INDEX];
-static unsigned normal[MAX_INDEX], at[MAX_INDEX];
+static unsigned normal[MAX_INDEX], at_and_one[MAX_INDEX + 1];
+static unsigned *const at = at_and_one + 1;   // dxQuickReshuffle writes at[-1]
 
 // An island of n rows (n > 0): contacts of 1-3 rows, a row bound by no row
 // about every fifth, a friction row whose normal row is not in the island

@@ -182,7 +182,9 @@ QS_INLINE void random_places(uint32_t state, unsigned lo, unsigned count, unsign
 // normal: the row that bounds it if that one is in its island's order (a
 // friction row's normal row: sys->normal, made with the rows), else
 // QS_NO_ROW; at: where the current reshuffle put the row, plus that
-// reshuffle's base (below). Unsigned: row indices index without widening.
+// reshuffle's base (below), and at[-1] (QS_NO_ROW's place, as a signed
+// index) a row that is never placed. Unsigned: row indices index without
+// widening.
 typedef struct qs_reorder {
     const unsigned *normal;
     unsigned *at;
@@ -202,10 +204,14 @@ static int shuffle_avx2(void)
 // The base of an island's g-th reshuffle of a step, for its n rows: at[r]
 // minus it is below n exactly for the rows the reshuffle has placed (at[]
 // holds the last or this reshuffle's places, or ~0 from the step's start;
-// unsigned arithmetic wraps).
+// unsigned arithmetic wraps). Each reshuffle places every row of the
+// island, so the bases need only differ from the last one's: 0 and n in
+// turn. Then at[-1] = ~0u (reorder_begin) is never placed (~0u - base >= n
+// for n < 2^31), set once for all islands: threads that sweep islands
+// side by side share at[].
 static unsigned reshuffle_base(int g, int n)
 {
-    return (unsigned)g * (unsigned)n;
+    return (unsigned)(g & 1) * (unsigned)n;
 }
 
 // Row r has just been put at place k by the shuffle (the places above k are
@@ -218,15 +224,16 @@ static unsigned reshuffle_base(int g, int n)
 // upwards swapping each friction row found before its normal row with it
 // gives (the two-pass form this replaced), as the contacts' rows are
 // disjoint groups (only a contact's friction rows are bounded by a row, and
-// a normal row by the constant 1).
+// a normal row by the constant 1). A row without a normal row looks up
+// at[-1], never placed (reshuffle_base): one branch, not two, on whether the row
+// moves, as both follow the random order (a mispredict in two or three rows).
 QS_INLINE void place(unsigned *o, size_t k, unsigned r, unsigned base, unsigned n,
                      unsigned *at, const unsigned *normal)
 {
     at[r] = base + (unsigned)k;
     const unsigned nr = normal[r];
-    if (nr == QS_NO_ROW) return;
-    const unsigned a = at[nr] - base;
-    if (a >= n) return;        // the normal row comes below k
+    const unsigned a = at[(int)nr] - base;   // QS_NO_ROW: at[-1]
+    if (a >= n) return;        // no normal row, or it comes below k
     const unsigned f = o[a];   // nr, or a friction row that took its place
     o[at[f] - base] = f;
     o[a] = r;
@@ -264,6 +271,7 @@ QS_INLINE void reshuffle(int *order, int n, uint32_t *state, unsigned base, cons
 void dxQuickReshuffle(int *order, int n, uint32_t *state, unsigned base, const unsigned *normal,
                       unsigned *at)
 {
+    at[-1] = base - 1;   // never placed, whatever the base (reshuffle_base)
     const qs_reorder re = { normal, at, shuffle_avx2() };
     reshuffle(order, n, state, base, &re);
 }
@@ -283,6 +291,13 @@ QS_INLINE void prefetch_span(const void *p, size_t bytes)
     qs_prefetch((const char *)p + bytes - 1);
 }
 
+// Ask for the lines island_seed reads of body b.
+QS_INLINE void prefetch_seed(const struct dxBody *b)
+{
+    prefetch_span(b->pos, sizeof(dReal) * 3);
+    prefetch_span(b->lvel, (size_t)((const char *)(b->avel + 3) - (const char *)b->lvel));
+}
+
 // A seed from the bits of the island's positions and velocities (FNV-1a
 // over their words, in three independent lanes): the same state gives the
 // same seed.
@@ -290,12 +305,7 @@ static uint32_t island_seed(const dxIsland *is)
 {
     uint64_t hash[3] = { 0xcbf29ce484222325u, 0x84222325cbf29ce4u, 0x9e3779b97f4a7c15u };
     for (int b = 0; b < is->nb; b++) {
-        if (b + BODY_AHEAD < is->nb) {
-            const struct dxBody *ahead = is->bodies[b + BODY_AHEAD];
-            prefetch_span(ahead->pos, sizeof(dReal) * 3);
-            prefetch_span(ahead->lvel, (size_t)((const char *)(ahead->avel + 3) -
-                                                (const char *)ahead->lvel));
-        }
+        if (b + BODY_AHEAD < is->nb) prefetch_seed(is->bodies[b + BODY_AHEAD]);
         const struct dxBody *body = is->bodies[b];
         const dReal *v[3] = { body->pos, body->lvel, body->avel };
         for (int k = 0; k < 3; k++) {
@@ -387,8 +397,9 @@ static void interleave_blocks(const qs_system *sys, const qs_island *parts, cons
 // row (made with the rows), and at[] from ~0.
 static qs_reorder reorder_begin(dxArena *a, qs_system *sys)
 {
-    unsigned *at = DX_ARENA_ARRAY(a, unsigned, sys->nrows + 1);
+    unsigned *at = DX_ARENA_ARRAY(a, unsigned, sys->nrows + 2) + 1;   // and at[-1]
     const int *order = sys->order, n = sys->norder;
+    at[-1] = ~0u;
     for (int k = 0; k < n; k++) at[order[k]] = ~0u;
     qs_reorder re = { sys->normal, at, shuffle_avx2() };
     return re;
@@ -675,6 +686,14 @@ static void joint_feedback(const qs_feedback *q, const dReal *lambda)
     dCopyVector3(fb->t2, f + 9);
 }
 
+// Ask for the lines finish_island reads of body b.
+QS_INLINE void prefetch_finish(const struct dxBody *b)
+{
+    prefetch_span(b->lvel, (size_t)((const char *)(b->torque + 3) - (const char *)b->lvel));
+    qs_prefetch(b->force);
+    qs_prefetch(&b->flags);   // dxBodyMove's first read (nearly all its time)
+}
+
 // v += h M^-1 (f + J^T lambda) for every body of the island, with fc the
 // island's M^-1 J^T lambda (without constraints, fc zero, this is
 // dxIslandUpdateVelocities to the bit); then the island's integration, each
@@ -684,13 +703,7 @@ static void finish_island(const dxIsland *is, const dxIslandBodies *bd, const dR
                           dReal h, int correct)
 {
     for (int b = 0; b < is->nb; b++) {
-        if (b + BODY_AHEAD < is->nb) {
-            const struct dxBody *ahead = is->bodies[b + BODY_AHEAD];
-            prefetch_span(ahead->lvel, (size_t)((const char *)(ahead->torque + 3) -
-                                                (const char *)ahead->lvel));
-            qs_prefetch(ahead->force);
-            qs_prefetch(&ahead->flags);   // dxBodyMove's first read (nearly all its time)
-        }
+        if (b + BODY_AHEAD < is->nb) prefetch_finish(is->bodies[b + BODY_AHEAD]);
         struct dxBody *body = is->bodies[b];
         const dReal *c = fc + 6 * b, *I = bd->inv_inertia + 12 * b, *t = body->torque;
         const dReal k = h * bd->inv_mass[b];
@@ -723,6 +736,10 @@ int dWorldQuickStep(dWorldID w, dReal stepsize)
     int *list = DX_ARENA_ARRAY(a, int, count + 1);
     int *tmp = DX_ARENA_ARRAY(a, int, count + 1);
     for (int i = 0; i < count; i++) {
+        // The next island's first body, which island_seed's look-ahead
+        // does not reach (most islands of a rain or a heap are one or two
+        // bodies).
+        if (i + 1 < count) prefetch_seed(islands[i + 1].bodies[0]);
         // (an island without joints has no rows to shuffle)
         parts[i].seed = islands[i].nj > 0 ? island_seed(&islands[i]) : 0;
         const int body0 = sys.nbodies;   // where dxQuickBuild puts the island's bodies
@@ -740,8 +757,10 @@ int dWorldQuickStep(dWorldID w, dReal stepsize)
     for (int k = 0; k < sys.nfeedback; k++) joint_feedback(&sys.feedback[k], sys.lambda);
     dxQuickWarmEnd(w, sys.warm, sys.lambda);   // before the bodies move
     const int correct = w->position_iterations > 0;
-    for (int i = 0; i < count; i++)
+    for (int i = 0; i < count; i++) {
+        if (i + 1 < count) prefetch_finish(islands[i + 1].bodies[0]);   // (as in the set-up)
         finish_island(&islands[i], &bd[i], sys.fc + 6 * parts[i].body0, h, correct);
+    }
     dxStepKinematicBodies(w, h);
     dxStepEnd(islands, count, h);
     return 1;

@@ -325,7 +325,7 @@ void dxQuickCoupledRows(const qs_block *blk, const qs_row *rows, dReal *lambda, 
 // upwards swapping each friction row found before its normal row with it):
 // state: the island's generator; base: g * n for the step's g-th reshuffle;
 // per row index, normal: its normal row in order or ~0u, at: scratch, ~0u
-// for every row before the step's first reshuffle.
+// for every row before the step's first reshuffle, and at[-1] scratch too.
 void dxQuickReshuffle(int *order, int n, uint32_t *state, unsigned base, const unsigned *normal,
                       unsigned *at);
 // 1 (the default): the shuffles' random places with AVX2 where the processor

@@ -291,6 +291,59 @@ QS_INLINE void qb_scatter(qs_v4 v, dReal *const *p, int e)
     for (int i = 0; i < QS_LANES; i++) p[i][e] = v4_lane(v, i);
 }
 
+// The 6 numbers of fc of the four bodies p[0..3] by lane: x[e] =
+// qb_gather(p, e). Read as each body's four and pair (the loads and
+// stores of the sweeps' b6_load and b6_store) and transposed in registers:
+// a wide load of numbers just written one by one (qb_scatter) waits until
+// those stores are done, as it cannot take them from the store buffer.
+QS_INLINE void qb_gather6(dReal *const *p, qs_v4 *x)
+{
+#if defined(__GNUC__)
+    const qs_v4 a0 = v4_load(p[0]), a1 = v4_load(p[1]), a2 = v4_load(p[2]), a3 = v4_load(p[3]);
+    const qs_v4 t0 = __builtin_shufflevector(a0, a1, 0, 4, 2, 6);
+    const qs_v4 t1 = __builtin_shufflevector(a0, a1, 1, 5, 3, 7);
+    const qs_v4 t2 = __builtin_shufflevector(a2, a3, 0, 4, 2, 6);
+    const qs_v4 t3 = __builtin_shufflevector(a2, a3, 1, 5, 3, 7);
+    x[0] = __builtin_shufflevector(t0, t2, 0, 1, 4, 5);
+    x[1] = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
+    x[2] = __builtin_shufflevector(t0, t2, 2, 3, 6, 7);
+    x[3] = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
+    const qs_v2 b0 = v2_load(p[0] + 4), b1 = v2_load(p[1] + 4);
+    const qs_v2 b2 = v2_load(p[2] + 4), b3 = v2_load(p[3] + 4);
+    const qs_v4 c02 = __builtin_shufflevector(b0, b2, 0, 1, 2, 3);
+    const qs_v4 c13 = __builtin_shufflevector(b1, b3, 0, 1, 2, 3);
+    x[4] = __builtin_shufflevector(c02, c13, 0, 4, 2, 6);
+    x[5] = __builtin_shufflevector(c02, c13, 1, 5, 3, 7);
+#else
+    for (int e = 0; e < 6; e++) x[e] = qb_gather(p, e);
+#endif
+}
+
+// qb_scatter(x[e], p, e) for the 6 numbers, stored as each body's four
+// and pair (qb_gather6), which the next update of a body (here or in the
+// sweeps) loads as they are stored.
+QS_INLINE void qb_scatter6(const qs_v4 *x, dReal *const *p)
+{
+#if defined(__GNUC__)
+    const qs_v4 t0 = __builtin_shufflevector(x[0], x[1], 0, 4, 2, 6);
+    const qs_v4 t1 = __builtin_shufflevector(x[0], x[1], 1, 5, 3, 7);
+    const qs_v4 t2 = __builtin_shufflevector(x[2], x[3], 0, 4, 2, 6);
+    const qs_v4 t3 = __builtin_shufflevector(x[2], x[3], 1, 5, 3, 7);
+    v4_store(__builtin_shufflevector(t0, t2, 0, 1, 4, 5), p[0]);
+    v4_store(__builtin_shufflevector(t1, t3, 0, 1, 4, 5), p[1]);
+    v4_store(__builtin_shufflevector(t0, t2, 2, 3, 6, 7), p[2]);
+    v4_store(__builtin_shufflevector(t1, t3, 2, 3, 6, 7), p[3]);
+    const qs_v4 c02 = __builtin_shufflevector(x[4], x[5], 0, 4, 2, 6);
+    const qs_v4 c13 = __builtin_shufflevector(x[4], x[5], 1, 5, 3, 7);
+    v2_store(__builtin_shufflevector(c02, c02, 0, 1), p[0] + 4);
+    v2_store(__builtin_shufflevector(c13, c13, 0, 1), p[1] + 4);
+    v2_store(__builtin_shufflevector(c02, c02, 2, 3), p[2] + 4);
+    v2_store(__builtin_shufflevector(c13, c13, 2, 3), p[3] + 4);
+#else
+    for (int e = 0; e < 6; e++) qb_scatter(x[e], p, e);
+#endif
+}
+
 // Row a's J . fc in every lane (x: the bodies' numbers by lane), summed as
 // the block update does (quickstep_sweep.c: block_dot, then its two lanes),
 // for a block of the general form or a coupled row (J in full: ne numbers).
@@ -369,9 +422,8 @@ QS_INLINE void batch_update(const qs_batch *b, int n, int form, int two, int nc,
         l[i] = lambda + b->blk[i]->first;
     }
     qs_v4 x[12], res[QS_MAX_BLOCK], L[QS_MAX_BLOCK];
-    for (int e = 0; e < 6; e++) x[e] = qb_gather(f0, e);
-    if (two)
-        for (int e = 0; e < 6; e++) x[6 + e] = qb_gather(f1, e);
+    qb_gather6(f0, x);
+    if (two) qb_gather6(f1, x + 6);
     const int je = SOA_JE(form, two), me = SOA_ME(form, two);
     const dReal *J = b->soa, *M = J + QS_LANES * n * je, *im = M + QS_LANES * n * me;
     const dReal *A = im + QS_LANES * SOA_MASS(form, two);
@@ -411,9 +463,8 @@ QS_INLINE void batch_update(const qs_batch *b, int n, int form, int two, int nc,
     }
     if (nc > 0) batch_coupled(b, n, two, nc, cfm + QS_LANES * n, rows, lambda, x, L);
     for (int a = 0; a < n; a++) qb_scatter(L[a], l, a);
-    for (int e = 0; e < 6; e++) qb_scatter(x[e], f0, e);
-    if (two)
-        for (int e = 0; e < 6; e++) qb_scatter(x[6 + e], f1, e);
+    qb_scatter6(x, f0);
+    if (two) qb_scatter6(x + 6, f1);
     if (nc < 0)
         for (int i = 0; i < QS_LANES; i++)
             if (b->blk[i]->ncoupled) dxQuickCoupledRows(b->blk[i], rows, lambda, fc);
