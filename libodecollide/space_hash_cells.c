@@ -79,7 +79,7 @@ static void rehash(dxHashCells *hc, int n)
     const int old_mask = hc->mask, live = hc->live;
     hc->mask = 0;   // (new_table must not free the old table yet)
     new_table(hc, n);
-    for (int k = 0; old_mask && k <= old_mask; k++) {
+    for (int k = 0; k <= old_mask; k++) {
         if (old[k].head < 0) continue;
         const int i = empty_slot(hc, old[k].level, old[k].c);
         hc->cells[i] = old[k];
@@ -90,9 +90,14 @@ static void rehash(dxHashCells *hc, int n)
     if (old_mask) dFree(old_mem, table_bytes(old_mask));
 }
 
+// The table of every space before its first cell: one empty slot, never
+// written (a lookup needs no test for a missing table).
+static dxHashCell no_cells = { { 0, 0, 0 }, 0, -1 };
+
 void dxHashCellsInit(dxHashCells *hc)
 {
     memset(hc, 0, sizeof *hc);
+    hc->cells = &no_cells;
 }
 
 void dxHashCellsReserve(dxHashCells *hc, int slots)

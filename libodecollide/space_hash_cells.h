@@ -42,9 +42,9 @@ typedef struct dxHashCell {
 typedef struct dxHashCells {
     dxHashEntry *entries;         // DX_HASH_CELLS_PER_GEOM per geom slot
     int entries_cap;
-    dxHashCell *cells;            // mask + 1 slots, aligned to 64 bytes
-    void *cells_mem;              // their allocation
-    int mask;                     // a power of two less one (0 before first use)
+    dxHashCell *cells;            // mask + 1 slots, aligned to 64 bytes (before first
+    void *cells_mem;              // use, one empty slot not allocated); their allocation
+    int mask;                     // a power of two less one
     int live;                     // slots in use
     int *used;                    // the slots made live since the table was last emptied or
     int used_cap, n_used;         // rebuilt (some may be empty again): mask + 1 at most
@@ -87,7 +87,6 @@ static inline int dxHashCellIs(const dxHashCell *cell, int level, const int64_t 
 // The slot of cell (level, c), or -1 if it has none.
 static inline int dxHashCellsLookup(const dxHashCells *hc, int level, const int64_t c[3])
 {
-    if (!hc->mask) return -1;
     for (unsigned i = dxHashCellBucket(level, c, hc->mask);; i = (i + 1) & (unsigned)hc->mask) {
         const dxHashCell *cell = &hc->cells[i];
         if (cell->head < 0) return -1;
@@ -98,7 +97,6 @@ static inline int dxHashCellsLookup(const dxHashCells *hc, int level, const int6
 // The first entry of cell (level, c), or -1 if no geom is recorded there.
 static inline int dxHashCellsFind(const dxHashCells *hc, int level, const int64_t c[3])
 {
-    if (!hc->mask) return -1;
     for (unsigned i = dxHashCellBucket(level, c, hc->mask);; i = (i + 1) & (unsigned)hc->mask) {
         const dxHashCell *cell = &hc->cells[i];
         if (cell->head < 0 || dxHashCellIs(cell, level, c)) return cell->head;
