@@ -299,15 +299,7 @@ QS_INLINE void qb_scatter(qs_v4 v, dReal *const *p, int e)
 QS_INLINE void qb_gather6(dReal *const *p, qs_v4 *x)
 {
 #if defined(__GNUC__)
-    const qs_v4 a0 = v4_load(p[0]), a1 = v4_load(p[1]), a2 = v4_load(p[2]), a3 = v4_load(p[3]);
-    const qs_v4 t0 = __builtin_shufflevector(a0, a1, 0, 4, 2, 6);
-    const qs_v4 t1 = __builtin_shufflevector(a0, a1, 1, 5, 3, 7);
-    const qs_v4 t2 = __builtin_shufflevector(a2, a3, 0, 4, 2, 6);
-    const qs_v4 t3 = __builtin_shufflevector(a2, a3, 1, 5, 3, 7);
-    x[0] = __builtin_shufflevector(t0, t2, 0, 1, 4, 5);
-    x[1] = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
-    x[2] = __builtin_shufflevector(t0, t2, 2, 3, 6, 7);
-    x[3] = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
+    v4_transpose(v4_load(p[0]), v4_load(p[1]), v4_load(p[2]), v4_load(p[3]), x);
     const qs_v2 b0 = v2_load(p[0] + 4), b1 = v2_load(p[1] + 4);
     const qs_v2 b2 = v2_load(p[2] + 4), b3 = v2_load(p[3] + 4);
     const qs_v4 c02 = __builtin_shufflevector(b0, b2, 0, 1, 2, 3);
@@ -325,14 +317,9 @@ QS_INLINE void qb_gather6(dReal *const *p, qs_v4 *x)
 QS_INLINE void qb_scatter6(const qs_v4 *x, dReal *const *p)
 {
 #if defined(__GNUC__)
-    const qs_v4 t0 = __builtin_shufflevector(x[0], x[1], 0, 4, 2, 6);
-    const qs_v4 t1 = __builtin_shufflevector(x[0], x[1], 1, 5, 3, 7);
-    const qs_v4 t2 = __builtin_shufflevector(x[2], x[3], 0, 4, 2, 6);
-    const qs_v4 t3 = __builtin_shufflevector(x[2], x[3], 1, 5, 3, 7);
-    v4_store(__builtin_shufflevector(t0, t2, 0, 1, 4, 5), p[0]);
-    v4_store(__builtin_shufflevector(t1, t3, 0, 1, 4, 5), p[1]);
-    v4_store(__builtin_shufflevector(t0, t2, 2, 3, 6, 7), p[2]);
-    v4_store(__builtin_shufflevector(t1, t3, 2, 3, 6, 7), p[3]);
+    qs_v4 t[4];
+    v4_transpose(x[0], x[1], x[2], x[3], t);
+    for (int i = 0; i < 4; i++) v4_store(t[i], p[i]);
     const qs_v4 c02 = __builtin_shufflevector(x[4], x[5], 0, 4, 2, 6);
     const qs_v4 c13 = __builtin_shufflevector(x[4], x[5], 1, 5, 3, 7);
     v2_store(__builtin_shufflevector(c02, c02, 0, 1), p[0] + 4);

@@ -74,17 +74,9 @@ QS_INLINE qs_v4 qc_factor(qs_v4 ms, qs_v4 cfm, qs_v4 sor_w)
 // left out): out[i] = (a_i, b_i, c_i, d_i).
 QS_INLINE void qc_transpose(qs_v4 a, qs_v4 b, qs_v4 c, qs_v4 d, qs_v4 out[3])
 {
-#if defined(__GNUC__)
-    const qs_v4 t0 = __builtin_shufflevector(a, b, 0, 4, 2, 6);
-    const qs_v4 t1 = __builtin_shufflevector(a, b, 1, 5, 3, 7);
-    const qs_v4 t2 = __builtin_shufflevector(c, d, 0, 4, 2, 6);
-    const qs_v4 t3 = __builtin_shufflevector(c, d, 1, 5, 3, 7);
-    out[0] = __builtin_shufflevector(t0, t2, 0, 1, 4, 5);
-    out[1] = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
-    out[2] = __builtin_shufflevector(t0, t2, 2, 3, 6, 7);
-#else
-    for (int i = 0; i < 3; i++) out[i] = v4_make(a.e[i], b.e[i], c.e[i], d.e[i]);
-#endif
+    qs_v4 t[4];
+    v4_transpose(a, b, c, d, t);
+    for (int i = 0; i < 3; i++) out[i] = t[i];
 }
 
 // The four numbers a, b, c, d of each of the first m rows (lanes), stored

@@ -127,4 +127,21 @@ QS_INLINE void v4_store(qs_v4 v, dReal *p)
     memcpy(p, &v, sizeof v);
 }
 
+// The 4 x 4 transpose of a, b, c, d: out[i] = (a_i, b_i, c_i, d_i).
+QS_INLINE void v4_transpose(qs_v4 a, qs_v4 b, qs_v4 c, qs_v4 d, qs_v4 out[4])
+{
+#if defined(__GNUC__)
+    const qs_v4 t0 = __builtin_shufflevector(a, b, 0, 4, 2, 6);
+    const qs_v4 t1 = __builtin_shufflevector(a, b, 1, 5, 3, 7);
+    const qs_v4 t2 = __builtin_shufflevector(c, d, 0, 4, 2, 6);
+    const qs_v4 t3 = __builtin_shufflevector(c, d, 1, 5, 3, 7);
+    out[0] = __builtin_shufflevector(t0, t2, 0, 1, 4, 5);
+    out[1] = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
+    out[2] = __builtin_shufflevector(t0, t2, 2, 3, 6, 7);
+    out[3] = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
+#else
+    for (int i = 0; i < 4; i++) out[i] = v4_make(a.e[i], b.e[i], c.e[i], d.e[i]);
+#endif
+}
+
 #endif
