@@ -323,7 +323,8 @@ void dxQuickCoupledRows(const qs_block *blk, const qs_row *rows, dReal *lambda, 
 // One reshuffle of an island's n rows in order (quickstep.c), for tests that
 // compare it with the plain form (a Fisher-Yates shuffle, then a pass
 // upwards swapping each friction row found before its normal row with it):
-// state: the island's generator; base: g * n for the step's g-th reshuffle;
+// state: the island's generator; base: one the last reshuffle's places do
+// not meet (the solver's: 0 and n in turn, quickstep.c's reshuffle_base);
 // per row index, normal: its normal row in order or ~0u, at: scratch, ~0u
 // for every row before the step's first reshuffle, and at[-1] scratch too.
 void dxQuickReshuffle(int *order, int n, uint32_t *state, unsigned base, const unsigned *normal,
