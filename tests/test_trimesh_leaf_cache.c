@@ -235,7 +235,8 @@ static int test_leaves_two_threads(void)
 }
 
 // Whether two sets of n contacts are the same bits (the vectors' padding
-// left out).
+// left out). Not collide_threads.c's ct_same_contacts: the two sets come
+// from two mesh geoms (warm and cleared), so their g1 differ.
 static int same_contacts(const dContactGeom *a, const dContactGeom *b, int n)
 {
     for (int i = 0; i < n; i++) {
