@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
 // test_limot_angle.c -- dxLimotAngleClear (joint_limot.c), the hinge's and
-// the universal joint's limit test without atan2: whenever it says an angle
+// the universal joint's limit test without atan2 (and dxLimotAtan2Clear,
+// hinge-2's, for the angle atan2(y, x) itself): whenever it says an angle
 // is clear of the stops, dxLimotTestLimit on the angle measured exactly
 // (wrap(2 atan2(y, x)), as the joints measure it) finds no limit; and it
 // says so for every angle farther from both stops and from +-pi than its
@@ -87,8 +88,55 @@ static int angle_clear_edges(void)
     return 0;
 }
 
+// dxLimotAtan2Clear against dxLimotTestLimit on atan2(y, x): never clear
+// where the exact angle is at a stop; clear wherever the angle is in the
+// right half plane and farther than the margin and the estimate's error from
+// both stops (crossed and infinite stops among them); never in the left
+// half plane.
+static int atan2_clear_agrees(void)
+{
+    dxLimot lm = { 0 };
+    uint32_t s = 54321;
+    long cleared = 0, far = 0;
+    for (int stops = 0; stops < 200; stops++) {
+        lm.lostop = (dReal)uniform(&s, -2, 1);
+        lm.histop = (dReal)uniform(&s, -1, 2);
+        if (stops % 10 == 1) lm.lostop = -dInfinity;
+        if (stops % 10 == 2) lm.histop = dInfinity;
+        for (int k = 0; k < 4000; k++) {
+            const double a = -M_PI + 2 * M_PI * (k + 0.5) / 4000;
+            const double r = uniform(&s, 0.05, 2);
+            const dReal y = (dReal)(r * sin(a)), x = (dReal)(r * cos(a));
+            const dReal angle = dAtan2(y, x);
+            const int clear = dxLimotAtan2Clear(&lm, y, x);
+            dxLimot t = lm;
+            t.limit = -1;
+            dxLimotTestLimit(&t, angle);
+            if (clear) CHECK(t.limit == 0);
+            if (x < 0) CHECK(!clear);
+            cleared += clear;
+            const double need = MARGIN + ESTIMATE_ERROR + 1e-5;
+            if (x >= 0 && angle > lm.lostop + need && angle < lm.histop - need) {
+                far++;
+                CHECK(clear);
+            }
+        }
+    }
+    CHECK(far > 100000);
+    CHECK(cleared >= far);
+    lm.lostop = -1;
+    lm.histop = 1;
+    CHECK(!dxLimotAtan2Clear(&lm, 0, 0));
+    CHECK(dxLimotAtan2Clear(&lm, 0, 1));
+    lm.lostop = 1;
+    lm.histop = -1;   // crossed: none acts, but never clear
+    CHECK(!dxLimotAtan2Clear(&lm, 0, 1));
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(angle_clear_agrees),
     TEST_CASE(angle_clear_edges),
+    TEST_CASE(atan2_clear_agrees),
     TEST_END,
 };

@@ -150,24 +150,27 @@ static void set_reference(dxJointHinge2 *h)
     from_world(&h->base, 1, h->ref2[1], w);
 }
 
-// Angle 1: how far body 1 turned about axis 1 relative to body 2 since the
-// reference. Seen from body 1, axis 2 turns the other way about axis 1.
-static dReal angle1(const dxJointHinge2 *h)
+// The sides (y, x) of angle k's arctangent: how far body 1 turned about
+// axis k + 1 relative to body 2 since the reference is -atan2(y, x) for
+// angle 1 (seen from body 1, axis 2 turns the other way about axis 1) and
+// atan2(y, x) for angle 2 (seen from body 2, axis 1 turns the same way
+// about axis 2).
+static void angle_sides(const dxJointHinge2 *h, int k, dReal *y, dReal *x)
 {
     dVector3 a1, a2, q;
     get_axes(h, a1, a2);
-    from_world(&h->base, 0, q, a2);
-    return -dAtan2(dCalcVectorDot3(h->ref1[1], q), dCalcVectorDot3(h->ref1[0], q));
+    from_world(&h->base, k, q, k ? a1 : a2);
+    const dVector3 *ref = k ? h->ref2 : h->ref1;
+    *y = dCalcVectorDot3(ref[1], q);
+    *x = dCalcVectorDot3(ref[0], q);
 }
 
-// Angle 2: how far body 1 turned about axis 2 relative to body 2; seen from
-// body 2, axis 1 turns the same way about axis 2.
-static dReal angle2(const dxJointHinge2 *h)
+// Angle k (0: angle 1, 1: angle 2).
+static dReal angle_of(const dxJointHinge2 *h, int k)
 {
-    dVector3 a1, a2, q;
-    get_axes(h, a1, a2);
-    from_world(&h->base, 1, q, a1);
-    return dAtan2(dCalcVectorDot3(h->ref2[1], q), dCalcVectorDot3(h->ref2[0], q));
+    dReal y, x;
+    angle_sides(h, k, &y, &x);
+    return k ? dAtan2(y, x) : -dAtan2(y, x);
 }
 
 // The reciprocal basis of the axes in their plane: d1 . a1 = 1, d1 . a2 = 0,
@@ -264,14 +267,19 @@ static void hinge2_init(dxJoint *j)
     for (int k = 0; k < 2; k++) dxLimotInit(&h->limot[k], j->world);
 }
 
-// Test axis k against its stops; 1 if it needs a row.
+// Test axis k against its stops (without atan2 when the angle is clearly
+// between them); 1 if it needs a row.
 static int test_axis(dxJointHinge2 *h, int k)
 {
     dxLimot *lm = &h->limot[k];
-    if (lm->lostop > -dInfinity || lm->histop < dInfinity)
-        dxLimotTestLimit(lm, k ? angle2(h) : angle1(h));
-    else
+    if (lm->lostop > -dInfinity || lm->histop < dInfinity) {
+        dReal y, x;
+        angle_sides(h, k, &y, &x);
+        if (k ? dxLimotAtan2Clear(lm, y, x) : dxLimotAtan2Clear(lm, -y, x)) lm->limit = 0;
+        else dxLimotTestLimit(lm, k ? dAtan2(y, x) : -dAtan2(y, x));
+    } else {
         lm->limit = 0;
+    }
     return dxLimotActive(lm);
 }
 
@@ -470,14 +478,14 @@ dReal dJointGetHinge2Angle1(dJointID j)
 {
     HINGE2(j, return 0);
     if (!dxJointBody(j, 0)) return 0;
-    return angle1((dxJointHinge2 *)j);
+    return angle_of((dxJointHinge2 *)j, 0);
 }
 
 dReal dJointGetHinge2Angle2(dJointID j)
 {
     HINGE2(j, return 0);
     if (!dxJointBody(j, 0)) return 0;
-    return angle2((dxJointHinge2 *)j);
+    return angle_of((dxJointHinge2 *)j, 1);
 }
 
 // The rate about axis k: d_k . (w1 - w2) with the reciprocal axes.

@@ -103,23 +103,37 @@ static dReal atan_estimate(dReal t)
     return t * ((dReal)(M_PI / 4) - (a - 1) * ((dReal)0.2447 + (dReal)0.0663 * a));
 }
 
+// atan2(y, x) for x >= 0 within ANGLE_ESTIMATE_ERROR: atan(y / x), or
+// sign(y) pi/2 - atan(x / y) where |y| > x (NaN for 0 / 0).
+static dReal atan2_right_estimate(dReal y, dReal x)
+{
+    if (dFabs(y) <= x) return atan_estimate(y / x);
+    const dReal right = y > 0 ? (dReal)(M_PI / 2) : (dReal)(-M_PI / 2);
+    return right - atan_estimate(x / y);
+}
+
+// Is the estimate `angle` far enough from both stops and from +-pi?
+static int estimate_clear(const dxLimot *lm, dReal angle)
+{
+    const dReal m = ANGLE_CLEAR_MARGIN;
+    return dFabs(angle) < (dReal)M_PI - m && angle > lm->lostop + m && angle < lm->histop - m;
+}
+
 int dxLimotAngleClear(const dxLimot *lm, dReal y, dReal x)
 {
-    // (x, y) and (-x, -y) give the same wrapped angle: take x >= 0, then
-    // atan2(y, x) = atan(y / x), or sign(y) pi/2 - atan(x / y) where |y| > x.
+    // (x, y) and (-x, -y) give the same wrapped angle: take x >= 0.
     if (x < 0) {
         x = -x;
         y = -y;
     }
-    dReal half;
-    if (dFabs(y) <= x) {
-        half = atan_estimate(y / x);   // NaN for 0 / 0: unsure below
-    } else {
-        const dReal right = y > 0 ? (dReal)(M_PI / 2) : (dReal)(-M_PI / 2);
-        half = right - atan_estimate(x / y);
-    }
-    const dReal angle = 2 * half, m = ANGLE_CLEAR_MARGIN;
-    return dFabs(angle) < (dReal)M_PI - m && angle > lm->lostop + m && angle < lm->histop - m;
+    return estimate_clear(lm, 2 * atan2_right_estimate(y, x));
+}
+
+int dxLimotAtan2Clear(const dxLimot *lm, dReal y, dReal x)
+{
+    // Only the right half plane, where atan2 is atan2_right_estimate's (the
+    // left one is left to atan2: rare for the joints that ask).
+    return x >= 0 && estimate_clear(lm, atan2_right_estimate(y, x));
 }
 
 int dxLimotActive(const dxLimot *lm) { return lm->fmax > 0 || lm->limit != 0; }

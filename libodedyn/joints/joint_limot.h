@@ -34,6 +34,8 @@ int dxLimotTestLimit(dxLimot *lm, dReal position);
 // the caller may set lm->limit = 0 without the angle; 0 if unsure (the
 // angle must be measured). Judged without atan2 (docs/perf.md).
 int dxLimotAngleClear(const dxLimot *lm, dReal y, dReal x);
+// The same for the angle atan2(y, x) itself (not doubled; in (-pi, pi]).
+int dxLimotAtan2Clear(const dxLimot *lm, dReal y, dReal x);
 // 1 if this axis needs a row this step (after dxLimotTestLimit).
 int dxLimotActive(const dxLimot *lm);
 // Write the row for this axis at `row`: axis is a world unit vector,
