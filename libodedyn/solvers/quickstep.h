@@ -297,6 +297,13 @@ static inline int dxQuickContactIsDirect(const dxJoint *j)
     return !(dxJointBody(j, 0)->flags & DX_BODY_KINEMATIC) &&
            !(b1 && (b1->flags & DX_BODY_KINEMATIC));
 }
+// Joints of at most QS_MAX_BLOCK rows without friction indices whose
+// unbounded rows are one run of two or more (hinge-2, a hinge or universal
+// joint at a stop or with a motor, a contact with two infinite friction
+// rows) take their block and the rows coupled to it without the general
+// search (quickstep_build.c's run_joint): 1 (the default) or 0, every joint
+// the general way (for tests that compare the two: the same results).
+extern int dxQuickRunJoints;
 // Append the rows of such a contact to the system (lambda positions from
 // sys->next on), enter it in the warm-start cache and start it from the
 // last step's forces if it was there; the same rows, bit for bit, as the

@@ -328,6 +328,18 @@ static int fill_block(dxArena *a, const qs_input *in, const qs_jrows *jr, const 
     return 1;
 }
 
+// Block blk of a joint, its rows idx[0..n), appended to the system with
+// their lambda positions (pos) from *next on.
+static void add_block(qs_system *sys, qs_block *blk, const int *idx, int n, int *pos, int *next)
+{
+    const int first = *next;
+    blk->first = first;
+    blk->coupled = blk->ncoupled = 0;
+    for (int k = 0; k < n; k++) pos[idx[k]] = first + k;
+    *next = first + n;
+    sys->nblocks++;
+}
+
 // The blocks of a joint: its unbounded rows in groups of up to QS_MAX_BLOCK.
 // Rows that end up in a block get their lambda position in pos[] (counting
 // on from *next); the others keep -1. Returns the joint's block if it has
@@ -342,14 +354,7 @@ static qs_block *make_blocks(dxArena *a, const qs_input *in, const qs_jrows *jr,
         if (!last && is_unbounded(jr, i)) idx[n++] = i;
         if (n < QS_MAX_BLOCK && !last) continue;
         qs_block *blk = &sys->blocks[sys->nblocks];
-        if (n >= 2 && fill_block(a, in, jr, idx, n, blk, jb)) {
-            const int first = *next;
-            blk->first = first;
-            blk->coupled = blk->ncoupled = 0;
-            for (int k = 0; k < n; k++) pos[idx[k]] = first + k;
-            *next = first + n;
-            sys->nblocks++;
-        }
+        if (n >= 2 && fill_block(a, in, jr, idx, n, blk, jb)) add_block(sys, blk, idx, n, pos, next);
         n = 0;
     }
     return sys->nblocks == first_block + 1 ? &sys->blocks[first_block] : NULL;
@@ -626,6 +631,60 @@ static void make_rows(const qs_input *in, const qs_jrows *jr, qs_block *blk, qs_
         sys->normal[sys->nrows] = f >= 0 && f <= i ? row[f] : QS_NO_ROW;
         sys->order[sys->norder++] = sys->nrows++;
     }
+}
+
+int dxQuickRunJoints = 1;
+
+// A joint of at most QS_MAX_BLOCK rows without friction indices whose
+// unbounded rows are one run of two or more (hinge-2's, or a contact's two
+// infinite friction rows), made without make_blocks' and make_rows' general
+// search: its run as its block, its other rows' lambda positions after it in
+// row order, then those rows coupled to the block in row order, then those
+// that could not be coupled as free rows (no normal row): the same blocks,
+// rows and positions (pos, all set) as make_blocks and make_rows give such a
+// joint. Returns its block, or NULL (nothing done) for any other joint and
+// a singular block.
+static qs_block *run_joint(dxArena *a, const qs_input *in, const qs_jrows *jr, qs_system *sys,
+                           int *pos)
+{
+    const int m = jr->m;
+    if (m > QS_MAX_BLOCK || !dxQuickRunJoints) return NULL;
+    int first = 0, n = 0, broken = 0;
+    for (int i = 0; i < m; i++) {
+        const int u = is_unbounded(jr, i);
+        broken |= (jr->findex[i] >= 0) | (u & (n > 0) & (first + n != i));
+        first = n ? first : i;
+        n += u;
+    }
+    if (n < 2 || broken) return NULL;
+    int idx[QS_MAX_BLOCK];
+    for (int k = 0; k < n; k++) idx[k] = first + k;
+    qs_block *blk = &sys->blocks[sys->nblocks];
+    qs_jblock jb;
+    if (!fill_block(a, in, jr, idx, n, blk, &jb)) return NULL;
+    add_block(sys, blk, idx, n, pos, &sys->next);
+    const unsigned rest = ((1u << m) - 1) & ~(((1u << n) - 1) << first);
+    int nx = sys->next;
+    for (int i = 0; i < m; i++)
+        if (rest >> i & 1) pos[i] = nx++;
+    sys->next = nx;
+    blk->coupled = sys->nrows;
+    unsigned loose = 0;
+    for (int i = 0; i < m; i++) {
+        if (!(rest >> i & 1)) continue;
+        qs_row *q = &sys->rows[sys->nrows];
+        fill_row(in, jr, i, pos, sys->m, blk, &jb, q);
+        if (q->g) sys->nrows++;
+        else loose |= 1u << i;
+    }
+    blk->ncoupled = sys->nrows - blk->coupled;
+    for (int i = 0; i < m; i++) {
+        if (!(loose >> i & 1)) continue;
+        fill_row(in, jr, i, pos, sys->m, NULL, NULL, &sys->rows[sys->nrows]);
+        sys->normal[sys->nrows] = QS_NO_ROW;
+        sys->order[sys->norder++] = sys->nrows++;
+    }
+    return blk;
 }
 
 // ---- the warm start ------------------------------------------------------------
@@ -940,13 +999,16 @@ void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *b
             int *findex = (int *)(num + 4 * jr->m);
             fill_joint_rows(w, j, h, jr, &J, &num, &findex);
         }
-        for (int i = 0; i < jr->m; i++) s->pos[i] = -1;
         qs_warm ws;
         const qs_input *jin = warm_lookup(j, jr, sys, &ws) ? &in_warm : &in;
         const int nblocks = sys->nblocks, nrows = sys->nrows;
-        qs_jblock jb;
-        qs_block *blk = make_blocks(a, jin, jr, sys, s->pos, &sys->next, &jb);
-        make_rows(jin, jr, blk, blk ? &jb : NULL, sys, s->pos, &sys->next, s->done, s->row);
+        qs_block *blk = run_joint(a, jin, jr, sys, s->pos);
+        if (!blk) {
+            for (int i = 0; i < jr->m; i++) s->pos[i] = -1;
+            qs_jblock jb;
+            blk = make_blocks(a, jin, jr, sys, s->pos, &sys->next, &jb);
+            make_rows(jin, jr, blk, blk ? &jb : NULL, sys, s->pos, &sys->next, s->done, s->row);
+        }
         if (j->feedback) keep_feedback(a, j, jr, s->pos, sys);
         // Without blocks the joint's rows are in order and alone (not coupled).
         const int alone = sys->nblocks == nblocks && sys->nrows - nrows == jr->m;
