@@ -178,8 +178,14 @@ QS_INLINE int warm_enter(dxWarmCache *c, const struct dxBody *b0, const struct d
     run = &c->cur_pairs[c->ncur_pairs++];
     run->b0 = b0;
     run->b1 = b1;
-    run->g0 = b0->hdr.generation;
-    run->g1 = b1 ? b1->hdr.generation : 0;
+    // The generations in one store: the pair's compare (same_pair) reads
+    // them in one load, which waits for the cache if it spans two stores.
+    // (Made in a register: the compiler turns the copies into shifts.)
+    const uint32_t g2[2] = { b0->hdr.generation, b1 ? b1->hdr.generation : 0 };
+    uint64_t g;
+    memcpy(&g, g2, sizeof g);
+    _Static_assert(offsetof(warm_pair, g1) == offsetof(warm_pair, g0) + 4, "g0, g1 together");
+    memcpy(&run->g0, &g, sizeof g);
     run->hash = pair_hash(b0, b1);
     run->first = k;
     run->count = 1;
