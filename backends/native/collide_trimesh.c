@@ -70,13 +70,35 @@ static int finite3(const dReal p[3])
 
 // Whether contact a merges into kept contact b: (nearly) the same point,
 // (nearly) the same normal.
+static inline int same_contact(const dxTriMeshRaw *a, const dxTriMeshRaw *b, dReal tol2)
+{
+    return dist2(a->pos, b->pos) <= tol2 && dx_dot(a->n, b->n) > 1 - (dReal)1e-6;
+}
+
 static int duplicates(const dxTriMeshRaw *a, const dxTriMeshRaw *b, dReal tol)
 {
     // Most pairs are apart along x alone (the square of one term of the
     // distance's sum already over: the same answer, rounding included).
     dReal dx = a->pos[0] - b->pos[0];
     if (dx * dx > tol * tol) return 0;
-    return dist2(a->pos, b->pos) <= tol * tol && dx_dot(a->n, b->n) > 1 - (dReal)1e-6;
+    return same_contact(a, b, tol * tol);
+}
+
+// Whether points a and b are apart along x or along y by more than the
+// square root of tol2 (the square of one term of the distance's sum
+// already over tol2: not duplicates, rounding included). Both axes at once:
+// on a grid mesh the contacts along one grid line share an x (or a y), and
+// x alone left those pairs to a branch that went the other way.
+static inline int apart_xy(const dReal *a, const dReal *b, dReal tol2)
+{
+#if defined(__SSE2__) && !defined(dSINGLE)
+    __m128d d = _mm_sub_pd(_mm_loadu_pd(a), _mm_loadu_pd(b));
+    d = _mm_mul_pd(d, d);
+    return _mm_movemask_pd(_mm_cmpgt_pd(d, _mm_set1_pd(tol2))) != 0;
+#else
+    const dReal dx = a[0] - b[0], dy = a[1] - b[1];
+    return (dx * dx > tol2) | (dy * dy > tol2);
+#endif
 }
 
 // The lowest index among the n kept contacts that r[i] duplicates (n if
@@ -85,14 +107,12 @@ static int kept_duplicate(dxTriScratch *s, int n, int i, dReal tol, int grid)
 {
     const dxTriMeshRaw *r = s->raw;
     if (!grid) {
-        // duplicates' test along x first, with r[i]'s x and the square of
-        // tol loaded once (the same numbers).
-        const dReal x = r[i].pos[0], tol2 = tol * tol;
+        // duplicates' test along x and y first, the square of tol made
+        // once (the same numbers and answers).
+        const dReal tol2 = tol * tol;
         int j = 0;
-        for (; j < n; j++) {
-            dReal dx = x - r[j].pos[0];
-            if (!(dx * dx > tol2) && duplicates(&r[i], &r[j], tol)) break;
-        }
+        for (; j < n; j++)
+            if (!apart_xy(r[i].pos, r[j].pos, tol2) && same_contact(&r[i], &r[j], tol2)) break;
         return j;
     }
     int best = n, *heads[27];

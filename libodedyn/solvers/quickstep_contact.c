@@ -90,8 +90,30 @@ QS_INLINE void qc_store(qs_row *rows, int m, size_t off, qs_v4 a, qs_v4 b, qs_v4
     if (m > 2) memcpy((char *)&rows[2] + off, &out[2], sizeof out[2]);
 }
 
-// The numbers qc_store writes: rhs, cfm, lo, hi together, and J, M, J1, M1
-// (24 numbers) together.
+// The two numbers a, b of each of the first m rows (lanes), stored at byte
+// offset off of rows[0..m): the pairs that qc_store's fours leave between
+// them, so that each body's M (four numbers and a pair) is written by the
+// very stores the warm start (start_row) reads it back with. A load that
+// spans two stores waits until both reach the cache; one within a store
+// takes its numbers from the store.
+QS_INLINE void qc_store2(qs_row *rows, int m, size_t off, qs_v4 a, qs_v4 b)
+{
+#if defined(__GNUC__)
+    const qs_v4 t0 = __builtin_shufflevector(a, b, 0, 4, 2, 6);   // a0 b0 a2 b2
+    const qs_v4 t1 = __builtin_shufflevector(a, b, 1, 5, 3, 7);   // a1 b1 a3 b3
+    const qs_v2 p0 = __builtin_shufflevector(t0, t0, 0, 1), p1 = __builtin_shufflevector(t1, t1, 0, 1),
+                p2 = __builtin_shufflevector(t0, t0, 2, 3);
+#else
+    const qs_v2 p0 = { { a.e[0], b.e[0] } }, p1 = { { a.e[1], b.e[1] } },
+                p2 = { { a.e[2], b.e[2] } };
+#endif
+    memcpy((char *)&rows[0] + off, &p0, sizeof p0);
+    if (m > 1) memcpy((char *)&rows[1] + off, &p1, sizeof p1);
+    if (m > 2) memcpy((char *)&rows[2] + off, &p2, sizeof p2);
+}
+
+// The numbers qc_store and qc_store2 write: rhs, cfm, lo, hi together, and
+// J, M, J1, M1 (24 numbers) together.
 _Static_assert(offsetof(qs_row, cfm) == sizeof(dReal) &&
                    offsetof(qs_row, lo) == 2 * sizeof(dReal) &&
                    offsetof(qs_row, hi) == 3 * sizeof(dReal),
@@ -151,7 +173,8 @@ QS_INLINE void lanes_rows(const qs_input *in, const qs_cbodies *cb, const dxCont
     qs_v4 ia[3];
     inertia_lanes(cb->I0, ax, ay, az, ia);
     const qs_v4 m3 = ia[0], m4 = ia[1], m5 = ia[2];
-    qc_store(rows, m, J + 8 * n, m2, m3, m4, m5);
+    qc_store(rows, m, J + 6 * n, m0, m1, m2, m3);
+    qc_store2(rows, m, J + 10 * n, m4, m5);
     // The rates: R[0..3] and R[2..5] as fours (a body's six numbers).
     const qs_v4 R = v4_load(cb->R0), R2 = v4_load(cb->R0 + 2);
     const qs_v4 ra = v4_add(v4_mul(dx, v4_spread(R, 0)), v4_mul(dz, v4_spread(R, 2)));
@@ -161,7 +184,7 @@ QS_INLINE void lanes_rows(const qs_input *in, const qs_cbodies *cb, const dxCont
     qs_v4 rc = v4_mul(ay, v4_spread(R2, 2)), rd = v4_mul(az, v4_spread(R2, 3));
     qs_v4 mc = v4_mul(ay, m4), md = v4_mul(az, m5);
     // Body 1: J = [-d, d x arm1], M^-1 J^T = [im1 (-d), I1 (d x arm1)].
-    qs_v4 lx, ly, lz, bx, by, bz, n0, n1;
+    qs_v4 lx, ly, lz, bx, by, bz;
     if (two) {
         lx = v4_neg(dx);
         ly = v4_neg(dy);
@@ -172,13 +195,13 @@ QS_INLINE void lanes_rows(const qs_input *in, const qs_cbodies *cb, const dxCont
         by = v4_sub(v4_mul(dz, B0), v4_mul(dx, B2));
         bz = v4_sub(v4_mul(dx, B1), v4_mul(dy, B0));
         const qs_v4 im1 = v4_splat(cb->im1);
-        n0 = v4_mul(im1, lx);
-        n1 = v4_mul(im1, ly);
+        const qs_v4 n0 = v4_mul(im1, lx), n1 = v4_mul(im1, ly);
         const qs_v4 n2 = v4_mul(im1, lz);
         qs_v4 ib[3];
         inertia_lanes(cb->I1, bx, by, bz, ib);
         const qs_v4 n3 = ib[0], n4 = ib[1], n5 = ib[2];
-        qc_store(rows, m, J + 20 * n, n2, n3, n4, n5);
+        qc_store(rows, m, J + 18 * n, n0, n1, n2, n3);
+        qc_store2(rows, m, J + 22 * n, n4, n5);
         const qs_v4 S = v4_load(cb->R1), S2 = v4_load(cb->R1 + 2);
         rc = v4_add(v4_add(rc, v4_mul(lx, v4_spread(S, 0))),
                     v4_add(v4_mul(lz, v4_spread(S, 2)), v4_mul(by, v4_spread(S2, 2))));
@@ -187,7 +210,7 @@ QS_INLINE void lanes_rows(const qs_input *in, const qs_cbodies *cb, const dxCont
         mc = v4_add(v4_add(mc, v4_mul(lx, n0)), v4_add(v4_mul(lz, n2), v4_mul(by, n4)));
         md = v4_add(v4_add(md, v4_mul(ly, n1)), v4_add(v4_mul(bx, n3), v4_mul(bz, n5)));
     } else {
-        lx = ly = lz = bx = by = bz = n0 = n1 = v4_splat(0);
+        lx = ly = lz = bx = by = bz = v4_splat(0);
     }
     const qs_v4 rate = v4_add(v4_add(ra, rc), v4_add(rb, rd));
     const qs_v4 ms = v4_add(v4_add(ma, mc), v4_add(mb, md));
@@ -197,10 +220,10 @@ QS_INLINE void lanes_rows(const qs_input *in, const qs_cbodies *cb, const dxCont
     qc_store(rows, m, 0, v4_mul(v4_sub(v4_mul(v4_load(r->c), fps), rate), D), v4_mul(cfm, D),
              v4_load(r->lo), v4_load(r->hi));
     qc_store(rows, m, J, v4_mul(D, dx), v4_mul(D, dy), v4_mul(D, dz), v4_mul(D, ax));
-    qc_store(rows, m, J + 4 * n, v4_mul(D, ay), v4_mul(D, az), m0, m1);
+    qc_store2(rows, m, J + 4 * n, v4_mul(D, ay), v4_mul(D, az));
     if (two) {
         qc_store(rows, m, J + 12 * n, v4_mul(D, lx), v4_mul(D, ly), v4_mul(D, lz), v4_mul(D, bx));
-        qc_store(rows, m, J + 16 * n, v4_mul(D, by), v4_mul(D, bz), n0, n1);
+        qc_store2(rows, m, J + 16 * n, v4_mul(D, by), v4_mul(D, bz));
     }
 }
 
@@ -289,9 +312,13 @@ QS_INLINE qs_v4 warm_forces(const dxContactRows *r, const dReal *f, const qs_v4 
 #endif
 }
 
-// The integers of a row, from o0 to two (32 bytes: one copy of a template).
-#define QS_ROW_INTS offsetof(qs_row, o0)
-#define QS_ROW_INTS_SIZE (offsetof(qs_row, J) - offsetof(qs_row, o0))
+// A contact row's numbers from g to two (no block; one body or two), copied
+// from constant memory: a template made on the stack field by field was read
+// back in one load that spanned its stores, which waits until they reach the
+// cache.
+#define QS_ROW_TAIL offsetof(qs_row, g)
+#define QS_ROW_TAIL_SIZE (offsetof(qs_row, J) - offsetof(qs_row, g))
+static const qs_row contact_row_tail[2] = { { .g = NULL, .two = 0 }, { .g = NULL, .two = 1 } };
 
 // The rows of a contact (r: m rows, lambda positions from sys->next on)
 // appended to the system, in its order, with their bounds' f: friction rows
@@ -310,17 +337,8 @@ QS_INLINE void append_rows(const qs_input *in, const qs_cbodies *cb, const dxCon
     const qs_v4 l = f ? warm_forces(r, f, d) : v4_splat(0);
     const dReal w = in->sor_w;
     lanes_rows(in, cb, r, d, cfm, v4_make(f ? 1 : w, w, w, w), m, two, rows);
-    // The integers the rows share, copied whole into each, then its own
-    // lambda position and its bound's.
-    qs_row ints;
-    ints.o0 = cb->o0;
-    ints.o1 = cb->o1;
-    ints.pos = first;
-    ints.f = one;
-    ints.g = NULL;
-    ints.gfirst = 0;
-    ints.gn = 0;
-    ints.two = (short)two;
+    // The integers: the bodies' offsets, the row's lambda position and its
+    // bound's, and the template's rest.
     unsigned *normal = sys->normal + nrows;
     int *order = sys->order + sys->norder;
 #if defined(__GNUC__)
@@ -329,9 +347,12 @@ QS_INLINE void append_rows(const qs_input *in, const qs_cbodies *cb, const dxCon
     for (int i = 0; i < m; i++) {
         qs_row *q = &rows[i];
         const int pyramid = r->pyramid[i] != 0;
-        memcpy((char *)q + QS_ROW_INTS, (const char *)&ints + QS_ROW_INTS, QS_ROW_INTS_SIZE);
+        q->o0 = cb->o0;
+        q->o1 = cb->o1;
         q->pos = first + i;
         q->f = pyramid ? first : one;
+        memcpy((char *)q + QS_ROW_TAIL, (const char *)&contact_row_tail[two] + QS_ROW_TAIL,
+               QS_ROW_TAIL_SIZE);
         normal[i] = pyramid ? (unsigned)nrows : QS_NO_ROW;
         order[i] = nrows + i;
     }

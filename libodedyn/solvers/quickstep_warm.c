@@ -236,6 +236,7 @@ dxWarmCache *dxQuickWarmBegin(struct dxWorld *w, int ncontacts)
     c->ncur = c->ncur_pairs = 0;
     c->run = NULL;
     c->cols_of = NULL;
+    c->expect = 0;
     if (c->stamp + 1 != w->step_count) c->nold = c->nold_pairs = 0;   // not the step just before
     return c;
 }

@@ -55,6 +55,9 @@ struct dxWarmCache {
     int ncur_pairs, nold_pairs;
     warm_pair *run;                 // the current run (NULL before the first)
     const warm_pair *match;         // its pair's first old run, NULL: none
+    int expect;                     // the old run after the last one matched: a
+                                    // step's runs come in the order of the step
+                                    // before, so it is usually the next run's
     int shift;                      // where in match the run's last found contact
                                     // was, less where it is in the run (mod count)
     dReal cols[3][4];               // the columns of cols_of's b0->R
@@ -148,6 +151,18 @@ QS_INLINE dReal dist2(const dReal *a, const dReal *b)
 const warm_point *dxQuickWarmFind(const dxWarmCache *c, const warm_pair *q, const dReal *p,
                                   const dReal *n, dReal tol2);
 
+// The first old run of the pair of run `key`: the expected one if it is
+// that (the same pair, the first of its runs), else through the index. The
+// expected one is the next in an array read in order where the index's
+// slot is a line anywhere: the same answer without that wait.
+static inline const warm_pair *match_pair(dxWarmCache *c, const warm_pair *key)
+{
+    const warm_pair *x = c->expect < c->nold_pairs ? &c->old_pairs[c->expect] : NULL;
+    const warm_pair *q = x && same_pair(x, key) && x->head ? x : find_pair(c, key);
+    if (q) c->expect = (int)(q - c->old_pairs) + 1;
+    return q;
+}
+
 // Contact k of this step, of bodies b0, b1 (stored order), in its run: the
 // run goes on, or a new one starts and looks its pair up in the last step's.
 QS_INLINE int warm_enter(dxWarmCache *c, const struct dxBody *b0, const struct dxBody *b1)
@@ -163,12 +178,18 @@ QS_INLINE int warm_enter(dxWarmCache *c, const struct dxBody *b0, const struct d
     run = &c->cur_pairs[c->ncur_pairs++];
     run->b0 = b0;
     run->b1 = b1;
-    run->g0 = b0->hdr.generation;
-    run->g1 = b1 ? b1->hdr.generation : 0;
+    // The generations in one store: the pair's compare (same_pair) reads
+    // them in one load, which waits for the cache if it spans two stores.
+    // (Made in a register: the compiler turns the copies into shifts.)
+    const uint32_t g2[2] = { b0->hdr.generation, b1 ? b1->hdr.generation : 0 };
+    uint64_t g;
+    memcpy(&g, g2, sizeof g);
+    _Static_assert(offsetof(warm_pair, g1) == offsetof(warm_pair, g0) + 4, "g0, g1 together");
+    memcpy(&run->g0, &g, sizeof g);
     run->hash = pair_hash(b0, b1);
     run->first = k;
     run->count = 1;
-    c->match = find_pair(c, run);
+    c->match = match_pair(c, run);
     c->shift = 0;
     c->run = run;
     return k;
