@@ -676,6 +676,19 @@ visit_node(const dxTriMeshData *d, int i, const ray_lanes *r, const ray_planes *
     return next;
 }
 
+// dxFloatAbove(x) with the step's side taken by a mask, not a choice: at a
+// hit the side follows the data, and GCC made the choice a branch that a
+// predictor missed every other ray.
+static inline float float_above(dReal x)
+{
+    float f = (float)x;
+    int32_t bits;
+    memcpy(&bits, &f, sizeof bits);
+    bits += ((bits >> 31) | 1) & -(int32_t)(f < x);
+    memcpy(&f, &bits, sizeof f);
+    return f;
+}
+
 // A crossing of the leaf-order triangle j at dist (barycentric bu, bv):
 // kept among the nearest `max` in h if not beyond the limit, not
 // degenerate and not refused by the callbacks; once `max` are kept, the
@@ -703,7 +716,7 @@ take_hit(dxGeom *o1, dxGeom *o2, ray_hits *h, int max, int j, dReal dist, dReal 
     keep_hit(h, max, dist, ti, n);
     if (h->count == max) {
         *limit = h->raw[max - 1].depth;
-        *limit_up = dxFloatAbove(*limit);
+        *limit_up = float_above(*limit);
     }
 }
 
