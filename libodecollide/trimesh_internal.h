@@ -209,8 +209,10 @@ struct dxTriMeshData {
                                           // vertices of order[j] at 9 j (rays)
     dxTriLeafFace *leaf_faces;            // 1 per triangle in leaf order
     void *tree_block;                     // one allocation holding nodes,
-    size_t tree_block_size;               // leaf_vertices, leaf_faces and
-                                          // node_span, each at a cache line
+    size_t tree_block_size;               // node_span, leaf_vertices and
+                                          // leaf_faces, each at a cache line
+                                          // (a large one from a huge page's
+                                          // start: trimesh_tree.c)
     uint64_t tree_stamp;                  // unique per build and refit; 0: no
                                           // temporal coherence (a heightfield patch)
     unsigned char *built_flags;           // Preprocess: use flags

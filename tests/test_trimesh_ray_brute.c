@@ -10,10 +10,13 @@
 // boxes, ones along the mesh's axes (zero components in the mesh frame:
 // the mesh is turned by an exact quarter turn for them), ones running in
 // the planes of the grid's lines (grazing the triangles' boxes' sides),
-// nearly along an axis, and of length 0.
+// nearly along an axis, and of length 0. Each contact's normal must be its
+// triangle's normal reversed (into the mesh), in the world, bit for bit;
+// and rays along a degenerate triangle's line never name it.
 
 #include "test.h"
 #include "test_trimesh_meshes.h"
+#include "../libodecollide/trimesh_internal.h"
 
 #define RNG_SEED 0x9E3779B97F4A7C15ULL
 #include "xorshift.h"
@@ -156,10 +159,18 @@ static int check_ray(const test_mesh *tm, dGeomID mesh, dGeomID ray, const doubl
                       "%d hits, the loop %d", p[0], p[1], p[2], dir[0], dir[1], dir[2], n, nw);
             return 1;
         }
+        const dReal *normal = ((const dxTriMeshData *)tm->data)->normal;
         for (int i = 0; i < n; i++) {
             CHECK(c[i].side1 == want[i].tri);
             CHECK(c[i].depth == want[i].dist);
             CHECK(seen_u[want[i].tri] == want[i].u && seen_v[want[i].tri] == want[i].v);
+            // The triangle's normal turned into the world (the collider's
+            // products, in its order) and reversed.
+            const dReal *m = normal + 3 * want[i].tri;
+            dReal into[3];
+            for (int k = 0; k < 3; k++)
+                into[k] = -(R[4 * k] * m[0] + R[4 * k + 1] * m[1] + R[4 * k + 2] * m[2]);
+            CHECK(memcmp(c[i].normal, into, sizeof into) == 0);
         }
         // The ray first: the same contacts flipped, bit for bit.
         dContactGeom f[MAX_HITS];
@@ -255,8 +266,49 @@ static int test_quarter_turned_mesh(void)
     return 0;
 }
 
+// A degenerate triangle (a sliver of height 1e-14 over a side of 2: too
+// thin for a normal, so its normal is 0) beside a real one sharing its
+// first edge: rays through points of the sliver and near it, both ways
+// round and culled or not, may hit the real triangle and never name the
+// degenerate one (which the triangle test takes, culled, from above).
+static int test_degenerate_triangle(void)
+{
+    const double h = 1e-14;
+    double w[5][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 2, h, 0 }, { 0, 1, 0 }, { 1, 1, 0 } };
+    dTriIndex tris[6] = { 0, 1, 2, 0, 1, 3 };
+    dTriMeshDataID data = dGeomTriMeshDataCreate();
+    dGeomTriMeshDataBuildDouble(data, w, sizeof w[0], 5, tris, 6, 3 * sizeof(dTriIndex));
+    const dxTriMeshData *d = (const dxTriMeshData *)data;
+    CHECK(d->leaf_faces != NULL);   // the walk with the leaf copy
+    CHECK(d->normal[0] == 0 && d->normal[1] == 0 && d->normal[2] == 0);
+    dGeomID mesh = dCreateTriMesh(0, data, NULL, NULL, NULL);
+    dGeomID ray = dCreateRay(0, 4);
+    long hits = 0;
+    for (int i = 0; i < 4000; i++) {
+        const double x = rnd(-0.5, 2.5), tilt = rnd(-1, 1) * (i & 1 ? 1e-9 : 0.5);
+        const double dz = i & 2 ? 1 : -1;
+        dGeomRaySet(ray, x - tilt, -tilt, -2 * dz, tilt, tilt, dz);
+        if (i % 3 == 0) {   // straight through the sliver, between its long sides
+            const double xs = rnd(1.05, 1.95);
+            dGeomRaySet(ray, xs, h * ((xs - 1) + xs / 2) / 2, -2 * dz, 0, 0, dz);
+        }
+        dGeomRaySetBackfaceCull(ray, i >> 2 & 1);
+        dGeomRaySetClosestHit(ray, i >> 3 & 1);
+        dContactGeom c[4];
+        const int n = dCollide(mesh, ray, 4, c, sizeof c[0]);
+        for (int k = 0; k < n; k++) CHECK(c[k].side1 == 1);
+        hits += n;
+    }
+    CHECK(hits > 100);
+    dGeomDestroy(ray);
+    dGeomDestroy(mesh);
+    dGeomTriMeshDataDestroy(data);
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_turned_mesh),
     TEST_CASE(test_quarter_turned_mesh),
+    TEST_CASE(test_degenerate_triangle),
     TEST_END,
 };

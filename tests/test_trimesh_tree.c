@@ -179,12 +179,14 @@ static int check_shape(const dxTriMeshData *d)
     int next_first = 0, leaves = 0;
     // the nodes and the leaf-order vertices start at cache lines
     CHECK((uintptr_t)d->nodes % 64 == 0 && (uintptr_t)d->leaf_vertices % 64 == 0);
-    CHECK((const char *)d->leaf_vertices >=
-          (const char *)(d->nodes + d->node_count));   // one block, not overlapping
+    // one block, in order, not overlapping: nodes, spans, vertices, faces
+    CHECK((uintptr_t)d->node_span % 64 == 0 &&
+          (const char *)d->node_span >= (const char *)(d->nodes + d->node_count));
+    CHECK((const char *)d->leaf_vertices >= (const char *)(d->node_span + 2 * d->node_count));
     CHECK((uintptr_t)d->leaf_faces % 64 == 0 && sizeof *d->leaf_faces == 64 &&
           (const char *)d->leaf_faces >= (const char *)(d->leaf_vertices + 9 * d->tri_count));
-    CHECK((uintptr_t)d->node_span % 64 == 0 &&
-          (const char *)d->node_span >= (const char *)(d->leaf_faces + d->tri_count));
+    CHECK((const char *)(d->leaf_faces + d->tri_count) <=
+          (const char *)d->tree_block + d->tree_block_size);
     if (check_node(d, 0, &next_first, &leaves)) return 1;
     CHECK(next_first == d->tri_count);
     // nodes mostly full: about a third as many as leaves

@@ -519,30 +519,26 @@ static inline __attribute__((always_inline)) void prefetch_bytes(const void *p, 
     __builtin_prefetch((const char *)p + size - 1);
 }
 
-// The normals of a leaf's triangles (1 <= count <= DX_TRI_LEAF_MAX: a
-// leaf of the built tree, the only kind with a leaf copy), asked for when
-// the walk comes to the leaf: a hit reads its normal through order[], two
-// misses in turn otherwise (the loads of order[] that address them ask for
-// its line, which the parent's span has asked for already). Without a
-// loop: a triangle past the leaf's last is clamped to its last, which asks
-// for a line again (the loop's count, 3 or 4, was a branch a predictor
-// missed).
-static inline __attribute__((always_inline)) void prefetch_normals(const dxTriMeshData *d,
-                                                                   int first, int count)
+// The faces of a leaf's triangles (1 <= count <= DX_TRI_LEAF_MAX: a leaf
+// of the built tree, the only kind with a leaf copy), asked for when the
+// walk comes to the leaf: a hit reads its index and normal there, one line
+// a triangle in leaf order, addressed without order[] (through order[] the
+// normal was two misses in turn). Without a loop: a triangle past the
+// leaf's last is clamped to its last, which asks for a line again (the
+// loop's count, 3 or 4, was a branch a predictor missed).
+static inline __attribute__((always_inline)) void prefetch_faces(const dxTriMeshData *d,
+                                                                 int first, int count)
 {
-    for (int t = 0; t < DX_TRI_LEAF_MAX; t++) {
-        const dReal *n = d->normal + 3 * d->order[first + (t < count ? t : count - 1)];
-        __builtin_prefetch(n);
-        __builtin_prefetch(n + 2);
-    }
+    for (int t = 0; t < DX_TRI_LEAF_MAX; t++)
+        __builtin_prefetch(&d->leaf_faces[first + (t < count ? t : count - 1)]);
 }
 
 // A subtree of at most this many triangles (a node over four leaves) has
-// its vertices and indices asked for with its node.
+// its vertices asked for with its node.
 enum { SPAN_AHEAD = 16 };
 
-// Ask for the vertices and indices of the triangles under nodes[i] if
-// they are few (node_span), when the walk comes to the node: they arrive
+// Ask for the vertices of the triangles under nodes[i] if they are few
+// (node_span), when the walk comes to the node: they arrive
 // while the node and its leaves' nodes are read and tested (the leaves
 // under it read nothing else before a hit). The span's address needs only
 // i, so the request leaves with the node's own. `built` (a constant of
@@ -556,7 +552,6 @@ static inline __attribute__((always_inline)) void prefetch_span(const dxTriMeshD
     const int *span = d->node_span + 2 * i;
     if (span[1] > SPAN_AHEAD) return;
     prefetch_bytes(d->leaf_vertices + 9 * span[0], 9 * sizeof(dReal) * (size_t)span[1]);
-    prefetch_bytes(d->order + span[0], sizeof(int) * (size_t)span[1]);
 }
 
 // Ask for the first two lines a stacked slot's visit reads, while the
@@ -579,7 +574,7 @@ prefetch_slot(const dxTriMeshData *d, const dxTriMeshNode *node, int j, const in
 
 // The hits kept so far, nearest first: in a local array when few are
 // wanted (a ray's usual one), else in the scratch set's raw array. Only
-// depth and tri are set; a hit's normal is read at the end.
+// depth, tri and n (the triangle's normal) are set.
 typedef struct ray_hits {
     dxTriMeshRaw *raw;
     int count;
@@ -591,7 +586,7 @@ enum { RAY_LOCAL_HITS = 4 };
 
 // Keep the nearest `max` hits in h sorted by distance (then triangle):
 // insert this one at its place, the farthest dropping out when full.
-static void keep_hit(ray_hits *h, int max, dReal dist, int tri)
+static void keep_hit(ray_hits *h, int max, dReal dist, int tri, const dReal n[3])
 {
     int k = h->count;
     if (k == max) {
@@ -607,6 +602,7 @@ static void keep_hit(ray_hits *h, int max, dReal dist, int tri)
     }
     h->raw[k].depth = dist;
     h->raw[k].tri = tri;
+    for (int i = 0; i < 3; i++) h->raw[k].n[i] = n[i];
 }
 
 // A slot the walk visits: the inner node at nodes[first] (count 0) or the
@@ -680,25 +676,47 @@ visit_node(const dxTriMeshData *d, int i, const ray_lanes *r, const ray_planes *
     return next;
 }
 
+// dxFloatAbove(x) with the step's side taken by a mask, not a choice: at a
+// hit the side follows the data, and GCC made the choice a branch that a
+// predictor missed every other ray.
+static inline float float_above(dReal x)
+{
+    float f = (float)x;
+    int32_t bits;
+    memcpy(&bits, &f, sizeof bits);
+    bits += ((bits >> 31) | 1) & -(int32_t)(f < x);
+    memcpy(&f, &bits, sizeof f);
+    return f;
+}
+
 // A crossing of the leaf-order triangle j at dist (barycentric bu, bv):
 // kept among the nearest `max` in h if not beyond the limit, not
 // degenerate and not refused by the callbacks; once `max` are kept, the
-// limit (and its float above) is the farthest kept.
+// limit (and its float above) is the farthest kept. `built` as
+// prefetch_slot's.
 static inline __attribute__((always_inline)) void
 take_hit(dxGeom *o1, dxGeom *o2, ray_hits *h, int max, int j, dReal dist, dReal bu, dReal bv,
-         dReal *limit, float *limit_up)
+         const int built, dReal *limit, float *limit_up)
 {
     const dxTriMesh *m = (const dxTriMesh *)o1;
     const dxTriMeshData *d = m->data;
     if (dist > *limit) return;
-    int ti = d->order[j];
-    if (dxTriMeshIsDegenerate(d, ti)) return;
+    int ti;
+    const dReal *n;
+    if (built || d->leaf_faces) {   // the index and normal in one line, no order[] first
+        ti = d->leaf_faces[j].index;
+        n = d->leaf_faces[j].n;
+    } else {
+        ti = d->order[j];
+        n = d->normal + 3 * ti;
+    }
+    if (n[0] == 0 && n[1] == 0 && n[2] == 0) return;   // degenerate: never a hit
     if (m->ray_callback && !m->ray_callback(o1, o2, ti, bu, bv)) return;
     if (m->callback && !m->callback(o1, o2, ti)) return;
-    keep_hit(h, max, dist, ti);
+    keep_hit(h, max, dist, ti, n);
     if (h->count == max) {
         *limit = h->raw[max - 1].depth;
-        *limit_up = dxFloatAbove(*limit);
+        *limit_up = float_above(*limit);
     }
 }
 
@@ -747,7 +765,7 @@ walk(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], const ray_lanes
         // not be kept.
         const int end = first + cur.count;
         cur.count = -1;
-        if (avx2 || d->leaf_vertices) prefetch_normals(d, first, end - first);
+        if (avx2 || d->leaf_vertices) prefetch_faces(d, first, end - first);
 #if defined(DX_RAY_AVX2)
         if (avx2) {   // a leaf of the leaf copy: at most 4
             dReal dist[4], bu[4], bv[4];
@@ -755,7 +773,8 @@ walk(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], const ray_lanes
                                                  end - first, ray->backface_cull, dist, bu, bv);
             for (; crossed; crossed &= crossed - 1) {
                 const int l = __builtin_ctz(crossed);
-                take_hit(o1, o2, h, max, first + l, dist[l], bu[l], bv[l], &limit, &limit_up);
+                take_hit(o1, o2, h, max, first + l, dist[l], bu[l], bv[l], 1, &limit,
+                         &limit_up);
             }
             continue;
         }
@@ -786,7 +805,7 @@ walk(dxGeom *o1, dxGeom *o2, const dReal s[3], const dReal v[3], const ray_lanes
             }
             for (; crossed; crossed &= crossed - 1) {
                 const int l = __builtin_ctz(crossed);
-                take_hit(o1, o2, h, max, j + l, dist[l], bu[l], bv[l], &limit, &limit_up);
+                take_hit(o1, o2, h, max, j + l, dist[l], bu[l], bv[l], 0, &limit, &limit_up);
             }
         }
     }
@@ -857,7 +876,7 @@ collide_ray(dxGeom *o1, dxGeom *o2, const int ray_first, int flags, dContactGeom
         const dxTriMeshRaw *r = &hits.raw[i];
         dReal pos[3], n[3];
         for (int j = 0; j < 3; j++) pos[j] = o2->pos[j] + dir[j] * r->depth;
-        dx_to_world(o1->R, d->normal + 3 * r->tri, n);
+        dx_to_world(o1->R, r->n, n);
         if (ray_first) {
             dx_put_contact(c, i, skip, pos, n, r->depth, o2, o1);
             dxContactAt(c, i, skip)->side2 = r->tri;
