@@ -269,8 +269,19 @@ void dxQuickBatchBlocks(dxArena *a, qs_system *sys, qs_group *groups, int ngroup
             b->soa = DX_ARENA_ARRAY(a, dReal, soa_size(blk->n, forms[t], blk->two, c));
             b->ncoupled = nc[t];
             b->form = forms[t];
+            b->n = blk->n;
+            b->two = blk->two;
+            b->cpos = c > 0 ? DX_ARENA_ARRAY(a, int, 2 * QS_LANES * c) : NULL;
         }
         b->blk[i] = blk;
+        b->o0[i] = blk->o0;
+        b->o1[i] = blk->o1;
+        b->first[i] = blk->first;
+        for (int r = 0; r < c; r++) {
+            int *cpos = (int *)b->cpos + 2 * QS_LANES * r;
+            cpos[i] = sys->rows[blk->coupled + r].pos;
+            cpos[QS_LANES + i] = sys->rows[blk->coupled + r].f;
+        }
         soa_copy((dReal *)b->soa, blk, sys->rows, sys->inv_mass, i, forms[t], c);
     }
     sys->batches = out;
@@ -368,18 +379,19 @@ QS_INLINE qs_v4 ball_dot(const dReal *J, const qs_v4 *x, int two, int a)
 
 // The coupled rows of a full batch whose lanes have nc each (the block
 // part done: x its bodies' numbers, L its lambdas, by lane), side by side:
-// each lane coupled_row of quickstep_sweep.c. cs: their numbers (soa).
+// each lane coupled_row of quickstep_sweep.c. cs: their numbers (soa);
+// their lambda positions and bounds' from b->cpos.
 QS_INLINE void batch_coupled(const qs_batch *b, int n, int two, int nc, const dReal *cs,
-                             const qs_row *rows, dReal *lambda, qs_v4 *x, qs_v4 *L)
+                             dReal *lambda, qs_v4 *x, qs_v4 *L)
 {
     const int ne = two ? 12 : 6;
     for (int c = 0; c < nc; c++) {
         dReal *pos[QS_LANES];
         qs_v4 s, old;
+        const int *cpos = b->cpos + 2 * QS_LANES * c;
         for (int i = 0; i < QS_LANES; i++) {
-            const qs_row *q = rows + b->blk[i]->coupled + c;
-            pos[i] = lambda + q->pos;
-            v4_lane(s, i) = dFabs(lambda[q->f]);
+            pos[i] = lambda + cpos[i];
+            v4_lane(s, i) = dFabs(lambda[cpos[QS_LANES + i]]);
             v4_lane(old, i) = *pos[i];
         }
         const dReal *M = cs + QS_LANES * ne, *k = M + QS_LANES * ne, *g = k + 4 * QS_LANES;
@@ -404,9 +416,9 @@ QS_INLINE void batch_update(const qs_batch *b, int n, int form, int two, int nc,
 {
     dReal *f0[QS_LANES], *f1[QS_LANES], *l[QS_LANES];
     for (int i = 0; i < QS_LANES; i++) {
-        f0[i] = fc + b->blk[i]->o0;
-        f1[i] = fc + b->blk[i]->o1;
-        l[i] = lambda + b->blk[i]->first;
+        f0[i] = fc + b->o0[i];
+        f1[i] = fc + b->o1[i];
+        l[i] = lambda + b->first[i];
     }
     qs_v4 x[12], res[QS_MAX_BLOCK], L[QS_MAX_BLOCK];
     qb_gather6(f0, x);
@@ -448,7 +460,7 @@ QS_INLINE void batch_update(const qs_batch *b, int n, int form, int two, int nc,
             for (int e = 0; e < me; e++)
                 x[e] = v4_add(x[e], v4_mul(d[a], v4_load(M + QS_LANES * (a * me + e))));
     }
-    if (nc > 0) batch_coupled(b, n, two, nc, cfm + QS_LANES * n, rows, lambda, x, L);
+    if (nc > 0) batch_coupled(b, n, two, nc, cfm + QS_LANES * n, lambda, x, L);
     for (int a = 0; a < n; a++) qb_scatter(L[a], l, a);
     qb_scatter6(x, f0);
     if (two) qb_scatter6(x + 6, f1);
@@ -473,7 +485,7 @@ QS_INLINE void batch_update_c(const qs_batch *b, int n, int form, int two, const
 QS_INLINE void batch_update_f(const qs_batch *b, int n, int form, const qs_row *rows,
                               dReal *lambda, dReal *fc)
 {
-    if (b->blk[0]->two) batch_update_c(b, n, form, 1, rows, lambda, fc);
+    if (b->two) batch_update_c(b, n, form, 1, rows, lambda, fc);
     else batch_update_c(b, n, form, 0, rows, lambda, fc);
 }
 
@@ -488,7 +500,7 @@ QS_INLINE void batch_update_n(const qs_batch *b, int n, const qs_row *rows, dRea
 QS_BATCH_CLONES void dxQuickBatchUpdate(const qs_batch *b, const qs_row *rows, dReal *lambda,
                                         dReal *fc)
 {
-    switch (b->blk[0]->n) {   // constant sizes let the compiler unroll
+    switch (b->n) {   // constant sizes let the compiler unroll
     case 2: batch_update_n(b, 2, rows, lambda, fc); break;
     case 3: batch_update_n(b, 3, rows, lambda, fc); break;
     case 4: batch_update_n(b, 4, rows, lambda, fc); break;
