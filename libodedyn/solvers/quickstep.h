@@ -123,6 +123,10 @@ typedef struct qs_batch {
                         // numbers after the blocks' in soa); -1: the lanes
                         // differ, each lane's are updated on their own
     int form;           // what soa leaves out (quickstep_block_batch.c)
+    int n, two;         // (a full batch's) its blocks' size and bodies, and
+    int o0[QS_LANES], o1[QS_LANES], first[QS_LANES];   // each lane's offsets, as
+    const int *cpos;    // in blk; per coupled row side by side, each lane's
+                        // lambda position, then its bound's (f)
 } qs_batch;
 
 // A row updated on its own. With D = sor_w / A_ii and s = |lambda[f]|:

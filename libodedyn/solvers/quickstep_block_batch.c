@@ -95,84 +95,136 @@ static int block_form(const qs_block *blk)
     return SOA_BALL;
 }
 
-// Copy block blk's numbers (n rows, form, two: on two bodies, nc coupled
-// rows: constants after inlining) into lane i of a full batch's soa.
-QS_INLINE void soa_fill(dReal *soa, const qs_block *blk, const qs_row *rows,
-                        const dReal *inv_mass, int i, int n, int form, int two, int nc)
+// dst[QS_LANES k + i] = src[i][k] for k < count: count numbers of each of
+// the four lanes' sources, interleaved by lane; fours of them by 4 x 4
+// transposes, then a pair by two (a constant count unrolls it).
+QS_INLINE void lanes_copy(dReal *dst, const dReal *const src[QS_LANES], int count)
+{
+    int k = 0;
+#if defined(__GNUC__)
+    for (; k + 4 <= count; k += 4, dst += 4 * QS_LANES) {
+        qs_v4 t[4];
+        v4_transpose(v4_load(src[0] + k), v4_load(src[1] + k), v4_load(src[2] + k),
+                     v4_load(src[3] + k), t);
+        for (int e = 0; e < 4; e++) v4_store(t[e], dst + QS_LANES * e);
+    }
+    if (k + 2 <= count) {
+        const qs_v4 c02 = __builtin_shufflevector(v2_load(src[0] + k), v2_load(src[2] + k), 0, 1, 2, 3);
+        const qs_v4 c13 = __builtin_shufflevector(v2_load(src[1] + k), v2_load(src[3] + k), 0, 1, 2, 3);
+        v4_store(__builtin_shufflevector(c02, c13, 0, 4, 2, 6), dst);
+        v4_store(__builtin_shufflevector(c02, c13, 1, 5, 3, 7), dst + QS_LANES);
+        k += 2;
+        dst += 2 * QS_LANES;
+    }
+#endif
+    for (; k < count; k++, dst += QS_LANES)
+        for (int i = 0; i < QS_LANES; i++) dst[i] = src[i][k];
+}
+
+// The sources of lanes_copy: p[i] plus `at` numbers.
+QS_INLINE void lanes_at(const dReal *src[QS_LANES], const dReal *const p[QS_LANES], int at)
+{
+    for (int i = 0; i < QS_LANES; i++) src[i] = p[i] + at;
+}
+
+// Copy the numbers of the four blocks blk (n rows, form, two: on two
+// bodies, nc coupled rows: constants after inlining) into their lanes of a
+// full batch's soa, in the layout of soa_size.
+QS_INLINE void soa_fill(dReal *s, const qs_block *const blk[QS_LANES], const qs_row *rows,
+                        const dReal *inv_mass, int n, int form, int two, int nc)
 {
     const int w = QS_PAD(n), je = SOA_JE(form, two), me = SOA_ME(form, two);
     const int ne = two ? 12 : 6, e0 = form == SOA_BALL ? 3 : 0;
-    const dReal *J = (const dReal *)blk->J, *M = (const dReal *)blk->M;
-    dReal *s = soa + i;
-    for (int a = 0; a < n; a++) {   // rows of 12 numbers (quickstep.h)
-        int k = QS_LANES * a * je;
-        for (int e = e0; e < 6; e++, k += QS_LANES) s[k] = J[12 * a + e];
-        if (two)
-            for (int e = 6 + e0; e < 12; e++, k += QS_LANES) s[k] = J[12 * a + e];
+    const dReal *J[QS_LANES], *M[QS_LANES], *src[QS_LANES];
+    for (int i = 0; i < QS_LANES; i++) {
+        J[i] = (const dReal *)blk[i]->J;
+        M[i] = (const dReal *)blk[i]->M;
     }
-    s += QS_LANES * n * je;
-    for (int a = 0; a < n; a++) {
-        int k = QS_LANES * a * me;
-        for (int e = e0; e < 6; e++, k += QS_LANES) s[k] = M[12 * a + e];
-        if (two)
-            for (int e = 6 + e0; e < 12; e++, k += QS_LANES) s[k] = M[12 * a + e];
+    if (form == SOA_GENERAL && two) {   // rows of 12 numbers (quickstep.h), all kept
+        lanes_copy(s, J, 12 * n);
+        s += QS_LANES * 12 * n;
+        lanes_copy(s, M, 12 * n);
+        s += QS_LANES * 12 * n;
+    } else {
+        // A ball form's first body's three angular numbers are copied as a
+        // four (the row's next number along): the slot that fourth one fills
+        // is the second body's, the next row's or the next part's (M after
+        // J, the masses after M), copied after it.
+        const int first = form == SOA_BALL ? 4 : 6 - e0;
+        for (int m = 0; m < 2; m++) {   // J, then M
+            const dReal *const *from = m ? M : J;
+            for (int a = 0; a < n; a++, s += QS_LANES * (m ? me : je)) {
+                lanes_at(src, from, 12 * a + e0);
+                lanes_copy(s, src, first);
+                if (two) {
+                    lanes_at(src, from, 12 * a + 6 + e0);
+                    lanes_copy(s + QS_LANES * (6 - e0), src, 6 - e0);
+                }
+            }
+        }
     }
-    s += QS_LANES * n * me;
-    if (form == SOA_BALL) {
-        s[0] = inv_mass[blk->o0 / 6];
-        if (two) s[QS_LANES] = inv_mass[blk->o1 / 6];
-    }
+    if (form == SOA_BALL)
+        for (int i = 0; i < QS_LANES; i++) {
+            s[i] = inv_mass[blk[i]->o0 / 6];
+            if (two) s[QS_LANES + i] = inv_mass[blk[i]->o1 / 6];
+        }
     s += QS_LANES * SOA_MASS(form, two);
-    for (int c = 0; c < n; c++)
-        for (int a = 0; a <= c; a++) s[QS_LANES * SOA_TRI(c, a)] = blk->Ainv[c * w + a];
-    s += QS_LANES * n * (n + 1) / 2;
-    for (int a = 0; a < n; a++) {
-        s[QS_LANES * a] = blk->rhs[a];
-        s[QS_LANES * (n + a)] = blk->cfm[a];
+    for (int c = 0; c < n; c++) {   // Ainv's row c up to its diagonal
+        for (int i = 0; i < QS_LANES; i++) src[i] = blk[i]->Ainv + c * w;
+        lanes_copy(s + QS_LANES * SOA_TRI(c, 0), src, c + 1);
     }
+    s += QS_LANES * n * (n + 1) / 2;
+    for (int i = 0; i < QS_LANES; i++) src[i] = blk[i]->rhs;
+    lanes_copy(s, src, n);
+    for (int i = 0; i < QS_LANES; i++) src[i] = blk[i]->cfm;
+    lanes_copy(s + QS_LANES * n, src, n);
     s += QS_LANES * 2 * n;
     for (int c = 0; c < nc; c++) {
-        const qs_row *q = rows + blk->coupled + c;
-        const dReal *qJ0 = (const dReal *)q->J, *qJ1 = (const dReal *)q->J1;
-        const dReal *qM0 = (const dReal *)q->M, *qM1 = (const dReal *)q->M1;
-        for (int e = 0; e < ne; e++) {
-            s[QS_LANES * e] = e < 6 ? qJ0[e] : qJ1[e - 6];
-            s[QS_LANES * (ne + e)] = e < 6 ? qM0[e] : qM1[e - 6];
+        const qs_row *q[QS_LANES];
+        for (int i = 0; i < QS_LANES; i++) q[i] = rows + blk[i]->coupled + c;
+        for (int part = 0; part < 4; part++) {   // J, J1, M, M1 (6 numbers each)
+            for (int i = 0; i < QS_LANES; i++)
+                src[i] = (const dReal *)(part == 0 ? q[i]->J : part == 1 ? q[i]->J1
+                                         : part == 2 ? q[i]->M : q[i]->M1);
+            if (part == 1 || part == 3) {
+                if (two) lanes_copy(s + QS_LANES * (part == 1 ? 6 : ne + 6), src, 6);
+            } else {
+                lanes_copy(s + QS_LANES * (part == 0 ? 0 : ne), src, 6);
+            }
         }
         s += QS_LANES * 2 * ne;
-        s[0] = q->rhs;
-        s[QS_LANES] = q->cfm;
-        s[2 * QS_LANES] = q->lo;
-        s[3 * QS_LANES] = q->hi;
+        for (int i = 0; i < QS_LANES; i++) src[i] = &q[i]->rhs;   // rhs, cfm, lo, hi
+        lanes_copy(s, src, 4);
         s += 4 * QS_LANES;
-        for (int a = 0; a < n; a++) s[QS_LANES * a] = q->g[a];
+        for (int i = 0; i < QS_LANES; i++) src[i] = q[i]->g;
+        lanes_copy(s, src, n);
         s += QS_LANES * n;
     }
 }
 
-QS_INLINE void soa_fill_n(dReal *soa, const qs_block *blk, const qs_row *rows,
-                          const dReal *inv_mass, int i, int n, int form, int nc)
+QS_INLINE void soa_fill_n(dReal *soa, const qs_block *const blk[QS_LANES], const qs_row *rows,
+                          const dReal *inv_mass, int n, int form, int nc)
 {
     if (form == SOA_BALL) {
-        if (blk->two) soa_fill(soa, blk, rows, inv_mass, i, n, SOA_BALL, 1, nc);
-        else soa_fill(soa, blk, rows, inv_mass, i, n, SOA_BALL, 0, nc);
+        if (blk[0]->two) soa_fill(soa, blk, rows, inv_mass, n, SOA_BALL, 1, nc);
+        else soa_fill(soa, blk, rows, inv_mass, n, SOA_BALL, 0, nc);
     } else {
-        if (blk->two) soa_fill(soa, blk, rows, inv_mass, i, n, SOA_GENERAL, 1, nc);
-        else soa_fill(soa, blk, rows, inv_mass, i, n, SOA_GENERAL, 0, nc);
+        if (blk[0]->two) soa_fill(soa, blk, rows, inv_mass, n, SOA_GENERAL, 1, nc);
+        else soa_fill(soa, blk, rows, inv_mass, n, SOA_GENERAL, 0, nc);
     }
 }
 
-// Into lane i of soa: its block's numbers in the batch's form and nc
-// coupled rows' (nc: the batch's ncoupled, or 0 when its lanes differ).
-static void soa_copy(dReal *soa, const qs_block *blk, const qs_row *rows, const dReal *inv_mass,
-                     int i, int form, int nc)
+// Full batch b's numbers into its soa in the batch's form, with nc coupled
+// rows' (nc: the batch's ncoupled, or 0 when its lanes differ).
+QS_INLINE void soa_copy(const qs_batch *b, const qs_row *rows, const dReal *inv_mass, int nc)
 {
-    switch (blk->n) {   // constant sizes let the compiler unroll
-    case 2: soa_fill_n(soa, blk, rows, inv_mass, i, 2, form, nc); break;
-    case 3: soa_fill_n(soa, blk, rows, inv_mass, i, 3, form, nc); break;
-    case 4: soa_fill_n(soa, blk, rows, inv_mass, i, 4, form, nc); break;
-    case 5: soa_fill_n(soa, blk, rows, inv_mass, i, 5, form, nc); break;
-    default: soa_fill_n(soa, blk, rows, inv_mass, i, QS_MAX_BLOCK, form, nc); break;
+    dReal *soa = (dReal *)b->soa;
+    switch (b->n) {   // constant sizes let the compiler unroll
+    case 2: soa_fill_n(soa, b->blk, rows, inv_mass, 2, b->form, nc); break;
+    case 3: soa_fill_n(soa, b->blk, rows, inv_mass, 3, b->form, nc); break;
+    case 4: soa_fill_n(soa, b->blk, rows, inv_mass, 4, b->form, nc); break;
+    case 5: soa_fill_n(soa, b->blk, rows, inv_mass, 5, b->form, nc); break;
+    default: soa_fill_n(soa, b->blk, rows, inv_mass, QS_MAX_BLOCK, b->form, nc); break;
     }
 }
 
@@ -188,7 +240,7 @@ static int coupled_apart(const qs_block *blk, const qs_row *rows)
     return 1;
 }
 
-void dxQuickBatchBlocks(dxArena *a, qs_system *sys, qs_group *groups, int ngroups)
+QS_BATCH_CLONES void dxQuickBatchBlocks(dxArena *a, qs_system *sys, qs_group *groups, int ngroups)
 {
     sys->batches = NULL;
     sys->nbatches = 0;
@@ -269,9 +321,20 @@ void dxQuickBatchBlocks(dxArena *a, qs_system *sys, qs_group *groups, int ngroup
             b->soa = DX_ARENA_ARRAY(a, dReal, soa_size(blk->n, forms[t], blk->two, c));
             b->ncoupled = nc[t];
             b->form = forms[t];
+            b->n = blk->n;
+            b->two = blk->two;
+            b->cpos = c > 0 ? DX_ARENA_ARRAY(a, int, 2 * QS_LANES * c) : NULL;
         }
         b->blk[i] = blk;
-        soa_copy((dReal *)b->soa, blk, sys->rows, sys->inv_mass, i, forms[t], c);
+        b->o0[i] = blk->o0;
+        b->o1[i] = blk->o1;
+        b->first[i] = blk->first;
+        for (int r = 0; r < c; r++) {
+            int *cpos = (int *)b->cpos + 2 * QS_LANES * r;
+            cpos[i] = sys->rows[blk->coupled + r].pos;
+            cpos[QS_LANES + i] = sys->rows[blk->coupled + r].f;
+        }
+        if (i == QS_LANES - 1) soa_copy(b, sys->rows, sys->inv_mass, c);
     }
     sys->batches = out;
 }
@@ -368,18 +431,19 @@ QS_INLINE qs_v4 ball_dot(const dReal *J, const qs_v4 *x, int two, int a)
 
 // The coupled rows of a full batch whose lanes have nc each (the block
 // part done: x its bodies' numbers, L its lambdas, by lane), side by side:
-// each lane coupled_row of quickstep_sweep.c. cs: their numbers (soa).
+// each lane coupled_row of quickstep_sweep.c. cs: their numbers (soa);
+// their lambda positions and bounds' from b->cpos.
 QS_INLINE void batch_coupled(const qs_batch *b, int n, int two, int nc, const dReal *cs,
-                             const qs_row *rows, dReal *lambda, qs_v4 *x, qs_v4 *L)
+                             dReal *lambda, qs_v4 *x, qs_v4 *L)
 {
     const int ne = two ? 12 : 6;
     for (int c = 0; c < nc; c++) {
         dReal *pos[QS_LANES];
         qs_v4 s, old;
+        const int *cpos = b->cpos + 2 * QS_LANES * c;
         for (int i = 0; i < QS_LANES; i++) {
-            const qs_row *q = rows + b->blk[i]->coupled + c;
-            pos[i] = lambda + q->pos;
-            v4_lane(s, i) = dFabs(lambda[q->f]);
+            pos[i] = lambda + cpos[i];
+            v4_lane(s, i) = dFabs(lambda[cpos[QS_LANES + i]]);
             v4_lane(old, i) = *pos[i];
         }
         const dReal *M = cs + QS_LANES * ne, *k = M + QS_LANES * ne, *g = k + 4 * QS_LANES;
@@ -404,9 +468,9 @@ QS_INLINE void batch_update(const qs_batch *b, int n, int form, int two, int nc,
 {
     dReal *f0[QS_LANES], *f1[QS_LANES], *l[QS_LANES];
     for (int i = 0; i < QS_LANES; i++) {
-        f0[i] = fc + b->blk[i]->o0;
-        f1[i] = fc + b->blk[i]->o1;
-        l[i] = lambda + b->blk[i]->first;
+        f0[i] = fc + b->o0[i];
+        f1[i] = fc + b->o1[i];
+        l[i] = lambda + b->first[i];
     }
     qs_v4 x[12], res[QS_MAX_BLOCK], L[QS_MAX_BLOCK];
     qb_gather6(f0, x);
@@ -448,7 +512,7 @@ QS_INLINE void batch_update(const qs_batch *b, int n, int form, int two, int nc,
             for (int e = 0; e < me; e++)
                 x[e] = v4_add(x[e], v4_mul(d[a], v4_load(M + QS_LANES * (a * me + e))));
     }
-    if (nc > 0) batch_coupled(b, n, two, nc, cfm + QS_LANES * n, rows, lambda, x, L);
+    if (nc > 0) batch_coupled(b, n, two, nc, cfm + QS_LANES * n, lambda, x, L);
     for (int a = 0; a < n; a++) qb_scatter(L[a], l, a);
     qb_scatter6(x, f0);
     if (two) qb_scatter6(x + 6, f1);
@@ -473,7 +537,7 @@ QS_INLINE void batch_update_c(const qs_batch *b, int n, int form, int two, const
 QS_INLINE void batch_update_f(const qs_batch *b, int n, int form, const qs_row *rows,
                               dReal *lambda, dReal *fc)
 {
-    if (b->blk[0]->two) batch_update_c(b, n, form, 1, rows, lambda, fc);
+    if (b->two) batch_update_c(b, n, form, 1, rows, lambda, fc);
     else batch_update_c(b, n, form, 0, rows, lambda, fc);
 }
 
@@ -488,7 +552,7 @@ QS_INLINE void batch_update_n(const qs_batch *b, int n, const qs_row *rows, dRea
 QS_BATCH_CLONES void dxQuickBatchUpdate(const qs_batch *b, const qs_row *rows, dReal *lambda,
                                         dReal *fc)
 {
-    switch (b->blk[0]->n) {   // constant sizes let the compiler unroll
+    switch (b->n) {   // constant sizes let the compiler unroll
     case 2: batch_update_n(b, 2, rows, lambda, fc); break;
     case 3: batch_update_n(b, 3, rows, lambda, fc); break;
     case 4: batch_update_n(b, 4, rows, lambda, fc); break;
