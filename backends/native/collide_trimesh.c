@@ -68,13 +68,14 @@ static int finite3(const dReal p[3])
     return dxIsFinite(p[0]) && dxIsFinite(p[1]) && dxIsFinite(p[2]);
 }
 
-// Whether contact a merges into kept contact b: (nearly) the same point,
-// (nearly) the same normal.
+// Whether contact a merges into kept contact b: (nearly) the same point
+// (within the square root of tol2), (nearly) the same normal.
 static inline int same_contact(const dxTriMeshRaw *a, const dxTriMeshRaw *b, dReal tol2)
 {
     return dist2(a->pos, b->pos) <= tol2 && dx_dot(a->n, b->n) > 1 - (dReal)1e-6;
 }
 
+// same_contact with the distance tol, tested along x first.
 static int duplicates(const dxTriMeshRaw *a, const dxTriMeshRaw *b, dReal tol)
 {
     // Most pairs are apart along x alone (the square of one term of the
