@@ -24,6 +24,7 @@
 #include "quickstep_v4.h"
 #include "dx_clones.h"
 
+#include <stddef.h>
 #include <stdint.h>
 #include <string.h>
 
@@ -182,15 +183,15 @@ QS_INLINE void soa_fill(dReal *s, const qs_block *const blk[QS_LANES], const qs_
     for (int c = 0; c < nc; c++) {
         const qs_row *q[QS_LANES];
         for (int i = 0; i < QS_LANES; i++) q[i] = rows + blk[i]->coupled + c;
-        for (int part = 0; part < 4; part++) {   // J, J1, M, M1 (6 numbers each)
+        // J, J1, M, M1 (6 numbers each) to soa's J, J1, M, M1; a one-body
+        // row's J1 and M1 (zero) are left out.
+        static const size_t from[4] = { offsetof(qs_row, J), offsetof(qs_row, J1),
+                                        offsetof(qs_row, M), offsetof(qs_row, M1) };
+        const int to[4] = { 0, 6, ne, ne + 6 };
+        for (int part = 0; part < 4; part += two ? 1 : 2) {
             for (int i = 0; i < QS_LANES; i++)
-                src[i] = (const dReal *)(part == 0 ? q[i]->J : part == 1 ? q[i]->J1
-                                         : part == 2 ? q[i]->M : q[i]->M1);
-            if (part == 1 || part == 3) {
-                if (two) lanes_copy(s + QS_LANES * (part == 1 ? 6 : ne + 6), src, 6);
-            } else {
-                lanes_copy(s + QS_LANES * (part == 0 ? 0 : ne), src, 6);
-            }
+                src[i] = (const dReal *)((const char *)q[i] + from[part]);
+            lanes_copy(s + QS_LANES * to[part], src, 6);
         }
         s += QS_LANES * 2 * ne;
         for (int i = 0; i < QS_LANES; i++) src[i] = &q[i]->rhs;   // rhs, cfm, lo, hi
