@@ -39,26 +39,39 @@ static double uniform(uint32_t *s, double lo, double hi)
     return lo + (hi - lo) * (double)(lcg(s) >> 8) / (double)(1u << 24);
 }
 
+// Stops for round `stops`: lo in [-2 reach, reach), hi in [-reach, 2 reach)
+// (crossed now and then), one of them infinite in two rounds of ten.
+static void random_stops(dxLimot *lm, uint32_t *s, int stops, double reach)
+{
+    lm->lostop = (dReal)uniform(s, -2 * reach, reach);
+    lm->histop = (dReal)uniform(s, -reach, 2 * reach);
+    if (stops % 10 == 1) lm->lostop = -dInfinity;
+    if (stops % 10 == 2) lm->histop = dInfinity;
+}
+
+// dxLimotTestLimit's verdict on the exact angle (-1, 0 or 1).
+static int limit_at(const dxLimot *lm, dReal angle)
+{
+    dxLimot t = *lm;
+    t.limit = -1;
+    dxLimotTestLimit(&t, angle);
+    return t.limit;
+}
+
 static int angle_clear_agrees(void)
 {
     dxLimot lm = { 0 };
     uint32_t s = 12345;
     long cleared = 0, far = 0;
     for (int stops = 0; stops < 200; stops++) {
-        lm.lostop = (dReal)uniform(&s, -4, 2);
-        lm.histop = (dReal)uniform(&s, -2, 4);
-        if (stops % 10 == 1) lm.lostop = -dInfinity;
-        if (stops % 10 == 2) lm.histop = dInfinity;
+        random_stops(&lm, &s, stops, 2);
         for (int k = 0; k < 4000; k++) {
             const double half = -M_PI / 2 + M_PI * (k + 0.5) / 4000;   // the half angle
             const double r = uniform(&s, 0.05, 2) * (k % 2 ? -1 : 1);
             const dReal y = (dReal)(r * sin(half)), x = (dReal)(r * cos(half));
             const dReal angle = exact_angle(y, x);
             const int clear = dxLimotAngleClear(&lm, y, x);
-            dxLimot t = lm;
-            t.limit = -1;
-            dxLimotTestLimit(&t, angle);
-            if (clear) CHECK(t.limit == 0);
+            if (clear) CHECK(limit_at(&lm, angle) == 0);
             cleared += clear;
             const double need = MARGIN + 2 * ESTIMATE_ERROR + 1e-5;
             if (fabs(angle) < M_PI - need && angle > lm.lostop + need &&
@@ -99,20 +112,14 @@ static int atan2_clear_agrees(void)
     uint32_t s = 54321;
     long cleared = 0, far = 0;
     for (int stops = 0; stops < 200; stops++) {
-        lm.lostop = (dReal)uniform(&s, -2, 1);
-        lm.histop = (dReal)uniform(&s, -1, 2);
-        if (stops % 10 == 1) lm.lostop = -dInfinity;
-        if (stops % 10 == 2) lm.histop = dInfinity;
+        random_stops(&lm, &s, stops, 1);
         for (int k = 0; k < 4000; k++) {
             const double a = -M_PI + 2 * M_PI * (k + 0.5) / 4000;
             const double r = uniform(&s, 0.05, 2);
             const dReal y = (dReal)(r * sin(a)), x = (dReal)(r * cos(a));
             const dReal angle = dAtan2(y, x);
             const int clear = dxLimotAtan2Clear(&lm, y, x);
-            dxLimot t = lm;
-            t.limit = -1;
-            dxLimotTestLimit(&t, angle);
-            if (clear) CHECK(t.limit == 0);
+            if (clear) CHECK(limit_at(&lm, angle) == 0);
             if (x < 0) CHECK(!clear);
             cleared += clear;
             const double need = MARGIN + ESTIMATE_ERROR + 1e-5;
