@@ -8,7 +8,8 @@
 // space) too; the order of the pairs depends only on the geoms and their
 // boxes (a space built afresh with the same geoms in the same order calls
 // back in the same order), which is what replays and snapshots rely on; and
-// geoms changing cells every step allocate nothing once the space is warm.
+// geoms changing cells every step allocate nothing once the space is warm;
+// geoms drifting a little (keeping some of their cells) order as afresh.
 
 #include "space_pairs.h"
 #include "test.h"
@@ -417,6 +418,43 @@ static int test_box_reaching_a_third_cell_goes_a_level_up(void)
     return 0;
 }
 
+// ---- geoms drifting across cell boundaries -------------------------------------
+
+static int test_geoms_drifting_across_cells_keep_the_fresh_order(void)
+{
+    // 150 boxes of 0.3 .. 0.95 (level 0, one or two cells per axis) packed
+    // in a 4 m cube, a fifth of them nudged by up to 0.15 each step (the
+    // update moves them one by one): a box keeps the cells it stays in,
+    // leaves some, enters others, spreads from one cell to two on an axis or
+    // back. Every step: the brute-force pairs, in the order of a space made
+    // afresh, and a probe's pairs.
+    rng_state = 0x452821E638D01377u;
+    dSpaceID s = dHashSpaceCreate(0);
+    dGeomID g[150];
+    for (int i = 0; i < 150; i++) {
+        g[i] = dCreateBox(s, (dReal)rnd(0.3, 0.95), (dReal)rnd(0.3, 0.95), (dReal)rnd(0.3, 0.95));
+        number(g[i], next_number++);
+        dGeomSetPosition(g[i], (dReal)rnd(-2, 2), (dReal)rnd(-2, 2), (dReal)rnd(-2, 2));
+    }
+    dGeomID probe = dCreateSphere(0, REAL(0.7));
+    number(probe, 100000);
+    for (int step = 0; step < 120; step++) {
+        for (int m = 0; m < 30; m++) {
+            dGeomID h = g[(int)rnd(0, 150)];
+            const dReal *p = dGeomGetPosition(h);
+            dGeomSetPosition(h, p[0] + (dReal)rnd(-0.15, 0.15), p[1] + (dReal)rnd(-0.15, 0.15),
+                             p[2] + (dReal)rnd(-0.15, 0.15));
+        }
+        if (check_collide(s)) return 1;
+        if (check_order_is_fresh(s, -3, 10)) return 1;
+        dGeomSetPosition(probe, (dReal)rnd(-2, 2), (dReal)rnd(-2, 2), (dReal)rnd(-2, 2));
+        if (check_collide2(probe, s)) return 1;
+    }
+    dGeomDestroy(probe);
+    dSpaceDestroy(s);
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_random_edits_find_the_brute_force_pairs_every_step),
     TEST_CASE(test_pair_order_depends_only_on_the_geoms),
@@ -424,5 +462,6 @@ const test_case test_cases[] = {
     TEST_CASE(test_levels_changed_by_the_callback_take_effect_after_it),
     TEST_CASE(test_geom_shrinking_after_minlevel_lowered_orders_as_fresh),
     TEST_CASE(test_box_reaching_a_third_cell_goes_a_level_up),
+    TEST_CASE(test_geoms_drifting_across_cells_keep_the_fresh_order),
     TEST_END
 };
