@@ -455,6 +455,45 @@ static int test_geoms_drifting_across_cells_keep_the_fresh_order(void)
     return 0;
 }
 
+// ---- a level of one geom ----------------------------------------------------------
+
+static int test_a_level_of_one_geom_meets_the_geoms_its_box_touches(void)
+{
+    // A flat 30 x 30 x 1 box (alone at level 5, as a terrain) and 120 small
+    // spheres above, across and below its faces and around its edges and
+    // corners, moved every step; a second run with a twin of the terrain
+    // (two geoms at level 5, through the cells again). Every step: the
+    // brute-force pairs, each once, in the order of a space made afresh.
+    for (int twins = 1; twins <= 2; twins++) {
+        rng_state = 0xA4093822299F31D0u + (uint64_t)twins;
+        dSpaceID s = dHashSpaceCreate(0);
+        for (int t = 0; t < twins; t++) {
+            dGeomID terrain = dCreateBox(s, 30, 30, 1);
+            number(terrain, next_number++);
+            dGeomSetPosition(terrain, (dReal)(3 * t), 0, 0);
+        }
+        for (int i = 0; i < 120; i++) {
+            dGeomID g = dCreateSphere(s, (dReal)rnd(0.05, 0.4));
+            number(g, next_number++);
+        }
+        int touching = 0;
+        for (int step = 0; step < 40; step++) {
+            for (int i = twins; i < dSpaceGetNumGeoms(s); i++)
+                dGeomSetPosition(dSpaceGetGeom(s, i), (dReal)rnd(-16, 16), (dReal)rnd(-16, 16),
+                                 (dReal)rnd(-1.5, 1.5));
+            if (check_collide(s)) return 1;
+            if (check_order_is_fresh(s, -3, 10)) return 1;
+            pairs all = { 0 };
+            brute_pairs(s, &all);
+            touching += all.n;
+            free(all.p);
+        }
+        CHECK(touching > 40 * 40);   // not vacuous: most steps have many pairs with it
+        dSpaceDestroy(s);
+    }
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_random_edits_find_the_brute_force_pairs_every_step),
     TEST_CASE(test_pair_order_depends_only_on_the_geoms),
@@ -463,5 +502,6 @@ const test_case test_cases[] = {
     TEST_CASE(test_geom_shrinking_after_minlevel_lowered_orders_as_fresh),
     TEST_CASE(test_box_reaching_a_third_cell_goes_a_level_up),
     TEST_CASE(test_geoms_drifting_across_cells_keep_the_fresh_order),
+    TEST_CASE(test_a_level_of_one_geom_meets_the_geoms_its_box_touches),
     TEST_END
 };
