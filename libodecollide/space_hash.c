@@ -257,8 +257,8 @@ static void unplace(dxHashSpace *hs, int si)
 
 // Note in slot sl that its geom is placed in the cells lo..hi of `level`,
 // and what keeps it there.
-static void record_place(const dxHashSpace *hs, hash_slot *sl, int level, const int64_t lo[3],
-                         const int64_t hi[3])
+static inline void record_place(const dxHashSpace *hs, hash_slot *sl, int level,
+                                const int64_t lo[3], const int64_t hi[3])
 {
     sl->state = SLOT_PLACED;
     sl->level = level;

@@ -112,7 +112,8 @@ void dxHashCellsReserve(dxHashCells *hc, int slots)
 // table); its slot. Not inlined: the link's probe would then load the key
 // as the record is made, two of its coordinates at once from the caller's
 // stores still on their way (a store-forwarding stall on every link).
-static __attribute__((noinline)) int add_at(dxHashCells *hc, unsigned i, int level, const int64_t c[3])
+static __attribute__((noinline)) int add_at(dxHashCells *hc, unsigned i, int level,
+                                            const int64_t c[3])
 {
     if (2 * (hc->live + 1) > hc->mask + 1) {
         rehash(hc, hc->mask ? 2 * (hc->mask + 1) : 64);
