@@ -255,11 +255,14 @@ static void unplace(dxHashSpace *hs, int si)
     sl->n = 0;
 }
 
-// Note in slot sl that its geom is placed in the cells lo..hi of `level`,
-// and what keeps it there.
-static inline void record_place(const dxHashSpace *hs, hash_slot *sl, int level,
-                                const int64_t lo[3], const int64_t hi[3])
+// Record the geom of slot si in the cells lo..hi of `level` (at most two per
+// axis: its AABB is no longer than the cells' side); `latest`: the cells are
+// being filled in space order, so it goes first in each.
+static void place(dxHashSpace *hs, int si, int level, const int64_t lo[3], const int64_t hi[3],
+                  int latest)
 {
+    unplace(hs, si);
+    hash_slot *sl = &hs->slots[si];
     sl->state = SLOT_PLACED;
     sl->level = level;
     memcpy(sl->lo, lo, sizeof sl->lo);
@@ -270,17 +273,6 @@ static inline void record_place(const dxHashSpace *hs, hash_slot *sl, int level,
         sl->hi_d[k] = (double)hi[k];
     }
     side_bounds(hs, sl);
-}
-
-// Record the geom of slot si in the cells lo..hi of `level` (at most two per
-// axis: its AABB is no longer than the cells' side); `latest`: the cells are
-// being filled in space order, so it goes first in each.
-static void place(dxHashSpace *hs, int si, int level, const int64_t lo[3], const int64_t hi[3],
-                  int latest)
-{
-    unplace(hs, si);
-    hash_slot *sl = &hs->slots[si];
-    record_place(hs, sl, level, lo, hi);
     for (int64_t i = lo[0]; i <= hi[0]; i++)
         for (int64_t j = lo[1]; j <= hi[1]; j++)
             for (int64_t k = lo[2]; k <= hi[2]; k++) {
@@ -291,69 +283,6 @@ static void place(dxHashSpace *hs, int si, int level, const int64_t lo[3], const
                 if (latest) dxHashCellsPushFresh(&hs->cells, e, level, c);
                 else dxHashCellsLink(&hs->cells, e, level, c);
             }
-}
-
-// Cell number n of the range lo..hi (at most two cells per axis) in place's
-// order (k fastest, then j, then i): n's bits are the steps from lo, z's
-// lowest when z has two cells, then y's.
-static void range_cell(const int64_t lo[3], const int64_t hi[3], int n, int64_t c[3])
-{
-    const int two_y = (int)(hi[1] - lo[1]), two_z = (int)(hi[2] - lo[2]);   // 0 or 1
-    c[2] = lo[2] + (n & two_z);
-    n >>= two_z;
-    c[1] = lo[1] + (n & two_y);
-    c[0] = lo[0] + (n >> two_y);
-}
-
-// The number in place's order of cell c of the range lo..hi (at most two
-// cells per axis), or -1 if c is not in it.
-static int range_number(const int64_t lo[3], const int64_t hi[3], const int64_t c[3])
-{
-    for (int k = 0; k < 3; k++)
-        if (c[k] < lo[k] || c[k] > hi[k]) return -1;
-    const int two_y = (int)(hi[1] - lo[1]), two_z = (int)(hi[2] - lo[2]);
-    return (int)((c[0] - lo[0]) << (two_y + two_z) | (c[1] - lo[1]) << two_z | (c[2] - lo[2]));
-}
-
-// Move the placed geom of slot si to the cells lo..hi of its own level: the
-// entries of the cells it stays in are renumbered to their places in the new
-// range (no lookup, no cell emptied and made again), those of the cells it
-// leaves are unlinked, and only the cells it enters are looked up. The cells
-// list the same geoms in the same order as after place.
-static void shift_place(dxHashSpace *hs, int si, const int64_t lo[3], const int64_t hi[3])
-{
-    hash_slot *sl = &hs->slots[si];
-    dxHashEntry *en = hs->cells.entries;
-    const int first = si * PER_GEOM;
-    int from[PER_GEOM], to[PER_GEOM], kept = 0;
-    unsigned stays = 0;   // bit n: the new range's cell n is one the geom is in
-    for (int n = 0; n < sl->n; n++) {
-        int64_t c[3];
-        range_cell(sl->lo, sl->hi, n, c);
-        const int m = range_number(lo, hi, c);
-        if (m < 0) {
-            dxHashCellsUnlink(&hs->cells, first + n);
-            continue;
-        }
-        from[kept] = first + n;
-        to[kept++] = first + m;
-        stays |= 1u << m;
-    }
-    dxHashCellsRenumber(&hs->cells, from, to, kept);
-    record_place(hs, sl, sl->level, lo, hi);
-    sl->n = (int)cell_count(lo, hi);
-    for (int n = 0; n < sl->n; n++) {   // (every entry's g set before any link reads it)
-        int64_t c[3];
-        range_cell(lo, hi, n, c);
-        en[first + n].g = sl->g;
-        en[first + n].lowest = lowest_bits(c, lo);
-    }
-    for (int n = 0; n < sl->n; n++) {
-        if (stays >> n & 1) continue;
-        int64_t c[3];
-        range_cell(lo, hi, n, c);
-        dxHashCellsLink(&hs->cells, first + n, sl->level, c);
-    }
 }
 
 // 1 if the box b gives the placed geom of slot sl the level and cells it
@@ -437,9 +366,7 @@ static void move_to(dxHashSpace *hs, int si, const hash_place *p, int afresh)
 {
     hash_slot *sl = &hs->slots[si];
     if (afresh) sl->n = 0;   // (the cells forgot its entries)
-    if (p->placed && !afresh && sl->state == SLOT_PLACED && sl->level == p->level) {
-        shift_place(hs, si, p->lo, p->hi);
-    } else if (p->placed) {
+    if (p->placed) {
         place(hs, si, p->level, p->lo, p->hi, afresh);
     } else {
         unplace(hs, si);
@@ -448,8 +375,8 @@ static void move_to(dxHashSpace *hs, int si, const hash_place *p, int afresh)
 }
 
 // Bring the cells up to date with the geoms' boxes. Only geoms whose level
-// or cells changed are moved (an unlink per cell left and a link, a hash
-// lookup, per cell entered); when that is more than a third of them (a scene in motion), the
+// or cells changed are moved (an unlink and a link per cell: a hash lookup
+// each); when that is more than a third of them (a scene in motion), the
 // cells are emptied and every geom is linked afresh in space order instead
 // (each entry first in its cell: nothing to unlink, no list to walk).
 // Either way the cells list the same geoms in the same order. The lists of

@@ -167,26 +167,6 @@ void dxHashCellsUnlink(dxHashCells *hc, int e)
     if (hc->cells[ci].head < 0) remove_slot(hc, (unsigned)ci);
 }
 
-void dxHashCellsRenumber(dxHashCells *hc, const int *from, const int *to, int n)
-{
-    // Where each list points at from[k], and what from[k] holds, all read
-    // before any is written: a to[k] may be another from[].
-    int *at[DX_HASH_CELLS_PER_GEOM], next[DX_HASH_CELLS_PER_GEOM], cell[DX_HASH_CELLS_PER_GEOM];
-    dxHashEntry *en = hc->entries;
-    for (int k = 0; k < n; k++) {
-        int *p = &hc->cells[en[from[k]].cell].head;
-        while (*p != from[k]) p = &en[*p].next;
-        at[k] = p;   // a head or another geom's entry: one geom per cell
-        next[k] = en[from[k]].next;
-        cell[k] = en[from[k]].cell;
-    }
-    for (int k = 0; k < n; k++) {
-        *at[k] = to[k];
-        en[to[k]].next = next[k];
-        en[to[k]].cell = cell[k];
-    }
-}
-
 void dxHashCellsRestart(dxHashCells *hc, int entries)
 {
     int n = hc->mask ? hc->mask + 1 : 64;

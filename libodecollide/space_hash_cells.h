@@ -60,11 +60,6 @@ void dxHashCellsReserve(dxHashCells *hc, int slots);
 void dxHashCellsLink(dxHashCells *hc, int e, int level, const int64_t c[3]);
 // Take entry e out of its cell (freeing the cell if it empties).
 void dxHashCellsUnlink(dxHashCells *hc, int e);
-// Entries from[0 .. n) of one geom (linked, so each in a different cell)
-// become entries to[0 .. n) (which may include some of from): to[k] takes
-// from[k]'s place in its cell's list; a from that is no to is then in no
-// list. The g and lowest of each to[k] are the caller's to set.
-void dxHashCellsRenumber(dxHashCells *hc, const int *from, const int *to, int n);
 // Forget every cell, with room for `entries` entries to be pushed next
 // (dxHashCellsPushFresh) without growing anything.
 void dxHashCellsRestart(dxHashCells *hc, int entries);
