@@ -460,14 +460,17 @@ static inline __attribute__((always_inline)) void query_cell(const dxHashSpace *
 // g against the placed geoms of levels[first ..]: through the cells of each
 // level that g's AABB touches, or one by one when those cells outnumber the
 // level's geoms (a big g against small geoms). One cell never outnumbers
-// them (a level lists at least one geom).
+// them (a level lists at least one geom). A level of one geom (a terrain
+// above everything else) is tested one by one too, without its cells: the
+// cells would test the pair once if the boxes overlap (in the cell holding q)
+// and maybe not at all if not, so the callbacks are the same.
 static void query_levels(const dxHashSpace *hs, dxGeom *g, int first, void *data,
                          dNearCallback *cb)
 {
     for (int li = first; li < hs->n_levels; li++) {
         const hash_level *lv = &hs->levels[li];
         int64_t lo[3], hi[3];
-        const int inside = cell_range(g->aabb, lv->scale, lo, hi);
+        const int inside = lv->count > 1 && cell_range(g->aabb, lv->scale, lo, hi);
         if (inside && lo[0] == hi[0] && lo[1] == hi[1] && lo[2] == hi[2]) {   // the common case
             query_cell(hs, g, lv->level, lo, ALL_AXES, data, cb);
             continue;

@@ -106,20 +106,31 @@ void dxHashCellsReserve(dxHashCells *hc, int slots)
                        sizeof *hc->entries);
 }
 
-int dxHashCellsAdd(dxHashCells *hc, int level, const int64_t c[3])
+// Cell (level, c) in empty slot i, the first empty slot of its probe (the
+// slot a lookup of the cell ended at), growing the table if it would be more
+// than half full (the cell then gets the slot its probe reaches in the new
+// table); its slot. Not inlined: the link's probe would then load the key
+// as the record is made, two of its coordinates at once from the caller's
+// stores still on their way (a store-forwarding stall on every link).
+static __attribute__((noinline)) int add_at(dxHashCells *hc, unsigned i, int level,
+                                            const int64_t c[3])
 {
-    if (2 * (hc->live + 1) > hc->mask + 1) rehash(hc, hc->mask ? 2 * (hc->mask + 1) : 64);
-    const int i = empty_slot(hc, level, c);
+    if (2 * (hc->live + 1) > hc->mask + 1) {
+        rehash(hc, hc->mask ? 2 * (hc->mask + 1) : 64);
+        i = (unsigned)empty_slot(hc, level, c);
+    }
     hc->cells[i] = (dxHashCell){ { c[0], c[1], c[2] }, level, -1 };
     hc->live++;
-    note_used(hc, i);
-    return i;
+    note_used(hc, (int)i);
+    return (int)i;
 }
 
 void dxHashCellsLink(dxHashCells *hc, int e, int level, const int64_t c[3])
 {
-    int ci = dxHashCellsLookup(hc, level, c);
-    if (ci < 0) ci = dxHashCellsAdd(hc, level, c);
+    const unsigned mask = (unsigned)hc->mask;
+    unsigned i = dxHashCellBucket(level, c, hc->mask);
+    while (hc->cells[i].head >= 0 && !dxHashCellIs(&hc->cells[i], level, c)) i = (i + 1) & mask;
+    const int ci = hc->cells[i].head >= 0 ? (int)i : add_at(hc, i, level, c);
     dxHashEntry *en = hc->entries;
     const int order = en[e].g->space_index;
     int *p = &hc->cells[ci].head;

@@ -55,8 +55,6 @@ typedef struct dxHashCells {
 void dxHashCellsInit(dxHashCells *hc);
 // Room for the entries of geom slots 0 .. slots - 1.
 void dxHashCellsReserve(dxHashCells *hc, int slots);
-// A new slot for cell (level, c), known to have none, with an empty list.
-int dxHashCellsAdd(dxHashCells *hc, int level, const int64_t c[3]);
 // Record entry e (its g and lowest set) in cell (level, c), keeping the
 // cell's list in decreasing space order of the geoms.
 void dxHashCellsLink(dxHashCells *hc, int e, int level, const int64_t c[3]);

@@ -8,7 +8,8 @@
 // space) too; the order of the pairs depends only on the geoms and their
 // boxes (a space built afresh with the same geoms in the same order calls
 // back in the same order), which is what replays and snapshots rely on; and
-// geoms changing cells every step allocate nothing once the space is warm.
+// geoms changing cells every step allocate nothing once the space is warm;
+// geoms drifting a little (keeping some of their cells) order as afresh.
 
 #include "space_pairs.h"
 #include "test.h"
@@ -417,6 +418,82 @@ static int test_box_reaching_a_third_cell_goes_a_level_up(void)
     return 0;
 }
 
+// ---- geoms drifting across cell boundaries -------------------------------------
+
+static int test_geoms_drifting_across_cells_keep_the_fresh_order(void)
+{
+    // 150 boxes of 0.3 .. 0.95 (level 0, one or two cells per axis) packed
+    // in a 4 m cube, a fifth of them nudged by up to 0.15 each step (the
+    // update moves them one by one): a box keeps the cells it stays in,
+    // leaves some, enters others, spreads from one cell to two on an axis or
+    // back. Every step: the brute-force pairs, in the order of a space made
+    // afresh, and a probe's pairs.
+    rng_state = 0x452821E638D01377u;
+    dSpaceID s = dHashSpaceCreate(0);
+    dGeomID g[150];
+    for (int i = 0; i < 150; i++) {
+        g[i] = dCreateBox(s, (dReal)rnd(0.3, 0.95), (dReal)rnd(0.3, 0.95), (dReal)rnd(0.3, 0.95));
+        number(g[i], next_number++);
+        dGeomSetPosition(g[i], (dReal)rnd(-2, 2), (dReal)rnd(-2, 2), (dReal)rnd(-2, 2));
+    }
+    dGeomID probe = dCreateSphere(0, REAL(0.7));
+    number(probe, 100000);
+    for (int step = 0; step < 120; step++) {
+        for (int m = 0; m < 30; m++) {
+            dGeomID h = g[(int)rnd(0, 150)];
+            const dReal *p = dGeomGetPosition(h);
+            dGeomSetPosition(h, p[0] + (dReal)rnd(-0.15, 0.15), p[1] + (dReal)rnd(-0.15, 0.15),
+                             p[2] + (dReal)rnd(-0.15, 0.15));
+        }
+        if (check_collide(s)) return 1;
+        if (check_order_is_fresh(s, -3, 10)) return 1;
+        dGeomSetPosition(probe, (dReal)rnd(-2, 2), (dReal)rnd(-2, 2), (dReal)rnd(-2, 2));
+        if (check_collide2(probe, s)) return 1;
+    }
+    dGeomDestroy(probe);
+    dSpaceDestroy(s);
+    return 0;
+}
+
+// ---- a level of one geom ----------------------------------------------------------
+
+static int test_a_level_of_one_geom_meets_the_geoms_its_box_touches(void)
+{
+    // A flat 30 x 30 x 1 box (alone at level 5, as a terrain) and 120 small
+    // spheres above, across and below its faces and around its edges and
+    // corners, moved every step; a second run with a twin of the terrain
+    // (two geoms at level 5, through the cells again). Every step: the
+    // brute-force pairs, each once, in the order of a space made afresh.
+    for (int twins = 1; twins <= 2; twins++) {
+        rng_state = 0xA4093822299F31D0u + (uint64_t)twins;
+        dSpaceID s = dHashSpaceCreate(0);
+        for (int t = 0; t < twins; t++) {
+            dGeomID terrain = dCreateBox(s, 30, 30, 1);
+            number(terrain, next_number++);
+            dGeomSetPosition(terrain, (dReal)(3 * t), 0, 0);
+        }
+        for (int i = 0; i < 120; i++) {
+            dGeomID g = dCreateSphere(s, (dReal)rnd(0.05, 0.4));
+            number(g, next_number++);
+        }
+        int touching = 0;
+        for (int step = 0; step < 40; step++) {
+            for (int i = twins; i < dSpaceGetNumGeoms(s); i++)
+                dGeomSetPosition(dSpaceGetGeom(s, i), (dReal)rnd(-16, 16), (dReal)rnd(-16, 16),
+                                 (dReal)rnd(-1.5, 1.5));
+            if (check_collide(s)) return 1;
+            if (check_order_is_fresh(s, -3, 10)) return 1;
+            pairs all = { 0 };
+            brute_pairs(s, &all);
+            touching += all.n;
+            free(all.p);
+        }
+        CHECK(touching > 40 * 40);   // not vacuous: most steps have many pairs with it
+        dSpaceDestroy(s);
+    }
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_random_edits_find_the_brute_force_pairs_every_step),
     TEST_CASE(test_pair_order_depends_only_on_the_geoms),
@@ -424,5 +501,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_levels_changed_by_the_callback_take_effect_after_it),
     TEST_CASE(test_geom_shrinking_after_minlevel_lowered_orders_as_fresh),
     TEST_CASE(test_box_reaching_a_third_cell_goes_a_level_up),
+    TEST_CASE(test_geoms_drifting_across_cells_keep_the_fresh_order),
+    TEST_CASE(test_a_level_of_one_geom_meets_the_geoms_its_box_touches),
     TEST_END
 };
