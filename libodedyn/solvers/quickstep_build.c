@@ -644,8 +644,8 @@ int dxQuickRunJoints = 1;
 // rows and positions (pos, all set) as make_blocks and make_rows give such a
 // joint. Returns its block, or NULL (nothing done) for any other joint and
 // a singular block.
-static qs_block *run_joint(dxArena *a, const qs_input *in, const qs_jrows *jr, qs_system *sys,
-                           int *pos)
+QS_INLINE qs_block *run_joint(dxArena *a, const qs_input *in, const qs_jrows *jr,
+                              qs_system *sys, int *pos)
 {
     const int m = jr->m;
     if (m > QS_MAX_BLOCK || !dxQuickRunJoints) return NULL;
@@ -703,7 +703,7 @@ typedef struct qs_warm {
 
 // Enter a contact in the cache (for the next step) and look it up in the
 // last step's (quickstep_warm.c). Returns ws->found (0 for other joints).
-static int warm_lookup(dxJoint *j, const qs_jrows *jr, qs_system *sys, qs_warm *ws)
+QS_INLINE int warm_lookup(dxJoint *j, const qs_jrows *jr, qs_system *sys, qs_warm *ws)
 {
     ws->entry = NULL;
     ws->found = 0;
@@ -761,8 +761,8 @@ QS_INLINE void start_row(const qs_jrows *jr, int i, const qs_row *q, const qs_bl
 // WARM_SCALE and projected on the rows' bounds (the friction pyramid's with
 // the scaled normal force), the friction force projected on this step's
 // friction directions; fc gets their M^-1 J^T.
-static void warm_apply(const qs_jrows *jr, const int *pos, const qs_row *rows,
-                       const qs_block *blk, const qs_warm *ws, qs_system *sys)
+QS_INLINE void warm_apply(const qs_jrows *jr, const int *pos, const qs_row *rows,
+                          const qs_block *blk, const qs_warm *ws, qs_system *sys)
 {
     if (!ws->entry) return;
     int p[3];
@@ -787,14 +787,29 @@ static void warm_apply(const qs_jrows *jr, const int *pos, const qs_row *rows,
 
 // ---- the islands ----------------------------------------------------------------
 
-// Scratch for the build, allocated once a step: one island's joint rows
-// (the largest island's number of joints), one joint's rows' lambda
-// positions.
+// An island whose build waits in the queue (dxQuickBuild): its bodies'
+// mass data, its part of the system, its joints' rows in the scratch.
+typedef struct qs_queued {
+    const dxIsland *is;
+    const dxIslandBodies *bd;
+    qs_island *part;
+    qs_jrows *jrows;
+} qs_queued;
+
+// Scratch for the build, allocated once a step: the joint rows of the
+// queued islands (room for dxQuickBuildJoints joints, or the largest
+// island's), one joint's rows' lambda positions.
 struct qs_scratch {
     struct qs_jrows *jrows;
     int *pos;
     char *done;
-    unsigned *row;   // per row of the joint: its row in order, or QS_NO_ROW
+    unsigned *row;       // per row of the joint: its row in order, or QS_NO_ROW
+    qs_queued *queue;
+    int nqueued;         // islands queued
+    int queued_joints;   // their joints (their rows from jrows on)
+    int room;            // jrows' room, in joints
+    int next, count;     // the step's islands: how many came, how many there are
+    int phased;          // 1: islands queued and built in phases; 0: each right away
 };
 
 // Keep what the joint's feedback needs: its J and lambda positions.
@@ -841,7 +856,7 @@ static dReal *rows_piece(dxArena *a, size_t m)
 // joint); contacts that go straight to the solver's rows and equality
 // joints, whose rows go straight into their block, are only marked (their
 // rows are made in dxQuickBuild). Returns the number of equality joints.
-static int fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h, qs_jrows *jrows)
+QS_INLINE int fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h, qs_jrows *jrows)
 {
     size_t m = 0;
     int equality = 0;
@@ -886,6 +901,7 @@ void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_syst
 {
     dxArena *a = w->arena;
     int m = 0, max_m = 0, max_nj = 0, nfeedback = 0, nbodies = 0, ncontacts = 0;
+    int others = 0;   // joints other than contacts
     for (int i = 0; i < count; i++) {
         const dxIsland *is = &islands[i];
         nbodies += is->nb + 1;   // and the island's dummy
@@ -894,8 +910,12 @@ void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_syst
             dxJoint *j = is->joints[k];
             // A contact's count is fixed at its creation and kept in
             // j->rows there (joint_contact.c): no call for it.
-            if (j->cls->type == dJointTypeContact) ncontacts++;
-            else j->cls->count_rows(j, &j->rows);
+            if (j->cls->type == dJointTypeContact) {
+                ncontacts++;
+            } else {
+                j->cls->count_rows(j, &j->rows);
+                others++;
+            }
             m += j->rows.m;
             if (j->rows.m > max_m) max_m = j->rows.m;
             nfeedback += j->feedback != NULL;
@@ -919,7 +939,15 @@ void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_syst
     sys->lambda[m] = 1;
 
     qs_scratch *s = DX_ARENA_ARRAY(a, qs_scratch, 1);
-    s->jrows = DX_ARENA_ARRAY(a, qs_jrows, max_nj + 1);
+    s->room = max_nj > dxQuickBuildJoints ? max_nj : dxQuickBuildJoints;
+    s->jrows = DX_ARENA_ARRAY(a, qs_jrows, s->room + 1);
+    s->queue = DX_ARENA_ARRAY(a, qs_queued, count + 1);
+    s->nqueued = s->queued_joints = s->next = 0;
+    s->count = count;
+    // Phases pay where islands run the joints' long code paths (and each
+    // in turn did not stay in the caches: docs/perf.md); contacts alone
+    // are built right away, without the queue's own instructions.
+    s->phased = others > 0 && dxQuickBuildJoints > 0;
     s->pos = DX_ARENA_ARRAY(a, int, max_m + 1);
     s->done = DX_ARENA_ARRAY(a, char, max_m + 1);
     s->row = DX_ARENA_ARRAY(a, unsigned, max_m + 1);
@@ -945,32 +973,58 @@ QS_INLINE void prefetch_contact(const dxJoint *j)
         qs_prefetch((const char *)j + at);
 }
 
-void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *bd, dReal h,
-                  qs_system *sys, qs_island *part)
+// The islands are built in two phases over a queue of them (up to
+// dxQuickBuildJoints joints, or one larger island): every queued island's
+// joint rows and rates, then every queued island's blocks and rows appended
+// to the system, island after island in the order they came, each in its
+// joints' order (the same system as island by island). Each phase's code
+// then runs for many islands in a row: island by island, the joints' rows
+// (hinge-2's, the limit motors', the contacts'), the blocks' factors of
+// each size, the couplings and the warm start (some 70 KB of code) took
+// turns, and a vehicle of 16 cars spent about 6 % more time in its step
+// (docs/perf.md). Steps whose joints are all contacts build each island
+// right away.
+int dxQuickBuildJoints = 256;   // about 40 KB of jrows
+
+// The first phase of a queued island's build: its fc zeroed, its joints'
+// rows, its bodies' rates (after the rows: a limit motor that powers
+// against its stop adds its force to the bodies while its rows are filled,
+// joint_limot.c, and the rates must include that force), its equality
+// joints' blocks.
+QS_INLINE void island_rows(struct dxWorld *w, const qs_queued *q, dReal h, dReal fps,
+                           qs_system *sys)
+{
+    const dxIsland *is = q->is;
+    const int body0 = q->part->body0;
+    zero_numbers(sys->fc + 6 * (size_t)body0, 6 * (is->nb + 1));
+    if (is->nj == 0) return;
+    const int equality = fill_island_rows(w, is, h, q->jrows);
+    dReal *rates = sys->rates + 6 * body0;
+    dxIslandBodyRates(is, q->bd, fps, rates);
+    if (equality > 0) {
+        const qs_input in = { q->bd, rates, fps, w->erp, w->qs_w, body0, is->nb, 0 };
+        equality_island_rows(w, is, &in, q->jrows);
+        equality_factors(is, in.sor_w, q->jrows);
+    }
+}
+
+// The second phase: the island's blocks and rows appended to the system in
+// its joints' order; its part gets their ranges.
+QS_INLINE void island_joints(struct dxWorld *w, const qs_queued *q, dReal h, dReal fps,
+                             qs_system *sys)
 {
     dxArena *a = w->arena;
     qs_scratch *s = sys->scratch;
-    part->body0 = sys->nbodies;
+    const dxIsland *is = q->is;
+    qs_island *part = q->part;
     part->block0 = sys->nblocks;
     part->order0 = sys->norder;
-    sys->nbodies += is->nb + 1;
     part->nblocks = part->norder = 0;
-    zero_numbers(sys->fc + 6 * (size_t)part->body0, 6 * (is->nb + 1));
     if (is->nj == 0) return;
-    const dReal fps = dRecip(h);
-    // Every joint's rows first, the bodies' rates after: a limit motor that
-    // powers against its stop adds its force to the bodies while its rows are
-    // filled (joint_limot.c), and the rates must include that force.
-    qs_jrows *jrows = s->jrows;
-    const int equality = fill_island_rows(w, is, h, jrows);
-    dReal *rates = sys->rates + 6 * part->body0;
-    dxIslandBodyRates(is, bd, fps, rates);
-    const qs_input in = { bd, rates, fps, w->erp, w->qs_w, part->body0, is->nb, 0 };
-    const qs_input in_warm = { bd, rates, fps, w->erp, w->qs_w, part->body0, is->nb, 1 };
-    if (equality > 0) {
-        equality_island_rows(w, is, &in, jrows);
-        equality_factors(is, in.sor_w, jrows);
-    }
+    const dReal *rates = sys->rates + 6 * part->body0;
+    const qs_input in = { q->bd, rates, fps, w->erp, w->qs_w, part->body0, is->nb, 0 };
+    const qs_input in_warm = { q->bd, rates, fps, w->erp, w->qs_w, part->body0, is->nb, 1 };
+    qs_jrows *jrows = q->jrows;
     for (int k = 0; k < is->nj; k++) {
         if (k + CONTACT_AHEAD < is->nj && jrows[k + CONTACT_AHEAD].direct)
             prefetch_contact(is->joints[k + CONTACT_AHEAD]);
@@ -1016,4 +1070,37 @@ void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *b
     }
     part->nblocks = sys->nblocks - part->block0;
     part->norder = sys->norder - part->order0;
+}
+
+// The queued islands built in their order, phase by phase: every island's
+// rows, then every island's blocks and rows in the system.
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void build_queued(struct dxWorld *w, dReal h, qs_system *sys)
+{
+    qs_scratch *s = sys->scratch;
+    const dReal fps = dRecip(h);
+    for (int i = 0; i < s->nqueued; i++) island_rows(w, &s->queue[i], h, fps, sys);
+    for (int i = 0; i < s->nqueued; i++) island_joints(w, &s->queue[i], h, fps, sys);
+    s->nqueued = s->queued_joints = 0;
+}
+
+void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *bd, dReal h,
+                  qs_system *sys, qs_island *part)
+{
+    qs_scratch *s = sys->scratch;
+    part->body0 = sys->nbodies;
+    sys->nbodies += is->nb + 1;
+    if (!s->phased) {
+        const qs_queued q = { is, bd, part, s->jrows };
+        const dReal fps = dRecip(h);
+        island_rows(w, &q, h, fps, sys);
+        island_joints(w, &q, h, fps, sys);
+        return;
+    }
+    if (s->queued_joints + is->nj > s->room) build_queued(w, h, sys);
+    s->queue[s->nqueued++] = (qs_queued){ is, bd, part, s->jrows + s->queued_joints };
+    s->queued_joints += is->nj;
+    if (++s->next == s->count) build_queued(w, h, sys);
 }
