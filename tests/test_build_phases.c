@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
-// test_build_phases.c -- QuickStep builds its islands in two phases over a
-// queue of them (quickstep_build.c: every queued island's joint rows, then
+// test_build_phases.c -- QuickStep builds its islands in phases over a
+// queue of them (quickstep_build.c: every queued island's joint rows, the
+// run joints' blocks, two of the same size factored side by side, then
 // every queued island's blocks and rows), which must give the same system,
 // and so the same bits, as building island by island. A scene of many
 // islands of every kind (hinge-2 cars under random parameters, chains of
