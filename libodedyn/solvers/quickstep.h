@@ -337,8 +337,8 @@ void dxQuickBatchUpdate(const qs_batch *b, const qs_row *rows, dReal *lambda, dR
 void dxQuickCoupledRows(const qs_block *blk, const qs_row *rows, dReal *lambda, dReal *fc);
 
 // The room of dxQuickBuild's queue, in joints (the default 256); 0: each
-// island is built right away (for tests that compare the two: the same
-// results).
+// island is built right away, as in steps of contacts alone or of large
+// islands (for tests that compare the two: the same results).
 extern int dxQuickBuildJoints;
 
 // One reshuffle of an island's n rows in order (quickstep.c), for tests that

@@ -556,8 +556,8 @@ static void equality_rows(struct dxWorld *w, dxJoint *j, const qs_input *in, qs_
 }
 
 // The island's equality joints' rows (equality_rows).
-static void equality_island_rows(struct dxWorld *w, const dxIsland *is, const qs_input *in,
-                                 qs_jrows *jrows)
+QS_INLINE void equality_island_rows(struct dxWorld *w, const dxIsland *is, const qs_input *in,
+                                    qs_jrows *jrows)
 {
     for (int k = 0; k < is->nj; k++) {
         qs_jrows *jr = &jrows[k];
@@ -570,7 +570,7 @@ static void equality_island_rows(struct dxWorld *w, const dxIsland *is, const qs
 // The matrices and factors of the island's equality blocks whose rows fit,
 // one after the other with nothing else between them (jr->eq_ok: it
 // factored).
-static void equality_factors(const dxIsland *is, dReal sor_w, qs_jrows *jrows)
+QS_INLINE void equality_factors(const dxIsland *is, dReal sor_w, qs_jrows *jrows)
 {
     for (int k = 0; k < is->nj; k++) {
         qs_jrows *jr = &jrows[k];
@@ -1019,13 +1019,23 @@ static void zero_numbers(dReal *x, int n)
     for (; k < n; k++) x[k] = 0;
 }
 
+// Islands are built in phases (dxQuickBuild) when those with joints other
+// than contacts have at most this many of them on average: then each island
+// runs its joints' code paths a few times only, and island by island they
+// did not stay in the caches (a vehicle's cars: 4 hinge-2 joints each). A
+// larger island runs them many times in a row anyway, and keeps its data in
+// the cache from its rows to its blocks (ragdolls of 10 joints took 1 to 2 %
+// more time in phases; docs/perf.md).
+#define PHASED_JOINTS 6
+
 void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_system *sys)
 {
     dxArena *a = w->arena;
     int m = 0, max_m = 0, max_nj = 0, nfeedback = 0, nbodies = 0, ncontacts = 0;
-    int others = 0;   // joints other than contacts
+    int others = 0, joint_islands = 0;   // joints other than contacts, islands with them
     for (int i = 0; i < count; i++) {
         const dxIsland *is = &islands[i];
+        const int others_before = others;
         nbodies += is->nb + 1;   // and the island's dummy
         if (is->nj > max_nj) max_nj = is->nj;
         for (int k = 0; k < is->nj; k++) {
@@ -1042,6 +1052,7 @@ void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_syst
             if (j->rows.m > max_m) max_m = j->rows.m;
             nfeedback += j->feedback != NULL;
         }
+        joint_islands += others > others_before;
     }
     sys->warm = dxQuickWarmBegin(w, ncontacts);
     sys->m = m;
@@ -1066,10 +1077,9 @@ void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_syst
     s->queue = DX_ARENA_ARRAY(a, qs_queued, count + 1);
     s->nqueued = s->queued_joints = s->next = 0;
     s->count = count;
-    // Phases pay where islands run the joints' long code paths (and each
-    // in turn did not stay in the caches: docs/perf.md); contacts alone
-    // are built right away, without the queue's own instructions.
-    s->phased = others > 0 && dxQuickBuildJoints > 0;
+    // Contacts alone are built right away, without the queue's own
+    // instructions.
+    s->phased = others > 0 && others <= PHASED_JOINTS * joint_islands && dxQuickBuildJoints > 0;
     s->pos = DX_ARENA_ARRAY(a, int, max_m + 1);
     s->done = DX_ARENA_ARRAY(a, char, max_m + 1);
     s->row = DX_ARENA_ARRAY(a, unsigned, max_m + 1);
@@ -1105,8 +1115,8 @@ QS_INLINE void prefetch_contact(const dxJoint *j)
 // rows (hinge-2's, the limit motors', the contacts'), the blocks' factors
 // of each size, the couplings and the warm start (some 70 KB of code) took
 // turns, and a vehicle of 16 cars spent about 6 % more time in its step
-// (docs/perf.md). Steps whose joints are all contacts build each island
-// right away.
+// (docs/perf.md). Steps whose joints are all contacts, or whose islands
+// have many joints (PHASED_JOINTS), build each island right away.
 int dxQuickBuildJoints = 256;   // about 40 KB of jrows
 
 // The first phase of a queued island's build: its fc zeroed, its joints'
