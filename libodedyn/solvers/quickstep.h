@@ -257,7 +257,12 @@ typedef struct qs_input {
 void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_system *sys);
 
 // Fill the rows of one island's joints (prepared: bd) and append its blocks
-// and rows to the system; *part gets its ranges (seed left as it is).
+// and rows to the system; *part gets its ranges (seed left as it is). Call
+// it for each of dxQuickSetup's islands in their order: part->body0 is set
+// (and sys->nbodies moved past the island) at once, the rest may wait for
+// later calls (the islands are built in phases over a queue of them,
+// quickstep_build.c); the system is complete after the last island's call.
+// is, bd and part must stay in place until then.
 void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *bd, dReal h,
                   qs_system *sys, qs_island *part);
 
@@ -330,6 +335,11 @@ void dxQuickBatchUpdate(const qs_batch *b, const qs_row *rows, dReal *lambda, dR
 // The coupled rows of one block (quickstep_sweep.c), its bodies' fc read
 // from fc and stored back.
 void dxQuickCoupledRows(const qs_block *blk, const qs_row *rows, dReal *lambda, dReal *fc);
+
+// The room of dxQuickBuild's queue, in joints (the default 256); 0: each
+// island is built right away, as in steps of contacts alone or of large
+// islands (for tests that compare the two: the same results).
+extern int dxQuickBuildJoints;
 
 // One reshuffle of an island's n rows in order (quickstep.c), for tests that
 // compare it with the plain form (a Fisher-Yates shuffle, then a pass

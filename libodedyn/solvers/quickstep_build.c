@@ -43,6 +43,8 @@ typedef struct qs_jrows {
     // takes the generic way) and whether its matrix factored.
     qs_v2 *eq;
     int eq_fit, eq_ok;
+    // A run joint's block made ahead of its turn (blocks_ahead), or NULL.
+    struct qs_ahead *ahead;
 } qs_jrows;
 
 // The solver-order side data of jr's bodies.
@@ -284,18 +286,16 @@ QS_INLINE int factor(const qs_v2 *J, const qs_v2 *iMJ, const dReal *cfm, int n, 
     }
 }
 
-// Try to make rows idx[0..n) of a joint a block (its data from the arena,
-// its build data in *jb). Returns 0 if their matrix is singular (they are
-// then iterated one by one).
-static int fill_block(dxArena *a, const qs_input *in, const qs_jrows *jr, const int *idx, int n,
-                      qs_block *blk, qs_jblock *jb)
+// Rows idx[0..n) of a joint as a block: its J, M^-1 J^T, rhs and cfm in a
+// piece of arena (with room for its Ainv, then for the g of the rows that
+// may be coupled to it: couple_n), pointed to by blk and jb; Ainv and jb's
+// factor are left to the factor.
+QS_INLINE void block_rows(dxArena *a, const qs_input *in, const qs_jrows *jr, const int *idx,
+                          int n, qs_block *blk, qs_jblock *jb)
 {
-    const dxArenaMark mark = dxArenaSave(a);
     // Rows that follow each other, their island body first, are already
     // the block's J in the joint's rows (the pairs of a row are J1 then J2).
     const int in_place = jr->src[0] == 0 && idx[n - 1] - idx[0] == n - 1;
-    // One piece of arena: M (and J), Ainv, rhs, cfm, and the g of the rows
-    // that may be coupled to the block (couple_n).
     const size_t pairs = (size_t)(in_place ? 6 : 12) * n;
     const size_t reals = (size_t)n * (QS_PAD(n) + 2 + jr->m - n);
     qs_v2 *M = dxArenaAlloc(a, sizeof(qs_v2) * pairs + sizeof(dReal) * reals);
@@ -307,10 +307,6 @@ static int fill_block(dxArena *a, const qs_input *in, const qs_jrows *jr, const 
         const dReal rate = row_full(jr, i, in_place ? NULL : J + 6 * k, M + 6 * k);
         rhs[k] = jr->c[i] * in->fps - rate;
         cfm[k] = jr->cfm[i] * in->fps;
-    }
-    if (!factor(J, M, cfm, n, in->sor_w, jb->L, Ainv)) {
-        dxArenaRestore(a, mark);
-        return 0;
     }
     jb->n = n;
     jb->J = J;
@@ -325,6 +321,102 @@ static int fill_block(dxArena *a, const qs_input *in, const qs_jrows *jr, const 
     blk->Ainv = Ainv;
     blk->rhs = rhs;
     blk->cfm = cfm;
+}
+
+// Two blocks of the same size factored side by side (blocks_ahead): each
+// number of the two blocks' factors and inverses in one lane of a pair,
+// the same operations as factor_n's in the same order (square roots and
+// divisions are correctly rounded, lane by lane as one by one), so the same
+// numbers; two chains of dependent square roots and divisions in one, and
+// about half the instructions. Returns a bit per block (1: a, 2: b) that
+// factored; a singular block's lane goes on with numbers that are not used.
+#if defined(__GNUC__)
+typedef double qs_d2 __attribute__((vector_size(2 * sizeof(double))));
+
+QS_INLINE int factor_pair_n(const qs_block *a, const qs_block *b, int n, dReal sor_w, double *La,
+                            double *Lb)
+{
+    double Ba[QS_MAX_BLOCK * QS_MAX_BLOCK], Bb[QS_MAX_BLOCK * QS_MAX_BLOCK];
+    block_matrix(a->J, a->M, a->cfm, n, Ba);
+    block_matrix(b->J, b->M, b->cfm, n, Bb);
+    // cholesky's L, lane by lane.
+    qs_d2 L[QS_MAX_BLOCK * QS_MAX_BLOCK];
+    int ok = 3;
+    UNROLL for (int i = 0; i < n; i++) {
+        UNROLL for (int j = 0; j <= i; j++) {
+            qs_d2 s = { Ba[i * n + j], Bb[i * n + j] };
+            UNROLL for (int k = 0; k < j; k++) s -= L[i * n + k] * L[j * n + k];
+            if (i == j) {
+                ok &= (s[0] > PIVOT_EPS * Ba[i * n + i]) | (s[1] > PIVOT_EPS * Bb[i * n + i]) << 1;
+                const qs_d2 root = { sqrt(s[0]), sqrt(s[1]) };
+                L[i * n + i] = 1 / root;
+            } else {
+                L[i * n + j] = s * L[j * n + j];
+            }
+        }
+    }
+    // scaled_inverse's Linv and sor_w Linv^T Linv, lane by lane.
+    qs_d2 Linv[QS_MAX_BLOCK * QS_MAX_BLOCK];
+    UNROLL for (int j = 0; j < n; j++) {
+        Linv[j * n + j] = L[j * n + j];
+        UNROLL for (int i = j + 1; i < n; i++) {
+            qs_d2 s = { 0, 0 };
+            UNROLL for (int k = j; k < i; k++) s += L[i * n + k] * Linv[k * n + j];
+            Linv[i * n + j] = -s * L[i * n + i];
+        }
+    }
+    const int w = QS_PAD(n);
+    UNROLL for (int i = 0; i < n; i++) {
+        UNROLL for (int j = 0; j <= i; j++) {
+            qs_d2 s = { 0, 0 };
+            UNROLL for (int k = i; k < n; k++) s += Linv[k * n + i] * Linv[k * n + j];
+            const qs_d2 v = sor_w * s;
+            a->Ainv[i * w + j] = a->Ainv[j * w + i] = (dReal)v[0];
+            b->Ainv[i * w + j] = b->Ainv[j * w + i] = (dReal)v[1];
+        }
+        UNROLL for (int j = n; j < w; j++) a->Ainv[i * w + j] = b->Ainv[i * w + j] = 0;
+    }
+    UNROLL for (int i = 0; i < n; i++) {
+        UNROLL for (int j = 0; j <= i; j++) {
+            La[i * n + j] = L[i * n + j][0];
+            Lb[i * n + j] = L[i * n + j][1];
+        }
+    }
+    return ok;
+}
+
+QS_INLINE int factor_pair(const qs_block *a, const qs_block *b, int n, dReal sor_w, double *La,
+                          double *Lb)
+{
+    switch (n) {   // constant sizes let the compiler unroll
+    case 2: return factor_pair_n(a, b, 2, sor_w, La, Lb);
+    case 3: return factor_pair_n(a, b, 3, sor_w, La, Lb);
+    case 4: return factor_pair_n(a, b, 4, sor_w, La, Lb);
+    case 5: return factor_pair_n(a, b, 5, sor_w, La, Lb);
+    default: return factor_pair_n(a, b, QS_MAX_BLOCK, sor_w, La, Lb);
+    }
+}
+#else
+QS_INLINE int factor_pair(const qs_block *a, const qs_block *b, int n, dReal sor_w, double *La,
+                          double *Lb)
+{
+    return factor(a->J, a->M, a->cfm, n, sor_w, La, a->Ainv) |
+           factor(b->J, b->M, b->cfm, n, sor_w, Lb, b->Ainv) << 1;
+}
+#endif
+
+// Try to make rows idx[0..n) of a joint a block (its data from the arena,
+// its build data in *jb). Returns 0 if their matrix is singular (they are
+// then iterated one by one).
+static int fill_block(dxArena *a, const qs_input *in, const qs_jrows *jr, const int *idx, int n,
+                      qs_block *blk, qs_jblock *jb)
+{
+    const dxArenaMark mark = dxArenaSave(a);
+    block_rows(a, in, jr, idx, n, blk, jb);
+    if (!factor(blk->J, blk->M, blk->cfm, n, in->sor_w, jb->L, blk->Ainv)) {
+        dxArenaRestore(a, mark);
+        return 0;
+    }
     return 1;
 }
 
@@ -464,8 +556,8 @@ static void equality_rows(struct dxWorld *w, dxJoint *j, const qs_input *in, qs_
 }
 
 // The island's equality joints' rows (equality_rows).
-static void equality_island_rows(struct dxWorld *w, const dxIsland *is, const qs_input *in,
-                                 qs_jrows *jrows)
+QS_INLINE void equality_island_rows(struct dxWorld *w, const dxIsland *is, const qs_input *in,
+                                    qs_jrows *jrows)
 {
     for (int k = 0; k < is->nj; k++) {
         qs_jrows *jr = &jrows[k];
@@ -478,7 +570,7 @@ static void equality_island_rows(struct dxWorld *w, const dxIsland *is, const qs
 // The matrices and factors of the island's equality blocks whose rows fit,
 // one after the other with nothing else between them (jr->eq_ok: it
 // factored).
-static void equality_factors(const dxIsland *is, dReal sor_w, qs_jrows *jrows)
+QS_INLINE void equality_factors(const dxIsland *is, dReal sor_w, qs_jrows *jrows)
 {
     for (int k = 0; k < is->nj; k++) {
         qs_jrows *jr = &jrows[k];
@@ -492,7 +584,7 @@ static void equality_factors(const dxIsland *is, dReal sor_w, qs_jrows *jrows)
 
 // The block of an equality joint that factored (jr->eq_ok), appended to the
 // system with its lambda positions.
-static void equality_append(const qs_jrows *jr, qs_system *sys)
+QS_INLINE void equality_append(const qs_jrows *jr, qs_system *sys)
 {
     const int n = jr->m;
     const qs_equality_piece p = equality_piece(jr->eq, n);
@@ -635,33 +727,62 @@ static void make_rows(const qs_input *in, const qs_jrows *jr, qs_block *blk, qs_
 
 int dxQuickRunJoints = 1;
 
-// A joint of at most QS_MAX_BLOCK rows without friction indices whose
+// A run joint: at most QS_MAX_BLOCK rows without friction indices whose
 // unbounded rows are one run of two or more (hinge-2's, or a contact's two
-// infinite friction rows), made without make_blocks' and make_rows' general
-// search: its run as its block, its other rows' lambda positions after it in
-// row order, then those rows coupled to the block in row order, then those
-// that could not be coupled as free rows (no normal row): the same blocks,
-// rows and positions (pos, all set) as make_blocks and make_rows give such a
-// joint. Returns its block, or NULL (nothing done) for any other joint and
-// a singular block.
-static qs_block *run_joint(dxArena *a, const qs_input *in, const qs_jrows *jr, qs_system *sys,
-                           int *pos)
+// infinite friction rows). Returns the run's length and its first row in
+// *first, or 0 for any other joint.
+QS_INLINE int run_of(const qs_jrows *jr, int *first)
 {
     const int m = jr->m;
-    if (m > QS_MAX_BLOCK || !dxQuickRunJoints) return NULL;
-    int first = 0, n = 0, broken = 0;
+    if (m > QS_MAX_BLOCK || !dxQuickRunJoints) return 0;
+    int f = 0, n = 0, broken = 0;
     for (int i = 0; i < m; i++) {
         const int u = is_unbounded(jr, i);
-        broken |= (jr->findex[i] >= 0) | (u & (n > 0) & (first + n != i));
-        first = n ? first : i;
+        broken |= (jr->findex[i] >= 0) | (u & (n > 0) & (f + n != i));
+        f = n ? f : i;
         n += u;
     }
-    if (n < 2 || broken) return NULL;
+    if (n < 2 || broken) return 0;
+    *first = f;
+    return n;
+}
+
+// A run joint's block made ahead of its turn (blocks_ahead): its block but
+// the lambda positions and coupled rows, its build data, whether it
+// factored, its run's first row.
+typedef struct qs_ahead {
+    qs_block blk;
+    qs_jblock jb;
+    int ok, first;
+} qs_ahead;
+
+// A run joint made without make_blocks' and make_rows' general search: its
+// run as its block (made here, or ahead: jr->ahead), its other rows' lambda
+// positions after it in row order, then those rows coupled to the block in
+// row order, then those that could not be coupled as free rows (no normal
+// row): the same blocks, rows and positions (pos, all set) as make_blocks
+// and make_rows give such a joint. Returns its block, or NULL (nothing
+// done) for any other joint and a singular block.
+QS_INLINE qs_block *run_joint(dxArena *a, const qs_input *in, const qs_jrows *jr,
+                              qs_system *sys, int *pos)
+{
+    const int m = jr->m;
+    qs_block *blk = &sys->blocks[sys->nblocks];
+    qs_jblock made, *jb = &made;
+    int first = 0, n;
+    if (jr->ahead) {
+        if (!jr->ahead->ok) return NULL;
+        *blk = jr->ahead->blk;
+        jb = &jr->ahead->jb;
+        n = blk->n;
+        first = jr->ahead->first;
+    } else {
+        n = run_of(jr, &first);
+        if (n == 0) return NULL;
+    }
     int idx[QS_MAX_BLOCK];
     for (int k = 0; k < n; k++) idx[k] = first + k;
-    qs_block *blk = &sys->blocks[sys->nblocks];
-    qs_jblock jb;
-    if (!fill_block(a, in, jr, idx, n, blk, &jb)) return NULL;
+    if (!jr->ahead && !fill_block(a, in, jr, idx, n, blk, jb)) return NULL;
     add_block(sys, blk, idx, n, pos, &sys->next);
     const unsigned rest = ((1u << m) - 1) & ~(((1u << n) - 1) << first);
     int nx = sys->next;
@@ -673,7 +794,7 @@ static qs_block *run_joint(dxArena *a, const qs_input *in, const qs_jrows *jr, q
     for (int i = 0; i < m; i++) {
         if (!(rest >> i & 1)) continue;
         qs_row *q = &sys->rows[sys->nrows];
-        fill_row(in, jr, i, pos, sys->m, blk, &jb, q);
+        fill_row(in, jr, i, pos, sys->m, blk, jb, q);
         if (q->g) sys->nrows++;
         else loose |= 1u << i;
     }
@@ -703,7 +824,7 @@ typedef struct qs_warm {
 
 // Enter a contact in the cache (for the next step) and look it up in the
 // last step's (quickstep_warm.c). Returns ws->found (0 for other joints).
-static int warm_lookup(dxJoint *j, const qs_jrows *jr, qs_system *sys, qs_warm *ws)
+QS_INLINE int warm_lookup(dxJoint *j, const qs_jrows *jr, qs_system *sys, qs_warm *ws)
 {
     ws->entry = NULL;
     ws->found = 0;
@@ -761,8 +882,8 @@ QS_INLINE void start_row(const qs_jrows *jr, int i, const qs_row *q, const qs_bl
 // WARM_SCALE and projected on the rows' bounds (the friction pyramid's with
 // the scaled normal force), the friction force projected on this step's
 // friction directions; fc gets their M^-1 J^T.
-static void warm_apply(const qs_jrows *jr, const int *pos, const qs_row *rows,
-                       const qs_block *blk, const qs_warm *ws, qs_system *sys)
+QS_INLINE void warm_apply(const qs_jrows *jr, const int *pos, const qs_row *rows,
+                          const qs_block *blk, const qs_warm *ws, qs_system *sys)
 {
     if (!ws->entry) return;
     int p[3];
@@ -787,14 +908,29 @@ static void warm_apply(const qs_jrows *jr, const int *pos, const qs_row *rows,
 
 // ---- the islands ----------------------------------------------------------------
 
-// Scratch for the build, allocated once a step: one island's joint rows
-// (the largest island's number of joints), one joint's rows' lambda
-// positions.
+// An island whose build waits in the queue (dxQuickBuild): its bodies'
+// mass data, its part of the system, its joints' rows in the scratch.
+typedef struct qs_queued {
+    const dxIsland *is;
+    const dxIslandBodies *bd;
+    qs_island *part;
+    qs_jrows *jrows;
+} qs_queued;
+
+// Scratch for the build, allocated once a step: the joint rows of the
+// queued islands (room for dxQuickBuildJoints joints, or the largest
+// island's), one joint's rows' lambda positions.
 struct qs_scratch {
     struct qs_jrows *jrows;
     int *pos;
     char *done;
-    unsigned *row;   // per row of the joint: its row in order, or QS_NO_ROW
+    unsigned *row;       // per row of the joint: its row in order, or QS_NO_ROW
+    qs_queued *queue;
+    int nqueued;         // islands queued
+    int queued_joints;   // their joints (their rows from jrows on)
+    int room;            // jrows' room, in joints
+    int next, count;     // the step's islands: how many came, how many there are
+    int phased;          // 1: islands queued and built in phases; 0: each right away
 };
 
 // Keep what the joint's feedback needs: its J and lambda positions.
@@ -823,6 +959,7 @@ static void fill_joint_rows(struct dxWorld *w, dxJoint *j, dReal h, qs_jrows *jr
     jr->lo = *num + 2 * jm;
     jr->hi = *num + 3 * jm;
     jr->findex = *findex;
+    jr->ahead = NULL;
     dxJointRowsFill(w, j, h, jr->J, jr->c, jr->cfm, jr->lo, jr->hi, jr->findex, jr->b);
     *J += jm * DX_ROW_SKIP;
     *num += 4 * jm;
@@ -841,7 +978,7 @@ static dReal *rows_piece(dxArena *a, size_t m)
 // joint); contacts that go straight to the solver's rows and equality
 // joints, whose rows go straight into their block, are only marked (their
 // rows are made in dxQuickBuild). Returns the number of equality joints.
-static int fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h, qs_jrows *jrows)
+QS_INLINE int fill_island_rows(struct dxWorld *w, const dxIsland *is, dReal h, qs_jrows *jrows)
 {
     size_t m = 0;
     int equality = 0;
@@ -882,24 +1019,40 @@ static void zero_numbers(dReal *x, int n)
     for (; k < n; k++) x[k] = 0;
 }
 
+// Islands are built in phases (dxQuickBuild) when those with joints other
+// than contacts have at most this many of them on average: then each island
+// runs its joints' code paths a few times only, and island by island they
+// did not stay in the caches (a vehicle's cars: 4 hinge-2 joints each). A
+// larger island runs them many times in a row anyway, and keeps its data in
+// the cache from its rows to its blocks (ragdolls of 10 joints took 1 to 2 %
+// more time in phases; docs/perf.md).
+#define PHASED_JOINTS 6
+
 void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_system *sys)
 {
     dxArena *a = w->arena;
     int m = 0, max_m = 0, max_nj = 0, nfeedback = 0, nbodies = 0, ncontacts = 0;
+    int others = 0, joint_islands = 0;   // joints other than contacts, islands with them
     for (int i = 0; i < count; i++) {
         const dxIsland *is = &islands[i];
+        const int others_before = others;
         nbodies += is->nb + 1;   // and the island's dummy
         if (is->nj > max_nj) max_nj = is->nj;
         for (int k = 0; k < is->nj; k++) {
             dxJoint *j = is->joints[k];
             // A contact's count is fixed at its creation and kept in
             // j->rows there (joint_contact.c): no call for it.
-            if (j->cls->type == dJointTypeContact) ncontacts++;
-            else j->cls->count_rows(j, &j->rows);
+            if (j->cls->type == dJointTypeContact) {
+                ncontacts++;
+            } else {
+                j->cls->count_rows(j, &j->rows);
+                others++;
+            }
             m += j->rows.m;
             if (j->rows.m > max_m) max_m = j->rows.m;
             nfeedback += j->feedback != NULL;
         }
+        joint_islands += others > others_before;
     }
     sys->warm = dxQuickWarmBegin(w, ncontacts);
     sys->m = m;
@@ -919,7 +1072,14 @@ void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_syst
     sys->lambda[m] = 1;
 
     qs_scratch *s = DX_ARENA_ARRAY(a, qs_scratch, 1);
-    s->jrows = DX_ARENA_ARRAY(a, qs_jrows, max_nj + 1);
+    s->room = max_nj > dxQuickBuildJoints ? max_nj : dxQuickBuildJoints;
+    s->jrows = DX_ARENA_ARRAY(a, qs_jrows, s->room + 1);
+    s->queue = DX_ARENA_ARRAY(a, qs_queued, count + 1);
+    s->nqueued = s->queued_joints = s->next = 0;
+    s->count = count;
+    // Contacts alone are built right away, without the queue's own
+    // instructions.
+    s->phased = others > 0 && others <= PHASED_JOINTS * joint_islands && dxQuickBuildJoints > 0;
     s->pos = DX_ARENA_ARRAY(a, int, max_m + 1);
     s->done = DX_ARENA_ARRAY(a, char, max_m + 1);
     s->row = DX_ARENA_ARRAY(a, unsigned, max_m + 1);
@@ -945,75 +1105,205 @@ QS_INLINE void prefetch_contact(const dxJoint *j)
         qs_prefetch((const char *)j + at);
 }
 
-void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *bd, dReal h,
-                  qs_system *sys, qs_island *part)
+// The islands are built in phases over a queue of them (up to
+// dxQuickBuildJoints joints, or one larger island): every queued island's
+// joint rows and rates, then the run joints' blocks (blocks_ahead: two
+// factored side by side), then every queued island's blocks and rows
+// appended to the system, island after island in the order they came, each
+// in its joints' order (the same system as island by island). Each phase's
+// code then runs for many islands in a row: island by island, the joints'
+// rows (hinge-2's, the limit motors', the contacts'), the blocks' factors
+// of each size, the couplings and the warm start (some 70 KB of code) took
+// turns, and a vehicle of 16 cars spent about 6 % more time in its step
+// (docs/perf.md). Steps whose joints are all contacts, or whose islands
+// have many joints (PHASED_JOINTS), build each island right away.
+int dxQuickBuildJoints = 256;   // about 40 KB of jrows
+
+// The first phase of a queued island's build: its fc zeroed, its joints'
+// rows, its bodies' rates (after the rows: a limit motor that powers
+// against its stop adds its force to the bodies while its rows are filled,
+// joint_limot.c, and the rates must include that force), its equality
+// joints' blocks.
+QS_INLINE void island_rows(struct dxWorld *w, const qs_queued *q, dReal h, dReal fps,
+                           qs_system *sys)
+{
+    const dxIsland *is = q->is;
+    const int body0 = q->part->body0;
+    zero_numbers(sys->fc + 6 * (size_t)body0, 6 * (is->nb + 1));
+    if (is->nj == 0) return;
+    const int equality = fill_island_rows(w, is, h, q->jrows);
+    dReal *rates = sys->rates + 6 * body0;
+    dxIslandBodyRates(is, q->bd, fps, rates);
+    if (equality > 0) {
+        const qs_input in = { q->bd, rates, fps, w->erp, w->qs_w, body0, is->nb, 0 };
+        equality_island_rows(w, is, &in, q->jrows);
+        equality_factors(is, in.sor_w, q->jrows);
+    }
+}
+
+// An equality joint whose block factored (jr->eq_ok): its block appended
+// to the system.
+QS_INLINE void append_equality(struct dxWorld *w, dxJoint *j, const qs_jrows *jr,
+                               qs_system *sys)
+{
+    qs_scratch *s = sys->scratch;
+    const int first = sys->next;
+    zero_numbers(sys->lambda + first, jr->m);   // its lambda positions
+    equality_append(jr, sys);
+    if (j->feedback) {
+        for (int i = 0; i < jr->m; i++) s->pos[i] = first + i;
+        keep_feedback(w->arena, j, jr, s->pos, sys);
+    }
+}
+
+// Any other joint but a direct contact: its blocks and rows appended to the
+// system. (Out of line: the islands' loop over their contacts and equality
+// joints stays short.)
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void build_joint(struct dxWorld *w, dxJoint *j, qs_jrows *jr, const qs_input *in, dReal h,
+                        qs_system *sys)
 {
     dxArena *a = w->arena;
     qs_scratch *s = sys->scratch;
-    part->body0 = sys->nbodies;
+    // (equality_island_rows or blocks_ahead did)
+    if (!jr->equality && !jr->ahead) joint_sides(in, jr);
+    zero_numbers(sys->lambda + sys->next, jr->m);   // its lambda positions
+    if (jr->equality) {
+        // Not finite, not all unbounded or singular: the generic way.
+        dReal *J = rows_piece(a, (size_t)jr->m);
+        dReal *num = J + jr->m * DX_ROW_SKIP;
+        int *findex = (int *)(num + 4 * jr->m);
+        fill_joint_rows(w, j, h, jr, &J, &num, &findex);
+    }
+    qs_warm ws;
+    qs_input in_warm;
+    const qs_input *jin = in;
+    if (warm_lookup(j, jr, sys, &ws)) {
+        in_warm = *in;
+        in_warm.warm = 1;
+        jin = &in_warm;
+    }
+    const int nblocks = sys->nblocks, nrows = sys->nrows;
+    qs_block *blk = run_joint(a, jin, jr, sys, s->pos);
+    if (!blk) {
+        for (int i = 0; i < jr->m; i++) s->pos[i] = -1;
+        qs_jblock jb;
+        blk = make_blocks(a, jin, jr, sys, s->pos, &sys->next, &jb);
+        make_rows(jin, jr, blk, blk ? &jb : NULL, sys, s->pos, &sys->next, s->done, s->row);
+    }
+    if (j->feedback) keep_feedback(a, j, jr, s->pos, sys);
+    // Without blocks the joint's rows are in order and alone (not coupled).
+    const int alone = sys->nblocks == nblocks && sys->nrows - nrows == jr->m;
+    warm_apply(jr, s->pos, alone ? sys->rows + nrows : NULL, blk, &ws, sys);
+}
+
+// The second phase: the island's blocks and rows appended to the system in
+// its joints' order; its part gets their ranges.
+QS_INLINE void island_joints(struct dxWorld *w, const qs_queued *q, dReal h, dReal fps,
+                             qs_system *sys)
+{
+    const dxIsland *is = q->is;
+    qs_island *part = q->part;
     part->block0 = sys->nblocks;
     part->order0 = sys->norder;
-    sys->nbodies += is->nb + 1;
     part->nblocks = part->norder = 0;
-    zero_numbers(sys->fc + 6 * (size_t)part->body0, 6 * (is->nb + 1));
     if (is->nj == 0) return;
-    const dReal fps = dRecip(h);
-    // Every joint's rows first, the bodies' rates after: a limit motor that
-    // powers against its stop adds its force to the bodies while its rows are
-    // filled (joint_limot.c), and the rates must include that force.
-    qs_jrows *jrows = s->jrows;
-    const int equality = fill_island_rows(w, is, h, jrows);
-    dReal *rates = sys->rates + 6 * part->body0;
-    dxIslandBodyRates(is, bd, fps, rates);
-    const qs_input in = { bd, rates, fps, w->erp, w->qs_w, part->body0, is->nb, 0 };
-    const qs_input in_warm = { bd, rates, fps, w->erp, w->qs_w, part->body0, is->nb, 1 };
-    if (equality > 0) {
-        equality_island_rows(w, is, &in, jrows);
-        equality_factors(is, in.sor_w, jrows);
-    }
+    const dReal *rates = sys->rates + 6 * part->body0;
+    const qs_input in = { q->bd, rates, fps, w->erp, w->qs_w, part->body0, is->nb, 0 };
+    qs_jrows *jrows = q->jrows;
     for (int k = 0; k < is->nj; k++) {
         if (k + CONTACT_AHEAD < is->nj && jrows[k + CONTACT_AHEAD].direct)
             prefetch_contact(is->joints[k + CONTACT_AHEAD]);
         dxJoint *j = is->joints[k];
         qs_jrows *jr = &jrows[k];
         if (jr->m == 0) continue;
-        if (jr->direct) {
-            dxQuickContact(&in, j, sys);
-            continue;
-        }
-        if (!jr->equality) joint_sides(&in, jr);   // (equality_island_rows did)
-        zero_numbers(sys->lambda + sys->next, jr->m);   // its lambda positions
-        if (jr->equality) {
-            const int first = sys->next;
-            if (jr->eq_ok) {
-                equality_append(jr, sys);
-                if (j->feedback) {
-                    for (int i = 0; i < jr->m; i++) s->pos[i] = first + i;
-                    keep_feedback(a, j, jr, s->pos, sys);
-                }
-                continue;
-            }
-            // Not finite, not all unbounded or singular: the generic way.
-            dReal *J = rows_piece(a, (size_t)jr->m);
-            dReal *num = J + jr->m * DX_ROW_SKIP;
-            int *findex = (int *)(num + 4 * jr->m);
-            fill_joint_rows(w, j, h, jr, &J, &num, &findex);
-        }
-        qs_warm ws;
-        const qs_input *jin = warm_lookup(j, jr, sys, &ws) ? &in_warm : &in;
-        const int nblocks = sys->nblocks, nrows = sys->nrows;
-        qs_block *blk = run_joint(a, jin, jr, sys, s->pos);
-        if (!blk) {
-            for (int i = 0; i < jr->m; i++) s->pos[i] = -1;
-            qs_jblock jb;
-            blk = make_blocks(a, jin, jr, sys, s->pos, &sys->next, &jb);
-            make_rows(jin, jr, blk, blk ? &jb : NULL, sys, s->pos, &sys->next, s->done, s->row);
-        }
-        if (j->feedback) keep_feedback(a, j, jr, s->pos, sys);
-        // Without blocks the joint's rows are in order and alone (not coupled).
-        const int alone = sys->nblocks == nblocks && sys->nrows - nrows == jr->m;
-        warm_apply(jr, s->pos, alone ? sys->rows + nrows : NULL, blk, &ws, sys);
+        if (jr->direct) dxQuickContact(&in, j, sys);
+        else if (jr->equality && jr->eq_ok) append_equality(w, j, jr, sys);
+        else build_joint(w, j, jr, &in, h, sys);
     }
     part->nblocks = sys->nblocks - part->block0;
     part->norder = sys->norder - part->order0;
+}
+
+// The blocks of the queued islands' run joints, made ahead of their turn in
+// island_joints (which appends them), each with the next one of its size
+// factored side by side (factor_pair), the last one of a size alone. (Made
+// one by one between the joints' other work, each block's factor was a
+// chain of square roots and divisions that the next joint's waited for:
+// docs/perf.md.)
+static void blocks_ahead(struct dxWorld *w, dReal fps, qs_system *sys)
+{
+    qs_scratch *s = sys->scratch;
+    qs_ahead *ahead = DX_ARENA_ARRAY(w->arena, qs_ahead, s->queued_joints + 1);
+    qs_ahead *waiting[QS_MAX_BLOCK + 1] = { NULL };   // a block of each size without its pair
+    for (int i = 0; i < s->nqueued; i++) {
+        const qs_queued *q = &s->queue[i];
+        const dxIsland *is = q->is;
+        const int body0 = q->part->body0;
+        const qs_input in = { q->bd, sys->rates + 6 * body0, fps, w->erp, w->qs_w, body0,
+                              is->nb, 0 };
+        for (int k = 0; k < is->nj; k++) {
+            qs_jrows *jr = &q->jrows[k];
+            if (jr->m == 0 || jr->direct || jr->equality) continue;
+            joint_sides(&in, jr);
+            int first = 0;
+            const int n = run_of(jr, &first);
+            if (n == 0) continue;
+            int idx[QS_MAX_BLOCK];
+            for (int e = 0; e < n; e++) idx[e] = first + e;
+            qs_ahead *x = jr->ahead = ahead++;
+            x->first = first;
+            block_rows(w->arena, &in, jr, idx, n, &x->blk, &x->jb);
+            qs_ahead *y = waiting[n];
+            if (!y) {
+                waiting[n] = x;
+                continue;
+            }
+            const int ok = factor_pair(&y->blk, &x->blk, n, w->qs_w, y->jb.L, x->jb.L);
+            y->ok = ok & 1;
+            x->ok = ok >> 1;
+            waiting[n] = NULL;
+        }
+    }
+    for (int n = 2; n <= QS_MAX_BLOCK; n++) {
+        qs_ahead *x = waiting[n];
+        if (x) x->ok = factor(x->blk.J, x->blk.M, x->blk.cfm, n, w->qs_w, x->jb.L, x->blk.Ainv);
+    }
+}
+
+// The queued islands built in their order, phase by phase: every island's
+// rows, the run joints' blocks (blocks_ahead), then every island's blocks
+// and rows in the system.
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void build_queued(struct dxWorld *w, dReal h, qs_system *sys)
+{
+    qs_scratch *s = sys->scratch;
+    const dReal fps = dRecip(h);
+    for (int i = 0; i < s->nqueued; i++) island_rows(w, &s->queue[i], h, fps, sys);
+    blocks_ahead(w, fps, sys);
+    for (int i = 0; i < s->nqueued; i++) island_joints(w, &s->queue[i], h, fps, sys);
+    s->nqueued = s->queued_joints = 0;
+}
+
+void dxQuickBuild(struct dxWorld *w, const dxIsland *is, const dxIslandBodies *bd, dReal h,
+                  qs_system *sys, qs_island *part)
+{
+    qs_scratch *s = sys->scratch;
+    part->body0 = sys->nbodies;
+    sys->nbodies += is->nb + 1;
+    if (!s->phased) {
+        const qs_queued q = { is, bd, part, s->jrows };
+        const dReal fps = dRecip(h);
+        island_rows(w, &q, h, fps, sys);
+        island_joints(w, &q, h, fps, sys);
+        return;
+    }
+    if (s->queued_joints + is->nj > s->room) build_queued(w, h, sys);
+    s->queue[s->nqueued++] = (qs_queued){ is, bd, part, s->jrows + s->queued_joints };
+    s->queued_joints += is->nj;
+    if (++s->next == s->count) build_queued(w, h, sys);
 }
