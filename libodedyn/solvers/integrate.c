@@ -64,7 +64,9 @@ static inline void normalize_quaternion(dQuaternion q)
     q[3] = s3 / len;
 }
 
-void dxBodyIntegrate(struct dxBody *b, dReal h)
+// A body's position and quaternion moved by its velocities (the quaternion
+// not yet normalised, the rotation matrix not yet made: orient).
+static inline void advance(struct dxBody *b, dReal h)
 {
     dAddVectorScaledVector3(b->pos, b->pos, b->lvel, h);
 
@@ -88,8 +90,19 @@ void dxBodyIntegrate(struct dxBody *b, dReal h)
     } else {
         infinitesimal_rotation(b->q, b->avel, h);
     }
+}
+
+// A moved body's quaternion normalised and its rotation matrix made from it.
+static inline void orient(struct dxBody *b)
+{
     normalize_quaternion(b->q);
     dxBodyUpdateRotation(b);
+}
+
+void dxBodyIntegrate(struct dxBody *b, dReal h)
+{
+    advance(b, h);
+    orient(b);
 }
 
 // Damping (ODE 0.16): scale a velocity above its threshold by (1 - scale).
@@ -125,6 +138,13 @@ void dxBodyMove(struct dxBody *b, dReal h)
     dxBodyIntegrate(b, h);
 }
 
+void dxBodyMoveAhead(struct dxBody *b, dReal h)
+{
+    dxBodyGyroscopicEnd(b, h);
+    damp(b);
+    advance(b, h);
+}
+
 void dxIslandMove(const dxIsland *is, dReal h)
 {
     for (int i = 0; i < is->nb; i++) dxBodyMove(is->bodies[i], h);
@@ -133,6 +153,14 @@ void dxIslandMove(const dxIsland *is, dReal h)
 void dxIslandFinish(const dxIsland *is)
 {
     for (int i = 0; i < is->nb; i++) finish_body(is->bodies[i]);
+}
+
+void dxIslandRotateFinish(const dxIsland *is)
+{
+    for (int i = 0; i < is->nb; i++) {
+        orient(is->bodies[i]);
+        finish_body(is->bodies[i]);
+    }
 }
 
 void dxIslandIntegrate(const dxIsland *is, dReal h)

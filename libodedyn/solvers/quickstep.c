@@ -691,14 +691,16 @@ QS_INLINE void prefetch_finish(const struct dxBody *b)
 {
     prefetch_span(b->lvel, (size_t)((const char *)(b->torque + 3) - (const char *)b->lvel));
     qs_prefetch(b->force);
-    qs_prefetch(&b->flags);   // dxBodyMove's first read (nearly all its time)
+    qs_prefetch(&b->flags);   // dxBodyMoveAhead's first read (nearly all its time)
 }
 
 // v += h M^-1 (f + J^T lambda) for every body of the island, with fc the
 // island's M^-1 J^T lambda (without constraints, fc zero, this is
 // dxIslandUpdateVelocities to the bit); then the island's integration, each
 // body moved right after its velocity update unless the world corrects
-// positions (which needs every body of the island moved first).
+// positions (which needs every body of the island moved first); its
+// quaternion normalised and its rotation matrix made in the pass that tells
+// its geoms (dxBodyMoveAhead).
 static void finish_island(const dxIsland *is, const dxIslandBodies *bd, const dReal *fc,
                           dReal h, int correct)
 {
@@ -715,10 +717,10 @@ static void finish_island(const dxIsland *is, const dxIslandBodies *bd, const dR
         }
         dCopyVector3(body->lvel, v);
         dCopyVector3(body->avel, v + 3);
-        if (!correct) dxBodyMove(body, h);
+        if (!correct) dxBodyMoveAhead(body, h);
     }
     if (correct) dxIslandIntegrate(is, h);
-    else dxIslandFinish(is);
+    else dxIslandRotateFinish(is);
 }
 
 int dWorldQuickStep(dWorldID w, dReal stepsize)

@@ -177,6 +177,11 @@ void dxIslandMove(const dxIsland *is, dReal h);
 // One body's part of dxIslandMove: its gyroscopic ledger entry closed,
 // damping, position and orientation.
 void dxBodyMove(struct dxBody *b, dReal h);
+// dxBodyMove without the quaternion's normalisation and the rotation matrix,
+// which dxIslandRotateFinish does later: there the normalisations (two
+// divisions and a square root in a chain, each) of several bodies overlap,
+// with little other work between them (docs/perf.md, h-step17).
+void dxBodyMoveAhead(struct dxBody *b, dReal h);
 // After the move, if the world asks for position iterations: that many
 // Gauss-Seidel sweeps over the island's joints moving its bodies to remove
 // the joints' position error (position_correction.c). Touches only the
@@ -185,6 +190,9 @@ void dxIslandCorrectPositions(const dxIsland *is, dReal h);
 // After the move: the geoms' and the moved callbacks' notification (which may
 // reach shared collision data: one thread), and zeroed accumulators.
 void dxIslandFinish(const dxIsland *is);
+// After dxBodyMoveAhead of every island body: each one's quaternion
+// normalised and its rotation matrix made from it, then dxIslandFinish's part.
+void dxIslandRotateFinish(const dxIsland *is);
 // Move the enabled kinematic bodies by their velocities.
 void dxStepKinematicBodies(struct dxWorld *w, dReal h);
 
