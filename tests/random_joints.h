@@ -3,14 +3,16 @@
 // random_joints.h -- the random draws of the tests that step scenes of
 // joints under random parameters two ways and compare the bits
 // (test_run_joint.c, test_build_phases.c): a linear congruential generator
-// on a caller's state, bodies of random mass and velocities, and random
-// limits and motors for a joint's axis.
+// on a caller's state, bodies of random mass and velocities, random limits
+// and motors for a joint's axis, the ground contacts of a box's bottom
+// corners, and the bodies' states to compare.
 
 #ifndef TEST_RANDOM_JOINTS_H
 #define TEST_RANDOM_JOINTS_H
 
 #include <ode/ode.h>
 #include <stdint.h>
+#include <string.h>
 
 static inline uint32_t next_random(uint32_t *s)
 {
@@ -61,6 +63,43 @@ static inline void random_limot(uint32_t *r, dJointID j, int g,
     set(j, p + dParamStopCFM, uniform(r, 0, 0.01));
     set(j, p + dParamCFM, uniform(r, 0, 0.01));
     if (next_random(r) >> 30 == 0) set(j, p + dParamBounce, uniform(r, 0, 1));
+}
+
+// Contacts (friction mu, soft) of the bottom corners of random_body's box b
+// that are below the ground z = 0, into group g.
+static inline void ground_contacts(dWorldID w, dJointGroupID g, dBodyID b, dReal mu)
+{
+    for (int c = 0; c < 4; c++) {
+        dVector3 p;
+        dBodyGetRelPointPos(b, c & 1 ? (dReal)0.15 : (dReal)-0.15, c & 2 ? (dReal)0.1 : (dReal)-0.1,
+                            (dReal)-0.2, p);
+        if (p[2] >= 0) continue;
+        dContact ct;
+        memset(&ct, 0, sizeof ct);
+        ct.surface.mode = dContactSoftERP | dContactSoftCFM | dContactApprox1;
+        ct.surface.mu = mu;
+        ct.surface.soft_erp = (dReal)0.5;
+        ct.surface.soft_cfm = (dReal)0.001;
+        ct.geom.pos[0] = p[0];
+        ct.geom.pos[1] = p[1];
+        ct.geom.normal[2] = 1;
+        ct.geom.depth = -p[2];
+        dJointAttach(dJointCreateContact(w, g, &ct), b, 0);
+    }
+}
+
+// The positions, quaternions and velocities of bodies b[0 .. nb) into out
+// (13 numbers a body); returns the end of what was written.
+static inline dReal *body_states(const dBodyID *b, int nb, dReal *out)
+{
+    for (int k = 0; k < nb; k++) {
+        memcpy(out, dBodyGetPosition(b[k]), 3 * sizeof(dReal));
+        memcpy(out + 3, dBodyGetQuaternion(b[k]), 4 * sizeof(dReal));
+        memcpy(out + 7, dBodyGetLinearVel(b[k]), 3 * sizeof(dReal));
+        memcpy(out + 10, dBodyGetAngularVel(b[k]), 3 * sizeof(dReal));
+        out += 13;
+    }
+    return out;
 }
 
 #endif

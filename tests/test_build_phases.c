@@ -107,37 +107,14 @@ static void build(scene *s, uint32_t seed)
 static void contacts_now(scene *s)
 {
     dJointGroupEmpty(s->contacts);
-    for (int k = 0; k < s->nbox; k++) {
-        for (int c = 0; c < 4; c++) {
-            dVector3 p;
-            dBodyGetRelPointPos(s->box[k], c & 1 ? REAL(0.15) : REAL(-0.15),
-                                c & 2 ? REAL(0.1) : REAL(-0.1), REAL(-0.2), p);
-            if (p[2] >= 0) continue;
-            dContact ct;
-            memset(&ct, 0, sizeof ct);
-            ct.surface.mode = dContactSoftERP | dContactSoftCFM | dContactApprox1;
-            ct.surface.mu = k % 2 ? REAL(0.6) : dInfinity;
-            ct.surface.soft_erp = REAL(0.5);
-            ct.surface.soft_cfm = REAL(0.001);
-            ct.geom.pos[0] = p[0];
-            ct.geom.pos[1] = p[1];
-            ct.geom.normal[2] = 1;
-            ct.geom.depth = -p[2];
-            dJointAttach(dJointCreateContact(s->w, s->contacts, &ct), s->box[k], 0);
-        }
-    }
+    for (int k = 0; k < s->nbox; k++)
+        ground_contacts(s->w, s->contacts, s->box[k], k % 2 ? REAL(0.6) : dInfinity);
 }
 
 // The bodies' positions, orientations and velocities, then the feedback.
 static void state_of(const scene *s, dReal *out)
 {
-    for (int k = 0; k < s->nb; k++) {
-        memcpy(out, dBodyGetPosition(s->b[k]), 3 * sizeof(dReal));
-        memcpy(out + 3, dBodyGetQuaternion(s->b[k]), 4 * sizeof(dReal));
-        memcpy(out + 7, dBodyGetLinearVel(s->b[k]), 3 * sizeof(dReal));
-        memcpy(out + 10, dBodyGetAngularVel(s->b[k]), 3 * sizeof(dReal));
-        out += 13;
-    }
+    out = body_states(s->b, s->nb, out);
     memcpy(out, s->fb.f1, 3 * sizeof(dReal));
     memcpy(out + 3, s->fb.t2, 3 * sizeof(dReal));
 }

@@ -112,36 +112,7 @@ static void build_boxes(scene *s, uint32_t seed)
 static void contacts_now(scene *s)
 {
     dJointGroupEmpty(s->contacts);
-    for (int k = 0; k < s->nb; k++) {
-        for (int c = 0; c < 4; c++) {
-            dVector3 p;
-            dBodyGetRelPointPos(s->b[k], c & 1 ? REAL(0.15) : REAL(-0.15),
-                                c & 2 ? REAL(0.1) : REAL(-0.1), REAL(-0.2), p);
-            if (p[2] >= 0) continue;
-            dContact ct;
-            memset(&ct, 0, sizeof ct);
-            ct.surface.mode = dContactSoftERP | dContactSoftCFM | dContactApprox1;
-            ct.surface.mu = dInfinity;
-            ct.surface.soft_erp = REAL(0.5);
-            ct.surface.soft_cfm = REAL(0.001);
-            ct.geom.pos[0] = p[0];
-            ct.geom.pos[1] = p[1];
-            ct.geom.normal[2] = 1;
-            ct.geom.depth = -p[2];
-            dJointAttach(dJointCreateContact(s->w, s->contacts, &ct), s->b[k], 0);
-        }
-    }
-}
-
-static void state_of(const scene *s, dReal *out)
-{
-    for (int k = 0; k < s->nb; k++) {
-        memcpy(out, dBodyGetPosition(s->b[k]), 3 * sizeof(dReal));
-        memcpy(out + 3, dBodyGetQuaternion(s->b[k]), 4 * sizeof(dReal));
-        memcpy(out + 7, dBodyGetLinearVel(s->b[k]), 3 * sizeof(dReal));
-        memcpy(out + 10, dBodyGetAngularVel(s->b[k]), 3 * sizeof(dReal));
-        out += 13;
-    }
+    for (int k = 0; k < s->nb; k++) ground_contacts(s->w, s->contacts, s->b[k], dInfinity);
 }
 
 // Steps the scene built by build(seed) with run joints on and off; 0 if
@@ -163,7 +134,7 @@ static int same_either_way(void (*build)(scene *, uint32_t), uint32_t seed, int 
             dxQuickRunJoints = k == 0;
             dWorldQuickStep(s[k].w, REAL(0.01));
             dxQuickRunJoints = 1;
-            state_of(&s[k], x[k]);
+            body_states(s[k].b, s[k].nb, x[k]);
         }
         if (memcmp(x[0], x[1], (size_t)13 * s[0].nb * sizeof(dReal)) != 0) differ = n;
     }
