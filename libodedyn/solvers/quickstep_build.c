@@ -605,6 +605,21 @@ QS_INLINE void equality_append(const qs_jrows *jr, qs_system *sys)
 
 // ---- rows --------------------------------------------------------------------
 
+// A coupled row's response to its block (build data jb, n its size), from
+// its solve t = B^-1 c: g = -t into the block's room, and iMJ gains
+// M^-1 J_B^T g. Returns g.
+QS_INLINE const dReal *block_response(qs_jblock *jb, int n, const double *t, qs_v2 *iMJ)
+{
+    dReal *g = jb->g;
+    jb->g += n;
+    UNROLL for (int k = 0; k < n; k++) {
+        g[k] = (dReal)-t[k];
+        const qs_v2 gk = qs_splat(g[k]);
+        UNROLL for (int e = 0; e < 6; e++) iMJ[e] = qs_add(iMJ[e], qs_mul(gk, jb->iMJ[6 * k + e]));
+    }
+    return g;
+}
+
 // Couple a row (J, iMJ, diagonal *diag) to the block of its joint (build
 // data jb, n its size: a constant after inlining): with the block's matrix B
 // and its column c = J_B M^-1 J^T, g = -B^-1 c, the diagonal becomes the
@@ -618,15 +633,8 @@ QS_INLINE const dReal *couple_n(qs_jblock *jb, int n, qs_v2 *iMJ, double *diag)
     double schur = *diag;
     UNROLL for (int k = 0; k < n; k++) schur -= c[k] * t[k];
     if (!(schur > PIVOT_EPS * *diag)) return NULL;
-    dReal *g = jb->g;
-    jb->g += n;
-    UNROLL for (int k = 0; k < n; k++) {
-        g[k] = (dReal)-t[k];
-        const qs_v2 gk = qs_splat(g[k]);
-        UNROLL for (int e = 0; e < 6; e++) iMJ[e] = qs_add(iMJ[e], qs_mul(gk, jb->iMJ[6 * k + e]));
-    }
     *diag = schur;
-    return g;
+    return block_response(jb, n, t, iMJ);
 }
 
 static const dReal *couple_to_block(qs_jblock *jb, qs_v2 *iMJ, double *diag)
@@ -640,28 +648,28 @@ static const dReal *couple_to_block(qs_jblock *jb, qs_v2 *iMJ, double *diag)
     }
 }
 
-// Row i of the joint (lambda positions of the joint's rows in pos, the
-// constant 1 at position one): D J and M^-1 J^T as pairs, the scaled rhs and
-// cfm, the bounds. blk, jb: the joint's block to couple to and its build
-// data, or NULL.
-static void fill_row(const qs_input *in, const qs_jrows *jr, int i, const int *pos, int one,
-                     const qs_block *blk, qs_jblock *jb, qs_row *q)
+// A row's diagonal J M^-1 J^T + cfm/h (Jp, Mp: its J and M^-1 J^T); in
+// double when it is to be coupled to a block (coupling) and positive.
+QS_INLINE double row_diag(const qs_v2 *Jp, const qs_v2 *Mp, dReal cfm, int coupling)
 {
-    qs_v2 Jp[6], Mp[6];
-    const dReal rate = row_full(jr, i, Jp, Mp), cfm = jr->cfm[i] * in->fps;
 #ifdef dSINGLE
     double diag = (double)pair_dot(Jp, Mp) + cfm;
-    if (jb && diag > 0) diag = dot12(Jp, Mp) + cfm;   // in double
+    if (coupling && diag > 0) diag = dot12(Jp, Mp) + cfm;   // in double
+    return diag;
 #else
-    double diag = pair_dot(Jp, Mp) + cfm;   // dot12 is pair_dot
+    (void)coupling;   // dot12 is pair_dot
+    return pair_dot(Jp, Mp) + cfm;
 #endif
-    q->g = NULL;
-    if (jb && diag > 0) q->g = couple_to_block(jb, Mp, &diag);
-    q->gn = (short)(q->g ? blk->n : 0);
-    q->gfirst = q->g ? blk->first : 0;
-    // A zero diagonal (an empty row without cfm) leaves the row's force at 0.
-    const dReal sor_w = in->warm && i == 0 ? 1 : in->sor_w;
-    const dReal D = diag > 0 ? (dReal)(sor_w / diag) : 0;
+}
+
+// Row i of the joint once its J and M^-1 J^T (Jp, Mp, as pairs), J times
+// the rates, cfm/h and its scale D are known (lambda positions of the
+// joint's rows in pos, the constant 1 at position one): all of q but its
+// coupling (g, gn, gfirst).
+QS_INLINE void row_out(const qs_input *in, const qs_jrows *jr, int i, const int *pos, int one,
+                       const qs_v2 *Jp, const qs_v2 *Mp, dReal rate, dReal cfm, dReal D,
+                       qs_row *q)
+{
     const qs_v2 d = qs_splat(D);
     for (int e = 0; e < 3; e++) {
         q->J[e] = qs_mul(d, Jp[e]);
@@ -686,6 +694,26 @@ static void fill_row(const qs_input *in, const qs_jrows *jr, int i, const int *p
         q->hi = jr->hi[i];
         q->f = one;
     }
+}
+
+// Row i of the joint (lambda positions of the joint's rows in pos, the
+// constant 1 at position one): D J and M^-1 J^T as pairs, the scaled rhs and
+// cfm, the bounds. blk, jb: the joint's block to couple to and its build
+// data, or NULL.
+static void fill_row(const qs_input *in, const qs_jrows *jr, int i, const int *pos, int one,
+                     const qs_block *blk, qs_jblock *jb, qs_row *q)
+{
+    qs_v2 Jp[6], Mp[6];
+    const dReal rate = row_full(jr, i, Jp, Mp), cfm = jr->cfm[i] * in->fps;
+    double diag = row_diag(Jp, Mp, cfm, jb != NULL);
+    q->g = NULL;
+    if (jb && diag > 0) q->g = couple_to_block(jb, Mp, &diag);
+    q->gn = (short)(q->g ? blk->n : 0);
+    q->gfirst = q->g ? blk->first : 0;
+    // A zero diagonal (an empty row without cfm) leaves the row's force at 0.
+    const dReal sor_w = in->warm && i == 0 ? 1 : in->sor_w;
+    const dReal D = diag > 0 ? (dReal)(sor_w / diag) : 0;
+    row_out(in, jr, i, pos, one, Jp, Mp, rate, cfm, D, q);
 }
 
 // The joint's rows outside its blocks (pos[i] < 0 after make_blocks): their
@@ -747,14 +775,130 @@ QS_INLINE int run_of(const qs_jrows *jr, int *first)
     return n;
 }
 
+// A run joint's row outside its run, coupled to its block ahead of its
+// turn (blocks_ahead): its J and M^-1 J^T (the block's response added),
+// J times the rates, cfm/h, its diagonal (the Schur complement once
+// coupled) and D = sor_w / diag, and g, or NULL if it was not coupled (it
+// is then made on its own at its turn, as fill_row leaves such a row).
+typedef struct qs_coupled {
+    qs_v2 J[6], M[6];
+    double diag;
+    dReal rate, cfm, D;
+    const dReal *g;
+} qs_coupled;
+
 // A run joint's block made ahead of its turn (blocks_ahead): its block but
-// the lambda positions and coupled rows, its build data, whether it
-// factored, its run's first row.
+// the lambda positions, its build data, whether it factored, its run's
+// first row, its other rows (in row order) coupled to it if it factored.
 typedef struct qs_ahead {
     qs_block blk;
     qs_jblock jb;
     int ok, first;
+    int ncoupled;
+    qs_coupled *rows;
 } qs_ahead;
+
+// Row i of a run joint as a row to couple, before its coupling: fill_row's
+// first part.
+QS_INLINE void coupled_start(const qs_jrows *jr, int i, dReal fps, qs_coupled *r)
+{
+    r->rate = row_full(jr, i, r->J, r->M);
+    r->cfm = jr->cfm[i] * fps;
+    r->diag = row_diag(r->J, r->M, r->cfm, 1);
+}
+
+// Row r coupled to its block alone (fill_row's coupling and D).
+QS_INLINE void couple_alone(qs_jblock *jb, dReal sor_w, qs_coupled *r)
+{
+    r->g = r->diag > 0 ? couple_to_block(jb, r->M, &r->diag) : NULL;
+    if (r->g) r->D = (dReal)(sor_w / r->diag);
+}
+
+#if defined(__GNUC__)
+// Rows ra and rb of two blocks of the same size n (build data ja, jb)
+// coupled side by side: couple_n's dot products, solves and Schur
+// complement and fill_row's D with each number of the two rows in one lane
+// of a pair, the same operations in the same order, so the same numbers;
+// the two chains of dependent products and the division in one.
+QS_INLINE void couple_pair_n(qs_jblock *ja, qs_coupled *ra, qs_jblock *jb, qs_coupled *rb,
+                             int n, dReal sor_w)
+{
+    qs_d2 c[QS_MAX_BLOCK], t[QS_MAX_BLOCK], L[QS_MAX_BLOCK * QS_MAX_BLOCK];
+    UNROLL for (int k = 0; k < n; k++) {
+        c[k] = (qs_d2){ dot12(ja->J + 6 * k, ra->M), dot12(jb->J + 6 * k, rb->M) };
+        t[k] = c[k];
+    }
+    UNROLL for (int k = 0; k < n * n; k++) L[k] = (qs_d2){ ja->L[k], jb->L[k] };
+    // cholesky_solve, lane by lane.
+    UNROLL for (int i = 0; i < n; i++) {
+        UNROLL for (int k = 0; k < i; k++) t[i] -= L[i * n + k] * t[k];
+        t[i] *= L[i * n + i];
+    }
+    UNROLL for (int i = n - 1; i >= 0; i--) {
+        UNROLL for (int k = i + 1; k < n; k++) t[i] -= L[k * n + i] * t[k];
+        t[i] *= L[i * n + i];
+    }
+    qs_d2 schur = { ra->diag, rb->diag };
+    UNROLL for (int k = 0; k < n; k++) schur -= c[k] * t[k];
+    const qs_d2 w = { sor_w, sor_w };
+    const qs_d2 D = w / schur;
+    qs_coupled *r[2] = { ra, rb };
+    qs_jblock *blk[2] = { ja, jb };
+    for (int lane = 0; lane < 2; lane++) {
+        qs_coupled *x = r[lane];
+        x->g = NULL;
+        if (!(x->diag > 0) || !(schur[lane] > PIVOT_EPS * x->diag)) continue;
+        double tl[QS_MAX_BLOCK];
+        UNROLL for (int k = 0; k < n; k++) tl[k] = t[k][lane];
+        x->g = block_response(blk[lane], n, tl, x->M);
+        x->diag = schur[lane];
+        x->D = (dReal)D[lane];
+    }
+}
+
+QS_INLINE void couple_pair(qs_jblock *ja, qs_coupled *ra, qs_jblock *jb, qs_coupled *rb,
+                           dReal sor_w)
+{
+    switch (ja->n) {   // constant sizes let the compiler unroll
+    case 2: couple_pair_n(ja, ra, jb, rb, 2, sor_w); break;
+    case 3: couple_pair_n(ja, ra, jb, rb, 3, sor_w); break;
+    case 4: couple_pair_n(ja, ra, jb, rb, 4, sor_w); break;
+    case 5: couple_pair_n(ja, ra, jb, rb, 5, sor_w); break;
+    default: couple_pair_n(ja, ra, jb, rb, QS_MAX_BLOCK, sor_w); break;
+    }
+}
+#else
+QS_INLINE void couple_pair(qs_jblock *ja, qs_coupled *ra, qs_jblock *jb, qs_coupled *rb,
+                           dReal sor_w)
+{
+    couple_alone(ja, sor_w, ra);
+    couple_alone(jb, sor_w, rb);
+}
+#endif
+
+// The other rows of run joints x and y (blocks of the same size; y may be
+// NULL) coupled to their blocks: a row of each side by side while both
+// have one, then those left alone. (x's and y's rows each in their order:
+// each block's room for g fills as fill_row fills it.)
+static void couple_ahead(qs_ahead *x, qs_ahead *y, dReal sor_w)
+{
+    const int both = y ? (x->ncoupled < y->ncoupled ? x->ncoupled : y->ncoupled) : 0;
+    for (int k = 0; k < both; k++) couple_pair(&x->jb, &x->rows[k], &y->jb, &y->rows[k], sor_w);
+    for (int k = both; k < x->ncoupled; k++) couple_alone(&x->jb, sor_w, &x->rows[k]);
+    for (int k = both; y && k < y->ncoupled; k++) couple_alone(&y->jb, sor_w, &y->rows[k]);
+}
+
+// Row i of a run joint coupled ahead (r) appended as q: fill_row's row,
+// its D now that the joint is known to be a warm contact or not.
+QS_INLINE void append_coupled(const qs_input *in, const qs_jrows *jr, int i, const int *pos,
+                              int one, const qs_block *blk, const qs_coupled *r, qs_row *q)
+{
+    const dReal D = in->warm && i == 0 ? (dReal)(1 / r->diag) : r->D;
+    q->g = r->g;
+    q->gn = (short)blk->n;
+    q->gfirst = blk->first;
+    row_out(in, jr, i, pos, one, r->J, r->M, r->rate, r->cfm, D, q);
+}
 
 // A run joint made without make_blocks' and make_rows' general search: its
 // run as its block (made here, or ahead: jr->ahead), its other rows' lambda
@@ -791,10 +935,16 @@ QS_INLINE qs_block *run_joint(dxArena *a, const qs_input *in, const qs_jrows *jr
     sys->next = nx;
     blk->coupled = sys->nrows;
     unsigned loose = 0;
-    for (int i = 0; i < m; i++) {
+    for (int i = 0, k = 0; i < m; i++) {
         if (!(rest >> i & 1)) continue;
         qs_row *q = &sys->rows[sys->nrows];
-        fill_row(in, jr, i, pos, sys->m, blk, jb, q);
+        if (jr->ahead) {
+            const qs_coupled *r = &jr->ahead->rows[k++];
+            if (r->g) append_coupled(in, jr, i, pos, sys->m, blk, r, q);
+            else q->g = NULL;
+        } else {
+            fill_row(in, jr, i, pos, sys->m, blk, jb, q);
+        }
         if (q->g) sys->nrows++;
         else loose |= 1u << i;
     }
@@ -1256,6 +1406,10 @@ static void blocks_ahead(struct dxWorld *w, dReal fps, qs_system *sys)
             qs_ahead *x = jr->ahead = ahead++;
             x->first = first;
             block_rows(w->arena, &in, jr, idx, n, &x->blk, &x->jb);
+            x->ncoupled = jr->m - n;
+            x->rows = DX_ARENA_ARRAY(w->arena, qs_coupled, x->ncoupled);
+            for (int e = 0; e < x->ncoupled; e++)
+                coupled_start(jr, e < first ? e : e + n, fps, &x->rows[e]);
             qs_ahead *y = waiting[n];
             if (!y) {
                 waiting[n] = x;
@@ -1264,12 +1418,16 @@ static void blocks_ahead(struct dxWorld *w, dReal fps, qs_system *sys)
             const int ok = factor_pair(&y->blk, &x->blk, n, w->qs_w, y->jb.L, x->jb.L);
             y->ok = ok & 1;
             x->ok = ok >> 1;
+            if (y->ok && x->ok) couple_ahead(y, x, w->qs_w);
+            else if (y->ok || x->ok) couple_ahead(y->ok ? y : x, NULL, w->qs_w);
             waiting[n] = NULL;
         }
     }
     for (int n = 2; n <= QS_MAX_BLOCK; n++) {
         qs_ahead *x = waiting[n];
-        if (x) x->ok = factor(x->blk.J, x->blk.M, x->blk.cfm, n, w->qs_w, x->jb.L, x->blk.Ainv);
+        if (!x) continue;
+        x->ok = factor(x->blk.J, x->blk.M, x->blk.cfm, n, w->qs_w, x->jb.L, x->blk.Ainv);
+        if (x->ok) couple_ahead(x, NULL, w->qs_w);
     }
 }
 
