@@ -903,10 +903,11 @@ QS_INLINE void append_coupled(const qs_input *in, const qs_jrows *jr, int i, con
 // A run joint made without make_blocks' and make_rows' general search: its
 // run as its block (made here, or ahead: jr->ahead), its other rows' lambda
 // positions after it in row order, then those rows coupled to the block in
-// row order, then those that could not be coupled as free rows (no normal
-// row): the same blocks, rows and positions (pos, all set) as make_blocks
-// and make_rows give such a joint. Returns its block, or NULL (nothing
-// done) for any other joint and a singular block.
+// row order (coupled ahead too if the block was), then those that could
+// not be coupled as free rows (no normal row): the same blocks, rows and
+// positions (pos, all set) as make_blocks and make_rows give such a joint.
+// Returns its block, or NULL (nothing done) for any other joint and a
+// singular block.
 QS_INLINE qs_block *run_joint(dxArena *a, const qs_input *in, const qs_jrows *jr,
                               qs_system *sys, int *pos)
 {
