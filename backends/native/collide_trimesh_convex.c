@@ -293,63 +293,73 @@ enum { CYL_SIDES = 32, POLY_MAX = DX_TRI_POLY_MAX };
 
 // ---- clipping to a triangle's prism ------------------------------------------
 
+// The clip's measure of point x: m . (x - o) + slack, in dx_dot's order
+// ((x + y) + z); with SSE2 (double) x and y side by side: the same
+// differences, products and sums.
+static inline __attribute__((always_inline)) dReal
+clip_measure(const dReal *x, const dReal m[3], const dReal o[3], dReal slack)
+{
+#if defined(__SSE2__) && !defined(dSINGLE)
+    const __m128d p = _mm_mul_pd(_mm_loadu_pd(m), _mm_sub_pd(_mm_loadu_pd(x), _mm_loadu_pd(o)));
+    return (_mm_cvtsd_f64(p) + _mm_cvtsd_f64(_mm_unpackhi_pd(p, p)) + m[2] * (x[2] - o[2])) +
+           slack;
+#else
+    const dReal d[3] = { x[0] - o[0], x[1] - o[1], x[2] - o[2] };
+    return dx_dot(m, d) + slack;
+#endif
+}
+
 // Keep the part of the polygon pt (n points, tags tp) where
 // m . (x - o) >= -slack, into npt and ntp: a point kept keeps its pointer
 // and tag, a point made on this boundary (into c->room) gets the tag
-// `made`. Returns the new count, or -1 (nothing written) if every point is
-// kept as it is; 0 if the result has more than DX_TRI_POLY_MAX points (a
-// polygon crossing the boundary more often than a convex one can; npt and
-// ntp have room for twice n). Inline in its one caller: its lists and
-// the result's pointers stay in registers.
+// `made`. Returns the new count, or -1 (nothing written that the caller
+// reads) if every point is kept as it is; 0 if the result has more than
+// DX_TRI_POLY_MAX points (a polygon crossing the boundary more often than
+// a convex one can; npt and ntp have room for twice n). Inline in its one
+// caller: its lists and the result's pointers stay in registers.
 static inline __attribute__((always_inline)) int
 clip_polygon(const dReal *const *pt, const int *tp, int n, const dReal m[3], const dReal o[3],
              dReal slack, int made, dxTriClipped *c, const dReal **npt, int *ntp)
 {
     dReal f[DX_TRI_POLY_MAX];
-    // Bit i: point i is kept (entered from the top, shifted down at the
-    // end: constant shifts only).
-    uint64_t kept = 0;
-#if defined(__SSE2__) && !defined(dSINGLE)
-    // x and y side by side, z alone: the same differences, products and
-    // sums in dx_dot's order ((x + y) + z), so the same f.
-    const __m128d o01 = _mm_loadu_pd(o), m01 = _mm_loadu_pd(m);
-    for (int i = 0; i < n; i++) {
-        const dReal *x = pt[i];
-        const __m128d p = _mm_mul_pd(m01, _mm_sub_pd(_mm_loadu_pd(x), o01));
-        f[i] = (_mm_cvtsd_f64(p) + _mm_cvtsd_f64(_mm_unpackhi_pd(p, p)) + m[2] * (x[2] - o[2])) +
-               slack;
-        kept = kept >> 1 | (uint64_t)(f[i] >= 0) << 63;
+    // One pass over the points: each point's measure, then (the points'
+    // sides follow the data, so without branching on them) the place of
+    // the point made on the edge from the one before, which moves on only
+    // if that edge crosses (the two on different sides; its room, taken in
+    // order), then the point itself at the list's next place, which moves
+    // on only if it is kept. The edge from the last point to the first
+    // closes the list. Bit i of kept: point i is kept (entered from the
+    // top, shifted down at the end: constant shifts only).
+    f[0] = clip_measure(pt[0], m, o, slack);
+    const unsigned first_in = f[0] >= 0;
+    unsigned was_in = first_in;
+    uint64_t kept = (uint64_t)first_in << 63;
+    const dReal *room = c->room[c->made_count];
+    npt[0] = pt[0];
+    ntp[0] = tp[0];
+    int k = (int)first_in;
+    for (int i = 1; i < n; i++) {
+        f[i] = clip_measure(pt[i], m, o, slack);
+        const unsigned in = f[i] >= 0, cross = in ^ was_in;
+        kept = kept >> 1 | (uint64_t)in << 63;
+        npt[k] = room;
+        ntp[k] = made;
+        k += (int)cross;
+        room += 3 * cross;
+        npt[k] = pt[i];
+        ntp[k] = tp[i];
+        k += (int)in;
+        was_in = in;
     }
-#else
-    for (int i = 0; i < n; i++) {
-        const dReal *x = pt[i];
-        dReal d[3] = { x[0] - o[0], x[1] - o[1], x[2] - o[2] };
-        f[i] = dx_dot(m, d) + slack;
-        kept = kept >> 1 | (uint64_t)(f[i] >= 0) << 63;
-    }
-#endif
+    npt[k] = room;
+    ntp[k] = made;
+    k += (int)(was_in ^ first_in);
     kept >>= 64 - n;   // (n >= 1)
     const uint64_t all = ~0ull >> (64 - n);
     if (kept == all) return -1;
-    // The points' sides follow the data, so the list is made without
-    // branching on them: every point is written at the list's next place,
-    // which moves on only if the point is kept, and then the place of the
-    // point made on the edge to the next point (its room, taken in order),
-    // which moves on only if the edge crosses (bit i of crossing: the two
-    // points are on different sides). Then the points made on the crossing
-    // edges, into their room in the same order (two for a convex polygon).
+    // The points made on the crossing edges (bit i: from point i to the
+    // next), into their room in the same order (two for a convex polygon).
     const uint64_t crossing = kept ^ ((kept >> 1 | kept << (n - 1)) & all);
-    int k = 0, room = c->made_count;
-    uint64_t kp = kept, cr = crossing;
-    for (int i = 0; i < n; i++, kp >>= 1, cr >>= 1) {
-        npt[k] = pt[i];
-        ntp[k] = tp[i];
-        k += (int)(kp & 1);
-        npt[k] = c->room[room];
-        ntp[k] = made;
-        k += (int)(cr & 1);
-        room += (int)(cr & 1);
-    }
     for (uint64_t left = crossing; left; left &= left - 1) {
         const int i = __builtin_ctzll(left), next = i + 1 < n ? i + 1 : 0;
         const dReal *a = pt[i], *b = pt[next], fa = f[i], fb = f[next];
