@@ -409,6 +409,18 @@ int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, const dReal *const
     return clip_to_prism_with(p, t, corner, made, n, inside, c);
 }
 
+// A clip tag's bits for clipped_face_contacts: a box corner's own bit
+// (DX_TRI_MADE_CORNER + v: bit v, the `seen` bit), TAG_FLAT for a point
+// made at a flat edge (never added), none for the rest.
+enum { TAG_FLAT = 1u << 8 };
+static const unsigned tag_bits[DX_TRI_MADE_CORNER + 8] = {
+    [DX_TRI_MADE_AT_FLAT_EDGE] = TAG_FLAT,
+    [DX_TRI_MADE_CORNER] = 1,        [DX_TRI_MADE_CORNER + 1] = 2,
+    [DX_TRI_MADE_CORNER + 2] = 4,    [DX_TRI_MADE_CORNER + 3] = 8,
+    [DX_TRI_MADE_CORNER + 4] = 16,   [DX_TRI_MADE_CORNER + 5] = 32,
+    [DX_TRI_MADE_CORNER + 6] = 64,   [DX_TRI_MADE_CORNER + 7] = 128,
+};
+
 // One face (n corners, pointers to them in corner[], at least one of them
 // on or behind the triangle's plane) of a convex solid against triangle t
 // (prism p): clipped to the triangle's prism (widened by rounding), its
@@ -435,26 +447,49 @@ clipped_face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p,
     // branches, then the contacts of those set. bit: a box corner's seen
     // bit (none without `seen`, or for a point the clip made); a corner is
     // in the clip's list once at most.
-    const unsigned was = seen ? *seen : 0, use_seen = seen ? ~0u : 0;
+    const unsigned was = seen ? *seen : 0;
     unsigned now = was;
     uint64_t add = 0;
-    dReal depth[2 * DX_TRI_POLY_MAX];
+    dReal height[2 * DX_TRI_POLY_MAX];
+#if defined(__SSE2__) && !defined(dSINGLE)
+    const __m128d n01 = _mm_loadu_pd(t->n), v01 = _mm_loadu_pd(t->v[0]);
+#endif
     for (int i = 0; i < n; i++) {
-        const int tag = c.made[i];
-        const unsigned bit =
-            (unsigned)(tag >= DX_TRI_MADE_CORNER) << ((tag - DX_TRI_MADE_CORNER) & 31) & use_seen;
-        depth[i] = -dxTriHeight(t, c.pt[i]);
-        const unsigned a = !(was & bit) & !(depth[i] < -eps) & (tag != DX_TRI_MADE_AT_FLAT_EDGE);
+        const unsigned bits = tag_bits[c.made[i]];
+        const dReal *x = c.pt[i];
+#if defined(__SSE2__) && !defined(dSINGLE)
+        // dxTriHeight with x and y side by side: the same sums.
+        const __m128d d = _mm_mul_pd(n01, _mm_sub_pd(_mm_loadu_pd(x), v01));
+        height[i] = _mm_cvtsd_f64(d) + _mm_cvtsd_f64(_mm_unpackhi_pd(d, d)) +
+                    t->n[2] * (x[2] - t->v[0][2]);
+#else
+        height[i] = dxTriHeight(t, x);
+#endif
+        // (-height < -eps is height > eps, NaN included: negation is exact.)
+        const unsigned a = !((was | TAG_FLAT) & bits) & !(height[i] > eps);
         add = add >> 1 | (uint64_t)a << 63;   // (shifted down below: constant shifts)
-        now |= bit & -a;
+        now |= bits & -a;
     }
     add = add >> (63 - n) >> 1;
     if (seen) *seen = now;
-    for (uint64_t left = add; left; left &= left - 1) {
+    if (!add) return 0;
+    // The contacts of the points added, with room made for them at once.
+    dxTriScratch *s = q->s;
+    const int count = __builtin_popcountll(add);
+    if (s->raw_count + count > s->raw_cap) dxTriScratchAddRaw(s, count);
+    dxTriMeshRaw *r = s->raw + s->raw_count;
+    s->raw_count += count;
+    for (uint64_t left = add; left; left &= left - 1, r++) {
         const int i = __builtin_ctzll(left);
-        dxTriAdd(q, c.pt[i], t->n, dMax(depth[i], 0), t->index);
+        for (int k = 0; k < 3; k++) {
+            r->pos[k] = c.pt[i][k];
+            r->n[k] = t->n[k];
+        }
+        r->depth = dMax(-height[i], 0);
+        r->tri = t->index;
+        r->tri2 = -1;
     }
-    return add != 0;
+    return 1;
 }
 
 // The same for any face (polygon a): one wholly in front of the plane adds
