@@ -293,19 +293,39 @@ enum { CYL_SIDES = 32, POLY_MAX = DX_TRI_POLY_MAX };
 
 // ---- clipping to a triangle's prism ------------------------------------------
 
-// The clip's measure of point x: m . (x - o) + slack, in dx_dot's order
-// ((x + y) + z); with SSE2 (double) x and y side by side: the same
-// differences, products and sums.
-static inline __attribute__((always_inline)) dReal
-clip_measure(const dReal *x, const dReal m[3], const dReal o[3], dReal slack)
+// A side of the prism for clip_polygon's measures m . (x - o) + slack,
+// in dx_dot's order ((x + y) + z); with SSE2 (double) x and y side by
+// side, loaded once a clip: the same differences, products and sums.
+typedef struct clip_side {
+#if defined(__SSE2__) && !defined(dSINGLE)
+    __m128d m01, o01;
+    dReal m2, o2;
+#else
+    const dReal *m, *o;
+#endif
+    dReal slack;
+} clip_side;
+
+static inline __attribute__((always_inline)) clip_side
+clip_side_set(const dReal m[3], const dReal o[3], dReal slack)
 {
 #if defined(__SSE2__) && !defined(dSINGLE)
-    const __m128d p = _mm_mul_pd(_mm_loadu_pd(m), _mm_sub_pd(_mm_loadu_pd(x), _mm_loadu_pd(o)));
-    return (_mm_cvtsd_f64(p) + _mm_cvtsd_f64(_mm_unpackhi_pd(p, p)) + m[2] * (x[2] - o[2])) +
-           slack;
+    return (clip_side){ _mm_loadu_pd(m), _mm_loadu_pd(o), m[2], o[2], slack };
 #else
-    const dReal d[3] = { x[0] - o[0], x[1] - o[1], x[2] - o[2] };
-    return dx_dot(m, d) + slack;
+    return (clip_side){ m, o, slack };
+#endif
+}
+
+static inline __attribute__((always_inline)) dReal clip_measure(const dReal *x,
+                                                                const clip_side *k)
+{
+#if defined(__SSE2__) && !defined(dSINGLE)
+    const __m128d p = _mm_mul_pd(k->m01, _mm_sub_pd(_mm_loadu_pd(x), k->o01));
+    return (_mm_cvtsd_f64(p) + _mm_cvtsd_f64(_mm_unpackhi_pd(p, p)) + k->m2 * (x[2] - k->o2)) +
+           k->slack;
+#else
+    const dReal d[3] = { x[0] - k->o[0], x[1] - k->o[1], x[2] - k->o[2] };
+    return dx_dot(k->m, d) + k->slack;
 #endif
 }
 
@@ -330,7 +350,8 @@ clip_polygon(const dReal *const *pt, const int *tp, int n, const dReal m[3], con
     // on only if it is kept. The edge from the last point to the first
     // closes the list. Bit i of kept: point i is kept (entered from the
     // top, shifted down at the end: constant shifts only).
-    f[0] = clip_measure(pt[0], m, o, slack);
+    const clip_side side = clip_side_set(m, o, slack);
+    f[0] = clip_measure(pt[0], &side);
     const unsigned first_in = f[0] >= 0;
     unsigned was_in = first_in;
     uint64_t kept = (uint64_t)first_in << 63;
@@ -339,15 +360,17 @@ clip_polygon(const dReal *const *pt, const int *tp, int n, const dReal m[3], con
     ntp[0] = tp[0];
     int k = (int)first_in;
     for (int i = 1; i < n; i++) {
-        f[i] = clip_measure(pt[i], m, o, slack);
+        const dReal *x = pt[i];   // (read before the stores, which may alias)
+        const int tag = tp[i];
+        f[i] = clip_measure(x, &side);
         const unsigned in = f[i] >= 0, cross = in ^ was_in;
         kept = kept >> 1 | (uint64_t)in << 63;
         npt[k] = room;
         ntp[k] = made;
         k += (int)cross;
         room += 3 * cross;
-        npt[k] = pt[i];
-        ntp[k] = tp[i];
+        npt[k] = x;
+        ntp[k] = tag;
         k += (int)in;
         was_in = in;
     }
