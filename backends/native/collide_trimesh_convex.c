@@ -496,12 +496,11 @@ clipped_face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p,
     add = add >> (63 - n) >> 1;
     if (seen) *seen = now;
     if (!add) return 0;
-    // The contacts of the points added, with room made for them at once.
+    // The contacts of the points added, with room made once for as many
+    // as there are points (no population count: not in every x86-64).
     dxTriScratch *s = q->s;
-    const int count = __builtin_popcountll(add);
-    if (s->raw_count + count > s->raw_cap) dxTriScratchAddRaw(s, count);
-    dxTriMeshRaw *r = s->raw + s->raw_count;
-    s->raw_count += count;
+    if (s->raw_count + n > s->raw_cap) dxTriScratchAddRaw(s, n);
+    dxTriMeshRaw *const first = s->raw + s->raw_count, *r = first;
     for (uint64_t left = add; left; left &= left - 1, r++) {
         const int i = __builtin_ctzll(left);
         for (int k = 0; k < 3; k++) {
@@ -512,6 +511,7 @@ clipped_face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p,
         r->tri = t->index;
         r->tri2 = -1;
     }
+    s->raw_count += (int)(r - first);
     return 1;
 }
 
