@@ -347,44 +347,50 @@ clip_polygon(const dReal *const *pt, const int *tp, int n, const dReal m[3], con
     // the point made on the edge from the one before, which moves on only
     // if that edge crosses (the two on different sides; its room, taken in
     // order), then the point itself at the list's next place, which moves
-    // on only if it is kept. The edge from the last point to the first
-    // closes the list. Bit i of kept: point i is kept (entered from the
-    // top, shifted down at the end: constant shifts only).
+    // on only if it is kept (to, to_tag: the next place). The edge from
+    // the last point to the first closes the list. from[j]: the first point
+    // of the j-th crossing edge (edge i: from point i to the next), written
+    // at every edge and counted if it crosses.
     const clip_side side = clip_side_set(m, o, slack);
+    int from[DX_TRI_POLY_MAX], crossings = 0;
     f[0] = clip_measure(pt[0], &side);
     const unsigned first_in = f[0] >= 0;
     unsigned was_in = first_in;
-    uint64_t kept = (uint64_t)first_in << 63;
     const dReal *room = c->room[c->made_count];
-    npt[0] = pt[0];
-    ntp[0] = tp[0];
-    int k = (int)first_in;
+    const dReal **to = npt;
+    int *to_tag = ntp;
+    *to = pt[0];
+    *to_tag = tp[0];
+    to += first_in;
+    to_tag += first_in;
     for (int i = 1; i < n; i++) {
         const dReal *x = pt[i];   // (read before the stores, which may alias)
         const int tag = tp[i];
         f[i] = clip_measure(x, &side);
         const unsigned in = f[i] >= 0, cross = in ^ was_in;
-        kept = kept >> 1 | (uint64_t)in << 63;
-        npt[k] = room;
-        ntp[k] = made;
-        k += (int)cross;
+        from[crossings] = i - 1;
+        crossings += (int)cross;
+        *to = room;
+        *to_tag = made;
+        to += cross;
+        to_tag += cross;
         room += 3 * cross;
-        npt[k] = x;
-        ntp[k] = tag;
-        k += (int)in;
+        *to = x;
+        *to_tag = tag;
+        to += in;
+        to_tag += in;
         was_in = in;
     }
-    npt[k] = room;
-    ntp[k] = made;
-    k += (int)(was_in ^ first_in);
-    kept >>= 64 - n;   // (n >= 1)
-    const uint64_t all = ~0ull >> (64 - n);
-    if (kept == all) return -1;
-    // The points made on the crossing edges (bit i: from point i to the
-    // next), into their room in the same order (two for a convex polygon).
-    const uint64_t crossing = kept ^ ((kept >> 1 | kept << (n - 1)) & all);
-    for (uint64_t left = crossing; left; left &= left - 1) {
-        const int i = __builtin_ctzll(left), next = i + 1 < n ? i + 1 : 0;
+    *to = room;
+    *to_tag = made;
+    from[crossings] = n - 1;
+    crossings += (int)(was_in ^ first_in);
+    to += was_in ^ first_in;
+    if (!crossings && first_in) return -1;   // every point kept
+    // The points made on the crossing edges, into their room in the same
+    // order (two for a convex polygon).
+    for (int e = 0; e < crossings; e++) {
+        const int i = from[e], next = i + 1 < n ? i + 1 : 0;
         const dReal *a = pt[i], *b = pt[next], fa = f[i], fb = f[next];
         dReal s = fa / (fa - fb), *x = c->room[c->made_count++];
 #if defined(__SSE2__) && !defined(dSINGLE)
@@ -396,6 +402,7 @@ clip_polygon(const dReal *const *pt, const int *tp, int n, const dReal m[3], con
         for (int j = 0; j < 3; j++) x[j] = a[j] + s * (b[j] - a[j]);
 #endif
     }
+    const int k = (int)(to - npt);
     return k <= DX_TRI_POLY_MAX ? k : 0;
 }
 
