@@ -473,13 +473,14 @@ clipped_face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p,
     dReal eps = DX_COLLIDE_EPS * q->scale;
     dxTriClipped c;
     n = clip_to_prism_with(p, t, corner, made, n, inside, &c);
-    // Which points are added follows the data: their bits first, without
-    // branches, then the contacts of those set. bit: a box corner's seen
-    // bit (none without `seen`, or for a point the clip made); a corner is
-    // in the clip's list once at most.
+    // Which points are added follows the data: they are listed without
+    // branches (each written at the list's next place, which moves on only
+    // if it is added: not at a flat edge, not a corner seen already, not
+    // above the plane by more than eps), then their contacts written; a
+    // corner is in the clip's list once at most, so the seen bits are
+    // updated after.
     const unsigned was = seen ? *seen : 0;
-    unsigned now = was;
-    uint64_t add = 0;
+    int added[2 * DX_TRI_POLY_MAX], count = 0;   // the points added, in order
     dReal height[2 * DX_TRI_POLY_MAX];
 #if defined(__SSE2__) && !defined(dSINGLE)
     const __m128d n01 = _mm_loadu_pd(t->n), v01 = _mm_loadu_pd(t->v[0]);
@@ -496,20 +497,20 @@ clipped_face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p,
         height[i] = dxTriHeight(t, x);
 #endif
         // (-height < -eps is height > eps, NaN included: negation is exact.)
-        const unsigned a = !((was | TAG_FLAT) & bits) & !(height[i] > eps);
-        add = add >> 1 | (uint64_t)a << 63;   // (shifted down below: constant shifts)
-        now |= bits & -a;
+        added[count] = i;
+        count += !((was | TAG_FLAT) & bits) & !(height[i] > eps);
     }
-    add = add >> (63 - n) >> 1;
-    if (seen) *seen = now;
-    if (!add) return 0;
-    // The contacts of the points added, with room made once for as many
-    // as there are points (no population count: not in every x86-64).
+    if (!count) return 0;
+    // The contacts of the points added, with room made once, and their
+    // corners' seen bits.
     dxTriScratch *s = q->s;
-    if (s->raw_count + n > s->raw_cap) dxTriScratchAddRaw(s, n);
-    dxTriMeshRaw *const first = s->raw + s->raw_count, *r = first;
-    for (uint64_t left = add; left; left &= left - 1, r++) {
-        const int i = __builtin_ctzll(left);
+    if (s->raw_count + count > s->raw_cap) dxTriScratchAddRaw(s, count);
+    dxTriMeshRaw *r = s->raw + s->raw_count;
+    s->raw_count += count;
+    unsigned now = was;
+    for (int e = 0; e < count; e++, r++) {
+        const int i = added[e];
+        now |= tag_bits[c.made[i]];
         for (int k = 0; k < 3; k++) {
             r->pos[k] = c.pt[i][k];
             r->n[k] = t->n[k];
@@ -518,7 +519,7 @@ clipped_face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p,
         r->tri = t->index;
         r->tri2 = -1;
     }
-    s->raw_count += (int)(r - first);
+    if (seen) *seen = now;
     return 1;
 }
 
