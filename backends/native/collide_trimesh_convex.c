@@ -412,20 +412,26 @@ clip_to_prism_with(const dxTriPrism *p, const dxTri *t, const dReal *const *corn
                    const int *made, int n, unsigned inside, dxTriClipped *c)
 {
     // From one list into the other working list (out), which then holds
-    // the polygon; unchanged clips leave it where it is.
+    // the polygon, and the lists swap; unchanged clips leave it where it is.
     const dReal *const *pt = corner;
     const int *tp = made;
-    int out = 0;
+    const dReal **out = c->list[0], **spare = c->list[1];
+    int *out_tag = c->tags[0], *spare_tag = c->tags[1];
     c->made_count = 0;
     for (unsigned sides = ~inside & 7; sides && n > 0; sides &= sides - 1) {
         const int k = __builtin_ctz(sides);
         const int m = clip_polygon(pt, tp, n, p->m[k], t->v[k], p->slack[k], p->made[k], c,
-                                   c->list[out], c->tags[out]);
+                                   out, out_tag);
         if (m < 0) continue;   // unchanged
+        const dReal **full = out;
+        int *full_tag = out_tag;
+        out = spare;
+        out_tag = spare_tag;
+        spare = full;
+        spare_tag = full_tag;
         n = m;
-        pt = c->list[out];
-        tp = c->tags[out];
-        out ^= 1;
+        pt = full;
+        tp = full_tag;
     }
     c->pt = pt;
     c->made = tp;
