@@ -25,6 +25,7 @@
 //   convex box has exactly a box's contacts.
 
 #include <float.h>
+#include <stddef.h>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -347,49 +348,46 @@ clip_polygon(const dReal *const *pt, const int *tp, int n, const dReal m[3], con
     // the point made on the edge from the one before, which moves on only
     // if that edge crosses (the two on different sides; its room, taken in
     // order), then the point itself at the list's next place, which moves
-    // on only if it is kept (to, to_tag: the next place). The edge from
+    // on only if it is kept (k: the next place). The edge from
     // the last point to the first closes the list. from[j]: the first point
     // of the j-th crossing edge (edge i: from point i to the next), written
     // at every edge and counted if it crosses.
     const clip_side side = clip_side_set(m, o, slack);
-    int from[DX_TRI_POLY_MAX], crossings = 0;
+    // (Indices as wide as pointers: no sign extension in the loop.)
+    int from[DX_TRI_POLY_MAX];
+    ptrdiff_t crossings = 0, k;
     f[0] = clip_measure(pt[0], &side);
     const unsigned first_in = f[0] >= 0;
     unsigned was_in = first_in;
     const dReal *room = c->room[c->made_count];
-    const dReal **to = npt;
-    int *to_tag = ntp;
-    *to = pt[0];
-    *to_tag = tp[0];
-    to += first_in;
-    to_tag += first_in;
+    npt[0] = pt[0];
+    ntp[0] = tp[0];
+    k = first_in;
     for (int i = 1; i < n; i++) {
         const dReal *x = pt[i];   // (read before the stores, which may alias)
         const int tag = tp[i];
         f[i] = clip_measure(x, &side);
         const unsigned in = f[i] >= 0, cross = in ^ was_in;
         from[crossings] = i - 1;
-        crossings += (int)cross;
-        *to = room;
-        *to_tag = made;
-        to += cross;
-        to_tag += cross;
+        crossings += cross;
+        npt[k] = room;
+        ntp[k] = made;
+        k += cross;
         room += 3 * cross;
-        *to = x;
-        *to_tag = tag;
-        to += in;
-        to_tag += in;
+        npt[k] = x;
+        ntp[k] = tag;
+        k += in;
         was_in = in;
     }
-    *to = room;
-    *to_tag = made;
+    npt[k] = room;
+    ntp[k] = made;
     from[crossings] = n - 1;
-    crossings += (int)(was_in ^ first_in);
-    to += was_in ^ first_in;
+    crossings += was_in ^ first_in;
+    k += was_in ^ first_in;
     if (!crossings && first_in) return -1;   // every point kept
     // The points made on the crossing edges, into their room in the same
     // order (two for a convex polygon).
-    for (int e = 0; e < crossings; e++) {
+    for (ptrdiff_t e = 0; e < crossings; e++) {
         const int i = from[e], next = i + 1 < n ? i + 1 : 0;
         const dReal *a = pt[i], *b = pt[next], fa = f[i], fb = f[next];
         dReal s = fa / (fa - fb), *x = c->room[c->made_count++];
@@ -402,8 +400,7 @@ clip_polygon(const dReal *const *pt, const int *tp, int n, const dReal m[3], con
         for (int j = 0; j < 3; j++) x[j] = a[j] + s * (b[j] - a[j]);
 #endif
     }
-    const int k = (int)(to - npt);
-    return k <= DX_TRI_POLY_MAX ? k : 0;
+    return k <= DX_TRI_POLY_MAX ? (int)k : 0;
 }
 
 // dxTriClipToPrismWith, inline in the box's and the faces' clips.
