@@ -483,7 +483,8 @@ clipped_face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p,
     // corner is in the clip's list once at most, so the seen bits are
     // updated after.
     const unsigned was = seen ? *seen : 0;
-    int added[2 * DX_TRI_POLY_MAX], count = 0;   // the points added, in order
+    int added[2 * DX_TRI_POLY_MAX];   // the points added, in order
+    ptrdiff_t count = 0;
     dReal height[2 * DX_TRI_POLY_MAX];
 #if defined(__SSE2__) && !defined(dSINGLE)
     const __m128d n01 = _mm_loadu_pd(t->n), v01 = _mm_loadu_pd(t->v[0]);
@@ -507,11 +508,11 @@ clipped_face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p,
     // The contacts of the points added, with room made once, and their
     // corners' seen bits.
     dxTriScratch *s = q->s;
-    if (s->raw_count + count > s->raw_cap) dxTriScratchAddRaw(s, count);
+    if (s->raw_count + count > s->raw_cap) dxTriScratchAddRaw(s, (int)count);
     dxTriMeshRaw *r = s->raw + s->raw_count;
-    s->raw_count += count;
+    s->raw_count += (int)count;
     unsigned now = was;
-    for (int e = 0; e < count; e++, r++) {
+    for (ptrdiff_t e = 0; e < count; e++, r++) {
         const int i = added[e];
         now |= tag_bits[c.made[i]];
         for (int k = 0; k < 3; k++) {
