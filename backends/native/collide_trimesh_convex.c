@@ -462,9 +462,10 @@ static const unsigned tag_bits[DX_TRI_MADE_CORNER + 8] = {
 // the depth is zero and adds nothing). Points made on the prism's side at
 // a flat edge are left out: they are corners of the triangulation, not of
 // the contact patch (the corners of the solid over the neighbour come from
-// it). made[]: the corners' tags (dxTriClipToPrismWith); with `seen`, a
-// corner tagged DX_TRI_MADE_CORNER + v that bit v of *seen says was added
-// already (by another face of the solid, against the same triangle: the
+// it). made[]: the corners' tags (dxTriClipToPrismWith; a corner's tag
+// is one of a box's eight, DX_TRI_MADE_CORNER + v with v < 8); with
+// `seen`, a corner tagged DX_TRI_MADE_CORNER + v that bit v of *seen says
+// was added already (by another face of the solid, against the same triangle: the
 // same point, depth and normal to the bit) is not added again, and a
 // corner added sets its bit. Returns 1 if any was added. Inline in its
 // callers: box_test's pointers, `seen` and the prism stay in registers.
