@@ -465,9 +465,9 @@ static const unsigned tag_bits[DX_TRI_MADE_CORNER + 8] = {
 // it). made[]: the corners' tags (dxTriClipToPrismWith; a corner's tag
 // is one of a box's eight, DX_TRI_MADE_CORNER + v with v < 8); with
 // `seen`, a corner tagged DX_TRI_MADE_CORNER + v that bit v of *seen says
-// was added already (by another face of the solid, against the same triangle: the
-// same point, depth and normal to the bit) is not added again, and a
-// corner added sets its bit. Returns 1 if any was added. Inline in its
+// was added already (by another face of the solid, against the same
+// triangle: the same point, depth and normal to the bit) is not added
+// again, and a corner added sets its bit. Returns 1 if any was added. Inline in its
 // callers: box_test's pointers, `seen` and the prism stay in registers.
 static inline __attribute__((always_inline)) int
 clipped_face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p,
