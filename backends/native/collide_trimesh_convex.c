@@ -25,6 +25,7 @@
 //   convex box has exactly a box's contacts.
 
 #include <float.h>
+#include <stddef.h>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -293,65 +294,101 @@ enum { CYL_SIDES = 32, POLY_MAX = DX_TRI_POLY_MAX };
 
 // ---- clipping to a triangle's prism ------------------------------------------
 
+// A side of the prism for clip_polygon's measures m . (x - o) + slack,
+// in dx_dot's order ((x + y) + z); with SSE2 (double) x and y side by
+// side, loaded once a clip: the same differences, products and sums.
+typedef struct clip_side {
+#if defined(__SSE2__) && !defined(dSINGLE)
+    __m128d m01, o01;
+    dReal m2, o2;
+#else
+    const dReal *m, *o;
+#endif
+    dReal slack;
+} clip_side;
+
+static inline __attribute__((always_inline)) clip_side
+clip_side_set(const dReal m[3], const dReal o[3], dReal slack)
+{
+#if defined(__SSE2__) && !defined(dSINGLE)
+    return (clip_side){ _mm_loadu_pd(m), _mm_loadu_pd(o), m[2], o[2], slack };
+#else
+    return (clip_side){ m, o, slack };
+#endif
+}
+
+static inline __attribute__((always_inline)) dReal clip_measure(const dReal *x,
+                                                                const clip_side *k)
+{
+#if defined(__SSE2__) && !defined(dSINGLE)
+    const __m128d p = _mm_mul_pd(k->m01, _mm_sub_pd(_mm_loadu_pd(x), k->o01));
+    return (_mm_cvtsd_f64(p) + _mm_cvtsd_f64(_mm_unpackhi_pd(p, p)) + k->m2 * (x[2] - k->o2)) +
+           k->slack;
+#else
+    const dReal d[3] = { x[0] - k->o[0], x[1] - k->o[1], x[2] - k->o[2] };
+    return dx_dot(k->m, d) + k->slack;
+#endif
+}
+
 // Keep the part of the polygon pt (n points, tags tp) where
 // m . (x - o) >= -slack, into npt and ntp: a point kept keeps its pointer
 // and tag, a point made on this boundary (into c->room) gets the tag
-// `made`. Returns the new count, or -1 (nothing written) if every point is
-// kept as it is; 0 if the result has more than DX_TRI_POLY_MAX points (a
-// polygon crossing the boundary more often than a convex one can; npt and
-// ntp have room for twice n). Inline in its one caller: its lists and
-// the result's pointers stay in registers.
+// `made`. Returns the new count, or -1 (nothing written that the caller
+// reads) if every point is kept as it is; 0 if the result has more than
+// DX_TRI_POLY_MAX points (a polygon crossing the boundary more often than
+// a convex one can; npt and ntp have room for twice n). Inline in its one
+// caller: its lists and the result's pointers stay in registers.
 static inline __attribute__((always_inline)) int
 clip_polygon(const dReal *const *pt, const int *tp, int n, const dReal m[3], const dReal o[3],
              dReal slack, int made, dxTriClipped *c, const dReal **npt, int *ntp)
 {
     dReal f[DX_TRI_POLY_MAX];
-    // Bit i: point i is kept (entered from the top, shifted down at the
-    // end: constant shifts only).
-    uint64_t kept = 0;
-#if defined(__SSE2__) && !defined(dSINGLE)
-    // x and y side by side, z alone: the same differences, products and
-    // sums in dx_dot's order ((x + y) + z), so the same f.
-    const __m128d o01 = _mm_loadu_pd(o), m01 = _mm_loadu_pd(m);
-    for (int i = 0; i < n; i++) {
-        const dReal *x = pt[i];
-        const __m128d p = _mm_mul_pd(m01, _mm_sub_pd(_mm_loadu_pd(x), o01));
-        f[i] = (_mm_cvtsd_f64(p) + _mm_cvtsd_f64(_mm_unpackhi_pd(p, p)) + m[2] * (x[2] - o[2])) +
-               slack;
-        kept = kept >> 1 | (uint64_t)(f[i] >= 0) << 63;
-    }
-#else
-    for (int i = 0; i < n; i++) {
-        const dReal *x = pt[i];
-        dReal d[3] = { x[0] - o[0], x[1] - o[1], x[2] - o[2] };
-        f[i] = dx_dot(m, d) + slack;
-        kept = kept >> 1 | (uint64_t)(f[i] >= 0) << 63;
-    }
-#endif
-    kept >>= 64 - n;   // (n >= 1)
-    const uint64_t all = ~0ull >> (64 - n);
-    if (kept == all) return -1;
-    // The points' sides follow the data, so the list is made without
-    // branching on them: every point is written at the list's next place,
-    // which moves on only if the point is kept, and then the place of the
-    // point made on the edge to the next point (its room, taken in order),
-    // which moves on only if the edge crosses (bit i of crossing: the two
-    // points are on different sides). Then the points made on the crossing
-    // edges, into their room in the same order (two for a convex polygon).
-    const uint64_t crossing = kept ^ ((kept >> 1 | kept << (n - 1)) & all);
-    int k = 0, room = c->made_count;
-    uint64_t kp = kept, cr = crossing;
-    for (int i = 0; i < n; i++, kp >>= 1, cr >>= 1) {
-        npt[k] = pt[i];
-        ntp[k] = tp[i];
-        k += (int)(kp & 1);
-        npt[k] = c->room[room];
+    // One pass over the points: each point's measure, then (the points'
+    // sides follow the data, so without branching on them) the place of
+    // the point made on the edge from the one before, which moves on only
+    // if that edge crosses (the two on different sides; its room, taken in
+    // order), then the point itself at the list's next place, which moves
+    // on only if it is kept (k: the next place). The edge from
+    // the last point to the first closes the list. from[j]: the first point
+    // of the j-th crossing edge (edge i: from point i to the next), written
+    // at every edge and counted if it crosses.
+    const clip_side side = clip_side_set(m, o, slack);
+    // (Indices as wide as pointers: no sign extension in the loop.)
+    int from[DX_TRI_POLY_MAX];
+    ptrdiff_t crossings = 0, k;
+    f[0] = clip_measure(pt[0], &side);
+    const unsigned first_in = f[0] >= 0;
+    unsigned was_in = first_in;
+    const dReal *room = c->room[c->made_count];
+    npt[0] = pt[0];
+    ntp[0] = tp[0];
+    k = first_in;
+    for (int i = 1; i < n; i++) {
+        const dReal *x = pt[i];   // (read before the stores, which may alias)
+        const int tag = tp[i];
+        f[i] = clip_measure(x, &side);
+        const unsigned in = f[i] >= 0, cross = in ^ was_in;
+        from[crossings] = i - 1;
+        crossings += cross;
+        npt[k] = room;
         ntp[k] = made;
-        k += (int)(cr & 1);
-        room += (int)(cr & 1);
+        k += cross;
+        room += 3 * cross;
+        npt[k] = x;
+        ntp[k] = tag;
+        k += in;
+        was_in = in;
     }
-    for (uint64_t left = crossing; left; left &= left - 1) {
-        const int i = __builtin_ctzll(left), next = i + 1 < n ? i + 1 : 0;
+    npt[k] = room;
+    ntp[k] = made;
+    from[crossings] = n - 1;
+    crossings += was_in ^ first_in;
+    k += was_in ^ first_in;
+    if (!crossings && first_in) return -1;   // every point kept
+    // The points made on the crossing edges, into their room in the same
+    // order (two for a convex polygon).
+    for (ptrdiff_t e = 0; e < crossings; e++) {
+        const int i = from[e], next = i + 1 < n ? i + 1 : 0;
         const dReal *a = pt[i], *b = pt[next], fa = f[i], fb = f[next];
         dReal s = fa / (fa - fb), *x = c->room[c->made_count++];
 #if defined(__SSE2__) && !defined(dSINGLE)
@@ -363,7 +400,7 @@ clip_polygon(const dReal *const *pt, const int *tp, int n, const dReal m[3], con
         for (int j = 0; j < 3; j++) x[j] = a[j] + s * (b[j] - a[j]);
 #endif
     }
-    return k <= DX_TRI_POLY_MAX ? k : 0;
+    return k <= DX_TRI_POLY_MAX ? (int)k : 0;
 }
 
 // dxTriClipToPrismWith, inline in the box's and the faces' clips.
@@ -372,20 +409,26 @@ clip_to_prism_with(const dxTriPrism *p, const dxTri *t, const dReal *const *corn
                    const int *made, int n, unsigned inside, dxTriClipped *c)
 {
     // From one list into the other working list (out), which then holds
-    // the polygon; unchanged clips leave it where it is.
+    // the polygon, and the lists swap; unchanged clips leave it where it is.
     const dReal *const *pt = corner;
     const int *tp = made;
-    int out = 0;
+    const dReal **out = c->list[0], **spare = c->list[1];
+    int *out_tag = c->tags[0], *spare_tag = c->tags[1];
     c->made_count = 0;
     for (unsigned sides = ~inside & 7; sides && n > 0; sides &= sides - 1) {
         const int k = __builtin_ctz(sides);
         const int m = clip_polygon(pt, tp, n, p->m[k], t->v[k], p->slack[k], p->made[k], c,
-                                   c->list[out], c->tags[out]);
+                                   out, out_tag);
         if (m < 0) continue;   // unchanged
+        const dReal **full = out;
+        int *full_tag = out_tag;
+        out = spare;
+        out_tag = spare_tag;
+        spare = full;
+        spare_tag = full_tag;
         n = m;
-        pt = c->list[out];
-        tp = c->tags[out];
-        out ^= 1;
+        pt = full;
+        tp = full_tag;
     }
     c->pt = pt;
     c->made = tp;
@@ -399,6 +442,18 @@ int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, const dReal *const
     return clip_to_prism_with(p, t, corner, made, n, inside, c);
 }
 
+// A clip tag's bits for clipped_face_contacts: a box corner's own bit
+// (DX_TRI_MADE_CORNER + v: bit v, the `seen` bit), TAG_FLAT for a point
+// made at a flat edge (never added), none for the rest.
+enum { TAG_FLAT = 1u << 8 };
+static const unsigned tag_bits[DX_TRI_MADE_CORNER + 8] = {
+    [DX_TRI_MADE_AT_FLAT_EDGE] = TAG_FLAT,
+    [DX_TRI_MADE_CORNER] = 1,        [DX_TRI_MADE_CORNER + 1] = 2,
+    [DX_TRI_MADE_CORNER + 2] = 4,    [DX_TRI_MADE_CORNER + 3] = 8,
+    [DX_TRI_MADE_CORNER + 4] = 16,   [DX_TRI_MADE_CORNER + 5] = 32,
+    [DX_TRI_MADE_CORNER + 6] = 64,   [DX_TRI_MADE_CORNER + 7] = 128,
+};
+
 // One face (n corners, pointers to them in corner[], at least one of them
 // on or behind the triangle's plane) of a convex solid against triangle t
 // (prism p): clipped to the triangle's prism (widened by rounding), its
@@ -407,11 +462,12 @@ int dxTriClipToPrismWith(const dxTriPrism *p, const dxTri *t, const dReal *const
 // the depth is zero and adds nothing). Points made on the prism's side at
 // a flat edge are left out: they are corners of the triangulation, not of
 // the contact patch (the corners of the solid over the neighbour come from
-// it). made[]: the corners' tags (dxTriClipToPrismWith); with `seen`, a
-// corner tagged DX_TRI_MADE_CORNER + v that bit v of *seen says was added
-// already (by another face of the solid, against the same triangle: the
-// same point, depth and normal to the bit) is not added again, and a
-// corner added sets its bit. Returns 1 if any was added. Inline in its
+// it). made[]: the corners' tags (dxTriClipToPrismWith; a corner's tag
+// is one of a box's eight, DX_TRI_MADE_CORNER + v with v < 8); with
+// `seen`, a corner tagged DX_TRI_MADE_CORNER + v that bit v of *seen says
+// was added already (by another face of the solid, against the same
+// triangle: the same point, depth and normal to the bit) is not added
+// again, and a corner added sets its bit. Returns 1 if any was added. Inline in its
 // callers: box_test's pointers, `seen` and the prism stay in registers.
 static inline __attribute__((always_inline)) int
 clipped_face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p,
@@ -421,30 +477,55 @@ clipped_face_contacts(dxTriQuery *q, const dxTri *t, const dxTriPrism *p,
     dReal eps = DX_COLLIDE_EPS * q->scale;
     dxTriClipped c;
     n = clip_to_prism_with(p, t, corner, made, n, inside, &c);
-    // Which points are added follows the data: their bits first, without
-    // branches, then the contacts of those set. bit: a box corner's seen
-    // bit (none without `seen`, or for a point the clip made); a corner is
-    // in the clip's list once at most.
-    const unsigned was = seen ? *seen : 0, use_seen = seen ? ~0u : 0;
-    unsigned now = was;
-    uint64_t add = 0;
-    dReal depth[2 * DX_TRI_POLY_MAX];
+    // Which points are added follows the data: they are listed without
+    // branches (each written at the list's next place, which moves on only
+    // if it is added: not at a flat edge, not a corner seen already, not
+    // above the plane by more than eps), then their contacts written; a
+    // corner is in the clip's list once at most, so the seen bits are
+    // updated after.
+    const unsigned was = seen ? *seen : 0;
+    int added[2 * DX_TRI_POLY_MAX];   // the points added, in order
+    ptrdiff_t count = 0;
+    dReal height[2 * DX_TRI_POLY_MAX];
+#if defined(__SSE2__) && !defined(dSINGLE)
+    const __m128d n01 = _mm_loadu_pd(t->n), v01 = _mm_loadu_pd(t->v[0]);
+#endif
     for (int i = 0; i < n; i++) {
-        const int tag = c.made[i];
-        const unsigned bit =
-            (unsigned)(tag >= DX_TRI_MADE_CORNER) << ((tag - DX_TRI_MADE_CORNER) & 31) & use_seen;
-        depth[i] = -dxTriHeight(t, c.pt[i]);
-        const unsigned a = !(was & bit) & !(depth[i] < -eps) & (tag != DX_TRI_MADE_AT_FLAT_EDGE);
-        add = add >> 1 | (uint64_t)a << 63;   // (shifted down below: constant shifts)
-        now |= bit & -a;
+        const unsigned bits = tag_bits[c.made[i]];
+        const dReal *x = c.pt[i];
+#if defined(__SSE2__) && !defined(dSINGLE)
+        // dxTriHeight with x and y side by side: the same sums.
+        const __m128d d = _mm_mul_pd(n01, _mm_sub_pd(_mm_loadu_pd(x), v01));
+        height[i] = _mm_cvtsd_f64(d) + _mm_cvtsd_f64(_mm_unpackhi_pd(d, d)) +
+                    t->n[2] * (x[2] - t->v[0][2]);
+#else
+        height[i] = dxTriHeight(t, x);
+#endif
+        // (-height < -eps is height > eps, NaN included: negation is exact.)
+        added[count] = i;
+        count += !((was | TAG_FLAT) & bits) & !(height[i] > eps);
     }
-    add = add >> (63 - n) >> 1;
+    if (!count) return 0;
+    // The contacts of the points added, with room made once, and their
+    // corners' seen bits.
+    dxTriScratch *s = q->s;
+    if (s->raw_count + count > s->raw_cap) dxTriScratchAddRaw(s, (int)count);
+    dxTriMeshRaw *r = s->raw + s->raw_count;
+    s->raw_count += (int)count;
+    unsigned now = was;
+    for (ptrdiff_t e = 0; e < count; e++, r++) {
+        const int i = added[e];
+        now |= tag_bits[c.made[i]];
+        for (int k = 0; k < 3; k++) {
+            r->pos[k] = c.pt[i][k];
+            r->n[k] = t->n[k];
+        }
+        r->depth = dMax(-height[i], 0);
+        r->tri = t->index;
+        r->tri2 = -1;
+    }
     if (seen) *seen = now;
-    for (uint64_t left = add; left; left &= left - 1) {
-        const int i = __builtin_ctzll(left);
-        dxTriAdd(q, c.pt[i], t->n, dMax(depth[i], 0), t->index);
-    }
-    return add != 0;
+    return 1;
 }
 
 // The same for any face (polygon a): one wholly in front of the plane adds
