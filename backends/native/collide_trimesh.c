@@ -798,57 +798,6 @@ int dxTriMeshCollide(dxGeom *mesh, dxGeom *other, int flags, dContactGeom *c, in
 
 // ---- triangle geometry --------------------------------------------------------
 
-int dxTriClosestPoint(const dxTri *t, const dReal p[3], dReal q[3])
-{
-    // Regions of the triangle's plane, tested in turn with the
-    // barycentric signs (vertex, edge, then face regions).
-    const dReal *a = t->v[0], *b = t->v[1], *c = t->v[2];
-    dReal ab[3], ac[3], ap[3], bp[3], cp[3];
-    for (int i = 0; i < 3; i++) {
-        ab[i] = b[i] - a[i];
-        ac[i] = c[i] - a[i];
-        ap[i] = p[i] - a[i];
-        bp[i] = p[i] - b[i];
-        cp[i] = p[i] - c[i];
-    }
-    dReal d1 = dx_dot(ab, ap), d2 = dx_dot(ac, ap);
-    if (d1 <= 0 && d2 <= 0) {
-        for (int i = 0; i < 3; i++) q[i] = a[i];
-        return 4;
-    }
-    dReal d3 = dx_dot(ab, bp), d4 = dx_dot(ac, bp);
-    if (d3 >= 0 && d4 <= d3) {
-        for (int i = 0; i < 3; i++) q[i] = b[i];
-        return 5;
-    }
-    dReal vc = d1 * d4 - d3 * d2;
-    if (vc <= 0 && d1 >= 0 && d3 <= 0) {
-        dReal s = d1 / (d1 - d3);
-        for (int i = 0; i < 3; i++) q[i] = a[i] + s * ab[i];
-        return 1;
-    }
-    dReal d5 = dx_dot(ab, cp), d6 = dx_dot(ac, cp);
-    if (d6 >= 0 && d5 <= d6) {
-        for (int i = 0; i < 3; i++) q[i] = c[i];
-        return 6;
-    }
-    dReal vb = d5 * d2 - d1 * d6;
-    if (vb <= 0 && d2 >= 0 && d6 <= 0) {
-        dReal s = d2 / (d2 - d6);
-        for (int i = 0; i < 3; i++) q[i] = a[i] + s * ac[i];
-        return 3;   // edge 2: v2 to v0
-    }
-    dReal va = d3 * d6 - d5 * d4;
-    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
-        dReal s = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-        for (int i = 0; i < 3; i++) q[i] = b[i] + s * (c[i] - b[i]);
-        return 2;
-    }
-    dReal denom = 1 / (va + vb + vc), v = vb * denom, w = vc * denom;
-    for (int i = 0; i < 3; i++) q[i] = a[i] + v * ab[i] + w * ac[i];
-    return 0;
-}
-
 int dxTriFeatureNormal(const dxTriQuery *q, const dxTri *t, int feature, const dReal dir[3])
 {
     if (feature == 0) return 0;
