@@ -40,7 +40,7 @@ void dxTriLoad(const dxTriMeshData *d, int t, dxTriOwn *out)
     out->t.index = t;
     out->t.v = (const dReal(*)[3])out->v;
     out->t.n = out->n;
-    out->t.coplanar = 0;
+    out->t.face = NULL;
 }
 
 static dReal dist2(const dReal a[3], const dReal b[3])
@@ -708,8 +708,7 @@ static void walk_leaves(dxTriQuery *q, const int *leaf, int n, const off_box *b,
             const dReal *v = lv + 9 * j;
             if (off == 2 && tri_off_box(v, b)) continue;
             const int t = f->index;
-            dxTri tri = { .index = t, .v = (const dReal(*)[3])v, .n = f->n,
-                          .coplanar = f->coplanar | DX_TRI_COPLANAR_KNOWN };
+            dxTri tri = { .index = t, .v = (const dReal(*)[3])v, .n = f->n, .face = f };
             if (!height_passes(q, &tri, reach)) continue;
             // A degenerate triangle's height is 0 (or NaN): only then is its
             // normal looked at.
@@ -818,12 +817,17 @@ int dxTriFeatureNormal(const dxTriQuery *q, const dxTri *t, int feature, const d
     }
     int k = feature - 1;
     if (!(dxTriMeshFeatures(q->data, t->index) & (DX_TRI_EDGE_FEATURE << k))) return 0;
-    int u = q->data->neighbour[3 * t->index + k];
-    if (u < 0) return 1;
+    const dReal *nu;
+    if (t->face && t->face->near[k] != DX_TRI_NEAR_NONE) {
+        nu = t->face[t->face->near[k]].n;   // the same numbers, in leaf order
+    } else {
+        int u = q->data->neighbour[3 * t->index + k];
+        if (u < 0) return 1;
+        nu = q->data->normal + 3 * u;
+    }
     // The neighbour's in-plane direction away from itself across the edge
     // (towards this triangle's side): dir must not point back over it.
     const dReal *a = t->v[k], *b = t->v[(k + 1) % 3], *far = t->v[(k + 2) % 3];
-    const dReal *nu = q->data->normal + 3 * u;
     dReal e[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] }, m[3], af[3];
     dReal cr[3] = { nu[1] * e[2] - nu[2] * e[1], nu[2] * e[0] - nu[0] * e[2],
                     nu[0] * e[1] - nu[1] * e[0] };
@@ -851,7 +855,7 @@ static unsigned flat_edges(const dxTriQuery *q, const dxTri *t)
 {
     if (!q->data) return 0;
     const unsigned real = dxTriMeshFeatures(q->data, t->index) / DX_TRI_EDGE_FEATURE & 7;
-    if (t->coplanar & DX_TRI_COPLANAR_KNOWN) return t->coplanar & 7 & ~real;
+    if (t->face) return t->face->coplanar & 7 & ~real;
     unsigned flat = 0;
     for (int k = 0; k < 3; k++) {
         const int u = q->data->neighbour[3 * t->index + k];

@@ -105,17 +105,18 @@ typedef struct dxTriQuery {
 // (the walk points into the tree's leaf-order copy and the data's normals:
 // nothing is copied for a candidate). Its feature bits, neighbours and
 // welded vertex indices, needed only at an edge or vertex, are read from
-// the data there: dxTriFeatureNormal, dxTriPrismInit.
+// the data there (dxTriFeatureNormal, dxTriPrismInit), but for what its
+// leaf-order face holds.
 typedef struct dxTri {
     int index;
     const dReal (*v)[3];   // its three vertices
     const dReal *n;
     dReal h;   // the height of the other geom's position above its plane (the walk's)
-    // DX_TRI_COPLANAR_KNOWN with the data's dxTriLeafFace.coplanar bits (the
-    // walk's triangles), or 0: not known (dxTriPrismInit asks the data).
-    unsigned coplanar;
+    // The data's face of the triangle (dxTriLeafFace: its coplanar bits and
+    // its neighbours' faces) for the walk's triangles; NULL for others
+    // (dxTriLoad's, the mesh pair's, a heightfield's): the data is asked.
+    const dxTriLeafFace *face;
 } dxTri;
-enum { DX_TRI_COPLANAR_KNOWN = 8 };
 
 // The height of p above triangle t's plane.
 static inline dReal dxTriHeight(const dxTri *t, const dReal p[3])
