@@ -24,7 +24,9 @@
 #endif
 
 void dxTriMeshBuildTree(dxTriMeshData *d);   // trimesh_tree.c
-void dxTriMeshRefitTree(dxTriMeshData *d);
+// The tree's boxes and leaf-order copies made again for moved vertices
+// (the faces' neighbours too unless the Update kept the topology).
+void dxTriMeshRefitTree(dxTriMeshData *d, int neighbours_kept);
 void dxTriMeshFreeTree(dxTriMeshData *d);
 
 #define CHECK_DATA(d, on_fail) \
@@ -688,10 +690,11 @@ void dGeomTriMeshDataUpdate(dTriMeshDataID g)
         dxTriMeshDataChanged(g);
         return;
     }
-    if (g->tri_count > 0) derive(g, &s, weld_positions(g, &s, g->weld, 1));
+    const int kept = g->tri_count > 0 && weld_positions(g, &s, g->weld, 1);
+    if (g->tri_count > 0) derive(g, &s, kept);
     scratch_free(&s, g->vertex_count);
     if (g->tri_count == 0) return;
-    dxTriMeshRefitTree(g);
+    dxTriMeshRefitTree(g, kept);
     dxTriMeshDataChanged(g);
 }
 

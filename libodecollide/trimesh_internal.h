@@ -153,12 +153,20 @@ static inline void dxFloatBox(const dReal lo[3], const dReal hi[3], float lo_f[4
 // order[j], as bit k of coplanar whether it has a neighbour across edge k
 // whose normal is within DX_TRI_COPLANAR_COS of its own (the geometry's
 // part of "a flat edge"; the feature bits, which the user may set, are read
-// where needed), and its normal (a copy of normal[3 order[j]]).
+// where needed), its normal (a copy of normal[3 order[j]]) and, in the
+// line's room left, where its neighbours' faces are: near[k] the leaf
+// position of the neighbour across edge k less j, or DX_TRI_NEAR_NONE (no
+// neighbour, or one farther than an int16_t reaches: ask the data). A
+// sphere's edge contact reads the neighbour's normal there, in a line the
+// walk has just read (the neighbour meets the sphere's box too), instead
+// of its index and then its normal in the user's order.
+enum { DX_TRI_NEAR_NONE = INT16_MIN };
 typedef struct dxTriLeafFace {
     float box[6];
     int index;
     unsigned coplanar;
     dReal n[3];
+    int16_t near[3];
 } __attribute__((aligned(64))) dxTriLeafFace;
 
 // Make node a tree of one leaf: the count triangles order[0 ..], in the box

@@ -43,7 +43,7 @@
 enum { LEAF = DX_TRI_LEAF_MAX };
 
 void dxTriMeshBuildTree(dxTriMeshData *d);
-void dxTriMeshRefitTree(dxTriMeshData *d);
+void dxTriMeshRefitTree(dxTriMeshData *d, int neighbours_kept);
 
 uint64_t dxTriMeshNewStamp(void)
 {
@@ -78,6 +78,24 @@ static void copy_leaf_triangles(dxTriMeshData *d)
         f->index = t;
         f->coplanar = coplanar_edges(d, t);
     }
+}
+
+// Each face's near[] (dxTriLeafFace): the neighbours' leaf positions less
+// its own, from the neighbours (found again by an Update: a weld may join
+// or part them) and the leaf order.
+static void set_near_faces(dxTriMeshData *d)
+{
+    int *position = (int *)dAlloc((size_t)d->tri_count * sizeof(int));
+    for (int j = 0; j < d->tri_count; j++) position[d->order[j]] = j;
+    for (int j = 0; j < d->tri_count; j++) {
+        const int *u = d->neighbour + 3 * d->order[j];
+        for (int k = 0; k < 3; k++) {
+            const long away = u[k] < 0 ? DX_TRI_NEAR_NONE : (long)position[u[k]] - j;
+            d->leaf_faces[j].near[k] =
+                (int16_t)(away > INT16_MIN && away <= INT16_MAX ? away : DX_TRI_NEAR_NONE);
+        }
+    }
+    dFree(position, (size_t)d->tri_count * sizeof(int));
 }
 
 // The box of the triangle at leaf position j, from the copy.
@@ -424,14 +442,16 @@ void dxTriMeshBuildTree(dxTriMeshData *d)
     dFree(bin, bin_size);
     set_spans(d);
     copy_leaf_triangles(d);
+    set_near_faces(d);
     fit_boxes(d);
     d->tree_stamp = dxTriMeshNewStamp();
 }
 
-void dxTriMeshRefitTree(dxTriMeshData *d)
+void dxTriMeshRefitTree(dxTriMeshData *d, int neighbours_kept)
 {
     if (d->node_count == 0) return;
     copy_leaf_triangles(d);
+    if (!neighbours_kept) set_near_faces(d);
     fit_boxes(d);
     d->tree_stamp = dxTriMeshNewStamp();
 }

@@ -205,10 +205,12 @@ static int check_tree_fits(const dxTriMeshData *d)
 }
 
 // The walk's leaf-order faces of d are the current ones: at leaf position
-// j the index order[j], that triangle's normal bit for bit, and bit k of
+// j the index order[j], that triangle's normal bit for bit, bit k of
 // coplanar set exactly when it has a neighbour across edge k whose normal's
-// dot product with its own is over DX_TRI_COPLANAR_COS.
-static int check_leaf_faces(const dxTriMeshData *d)
+// dot product with its own is over DX_TRI_COPLANAR_COS, and near[k] that
+// neighbour's face (its leaf position less j; none without a neighbour).
+// *near_faces counts the neighbours found through near[].
+static int check_leaf_faces(const dxTriMeshData *d, int *near_faces)
 {
     for (int j = 0; j < d->tri_count; j++) {
         const dxTriLeafFace *f = &d->leaf_faces[j];
@@ -221,6 +223,10 @@ static int check_leaf_faces(const dxTriMeshData *d)
             const dReal *a = d->normal + 3 * t, *b = u >= 0 ? d->normal + 3 * u : NULL;
             if (b && a[0] * b[0] + a[1] * b[1] + a[2] * b[2] > DX_TRI_COPLANAR_COS)
                 bits |= 1u << k;
+            if (f->near[k] == DX_TRI_NEAR_NONE) continue;
+            CHECK(u >= 0 && j + f->near[k] >= 0 && j + f->near[k] < d->tri_count);
+            CHECK(f[f->near[k]].index == u);
+            ++*near_faces;
         }
         CHECK(f->coplanar == bits);
     }
@@ -325,10 +331,17 @@ static int check_update(dTriMeshDataID data, mesh *m)
     dGeomTriMeshDataUpdate(data);
     dTriMeshDataID fresh = dGeomTriMeshDataCreate();
     build_on(fresh, m);
+    int near_faces = 0;
     int fail = check_same_derived(data, fresh) || check_tree_fits(data) ||
-               check_leaf_faces(data) || check_features_by_rule(data);
+               check_leaf_faces(data, &near_faces) || check_features_by_rule(data);
     dGeomTriMeshDataDestroy(fresh);
-    return fail;
+    if (fail) return fail;
+    // An int16_t reaches every leaf position of these meshes: every
+    // neighbour is found through near[].
+    int neighbours = 0;
+    for (int i = 0; i < 3 * data->tri_count; i++) neighbours += data->neighbour[i] >= 0;
+    CHECK(data->tri_count <= INT16_MAX && near_faces == neighbours);
+    return 0;
 }
 
 // Feature bits of every kind occur in data (the comparisons are not
@@ -387,6 +400,83 @@ static int test_update_grid_matches_fresh_build(void)
         dGeomTriMeshDataDestroy(data);
         mesh_free(&m);
     }
+    return 0;
+}
+
+static int accept_all(dGeomID mesh, dGeomID other, int tri)
+{
+    (void)mesh;
+    (void)other;
+    (void)tri;
+    return 1;
+}
+
+// A sphere just over edge k of the triangle at leaf position j (off the
+// triangle across it, so that its closest point there is on the edge)
+// collided with mesh through the walk and through the per-triangle
+// callback's path (whose triangles carry no face: the data is asked): the
+// same contacts, bit for bit. *touched counts the collisions with contacts.
+static int edge_contacts_agree(const dxTriMeshData *d, dGeomID mesh, dGeomID ball, int j, int k,
+                               int *touched)
+{
+    const dReal *v = d->leaf_vertices + 9 * j, *n = d->leaf_faces[j].n;
+    const dReal *a = v + 3 * k, *b = v + 3 * ((k + 1) % 3), *c = v + 3 * ((k + 2) % 3);
+    dReal e[3], out[3], len = 0;
+    for (int i = 0; i < 3; i++) e[i] = b[i] - a[i];
+    dCalcVectorCross3(out, e, n);   // in the plane, across the edge
+    if (dCalcVectorDot3(out, c) > dCalcVectorDot3(out, a)) dScaleVector3(out, -1);
+    len = dCalcVectorLength3(out);
+    dVector3 p;
+    for (int i = 0; i < 3; i++) p[i] = (a[i] + b[i]) / 2 + 0.05 * out[i] / len + 0.3 * n[i];
+    dGeomSetPosition(ball, p[0], p[1], p[2]);
+    dContactGeom c0[8], c1[8];
+    memset(c0, 0, sizeof c0);
+    memset(c1, 0, sizeof c1);
+    dGeomTriMeshSetCallback(mesh, NULL);
+    const int n0 = dCollide(mesh, ball, 8, c0, sizeof c0[0]);
+    dGeomTriMeshSetCallback(mesh, accept_all);
+    const int n1 = dCollide(mesh, ball, 8, c1, sizeof c1[0]);
+    CHECK(n0 == n1 && memcmp(c0, c1, (size_t)n0 * sizeof c0[0]) == 0);
+    *touched += n0 > 0;
+    return 0;
+}
+
+// A grid of more triangles than an int16_t counts: the faces' near[] hold
+// the neighbours within its reach and leave the farther ones (in leaf
+// order) to the data, and an Update keeps them; a sphere over an edge
+// whose neighbour is far has the contacts of the data's path.
+static int test_far_neighbours_left_to_the_data(void)
+{
+    mesh m;
+    make_grid(&m, 260, 0);
+    dTriMeshDataID data = dGeomTriMeshDataCreate();
+    build_on(data, &m);
+    const dxTriMeshData *d = (const dxTriMeshData *)data;
+    CHECK(d->tri_count > 32768);
+    int near_faces = 0, far = 0;
+    CHECK(check_leaf_faces(d, &near_faces) == 0);
+    for (int j = 0; j < d->tri_count; j++)
+        for (int k = 0; k < 3; k++)
+            far += d->leaf_faces[j].near[k] == DX_TRI_NEAR_NONE &&
+                   d->neighbour[3 * d->order[j] + k] >= 0;
+    CHECK(near_faces > 0 && far > 0);
+    for (int i = 0; i < m.nv; i++) m.v[3 * i + 2] = 0.3 * sin(0.5 * m.v[3 * i]);
+    dGeomTriMeshDataUpdate(data);
+    int near_after = 0;
+    CHECK(check_leaf_faces(d, &near_after) == 0 && near_after == near_faces);
+    dGeomID mesh = dCreateTriMesh(0, data, NULL, NULL, NULL);
+    dGeomID ball = dCreateSphere(0, 0.4);
+    int touched = 0;
+    for (int j = 0; j < d->tri_count; j++)
+        for (int k = 0; k < 3; k++)
+            if (d->leaf_faces[j].near[k] == DX_TRI_NEAR_NONE &&
+                d->neighbour[3 * d->order[j] + k] >= 0)
+                CHECK(edge_contacts_agree(d, mesh, ball, j, k, &touched) == 0);
+    CHECK(touched > 0);
+    dGeomDestroy(ball);
+    dGeomDestroy(mesh);
+    dGeomTriMeshDataDestroy(data);
+    mesh_free(&m);
     return 0;
 }
 
@@ -456,5 +546,6 @@ const test_case test_cases[] = {
     TEST_CASE(test_update_grid_matches_fresh_build),
     TEST_CASE(test_update_welded_mesh_matches_fresh_build),
     TEST_CASE(test_update_collapses_match_fresh_build),
+    TEST_CASE(test_far_neighbours_left_to_the_data),
     TEST_END,
 };

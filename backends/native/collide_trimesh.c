@@ -40,7 +40,7 @@ void dxTriLoad(const dxTriMeshData *d, int t, dxTriOwn *out)
     out->t.index = t;
     out->t.v = (const dReal(*)[3])out->v;
     out->t.n = out->n;
-    out->t.coplanar = 0;
+    out->t.face = NULL;
 }
 
 static dReal dist2(const dReal a[3], const dReal b[3])
@@ -708,8 +708,7 @@ static void walk_leaves(dxTriQuery *q, const int *leaf, int n, const off_box *b,
             const dReal *v = lv + 9 * j;
             if (off == 2 && tri_off_box(v, b)) continue;
             const int t = f->index;
-            dxTri tri = { .index = t, .v = (const dReal(*)[3])v, .n = f->n,
-                          .coplanar = f->coplanar | DX_TRI_COPLANAR_KNOWN };
+            dxTri tri = { .index = t, .v = (const dReal(*)[3])v, .n = f->n, .face = f };
             if (!height_passes(q, &tri, reach)) continue;
             // A degenerate triangle's height is 0 (or NaN): only then is its
             // normal looked at.
@@ -798,57 +797,6 @@ int dxTriMeshCollide(dxGeom *mesh, dxGeom *other, int flags, dContactGeom *c, in
 
 // ---- triangle geometry --------------------------------------------------------
 
-int dxTriClosestPoint(const dxTri *t, const dReal p[3], dReal q[3])
-{
-    // Regions of the triangle's plane, tested in turn with the
-    // barycentric signs (vertex, edge, then face regions).
-    const dReal *a = t->v[0], *b = t->v[1], *c = t->v[2];
-    dReal ab[3], ac[3], ap[3], bp[3], cp[3];
-    for (int i = 0; i < 3; i++) {
-        ab[i] = b[i] - a[i];
-        ac[i] = c[i] - a[i];
-        ap[i] = p[i] - a[i];
-        bp[i] = p[i] - b[i];
-        cp[i] = p[i] - c[i];
-    }
-    dReal d1 = dx_dot(ab, ap), d2 = dx_dot(ac, ap);
-    if (d1 <= 0 && d2 <= 0) {
-        for (int i = 0; i < 3; i++) q[i] = a[i];
-        return 4;
-    }
-    dReal d3 = dx_dot(ab, bp), d4 = dx_dot(ac, bp);
-    if (d3 >= 0 && d4 <= d3) {
-        for (int i = 0; i < 3; i++) q[i] = b[i];
-        return 5;
-    }
-    dReal vc = d1 * d4 - d3 * d2;
-    if (vc <= 0 && d1 >= 0 && d3 <= 0) {
-        dReal s = d1 / (d1 - d3);
-        for (int i = 0; i < 3; i++) q[i] = a[i] + s * ab[i];
-        return 1;
-    }
-    dReal d5 = dx_dot(ab, cp), d6 = dx_dot(ac, cp);
-    if (d6 >= 0 && d5 <= d6) {
-        for (int i = 0; i < 3; i++) q[i] = c[i];
-        return 6;
-    }
-    dReal vb = d5 * d2 - d1 * d6;
-    if (vb <= 0 && d2 >= 0 && d6 <= 0) {
-        dReal s = d2 / (d2 - d6);
-        for (int i = 0; i < 3; i++) q[i] = a[i] + s * ac[i];
-        return 3;   // edge 2: v2 to v0
-    }
-    dReal va = d3 * d6 - d5 * d4;
-    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
-        dReal s = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-        for (int i = 0; i < 3; i++) q[i] = b[i] + s * (c[i] - b[i]);
-        return 2;
-    }
-    dReal denom = 1 / (va + vb + vc), v = vb * denom, w = vc * denom;
-    for (int i = 0; i < 3; i++) q[i] = a[i] + v * ab[i] + w * ac[i];
-    return 0;
-}
-
 int dxTriFeatureNormal(const dxTriQuery *q, const dxTri *t, int feature, const dReal dir[3])
 {
     if (feature == 0) return 0;
@@ -869,12 +817,17 @@ int dxTriFeatureNormal(const dxTriQuery *q, const dxTri *t, int feature, const d
     }
     int k = feature - 1;
     if (!(dxTriMeshFeatures(q->data, t->index) & (DX_TRI_EDGE_FEATURE << k))) return 0;
-    int u = q->data->neighbour[3 * t->index + k];
-    if (u < 0) return 1;
+    const dReal *nu;
+    if (t->face && t->face->near[k] != DX_TRI_NEAR_NONE) {
+        nu = t->face[t->face->near[k]].n;   // the same numbers, in leaf order
+    } else {
+        int u = q->data->neighbour[3 * t->index + k];
+        if (u < 0) return 1;
+        nu = q->data->normal + 3 * u;
+    }
     // The neighbour's in-plane direction away from itself across the edge
     // (towards this triangle's side): dir must not point back over it.
     const dReal *a = t->v[k], *b = t->v[(k + 1) % 3], *far = t->v[(k + 2) % 3];
-    const dReal *nu = q->data->normal + 3 * u;
     dReal e[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] }, m[3], af[3];
     dReal cr[3] = { nu[1] * e[2] - nu[2] * e[1], nu[2] * e[0] - nu[0] * e[2],
                     nu[0] * e[1] - nu[1] * e[0] };
@@ -902,7 +855,7 @@ static unsigned flat_edges(const dxTriQuery *q, const dxTri *t)
 {
     if (!q->data) return 0;
     const unsigned real = dxTriMeshFeatures(q->data, t->index) / DX_TRI_EDGE_FEATURE & 7;
-    if (t->coplanar & DX_TRI_COPLANAR_KNOWN) return t->coplanar & 7 & ~real;
+    if (t->face) return t->face->coplanar & 7 & ~real;
     unsigned flat = 0;
     for (int k = 0; k < 3; k++) {
         const int u = q->data->neighbour[3 * t->index + k];

@@ -105,17 +105,18 @@ typedef struct dxTriQuery {
 // (the walk points into the tree's leaf-order copy and the data's normals:
 // nothing is copied for a candidate). Its feature bits, neighbours and
 // welded vertex indices, needed only at an edge or vertex, are read from
-// the data there: dxTriFeatureNormal, dxTriPrismInit.
+// the data there (dxTriFeatureNormal, dxTriPrismInit), but for what its
+// leaf-order face holds.
 typedef struct dxTri {
     int index;
     const dReal (*v)[3];   // its three vertices
     const dReal *n;
     dReal h;   // the height of the other geom's position above its plane (the walk's)
-    // DX_TRI_COPLANAR_KNOWN with the data's dxTriLeafFace.coplanar bits (the
-    // walk's triangles), or 0: not known (dxTriPrismInit asks the data).
-    unsigned coplanar;
+    // The data's face of the triangle (dxTriLeafFace: its coplanar bits and
+    // its neighbours' faces) for the walk's triangles; NULL for others
+    // (dxTriLoad's, the mesh pair's, a heightfield's): the data is asked.
+    const dxTriLeafFace *face;
 } dxTri;
-enum { DX_TRI_COPLANAR_KNOWN = 8 };
 
 // The height of p above triangle t's plane.
 static inline dReal dxTriHeight(const dxTri *t, const dReal p[3])
@@ -195,11 +196,64 @@ void dxTriMeshWrite(dxTriQuery *q, int n, dContactGeom *c, int skip);
 // Load triangle t from the data into out (its copies, out->t pointing at them).
 void dxTriLoad(const dxTriMeshData *d, int t, dxTriOwn *out);
 
-// The closest point of triangle t to p: into q; returns the feature it is
-// on: 0 the face, 1 + k edge k (v_k to v_k+1), 4 + k vertex k.
-int dxTriClosestPoint(const dxTri *t, const dReal p[3], dReal q[3]);
+// p less the closest point of triangle t to p: into d; returns the feature
+// the point is on: 0 the face, 1 + k edge k (v_k to v_k+1), 4 + k vertex k.
+// Inline, and the offset rather than the point: at a vertex it is p less
+// the vertex, made anyway, and the sphere's test reads it at once from
+// registers (a point copied out with 8-byte stores and read back with a
+// 16-byte load waited until the stores reached the cache).
+static inline int dxTriClosestOffset(const dxTri *t, const dReal p[3], dReal d[3])
+{
+    // Regions of the triangle's plane, tested in turn with the
+    // barycentric signs (vertex, edge, then face regions).
+    const dReal *a = t->v[0], *b = t->v[1], *c = t->v[2];
+    dReal ab[3], ac[3], ap[3], bp[3], cp[3];
+    for (int i = 0; i < 3; i++) {
+        ab[i] = b[i] - a[i];
+        ac[i] = c[i] - a[i];
+        ap[i] = p[i] - a[i];
+        bp[i] = p[i] - b[i];
+        cp[i] = p[i] - c[i];
+    }
+    dReal d1 = dx_dot(ab, ap), d2 = dx_dot(ac, ap);
+    if (d1 <= 0 && d2 <= 0) {
+        for (int i = 0; i < 3; i++) d[i] = ap[i];
+        return 4;
+    }
+    dReal d3 = dx_dot(ab, bp), d4 = dx_dot(ac, bp);
+    if (d3 >= 0 && d4 <= d3) {
+        for (int i = 0; i < 3; i++) d[i] = bp[i];
+        return 5;
+    }
+    dReal vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+        dReal s = d1 / (d1 - d3);
+        for (int i = 0; i < 3; i++) d[i] = p[i] - (a[i] + s * ab[i]);
+        return 1;
+    }
+    dReal d5 = dx_dot(ab, cp), d6 = dx_dot(ac, cp);
+    if (d6 >= 0 && d5 <= d6) {
+        for (int i = 0; i < 3; i++) d[i] = cp[i];
+        return 6;
+    }
+    dReal vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+        dReal s = d2 / (d2 - d6);
+        for (int i = 0; i < 3; i++) d[i] = p[i] - (a[i] + s * ac[i]);
+        return 3;   // edge 2: v2 to v0
+    }
+    dReal va = d3 * d6 - d5 * d4;
+    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
+        dReal s = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        for (int i = 0; i < 3; i++) d[i] = p[i] - (b[i] + s * (c[i] - b[i]));
+        return 2;
+    }
+    dReal denom = 1 / (va + vb + vc), v = vb * denom, w = vc * denom;
+    for (int i = 0; i < 3; i++) d[i] = p[i] - (a[i] + v * ab[i] + w * ac[i]);
+    return 0;
+}
 
-// How a contact at `feature` (as dxTriClosestPoint) leaving along the unit
+// How a contact at `feature` (as dxTriClosestOffset) leaving along the unit
 // direction dir is made: 1 along dir (a convex or border edge or vertex,
 // dir within its region); 0 not a feature (the face; a flat or concave edge
 // or vertex, where a neighbour face gives the contact unless the point is

@@ -55,16 +55,14 @@ static void cross3(dReal out[3], const dReal a[3], const dReal b[3])
 }
 
 // A ball of radius r at p (a sphere's centre, or a point of a capsule's
-// axis) against the closest point on_tri of t, on feature f (as
-// dxTriClosestPoint): along the face normal on the face, or over a flat or
+// axis) against the closest point of t, p - d, on feature f (as
+// dxTriClosestOffset): along the face normal on the face, or over a flat or
 // concave edge or vertex when p is (within rounding) over the triangle's
 // border; along the direction from a convex feature within its region;
 // else none. Returns 1 if a contact was added.
-static int ball_contact(dxTriQuery *q, const dxTri *t, const dReal p[3], dReal r,
-                        const dReal on_tri[3], int f)
+static inline int ball_contact(dxTriQuery *q, const dxTri *t, const dReal p[3], dReal r,
+                               const dReal d[3], int f)
 {
-    dReal d[3];
-    sub3(d, p, on_tri);
     dReal dist2 = dx_dot(d, d);
     if (dist2 > r * r) return 0;
     dReal dist = dSqrt(dist2), h = dxTriHeight(t, p), dir[3] = { t->n[0], t->n[1], t->n[2] };
@@ -97,9 +95,9 @@ static int ball_contact(dxTriQuery *q, const dxTri *t, const dReal p[3], dReal r
 static int sphere_test(dxTriQuery *q, const dxTri *t)
 {
     dReal r = ((const dxSphere *)q->other)->radius;
-    dReal on_tri[3];
-    int f = dxTriClosestPoint(t, q->pos, on_tri);
-    return ball_contact(q, t, q->pos, r, on_tri, f);
+    dReal d[3];
+    int f = dxTriClosestOffset(t, q->pos, d);
+    return ball_contact(q, t, q->pos, r, d, f);
 }
 
 // The mean of the n contacts' normals weighted by their depths, into N;
@@ -255,7 +253,9 @@ static int capsule_test(dxTriQuery *q, const dxTri *t)
         }
     }
     if (best > r * r || dxTriHeight(t, ps) < 0) return 0;
-    return ball_contact(q, t, ps, r, pt, feature);
+    dReal d[3];
+    sub3(d, ps, pt);
+    return ball_contact(q, t, ps, r, d, feature);
 }
 
 int dxCollideTriMeshCapsule(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
