@@ -515,15 +515,15 @@ static void hash_collide(dxSpace *s, void *data, dNearCallback *cb)
     // Geoms of one level that share a cell: each geom's entries in space
     // order, against the entries after it in the cell's list (earlier geoms).
     // Only the entries that have such a next are visited, from the slot's
-    // bits (a geom alone in its cells costs one byte and one branch).
+    // bits. (The geom's first line is read first all the same: the coarser
+    // levels' queries below read it again, and waited for it when the walk
+    // passed over the geoms alone in their cells.)
     const dxHashEntry *en = hs->cells.entries;
     for (int i = 0; i < s->count; i++) {
         const int si = hs->slot_of[i];
-        unsigned followed = hs->cells.followed[si];
-        if (!followed) continue;
         const hash_slot *sl = &hs->slots[si];
         if (!enabled(sl->g)) continue;
-        for (; followed; followed &= followed - 1) {
+        for (unsigned followed = hs->cells.followed[si]; followed; followed &= followed - 1) {
             const int e = si * PER_GEOM + __builtin_ctz(followed);
             for (int f = en[e].next; f >= 0; f = en[f].next)
                 if ((en[f].lowest | en[e].lowest) == ALL_AXES) test_pair(sl->g, en[f].g, data, cb);
