@@ -514,20 +514,14 @@ static void hash_collide(dxSpace *s, void *data, dNearCallback *cb)
     }
     // Geoms of one level that share a cell: each geom's entries in space
     // order, against the entries after it in the cell's list (earlier geoms).
-    // Only the entries that have such a next are visited, from the slot's
-    // bits. (The geom's first line is read first all the same: the coarser
-    // levels' queries below read it again, and waited for it when the walk
-    // passed over the geoms alone in their cells.)
     const dxHashEntry *en = hs->cells.entries;
     for (int i = 0; i < s->count; i++) {
         const int si = hs->slot_of[i];
         const hash_slot *sl = &hs->slots[si];
         if (!enabled(sl->g)) continue;
-        for (unsigned followed = hs->cells.followed[si]; followed; followed &= followed - 1) {
-            const int e = si * PER_GEOM + __builtin_ctz(followed);
+        for (int e = si * PER_GEOM; e < si * PER_GEOM + sl->n; e++)
             for (int f = en[e].next; f >= 0; f = en[f].next)
                 if ((en[f].lowest | en[e].lowest) == ALL_AXES) test_pair(sl->g, en[f].g, data, cb);
-        }
     }
     // Each geom against the coarser levels.
     for (int li = 0; li < hs->n_levels; li++) {

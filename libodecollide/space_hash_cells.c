@@ -100,18 +100,10 @@ void dxHashCellsInit(dxHashCells *hc)
     hc->cells = &no_cells;
 }
 
-// The geom slots the entries have room for.
-static int geom_slots(const dxHashCells *hc) { return hc->entries_cap / DX_HASH_CELLS_PER_GEOM; }
-
 void dxHashCellsReserve(dxHashCells *hc, int slots)
 {
-    const int old = geom_slots(hc);
     hc->entries = grow(hc->entries, &hc->entries_cap, slots * DX_HASH_CELLS_PER_GEOM,
                        sizeof *hc->entries);
-    const int now = geom_slots(hc);
-    if (now == old) return;
-    hc->followed = dRealloc(hc->followed, (size_t)old, (size_t)now);
-    memset(hc->followed + old, 0, (size_t)(now - old));   // their entries are in no cell
 }
 
 // Cell (level, c) in empty slot i, the first empty slot of its probe (the
@@ -141,16 +133,11 @@ void dxHashCellsLink(dxHashCells *hc, int e, int level, const int64_t c[3])
     const int ci = hc->cells[i].head >= 0 ? (int)i : add_at(hc, i, level, c);
     dxHashEntry *en = hc->entries;
     const int order = en[e].g->space_index;
-    int *p = &hc->cells[ci].head, before = -1;   // before: the entry whose next p is
-    while (*p >= 0 && en[*p].g->space_index > order) {
-        before = *p;
-        p = &en[*p].next;
-    }
+    int *p = &hc->cells[ci].head;
+    while (*p >= 0 && en[*p].g->space_index > order) p = &en[*p].next;
     en[e].next = *p;
     en[e].cell = ci;
     *p = e;
-    dxHashCellsMarkFollowed(hc, e, en[e].next >= 0);
-    if (before >= 0) dxHashCellsMarkFollowed(hc, before, 1);
 }
 
 // Empty slot `hole`: each later slot of its run whose probe from its hash
@@ -174,14 +161,9 @@ void dxHashCellsUnlink(dxHashCells *hc, int e)
 {
     dxHashEntry *en = hc->entries;
     const int ci = en[e].cell;
-    int *p = &hc->cells[ci].head, before = -1;   // before: the entry whose next p is
-    while (*p != e) {
-        before = *p;
-        p = &en[*p].next;
-    }
+    int *p = &hc->cells[ci].head;
+    while (*p != e) p = &en[*p].next;
     *p = en[e].next;
-    dxHashCellsClearFollowed(hc, e);   // (in no cell)
-    if (before >= 0 && *p < 0) dxHashCellsClearFollowed(hc, before);   // now last in the cell
     if (hc->cells[ci].head < 0) remove_slot(hc, (unsigned)ci);
 }
 
@@ -200,12 +182,10 @@ void dxHashCellsRestart(dxHashCells *hc, int entries)
     hc->live = 0;
     hc->n_used = 0;
     hc->used_all = 1;
-    memset(hc->followed, 0, (size_t)geom_slots(hc));
 }
 
 void dxHashCellsFree(dxHashCells *hc)
 {
-    dFree(hc->followed, (size_t)geom_slots(hc));
     dFree(hc->entries, (size_t)hc->entries_cap * sizeof *hc->entries);
     if (hc->mask) dFree(hc->cells_mem, table_bytes(hc->mask));
     dFree(hc->used, (size_t)hc->used_cap * sizeof *hc->used);

@@ -42,8 +42,6 @@ typedef struct dxHashCell {
 typedef struct dxHashCells {
     dxHashEntry *entries;         // DX_HASH_CELLS_PER_GEOM per geom slot
     int entries_cap;
-    unsigned char *followed;      // per geom slot: bit k set when its entry k is in a cell
-                                  // and has a next entry (an earlier geom shares the cell)
     dxHashCell *cells;            // mask + 1 slots, aligned to 64 bytes (before first
     void *cells_mem;              // use, one empty slot not allocated); their allocation
     int mask;                     // a power of two less one
@@ -103,24 +101,9 @@ static inline int dxHashCellsFind(const dxHashCells *hc, int level, const int64_
     }
 }
 
-// Set entry e's bit in `followed` if on is 1 (an entry in no cell has it
-// clear); clear it.
-static inline void dxHashCellsMarkFollowed(dxHashCells *hc, int e, unsigned on)
-{
-    hc->followed[(unsigned)e / DX_HASH_CELLS_PER_GEOM] |=
-        (unsigned char)(on << (unsigned)e % DX_HASH_CELLS_PER_GEOM);
-}
-
-static inline void dxHashCellsClearFollowed(dxHashCells *hc, int e)
-{
-    hc->followed[(unsigned)e / DX_HASH_CELLS_PER_GEOM] &=
-        (unsigned char)~(1u << (unsigned)e % DX_HASH_CELLS_PER_GEOM);
-}
-
 // Record entry e (its g and lowest set) first in cell (level, c), after
 // dxHashCellsRestart: the cells are being filled in space order, so its geom
-// is the latest of the cell's, and there is room. (The restart cleared
-// every bit of `followed`: e's is only set.)
+// is the latest of the cell's, and there is room.
 static inline void dxHashCellsPushFresh(dxHashCells *hc, int e, int level, const int64_t c[3])
 {
     unsigned i = dxHashCellBucket(level, c, hc->mask);
@@ -136,7 +119,6 @@ static inline void dxHashCellsPushFresh(dxHashCells *hc, int e, int level, const
     }
     hc->entries[e].next = cell->head;
     hc->entries[e].cell = (int)i;
-    dxHashCellsMarkFollowed(hc, e, cell->head >= 0);
     cell->head = e;
 }
 
