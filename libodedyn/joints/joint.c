@@ -6,8 +6,11 @@
 // constraint rows are in joint_<type>.c.
 
 #include "objects_internal.h"
+#include "joint_contact.h"
 #include "joint_group.h"
 #include "pool.h"
+
+#include <stddef.h>
 
 #include <ode/memory.h>
 
@@ -149,6 +152,38 @@ dJointGroupID dJointGroupCreate(int max_size)
     return g;
 }
 
+// dJointGroupEmpty asks for the joint this many places on in its walk while
+// it unlinks the current one: the joints' lines have left the caches since
+// collision made them, and each joint's address comes from the one before.
+#define EMPTY_AHEAD 8
+
+// Ask for the lines dJointGroupEmpty reads and writes of the joint
+// EMPTY_AHEAD places after j in its newest-first walk, where that joint lies
+// if it and those between are contacts, as nearly all of a group's are: a
+// group's joints are carved one after another from its chunks. (Only a
+// hint: elsewhere it asks for a line in vain, or, hitting no mapping,
+// nothing at all.)
+static inline void prefetch_older(const dxJoint *j)
+{
+#if defined(__GNUC__)
+    const uintptr_t at = (uintptr_t)j - EMPTY_AHEAD * dxJointCarveSize(sizeof(dxJointContact));
+    __builtin_prefetch((const void *)at);   // (the span's lines: three at most)
+    __builtin_prefetch((const void *)(at + 64));
+    __builtin_prefetch((const void *)(at + offsetof(dxJoint, node) + sizeof j->node - 1));
+#else
+    (void)j;
+#endif
+}
+
+// Unlink j, met in dJointGroupEmpty's walk, from its bodies' lists and poison
+// its handle.
+static inline void empty_joint(dxJoint *j)
+{
+    prefetch_older(j);
+    unlink_bodies(j);
+    j->hdr.magic = DX_MAGIC_DEAD;
+}
+
 void dJointGroupEmpty(dJointGroupID g)
 {
     CHECK_GROUP(g, return);
@@ -161,12 +196,10 @@ void dJointGroupEmpty(dJointGroupID g)
     while (j) {
         dxJoint *const newest = j;
         int run = 1;
-        unlink_bodies(j);
-        j->hdr.magic = DX_MAGIC_DEAD;
+        empty_joint(j);
         while (j->group_prev && j->next == j->group_prev) {
             j = j->next;
-            unlink_bodies(j);
-            j->hdr.magic = DX_MAGIC_DEAD;
+            empty_joint(j);
             run++;
         }
         struct dxWorld *w = j->world;

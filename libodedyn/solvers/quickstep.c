@@ -298,6 +298,16 @@ QS_INLINE void prefetch_seed(const struct dxBody *b)
     prefetch_span(b->lvel, (size_t)((const char *)(b->avel + 3) - (const char *)b->lvel));
 }
 
+// Ask for the lines the set-up reads of body b (island_seed,
+// dxIslandPrepareAt): from its mass to its gyroscopic fields, every other
+// line (the second-level cache's prefetcher brings each one's pair).
+QS_INLINE void prefetch_setup(const struct dxBody *b)
+{
+    const char *p = (const char *)&b->mass, *end = (const char *)(&b->gyro_pending + 1);
+    for (; p < end; p += 128) qs_prefetch(p);
+    qs_prefetch(end - 1);
+}
+
 // A seed from the bits of the island's positions and velocities (FNV-1a
 // over their words, in three independent lanes): the same state gives the
 // same seed.
@@ -738,10 +748,10 @@ int dWorldQuickStep(dWorldID w, dReal stepsize)
     int *list = DX_ARENA_ARRAY(a, int, count + 1);
     int *tmp = DX_ARENA_ARRAY(a, int, count + 1);
     for (int i = 0; i < count; i++) {
-        // The next island's first body, which island_seed's look-ahead
-        // does not reach (most islands of a rain or a heap are one or two
-        // bodies).
-        if (i + 1 < count) prefetch_seed(islands[i + 1].bodies[0]);
+        // The next island's first body, which island_seed's and
+        // dxIslandPrepareAt's look-ahead does not reach (most islands of a
+        // rain or a heap are one or two bodies).
+        if (i + 1 < count) prefetch_setup(islands[i + 1].bodies[0]);
         // (an island without joints has no rows to shuffle)
         parts[i].seed = islands[i].nj > 0 ? island_seed(&islands[i]) : 0;
         const int body0 = sys.nbodies;   // where dxQuickBuild puts the island's bodies
