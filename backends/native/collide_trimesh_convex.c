@@ -993,24 +993,6 @@ static inline unsigned sides_from_last(unsigned sides)
 // part is a convex polygon, fk affine: its low corners and the points where
 // the face's edges cross the level decide. *away and *within come in with
 // the sides its low corners allow (the sides left out are not looked at).
-#if defined(__SSE2__) && !defined(dSINGLE)
-// At the point u + s (x - u) of a face's edge (s: the low lane of s), the
-// sides' measures fk interpolated (sides 0 and 1 side by side, the same
-// sums; side 2 alone): the bits of the sides it is not beyond cleared from
-// *away, of those it is not within lim of from *within.
-static inline void crossing_sides(const dReal fk[3][8], const dReal lim[3], int u, int x,
-                                  __m128d s, unsigned *away, unsigned *within)
-{
-    const __m128d fu = _mm_set_pd(fk[1][u], fk[0][u]), fx = _mm_set_pd(fk[1][x], fk[0][x]);
-    const __m128d fc = _mm_add_pd(fu, _mm_mul_pd(_mm_unpacklo_pd(s, s), _mm_sub_pd(fx, fu)));
-    const dReal fc2 = fk[2][u] + _mm_cvtsd_f64(s) * (fk[2][x] - fk[2][u]);
-    *away &= (unsigned)_mm_movemask_pd(_mm_cmplt_pd(fc, _mm_setzero_pd())) |
-             (unsigned)(fc2 < 0) << 2;
-    *within &= (unsigned)_mm_movemask_pd(_mm_cmpge_pd(fc, _mm_loadu_pd(lim))) |
-               (unsigned)(fc2 >= lim[2]) << 2;
-}
-#endif
-
 static void low_part_sides(int f, const dReal hv[8], unsigned low, dReal H,
                            const dReal fk[3][8], const dReal lim[3], unsigned *away,
                            unsigned *within)
@@ -1021,35 +1003,25 @@ static void low_part_sides(int f, const dReal hv[8], unsigned low, dReal H,
     // next), looked up; at each, the three sides' bits cleared by masks (a
     // bit already clear stays clear), so that only the loop over the
     // crossings (two but for rounding) branches.
-#if defined(__SSE2__) && !defined(dSINGLE)
-    // The crossings come in pairs (going round the face, the corners'
-    // lowness changes an even number of times): a pair's two ratios in one
-    // division (each lane the same quotient as one alone), issued before
-    // either is used.
-    const __m128d level = _mm_set1_pd(H);
-    for (unsigned cross = face_crossings[f][low]; cross;) {
-        const int i0 = __builtin_ctz(cross);
-        cross &= cross - 1;
-        const int i1 = __builtin_ctz(cross);
-        cross &= cross - 1;
-        const int u0 = fv[i0], x0 = fv[(i0 + 1) & 3], u1 = fv[i1], x1 = fv[(i1 + 1) & 3];
-        const __m128d hu = _mm_set_pd(hv[u1], hv[u0]);
-        const __m128d s =
-            _mm_div_pd(_mm_sub_pd(level, hu), _mm_sub_pd(_mm_set_pd(hv[x1], hv[x0]), hu));
-        crossing_sides(fk, lim, u0, x0, s, &a, &w);
-        crossing_sides(fk, lim, u1, x1, _mm_unpackhi_pd(s, s), &a, &w);
-    }
-#else
     for (unsigned cross = face_crossings[f][low]; cross; cross &= cross - 1) {
         const int i = __builtin_ctz(cross), u = fv[i], x = fv[(i + 1) & 3];
         dReal s = (H - hv[u]) / (hv[x] - hv[u]);
+#if defined(__SSE2__) && !defined(dSINGLE)
+        // Sides 0 and 1 side by side (the same sums), side 2 alone.
+        const __m128d fu = _mm_set_pd(fk[1][u], fk[0][u]), fx = _mm_set_pd(fk[1][x], fk[0][x]);
+        const __m128d fc = _mm_add_pd(fu, _mm_mul_pd(_mm_set1_pd(s), _mm_sub_pd(fx, fu)));
+        const dReal fc2 = fk[2][u] + s * (fk[2][x] - fk[2][u]);
+        a &= (unsigned)_mm_movemask_pd(_mm_cmplt_pd(fc, _mm_setzero_pd())) | (unsigned)(fc2 < 0) << 2;
+        w &= (unsigned)_mm_movemask_pd(_mm_cmpge_pd(fc, _mm_loadu_pd(lim))) |
+             (unsigned)(fc2 >= lim[2]) << 2;
+#else
         for (int k = 0; k < 3; k++) {
             dReal fc = fk[k][u] + s * (fk[k][x] - fk[k][u]);
             a &= ~((unsigned)!(fc < 0) << k);
             w &= ~((unsigned)!(fc >= lim[k]) << k);
         }
-    }
 #endif
+    }
     *away = a;
     *within = w;
 }
