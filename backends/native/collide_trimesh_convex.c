@@ -330,18 +330,6 @@ static inline __attribute__((always_inline)) dReal clip_measure(const dReal *x,
 #endif
 }
 
-#if defined(__SSE2__) && !defined(dSINGLE)
-// The point a + s (b - a) into x (s: the low lane of s), x and y side by
-// side: the same sums as one coordinate at a time.
-static inline __attribute__((always_inline)) void made_point(const dReal *a, const dReal *b,
-                                                             __m128d s, dReal *x)
-{
-    const __m128d a01 = _mm_loadu_pd(a), s2 = _mm_unpacklo_pd(s, s);
-    _mm_storeu_pd(x, _mm_add_pd(a01, _mm_mul_pd(s2, _mm_sub_pd(_mm_loadu_pd(b), a01))));
-    x[2] = a[2] + _mm_cvtsd_f64(s) * (b[2] - a[2]);
-}
-#endif
-
 // Keep the part of the polygon pt (n points, tags tp) where
 // m . (x - o) >= -slack, into npt and ntp: a point kept keeps its pointer
 // and tag, a point made on this boundary (into c->room) gets the tag
@@ -399,26 +387,15 @@ clip_polygon(const dReal *const *pt, const int *tp, int n, const dReal m[3], con
     if (!crossings && first_in) return -1;   // every point kept
     // The points made on the crossing edges, into their room in the same
     // order (two for a convex polygon).
-    ptrdiff_t e = 0;
-#if defined(__SSE2__) && !defined(dSINGLE)
-    // Two crossings' ratios in one division, issued before either point
-    // needs its ratio (each lane the same quotient as one alone).
-    for (; e + 1 < crossings; e += 2) {
-        const int i0 = from[e], i1 = from[e + 1];
-        const int n0 = i0 + 1 < n ? i0 + 1 : 0, n1 = i1 + 1 < n ? i1 + 1 : 0;
-        const __m128d fa = _mm_set_pd(f[i1], f[i0]);
-        const __m128d s = _mm_div_pd(fa, _mm_sub_pd(fa, _mm_set_pd(f[n1], f[n0])));
-        made_point(pt[i0], pt[n0], s, c->room[c->made_count]);
-        made_point(pt[i1], pt[n1], _mm_unpackhi_pd(s, s), c->room[c->made_count + 1]);
-        c->made_count += 2;
-    }
-#endif
-    for (; e < crossings; e++) {
+    for (ptrdiff_t e = 0; e < crossings; e++) {
         const int i = from[e], next = i + 1 < n ? i + 1 : 0;
         const dReal *a = pt[i], *b = pt[next], fa = f[i], fb = f[next];
         dReal s = fa / (fa - fb), *x = c->room[c->made_count++];
 #if defined(__SSE2__) && !defined(dSINGLE)
-        made_point(a, b, _mm_set_sd(s), x);
+        const __m128d a01 = _mm_loadu_pd(a);   // x and y side by side: the same sums
+        _mm_storeu_pd(x, _mm_add_pd(a01, _mm_mul_pd(_mm_set1_pd(s),
+                                                    _mm_sub_pd(_mm_loadu_pd(b), a01))));
+        x[2] = a[2] + s * (b[2] - a[2]);
 #else
         for (int j = 0; j < 3; j++) x[j] = a[j] + s * (b[j] - a[j]);
 #endif
