@@ -388,7 +388,9 @@ clip_polygon(const dReal *const *pt, const int *tp, int n, const dReal m[3], con
     // The points made on the crossing edges, into their room in the same
     // order (two for a convex polygon).
     for (ptrdiff_t e = 0; e < crossings; e++) {
-        const int i = from[e], next = i + 1 < n ? i + 1 : 0;
+        // (The edge's end wraps to 0 after the last point: masked, not
+        // branched on; which edge is the closing one follows the data.)
+        const int i = from[e], next = (i + 1) & -(i + 1 < n);
         const dReal *a = pt[i], *b = pt[next], fa = f[i], fb = f[next];
         dReal s = fa / (fa - fb), *x = c->room[c->made_count++];
 #if defined(__SSE2__) && !defined(dSINGLE)
