@@ -712,6 +712,10 @@ static int heights_passing(const dxTriQuery *q, int *cand, int m, const off_box 
                            dReal *h)
 {
     const dxTriMeshData *d = q->data;
+    // The candidates' vertices asked for at once: the tests below would
+    // otherwise wait for them one after another.
+    for (int i = 0; i < m; i++)
+        __builtin_prefetch(d->leaf_vertices + 9 * (cand[i] & (WALK_UNSURE - 1)));
     int kept = 0;
     for (int i = 0; i < m; i++) {
         const int j = cand[i] & (WALK_UNSURE - 1);
