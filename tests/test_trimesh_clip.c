@@ -114,7 +114,7 @@ static int test_clip_convex(void)
     for (int trial = 0; trial < 20000; trial++) {
         dReal v[3][3], n[3];
         random_triangle(v, n, 1.0);
-        const dxTri t = { .index = 0, .v = (const dReal(*)[3])v, .n = n, .h = 0, .coplanar = 0 };
+        const dxTri t = { .index = 0, .v = (const dReal(*)[3])v, .n = n, .h = 0, .face = NULL };
         const int count = 3 + trial % 20;
         double angle[32];
         for (int i = 0; i < count; i++) angle[i] = rnd(0, 6.283185307179586);
@@ -148,7 +148,7 @@ static int test_clip_special(void)
     for (int trial = 0; trial < 5000; trial++) {
         dReal v[3][3], n[3];
         random_triangle(v, n, 1.0);
-        const dxTri t = { .index = 0, .v = (const dReal(*)[3])v, .n = n, .h = 0, .coplanar = 0 };
+        const dxTri t = { .index = 0, .v = (const dReal(*)[3])v, .n = n, .h = 0, .face = NULL };
         const dReal g[3] = { (v[0][0] + v[1][0] + v[2][0]) / 3, (v[0][1] + v[1][1] + v[2][1]) / 3,
                              (v[0][2] + v[1][2] + v[2][2]) / 3 };
         dReal a[DX_TRI_POLY_MAX][3];
