@@ -675,8 +675,10 @@ static inline int tri_meets_box_f(const float *fb, const off_box_f *f, int *unsu
 #endif
 }
 
-// The walk's candidates: at most DX_TRI_LEAF_MAX triangles a leaf.
-enum { WALK_TRIS_MAX = DX_TRI_LEAF_MAX * 256 };
+// The walk's candidates: at most DX_TRI_LEAF_MAX triangles a leaf; a
+// candidate's leaf position with this bit where only the exact box test
+// can say whether it meets the query.
+enum { WALK_TRIS_MAX = DX_TRI_LEAF_MAX * 256, WALK_UNSURE = 1 << 30 };
 
 // The leaf positions of the triangles of the n leaves (node * 4 + slot)
 // whose float boxes (the data's leaf_faces) may meet fb, in leaf order,
@@ -684,7 +686,6 @@ enum { WALK_TRIS_MAX = DX_TRI_LEAF_MAX * 256 };
 // returns their count. Each leaf's DX_TRI_LEAF_MAX slots are looked at
 // (past its last triangle, that one again, counted for nothing): no
 // branch on a leaf's count or a triangle's box.
-enum { WALK_UNSURE = 1 << 30 };
 static int boxes_meeting(const dxTriMeshData *d, const int *leaf, int n, const off_box_f *fb,
                          int *cand)
 {
