@@ -653,33 +653,98 @@ static inline void off_box_f_set(off_box_f *f, const dReal lo[3], const dReal hi
 }
 
 // For the triangle with the float box fb (lo, then hi; the number after it
-// is read as a float, and counts for nothing): 0 if it is not off f, 1 if
-// it is off, 2 if only the exact test can say (a side of its box at a
-// side of the query's in float).
-static inline int tri_off_box_f(const float *fb, const off_box_f *f)
+// is read as a float, and counts for nothing): whether it may meet f (not
+// off it), and in *unsure whether only the exact test can say (a side of
+// its box at a side of the query's in float). Without branches: the walk
+// keeps or drops a triangle by the result, which a predictor cannot guess.
+static inline int tri_meets_box_f(const float *fb, const off_box_f *f, int *unsure)
 {
 #if defined(__SSE__)
     const __m128 lo = _mm_loadu_ps(fb), hi = _mm_loadu_ps(fb + 3);
-    if (_mm_movemask_ps(_mm_or_ps(_mm_cmplt_ps(hi, f->a), _mm_cmpgt_ps(lo, f->c)))) return 1;
-    return _mm_movemask_ps(_mm_or_ps(_mm_cmpeq_ps(hi, f->a), _mm_cmpeq_ps(lo, f->c))) ? 2 : 0;
+    const int off = _mm_movemask_ps(_mm_or_ps(_mm_cmplt_ps(hi, f->a), _mm_cmpgt_ps(lo, f->c)));
+    *unsure = _mm_movemask_ps(_mm_or_ps(_mm_cmpeq_ps(hi, f->a), _mm_cmpeq_ps(lo, f->c))) != 0;
+    return off == 0;
 #else
-    int unsure = 0;
+    int off = 0, eq = 0;
     for (int k = 0; k < 3; k++) {
-        if (fb[3 + k] < f->a[k] || fb[k] > f->c[k]) return 1;
-        unsure |= fb[3 + k] == f->a[k] || fb[k] == f->c[k];
+        off |= (fb[3 + k] < f->a[k]) | (fb[k] > f->c[k]);
+        eq |= (fb[3 + k] == f->a[k]) | (fb[k] == f->c[k]);
     }
-    return unsure ? 2 : 0;
+    *unsure = eq;
+    return !off;
 #endif
 }
 
-// The triangles of the n leaves (node * 4 + slot) without a per-triangle
-// callback, in place: a triangle off the box b is dropped first (by its
-// float box from the data's leaf_faces against fb, the vertices' exact
-// test only where that cannot say), then one whose height does not pass
-// and a degenerate one (a zero normal); the rest go to the test with
-// their vertices, index and normal read from the leaf-order copies
-// (leaf_vertices, leaf_faces: nothing through order[]). Those that touch
-// are listed (add_hit) if hits is not NULL.
+// The walk's candidates: at most DX_TRI_LEAF_MAX triangles a leaf; a
+// candidate's leaf position with this bit where only the exact box test
+// can say whether it meets the query.
+enum { WALK_TRIS_MAX = DX_TRI_LEAF_MAX * 256, WALK_UNSURE = 1 << 30 };
+
+// The leaf positions of the triangles of the n leaves (node * 4 + slot)
+// whose float boxes (the data's leaf_faces) may meet fb, in leaf order,
+// into cand (a position + WALK_UNSURE where only the exact test can say);
+// returns their count. Each leaf's DX_TRI_LEAF_MAX slots are looked at
+// (past its last triangle, that one again, counted for nothing): no
+// branch on a leaf's count or a triangle's box.
+static int boxes_meeting(const dxTriMeshData *d, const int *leaf, int n, const off_box_f *fb,
+                         int *cand)
+{
+    const dxTriLeafFace *faces = d->leaf_faces;
+    int m = 0;
+    for (int i = 0; i < n; i++) {
+        const dxTriMeshNode *node = &d->nodes[leaf[i] >> 2];
+        const int first = node->first[leaf[i] & 3], count = node->count[leaf[i] & 3];
+        for (int k = 0; k < DX_TRI_LEAF_MAX; k++) {
+            const int j = first + (k < count ? k : count - 1);
+            int unsure;
+            const int meets = tri_meets_box_f(faces[j].box, fb, &unsure);
+            cand[m] = j + (unsure ? WALK_UNSURE : 0);
+            m += meets & (k < count);
+        }
+    }
+    return m;
+}
+
+// Of the m candidates (boxes_meeting's), in place, those whose exact box
+// meets b where the float one could not say, whose height passes (their
+// heights into h) and that are not degenerate; returns their count. The
+// keep or drop is again without a branch.
+static int heights_passing(const dxTriQuery *q, int *cand, int m, const off_box *b, dReal reach,
+                           dReal *h)
+{
+    const dxTriMeshData *d = q->data;
+    // The candidates' vertices asked for at once: the tests below would
+    // otherwise wait for them one after another.
+    for (int i = 0; i < m; i++)
+        __builtin_prefetch(d->leaf_vertices + 9 * (cand[i] & (WALK_UNSURE - 1)));
+    int kept = 0;
+    for (int i = 0; i < m; i++) {
+        const int j = cand[i] & (WALK_UNSURE - 1);
+        const dReal *v = d->leaf_vertices + 9 * j;
+        if ((cand[i] & WALK_UNSURE) && tri_off_box(v, b)) continue;
+        const dReal *n = d->leaf_faces[j].n;
+        const dReal d3[3] = { q->pos[0] - v[0], q->pos[1] - v[1], q->pos[2] - v[2] };
+        const dReal ht = dx_dot(n, d3);   // dxTriHeight
+        int pass = reach < 0 || !((ht < 0) | (ht > reach));
+        // A degenerate triangle's height is 0 (or NaN): only then is its
+        // normal looked at.
+        if (!(ht != 0) && n[0] == 0 && n[1] == 0 && n[2] == 0) pass = 0;
+        cand[kept] = j;
+        h[kept] = ht;
+        kept += pass;
+    }
+    return kept;
+}
+
+// The triangles of the n leaves without a per-triangle callback, in three
+// passes: those whose float box (leaf_faces) may meet fb (boxes_meeting),
+// of those the ones that pass the exact box b where needed, the height and
+// the degenerate test (heights_passing), then the test of each, with its
+// vertices, index and normal from the leaf-order copies (leaf_vertices,
+// leaf_faces: nothing through order[]), in leaf order: the triangles the
+// tests see and their order are those of one pass with a branch for each
+// test, without the mispredicted branches. Those that touch are listed
+// (add_hit) if hits is not NULL.
 static void walk_leaves(dxTriQuery *q, const int *leaf, int n, const off_box *b,
                         const off_box_f *fb, dReal reach, dxTriTest *test, int *hits)
 {
@@ -688,9 +753,8 @@ static void walk_leaves(dxTriQuery *q, const int *leaf, int n, const off_box *b,
     const dxTriLeafFace *faces = d->leaf_faces;
     // Every listed leaf's first and last face (a line each: box, index,
     // normal) and its first vertices asked for before the walk: they are
-    // the pair's first touch of its part of the mesh, and the walk, which
-    // tests a triangle's box before it reads the rest, would otherwise
-    // wait for them one leaf after another.
+    // the pair's first touch of its part of the mesh, and the walk would
+    // otherwise wait for them one leaf after another.
     for (int i = 0; i < n; i++) {
         const dxTriMeshNode *node = &d->nodes[leaf[i] >> 2];
         const int first = node->first[leaf[i] & 3], last = first + node->count[leaf[i] & 3] - 1;
@@ -698,29 +762,21 @@ static void walk_leaves(dxTriQuery *q, const int *leaf, int n, const off_box *b,
         __builtin_prefetch(&faces[last]);
         __builtin_prefetch(lv + 9 * first);
     }
-    for (int i = 0; i < n; i++) {
-        const dxTriMeshNode *node = &d->nodes[leaf[i] >> 2];
-        const int first = node->first[leaf[i] & 3], end = first + node->count[leaf[i] & 3];
-        for (int j = first; j < end; j++) {
-            const dxTriLeafFace *f = &faces[j];
-            const int off = tri_off_box_f(f->box, fb);
-            if (off == 1) continue;
-            const dReal *v = lv + 9 * j;
-            if (off == 2 && tri_off_box(v, b)) continue;
-            const int t = f->index;
-            dxTri tri = { .index = t, .v = (const dReal(*)[3])v, .n = f->n, .face = f };
-            if (!height_passes(q, &tri, reach)) continue;
-            // A degenerate triangle's height is 0 (or NaN): only then is its
-            // normal looked at.
-            if (!(tri.h != 0) && tri.n[0] == 0 && tri.n[1] == 0 && tri.n[2] == 0) continue;
-            if (test(q, &tri) && hits) add_hit(q->s, hits, t);
-        }
+    int cand[WALK_TRIS_MAX];
+    dReal h[WALK_TRIS_MAX];
+    const int m = heights_passing(q, cand, boxes_meeting(d, leaf, n, fb, cand), b, reach, h);
+    for (int i = 0; i < m; i++) {
+        const int j = cand[i];
+        const dxTriLeafFace *f = &faces[j];
+        dxTri tri = { .index = f->index, .v = (const dReal(*)[3])(lv + 9 * j), .n = f->n,
+                      .h = h[i], .face = f };
+        if (test(q, &tri) && hits) add_hit(q->s, hits, tri.index);
     }
 }
 
 // At most this many leaves are walked from the vertices' leaf-order copy;
 // a query meeting more goes through the triangle list.
-enum { LEAF_WALK_MAX = 256 };
+enum { LEAF_WALK_MAX = WALK_TRIS_MAX / DX_TRI_LEAF_MAX };
 
 int dxTriMeshGather(dxTriQuery *q, dxGeom *mesh, dxGeom *other, dReal reach, dxTriTest *test)
 {
