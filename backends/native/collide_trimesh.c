@@ -577,6 +577,14 @@ static inline int tri_off_box(const dReal *v, const off_box *b)
 #endif
 }
 
+// Whether a height h above a triangle's plane is within the test's reach:
+// not below the plane, nor above it by more than reach (reach < 0: any);
+// without a branch on h, which the walk keeps or drops triangles by.
+static inline int height_within(dReal h, dReal reach)
+{
+    return reach < 0 || !((h < 0) | (h > reach));
+}
+
 // Whether the walk passes triangle *t (its vertices and normal set) to
 // the test: the height of the other geom's position above its plane into
 // t->h, then the test's own first rejection made here, without the call:
@@ -584,7 +592,7 @@ static inline int tri_off_box(const dReal *v, const off_box *b)
 static inline int height_passes(const dxTriQuery *q, dxTri *t, dReal reach)
 {
     t->h = dxTriHeight(t, q->pos);
-    return reach < 0 || !(t->h < 0 || t->h > reach);
+    return height_within(t->h, reach);
 }
 
 // One candidate read through the triangle list or seen by the
@@ -723,9 +731,9 @@ static int heights_passing(const dxTriQuery *q, int *cand, int m, const off_box 
         const dReal *v = d->leaf_vertices + 9 * j;
         if ((cand[i] & WALK_UNSURE) && tri_off_box(v, b)) continue;
         const dReal *n = d->leaf_faces[j].n;
-        const dReal d3[3] = { q->pos[0] - v[0], q->pos[1] - v[1], q->pos[2] - v[2] };
-        const dReal ht = dx_dot(n, d3);   // dxTriHeight
-        int pass = reach < 0 || !((ht < 0) | (ht > reach));
+        const dxTri tri = { .v = (const dReal(*)[3])v, .n = n };
+        const dReal ht = dxTriHeight(&tri, q->pos);
+        int pass = height_within(ht, reach);
         // A degenerate triangle's height is 0 (or NaN): only then is its
         // normal looked at.
         if (!(ht != 0) && n[0] == 0 && n[1] == 0 && n[2] == 0) pass = 0;
