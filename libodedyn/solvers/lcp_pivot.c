@@ -205,13 +205,19 @@ static lcp_event next_event(const dxLcpPivot *s, int i, dReal sgn, dReal dwi)
     lcp_event ev = { dInfinity, EV_NONE, i };
     if (dwi != 0) consider(&ev, -w[i] / dwi, EV_DRIVEN_ZERO, i);
     consider(&ev, sgn > 0 ? s->hi[i] - x[i] : x[i] - s->lo[i], EV_DRIVEN_BOUND, i);
-    for (int k = 0; k < s->f.m; k++) {   // divide only where the step may be shorter
+    // Divide only where the step may be shorter: where the distance to the bound x[j] moves
+    // toward (room, negated exactly when dx < 0) is below t |dx| CANDIDATE. The bound and the
+    // sign are picked by indexing, not by a branch: the sign of dx is unpredictable, while
+    // the test is rarely passed.
+    const dReal *bound[2] = { s->hi, s->lo };
+    static const dReal toward[2] = { 1, -1 };
+    for (int k = 0; k < s->f.m; k++) {
         int j = s->f.cidx[k];
-        dReal dx = s->u[k], room;
-        if (dx < 0 && (room = s->lo[j] - x[j]) > ev.t * dx * CANDIDATE)
-            consider(&ev, room / dx, EV_C_LO, j);
-        else if (dx > 0 && (room = s->hi[j] - x[j]) < ev.t * dx * CANDIDATE)
-            consider(&ev, room / dx, EV_C_HI, j);
+        dReal dx = s->u[k];
+        int down = dx < 0;
+        dReal room = bound[down][j] - x[j];
+        if ((dx != 0) & (room * toward[down] < ev.t * dFabs(dx) * CANDIDATE))
+            consider(&ev, room / dx, EV_C_HI - down, j);
     }
     for (int q = 0; q < s->nheld; q++) {
         int j = s->held[q], st = s->state[j];

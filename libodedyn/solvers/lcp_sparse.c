@@ -118,8 +118,12 @@ int dxLcpSolveL(const dxLcpFactor *f, dReal *v, int first)
     int e = first;
     for (int k = first; k < f->m; k++) {
         int st = f->lstart[k] > first ? f->lstart[k] : first;
-        if (st < e) v[k] -= dxLcpDot(dxLcpRow(f, k) + st, v + st, e - st);
-        if (v[k] != 0) e = k + 1;
+        dReal vk = v[k];
+        if (st < e) {
+            vk -= dxLcpDot(dxLcpRow(f, k) + st, v + st, e - st);
+            v[k] = vk;
+        }
+        if (vk != 0) e = k + 1;
     }
     return e;
 }
