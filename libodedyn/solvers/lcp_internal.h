@@ -44,6 +44,32 @@ static inline dReal dxLcpDot(const dReal *restrict a, const dReal *restrict b, i
     return (s0 + s1) + (s2 + s3);
 }
 
+// The same as dxLcpDot (the same products summed in the same lanes and order: the same
+// result) with b[n - 1] given as last (n >= 1). A solve passes the value it has just
+// computed in a register, so that only the final few operations wait for it.
+static inline dReal dxLcpDotLast(const dReal *restrict a, const dReal *restrict b, int n,
+                                 dReal last)
+{
+    dReal s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+    int k = 0, whole = n % 4 == 0 ? n - 4 : n & ~3;   // the groups without the last entry
+    for (; k < whole; k += 4) {
+        s0 += a[k] * b[k];
+        s1 += a[k + 1] * b[k + 1];
+        s2 += a[k + 2] * b[k + 2];
+        s3 += a[k + 3] * b[k + 3];
+    }
+    if (n % 4 == 0) {   // the last entry closes a group of four, in lane 3
+        s0 += a[k] * b[k];
+        s1 += a[k + 1] * b[k + 1];
+        s2 += a[k + 2] * b[k + 2];
+        s3 += a[k + 3] * last;
+    } else {            // the last entry closes the tail, in lane 0
+        for (; k < n - 1; k++) s0 += a[k] * b[k];
+        s0 += a[n - 1] * last;
+    }
+    return (s0 + s1) + (s2 + s3);
+}
+
 // a . b, and in *size the sum of |a[k] b[k]| (the scale of the terms, for tolerances).
 static inline dReal dxLcpDotSize(const dReal *restrict a, const dReal *restrict b, int n,
                                  dReal *size)

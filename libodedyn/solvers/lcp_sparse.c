@@ -116,14 +116,17 @@ void dxLcpFactorInit(dxLcpFactor *f, dxArena *arena, int n)
 int dxLcpSolveL(const dxLcpFactor *f, dReal *v, int first)
 {
     int e = first;
+    dReal prev = 0;   // v[k - 1] as just computed, while e == k
     for (int k = first; k < f->m; k++) {
         int st = f->lstart[k] > first ? f->lstart[k] : first;
         dReal vk = v[k];
         if (st < e) {
-            vk -= dxLcpDot(dxLcpRow(f, k) + st, v + st, e - st);
+            const dReal *l = dxLcpRow(f, k) + st;
+            vk -= e == k ? dxLcpDotLast(l, v + st, e - st, prev) : dxLcpDot(l, v + st, e - st);
             v[k] = vk;
         }
         if (vk != 0) e = k + 1;
+        prev = vk;
     }
     return e;
 }
