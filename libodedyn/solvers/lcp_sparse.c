@@ -131,12 +131,21 @@ int dxLcpSolveL(const dxLcpFactor *f, dReal *v, int first)
     return e;
 }
 
-// Column-oriented, so that the inner loop runs along rows of L.
+// Column-oriented, so that the inner loop runs along rows of L. The entry k - 1, which the
+// next column needs first, is updated apart and carried in a register.
 void dxLcpSolveLT(const dxLcpFactor *f, dReal *v, int end)
 {
+    dReal vk = end > 0 ? v[end - 1] : 0;
     for (int k = end - 1; k > 0; k--) {
         int st = f->lstart[k];
-        if (v[k] != 0) axpy_sub(v + st, dxLcpRow(f, k) + st, v[k], k - st);
+        dReal below = v[k - 1];
+        if (vk != 0 && st < k) {
+            const dReal *l = dxLcpRow(f, k);
+            axpy_sub(v + st, l + st, vk, k - 1 - st);
+            below -= vk * l[k - 1];
+            v[k - 1] = below;
+        }
+        vk = below;
     }
 }
 
