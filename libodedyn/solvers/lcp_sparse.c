@@ -21,6 +21,18 @@ static void axpy_sub(dReal *restrict y, const dReal *restrict x, dReal a, int n)
     for (; k < n; k++) y[k] -= a * x[k];
 }
 
+// y = (y - a x) - b z: two axpy_sub in one pass, the same operations in the same order.
+static void axpy2_sub(dReal *restrict y, const dReal *restrict x, dReal a,
+                      const dReal *restrict z, dReal b, int n)
+{
+    int k = 0;
+    for (; k + 2 <= n; k += 2) {
+        y[k] = (y[k] - a * x[k]) - b * z[k];
+        y[k + 1] = (y[k + 1] - a * x[k + 1]) - b * z[k + 1];
+    }
+    for (; k < n; k++) y[k] = (y[k] - a * x[k]) - b * z[k];
+}
+
 // ---- patterns ----
 
 void dxLcpPatternBegin(dxLcpPatternBuilder *pb, dxArena *arena, int n)
@@ -131,22 +143,49 @@ int dxLcpSolveL(const dxLcpFactor *f, dReal *v, int first)
     return e;
 }
 
-// Column-oriented, so that the inner loop runs along rows of L. The entry k - 1, which the
-// next column needs first, is updated apart and carried in a register.
+// v[j] -= a L[k][j] for j in [from, to) and then, where both apply, v[j] -= b L[k2][j] for j
+// in [from2, to): two columns of L^T in one pass over v (a column with a zero multiplier
+// or nothing in the range is left out: from == to).
+static void sub_columns(const dxLcpFactor *f, dReal *v, int k, dReal a, int from, int k2,
+                        dReal b, int from2, int to)
+{
+    const dReal *l = dxLcpRow(f, k), *l2 = dxLcpRow(f, k2);
+    if (from >= to) {
+        if (from2 < to) axpy_sub(v + from2, l2 + from2, b, to - from2);
+        return;
+    }
+    if (from2 >= to) {
+        axpy_sub(v + from, l + from, a, to - from);
+        return;
+    }
+    if (from < from2) axpy_sub(v + from, l + from, a, from2 - from);
+    if (from2 < from) axpy_sub(v + from2, l2 + from2, b, from - from2);
+    int both = from > from2 ? from : from2;
+    axpy2_sub(v + both, l + both, a, l2 + both, b, to - both);
+}
+
+// Column-oriented, so that the inner loop runs along rows of L, two columns k and k - 1 at
+// a time (one pass over v instead of two). Their two entries k - 1 and k - 2, which the
+// next columns need first, are updated apart and carried in registers.
 void dxLcpSolveLT(const dxLcpFactor *f, dReal *v, int end)
 {
+    int k = end - 1;
     dReal vk = end > 0 ? v[end - 1] : 0;
-    for (int k = end - 1; k > 0; k--) {
-        int st = f->lstart[k];
-        dReal below = v[k - 1];
-        if (vk != 0 && st < k) {
-            const dReal *l = dxLcpRow(f, k);
-            axpy_sub(v + st, l + st, vk, k - 1 - st);
-            below -= vk * l[k - 1];
-            v[k - 1] = below;
-        }
-        vk = below;
+    for (; k > 1; k -= 2) {
+        const dReal *l = dxLcpRow(f, k), *l1 = dxLcpRow(f, k - 1);
+        int st = f->lstart[k], st1 = f->lstart[k - 1];
+        int use = vk != 0 && st < k;   // column k applies, over [st, k)
+        dReal v1 = v[k - 1], v2 = v[k - 2];
+        if (use) v1 -= vk * l[k - 1];
+        int use1 = v1 != 0 && st1 < k - 1;   // column k - 1 applies, over [st1, k - 1)
+        if (use && st < k - 1) v2 -= vk * l[k - 2];
+        if (use1) v2 -= v1 * l1[k - 2];
+        sub_columns(f, v, k, vk, use ? st : k - 2, k - 1, v1, use1 ? st1 : k - 2, k - 2);
+        v[k - 1] = v1;
+        v[k - 2] = v2;
+        vk = v2;
     }
+    if (k == 1 && vk != 0 && f->lstart[1] < 1) v[0] -= vk * dxLcpRow(f, 1)[0];
 }
 
 dReal dxLcpBorder(const dxLcpFactor *f, dReal diag, dReal *y, dReal *z, int first, int *end)
