@@ -95,12 +95,15 @@ static dReal c_forward(dxLcpPivot *s, int j)
     const dReal *a = row_of(s, j);
     int m = s->f.m, first = m;
     if (s->pa.start) {   // scatter the row's nonzeros that are in C
+        // Columns outside C go to y[m], cleared after: no branch on whether a column is in
+        // C, which is unpredictable. (y has room: j is not in C, so m < n.)
         for (int k = s->pa.start[j]; k < s->pa.start[j + 1]; k++) {
-            int c = s->pa.cols[k], q = s->cpos[c];
-            if (q < 0) continue;
+            int c = s->pa.cols[k], q = s->cpos[c], out = -(q < 0);   // out: all ones or 0
+            q = (q & ~out) | (m & out);
             s->y[q] = a[c];
-            if (q < first) first = q;
+            first = q < first ? q : first;
         }
+        s->y[m] = 0;
     } else {   // dense: gather A[j][C]
         for (int k = m - 1; k >= 0; k--) {
             s->y[k] = a[s->f.cidx[k]];
