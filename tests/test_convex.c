@@ -74,6 +74,7 @@ static inline int same_sets(const dContactGeom *c, int n, const dContactGeom *re
     return 1;
 }
 
+#ifdef dSINGLE
 // The deepest contacts match. In single precision box-box's float
 // clipping of deep overlaps can keep or lose a clipped corner that the
 // double computation of the hull drops or keeps: only the deepest is
@@ -83,8 +84,6 @@ static inline int same_deepest(const dContactGeom *c, int n, const dContactGeom 
 {
     return n > 0 && m > 0 && same_contact(&c[deepest(c, n)], &ref[deepest(ref, m)], tol);
 }
-
-#ifdef dSINGLE
 #define SAME_SETS same_deepest
 #else
 #define SAME_SETS same_sets
