@@ -77,16 +77,18 @@ static dReal lower(const problem *p, int j) { return j < p->nub ? -dInfinity : p
 static dReal upper(const problem *p, int j) { return j < p->nub ? dInfinity : p->hi[j]; }
 
 // Place the entries of row i of A whose columns c have pos[c] >= 0 at y[pos[c]]. Returns the
-// smallest place written (m if none).
-static int scatter_row(const problem *p, int i, const int *pos, dReal *y, int m)
+// smallest place written (m if none); *last receives the largest (-1 if none).
+static int scatter_row(const problem *p, int i, const int *pos, dReal *y, int m, int *last)
 {
-    int first = m;
+    int first = m, end = -1;
     for (int k = p->A.start[i]; k < p->A.start[i + 1]; k++) {
         int q = pos[p->A.cols[k]];
         if (q < 0) continue;
         y[q] = p->A.vals[k];
         if (q < first) first = q;
+        if (q > end) end = q;
     }
+    *last = end;
     return first;
 }
 
@@ -129,7 +131,7 @@ static void factor_unbounded(problem *p, dxArena *arena)
     dReal *y = DX_ARENA_ARRAY(arena, dReal, nu), *z = DX_ARENA_ARRAY(arena, dReal, nu);
     memset(y, 0, (size_t)nu * sizeof(dReal));
     for (int k = 0; k < nu; k++) {
-        int i = u[k], f = scatter_row(p, i, p->upos, y, p->fu.m), e;
+        int i = u[k], last, f = scatter_row(p, i, p->upos, y, p->fu.m, &last), e;
         dReal pivot = dxLcpBorder(&p->fu, p->diag[i], y, z, f, &e);
         memset(y + f, 0, (size_t)(e - f) * sizeof(dReal));
         if (pivot > DX_LCP_PIVOT_TOL * dFabs(p->diag[i])) {
@@ -159,9 +161,18 @@ typedef struct reduction {
     int *part_start;       // .. part_start[c + 1])
 } reduction;
 
+// The first `end` rows of f. L is block diagonal by part, so a forward solve of a vector that
+// is zero past the part ending at `end` stays zero there: it can stop at `end`.
+static dxLcpFactor factor_head(const dxLcpFactor *f, int end)
+{
+    dxLcpFactor head = *f;
+    head.m = end;
+    return head;
+}
+
 static const dReal *q_row(const reduction *r, int j) { return r->q + j * r->ldq; }
 
-// Rows of Q: y = L^-1 A[U][j] scaled by D^-1/2.
+// Rows of Q: y = L^-1 A[U][j] scaled by D^-1/2, the solve within the parts A[U][j] touches.
 static void reduce_rows(const problem *p, dxArena *arena, reduction *r, int nb)
 {
     const dxLcpFactor *fu = &p->fu;
@@ -177,15 +188,18 @@ static void reduce_rows(const problem *p, dxArena *arena, reduction *r, int nb)
     r->qf = DX_ARENA_ARRAY(arena, int, nb);
     r->qe = DX_ARENA_ARRAY(arena, int, nb);
     dxArenaMark mark = dxArenaSave(arena);
-    dReal *z = DX_ARENA_ARRAY(arena, dReal, nu), *sd = DX_ARENA_ARRAY(arena, dReal, nu);
+    dReal *sd = DX_ARENA_ARRAY(arena, dReal, nu);
     for (int k = 0; k < nu; k++) sd[k] = dSqrt(fu->dinv[k]);
     for (int j = 0; j < nb; j++) {
         dReal *qj = r->q + j * r->ldq;
         r->qf[j] = r->qe[j] = 0;
         if (nu == 0) continue;
         memset(qj, 0, (size_t)nu * sizeof(dReal));
-        r->qf[j] = scatter_row(p, r->bidx[j], p->upos, qj, nu);
-        dxLcpBorder(fu, 0, qj, z, r->qf[j], &r->qe[j]);
+        int last, f = scatter_row(p, r->bidx[j], p->upos, qj, nu, &last);
+        r->qf[j] = r->qe[j] = f;
+        if (last < 0) continue;
+        dxLcpFactor head = factor_head(fu, p->part_end[p->fpart[last]]);
+        r->qe[j] = dxLcpSolveL(&head, qj, f);
         for (int k = r->qf[j]; k < r->qe[j]; k++) qj[k] *= sd[k];
     }
     dxArenaRestore(arena, mark);
