@@ -145,6 +145,12 @@ static void factor_unbounded(problem *p, dxArena *arena)
     for (int k = 0; k < p->fu.m; k++) p->part_end[p->fpart[k]] = k + 1;
 }
 
+// Two segments of Q in one part that overlap: rows lo <= hi of Q (places in bidx), whose
+// nonzeros meet within [f, e).
+typedef struct q_overlap {
+    int lo, hi, f, e;
+} q_overlap;
+
 // The rows of B in their original order and Q = D^-1/2 L^-1 A[U][B], so that S = A[B][B] -
 // Q^T Q. Row j of Q is nonzero in [qf[j], qe[j]), and only within the parts of A[U][U] it
 // touches: there its nonzeros lie in a segment. Two rows of S interact through Q only where
@@ -159,6 +165,8 @@ typedef struct reduction {
     int *row_seg;          // the segments of row j: row_seg[j] .. row_seg[j + 1]
     int *part_seg;         // the segments in part c, by increasing row: part_seg[part_start[c]
     int *part_start;       // .. part_start[c + 1])
+    q_overlap *overlaps;   // where two segments in a part overlap (see s_entries)
+    int noverlaps;
 } reduction;
 
 // The first `end` rows of f. L is block diagonal by part, so a forward solve of a vector that
@@ -252,44 +260,69 @@ static int seg_overlap(const reduction *r, int s, int t, int *f, int *e)
     return *e > *f;
 }
 
-// Every entry (i, j), j <= i, of the pattern of S over B (places in bidx), once: where
-// A[B][B] is nonzero or segments of Q overlap. Counted (add == 0) or added to pb.
-static void s_entries(const problem *p, const reduction *r, int nb, int *mark, int add,
-                      dxLcpPatternBuilder *pb)
+// The most overlaps of segments there can be: every pair of segments in a part, and each
+// segment with itself.
+static size_t most_overlaps(const problem *p, const reduction *r)
 {
+    size_t most = 0;
+    for (int c = 0; c < p->nparts; c++) {
+        size_t count = (size_t)(r->part_start[c + 1] - r->part_start[c]);
+        most += count * (count + 1) / 2;
+    }
+    return most;
+}
+
+// The entries (i, j), j <= i, of the pattern of S over B (places in bidx), each once, as
+// counted into pb and listed in `lower` (row i's from lower_start[i]): where A[B][B] is
+// nonzero or segments of Q overlap. Every overlap of segments goes to r->overlaps, the
+// overlaps of one pair of rows by increasing part.
+static void s_entries(const problem *p, reduction *r, int nb, int *mark, int *lower,
+                      int *lower_start, dxLcpPatternBuilder *pb)
+{
+    int count = 0;
+    r->noverlaps = 0;
     for (int i = 0; i < nb; i++) mark[i] = -1;
     for (int i = 0; i < nb; i++) {
         int bi = r->bidx[i];
+        lower_start[i] = count;
         for (int k = p->pa.start[bi]; k < p->pa.start[bi + 1]; k++) {
             int j = r->bplace[p->pa.cols[k]];
             if (j < 0 || j > i || mark[j] == i) continue;
             mark[j] = i;
-            if (add) dxLcpPatternAdd(pb, i, j);
-            else dxLcpPatternCount(pb, i, j);
+            lower[count++] = j;
+            dxLcpPatternCount(pb, i, j);
         }
         for (int s = r->row_seg[i]; s < r->row_seg[i + 1]; s++) {
             int c = r->seg_part[s], f, e;
             for (int k = r->part_start[c]; k < r->part_start[c + 1]; k++) {
                 int t = r->part_seg[k], j = r->seg_row[t];
                 if (j > i) break;
-                if (mark[j] == i || !seg_overlap(r, s, t, &f, &e)) continue;
+                if (!seg_overlap(r, s, t, &f, &e)) continue;
+                r->overlaps[r->noverlaps++] = (q_overlap){ j, i, f, e };
+                if (mark[j] == i) continue;
                 mark[j] = i;
-                if (add) dxLcpPatternAdd(pb, i, j);
-                else dxLcpPatternCount(pb, i, j);
+                lower[count++] = j;
+                dxLcpPatternCount(pb, i, j);
             }
         }
     }
+    lower_start[nb] = count;
 }
 
-static dxLcpPattern pattern_of_s(const problem *p, const reduction *r, dxArena *arena, int nb)
+// The pattern of S over B, and the overlaps of segments of Q in r.
+static dxLcpPattern pattern_of_s(const problem *p, reduction *r, dxArena *arena, int nb)
 {
+    r->overlaps = DX_ARENA_ARRAY(arena, q_overlap, most_overlaps(p, r) + 1);
+    r->noverlaps = 0;
     if (nb == p->n) return p->pa;   // nothing eliminated
     dxLcpPatternBuilder pb;
     dxLcpPatternBegin(&pb, arena, nb);
-    int *mark = DX_ARENA_ARRAY(arena, int, nb);
-    s_entries(p, r, nb, mark, 0, &pb);
+    int *mark = DX_ARENA_ARRAY(arena, int, nb), *lower_start = DX_ARENA_ARRAY(arena, int, nb + 1);
+    int *lower = DX_ARENA_ARRAY(arena, int, (size_t)nb * (size_t)(nb + 1) / 2);
+    s_entries(p, r, nb, mark, lower, lower_start, &pb);
     dxLcpPatternAllocate(&pb, arena, 0);
-    s_entries(p, r, nb, mark, 1, &pb);
+    for (int i = 0; i < nb; i++)
+        for (int k = lower_start[i]; k < lower_start[i + 1]; k++) dxLcpPatternAdd(&pb, i, lower[k]);
     dxLcpPattern pt = { pb.start, pb.cols };
     return pt;
 }
@@ -335,8 +368,8 @@ static dxLcpPattern permuted_pattern(dxArena *arena, const dxLcpPattern *sp, int
     return pt;
 }
 
-// S = A[B][B] - Q^T Q in pivoting order, from the nonzeros of A and the overlapping segments
-// of each part; zero elsewhere within the extent of each row's pattern (the pivoting reads
+// S = A[B][B] - Q^T Q in pivoting order, from the nonzeros of A and the overlaps of segments
+// (r->overlaps); zero elsewhere within the extent of each row's pattern (the pivoting reads
 // rows over their extent).
 static void schur_complement(const problem *p, const reduction *r, dxArena *arena,
                              const int *inv, dxLcpPivot *s)
@@ -360,18 +393,12 @@ static void schur_complement(const problem *p, const reduction *r, dxArena *aren
             if (j >= 0) si[inv[j]] = p->A.vals[k];
         }
     }
-    for (int c = 0; c < p->nparts; c++) {
-        for (int a = r->part_start[c]; a < r->part_start[c + 1]; a++) {
-            int sa = r->part_seg[a], ia = inv[r->seg_row[sa]];
-            const dReal *qa = q_row(r, r->seg_row[sa]);
-            for (int b = a; b < r->part_start[c + 1]; b++) {
-                int sb = r->part_seg[b], ib = inv[r->seg_row[sb]], f, e;
-                if (!seg_overlap(r, sa, sb, &f, &e)) continue;
-                dReal v = dxLcpDot(qa + f, q_row(r, r->seg_row[sb]) + f, e - f);
-                S[ia * ld + ib] -= v;
-                if (ib != ia) S[ib * ld + ia] -= v;
-            }
-        }
+    for (int k = 0; k < r->noverlaps; k++) {
+        const q_overlap *o = &r->overlaps[k];
+        int ia = inv[o->lo], ib = inv[o->hi];
+        dReal v = dxLcpDot(q_row(r, o->lo) + o->f, q_row(r, o->hi) + o->f, o->e - o->f);
+        S[ia * ld + ib] -= v;
+        if (ib != ia) S[ib * ld + ia] -= v;
     }
     s->A = S;
 }
