@@ -99,13 +99,13 @@ static int order_unbounded(problem *p, dxArena *arena, int *u, int *upart)
 {
     int n = p->n, nu = 0;
     dxArenaMark mark = dxArenaSave(arena);
-    int *where = DX_ARENA_ARRAY(arena, int, n);
+    int *in = DX_ARENA_ARRAY(arena, int, n);
     for (int i = 0; i < n; i++) {
-        where[i] = -1;
-        if (is_unbounded(p, i)) where[i] = nu, u[nu++] = i;
+        in[i] = -1;
+        if (is_unbounded(p, i)) in[i] = 0, u[nu++] = i;
     }
     if (nu > DX_LCP_SMALL) {
-        p->nparts = dxLcpBfsOrder(arena, &p->pa, u, nu, where, upart);
+        p->nparts = dxLcpBfsOrder(arena, &p->pa, u, nu, in, upart);
     } else {   // one part: coarser than needed, but right
         p->nparts = nu > 0;
         for (int k = 0; k < nu; k++) upart[k] = 0;
@@ -335,15 +335,15 @@ static void pivot_orders(const problem *p, const reduction *r, dxArena *arena, i
                          const dxLcpPattern *sp, int *all, int *normals, int *nnormal)
 {
     dxArenaMark mark = dxArenaSave(arena);
-    int *where = DX_ARENA_ARRAY(arena, int, nb);
+    int *in = DX_ARENA_ARRAY(arena, int, nb);
     int count = 0;
     for (int k = 0; k < nb; k++) {
-        all[k] = where[k] = k;
+        all[k] = in[k] = k;
         if (!is_friction(p, r->bidx[k])) normals[count++] = k;
     }
     *nnormal = count;
     if (nb > ORDER_MIN_ROWS) {   // the rows without friction: in the same order
-        dxLcpBfsOrder(arena, sp, all, nb, where, NULL);
+        dxLcpBfsOrder(arena, sp, all, nb, in, NULL);
         count = 0;
         for (int k = 0; k < nb; k++)
             if (!is_friction(p, r->bidx[all[k]])) normals[count++] = all[k];
@@ -655,8 +655,11 @@ static int solve(problem *p, dxArena *arena)
             continue;
         }
         p->diag[i] = 0;
-        for (int k = p->A.start[i]; k < p->A.start[i + 1]; k++)
-            if (p->A.cols[k] == i) p->diag[i] = p->A.vals[k];
+        for (int k = p->A.start[i]; k < p->A.start[i + 1]; k++) {
+            if (p->A.cols[k] != i) continue;
+            p->diag[i] = p->A.vals[k];
+            break;
+        }
     }
     int ok = 1;
     p->fu.m = 0;
