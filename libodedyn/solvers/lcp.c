@@ -369,22 +369,15 @@ static dxLcpPattern permuted_pattern(dxArena *arena, const dxLcpPattern *sp, int
 }
 
 // S = A[B][B] - Q^T Q in pivoting order, from the nonzeros of A and the overlaps of segments
-// (r->overlaps); zero elsewhere within the extent of each row's pattern (the pivoting reads
-// rows over their extent).
+// (r->overlaps); zero elsewhere (the pivoting reads each row over the extent of its pattern:
+// one memset of all of S costs less time than finding each row's extent).
 static void schur_complement(const problem *p, const reduction *r, dxArena *arena,
                              const int *inv, dxLcpPivot *s)
 {
     int nb = p->nb;
     ptrdiff_t ld = s->lda = dPAD(nb);
     dReal *S = DX_ARENA_ARRAY(arena, dReal, (size_t)nb * (size_t)ld);
-    for (int k = 0; k < nb; k++) {
-        int f = nb, e = 0;
-        for (int t = s->pa.start[k]; t < s->pa.start[k + 1]; t++) {
-            if (s->pa.cols[t] < f) f = s->pa.cols[t];
-            if (s->pa.cols[t] >= e) e = s->pa.cols[t] + 1;
-        }
-        if (e > f) memset(S + k * ld + f, 0, (size_t)(e - f) * sizeof(dReal));
-    }
+    memset(S, 0, (size_t)nb * (size_t)ld * sizeof(dReal));
     for (int i = 0; i < nb; i++) {
         int bi = r->bidx[i];
         dReal *si = S + inv[i] * ld;
