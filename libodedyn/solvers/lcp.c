@@ -77,16 +77,18 @@ static dReal lower(const problem *p, int j) { return j < p->nub ? -dInfinity : p
 static dReal upper(const problem *p, int j) { return j < p->nub ? dInfinity : p->hi[j]; }
 
 // Place the entries of row i of A whose columns c have pos[c] >= 0 at y[pos[c]]. Returns the
-// smallest place written (m if none).
-static int scatter_row(const problem *p, int i, const int *pos, dReal *y, int m)
+// smallest place written (m if none); *last receives the largest (-1 if none).
+static int scatter_row(const problem *p, int i, const int *pos, dReal *y, int m, int *last)
 {
-    int first = m;
+    int first = m, end = -1;
     for (int k = p->A.start[i]; k < p->A.start[i + 1]; k++) {
         int q = pos[p->A.cols[k]];
         if (q < 0) continue;
         y[q] = p->A.vals[k];
         if (q < first) first = q;
+        if (q > end) end = q;
     }
+    *last = end;
     return first;
 }
 
@@ -97,13 +99,13 @@ static int order_unbounded(problem *p, dxArena *arena, int *u, int *upart)
 {
     int n = p->n, nu = 0;
     dxArenaMark mark = dxArenaSave(arena);
-    int *where = DX_ARENA_ARRAY(arena, int, n);
+    int *in = DX_ARENA_ARRAY(arena, int, n);
     for (int i = 0; i < n; i++) {
-        where[i] = -1;
-        if (is_unbounded(p, i)) where[i] = nu, u[nu++] = i;
+        in[i] = -1;
+        if (is_unbounded(p, i)) in[i] = 0, u[nu++] = i;
     }
     if (nu > DX_LCP_SMALL) {
-        p->nparts = dxLcpBfsOrder(arena, &p->pa, u, nu, where, upart);
+        p->nparts = dxLcpBfsOrder(arena, &p->pa, u, nu, in, upart);
     } else {   // one part: coarser than needed, but right
         p->nparts = nu > 0;
         for (int k = 0; k < nu; k++) upart[k] = 0;
@@ -129,7 +131,7 @@ static void factor_unbounded(problem *p, dxArena *arena)
     dReal *y = DX_ARENA_ARRAY(arena, dReal, nu), *z = DX_ARENA_ARRAY(arena, dReal, nu);
     memset(y, 0, (size_t)nu * sizeof(dReal));
     for (int k = 0; k < nu; k++) {
-        int i = u[k], f = scatter_row(p, i, p->upos, y, p->fu.m), e;
+        int i = u[k], last, f = scatter_row(p, i, p->upos, y, p->fu.m, &last), e;
         dReal pivot = dxLcpBorder(&p->fu, p->diag[i], y, z, f, &e);
         memset(y + f, 0, (size_t)(e - f) * sizeof(dReal));
         if (pivot > DX_LCP_PIVOT_TOL * dFabs(p->diag[i])) {
@@ -142,6 +144,12 @@ static void factor_unbounded(problem *p, dxArena *arena)
     for (int c = 0; c < p->nparts; c++) p->part_end[c] = 0;
     for (int k = 0; k < p->fu.m; k++) p->part_end[p->fpart[k]] = k + 1;
 }
+
+// Two segments of Q in one part that overlap: rows lo <= hi of Q (places in bidx), whose
+// nonzeros meet within [f, e).
+typedef struct q_overlap {
+    int lo, hi, f, e;
+} q_overlap;
 
 // The rows of B in their original order and Q = D^-1/2 L^-1 A[U][B], so that S = A[B][B] -
 // Q^T Q. Row j of Q is nonzero in [qf[j], qe[j]), and only within the parts of A[U][U] it
@@ -157,11 +165,22 @@ typedef struct reduction {
     int *row_seg;          // the segments of row j: row_seg[j] .. row_seg[j + 1]
     int *part_seg;         // the segments in part c, by increasing row: part_seg[part_start[c]
     int *part_start;       // .. part_start[c + 1])
+    q_overlap *overlaps;   // where two segments in a part overlap (see s_entries)
+    int noverlaps;
 } reduction;
+
+// The first `end` rows of f. L is block diagonal by part, so a forward solve of a vector that
+// is zero past the part ending at `end` stays zero there: it can stop at `end`.
+static dxLcpFactor factor_head(const dxLcpFactor *f, int end)
+{
+    dxLcpFactor head = *f;
+    head.m = end;
+    return head;
+}
 
 static const dReal *q_row(const reduction *r, int j) { return r->q + j * r->ldq; }
 
-// Rows of Q: y = L^-1 A[U][j] scaled by D^-1/2.
+// Rows of Q: y = L^-1 A[U][j] scaled by D^-1/2, the solve within the parts A[U][j] touches.
 static void reduce_rows(const problem *p, dxArena *arena, reduction *r, int nb)
 {
     const dxLcpFactor *fu = &p->fu;
@@ -177,15 +196,18 @@ static void reduce_rows(const problem *p, dxArena *arena, reduction *r, int nb)
     r->qf = DX_ARENA_ARRAY(arena, int, nb);
     r->qe = DX_ARENA_ARRAY(arena, int, nb);
     dxArenaMark mark = dxArenaSave(arena);
-    dReal *z = DX_ARENA_ARRAY(arena, dReal, nu), *sd = DX_ARENA_ARRAY(arena, dReal, nu);
+    dReal *sd = DX_ARENA_ARRAY(arena, dReal, nu);
     for (int k = 0; k < nu; k++) sd[k] = dSqrt(fu->dinv[k]);
     for (int j = 0; j < nb; j++) {
         dReal *qj = r->q + j * r->ldq;
         r->qf[j] = r->qe[j] = 0;
         if (nu == 0) continue;
         memset(qj, 0, (size_t)nu * sizeof(dReal));
-        r->qf[j] = scatter_row(p, r->bidx[j], p->upos, qj, nu);
-        dxLcpBorder(fu, 0, qj, z, r->qf[j], &r->qe[j]);
+        int last, f = scatter_row(p, r->bidx[j], p->upos, qj, nu, &last);
+        r->qf[j] = r->qe[j] = f;
+        if (last < 0) continue;
+        dxLcpFactor head = factor_head(fu, p->part_end[p->fpart[last]]);
+        r->qe[j] = dxLcpSolveL(&head, qj, f);
         for (int k = r->qf[j]; k < r->qe[j]; k++) qj[k] *= sd[k];
     }
     dxArenaRestore(arena, mark);
@@ -238,44 +260,69 @@ static int seg_overlap(const reduction *r, int s, int t, int *f, int *e)
     return *e > *f;
 }
 
-// Every entry (i, j), j <= i, of the pattern of S over B (places in bidx), once: where
-// A[B][B] is nonzero or segments of Q overlap. Counted (add == 0) or added to pb.
-static void s_entries(const problem *p, const reduction *r, int nb, int *mark, int add,
-                      dxLcpPatternBuilder *pb)
+// The most overlaps of segments there can be: every pair of segments in a part, and each
+// segment with itself.
+static size_t most_overlaps(const problem *p, const reduction *r)
 {
+    size_t most = 0;
+    for (int c = 0; c < p->nparts; c++) {
+        size_t count = (size_t)(r->part_start[c + 1] - r->part_start[c]);
+        most += count * (count + 1) / 2;
+    }
+    return most;
+}
+
+// The entries (i, j), j <= i, of the pattern of S over B (places in bidx), each once, as
+// counted into pb and listed in `lower` (row i's from lower_start[i]): where A[B][B] is
+// nonzero or segments of Q overlap. Every overlap of segments goes to r->overlaps, the
+// overlaps of one pair of rows by increasing part.
+static void s_entries(const problem *p, reduction *r, int nb, int *mark, int *lower,
+                      int *lower_start, dxLcpPatternBuilder *pb)
+{
+    int count = 0;
+    r->noverlaps = 0;
     for (int i = 0; i < nb; i++) mark[i] = -1;
     for (int i = 0; i < nb; i++) {
         int bi = r->bidx[i];
+        lower_start[i] = count;
         for (int k = p->pa.start[bi]; k < p->pa.start[bi + 1]; k++) {
             int j = r->bplace[p->pa.cols[k]];
             if (j < 0 || j > i || mark[j] == i) continue;
             mark[j] = i;
-            if (add) dxLcpPatternAdd(pb, i, j);
-            else dxLcpPatternCount(pb, i, j);
+            lower[count++] = j;
+            dxLcpPatternCount(pb, i, j);
         }
         for (int s = r->row_seg[i]; s < r->row_seg[i + 1]; s++) {
             int c = r->seg_part[s], f, e;
             for (int k = r->part_start[c]; k < r->part_start[c + 1]; k++) {
                 int t = r->part_seg[k], j = r->seg_row[t];
                 if (j > i) break;
-                if (mark[j] == i || !seg_overlap(r, s, t, &f, &e)) continue;
+                if (!seg_overlap(r, s, t, &f, &e)) continue;
+                r->overlaps[r->noverlaps++] = (q_overlap){ j, i, f, e };
+                if (mark[j] == i) continue;
                 mark[j] = i;
-                if (add) dxLcpPatternAdd(pb, i, j);
-                else dxLcpPatternCount(pb, i, j);
+                lower[count++] = j;
+                dxLcpPatternCount(pb, i, j);
             }
         }
     }
+    lower_start[nb] = count;
 }
 
-static dxLcpPattern pattern_of_s(const problem *p, const reduction *r, dxArena *arena, int nb)
+// The pattern of S over B, and the overlaps of segments of Q in r.
+static dxLcpPattern pattern_of_s(const problem *p, reduction *r, dxArena *arena, int nb)
 {
+    r->overlaps = DX_ARENA_ARRAY(arena, q_overlap, most_overlaps(p, r) + 1);
+    r->noverlaps = 0;
     if (nb == p->n) return p->pa;   // nothing eliminated
     dxLcpPatternBuilder pb;
     dxLcpPatternBegin(&pb, arena, nb);
-    int *mark = DX_ARENA_ARRAY(arena, int, nb);
-    s_entries(p, r, nb, mark, 0, &pb);
+    int *mark = DX_ARENA_ARRAY(arena, int, nb), *lower_start = DX_ARENA_ARRAY(arena, int, nb + 1);
+    int *lower = DX_ARENA_ARRAY(arena, int, (size_t)nb * (size_t)(nb + 1) / 2);
+    s_entries(p, r, nb, mark, lower, lower_start, &pb);
     dxLcpPatternAllocate(&pb, arena, 0);
-    s_entries(p, r, nb, mark, 1, &pb);
+    for (int i = 0; i < nb; i++)
+        for (int k = lower_start[i]; k < lower_start[i + 1]; k++) dxLcpPatternAdd(&pb, i, lower[k]);
     dxLcpPattern pt = { pb.start, pb.cols };
     return pt;
 }
@@ -288,15 +335,15 @@ static void pivot_orders(const problem *p, const reduction *r, dxArena *arena, i
                          const dxLcpPattern *sp, int *all, int *normals, int *nnormal)
 {
     dxArenaMark mark = dxArenaSave(arena);
-    int *where = DX_ARENA_ARRAY(arena, int, nb);
+    int *in = DX_ARENA_ARRAY(arena, int, nb);
     int count = 0;
     for (int k = 0; k < nb; k++) {
-        all[k] = where[k] = k;
+        all[k] = in[k] = k;
         if (!is_friction(p, r->bidx[k])) normals[count++] = k;
     }
     *nnormal = count;
     if (nb > ORDER_MIN_ROWS) {   // the rows without friction: in the same order
-        dxLcpBfsOrder(arena, sp, all, nb, where, NULL);
+        dxLcpBfsOrder(arena, sp, all, nb, in, NULL);
         count = 0;
         for (int k = 0; k < nb; k++)
             if (!is_friction(p, r->bidx[all[k]])) normals[count++] = all[k];
@@ -321,23 +368,16 @@ static dxLcpPattern permuted_pattern(dxArena *arena, const dxLcpPattern *sp, int
     return pt;
 }
 
-// S = A[B][B] - Q^T Q in pivoting order, from the nonzeros of A and the overlapping segments
-// of each part; zero elsewhere within the extent of each row's pattern (the pivoting reads
-// rows over their extent).
+// S = A[B][B] - Q^T Q in pivoting order, from the nonzeros of A and the overlaps of segments
+// (r->overlaps); zero elsewhere (the pivoting reads each row over the extent of its pattern:
+// one memset of all of S costs less time than finding each row's extent).
 static void schur_complement(const problem *p, const reduction *r, dxArena *arena,
                              const int *inv, dxLcpPivot *s)
 {
     int nb = p->nb;
     ptrdiff_t ld = s->lda = dPAD(nb);
     dReal *S = DX_ARENA_ARRAY(arena, dReal, (size_t)nb * (size_t)ld);
-    for (int k = 0; k < nb; k++) {
-        int f = nb, e = 0;
-        for (int t = s->pa.start[k]; t < s->pa.start[k + 1]; t++) {
-            if (s->pa.cols[t] < f) f = s->pa.cols[t];
-            if (s->pa.cols[t] >= e) e = s->pa.cols[t] + 1;
-        }
-        if (e > f) memset(S + k * ld + f, 0, (size_t)(e - f) * sizeof(dReal));
-    }
+    memset(S, 0, (size_t)nb * (size_t)ld * sizeof(dReal));
     for (int i = 0; i < nb; i++) {
         int bi = r->bidx[i];
         dReal *si = S + inv[i] * ld;
@@ -346,18 +386,12 @@ static void schur_complement(const problem *p, const reduction *r, dxArena *aren
             if (j >= 0) si[inv[j]] = p->A.vals[k];
         }
     }
-    for (int c = 0; c < p->nparts; c++) {
-        for (int a = r->part_start[c]; a < r->part_start[c + 1]; a++) {
-            int sa = r->part_seg[a], ia = inv[r->seg_row[sa]];
-            const dReal *qa = q_row(r, r->seg_row[sa]);
-            for (int b = a; b < r->part_start[c + 1]; b++) {
-                int sb = r->part_seg[b], ib = inv[r->seg_row[sb]], f, e;
-                if (!seg_overlap(r, sa, sb, &f, &e)) continue;
-                dReal v = dxLcpDot(qa + f, q_row(r, r->seg_row[sb]) + f, e - f);
-                S[ia * ld + ib] -= v;
-                if (ib != ia) S[ib * ld + ia] -= v;
-            }
-        }
+    for (int k = 0; k < r->noverlaps; k++) {
+        const q_overlap *o = &r->overlaps[k];
+        int ia = inv[o->lo], ib = inv[o->hi];
+        dReal v = dxLcpDot(q_row(r, o->lo) + o->f, q_row(r, o->hi) + o->f, o->e - o->f);
+        S[ia * ld + ib] -= v;
+        if (ib != ia) S[ib * ld + ia] -= v;
     }
     s->A = S;
 }
@@ -614,8 +648,11 @@ static int solve(problem *p, dxArena *arena)
             continue;
         }
         p->diag[i] = 0;
-        for (int k = p->A.start[i]; k < p->A.start[i + 1]; k++)
-            if (p->A.cols[k] == i) p->diag[i] = p->A.vals[k];
+        for (int k = p->A.start[i]; k < p->A.start[i + 1]; k++) {
+            if (p->A.cols[k] != i) continue;
+            p->diag[i] = p->A.vals[k];
+            break;
+        }
     }
     int ok = 1;
     p->fu.m = 0;

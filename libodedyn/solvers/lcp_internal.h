@@ -141,14 +141,14 @@ static inline void dxLcpPatternAddValue(dxLcpPatternBuilder *pb, int i, int j, d
 dxLCPMatrix dxLcpSparseOf(dxArena *arena, const dReal *A, ptrdiff_t ld, int n);
 
 // Reverse breadth-first order of the rows nodes[0..count) on the graph of the pattern
-// restricted to them (where[i]: the place of row i in nodes, -1 for rows outside), in place:
-// a part at a time, from its first row in the given order (Cuthill-McKee without its degree
-// sort). Rows that interact end up close together, and a factor in this order has its
+// restricted to them (in[i] >= 0 for the rows in nodes, -1 for the others; all -1 on return),
+// in place: a part at a time, from its first row in the given order (Cuthill-McKee without
+// its degree sort). Rows that interact end up close together, and a factor in this order has its
 // nonzeros near the diagonal. Returns the number of connected parts; part (if not NULL)
 // receives the part of each place in the new order, numbered along it (each part is a run
 // of places).
-int dxLcpBfsOrder(dxArena *arena, const dxLcpPattern *pt, int *nodes, int count,
-                  const int *where, int *part);
+int dxLcpBfsOrder(dxArena *arena, const dxLcpPattern *pt, int *nodes, int count, int *in,
+                  int *part);
 
 // ---- L D L^T of a principal block, grown by bordering (lcp_sparse.c) ----
 

@@ -77,32 +77,29 @@ dxLCPMatrix dxLcpSparseOf(dxArena *arena, const dReal *A, ptrdiff_t ld, int n)
 
 // ---- ordering ----
 
-int dxLcpBfsOrder(dxArena *arena, const dxLcpPattern *pt, int *nodes, int count,
-                  const int *where, int *part)
+int dxLcpBfsOrder(dxArena *arena, const dxLcpPattern *pt, int *nodes, int count, int *in,
+                  int *part)
 {
     dxArenaMark mark = dxArenaSave(arena);
     int *out = DX_ARENA_ARRAY(arena, int, count), *out_part = DX_ARENA_ARRAY(arena, int, count);
-    signed char *seen = DX_ARENA_ARRAY(arena, signed char, count);
-    for (int a = 0; a < count; a++) seen[a] = 0;
     int head = 0, tail = 0, next_seed = 0, parts = 0;
-    while (tail < count) {   // one connected part per seed
-        while (seen[next_seed]) next_seed++;
-        seen[next_seed] = 1;
+    while (tail < count) {   // one connected part per seed; a row reached leaves `in`
+        while (in[nodes[next_seed]] < 0) next_seed++;
+        in[nodes[next_seed]] = -1;
         out_part[tail] = parts;
-        out[tail++] = next_seed;
+        out[tail++] = nodes[next_seed];
         while (head < tail) {
             int a = out[head++];
-            for (int k = pt->start[nodes[a]]; k < pt->start[nodes[a] + 1]; k++) {
-                int b = where[pt->cols[k]];
-                if (b < 0 || seen[b]) continue;
-                seen[b] = 1;
+            for (int k = pt->start[a]; k < pt->start[a + 1]; k++) {
+                int c = pt->cols[k];
+                if (in[c] < 0) continue;
+                in[c] = -1;
                 out_part[tail] = parts;
-                out[tail++] = b;
+                out[tail++] = c;
             }
         }
         parts++;
     }
-    for (int k = 0; k < count; k++) out[k] = nodes[out[k]];
     for (int k = 0; k < count; k++) nodes[k] = out[count - 1 - k];
     if (part)
         for (int k = 0; k < count; k++) part[k] = parts - 1 - out_part[count - 1 - k];
