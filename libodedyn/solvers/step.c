@@ -60,9 +60,9 @@ static dReal *inverse_mass_times_jt(dxArena *a, const dxIslandRows *r,
 }
 
 // Row i of J M^-1 J^T up to the diagonal (iMJ = M^-1 J^T): the rows j <= i that share a body
-// with it go to `touched` (returned: their count; mark[j] == i), and, if acc is not NULL,
-// acc[j] receives the sum over the shared bodies of J_i M^-1 J_j^T for that body. The rows
-// of a body are listed in increasing order.
+// with it go to `touched` (returned: their count; mark[j] == i), and acc[j] receives the sum
+// over the shared bodies of J_i M^-1 J_j^T for that body. The rows of a body are listed in
+// increasing order.
 static int a_row(const dxIslandRows *r, const body_rows *br, const dReal *iMJ, int i,
                  int *mark, int *touched, dReal *acc)
 {
@@ -77,9 +77,8 @@ static int a_row(const dxIslandRows *r, const body_rows *br, const dReal *iMJ, i
             if (mark[j] != i) {
                 mark[j] = i;
                 touched[count++] = j;
-                if (acc) acc[j] = 0;
+                acc[j] = 0;
             }
-            if (!acc) continue;
             const dReal *Mj = iMJ + j * DX_ROW_SKIP + 6 * (br->entries[p] & 1);
             acc[j] += Ji[0] * Mj[0] + Ji[1] * Mj[1] + Ji[2] * Mj[2] + Ji[3] * Mj[3] +
                       Ji[4] * Mj[4] + Ji[5] * Mj[5];
@@ -88,7 +87,7 @@ static int a_row(const dxIslandRows *r, const body_rows *br, const dReal *iMJ, i
     if (mark[i] != i) {   // a row without bodies still has its diagonal
         mark[i] = i;
         touched[count++] = i;
-        if (acc) acc[i] = 0;
+        acc[i] = 0;
     }
     return count;
 }
@@ -112,28 +111,74 @@ static dReal *form_A_full(dxArena *a, const dxIslandRows *r, const body_rows *br
     return A;
 }
 
+// An upper bound on the entries of the lower triangle of J M^-1 J^T (with the diagonal): each
+// comes from a pair j <= i of rows on one body, or is the diagonal of a row without bodies.
+static size_t lower_entries_bound(const body_rows *br, int nb, int m)
+{
+    size_t bound = (size_t)m;
+    for (int b = 0; b < nb; b++) {
+        size_t deg = (size_t)(br->start[b + 1] - br->start[b]);
+        bound += deg * (deg + 1) / 2;
+    }
+    return bound;
+}
+
+// The lower triangle (row i: columns lower_cols and values lower_vals at [lower_start[i],
+// lower_start[i + 1])) into the allocated pattern pb, both halves, as dxLcpPatternAddValue
+// would put them entry by entry in that order: row i's own entries first (nothing reached
+// row i before it), with its running place in a register, then (i, j) to each earlier row j.
+static void scatter_lower(dxLcpPatternBuilder *pb, const int *lower_start,
+                          const int *lower_cols, const dReal *lower_vals)
+{
+    int *restrict fill = pb->fill, *restrict cols = pb->cols;
+    dReal *restrict vals = pb->vals;
+    for (int i = 0; i < pb->n; i++) {
+        int at = fill[i];
+        for (int p = lower_start[i]; p < lower_start[i + 1]; p++) {
+            const int j = lower_cols[p];
+            const dReal v = lower_vals[p];
+            cols[at] = j;
+            vals[at++] = v;
+            if (j == i) continue;
+            const int up = fill[j]++;
+            cols[up] = i;
+            vals[up] = v;
+        }
+        fill[i] = at;
+    }
+}
+
 // A = J M^-1 J^T + cfm/h on the diagonal, as its nonzeros (exactly symmetric): the entries
-// of rows that share a body.
-static dxLCPMatrix form_A(dxArena *a, const dxIslandRows *r, const body_rows *br,
+// of rows that share a body. One walk of the body lists: the lower triangle goes row after
+// row to scratch (its entries counted for the pattern as they come), then into the pattern
+// in the same order as rows i and columns j, so that every row of A lists its columns as
+// the walk met them (j <= i) and then the later rows in increasing order.
+static dxLCPMatrix form_A(dxArena *a, const dxIslandRows *r, const body_rows *br, int nb,
                           const dReal *iMJ, dReal fps)
 {
     const int m = r->m;
-    int *mark = DX_ARENA_ARRAY(a, int, m), *touched = DX_ARENA_ARRAY(a, int, m);
-    dReal *acc = DX_ARENA_ARRAY(a, dReal, m);
+    const size_t bound = lower_entries_bound(br, nb, m);
+    int *mark = DX_ARENA_ARRAY(a, int, m), *lower_start = DX_ARENA_ARRAY(a, int, m + 1);
+    int *lower_cols = DX_ARENA_ARRAY(a, int, bound);
+    dReal *acc = DX_ARENA_ARRAY(a, dReal, m), *lower_vals = DX_ARENA_ARRAY(a, dReal, bound);
     dxLcpPatternBuilder pb;
     dxLcpPatternBegin(&pb, a, m);
     for (int i = 0; i < m; i++) mark[i] = -1;
+    int pos = 0;
     for (int i = 0; i < m; i++) {
-        int count = a_row(r, br, iMJ, i, mark, touched, NULL);
-        for (int t = 0; t < count; t++) dxLcpPatternCount(&pb, i, touched[t]);
-    }
-    dxLcpPatternAllocate(&pb, a, 1);
-    for (int i = 0; i < m; i++) mark[i] = -1;
-    for (int i = 0; i < m; i++) {
-        int count = a_row(r, br, iMJ, i, mark, touched, acc);
+        lower_start[i] = pos;
+        int *cols = lower_cols + pos;
+        int count = a_row(r, br, iMJ, i, mark, cols, acc);
         acc[i] += r->cfm[i] * fps;
-        for (int t = 0; t < count; t++) dxLcpPatternAddValue(&pb, i, touched[t], acc[touched[t]]);
+        for (int t = 0; t < count; t++) {
+            dxLcpPatternCount(&pb, i, cols[t]);
+            lower_vals[pos + t] = acc[cols[t]];
+        }
+        pos += count;
     }
+    lower_start[m] = pos;
+    dxLcpPatternAllocate(&pb, a, 1);
+    scatter_lower(&pb, lower_start, lower_cols, lower_vals);
     dxLCPMatrix A = { pb.start, pb.cols, pb.vals };
     return A;
 }
@@ -177,7 +222,7 @@ static void solve_big_matrix(struct dxWorld *w, dxArena *a, const dxIsland *is,
         dReal *A = form_A_full(a, r, &br, iMJ, fps);
         ok = dxSolveLCP(a, r->m, A, lambda, rhs, wout, 0, r->lo, r->hi, r->findex);
     } else {
-        dxLCPMatrix A = form_A(a, r, &br, iMJ, fps);
+        dxLCPMatrix A = form_A(a, r, &br, is->nb, iMJ, fps);
         ok = dxSolveLCPSparse(a, r->m, &A, lambda, rhs, wout, 0, r->lo, r->hi, r->findex);
     }
     if (!ok)
