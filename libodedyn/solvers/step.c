@@ -114,9 +114,11 @@ static int run_neighbours(const dxIslandRows *r, const body_rows *br, const dRea
 // first body's, then those only on its second). The rows of a joint (or of a contact) come
 // one after the other on the same bodies: such a run of rows shares its neighbours before
 // it, found once, and each row adds the run's rows up to itself after the first body's.
+// If upper is not NULL, upper[j] receives the number of entries of row j above the diagonal
+// (the later rows that share a body with it), counted run by run.
 static void lower_triangle(dxArena *a, const dxIslandRows *r, const body_rows *br,
                            const dReal *iMJ, dReal fps, int *lower_start, int *lower_cols,
-                           dReal *lower_vals)
+                           dReal *lower_vals, int *upper)
 {
     const int m = r->m;
     int *mark = DX_ARENA_ARRAY(a, int, m), *slot = DX_ARENA_ARRAY(a, int, m);
@@ -129,6 +131,10 @@ static void lower_triangle(dxArena *a, const dxIslandRows *r, const body_rows *b
         if (b0 >= 0 || b1 >= 0)
             while (i1 < m && r->body0[i1] == b0 && r->body1[i1] == b1) i1++;
         int nfirst, count = run_neighbours(r, br, iMJ, i0, mark, slot, nbr, &nfirst);
+        if (upper) {   // a row is first counted by its own run (later runs add to it)
+            for (int j = i0; j < i1; j++) upper[j] = i1 - 1 - j;
+            for (int t = 0; t < count; t++) upper[nbr[t].row] += i1 - i0;
+        }
         for (int i = i0; i < i1; i++) {
             const dReal *Ji = r->J + i * DX_ROW_SKIP;
             lower_start[i] = pos;
@@ -175,7 +181,7 @@ static dReal *form_A_full(dxArena *a, const dxIslandRows *r, const body_rows *br
     int *lower_start = DX_ARENA_ARRAY(a, int, m + 1);
     int *lower_cols = DX_ARENA_ARRAY(a, int, bound);
     dReal *lower_vals = DX_ARENA_ARRAY(a, dReal, bound);
-    lower_triangle(a, r, br, iMJ, fps, lower_start, lower_cols, lower_vals);
+    lower_triangle(a, r, br, iMJ, fps, lower_start, lower_cols, lower_vals, NULL);
     dSetZero(A, m * skip);
     for (int i = 0; i < m; i++) {
         dReal *Ai = A + (size_t)i * skip;
@@ -212,9 +218,10 @@ static void scatter_lower(dxLcpPatternBuilder *pb, const int *lower_start,
 }
 
 // A = J M^-1 J^T + cfm/h on the diagonal, as its nonzeros (exactly symmetric): the entries
-// of rows that share a body. The lower triangle goes to scratch, then into the pattern as
-// rows i and columns j in its order, so that every row of A lists its columns as the walk
-// of lower_triangle met them (j <= i) and then the later rows in increasing order.
+// of rows that share a body. The lower triangle goes to scratch (with each row's count of
+// entries above the diagonal, so that the pattern is sized without a walk of its own), then
+// into the pattern as rows i and columns j in its order, so that every row of A lists its
+// columns as lower_triangle met them (j <= i) and then the later rows in increasing order.
 static dxLCPMatrix form_A(dxArena *a, const dxIslandRows *r, const body_rows *br, int nb,
                           const dReal *iMJ, dReal fps)
 {
@@ -223,12 +230,10 @@ static dxLCPMatrix form_A(dxArena *a, const dxIslandRows *r, const body_rows *br
     int *lower_start = DX_ARENA_ARRAY(a, int, m + 1);
     int *lower_cols = DX_ARENA_ARRAY(a, int, bound);
     dReal *lower_vals = DX_ARENA_ARRAY(a, dReal, bound);
-    lower_triangle(a, r, br, iMJ, fps, lower_start, lower_cols, lower_vals);
     dxLcpPatternBuilder pb;
     dxLcpPatternBegin(&pb, a, m);
-    for (int i = 0; i < m; i++)
-        for (int p = lower_start[i]; p < lower_start[i + 1]; p++)
-            dxLcpPatternCount(&pb, i, lower_cols[p]);
+    lower_triangle(a, r, br, iMJ, fps, lower_start, lower_cols, lower_vals, pb.fill);
+    for (int i = 0; i < m; i++) pb.fill[i] += lower_start[i + 1] - lower_start[i];
     dxLcpPatternAllocate(&pb, a, 1);
     scatter_lower(&pb, lower_start, lower_cols, lower_vals);
     dxLCPMatrix A = { pb.start, pb.cols, pb.vals };
