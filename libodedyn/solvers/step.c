@@ -117,8 +117,9 @@ static int run_neighbours(const dxIslandRows *r, const body_rows *br, const dRea
 // If upper is not NULL, upper[j] receives the number of entries of row j above the diagonal
 // (the later rows that share a body with it), counted run by run.
 static void lower_triangle(dxArena *a, const dxIslandRows *r, const body_rows *br,
-                           const dReal *iMJ, dReal fps, int *lower_start, int *lower_cols,
-                           dReal *lower_vals, int *upper)
+                           const dReal *iMJ, dReal fps, int *restrict lower_start,
+                           int *restrict lower_cols, dReal *restrict lower_vals,
+                           int *restrict upper)
 {
     const int m = r->m;
     int *mark = DX_ARENA_ARRAY(a, int, m), *slot = DX_ARENA_ARRAY(a, int, m);
