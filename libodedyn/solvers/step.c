@@ -89,7 +89,7 @@ static int run_neighbours(const dxIslandRows *r, const body_rows *br, const dRea
                           int *mark, int *slot, run_neighbour *nbr, int *nfirst)
 {
     int count = 0;
-    *nfirst = 0;
+    *nfirst = -1;
     for (int s = 0; s < 2; s++) {
         int b = s ? r->body1[i0] : r->body0[i0];
         if (b < 0) continue;
@@ -103,8 +103,9 @@ static int run_neighbours(const dxIslandRows *r, const body_rows *br, const dRea
             }
             nbr[slot[j]].at[s] = iMJ + j * DX_ROW_SKIP + 6 * (br->entries[p] & 1);
         }
-        if (*nfirst == 0) *nfirst = count;
+        if (*nfirst < 0) *nfirst = count;   // the first body's walk, even if it met none
     }
+    if (*nfirst < 0) *nfirst = 0;
     return count;
 }
 
