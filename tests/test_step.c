@@ -470,6 +470,57 @@ static int test_kinematic_body_moves_and_drags_a_joined_body(void)
     return 0;
 }
 
+// A chain of ball joints (LINKS of them: more rows than an island keeps dense) hanging from
+// `anchor` (NULL: the world) at the origin, released 15 degrees from vertical; the joints
+// attached parent first (`parent_first`) or child first. The links in body.
+enum { HUNG_LINKS = 10 };
+static void hung_chain(dBodyID anchor_body, dWorldID w, int parent_first, dBodyID *body)
+{
+    const dReal len = 0.1, angle = 75 * M_PI / 180, dx = dCos(angle), dz = -dSin(angle);
+    dMass m;
+    dMassSetCapsuleTotal(&m, 0.1, 1, 0.01, len);
+    for (int i = 0; i < HUNG_LINKS; i++) {
+        body[i] = dBodyCreate(w);
+        dBodySetMass(body[i], &m);
+        dBodySetPosition(body[i], (i + 0.5) * len * dx, 0, (i + 0.5) * len * dz);
+        dJointID j = dJointCreateBall(w, 0);
+        dBodyID parent = i ? body[i - 1] : anchor_body;
+        if (parent_first) dJointAttach(j, parent, body[i]);
+        else dJointAttach(j, body[i], parent);
+        dJointSetBallAnchor(j, i * len * dx, 0, i * len * dz);
+    }
+}
+
+// The big matrix has the same entries whichever side of a joint the static world or a
+// kinematic body takes (rows with only a second body, runs of rows on the same bodies):
+// chains hung from the world and from a kinematic body at rest, joints attached either way,
+// swing alike.
+static int test_chain_swings_alike_whichever_side_its_anchor_is(void)
+{
+    dBodyID body[4][HUNG_LINKS];
+    dWorldID w[4];
+    for (int k = 0; k < 4; k++) {
+        w[k] = world_with_gravity();
+        dBodyID anchor_body = NULL;
+        if (k >= 2) {
+            anchor_body = dBodyCreate(w[k]);
+            dBodySetKinematic(anchor_body);
+        }
+        hung_chain(anchor_body, w[k], k & 1, body[k]);
+    }
+    for (int step = 0; step < 200; step++)
+        for (int k = 0; k < 4; k++) dWorldStep(w[k], 0.01);
+    const dReal *end = dBodyGetPosition(body[0][HUNG_LINKS - 1]);
+    CHECK(end[2] < -0.3);   // still hanging, and swinging: off the start
+    for (int k = 1; k < 4; k++)
+        for (int i = 0; i < HUNG_LINKS; i++)
+            for (int c = 0; c < 3; c++)
+                CHECK_NEAR(dBodyGetPosition(body[k][i])[c], dBodyGetPosition(body[0][i])[c],
+                           TOL(1e-6, 1e-3));
+    for (int k = 0; k < 4; k++) dWorldDestroy(w[k]);
+    return 0;
+}
+
 static int test_bad_step_size_is_reported_and_changes_nothing(void)
 {
     test_capture_reports();
@@ -548,6 +599,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_soft_ball_joint_is_a_spring),
     TEST_CASE(test_idle_body_is_auto_disabled_and_woken_by_neighbour),
     TEST_CASE(test_kinematic_body_moves_and_drags_a_joined_body),
+    TEST_CASE(test_chain_swings_alike_whichever_side_its_anchor_is),
     TEST_CASE(test_bad_step_size_is_reported_and_changes_nothing),
     TEST_CASE(test_long_chain_steps_without_overflowing_the_stack),
     TEST_CASE(test_warm_step_allocates_nothing),
