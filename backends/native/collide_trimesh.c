@@ -698,19 +698,19 @@ static int boxes_meeting(const dxTriMeshData *d, const int *leaf, int n, const o
                          int *cand)
 {
     const dxTriLeafFace *faces = d->leaf_faces;
-    int m = 0;
+    ptrdiff_t m = 0; // pointer-wide, as are the positions: no widening per slot
     for (int i = 0; i < n; i++) {
         const dxTriMeshNode *node = &d->nodes[leaf[i] >> 2];
-        const int first = node->first[leaf[i] & 3], count = node->count[leaf[i] & 3];
-        for (int k = 0; k < DX_TRI_LEAF_MAX; k++) {
-            const int j = first + (k < count ? k : count - 1);
+        const ptrdiff_t first = node->first[leaf[i] & 3], last = first + node->count[leaf[i] & 3] - 1;
+        for (ptrdiff_t j = first; j < first + DX_TRI_LEAF_MAX; j++) {
+            const ptrdiff_t at = j < last ? j : last;
             int unsure;
-            const int meets = tri_meets_box_f(faces[j].box, fb, &unsure);
-            cand[m] = j + (unsure ? WALK_UNSURE : 0);
-            m += meets & (k < count);
+            const int meets = tri_meets_box_f(faces[at].box, fb, &unsure);
+            cand[m] = (int)at + (unsure ? WALK_UNSURE : 0);
+            m += meets & (j <= last);
         }
     }
-    return m;
+    return (int)m;
 }
 
 // Of the m candidates (boxes_meeting's), in place, those whose exact box
