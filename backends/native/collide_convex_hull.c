@@ -457,6 +457,17 @@ static inline __attribute__((always_inline)) int plane_sides(const hull_point *p
     return plane_sides_from(poly, i, n, s, off, side) & inside;
 }
 
+// Whether the edge between points on sides dp and dq crosses the plane.
+static inline int crosses(double dp, double dq) { return (dp < 0 && dq > 0) || (dp > 0 && dq < 0); }
+
+// The point where the edge p -> q (sides dp, dq) crosses the plane, into o.
+static inline __attribute__((always_inline)) void crossing(const hull_point *p, const hull_point *q,
+                                                           double dp, double dq, hull_point *o)
+{
+    double f = dp / (dp - dq);
+    for (int k = 0; k < 3; k++) o->p[k] = p->p[k] + f * (q->p[k] - p->p[k]);
+}
+
 // Keeps the part of poly (n points, on the sides plane_sides gives) with
 // s . x <= off in out, checking out's room at every point; the new count.
 static int clip_plane_bounded(const hull_point *poly, int n, const double *side, hull_point *out)
@@ -467,11 +478,7 @@ static int clip_plane_bounded(const hull_point *poly, int n, const double *side,
         const hull_point *p = &poly[i], *q = &poly[j];
         double dp = side[i], dq = side[j];
         if (dp <= 0) out[m++] = *p;
-        if (m < MAXP && ((dp < 0 && dq > 0) || (dp > 0 && dq < 0))) {
-            double f = dp / (dp - dq);
-            for (int k = 0; k < 3; k++) out[m].p[k] = p->p[k] + f * (q->p[k] - p->p[k]);
-            m++;
-        }
+        if (m < MAXP && crosses(dp, dq)) crossing(p, q, dp, dq, &out[m++]);
     }
     return m;
 }
@@ -483,11 +490,7 @@ static inline __attribute__((always_inline)) int clip_edge(const hull_point *p, 
                                                            int m)
 {
     if (dp <= 0) out[m++] = *p;
-    if ((dp < 0 && dq > 0) || (dp > 0 && dq < 0)) {
-        double f = dp / (dp - dq);
-        for (int k = 0; k < 3; k++) out[m].p[k] = p->p[k] + f * (q->p[k] - p->p[k]);
-        m++;
-    }
+    if (crosses(dp, dq)) crossing(p, q, dp, dq, &out[m++]);
     return m;
 }
 
