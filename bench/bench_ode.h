@@ -8,6 +8,9 @@
 #define BENCH_ODE_H
 
 #include <ode/ode.h>
+#ifdef BENCH_HAVE_POSITION_ITERATIONS
+#include <ode/position_correction.h>
+#endif
 #include <math.h>
 #include <stdint.h>
 
@@ -79,6 +82,32 @@ static inline bench_stepper bench_arg_stepper(bench_args *a, const char *def)
     }
     fprintf(stderr, "%s: stepper is quick, world or fast, not '%s'\n", a->argv[0], s);
     exit(2);
+}
+
+// position_iterations=N (not given: 0, ODE's own step): this project's opt-in position
+// correction, N sweeps after each step (dWorldSetPositionIterations). Builds define
+// BENCH_HAVE_POSITION_ITERATIONS where the engine has it; elsewhere asking for it exits with
+// status 3 (not available).
+static inline int bench_arg_position_iterations(bench_args *a)
+{
+    const int n = (int)bench_arg_int(a, "position_iterations", 0);
+#ifndef BENCH_HAVE_POSITION_ITERATIONS
+    if (n > 0) {
+        fprintf(stderr, "%s: this engine has no dWorldSetPositionIterations\n", a->argv[0]);
+        exit(3);
+    }
+#endif
+    return n;
+}
+
+static inline void bench_set_position_iterations(dWorldID w, int n)
+{
+#ifdef BENCH_HAVE_POSITION_ITERATIONS
+    dWorldSetPositionIterations(w, n);
+#else
+    (void)w;
+    (void)n;
+#endif
 }
 
 static inline const char *bench_stepper_name(bench_stepper s)

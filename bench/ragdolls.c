@@ -9,7 +9,9 @@
 // apart, the second layer 2.2 m above the first, each turned by a random rotation (drawn from
 // `seed`) about its middle. Hash space, 4 contacts per pair, mu 0.8 with dContactApprox1,
 // dt 1/60, gravity 9.81, world ERP and CFM left at their defaults; parts of one figure do not
-// collide with each other.
+// collide with each other. `position_iterations=N` (this project only) adds N sweeps of its
+// opt-in position correction after each step; `gyroscopic=off` steps every body without the
+// gyroscopic term (dBodySetGyroscopicMode), to compare the engines' steps without it.
 // Quality: the largest anchor-to-anchor2 distance of any joint over the run (joint_sep), at the
 // end and averaged over the steps (joint_sep_mean: steadier than a maximum), the deepest
 // contact seen (max_pen: a falling limb's first touch of the ground, as deep as the limb got
@@ -135,6 +137,12 @@ int main(int argc, char **argv)
     const int iterations = (int)bench_arg_int(&args, "iterations", 20);
     const bench_stepper stepper = bench_arg_stepper(&args, "quick");
     const long seed = bench_arg_int(&args, "seed", 40);
+    const int position_iterations = bench_arg_position_iterations(&args);
+    const char *gyroscopic = bench_arg_str(&args, "gyroscopic", "on");
+    if (strcmp(gyroscopic, "on") != 0 && strcmp(gyroscopic, "off") != 0) {
+        fprintf(stderr, "%s: gyroscopic is on or off, not '%s'\n", argv[0], gyroscopic);
+        return 2;
+    }
     bench_threads threads;
     const dReal dt = (dReal)(1.0 / 60.0);
 
@@ -143,9 +151,10 @@ int main(int argc, char **argv)
     bench_threads_start(&threads, &args, world, bench_stepper_name(stepper));
     bench_args_check(&args,
                      "[figures=N] [steps=N] [stepper=quick|world|fast] [iterations=N] [threads=N] "
-                     "[seed=N]");
+                     "[seed=N] [position_iterations=N] [gyroscopic=on|off]");
     dWorldSetGravity(world, 0, 0, (dReal)-9.81);
     dWorldSetQuickStepNumIterations(world, iterations);
+    bench_set_position_iterations(world, position_iterations);
     dSpaceID space = dHashSpaceCreate(0);
     dCreatePlane(space, 0, 0, 1, 0);
 
@@ -162,6 +171,8 @@ int main(int argc, char **argv)
         dMatrix3 Rf;
         dRFromAxisAndAngle(Rf, (dReal)ax, (dReal)ay, (dReal)az, (dReal)angle);
         make_figure(world, space, f, Rf, t, body + f * PARTS, joint + f * JOINTS);
+        if (strcmp(gyroscopic, "off") == 0)
+            for (int i = 0; i < PARTS; i++) dBodySetGyroscopicMode(body[f * PARTS + i], 0);
     }
 
     bench_contacts con;
@@ -188,10 +199,11 @@ int main(int argc, char **argv)
     }
     bench_report("ragdolls", BENCH_ENGINE, threads.variant, figures * PARTS, steps,
                  coll_s, step_s,
-                 "iterations=%d max_pen=%.6f joint_sep=%.6f joint_sep_end=%.6f "
-                 "joint_sep_mean=%.6f ke_end=%.6g ke_per_kg_end=%.6g contacts_per_step=%.1f",
-                 iterations, con.max_depth, sep_max, sep_end, sep_sum / steps, ke, ke / mass,
-                 (double)con.contacts / steps);
+                 "iterations=%d position_iterations=%d gyroscopic=%s max_pen=%.6f joint_sep=%.6f "
+                 "joint_sep_end=%.6f joint_sep_mean=%.6f ke_end=%.6g ke_per_kg_end=%.6g "
+                 "contacts_per_step=%.1f",
+                 iterations, position_iterations, gyroscopic, con.max_depth, sep_max, sep_end,
+                 sep_sum / steps, ke, ke / mass, (double)con.contacts / steps);
 
     dJointGroupDestroy(con.group);
     dSpaceDestroy(space);
