@@ -168,36 +168,48 @@ static int merge_duplicates(dxTriScratch *s, dxTriMesh *m, dxGeom *other, dReal 
 #define SAME_LINE (100 * DX_COLLIDE_EPS)
 
 // The gift wrap's step in the plane of a flat group (uv: member i's
-// coordinates there at 2i, 2i + 1): from member cur, the member that all
-// the others are not clockwise of; among those in line with it (within a
-// relative sine of SAME_LINE) the farthest.
-static int wrap_next(const dReal *uv, int count, int cur)
+// coordinates there at 2i, 2i + 1; depth: member i's depth): from member
+// cur, the member that all the others are not clockwise of; among those in
+// line with it (within a relative sine of SAME_LINE) the farthest, and
+// among those at one place (within the square root of near2) the deepest.
+// Members at cur's place are not candidates: two contacts at one point of
+// the plane but at different depths (a cap's rim and a side's corner, apart
+// along the normal) are apart by rounding alone in uv, so the direction
+// between them is noise; taken as a candidate it made the pick depend on
+// the members' order (clockwise of next then no longer orders them) and
+// the wrap close a loop that left hull corners out.
+static int wrap_next(const dReal *uv, const dReal *depth, int count, int cur, dReal near2)
 {
     int next = -1;
     dReal nu = 0, nv = 0;
     for (int q = 0; q < count; q++) {
         if (q == cur) continue;
         dReal qu = uv[2 * q] - uv[2 * cur], qv = uv[2 * q + 1] - uv[2 * cur + 1];
+        dReal q2 = qu * qu + qv * qv;
+        if (q2 <= near2) continue;
         if (next < 0) {
             next = q, nu = qu, nv = qv;
             continue;
         }
         // cross < 0: q is clockwise of next; collinear within a
         // relative sine of SAME_LINE.
-        dReal cross = nu * qv - nv * qu, q2 = qu * qu + qv * qv, n2 = nu * nu + nv * nv;
+        dReal cross = nu * qv - nv * qu, n2 = nu * nu + nv * nv;
         dReal tol = SAME_LINE * dSqrt(q2 * n2);
-        if (cross < -tol || (cross <= tol && q2 > n2))
+        dReal du = qu - nu, dv = qv - nv;
+        int same_place = du * du + dv * dv <= near2;
+        if (cross < -tol || (cross <= tol && (same_place ? depth[q] > depth[next] : q2 > n2)))
             next = q, nu = qu, nv = qv;
     }
-    return next;
+    return next < 0 ? cur : next;   // every other member at cur's place
 }
 
 // Within a group of contacts with one normal (one flat patch), the corners
 // of the patch's convex hull and its deepest point are what matters (with a
 // flat solid on it, where depth varies linearly, the corners alone): mark
 // them in keep[] (gift wrapping in the plane; points on a hull edge between
-// two corners are left out). members lists the group; uv has room for
-// 2 count numbers.
+// two corners are left out; of members at one place, within depth_tol in
+// the plane, the deepest). members lists the group; uv has room for
+// 3 count numbers (the plane coordinates, then the depths).
 static void mark_hull(const dxTriMeshRaw *r, const int *members, int count, dReal depth_tol,
                       int *keep, dReal *uv)
 {
@@ -211,15 +223,22 @@ static void mark_hull(const dxTriMeshRaw *r, const int *members, int count, dRea
     e2[0] = n[1] * e1[2] - n[2] * e1[1];
     e2[1] = n[2] * e1[0] - n[0] * e1[2];
     e2[2] = n[0] * e1[1] - n[1] * e1[0];
+    dReal *depth = uv + 2 * count, near2 = depth_tol * depth_tol;
     for (int i = 0; i < count; i++) {
         uv[2 * i] = dx_dot(r[members[i]].pos, e1);
         uv[2 * i + 1] = dx_dot(r[members[i]].pos, e2);
+        depth[i] = r[members[i]].depth;
     }
     int start = 0;
     for (int i = 1; i < count; i++)
         if (uv[2 * i] < uv[2 * start] ||
             (uv[2 * i] == uv[2 * start] && uv[2 * i + 1] < uv[2 * start + 1]))
             start = i;
+    // The deepest at the start's place (as the wrap takes at a place).
+    for (int i = 0, s0 = start; i < count; i++) {
+        dReal du = uv[2 * i] - uv[2 * s0], dv = uv[2 * i + 1] - uv[2 * s0 + 1];
+        if (du * du + dv * dv <= near2 && depth[i] > depth[start]) start = i;
+    }
     // Wrap until a member comes round again: the loop from it is the hull.
     // The start, lowest in e1, is a corner but for rounding: it can lie on
     // an edge between two corners, in line within SAME_LINE; then the wrap
@@ -228,9 +247,9 @@ static void mark_hull(const dxTriMeshRaw *r, const int *members, int count, dRea
     int cur = start;
     while (!keep[members[cur]]) {
         keep[members[cur]] = 1;
-        cur = wrap_next(uv, count, cur);
+        cur = wrap_next(uv, depth, count, cur, near2);
     }
-    for (int entry = cur, p = start; p != entry; p = wrap_next(uv, count, p))
+    for (int entry = cur, p = start; p != entry; p = wrap_next(uv, depth, count, p, near2))
         keep[members[p]] = 0;
     int deepest = 0;
     dReal corner_depth = -dInfinity;
@@ -309,7 +328,7 @@ static int prune_flat_groups(dxTriScratch *s, int n, dReal tol)
 {
     dxTriMeshReserveInts(&s->cand[0], &s->cand_cap[0], n);
     dxTriMeshReserveInts(&s->hits[0], &s->hits_cap[0], 2 * n);
-    reserve_reals(s, 2 * n);
+    reserve_reals(s, 3 * n);
     int *members = s->cand[0], *keep = s->hits[0], *done = s->hits[0] + n;
     for (int i = 0; i < n; i++) keep[i] = done[i] = 0;
     int grid = n >= GRID_FROM && unit_normals(s->raw, n);
