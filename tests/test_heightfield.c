@@ -74,7 +74,11 @@ static double urand(double lo, double hi)
 
 static void random_rotation(dMatrix3 R)
 {
-    dRFromAxisAndAngle(R, urand(-1, 1), urand(-1, 1), urand(-1, 1) + 0.01, urand(-M_PI, M_PI));
+    // One draw a statement: the order in which a call's arguments are
+    // evaluated is unspecified (gcc's is right to left, clang's left to
+    // right), and the poses must not depend on the compiler.
+    double ax = urand(-1, 1), ay = urand(-1, 1), az = urand(-1, 1) + 0.01;
+    dRFromAxisAndAngle(R, ax, ay, az, urand(-M_PI, M_PI));
 }
 
 // Whether every contact of a has one of b at the same point with the same
@@ -103,15 +107,23 @@ static int contacts_match(const dContactGeom *a, int na, const dContactGeom *b, 
 static dGeomID random_solid(int k, const dReal *P, const dReal *R)
 {
     dGeomID g;
-    double size;
+    double size, lx, ly, lz, len;
+    // One draw a statement (see random_rotation).
     switch (k) {
     case 0: g = dCreateSphere(0, size = urand(0.1, 0.8)); break;
     case 1:
-        g = dCreateBox(0, urand(0.2, 1.5), urand(0.2, 1.5), urand(0.2, 1.5));
+        lx = urand(0.2, 1.5), ly = urand(0.2, 1.5), lz = urand(0.2, 1.5);
+        g = dCreateBox(0, lx, ly, lz);
         size = 0.5;
         break;
-    case 2: g = dCreateCapsule(0, size = urand(0.1, 0.5), urand(0.2, 1.5)); break;
-    default: g = dCreateCylinder(0, size = urand(0.1, 0.6), urand(0.2, 1.2)); break;
+    case 2:
+        size = urand(0.1, 0.5), len = urand(0.2, 1.5);
+        g = dCreateCapsule(0, size, len);
+        break;
+    default:
+        size = urand(0.1, 0.6), len = urand(0.2, 1.2);
+        g = dCreateCylinder(0, size, len);
+        break;
     }
     double x = urand(-3, 3), z = urand(-2.2, 2.2);
     // Centre above the triangulated surface (which lies up to 0.02 below
@@ -368,7 +380,8 @@ static int test_trimesh_rests_on_a_flat_field_and_orders_mirror(void)
         dMatrix3 R;
         dRFromAxisAndAngle(R, 0, 0, 1, urand(0, M_PI));
         dGeomSetRotation(box, R);
-        dGeomSetPosition(box, urand(-5, 5), urand(-3, 3), 0.3 - 1e-3);
+        double x = urand(-5, 5), y = urand(-3, 3);   // one draw a statement
+        dGeomSetPosition(box, x, y, 0.3 - 1e-3);
         int n = dCollide(flat_hf, box, 64, a, sizeof a[0]);
         CHECK(n == 4);
         for (int j = 0; j < n; j++) {
