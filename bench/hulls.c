@@ -101,9 +101,14 @@ int main(int argc, char **argv)
         body[i] = dBodyCreate(world);
         dBodySetMass(body[i], &m);
         dBodySetPosition(body[i], (dReal)x, (dReal)y, (dReal)z);
+        // One draw a statement (C leaves the order of a call's arguments open, and gcc and
+        // clang differ): the angle, then the axis's z, y and x, the order gcc drew them in.
+        const double angle = bench_rand(&rng, 0, 3);
+        const double az = bench_rand(&rng, -1, 1);
+        const double ay = bench_rand(&rng, -1, 1);
+        const double ax = bench_rand(&rng, -1, 1);
         dMatrix3 R;
-        dRFromAxisAndAngle(R, (dReal)bench_rand(&rng, -1, 1), (dReal)bench_rand(&rng, -1, 1),
-                           (dReal)bench_rand(&rng, -1, 1), (dReal)bench_rand(&rng, 0, 3));
+        dRFromAxisAndAngle(R, (dReal)ax, (dReal)ay, (dReal)az, (dReal)angle);
         dBodySetRotation(body[i], R);
         dGeomID g = dCreateConvex(space, planes, 8, points, 12, polygons);
         dGeomSetBody(g, body[i]);

@@ -73,9 +73,13 @@ int main(int argc, char **argv)
         dBodySetMass(body[i], &m);
         dGeomSetBody(g, body[i]);
         dBodySetPosition(body[i], (dReal)x, (dReal)y, (dReal)z);
+        // One draw a statement (C leaves the order of a call's arguments open, and gcc and
+        // clang differ): the angle, then the axis's y and x, the order gcc drew them in.
+        const double angle = bench_rand(&rng, 0, 3);
+        const double ay = bench_rand(&rng, -1, 1);
+        const double ax = bench_rand(&rng, -1, 1);
         dMatrix3 R;
-        dRFromAxisAndAngle(R, bench_rand(&rng, -1, 1), bench_rand(&rng, -1, 1), 1,
-                           bench_rand(&rng, 0, 3));
+        dRFromAxisAndAngle(R, (dReal)ax, (dReal)ay, 1, (dReal)angle);
         dBodySetRotation(body[i], R);
     }
 
