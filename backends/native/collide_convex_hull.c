@@ -458,7 +458,10 @@ static inline __attribute__((always_inline)) int plane_sides(const hull_point *p
 }
 
 // Whether the edge between points on sides dp and dq crosses the plane.
-static inline int crosses(double dp, double dq) { return (dp < 0 && dq > 0) || (dp > 0 && dq < 0); }
+static inline int crosses(double dp, double dq)
+{
+    return (dp < 0 && dq > 0) || (dp > 0 && dq < 0);
+}
 
 // The point where the edge p -> q (sides dp, dq) crosses the plane, into o.
 static inline __attribute__((always_inline)) void crossing(const hull_point *p, const hull_point *q,
@@ -504,7 +507,8 @@ static inline __attribute__((always_inline)) int clip_plane(const hull_point *po
 {
     if (2 * n > MAXP) return clip_plane_bounded(poly, n, side, out);
     int m = 0;
-    for (int i = 0; i + 1 < n; i++) m = clip_edge(&poly[i], &poly[i + 1], side[i], side[i + 1], out, m);
+    for (int i = 0; i + 1 < n; i++)
+        m = clip_edge(&poly[i], &poly[i + 1], side[i], side[i + 1], out, m);
     return clip_edge(&poly[n - 1], &poly[0], side[n - 1], side[0], out, m);
 }
 

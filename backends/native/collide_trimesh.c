@@ -720,7 +720,8 @@ static int boxes_meeting(const dxTriMeshData *d, const int *leaf, int n, const o
     ptrdiff_t m = 0; // pointer-wide, as are the positions: no widening per slot
     for (int i = 0; i < n; i++) {
         const dxTriMeshNode *node = &d->nodes[leaf[i] >> 2];
-        const ptrdiff_t first = node->first[leaf[i] & 3], last = first + node->count[leaf[i] & 3] - 1;
+        const ptrdiff_t first = node->first[leaf[i] & 3];
+        const ptrdiff_t last = first + node->count[leaf[i] & 3] - 1;
         for (ptrdiff_t j = first; j < first + DX_TRI_LEAF_MAX; j++) {
             const ptrdiff_t at = j < last ? j : last;
             int unsure;
