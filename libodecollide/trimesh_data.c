@@ -319,7 +319,8 @@ static int far_corner(const int uidx[3], int a, int b)
 static void compute_neighbours(dxTriMeshData *d)
 {
     size_t n = 3 * (size_t)d->tri_count;
-    edge_key *unsorted = (edge_key *)dAlloc(n * sizeof *unsorted);
+    dxBigBlock unsorted_block = { 0 }, sorted_block = { 0 };   // big_block.h: large, written once
+    edge_key *unsorted = (edge_key *)dxBigBlockAlloc(&unsorted_block, n * sizeof *unsorted);
     for (int t = 0; t < d->tri_count; t++) {
         const int *idx = d->welded + 3 * t;
         for (int k = 0; k < 3; k++) {
@@ -328,9 +329,9 @@ static void compute_neighbours(dxTriMeshData *d)
             d->neighbour[3 * t + k] = -1;
         }
     }
-    edge_key *e = (edge_key *)dAlloc(n * sizeof *e);
+    edge_key *e = (edge_key *)dxBigBlockAlloc(&sorted_block, n * sizeof *e);
     sort_edges(unsorted, n, d->vertex_count, e);
-    dFree(unsorted, n * sizeof *unsorted);
+    dxBigBlockFree(&unsorted_block);
     clear_adjacency(d);
     for (int pass = 0; pass < 2; pass++) {   // count the shared edges, then list them
         int count = 0;
@@ -358,7 +359,7 @@ static void compute_neighbours(dxTriMeshData *d)
         }
     }
     compute_vertex_adjacency(d, e, n);
-    dFree(e, n * sizeof *e);
+    dxBigBlockFree(&sorted_block);
     d->closed = 1;
     for (int t = 0; t < d->tri_count; t++) {
         const int *u = d->neighbour + 3 * t;

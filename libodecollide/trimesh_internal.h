@@ -21,6 +21,7 @@
 #include <emmintrin.h>
 #endif
 
+#include "big_block.h"
 #include "geom_internal.h"
 
 enum {
@@ -216,11 +217,10 @@ struct dxTriMeshData {
     dReal *leaf_vertices;                 // 9 per triangle in leaf order: the
                                           // vertices of order[j] at 9 j (rays)
     dxTriLeafFace *leaf_faces;            // 1 per triangle in leaf order
-    void *tree_block;                     // one allocation holding nodes,
-    size_t tree_block_size;               // node_span, leaf_vertices and
+    dxBigBlock tree_block;                // one block holding nodes,
+                                          // node_span, leaf_vertices and
                                           // leaf_faces, each at a cache line
-                                          // (a large one from a huge page's
-                                          // start: trimesh_tree.c)
+                                          // (big_block.h, trimesh_tree.c)
     uint64_t tree_stamp;                  // unique per build and refit; 0: no
                                           // temporal coherence (a heightfield patch)
     unsigned char *built_flags;           // Preprocess: use flags

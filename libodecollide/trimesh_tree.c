@@ -13,16 +13,11 @@
 // triangle, vertex), and of their normals with their indices (the
 // colliders' walk reads them without going through order[]).
 
-#define _DEFAULT_SOURCE   // madvise's MADV_HUGEPAGE (Linux)
-
 #include <math.h>
 #include <ode/memory.h>
 #include <stdatomic.h>
 #include <stdint.h>
 #include <string.h>
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
 
 #include "trimesh_internal.h"
 #include "../libodedyn/core/dx_clones.h"
@@ -66,18 +61,23 @@ static unsigned coplanar_edges(const dxTriMeshData *d, int t)
     return bits;
 }
 
-// (Re)write the leaf-order copies: the vertices from the user's arrays,
-// the faces from the normals and neighbours (found before).
-static void copy_leaf_triangles(dxTriMeshData *d)
+// (Re)write leaf position j's copies of triangle t: its vertices from the
+// user's arrays, its face (normal, index, coplanar edges; found before)
+// and the face's float box, rounded outwards; its exact box into lo, hi.
+static void copy_leaf_triangle(dxTriMeshData *d, int j, int t, dReal lo[3], dReal hi[3])
 {
-    for (int j = 0; j < d->tri_count; j++) {
-        const int t = d->order[j];
-        dxTriMeshTriangle(d, t, (dReal(*)[3])(d->leaf_vertices + 9 * j));
-        dxTriLeafFace *f = &d->leaf_faces[j];
-        for (int k = 0; k < 3; k++) f->n[k] = d->normal[3 * t + k];
-        f->index = t;
-        f->coplanar = coplanar_edges(d, t);
+    dReal(*v)[3] = (dReal(*)[3])(d->leaf_vertices + 9 * j);
+    dxTriMeshTriangle(d, t, v);
+    dxTriLeafFace *f = &d->leaf_faces[j];
+    for (int k = 0; k < 3; k++) {
+        lo[k] = dMin(v[0][k], dMin(v[1][k], v[2][k]));
+        hi[k] = dMax(v[0][k], dMax(v[1][k], v[2][k]));
+        f->box[k] = dxFloatBelow(lo[k]);
+        f->box[3 + k] = dxFloatAbove(hi[k]);
+        f->n[k] = d->normal[3 * t + k];
     }
+    f->index = t;
+    f->coplanar = coplanar_edges(d, t);
 }
 
 // Each face's near[] (dxTriLeafFace): the neighbours' leaf positions less
@@ -98,16 +98,6 @@ static void set_near_faces(dxTriMeshData *d)
     dFree(position, (size_t)d->tri_count * sizeof(int));
 }
 
-// The box of the triangle at leaf position j, from the copy.
-static void leaf_triangle_box(const dxTriMeshData *d, int j, dReal lo[3], dReal hi[3])
-{
-    const dReal *v = d->leaf_vertices + 9 * j;
-    for (int k = 0; k < 3; k++) {
-        lo[k] = dMin(v[k], dMin(v[3 + k], v[6 + k]));
-        hi[k] = dMax(v[k], dMax(v[3 + k], v[6 + k]));
-    }
-}
-
 static void triangle_box(const dxTriMeshData *d, int t, dReal lo[3], dReal hi[3])
 {
     dReal v[3][3];
@@ -118,21 +108,28 @@ static void triangle_box(const dxTriMeshData *d, int t, dReal lo[3], dReal hi[3]
     }
 }
 
-// Rearrange order[lo, hi) so that the element at mid has the centre it
-// would have sorted by centre[.][axis], no larger ones before it
-// (quickselect).
-static void select_median(int *order, const dReal *centre, int axis, int lo, int hi, int mid)
+// A triangle's centre with its index, moved as one while the tree is
+// built: the splits read the centres in sequence, not through order[].
+typedef struct centre_rec {
+    dReal c[3];
+    int t;
+} centre_rec;
+
+// Rearrange rec[lo, hi) so that the element at mid has the centre it
+// would have sorted by c[axis], no larger ones before it (quickselect,
+// Hoare's partition).
+static void select_median(centre_rec *rec, int axis, int lo, int hi, int mid)
 {
     while (hi - lo > 1) {
-        dReal pivot = centre[3 * order[(lo + hi) / 2] + axis];
+        dReal pivot = rec[(lo + hi) / 2].c[axis];
         int i = lo, j = hi - 1;
         while (i <= j) {
-            while (centre[3 * order[i] + axis] < pivot) i++;
-            while (centre[3 * order[j] + axis] > pivot) j--;
+            while (rec[i].c[axis] < pivot) i++;
+            while (rec[j].c[axis] > pivot) j--;
             if (i <= j) {
-                int t = order[i];
-                order[i] = order[j];
-                order[j] = t;
+                centre_rec t = rec[i];
+                rec[i] = rec[j];
+                rec[j] = t;
                 i++;
                 j--;
             }
@@ -188,11 +185,10 @@ typedef struct bin_node {
     int first, count, height;
 } bin_node;
 
-// Binary node i over order[lo, hi) (its slot taken): split at the median of
-// the triangles' centres (3 numbers per triangle) along the longest side of
-// their box. Its children take the next two free slots of bin[] (*used).
-static void build_node(dxTriMeshData *d, bin_node *bin, int *used, int i, const dReal *centre,
-                       int lo, int hi)
+// Binary node i over rec[lo, hi) (its slot taken): split at the median of
+// the triangles' centres along the longest side of their box. Its children
+// take the next two free slots of bin[] (*used).
+static void build_node(bin_node *bin, int *used, int i, centre_rec *rec, int lo, int hi)
 {
     if (hi - lo <= LEAF) {
         bin[i] = (bin_node){ lo, hi - lo, 0 };
@@ -201,7 +197,7 @@ static void build_node(dxTriMeshData *d, bin_node *bin, int *used, int i, const 
     dReal clo[3] = { dInfinity, dInfinity, dInfinity };
     dReal chi[3] = { -dInfinity, -dInfinity, -dInfinity };
     for (int j = lo; j < hi; j++) {   // the centres' box, without branches
-        const dReal *c = centre + 3 * d->order[j];
+        const dReal *c = rec[j].c;
         for (int k = 0; k < 3; k++) {
             clo[k] = c[k] < clo[k] ? c[k] : clo[k];
             chi[k] = c[k] > chi[k] ? c[k] : chi[k];
@@ -211,11 +207,11 @@ static void build_node(dxTriMeshData *d, bin_node *bin, int *used, int i, const 
     for (int k = 1; k < 3; k++)
         if (chi[k] - clo[k] > chi[axis] - clo[axis]) axis = k;
     int mid = (lo + hi) / 2;
-    select_median(d->order, centre, axis, lo, hi, mid);
+    select_median(rec, axis, lo, hi, mid);
     int first = *used;
     *used += 2;
-    build_node(d, bin, used, first, centre, lo, mid);
-    build_node(d, bin, used, first + 1, centre, mid, hi);
+    build_node(bin, used, first, rec, lo, mid);
+    build_node(bin, used, first + 1, rec, mid, hi);
     int h = bin[first].height > bin[first + 1].height ? bin[first].height : bin[first + 1].height;
     bin[i] = (bin_node){ first, 0, h + 1 };
 }
@@ -281,48 +277,40 @@ static void lift_node(dxTriMeshData *d, const bin_node *bin, int b, int w, int *
     }
 }
 
-// Every slot's box and every triangle's (leaf_faces' box) from the leaf-order
-// copy of the vertices, bottom-up
-// (children come after their parent: going backwards meets them first),
-// the nodes' exact boxes kept aside while walking; the root's exact box
-// into the data.
+// Node i's slots' boxes and, for its leaves, the leaf-order copies
+// (copy_leaf_triangle), depth first, children before their parent's box
+// (post-order: leaf positions are met in increasing order, so the copies
+// are written and the user's arrays read in sequence); node i's exact box
+// into lo, hi.
+static void fit_node(dxTriMeshData *d, int i, dReal lo[3], dReal hi[3])
+{
+    dxTriMeshNode *node = &d->nodes[i];
+    for (int k = 0; k < 3; k++) {
+        lo[k] = dInfinity;
+        hi[k] = -dInfinity;
+    }
+    for (int s = 0; s < 4 && node->count[s] >= 0; s++) {
+        dReal slo[3] = { dInfinity, dInfinity, dInfinity };
+        dReal shi[3] = { -dInfinity, -dInfinity, -dInfinity };
+        if (node->count[s] > 0) {
+            for (int j = node->first[s]; j < node->first[s] + node->count[s]; j++) {
+                dReal tlo[3], thi[3];
+                copy_leaf_triangle(d, j, d->order[j], tlo, thi);
+                grow(slo, shi, tlo, thi);
+            }
+        } else {
+            fit_node(d, node->first[s], slo, shi);
+        }
+        set_slot_box(node, s, slo, shi);
+        grow(lo, hi, slo, shi);
+    }
+}
+
+// The leaf-order copies and every slot's box (fit_node); the root's exact
+// box into the data.
 static void fit_boxes(dxTriMeshData *d)
 {
-    size_t size = (size_t)d->node_count * 6 * sizeof(dReal);
-    dReal *exact = (dReal *)dAlloc(size);
-    for (int i = d->node_count - 1; i >= 0; i--) {
-        dxTriMeshNode *node = &d->nodes[i];
-        dReal *lo = exact + 6 * i, *hi = lo + 3;
-        for (int k = 0; k < 3; k++) {
-            lo[k] = dInfinity;
-            hi[k] = -dInfinity;
-        }
-        for (int s = 0; s < 4 && node->count[s] >= 0; s++) {
-            dReal slo[3] = { dInfinity, dInfinity, dInfinity };
-            dReal shi[3] = { -dInfinity, -dInfinity, -dInfinity };
-            if (node->count[s] > 0) {
-                for (int j = node->first[s]; j < node->first[s] + node->count[s]; j++) {
-                    dReal tlo[3], thi[3];
-                    leaf_triangle_box(d, j, tlo, thi);
-                    grow(slo, shi, tlo, thi);
-                    for (int k = 0; k < 3; k++) {
-                        d->leaf_faces[j].box[k] = dxFloatBelow(tlo[k]);
-                        d->leaf_faces[j].box[3 + k] = dxFloatAbove(thi[k]);
-                    }
-                }
-            } else {
-                const dReal *c = exact + 6 * node->first[s];
-                grow(slo, shi, c, c + 3);
-            }
-            set_slot_box(node, s, slo, shi);
-            grow(lo, hi, slo, shi);
-        }
-    }
-    for (int k = 0; k < 3; k++) {
-        d->lo[k] = exact[k];
-        d->hi[k] = exact[3 + k];
-    }
-    dFree(exact, size);
+    fit_node(d, 0, d->lo, d->hi);
 }
 
 // Every node's span (node_span): the leaf-order triangles of its subtree,
@@ -346,61 +334,22 @@ static void set_spans(dxTriMeshData *d)
     }
 }
 
-// Where the next cache line starts at or after p.
-static char *line_start(char *p)
-{
-    return p + ((64 - (uintptr_t)p % 64) % 64);
-}
-
-// Transparent huge pages (Linux, when set to `madvise`): a ray reads a
-// few lines of nodes and leaves all over the tree's block, so with 4 KB
-// pages nearly every line it waits for also misses the TLB (a
-// 100 000-triangle mesh's block is 15 MB, 3 700 pages). A block of at
-// least one huge page is allocated a huge page larger, its parts placed
-// from a huge page's start (the nodes, read by every ray, first) and the
-// whole huge pages within it advised before they are touched (the tree is
-// written after this). Only advice: where it fails, the block is as it
-// would be. Elsewhere, nothing is added.
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-#define HUGE_PAGE ((size_t)2 << 20)
-#else
-#define HUGE_PAGE ((size_t)0)
-#endif
-
-// Advise huge pages for the whole huge pages within [p, p + size), p at
-// a huge page's start.
-static void advise_huge_pages(char *p, size_t size)
-{
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    const size_t whole = size / HUGE_PAGE * HUGE_PAGE;
-    if (whole) (void)madvise(p, whole, MADV_HUGEPAGE);
-#else
-    (void)p;
-    (void)size;
-#endif
-}
-
 // One block for the nodes (node_count of them), the nodes' spans, the
 // leaf-order vertices and the triangles' faces, each at the start of a
 // cache line: a node is read as two lines, not three, a leaf's vertices
-// touch the fewest lines, and a face is one line. From a huge page's start
-// when the block is that large (see HUGE_PAGE): the nodes and spans, which
-// every ray reads, in the first.
+// touch the fewest lines, and a face is one line. On huge pages where it
+// is that large (big_block.h): a ray reads a few lines of nodes and leaves
+// all over the block (a 100 000-triangle mesh's is 15 MB, 3 700 small
+// pages), so nearly every line it waits for would also miss the TLB. The
+// nodes and spans, which every ray reads, come first.
 static void place_tree(dxTriMeshData *d)
 {
     size_t node_room = ((size_t)d->node_count * sizeof(dxTriMeshNode) + 63) / 64 * 64;
     size_t vertex_room = (9 * (size_t)d->tri_count * sizeof(dReal) + 63) / 64 * 64;
     size_t face_room = ((size_t)d->tri_count * sizeof(dxTriLeafFace) + 63) / 64 * 64;
     size_t span_room = (2 * (size_t)d->node_count * sizeof(int) + 63) / 64 * 64;
-    size_t parts = node_room + vertex_room + face_room + span_room;
-    const int huge = HUGE_PAGE && parts >= HUGE_PAGE;
-    d->tree_block_size = (huge ? HUGE_PAGE : 64) + parts;
-    d->tree_block = dAlloc(d->tree_block_size);
-    char *block = (char *)d->tree_block, *p = line_start(block);
-    if (huge) {
-        p = block + (HUGE_PAGE - (uintptr_t)block % HUGE_PAGE) % HUGE_PAGE;
-        advise_huge_pages(p, (size_t)(block + d->tree_block_size - p));
-    }
+    char *p = (char *)dxBigBlockAlloc(&d->tree_block,
+                                      node_room + vertex_room + face_room + span_room);
     d->nodes = (dxTriMeshNode *)p;
     d->node_span = (int *)(p + node_room);
     d->leaf_vertices = (dReal *)(p + node_room + span_room);
@@ -409,9 +358,7 @@ static void place_tree(dxTriMeshData *d)
 
 void dxTriMeshFreeTree(dxTriMeshData *d)
 {
-    if (d->tree_block) dFree(d->tree_block, d->tree_block_size);
-    d->tree_block = NULL;
-    d->tree_block_size = 0;
+    dxBigBlockFree(&d->tree_block);
     d->nodes = NULL;
     d->node_span = NULL;
     d->leaf_vertices = NULL;
@@ -422,37 +369,36 @@ void dxTriMeshBuildTree(dxTriMeshData *d)
 {
     size_t n = (size_t)d->tri_count;
     d->order = (int *)dAlloc(n * sizeof(int));
-    dReal *centre = (dReal *)dAlloc(3 * n * sizeof(dReal));
+    centre_rec *rec = (centre_rec *)dAlloc(n * sizeof *rec);
     for (int t = 0; t < d->tri_count; t++) {
-        d->order[t] = t;
         dReal lo[3], hi[3];
         triangle_box(d, t, lo, hi);
-        for (int k = 0; k < 3; k++) centre[3 * t + k] = (lo[k] + hi[k]) / 2;
+        for (int k = 0; k < 3; k++) rec[t].c[k] = (lo[k] + hi[k]) / 2;
+        rec[t].t = t;
     }
     // At most 2 n - 1 binary nodes.
     size_t bin_size = 2 * n * sizeof(bin_node);
     bin_node *bin = (bin_node *)dAlloc(bin_size);
     int used = 1;
-    build_node(d, bin, &used, 0, centre, 0, d->tri_count);
-    dFree(centre, 3 * n * sizeof(dReal));
+    build_node(bin, &used, 0, rec, 0, d->tri_count);
+    for (int j = 0; j < d->tri_count; j++) d->order[j] = rec[j].t;
+    dFree(rec, n * sizeof *rec);
     d->node_count = count_lifted(bin, 0);
     place_tree(d);
     used = 1;
     lift_node(d, bin, 0, 0, &used);
     dFree(bin, bin_size);
     set_spans(d);
-    copy_leaf_triangles(d);
-    set_near_faces(d);
     fit_boxes(d);
+    set_near_faces(d);
     d->tree_stamp = dxTriMeshNewStamp();
 }
 
 void dxTriMeshRefitTree(dxTriMeshData *d, int neighbours_kept)
 {
     if (d->node_count == 0) return;
-    copy_leaf_triangles(d);
-    if (!neighbours_kept) set_near_faces(d);
     fit_boxes(d);
+    if (!neighbours_kept) set_near_faces(d);
     d->tree_stamp = dxTriMeshNewStamp();
 }
 

@@ -186,7 +186,7 @@ static int check_shape(const dxTriMeshData *d)
     CHECK((uintptr_t)d->leaf_faces % 64 == 0 && sizeof *d->leaf_faces == 64 &&
           (const char *)d->leaf_faces >= (const char *)(d->leaf_vertices + 9 * d->tri_count));
     CHECK((const char *)(d->leaf_faces + d->tri_count) <=
-          (const char *)d->tree_block + d->tree_block_size);
+          (const char *)d->tree_block.base + d->tree_block.size);
     if (check_node(d, 0, &next_first, &leaves)) return 1;
     CHECK(next_first == d->tri_count);
     // nodes mostly full: about a third as many as leaves
