@@ -2,27 +2,31 @@
 # tests/fuzz/run.sh -- build the libFuzzer targets with clang (ASan + UBSan,
 # the libraries instrumented for coverage) and run each one.
 #
-#   tests/fuzz/run.sh [-t SECONDS_PER_TARGET | -r RUNS_PER_TARGET] [-j JOBS]
-#                     [-b BUILD_DIR] [TARGET...]
+#   tests/fuzz/run.sh [-t SECONDS_PER_TARGET | -r RUNS_PER_TARGET] [-s SEED]
+#                     [-j JOBS] [-b BUILD_DIR] [TARGET...]
 #
 # Targets: collide space build world (default: all). Each starts from its seed
 # corpus tests/fuzz/corpus/<target> and writes new inputs to BUILD_DIR/corpus/
 # <target> (merge the interesting ones back by hand: `fuzz_x -merge=1 seed
 # new`). A crash leaves crash-* in BUILD_DIR/artifacts/<target>; the script
 # prints one "ok"/"not ok" line per target and exits non-zero if any failed.
+# -s fixes libFuzzer's random seed (CI: the same inputs on every run of one
+# tree, so that a red run can be replayed); without it each run draws its own.
 set -uo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 build=/tmp/ode-c11-fuzz
 limit=(-max_total_time=3600)
 jobs=1
-while getopts "t:r:j:b:" opt; do
+seed=()
+while getopts "t:r:s:j:b:" opt; do
     case $opt in
     t) limit=(-max_total_time="$OPTARG") ;;
     r) limit=(-runs="$OPTARG") ;;
+    s) seed=(-seed="$OPTARG") ;;
     j) jobs=$OPTARG ;;
     b) build=$OPTARG ;;
-    *) echo "usage: $0 [-t seconds | -r runs] [-j jobs] [-b dir] [target...]"; exit 2 ;;
+    *) echo "usage: $0 [-t seconds | -r runs] [-s seed] [-j jobs] [-b dir] [target...]"; exit 2 ;;
     esac
 done
 shift $((OPTIND - 1))
