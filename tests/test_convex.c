@@ -501,6 +501,52 @@ static int test_cylinder_on_convex(void)
     return 0;
 }
 
+// Thin or point-like hulls against zero-radius cylinders 1e6 long: poses on
+// which libccd's MPR never ended (found by a search over degenerate sizes
+// after a fuzz_space timeout; the last one still looped when the bound
+// only collapsed the support points to the shapes' centres). The call
+// returns, both ways round, with at most the contacts asked for, each finite
+// with a unit normal and a depth no more than the two shapes' widths.
+static int test_mpr_without_end_is_cut_short(void)
+{
+    static const struct {
+        double h[3], r, len, pos[3], axis[3], angle;
+    } cases[] = {
+        { { 0.5, 1e-6, 1e-6 }, 0, 1e6, { 0.5, 0, 0 }, { 1, 0, 1 }, M_PI / 2 },
+        { { 1e-30, 0, 1e-6 }, 1e-30, 1e6, { -1e-6, 1e-6, -1e-30 }, { 1, 1, 1 }, M_PI / 2 },
+        { { 1e-30, 1e-6, 1e-6 }, 1e-30, 1e6, { 1e-30, 0, 1e-6 }, { 1, 0, 1 }, M_PI / 2 },
+        { { 1e-6, 1e-30, 1e-30 }, 1e-30, 1e6, { 0, 0, 1 }, { 1, 1, 1 }, 2.65016 },
+        { { 0.5, 1e-6, 1e-30 }, 1e-30, 1e6, { -1e-30, 0, 1e-6 }, { 1, 1, 1 }, 5.56408 },
+        { { 1e-30, 1e-30, 1e-30 }, 1e-30, 1e6, { 1, -1, -1e-6 }, { 1, 0, 1 }, 1.99076 },
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        test_hull bh;
+        const double *h = cases[k].h;
+        test_hull_box(&bh, 2 * h[0], 2 * h[1], 2 * h[2]);
+        dGeomID hull = dCreateConvex(0, bh.planes, 6, bh.points, 8, bh.polygons);
+        dGeomID cyl = dCreateCylinder(0, (dReal)cases[k].r, (dReal)cases[k].len);
+        dGeomSetPosition(cyl, (dReal)cases[k].pos[0], (dReal)cases[k].pos[1],
+                         (dReal)cases[k].pos[2]);
+        set_rot(cyl, (dReal)cases[k].axis[0], (dReal)cases[k].axis[1], (dReal)cases[k].axis[2],
+                (dReal)cases[k].angle);
+        const double widths = 2 * sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]) + 2 * cases[k].r;
+        dContactGeom c[MAXC];
+        for (int order = 0; order < 2; order++) {
+            const int n = order ? dCollide(cyl, hull, MAXC, c, sizeof c[0])
+                                : dCollide(hull, cyl, MAXC, c, sizeof c[0]);
+            CHECK(n >= 0 && n <= MAXC);
+            for (int i = 0; i < n; i++) {
+                CHECK(isfinite(c[i].pos[0]) && isfinite(c[i].pos[1]) && isfinite(c[i].pos[2]));
+                CHECK_NEAR(dCalcVectorLength3(c[i].normal), 1, EPS);
+                CHECK(c[i].depth >= 0 && c[i].depth <= widths + TOL(1e-6, 1));
+            }
+        }
+        dGeomDestroy(hull);
+        dGeomDestroy(cyl);
+    }
+    return 0;
+}
+
 // A prism over a regular 40-gon (120 edges: more than the colliders keep
 // posed), radius 1 to the corners, height 1 (into p, which the geom keeps).
 enum { SIDES = 40 };
@@ -1456,6 +1502,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_octahedron_capsule_plane),
     TEST_CASE(test_cube_on_box_polygon),
     TEST_CASE(test_cylinder_on_convex),
+    TEST_CASE(test_mpr_without_end_is_cut_short),
     TEST_CASE(test_large_prism),
     TEST_CASE(test_resting_on_plane),
     TEST_CASE(test_remembered_axis_never_hides_contacts),

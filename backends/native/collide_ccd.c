@@ -18,12 +18,11 @@
 
 #include "collide_ccd.h"
 #include "collide_math.h"
+#include "mpr_bounded.h"
 
-#include <ccd/ccd.h>
 #include <math.h>
 #include <stdint.h>
-
-_Static_assert(sizeof(ccd_real_t) == sizeof(double), "libccd must be built in double precision");
+#include <string.h>
 
 static double dot3(const double *a, const double *b)
 {
@@ -138,66 +137,29 @@ static double convex_size(const dx_convex *s)
 
 // ---- libccd ----------------------------------------------------------------
 
-// MPR's portal loops have no iteration bound of their own, and on a
-// Minkowski difference of (nearly) no volume (a zero-radius capsule
-// against a point-like cylinder, say) they may never end. A shape as libccd
-// sees it counts the support calls of the query; past MPR_MAX_SUPPORTS (the
-// tests' and the fuzz corpora's queries make at most ~100) every support
-// point is the shape's centre, so the Minkowski difference collapses to its
-// centre point and each of MPR's loops ends at its next test; the query is
-// then undecided.
-enum { MPR_MAX_SUPPORTS = 1000 };
-
-typedef struct mpr_shape {
-    const dx_convex *s;
-    int *supports;   // shared by the query's two shapes
-} mpr_shape;
-
-static void ccd_support(const void *obj, const ccd_vec3_t *dir, ccd_vec3_t *out)
+// A dx_convex as MPR sees it.
+static void mpr_support(const void *shape, const double dir[3], double out[3])
 {
-    const mpr_shape *m = obj;
-    if (++*m->supports > MPR_MAX_SUPPORTS) {
-        for (int i = 0; i < 3; i++) out->v[i] = m->s->c[i];
-        return;
-    }
-    dx_convex_support(m->s, dir->v, out->v);
+    dx_convex_support(shape, dir, out);
 }
 
-static void ccd_center(const void *obj, ccd_vec3_t *out)
+// What MPR (no allocation, unlike libccd's EPA) says of a pair; on
+// DX_MPR_OVERLAP, n_out gets the unit normal it finds, into a (the opposite
+// of libccd's direction, the one to move b along to part the pair).
+static dx_mpr_verdict mpr_normal(const dx_convex *a, const dx_convex *b, double scale,
+                                 double n_out[3])
 {
-    const mpr_shape *m = obj;
-    for (int i = 0; i < 3; i++) out->v[i] = m->s->c[i];
-}
-
-// What MPR (no allocation, unlike libccd's EPA) says of a pair.
-typedef enum mpr_verdict {
-    MPR_APART,
-    MPR_OVERLAP,      // n_out: the unit normal it finds, into a
-    MPR_UNDECIDED     // it did not converge within MPR_MAX_SUPPORTS
-} mpr_verdict;
-
-// libccd's direction is the one to move its second object (b) along to
-// part the pair, so the normal into a is its opposite.
-static mpr_verdict mpr_normal(const dx_convex *a, const dx_convex *b, double scale, double n_out[3])
-{
-    int supports = 0;
-    const mpr_shape sa = { a, &supports }, sb = { b, &supports };
-    ccd_t ccd;
-    CCD_INIT(&ccd);
-    ccd.support1 = ccd.support2 = ccd_support;
-    ccd.center1 = ccd.center2 = ccd_center;
-    ccd.max_iterations = 100;
-    ccd.mpr_tolerance = 1e-9 * scale;
-    ccd_real_t depth;
-    ccd_vec3_t dir, pos;
-    const int apart = ccdMPRPenetration(&sa, &sb, &ccd, &depth, &dir, &pos) != 0;
-    if (supports > MPR_MAX_SUPPORTS) return MPR_UNDECIDED;
-    if (apart) return MPR_APART;
-    for (int i = 0; i < 3; i++) n_out[i] = -dir.v[i];
+    dx_mpr_shape sa = { a, mpr_support, { 0 } }, sb = { b, mpr_support, { 0 } };
+    memcpy(sa.centre, a->c, sizeof sa.centre);
+    memcpy(sb.centre, b->c, sizeof sb.centre);
+    double dir[3];
+    const dx_mpr_verdict v = dx_mpr_penetration(&sa, &sb, 1e-9 * scale, dir);
+    if (v != DX_MPR_OVERLAP) return v;
+    for (int i = 0; i < 3; i++) n_out[i] = -dir[i];
     if (!normalize3(n_out)) {   // touching at the centre ray's end: any direction will do
         for (int i = 0; i < 3; i++) n_out[i] = b->ax[2][i];
     }
-    return MPR_OVERLAP;
+    return DX_MPR_OVERLAP;
 }
 
 // ---- the least depth over directions -----------------------------------------
@@ -459,11 +421,11 @@ static void search_from_starts(const ccd_pair *p, ccd_candidates *list, double s
 static int penetration(const dx_convex *a, const dx_convex *b, double n[3], double *depth)
 {
     double scale = convex_size(a) + convex_size(b), mpr_n[3];
-    const mpr_verdict v = mpr_normal(a, b, scale, mpr_n);
-    if (v == MPR_APART) return 0;
+    const dx_mpr_verdict v = mpr_normal(a, b, scale, mpr_n);
+    if (v == DX_MPR_APART) return 0;
     // Undecided: the search below decides alone (from the centre line and
     // the features' directions); a negative least depth still means apart.
-    if (v == MPR_UNDECIDED)
+    if (v == DX_MPR_UNDECIDED)
         for (int i = 0; i < 3; i++) mpr_n[i] = a->c[i] - b->c[i];
     ccd_pair p = { a, b, { { 0 } }, 0 };
     for (int i = 0; i < 3; i++) p.crease[p.ncrease][i] = a->ax[2][i];

@@ -16,8 +16,8 @@
 
 #include "collide_convex.h"
 #include "collide_math.h"
+#include "mpr_bounded.h"
 
-#include <ccd/ccd.h>
 #include <math.h>
 #include <string.h>
 
@@ -572,34 +572,28 @@ static void cyl_support(const cyl *cy, const double m[3], double out[3])
     for (int i = 0; i < 3; i++) out[i] += cy->r * w[i];
 }
 
-static void ccd_support_hull(const void *obj, const ccd_vec3_t *dir, ccd_vec3_t *out)
+static void mpr_support_hull(const void *shape, const double dir[3], double out[3])
 {
-    const dx_hull *h = obj;
     unsigned v;
-    dx_hull_extent(h, dir->v, &v);
-    dx_hull_vertex(h, v, out->v);
+    dx_hull_extent(shape, dir, &v);
+    dx_hull_vertex(shape, v, out);
 }
 
-static void ccd_support_cyl(const void *obj, const ccd_vec3_t *dir, ccd_vec3_t *out)
+static void mpr_support_cyl(const void *shape, const double dir[3], double out[3])
 {
-    cyl_support(obj, dir->v, out->v);
+    cyl_support(shape, dir, out);
 }
 
-static void ccd_center_hull(const void *obj, ccd_vec3_t *out)
+// The mean of the hull's points: a point inside it for MPR.
+static void hull_centre(const dx_hull *h, double out[3])
 {
-    const dx_hull *h = obj;
     double sum[3] = { 0, 0, 0 };
     for (unsigned v = 0; v < h->npts; v++) {
         double p[3];
         dx_hull_vertex(h, v, p);
         for (int i = 0; i < 3; i++) sum[i] += p[i] / h->npts;
     }
-    memcpy(out->v, sum, sizeof sum);
-}
-
-static void ccd_center_cyl(const void *obj, ccd_vec3_t *out)
-{
-    memcpy(out->v, ((const cyl *)obj)->c, sizeof out->v);
+    memcpy(out, sum, sizeof sum);
 }
 
 // The translation of the hull along the unit n that parts it from the cylinder.
@@ -734,26 +728,26 @@ int dxCollideConvexCylinder(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out
     cyl cy = { .r = cg->radius, .hl = cg->length / 2 };
     geom_pos(o2, cy.c);
     geom_axis(o2, 2, cy.z);
-    ccd_t ccd;
-    CCD_INIT(&ccd);
-    ccd.support1 = ccd_support_hull;
-    ccd.support2 = ccd_support_cyl;
-    ccd.center1 = ccd_center_hull;
-    ccd.center2 = ccd_center_cyl;
-    ccd.max_iterations = 100;
-    ccd.mpr_tolerance = 1e-12 * (h.size + cy.r + cy.hl);
-    ccd_real_t mpr_depth;
-    ccd_vec3_t dir, mpr_pos;
-    if (ccdMPRPenetration(&h, &cy, &ccd, &mpr_depth, &dir, &mpr_pos) != 0) return 0;
+    dx_mpr_shape mh = { &h, mpr_support_hull, { 0 } }, mc = { &cy, mpr_support_cyl, { 0 } };
+    hull_centre(&h, mh.centre);
+    memcpy(mc.centre, cy.c, sizeof mc.centre);
+    double dir[3];
+    const dx_mpr_verdict verdict =
+        dx_mpr_penetration(&mh, &mc, 1e-12 * (h.size + cy.r + cy.hl), dir);
+    if (verdict == DX_MPR_APART) return 0;
     hull_cyl p = { &h, &cy };
     // Starts: MPR's normal, the axis, the hull's faces, the axis across the
     // hull's edges, and for each hull point the direction to it from the
     // axis (against the side) and from the nearest rim point (against the rim).
     starts st;
     st.count = 0;
+    // (Undecided, MPR's normal is no start: the others decide alone, and a
+    // negative least depth still means apart.)
     double m[3];
-    for (int i = 0; i < 3; i++) m[i] = -dir.v[i];
-    add_start(&p, m, &st);
+    if (verdict == DX_MPR_OVERLAP) {
+        for (int i = 0; i < 3; i++) m[i] = -dir[i];
+        add_start(&p, m, &st);
+    }
     add_start(&p, cy.z, &st);
     for (int i = 0; i < 3; i++) m[i] = -cy.z[i];
     add_start(&p, m, &st);
