@@ -26,6 +26,23 @@ int dxCollideSphereSphere(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, in
 // (centre clamped to the box in its frame): normal (centre - q) / |..|,
 // depth r - |centre - q|, pos q. With the centre inside, out through the
 // nearest face: depth r + distance to it, pos the centre.
+// The length of the nonzero v (n numbers) and v over it into unit, from v
+// scaled by its largest part first: for a v whose squares underflow to 0
+// (a sphere 1e-30 off a face in single precision), where the usual
+// sqrt(v . v) gives 0 and the normal 0 * inf.
+static dReal scaled_length(const dReal *v, int n, dReal *unit)
+{
+    dReal big = 0, e2 = 0;
+    for (int i = 0; i < n; i++) big = dMax(big, dFabs(v[i]));
+    for (int i = 0; i < n; i++) {
+        unit[i] = v[i] / big;
+        e2 += unit[i] * unit[i];
+    }
+    const dReal e = dSqrt(e2);
+    for (int i = 0; i < n; i++) unit[i] /= e;
+    return big * e;
+}
+
 int dxCollideSphereBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
 {
     (void)flags;
@@ -44,12 +61,17 @@ int dxCollideSphereBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int s
     }
     if (out2 > r * r) return 0;
     dReal n[3], pos[3], depth;
-    if (!inside && out2 > 0) {
-        dReal dist = dSqrt(out2), inv = 1 / dist, nl[3], ql[3];
-        for (int i = 0; i < 3; i++) {
-            nl[i] = out[i] * inv;
-            ql[i] = q[i] - out[i];
+    if (!inside) {
+        dReal dist, nl[3], ql[3];
+        if (out2 > 0) {
+            dist = dSqrt(out2);
+            const dReal inv = 1 / dist;
+            for (int i = 0; i < 3; i++) nl[i] = out[i] * inv;
+        } else {   // just off the box by less than the squares resolve
+            dist = scaled_length(out, 3, nl);
+            if (dist > r) return 0;
         }
+        for (int i = 0; i < 3; i++) ql[i] = q[i] - out[i];
         dx_to_world(R, nl, n);
         dx_point_to_world(R, o2->pos, ql, pos);
         depth = r - dist;
@@ -133,12 +155,23 @@ int dxCollideSphereCylinder(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, 
     if (out_a != 0 || out_s != 0) {
         dReal dist2 = out_a * out_a + out_s * out_s;
         if (dist2 > r * r) return 0;
-        dReal dist = dSqrt(dist2), inv = 1 / dist;
         // Radial unit direction (s > R > 0 whenever out_s != 0).
-        dReal ux = out_s != 0 ? q[0] / s : 0, uy = out_s != 0 ? q[1] / s : 0;
-        nl[0] = out_s * ux * inv;
-        nl[1] = out_s * uy * inv;
-        nl[2] = out_a * inv;
+        dReal ux = out_s != 0 ? q[0] / s : 0, uy = out_s != 0 ? q[1] / s : 0, dist;
+        if (dist2 > 0) {
+            dist = dSqrt(dist2);
+            const dReal inv = 1 / dist;
+            nl[0] = out_s * ux * inv;
+            nl[1] = out_s * uy * inv;
+            nl[2] = out_a * inv;
+        } else {   // just off the cylinder by less than the squares resolve
+            const dReal v[2] = { out_s, out_a };
+            dReal u[2];
+            dist = scaled_length(v, 2, u);
+            if (dist > r) return 0;
+            nl[0] = u[0] * ux;
+            nl[1] = u[0] * uy;
+            nl[2] = u[1];
+        }
         pl[0] = q[0] - out_s * ux;
         pl[1] = q[1] - out_s * uy;
         pl[2] = q[2] - out_a;
