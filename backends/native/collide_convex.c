@@ -521,12 +521,22 @@ int dxCollideConvexCapsule(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *out,
                 }
             }
         }
-        double m[3] = { -n[0], -n[1], -n[2] }, pa[3];
-        unsigned va;
-        dx_hull_extent(&h, m, &va);
-        dx_hull_vertex(&h, va, pa);
-        const double *sp = dot3(n, s0) > dot3(n, s1) ? s0 : s1;
-        for (int i = 0; i < 3; i++) pos[i] = (pa[i] + sp[i] + r * n[i]) / 2;
+        // The segment enters the hull, so the depth is at least 0 (a touch
+        // may round below). The contact: at the end of the segment's part
+        // inside the hull (t0 .. t1; rounding may cross them) deepest along
+        // n, half the depth back from the capsule's surface, so midway
+        // between the two along n. (The whole segment's deeper end, with the
+        // hull's deepest corner, put the contact of a capsule 1e6 long
+        // touching a flat hull's edge 250 km from the hull.)
+        if (depth < 0) depth = 0;
+        double ta = t0, tb = t1, q0[3], q1[3];
+        if (ta > tb) ta = tb = (t0 + t1) / 2;
+        for (int i = 0; i < 3; i++) {
+            q0[i] = s0[i] + ta * d[i];
+            q1[i] = s0[i] + tb * d[i];
+        }
+        const double *sp = dot3(n, q0) > dot3(n, q1) ? q0 : q1;
+        for (int i = 0; i < 3; i++) pos[i] = sp[i] + (r - depth / 2) * n[i];
     } else {
         double ph[3], ps[3];
         double dist = sqrt(hull_segment_closest(&h, s0, s1, ph, ps));
