@@ -547,6 +547,33 @@ static int test_mpr_without_end_is_cut_short(void)
     return 0;
 }
 
+// A zero-radius capsule 1e6 long through a flat square hull's edge (found by
+// test_collide_degenerate.c): the contact was put at the segment's far half
+// (250 km out) with a depth of -4e-12. It lies on the edge now, 0 deep
+// within rounding, both ways round.
+static int test_needle_capsule_on_flat_hull_edge(void)
+{
+    test_hull bh;
+    test_hull_box(&bh, 2, 2, 2e-30);
+    dGeomID hull = dCreateConvex(0, bh.planes, 6, bh.points, 8, bh.polygons);
+    dGeomID cap = dCreateCapsule(0, (dReal)1e-30, (dReal)1e6);
+    set_rot(cap, 1, 1, 1, (dReal)(M_PI / 2));
+    dGeomSetPosition(cap, 0, 1, 0);   // its axis meets the edge y = 1 at x = 0
+    dContactGeom c[MAXC];
+    for (int order = 0; order < 2; order++) {
+        const int n = order ? dCollide(cap, hull, MAXC, c, sizeof c[0])
+                            : dCollide(hull, cap, MAXC, c, sizeof c[0]);
+        CHECK(n >= 1);
+        for (int i = 0; i < n; i++) {
+            CHECK(c[i].depth >= 0 && c[i].depth <= TOL(1e-9, 1e-1));
+            CHECK_VEC(c[i].pos, 0, 1, 0, TOL(1e-6, 1e-1));
+        }
+    }
+    dGeomDestroy(hull);
+    dGeomDestroy(cap);
+    return 0;
+}
+
 // A prism over a regular 40-gon (120 edges: more than the colliders keep
 // posed), radius 1 to the corners, height 1 (into p, which the geom keeps).
 enum { SIDES = 40 };
@@ -1503,6 +1530,7 @@ const test_case test_cases[] = {
     TEST_CASE(test_cube_on_box_polygon),
     TEST_CASE(test_cylinder_on_convex),
     TEST_CASE(test_mpr_without_end_is_cut_short),
+    TEST_CASE(test_needle_capsule_on_flat_hull_edge),
     TEST_CASE(test_large_prism),
     TEST_CASE(test_resting_on_plane),
     TEST_CASE(test_remembered_axis_never_hides_contacts),
