@@ -11,9 +11,13 @@
 // and skipped.
 //
 // The fuzz targets draw such values one field at a time and rarely all at
-// once; this draw found in seconds what 1.5 million fuzz units missed: libccd's
-// MPR looping without end on a hull 1e-6 thick against a zero-radius cylinder
-// 1e6 long (backends/native/mpr_bounded.h).
+// once; this draw found in seconds what 1.5 million fuzz units missed:
+// libccd's MPR looping without end on a hull 1e-6 thick against a
+// zero-radius cylinder 1e6 long (backends/native/mpr_bounded.h); a
+// zero-radius capsule 1e6 long touching a flat hull's edge getting a contact
+// 250 km out with a depth of -4e-12 (collide_convex.c); and, in single
+// precision, spheres 1e-30 off a box or a cylinder whose offsets' squares
+// underflow getting a negative depth or a NaN normal (collide_sphere.c).
 
 #define _POSIX_C_SOURCE 200809L
 #define RNG_SEED 0x2026112901ull
