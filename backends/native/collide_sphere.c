@@ -22,10 +22,6 @@ int dxCollideSphereSphere(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, in
     return 1;
 }
 
-// Sphere-box: with the centre outside the box, the nearest box point q
-// (centre clamped to the box in its frame): normal (centre - q) / |..|,
-// depth r - |centre - q|, pos q. With the centre inside, out through the
-// nearest face: depth r + distance to it, pos the centre.
 // The length of the nonzero v (n numbers) and v over it into unit, from v
 // scaled by its largest part first: for a v whose squares underflow to 0
 // (a sphere 1e-30 off a face in single precision), where the usual
@@ -43,6 +39,10 @@ static dReal scaled_length(const dReal *v, int n, dReal *unit)
     return big * e;
 }
 
+// Sphere-box: with the centre outside the box, the nearest box point q
+// (centre clamped to the box in its frame): normal (centre - q) / |..|,
+// depth r - |centre - q|, pos q. With the centre inside, out through the
+// nearest face: depth r + distance to it, pos the centre.
 int dxCollideSphereBox(dxGeom *o1, dxGeom *o2, int flags, dContactGeom *c, int skip)
 {
     (void)flags;
