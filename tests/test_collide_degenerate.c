@@ -21,6 +21,7 @@
 
 #define _POSIX_C_SOURCE 200809L
 #define RNG_SEED 0x2026112901ull
+#include "convex_hulls.h"
 #include "test.h"
 #include "xorshift.h"
 
@@ -66,30 +67,13 @@ static double extreme(void)
 
 // The data a geom reads from its user's arrays, kept while it lives.
 typedef struct shape_data {
-    dReal planes[24], points[24];
-    unsigned polygons[30];
+    test_hull hull;
     float vertices[12 * 3];
     dTriIndex indices[16 * 3];
     double heights[49];
     dTriMeshDataID mesh;
     dHeightfieldDataID field;
 } shape_data;
-
-// A box-shaped hull of half sizes h (convex_hulls.h's winding).
-static dGeomID make_hull(shape_data *d, const double h[3])
-{
-    static const unsigned faces[6][4] = { { 0, 4, 6, 2 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
-                                          { 2, 6, 7, 3 }, { 0, 2, 3, 1 }, { 4, 5, 7, 6 } };
-    for (unsigned v = 0; v < 8; v++)
-        for (int i = 0; i < 3; i++) d->points[3 * v + i] = (dReal)((v >> i & 1) ? h[i] : -h[i]);
-    for (int f = 0; f < 6; f++) {
-        for (int i = 0; i < 3; i++) d->planes[4 * f + i] = i == f / 2 ? (f & 1 ? 1 : -1) : 0;
-        d->planes[4 * f + 3] = (dReal)h[f / 2];
-        d->polygons[5 * f] = 4;
-        for (int k = 0; k < 4; k++) d->polygons[5 * f + 1 + k] = faces[f][k];
-    }
-    return dCreateConvex(0, d->planes, 6, d->points, 8, d->polygons);
-}
 
 // A geom of class k with sizes from h (absolute extremes); text: what it is.
 static dGeomID make_geom(int k, shape_data *d, char *text, size_t room)
@@ -102,7 +86,9 @@ static dGeomID make_geom(int k, shape_data *d, char *text, size_t room)
     case CAPSULE: return dCreateCapsule(0, (dReal)h[0], (dReal)h[1]);
     case CYLINDER: return dCreateCylinder(0, (dReal)h[0], (dReal)h[1]);
     case SPHERE: return dCreateSphere(0, (dReal)h[0]);
-    case CONVEX: return make_hull(d, h);
+    case CONVEX:
+        test_hull_box(&d->hull, 2 * h[0], 2 * h[1], 2 * h[2]);
+        return dCreateConvex(0, d->hull.planes, 6, d->hull.points, 8, d->hull.polygons);
     case RAY: {
         dGeomID r = dCreateRay(0, (dReal)h[0]);
         if (r) {
