@@ -101,6 +101,40 @@ static double dot_max(const double m[3], const double *x, const double *y, const
 }
 
 #ifdef DX_SIGNS_AVX2
+// base[i0], base[i1], base[i2], base[i3] in lanes 0-3: what a gather
+// (_mm256_i32gather_pd) gives, by four loads, the indices read where they
+// lie. On Intel processors with the microcode fix for Downfall (gather data
+// sampling) a gather takes about 28 cycles (a loop of them on an Ice Lake
+// Xeon: 10 ns each, four loads and an insert 3 ns); AMD's Zen was not
+// measured. The hulls scene: 0.83x the time, 3 % more instructions
+// (docs/perf.md, "Gathers on Intel").
+__attribute__((target("avx2"))) static inline __m256d load4(const double *base, size_t i0,
+                                                            size_t i1, size_t i2, size_t i3)
+{
+    const __m128d lo = _mm_loadh_pd(_mm_load_sd(base + i0), base + i1);
+    const __m128d hi = _mm_loadh_pd(_mm_load_sd(base + i2), base + i3);
+    return _mm256_insertf128_pd(_mm256_castpd128_pd256(lo), hi, 1);
+}
+
+// load4 at four consecutive indices idx[0..3].
+__attribute__((target("avx2"))) static inline __m256d load4_at(const double *base,
+                                                               const unsigned *idx)
+{
+    return load4(base, idx[0], idx[1], idx[2], idx[3]);
+}
+
+// The columns c of the 4 x 4 matrix whose rows are r (lane l of c[e] is
+// r[l]'s number e).
+__attribute__((target("avx2"))) static inline void transpose4(const __m256d r[4], __m256d c[4])
+{
+    const __m256d t0 = _mm256_unpacklo_pd(r[0], r[1]), t1 = _mm256_unpackhi_pd(r[0], r[1]);
+    const __m256d t2 = _mm256_unpacklo_pd(r[2], r[3]), t3 = _mm256_unpackhi_pd(r[2], r[3]);
+    c[0] = _mm256_permute2f128_pd(t0, t2, 0x20);
+    c[1] = _mm256_permute2f128_pd(t1, t3, 0x20);
+    c[2] = _mm256_permute2f128_pd(t0, t2, 0x31);
+    c[3] = _mm256_permute2f128_pd(t1, t3, 0x31);
+}
+
 // m . x for h's points k to k + 3 (m broadcast in m0, m1, m2; made as
 // dot3 makes them).
 __attribute__((target("avx2"))) static inline __m256d products4(__m256d m0, __m256d m1, __m256d m2,
@@ -288,25 +322,17 @@ static inline void pose_edge(dx_hull *h, unsigned k)
 // pose_edge for edges k to k + 3 at once, their points and normals
 // gathered by coordinate (the same differences, sums, products in the
 // same order: the same numbers).
-_Static_assert(sizeof(dxHullEdge) == 4 * sizeof(int32_t), "an edge is four 32-bit indices");
 _Static_assert(sizeof(dxHullPosedEdge) == 8 * sizeof(double), "a posed edge is eight doubles");
 __attribute__((target("avx2"))) static inline void pose_edges4(dx_hull *h, unsigned k)
 {
-    // The four edges' (a, b, f1, f2) into rows a0..a3, b0..b3, f1, f2.
-    const __m256i spread = _mm256_setr_epi32(0, 4, 1, 5, 2, 6, 3, 7);
-    __m256i e01 = _mm256_permutevar8x32_epi32(_mm256_loadu_si256((const __m256i *)&h->edges[k]),
-                                              spread);
-    __m256i e23 = _mm256_permutevar8x32_epi32(
-        _mm256_loadu_si256((const __m256i *)&h->edges[k + 2]), spread);
-    __m256i lo = _mm256_unpacklo_epi64(e01, e23), hi = _mm256_unpackhi_epi64(e01, e23);
-    __m128i ia = _mm256_castsi256_si128(lo), ib = _mm256_castsi256_si128(hi);
-    __m128i if1 = _mm256_extracti128_si256(lo, 1), if2 = _mm256_extracti128_si256(hi, 1);
+    const dxHullEdge *e = &h->edges[k];
     const double *p[3] = { h->px, h->py, h->pz }, *n[3] = { h->nx, h->ny, h->nz };
     __m256d u[3], s[3], n1[3], n2[3];
     for (int i = 0; i < 3; i++) {
-        u[i] = _mm256_sub_pd(_mm256_i32gather_pd(p[i], ib, 8), _mm256_i32gather_pd(p[i], ia, 8));
-        n1[i] = _mm256_i32gather_pd(n[i], if1, 8);
-        n2[i] = _mm256_i32gather_pd(n[i], if2, 8);
+        u[i] = _mm256_sub_pd(load4(p[i], e[0].b, e[1].b, e[2].b, e[3].b),
+                             load4(p[i], e[0].a, e[1].a, e[2].a, e[3].a));
+        n1[i] = load4(n[i], e[0].f1, e[1].f1, e[2].f1, e[3].f1);
+        n2[i] = load4(n[i], e[0].f2, e[1].f2, e[2].f2, e[3].f2);
         s[i] = _mm256_add_pd(n1[i], n2[i]);
     }
     __m256d uu = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(u[0], u[0]), _mm256_mul_pd(u[1], u[1])),
@@ -549,11 +575,10 @@ __attribute__((target("avx2"))) static inline double face_extent4(const dx_hull 
     __m256d vhi = _mm256_set1_pd(-INFINITY);
     unsigned k = 0;
     for (; k + 4 <= count; k += 4) {
-        __m128i at = _mm_loadu_si128((const __m128i *)(idx + k));
         __m256d e = _mm256_add_pd(
-            _mm256_add_pd(_mm256_mul_pd(m0, _mm256_i32gather_pd(h->px, at, 8)),
-                          _mm256_mul_pd(m1, _mm256_i32gather_pd(h->py, at, 8))),
-            _mm256_mul_pd(m2, _mm256_i32gather_pd(h->pz, at, 8)));
+            _mm256_add_pd(_mm256_mul_pd(m0, load4_at(h->px, idx + k)),
+                          _mm256_mul_pd(m1, load4_at(h->py, idx + k))),
+            _mm256_mul_pd(m2, load4_at(h->pz, idx + k)));
         vhi = _mm256_max_pd(e, vhi);
     }
     vhi = _mm256_max_pd(vhi, _mm256_permute2f128_pd(vhi, vhi, 1));
@@ -904,7 +929,6 @@ typedef struct pair_batch {
 __attribute__((target("avx2"), always_inline)) static inline uint64_t
 screen_pairs(const dx_hull *a, const dx_hull *b, const pair_batch *pb, const edge_search *es)
 {
-    const double *xa = a->we[0].u, *xb = b->we[0].u;
     const double *pa[3] = { a->px, a->py, a->pz }, *pb3[3] = { b->px, b->py, b->pz };
     const __m256d zero = _mm256_setzero_pd(), sign = _mm256_set1_pd(-0.0);
     const __m256d tiny = _mm256_set1_pd(1e-12), one = _mm256_set1_pd(1);
@@ -914,23 +938,30 @@ screen_pairs(const dx_hull *a, const dx_hull *b, const pair_batch *pb, const edg
     const __m256d reach = _mm256_set1_pd(es->face->depth * (1 + 1e-9) + es->margin);
     uint64_t alone = 0;
     for (unsigned k = 0; k < pb->n; k += 4) {
-        __m128i ia = _mm_loadu_si128((const __m128i *)(pb->i + k));
-        __m128i jb = _mm_loadu_si128((const __m128i *)(pb->j + k));
-        __m128i wa = _mm_slli_epi32(ia, 3), wb = _mm_slli_epi32(jb, 3);   // eight doubles an edge
-        __m256d ua[3], ub[3], sa[3], d[3];
-        for (int q = 0; q < 3; q++) {
-            ua[q] = _mm256_i32gather_pd(xa + q, wa, 8);
-            ub[q] = _mm256_i32gather_pd(xb + q, wb, 8);
-            sa[q] = _mm256_i32gather_pd(xa + 3 + q, wa, 8);
+        // Each lane's posed edges (u, sum, uu, ss: eight doubles) by rows,
+        // transposed into numbers by lane; its edges' first points (index a).
+        const dxHullPosedEdge *ea[4], *eb[4];
+        size_t va[4], vb[4];
+        for (int l = 0; l < 4; l++) {
+            ea[l] = &a->we[pb->i[k + l]];
+            eb[l] = &b->we[pb->j[k + l]];
+            va[l] = a->edges[pb->i[k + l]].a;
+            vb[l] = b->edges[pb->j[k + l]].a;
         }
-        __m256d uua = _mm256_i32gather_pd(xa + 6, wa, 8), ssa = _mm256_i32gather_pd(xa + 7, wa, 8);
-        __m256d uub = _mm256_i32gather_pd(xb + 6, wb, 8);
-        // Each edge's first point (its index a, the first of four per edge).
-        __m128i va = _mm_i32gather_epi32((const int *)a->edges, _mm_slli_epi32(ia, 2), 4);
-        __m128i vb = _mm_i32gather_epi32((const int *)b->edges, _mm_slli_epi32(jb, 2), 4);
+        __m256d r[4], lo[4], hi[4], bl[4];
+        for (int l = 0; l < 4; l++) r[l] = _mm256_loadu_pd(ea[l]->u);   // u, sum[0]
+        transpose4(r, lo);
+        for (int l = 0; l < 4; l++) r[l] = _mm256_loadu_pd(ea[l]->u + 4);   // sum[1, 2], uu, ss
+        transpose4(r, hi);
+        for (int l = 0; l < 4; l++) r[l] = _mm256_loadu_pd(eb[l]->u);
+        transpose4(r, bl);
+        __m256d ua[3] = { lo[0], lo[1], lo[2] }, sa[3] = { lo[3], hi[0], hi[1] };
+        __m256d ub[3] = { bl[0], bl[1], bl[2] }, d[3];
+        const __m256d uua = hi[2], ssa = hi[3];
+        const __m256d uub = _mm256_setr_pd(eb[0]->uu, eb[1]->uu, eb[2]->uu, eb[3]->uu);
         for (int q = 0; q < 3; q++)
-            d[q] = _mm256_sub_pd(_mm256_i32gather_pd(pa[q], va, 8),
-                                 _mm256_i32gather_pd(pb3[q], vb, 8));
+            d[q] = _mm256_sub_pd(load4(pa[q], va[0], va[1], va[2], va[3]),
+                                 load4(pb3[q], vb[0], vb[1], vb[2], vb[3]));
         __m256d c0 = _mm256_sub_pd(_mm256_mul_pd(ua[1], ub[2]), _mm256_mul_pd(ua[2], ub[1]));
         __m256d c1 = _mm256_sub_pd(_mm256_mul_pd(ua[2], ub[0]), _mm256_mul_pd(ua[0], ub[2]));
         __m256d c2 = _mm256_sub_pd(_mm256_mul_pd(ua[0], ub[1]), _mm256_mul_pd(ua[1], ub[0]));
@@ -1082,22 +1113,21 @@ __attribute__((target("avx2,bmi2"))) static inline void
 face_signs_near8(const dx_hull *a, const dx_hull *b, uint64_t faces, uint64_t near,
                  uint64_t *above, uint64_t *below)
 {
-    int32_t idx[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
+    unsigned idx[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
     int n = 0;
-    for (uint64_t e = near; e; e &= e - 1) idx[n++] = (int32_t)__builtin_ctzll(e);
+    for (uint64_t e = near; e; e &= e - 1) idx[n++] = (unsigned)__builtin_ctzll(e);
     const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
     __m256i live = _mm256_cmpgt_epi32(_mm256_set1_epi32(n), lane);
-    __m256i at = _mm256_loadu_si256((const __m256i *)idx);
-    __m128i at0 = _mm256_castsi256_si128(at), at1 = _mm256_extracti128_si256(at, 1);
     __m256d m0 = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(_mm256_castsi256_si128(live)));
     __m256d m1 = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(_mm256_extracti128_si256(live, 1)));
     const __m256d zero = _mm256_setzero_pd();
-    __m256d x0 = _mm256_mask_i32gather_pd(zero, b->ex, at0, m0, 8);
-    __m256d y0 = _mm256_mask_i32gather_pd(zero, b->ey, at0, m0, 8);
-    __m256d z0 = _mm256_mask_i32gather_pd(zero, b->ez, at0, m0, 8);
-    __m256d x1 = _mm256_mask_i32gather_pd(zero, b->ex, at1, m1, 8);
-    __m256d y1 = _mm256_mask_i32gather_pd(zero, b->ey, at1, m1, 8);
-    __m256d z1 = _mm256_mask_i32gather_pd(zero, b->ez, at1, m1, 8);
+    // Lanes past n read edge 0 (their index), then are masked to +0.
+    __m256d x0 = _mm256_and_pd(load4_at(b->ex, idx), m0);
+    __m256d y0 = _mm256_and_pd(load4_at(b->ey, idx), m0);
+    __m256d z0 = _mm256_and_pd(load4_at(b->ez, idx), m0);
+    __m256d x1 = _mm256_and_pd(load4_at(b->ex, idx + 4), m1);
+    __m256d y1 = _mm256_and_pd(load4_at(b->ey, idx + 4), m1);
+    __m256d z1 = _mm256_and_pd(load4_at(b->ez, idx + 4), m1);
     for (; faces; faces &= faces - 1) {
         unsigned f = (unsigned)__builtin_ctzll(faces);
         __m256d c0 = _mm256_set1_pd(a->wn[f][0]), c1 = _mm256_set1_pd(a->wn[f][1]);
