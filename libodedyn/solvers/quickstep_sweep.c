@@ -233,10 +233,10 @@ QS_INLINE void update_free_row(const qs_row *q, dReal *lambda, dReal *fc)
 }
 
 // Ask for every 64-byte line of a row (four in double). Every other line
-// was enough on AMD's Zen, whose prefetcher brings the neighbouring line into
-// the first-level cache too (all four: 1.6 % slower there); Intel's brings
-// it only as far as the second level, and the row's J then waited on it:
-// all four make pyramid-40 10-17 % and spheres 13-15 % faster on an Ice Lake
+// was enough on AMD's Zen, where the neighbouring line came along in time
+// (all four: 1.6 % slower there); Intel's spatial prefetcher brings it only
+// as far as the second-level cache, and the row's J then waited on it: all
+// four make pyramid-40 10-17 % and spheres 13-15 % faster on an Ice Lake
 // Xeon (docs/perf.md, "The row sweep on Intel").
 QS_INLINE void prefetch_row(const qs_row *q)
 {
