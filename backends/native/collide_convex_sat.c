@@ -951,7 +951,7 @@ screen_pairs(const dx_hull *a, const dx_hull *b, const pair_batch *pb, const edg
         __m256d r[4], lo[4], hi[4], bl[4];
         for (int l = 0; l < 4; l++) r[l] = _mm256_loadu_pd(ea[l]->u);   // u, sum[0]
         transpose4(r, lo);
-        for (int l = 0; l < 4; l++) r[l] = _mm256_loadu_pd(ea[l]->u + 4);   // sum[1, 2], uu, ss
+        for (int l = 0; l < 4; l++) r[l] = _mm256_loadu_pd(&ea[l]->sum[1]);   // sum[1, 2], uu, ss
         transpose4(r, hi);
         for (int l = 0; l < 4; l++) r[l] = _mm256_loadu_pd(eb[l]->u);
         transpose4(r, bl);
