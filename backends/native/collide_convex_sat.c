@@ -345,15 +345,10 @@ __attribute__((target("avx2"))) static inline void pose_edges4(dx_hull *h, unsig
     // Each edge's (u, sum, uu, ss): two 4 x 4 transposes.
     __m256d rows[2][4] = { { u[0], u[1], u[2], s[0] }, { s[1], s[2], uu, ss } };
     for (int half = 0; half < 2; half++) {
-        __m256d *r = rows[half];
-        __m256d t0 = _mm256_unpacklo_pd(r[0], r[1]), t1 = _mm256_unpackhi_pd(r[0], r[1]);
-        __m256d t2 = _mm256_unpacklo_pd(r[2], r[3]), t3 = _mm256_unpackhi_pd(r[2], r[3]);
-        double *at = half ? &h->we[k].sum[1] : h->we[k].u;
-        size_t stride = sizeof(dxHullPosedEdge) / sizeof(double);
-        _mm256_storeu_pd(at, _mm256_permute2f128_pd(t0, t2, 0x20));
-        _mm256_storeu_pd(at + stride, _mm256_permute2f128_pd(t1, t3, 0x20));
-        _mm256_storeu_pd(at + 2 * stride, _mm256_permute2f128_pd(t0, t2, 0x31));
-        _mm256_storeu_pd(at + 3 * stride, _mm256_permute2f128_pd(t1, t3, 0x31));
+        __m256d c[4];
+        transpose4(rows[half], c);
+        for (int l = 0; l < 4; l++)
+            _mm256_storeu_pd(half ? &h->we[k + l].sum[1] : h->we[k + l].u, c[l]);
     }
 }
 #endif
