@@ -415,15 +415,6 @@ static qs_reorder reorder_begin(dxArena *a, qs_system *sys)
     return re;
 }
 
-// to[0, n) = from[0, n), eight at a time in vector moves (memcpy of a few
-// thousand numbers is `rep movsb`, which counts as an instruction a byte).
-static void copy_ints(int *to, const int *from, int n)
-{
-    int k = 0;
-    for (; k + 8 <= n; k += 8) memcpy(to + k, from + k, 8 * sizeof(int));
-    for (; k < n; k++) to[k] = from[k];
-}
-
 // The step's g-th reshuffle of the n islands in list, each with its own
 // generator (one call for all: most islands are a few rows).
 static void reshuffle_islands(const qs_system *sys, qs_island *parts, const int *list, int n,
@@ -439,30 +430,31 @@ static void reshuffle_islands(const qs_system *sys, qs_island *parts, const int 
 // (longest first) that has one, for t = 0, 1, ...: in runs of c islands for
 // the rows t0 to t1 of the c-th longest, island by island where the run is
 // long, else row by row (many short islands); the longest one's rows beyond
-// the second's in one copy (copy_ints). (One island is swept in place:
-// solve.) from: scratch for n pointers.
+// the second's (all of them if n is 1) in one pass (rows_of). from: scratch
+// for n pointers.
 static void interleave_rows(const qs_system *sys, const qs_island *parts, const int *list, int n,
                             const int **from)
 {
+    const qs_row *rows = sys->rows;
     for (int k = 0; k < n; k++) from[k] = sys->order + parts[list[k]].order0;
     int out = 0, t0 = 0;
     for (int c = n; c > 1; c--) {
         const int t1 = parts[list[c - 1]].norder;
         if (t1 <= t0) continue;
-        int *seq = sys->seq + out;
+        const qs_row **seq = sys->seq + out;
         if (t1 - t0 >= c) {
             for (int k = 0; k < c; k++) {
-                int *to = seq + k;
-                for (int t = t0; t < t1; t++, to += c) *to = from[k][t];
+                const qs_row **to = seq + k;
+                for (int t = t0; t < t1; t++, to += c) *to = rows + from[k][t];
             }
         } else {
             for (int t = t0; t < t1; t++)
-                for (int k = 0; k < c; k++) *seq++ = from[k][t];
+                for (int k = 0; k < c; k++) *seq++ = rows + from[k][t];
         }
         out += (t1 - t0) * c;
         t0 = t1;
     }
-    copy_ints(sys->seq + out, from[0] + t0, parts[list[0]].norder - t0);
+    dxQuickRowsOf(sys->seq + out, rows, from[0] + t0, parts[list[0]].norder - t0);
 }
 
 int dxQuickGroupBytes = QS_GROUP_BYTES;
@@ -550,9 +542,8 @@ static int make_groups(const qs_system *sys, const qs_island *parts, int count,
 }
 
 // The part of sys that group g sweeps: its blocks or batches, its rows in
-// seq (one island's swept in place in order).
-static qs_system group_system(const qs_system *sys, const qs_island *parts, const int *rlist,
-                              const qs_group *g)
+// seq.
+static qs_system group_system(const qs_system *sys, const qs_group *g)
 {
     qs_system one = *sys;
     one.bseq = sys->bseq + g->block0;
@@ -562,7 +553,7 @@ static qs_system group_system(const qs_system *sys, const qs_island *parts, cons
         one.nbatches = g->nbatches;
     }
     one.norder = g->nseq;
-    one.seq = g->nrows == 1 ? sys->order + parts[rlist[g->rows0]].order0 : sys->seq + g->seq0;
+    one.seq = sys->seq + g->seq0;
     return one;
 }
 
@@ -631,15 +622,15 @@ static void solve(dxArena *a, qs_system *sys, qs_island *parts, int count, int i
                                tmp);
     dxQuickBatchBlocks(a, sys, groups, ng);
     const qs_reorder re = reorder_begin(a, sys);
-    const int **from = n > 1 ? DX_ARENA_ARRAY(a, const int *, n) : NULL;
+    const int **from = DX_ARENA_ARRAY(a, const int *, n + 1);
     for (int k = 0; k < ng; k++) {
         const qs_group *g = &groups[k];
         const int *glist = rlist + g->rows0;
-        qs_system one = group_system(sys, parts, rlist, g);
+        qs_system one = group_system(sys, g);
         for (int it = 0; it < iterations; it++) {
             if (it % REORDER_PERIOD == 0) {
                 reshuffle_islands(sys, parts, glist, g->nrows, it / REORDER_PERIOD, &re);
-                if (g->nrows > 1) interleave_rows(&one, parts, glist, g->nrows, from);
+                if (g->nrows > 0) interleave_rows(&one, parts, glist, g->nrows, from);
             }
             dxQuickSweep(&one, it & 1);
         }
@@ -672,11 +663,14 @@ static void solve_island(void *context, int item, dxArena *arena)
     one.nbatches = 0;
     for (int t = 0; t < p->nblocks; t++) one.bseq[t] = &s->sys->blocks[p->block0 + t];
     one.norder = p->norder;
-    one.seq = s->sys->order + p->order0;
+    one.seq = s->sys->seq + p->order0;
+    int *order = s->sys->order + p->order0;
     for (int it = 0; it < s->iterations; it++) {
-        if (it % REORDER_PERIOD == 0)
-            reshuffle(one.seq, p->norder, &p->seed,
-                      reshuffle_base(it / REORDER_PERIOD, p->norder), &s->re);
+        if (it % REORDER_PERIOD == 0) {
+            reshuffle(order, p->norder, &p->seed, reshuffle_base(it / REORDER_PERIOD, p->norder),
+                      &s->re);
+            dxQuickRowsOf(one.seq, s->sys->rows, order, p->norder);
+        }
         dxQuickSweep(&one, it & 1);
     }
 }

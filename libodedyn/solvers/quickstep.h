@@ -130,8 +130,9 @@ typedef struct qs_batch {
 } qs_batch;
 
 // A row updated on its own. With D = sor_w / A_ii and s = |lambda[f]|:
-//   lambda[pos] += rhs - cfm lambda[pos] - J . fc, clamped to lo s .. hi s,
-//   fc += delta M for the change delta.
+//   lambda[pos] = keep lambda[pos] + rhs - J . fc, clamped to lo s .. hi s
+//   (keep = 1 - D cfm_i / h: the update's lambda[pos] - D cfm_i / h
+//   lambda[pos] in one product), fc += delta M for the change delta.
 // A limit or motor row of a joint with a block is coupled to it: it moves
 // the block along, its lambdas changing by g * delta so that the block's
 // residuals stay as they were (M and D then include the block's response:
@@ -142,7 +143,7 @@ typedef struct qs_batch {
 // scalars: a one-body row (most contacts: with the ground) reads only those,
 // never the second body's numbers (which would add exact zeros).
 typedef struct qs_row {
-    dReal rhs, cfm;   // D * b_i, D * cfm_i / h
+    dReal rhs, keep;  // D * b_i, 1 - D * cfm_i / h
     dReal lo, hi;     // bounds, or friction coefficients (-mu, mu)
     int o0, o1;       // offsets of the bodies in fc (o1: the dummy for a one-body row)
     int pos;          // lambda position
@@ -217,7 +218,9 @@ typedef struct qs_system {
     const qs_block **bseq; // the blocks of all islands, interleaved group by group
     const qs_batch *batches; // bseq packed in batches (NULL: sweep bseq)
     int nbatches;
-    int *seq;              // order of all islands, interleaved group by group
+    const qs_row **seq;    // order of all islands, interleaved group by group, as the
+                           // rows themselves (the sweep's loads need no row index
+                           // scaled and added)
     unsigned *normal;      // per row in order: the row in order whose lambda bounds it
                            // (a contact's normal row, made before it), else QS_NO_ROW
     dReal *lambda;         // m + 1: the last holds the constant 1
@@ -373,5 +376,8 @@ extern int dxQuickOverlapSweeps;
 // One sweep over all blocks in bseq (each followed by its coupled rows) and
 // all rows in seq: the blocks first, or (rows_first) the rows.
 void dxQuickSweep(const qs_system *sys, int rows_first);
+// to[0, n) = the rows rows + from[0, n) (a sweep's seq from its order; with
+// AVX2 four at a time).
+void dxQuickRowsOf(const qs_row **to, const qs_row *rows, const int *from, int n);
 
 #endif

@@ -71,7 +71,7 @@ enum { SOA_GENERAL = 0, SOA_BALL = 1 };
 // The numbers of a full batch of blocks of n rows of a form on `two` + 1
 // bodies: J and M (n rows of je and me numbers), the inverse masses,
 // Ainv's lower triangle, rhs and cfm (n); then per coupled row (ncoupled
-// of each lane) its J and M in full (ne = 6 or 12), rhs, cfm, lo, hi and g
+// of each lane) its J and M in full (ne = 6 or 12), rhs, keep, lo, hi and g
 // (n). Each number QS_LANES times, one a lane.
 static size_t soa_size(int n, int form, int two, int ncoupled)
 {
@@ -194,7 +194,7 @@ QS_INLINE void soa_fill(dReal *s, const qs_block *const blk[QS_LANES], const qs_
             lanes_copy(s + QS_LANES * to[part], src, 6);
         }
         s += QS_LANES * 2 * ne;
-        for (int i = 0; i < QS_LANES; i++) src[i] = &q[i]->rhs;   // rhs, cfm, lo, hi
+        for (int i = 0; i < QS_LANES; i++) src[i] = &q[i]->rhs;   // rhs, keep, lo, hi
         lanes_copy(s, src, 4);
         s += 4 * QS_LANES;
         for (int i = 0; i < QS_LANES; i++) src[i] = q[i]->g;
@@ -410,6 +410,19 @@ QS_INLINE qs_v4 general_dot(const dReal *J, const qs_v4 *x, int two)
     return v4_add(s0, s1);
 }
 
+// A coupled row's J . fc in every lane, summed as the row update does
+// (quickstep_sweep.c: row_dot, then its two lanes): with two bodies, each
+// of the first body's products added to the second's first.
+QS_INLINE qs_v4 row_dot(const dReal *J, const qs_v4 *x, int two)
+{
+    if (!two) return general_dot(J, x, 0);
+    const qs_v4 s0 = v4_add(v4_add(v4_add(JX(0, 0), JX(6, 6)), v4_add(JX(2, 2), JX(8, 8))),
+                            v4_add(JX(4, 4), JX(10, 10)));
+    const qs_v4 s1 = v4_add(v4_add(v4_add(JX(1, 1), JX(7, 7)), v4_add(JX(3, 3), JX(9, 9))),
+                            v4_add(JX(5, 5), JX(11, 11)));
+    return v4_add(s0, s1);
+}
+
 // The same for row a (a constant after inlining) of a block of the ball
 // form (J: the row's angular numbers): J_lin is e_a (a < 3) or zero, and
 // the second body's -e_a.
@@ -448,8 +461,8 @@ QS_INLINE void batch_coupled(const qs_batch *b, int n, int two, int nc, const dR
             v4_lane(old, i) = *pos[i];
         }
         const dReal *M = cs + QS_LANES * ne, *k = M + QS_LANES * ne, *g = k + 4 * QS_LANES;
-        const qs_v4 r = v4_sub(v4_add(old, v4_load(k)), v4_mul(v4_load(k + QS_LANES), old));
-        const qs_v4 now = v4_clamp(v4_sub(r, general_dot(cs, x, two)),
+        const qs_v4 r = v4_add(v4_mul(v4_load(k + QS_LANES), old), v4_load(k));
+        const qs_v4 now = v4_clamp(v4_sub(r, row_dot(cs, x, two)),
                                    v4_mul(v4_load(k + 2 * QS_LANES), s),
                                    v4_mul(v4_load(k + 3 * QS_LANES), s));
         for (int i = 0; i < QS_LANES; i++) *pos[i] = v4_lane(now, i);

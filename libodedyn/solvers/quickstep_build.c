@@ -679,7 +679,7 @@ QS_INLINE void row_out(const qs_input *in, const qs_jrows *jr, int i, const int 
     }
     q->two = (short)is_two_body(jr);
     q->rhs = (jr->c[i] * in->fps - rate) * D;
-    q->cfm = cfm * D;
+    q->keep = 1 - cfm * D;
     q->pos = pos[i];
     q->o0 = jr->o[0];
     q->o1 = jr->o[1];
@@ -1217,7 +1217,7 @@ void dxQuickSetup(struct dxWorld *w, const dxIsland *islands, int count, qs_syst
     sys->bseq = DX_ARENA_ARRAY(a, const qs_block *, m / 2 + 1);
     sys->rows = DX_ARENA_ARRAY(a, qs_row, m + 1);
     sys->order = DX_ARENA_ARRAY(a, int, m + 1);
-    sys->seq = DX_ARENA_ARRAY(a, int, m + 1);
+    sys->seq = DX_ARENA_ARRAY(a, const qs_row *, m + 1);
     sys->normal = DX_ARENA_ARRAY(a, unsigned, m + 1);
     sys->feedback = DX_ARENA_ARRAY(a, qs_feedback, nfeedback + 1);
     sys->lambda[m] = 1;

@@ -112,12 +112,12 @@ QS_INLINE void qc_store2(qs_row *rows, int m, size_t off, qs_v4 a, qs_v4 b)
     if (m > 2) memcpy((char *)&rows[2] + off, &p2, sizeof p2);
 }
 
-// The numbers qc_store and qc_store2 write: rhs, cfm, lo, hi together, and
+// The numbers qc_store and qc_store2 write: rhs, keep, lo, hi together, and
 // J, M, J1, M1 (24 numbers) together.
-_Static_assert(offsetof(qs_row, cfm) == sizeof(dReal) &&
+_Static_assert(offsetof(qs_row, keep) == sizeof(dReal) &&
                    offsetof(qs_row, lo) == 2 * sizeof(dReal) &&
                    offsetof(qs_row, hi) == 3 * sizeof(dReal),
-               "qs_row: rhs, cfm, lo, hi are consecutive");
+               "qs_row: rhs, keep, lo, hi are consecutive");
 _Static_assert(offsetof(qs_row, M) == offsetof(qs_row, J) + 6 * sizeof(dReal) &&
                    offsetof(qs_row, J1) == offsetof(qs_row, J) + 12 * sizeof(dReal) &&
                    offsetof(qs_row, M1) == offsetof(qs_row, J) + 18 * sizeof(dReal),
@@ -147,7 +147,7 @@ QS_INLINE void inertia_lanes(const dReal *I, qs_v4 ax, qs_v4 ay, qs_v4 az, qs_v4
 // The scaled numbers of the contact's m rows into rows[0..m) (lane i: row
 // i along r->d[i], its cfm lane i of cfm; sor_w the lanes' relaxation
 // factors; lanes from m on are made but not stored): D J and M^-1 J^T,
-// rhs = (c fps - J rates) D, cfm = cfm fps D, the bounds (friction: -k..k),
+// rhs = (c fps - J rates) D, keep = 1 - cfm fps D, the bounds (friction: -k..k),
 // as fill_row makes them from row_full's J and M^-1 J^T. two: a second
 // body (else its numbers are zero, and its J1 and M1 are not written: the
 // sweep reads them only for a two-body row). The sums are pair_dot's: with p the
@@ -217,8 +217,8 @@ QS_INLINE void lanes_rows(const qs_input *in, const qs_cbodies *cb, const dxCont
     const qs_v4 fps = v4_splat(in->fps);
     const qs_v4 cfm = v4_mul(cfm_rows, fps);
     const qs_v4 D = qc_factor(ms, cfm, sor_w);
-    qc_store(rows, m, 0, v4_mul(v4_sub(v4_mul(v4_load(r->c), fps), rate), D), v4_mul(cfm, D),
-             v4_load(r->lo), v4_load(r->hi));
+    qc_store(rows, m, 0, v4_mul(v4_sub(v4_mul(v4_load(r->c), fps), rate), D),
+             v4_sub(v4_splat(1), v4_mul(cfm, D)), v4_load(r->lo), v4_load(r->hi));
     qc_store(rows, m, J, v4_mul(D, dx), v4_mul(D, dy), v4_mul(D, dz), v4_mul(D, ax));
     qc_store2(rows, m, J + 4 * n, v4_mul(D, ay), v4_mul(D, az));
     if (two) {
