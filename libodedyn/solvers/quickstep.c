@@ -430,8 +430,8 @@ static void reshuffle_islands(const qs_system *sys, qs_island *parts, const int 
 // (longest first) that has one, for t = 0, 1, ...: in runs of c islands for
 // the rows t0 to t1 of the c-th longest, island by island where the run is
 // long, else row by row (many short islands); the longest one's rows beyond
-// the second's (all of them if n is 1) in one pass (rows_of). from: scratch
-// for n pointers.
+// the second's (all of them if n is 1) in one pass (dxQuickRowsOf), the rows
+// themselves (qs_system.seq). from: scratch for n pointers.
 static void interleave_rows(const qs_system *sys, const qs_island *parts, const int *list, int n,
                             const int **from)
 {

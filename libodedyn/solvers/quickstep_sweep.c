@@ -332,6 +332,7 @@ QS_SWEEP_EXTERN_CLONES void dxQuickSweepOverlapped(const qs_system *sys, const q
     }
 }
 
+// (quickstep.h)
 QS_SWEEP_EXTERN_CLONES void dxQuickRowsOf(const qs_row **to, const qs_row *rows, const int *from,
                                           int n)
 {
