@@ -173,35 +173,6 @@ static inline void gyroscopic_midpoint(const dReal *I, int diag, const dReal *w,
     keep_energy(I, diag, w, x);
 }
 
-// The implicit midpoint step of an axisymmetric body in closed form: I =
-// diag with I_p = I_q = a and I_s = c for the axes (p, q, s) in cyclic
-// order. Then w x I w = (c - a) w_s (w_q, -w_p, 0) in (p, q, s), so the
-// midpoint equation keeps x_s = w_s and is linear in (x_p, x_q):
-//   x_p - w_p + k (w_q + x_q) = 0,  x_q - w_q - k (w_p + x_p) = 0,
-// k = h (c - a) w_s / (2 a): (x_p, x_q) is (w_p, w_q) turned by the Cayley
-// rotation of angle 2 atan k (the exact precession rate (c - a) w_s / a, to
-// second order in h). The same solution Newton's method converges to in
-// gyroscopic_midpoint, up to rounding, without its iteration. Writes the
-// change d = x - w. (x is put together from constant places, not stored at
-// s, p and q, so that it stays in registers: stored one number at a time at
-// places known only at run time, it was read back as pairs, which waited for
-// the stores to finish (a store the processor cannot forward), a fifth of
-// the gyroscopic term's time on a chain of capsules.)
-static void gyroscopic_axisymmetric(const dReal *I, int s, const dReal *w, dReal h, dReal *d)
-{
-    const int p = (s + 1) % 3, q = (s + 2) % 3;
-    const dReal a = I[5 * p], c = I[5 * s];
-    const dReal k = REAL(0.5) * h * (c - a) * w[s] / a, k2 = k * k;
-    const dReal r = dRecip(1 + k2);
-    const dReal xp = ((1 - k2) * w[p] - 2 * k * w[q]) * r;
-    const dReal xq = ((1 - k2) * w[q] + 2 * k * w[p]) * r;
-    dVector3 x = { s == 0 ? w[0] : s == 1 ? xq : xp,
-                   s == 0 ? xp : s == 1 ? w[1] : xq,
-                   s == 0 ? xq : s == 1 ? xp : w[2] };
-    keep_energy(I, 1, w, x);
-    dSubtractVectors3(d, x, w);
-}
-
 // The symmetry axis s of a diagonal inertia with exactly two equal moments
 // (I_p = I_q != I_s), or -1.
 static int symmetry_axis(const dReal *I)
@@ -213,17 +184,12 @@ static int symmetry_axis(const dReal *I)
 }
 
 // Body b's gyroscopic change x - w (body frame) over a step h (the term on,
-// an inertia that is not isotropic); its body-frame rate w into w. diag: its
-// inertia is diagonal.
+// an inertia with three different moments or not diagonal); its body-frame
+// rate w into w. diag: its inertia is diagonal.
 static void gyroscopic_change(const struct dxBody *b, dReal h, int diag, dReal *d, dReal *w)
 {
     const dReal *I = b->mass.I;
     dMultiply1_331(w, b->R, b->avel);   // body frame
-    const int s = diag ? symmetry_axis(I) : -1;
-    if (s >= 0) {
-        gyroscopic_axisymmetric(I, s, w, h, d);
-        return;
-    }
     dVector3 x;
     if (diag) gyroscopic_midpoint(I, 1, w, h, x);
     else gyroscopic_midpoint(I, 0, w, h, x);
@@ -231,16 +197,12 @@ static void gyroscopic_change(const struct dxBody *b, dReal h, int diag, dReal *
 }
 
 // The torque that gives back last step's gyroscopic work, -W / h along the
-// momentum L = I w (which turns the body about its own rate, so it is
+// momentum L (world frame; it turns the body about its own rate, so it is
 // realised wherever the body may still turn as it turned): added to t.
 // Limited to a tenth of the rate per step, so a stale or odd entry cannot
-// throw the body. wb: its rate in the body frame; diag as for inertia_times.
-static void add_work_correction(const struct dxBody *b, const dReal *wb, int diag, dReal h,
-                                dReal *t)
+// throw the body.
+static void add_work_correction(const struct dxBody *b, const dReal *L, dReal h, dReal *t)
 {
-    dVector3 Lb, L;
-    inertia_times(b->mass.I, diag, wb, Lb);
-    dMultiply0_331(L, b->R, Lb);
     const dReal e2 = dCalcVectorDot3(b->avel, L);   // twice the rotational energy
     if (!(e2 > 0)) return;
     dReal k = -b->gyro_pending / e2;   // relative change of the rate, h * torque / L
@@ -250,6 +212,45 @@ static void add_work_correction(const struct dxBody *b, const dReal *wb, int dia
     dAddVectorScaledVector3(t, t, L, k / h);
 }
 
+// The gyroscopic torque of an axisymmetric body (diagonal I with I_p = I_q
+// = a, I_s = c for the axes (p, q, s) in cyclic order) into t, worked in the
+// world frame. Then w x I w = (c - a) w_s (w_q, -w_p, 0) in (p, q, s), so the
+// implicit midpoint rule of gyroscopic_midpoint keeps w_s and is linear in
+// the rest: x_p - w_p + k (w_q + x_q) = 0, x_q - w_q - k (w_p + x_p) = 0 with
+// k = h (c - a) w_s / (2 a). Its solution turns w's part across the axis,
+// v = w - w_s u (u: the axis, column s of R), about u by the Cayley rotation
+// of angle 2 atan k (the exact precession rate (c - a) w_s / a, to second
+// order in h): x_v = ((1 - k^2) v + 2 k u x w) / (1 + k^2), the same
+// solution Newton's method converges to, up to rounding, without its
+// iteration. x - w lies across u, where I acts as a, so the torque is
+// a (x_v - v) / h: no turn into the body frame and back. A rounding that
+// lengthens x_v is scaled away, so the term never adds energy.
+static void axisymmetric_torque(const struct dxBody *b, int s, dReal h, dReal *t)
+{
+    const dReal *I = b->mass.I, *R = b->R, *w = b->avel;
+    const dReal a = I[5 * ((s + 1) % 3)], c = I[5 * s];
+    const dVector3 u = { R[s], R[4 + s], R[8 + s] };
+    const dReal ws = dCalcVectorDot3(u, w);
+    dVector3 v, uw, x;
+    dAddVectorScaledVector3(v, w, u, -ws);
+    dCalcVectorCross3(uw, u, w);
+    const dReal k = REAL(0.5) * h * (c - a) * ws / a, k2 = k * k;
+    const dReal r = dRecip(1 + k2), cv = (1 - k2) * r, cu = 2 * k * r;
+    for (int i = 0; i < 3; i++) x[i] = cv * v[i] + cu * uw[i];
+    const dReal e0 = dCalcVectorLengthSquare3(v), e1 = dCalcVectorLengthSquare3(x);
+    if (!(e1 <= e0)) {
+        if (e1 > 0 && dxIsFinite(e1)) dScaleVector3(x, dSqrt(e0 / e1));
+        else dCopyVector3(x, v);
+    }
+    const dReal ah = a / h;
+    for (int i = 0; i < 3; i++) t[i] = ah * (x[i] - v[i]);
+    if (b->gyro_pending != 0) {
+        dVector3 L;   // I w = a w + (c - a) w_s u
+        for (int i = 0; i < 3; i++) L[i] = a * w[i] + (c - a) * ws * u[i];
+        add_work_correction(b, L, h, t);
+    }
+}
+
 // dxBodyGyroscopicTorque for a body that has the term (out of line: the
 // bodies without it, as spheres, take a short way).
 #if defined(__GNUC__)
@@ -257,12 +258,22 @@ __attribute__((noinline))
 #endif
 static void gyroscopic_torque(struct dxBody *b, dReal h, int diag, dReal *t)
 {
-    dVector3 d, w, Id;
-    gyroscopic_change(b, h, diag, d, w);
-    inertia_times(b->mass.I, diag, d, Id);
-    dMultiply0_331(t, b->R, Id);
-    dScaleVector3(t, dRecip(h));
-    if (b->gyro_pending != 0) add_work_correction(b, w, diag, h, t);
+    const int s = diag ? symmetry_axis(b->mass.I) : -1;
+    if (s >= 0) {
+        axisymmetric_torque(b, s, h, t);
+    } else {
+        dVector3 d, w, Id;
+        gyroscopic_change(b, h, diag, d, w);
+        inertia_times(b->mass.I, diag, d, Id);
+        dMultiply0_331(t, b->R, Id);
+        dScaleVector3(t, dRecip(h));
+        if (b->gyro_pending != 0) {
+            dVector3 Lb, L;
+            inertia_times(b->mass.I, diag, w, Lb);
+            dMultiply0_331(L, b->R, Lb);
+            add_work_correction(b, L, h, t);
+        }
+    }
     dCopyVector3(b->gyro_torque, t);
     b->gyro_work = REAL(0.5) * h * dCalcVectorDot3(t, b->avel);
 }
