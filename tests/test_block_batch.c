@@ -496,6 +496,22 @@ static int test_ball_form_gives_the_same_bits(void)
     return 0;
 }
 
+// The cases above again with the sweeps' version without fused
+// multiply-adds (quickstep.h: dxQuickFused), the one processors without FMA
+// run (where this one has none, the cases above ran it already).
+static int test_unfused_version_steps_the_same_either_way(void)
+{
+    const int fused = dxQuickFused;
+    dxQuickFused = 0;
+    const int failed = test_ragdolls_step_the_same_either_way() ||
+                       test_chains_step_the_same_either_way() ||
+                       test_machines_step_the_same_either_way() ||
+                       test_ball_form_gives_the_same_bits();
+    dxQuickFused = fused;
+    CHECK(!failed);
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_ragdolls_step_the_same_either_way),
     TEST_CASE(test_chains_step_the_same_either_way),
@@ -503,5 +519,6 @@ const test_case test_cases[] = {
     TEST_CASE(test_packing_keeps_the_order_of_blocks_on_a_body),
     TEST_CASE(test_packing_off_leaves_bseq),
     TEST_CASE(test_ball_form_gives_the_same_bits),
+    TEST_CASE(test_unfused_version_steps_the_same_either_way),
     TEST_END,
 };

@@ -74,10 +74,24 @@ static int test_spheres_step_the_same_in_any_groups(void) { return check_scene(S
 static int test_ragdolls_step_the_same_in_any_groups(void) { return check_scene(SCENE_RAGDOLLS); }
 static int test_chains_step_the_same_in_any_groups(void) { return check_scene(SCENE_CHAIN); }
 
+// Ragdolls (blocks in batches) again with the sweeps' version without
+// fused multiply-adds (quickstep.h: dxQuickFused), the one processors
+// without FMA run.
+static int test_unfused_ragdolls_step_the_same_in_any_groups(void)
+{
+    const int fused = dxQuickFused;
+    dxQuickFused = 0;
+    const int failed = check_scene(SCENE_RAGDOLLS);
+    dxQuickFused = fused;
+    CHECK(!failed);
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_pyramids_step_the_same_in_any_groups),
     TEST_CASE(test_spheres_step_the_same_in_any_groups),
     TEST_CASE(test_ragdolls_step_the_same_in_any_groups),
     TEST_CASE(test_chains_step_the_same_in_any_groups),
+    TEST_CASE(test_unfused_ragdolls_step_the_same_in_any_groups),
     TEST_END,
 };

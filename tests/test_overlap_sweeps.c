@@ -151,7 +151,20 @@ static int test_overlapped_sweeps_give_the_same_bits(void)
     return 0;
 }
 
+// The same with the sweeps' version without fused multiply-adds
+// (quickstep.h: dxQuickFused), the one processors without FMA run.
+static int test_unfused_overlapped_sweeps_give_the_same_bits(void)
+{
+    const int fused = dxQuickFused;
+    dxQuickFused = 0;
+    const int failed = test_overlapped_sweeps_give_the_same_bits();
+    dxQuickFused = fused;
+    CHECK(!failed);
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_overlapped_sweeps_give_the_same_bits),
+    TEST_CASE(test_unfused_overlapped_sweeps_give_the_same_bits),
     TEST_END,
 };

@@ -29,6 +29,9 @@
 
 #include <float.h>
 #include <stdint.h>
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#include <immintrin.h>   // (QS_FUSE's fused pairs)
+#endif
 
 typedef struct qs_scratch qs_scratch;
 
@@ -59,6 +62,7 @@ typedef dReal qs_v2 __attribute__((vector_size(2 * sizeof(dReal))));
 #define qs_add(x, y) ((x) + (y))
 #define qs_sub(x, y) ((x) - (y))
 #define qs_mul(x, y) ((x) * (y))
+#define qs_neg(x) (-(x))
 #define qs_lane(v, i) ((v)[i])
 QS_INLINE qs_v2 qs_splat(dReal a)
 {
@@ -84,6 +88,11 @@ static inline qs_v2 qs_mul(qs_v2 x, qs_v2 y)
     qs_v2 v = { { x.e[0] * y.e[0], x.e[1] * y.e[1] } };
     return v;
 }
+static inline qs_v2 qs_neg(qs_v2 x)
+{
+    qs_v2 v = { { -x.e[0], -x.e[1] } };
+    return v;
+}
 #define qs_lane(v, i) ((v).e[i])
 static inline qs_v2 qs_splat(dReal a)
 {
@@ -91,6 +100,70 @@ static inline qs_v2 qs_splat(dReal a)
     return v;
 }
 #endif
+
+// Fused multiply-adds. Where QS_FUSE is 1 (GCC, x86-64 with GNU ifunc's
+// conditions, not built with -Dfused_multiply_add=false: DX_NO_FMA), the
+// sweeps (quickstep_sweep.c, quickstep_block_batch.c) have a second version
+// for processors with AVX2 and FMA (QS_FUSED_VERSION), run while
+// dxQuickFused is 1. It passes fu = 1 to qs_madd1, qs_madd and v4_madd
+// (quickstep_v4.h): a * b + c rounded once. Every other version passes 0:
+// the product rounded, then the sum. Each path of the sweeps (a row alone, a
+// block's coupled row, four blocks side by side) uses them at the same
+// places, so the paths give the same bits in either version.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__ELF__) && \
+    defined(__GLIBC__) && !defined(DX_NO_FMA)
+#define QS_FUSE 1
+#define QS_FUSED_VERSION __attribute__((target("avx2,fma")))
+#else
+#define QS_FUSE 0
+#endif
+
+#if QS_FUSE
+#if defined(dSINGLE)
+#define QS_FMA(a, b, c) __builtin_fmaf(a, b, c)
+#else
+#define QS_FMA(a, b, c) __builtin_fma(a, b, c)
+#endif
+#endif
+
+// 1 where the processor has AVX2 and FMA (found when the library is
+// loaded) and the sweeps have their fused version; tests set it to 0 to run
+// the other (other bits: the two versions round differently).
+extern int dxQuickFused;
+
+// a * b + c, rounded once if fu (a constant after inlining).
+QS_INLINE dReal qs_madd1(dReal a, dReal b, dReal c, int fu)
+{
+#if QS_FUSE
+    if (fu) return QS_FMA(a, b, c);
+#endif
+    (void)fu;
+    return a * b + c;
+}
+
+#if QS_FUSE
+// a * b + c lane by lane for pairs, rounded once (one vfmadd for doubles;
+// not always inlined, as quickstep_v4.h's v4_fused).
+QS_FUSED_VERSION static inline qs_v2 qs_fused(qs_v2 a, qs_v2 b, qs_v2 c)
+{
+#if defined(dSINGLE)
+    const qs_v2 v = { QS_FMA(a[0], b[0], c[0]), QS_FMA(a[1], b[1], c[1]) };
+    return v;
+#else
+    return (qs_v2)_mm_fmadd_pd((__m128d)a, (__m128d)b, (__m128d)c);
+#endif
+}
+#endif
+
+// The same lane by lane for pairs.
+QS_INLINE qs_v2 qs_madd(qs_v2 a, qs_v2 b, qs_v2 c, int fu)
+{
+#if QS_FUSE
+    if (fu) return qs_fused(a, b, c);
+#endif
+    (void)fu;
+    return qs_add(qs_mul(a, b), c);
+}
 
 // n rows of one joint solved together: with the residuals res (unscaled)
 // delta = Ainv res (Ainv: the inverse of the block of A, times sor_w; its

@@ -13,10 +13,11 @@
 //
 // Each lane does exactly its block's operations in the order of the block
 // update of quickstep_sweep.c (the same products, the same order of sums,
-// no contraction to multiply-adds), so the results are the same bits as
-// there: fc's numbers e and e + 2 are summed first, then e + 4, a second
-// body's sum is added to the first's, then lane 0's sum to lane 1's; delta
-// is Ainv's column products summed in row order. The blocks' coupled rows
+// multiply-adds fused at the same places in its fused version, quickstep.h:
+// qs_madd), so the results are the same bits as there: fc's numbers e and
+// e + 2 are summed first, then e + 4, a second body's sum is added to the
+// first's, then lane 0's sum to lane 1's; delta is Ainv's column products
+// summed in row order. The blocks' coupled rows
 // (they touch only their block's bodies and lambdas) follow side by side
 // when every lane has as many, else each lane's on their own.
 
@@ -396,50 +397,55 @@ QS_INLINE void qb_scatter6(const qs_v4 *x, dReal *const *p)
 }
 
 // Row a's J . fc in every lane (x: the bodies' numbers by lane), summed as
-// the block update does (quickstep_sweep.c: block_dot, then its two lanes),
-// for a block of the general form or a coupled row (J in full: ne numbers).
-QS_INLINE qs_v4 general_dot(const dReal *J, const qs_v4 *x, int two)
+// the block update does (quickstep_sweep.c: block_dot, then its two lanes;
+// fu as there), for a block of the general form or a coupled row (J in
+// full: ne numbers).
+QS_INLINE qs_v4 general_dot(const dReal *J, const qs_v4 *x, int two, int fu)
 {
-#define JX(k, e) v4_mul(v4_load(J + QS_LANES * (k)), x[e])
-    qs_v4 s0 = v4_add(v4_add(JX(0, 0), JX(2, 2)), JX(4, 4));
-    qs_v4 s1 = v4_add(v4_add(JX(1, 1), JX(3, 3)), JX(5, 5));
+#define JL(k) v4_load(J + QS_LANES * (k))
+#define JX(k, e) v4_mul(JL(k), x[e])
+    qs_v4 s0 = v4_madd(JL(4), x[4], v4_add(JX(0, 0), JX(2, 2)), fu);
+    qs_v4 s1 = v4_madd(JL(5), x[5], v4_add(JX(1, 1), JX(3, 3)), fu);
     if (two) {
-        s0 = v4_add(s0, v4_add(v4_add(JX(6, 6), JX(8, 8)), JX(10, 10)));
-        s1 = v4_add(s1, v4_add(v4_add(JX(7, 7), JX(9, 9)), JX(11, 11)));
+        s0 = v4_add(s0, v4_madd(JL(10), x[10], v4_add(JX(6, 6), JX(8, 8)), fu));
+        s1 = v4_add(s1, v4_madd(JL(11), x[11], v4_add(JX(7, 7), JX(9, 9)), fu));
     }
     return v4_add(s0, s1);
 }
 
 // A coupled row's J . fc in every lane, summed as the row update does
 // (quickstep_sweep.c: row_dot, then its two lanes): with two bodies, each
-// of the first body's products added to the second's first.
-QS_INLINE qs_v4 row_dot(const dReal *J, const qs_v4 *x, int two)
+// of the first body's products added to the second's first (the second's
+// fused into it if fu).
+QS_INLINE qs_v4 row_dot(const dReal *J, const qs_v4 *x, int two, int fu)
 {
-    if (!two) return general_dot(J, x, 0);
-    const qs_v4 s0 = v4_add(v4_add(v4_add(JX(0, 0), JX(6, 6)), v4_add(JX(2, 2), JX(8, 8))),
-                            v4_add(JX(4, 4), JX(10, 10)));
-    const qs_v4 s1 = v4_add(v4_add(v4_add(JX(1, 1), JX(7, 7)), v4_add(JX(3, 3), JX(9, 9))),
-                            v4_add(JX(5, 5), JX(11, 11)));
+    if (!two) return general_dot(J, x, 0, fu);
+#define PQ(k) v4_madd(JL(k + 6), x[k + 6], JX(k, k), fu)
+    const qs_v4 s0 = v4_add(v4_add(PQ(0), PQ(2)), PQ(4));
+    const qs_v4 s1 = v4_add(v4_add(PQ(1), PQ(3)), PQ(5));
+#undef PQ
     return v4_add(s0, s1);
 }
 
 // The same for row a (a constant after inlining) of a block of the ball
 // form (J: the row's angular numbers): J_lin is e_a (a < 3) or zero, and
-// the second body's -e_a.
-QS_INLINE qs_v4 ball_dot(const dReal *J, const qs_v4 *x, int two, int a)
+// the second body's -e_a. Where the full form's first two products of a
+// lane are x and a zero, the third (fused if fu) is added to x alone.
+QS_INLINE qs_v4 ball_dot(const dReal *J, const qs_v4 *x, int two, int a, int fu)
 {
     qs_v4 s0 = JX(1, 4), s1 = JX(0, 3);
-    if (a == 0 || a == 2) s0 = v4_add(x[a], s0);
+    if (a == 0 || a == 2) s0 = v4_madd(JL(1), x[4], x[a], fu);
     if (a == 1) s1 = v4_add(x[1], s1);
-    s1 = v4_add(s1, JX(2, 5));
+    s1 = v4_madd(JL(2), x[5], s1, fu);
     if (two) {
         qs_v4 t0 = JX(4, 10), t1 = JX(3, 9);
-        if (a == 0 || a == 2) t0 = v4_sub(t0, x[6 + a]);
+        if (a == 0 || a == 2) t0 = v4_madd(JL(4), x[10], v4_neg(x[6 + a]), fu);
         if (a == 1) t1 = v4_sub(t1, x[7]);
         s0 = v4_add(s0, t0);
-        s1 = v4_add(s1, v4_add(t1, JX(5, 11)));
+        s1 = v4_add(s1, v4_madd(JL(5), x[11], t1, fu));
     }
 #undef JX
+#undef JL
     return v4_add(s0, s1);
 }
 
@@ -448,7 +454,7 @@ QS_INLINE qs_v4 ball_dot(const dReal *J, const qs_v4 *x, int two, int a)
 // each lane coupled_row of quickstep_sweep.c. cs: their numbers (soa);
 // their lambda positions and bounds' from b->cpos.
 QS_INLINE void batch_coupled(const qs_batch *b, int n, int two, int nc, const dReal *cs,
-                             dReal *lambda, qs_v4 *x, qs_v4 *L)
+                             dReal *lambda, qs_v4 *x, qs_v4 *L, int fu)
 {
     const int ne = two ? 12 : 6;
     for (int c = 0; c < nc; c++) {
@@ -461,14 +467,14 @@ QS_INLINE void batch_coupled(const qs_batch *b, int n, int two, int nc, const dR
             v4_lane(old, i) = *pos[i];
         }
         const dReal *M = cs + QS_LANES * ne, *k = M + QS_LANES * ne, *g = k + 4 * QS_LANES;
-        const qs_v4 r = v4_add(v4_mul(v4_load(k + QS_LANES), old), v4_load(k));
-        const qs_v4 now = v4_clamp(v4_sub(r, row_dot(cs, x, two)),
+        const qs_v4 r = v4_madd(v4_load(k + QS_LANES), old, v4_load(k), fu);
+        const qs_v4 now = v4_clamp(v4_sub(r, row_dot(cs, x, two, fu)),
                                    v4_mul(v4_load(k + 2 * QS_LANES), s),
                                    v4_mul(v4_load(k + 3 * QS_LANES), s));
         for (int i = 0; i < QS_LANES; i++) *pos[i] = v4_lane(now, i);
         const qs_v4 delta = v4_sub(now, old);
-        for (int e = 0; e < ne; e++) x[e] = v4_add(x[e], v4_mul(delta, v4_load(M + QS_LANES * e)));
-        for (int a = 0; a < n; a++) L[a] = v4_add(L[a], v4_mul(delta, v4_load(g + QS_LANES * a)));
+        for (int e = 0; e < ne; e++) x[e] = v4_madd(delta, v4_load(M + QS_LANES * e), x[e], fu);
+        for (int a = 0; a < n; a++) L[a] = v4_madd(delta, v4_load(g + QS_LANES * a), L[a], fu);
         cs = g + QS_LANES * n;
     }
 }
@@ -478,7 +484,7 @@ QS_INLINE void batch_coupled(const qs_batch *b, int n, int two, int nc, const dR
 // coupled rows (side by side when the lanes have as many, nc >= 0; else
 // each lane's on its own).
 QS_INLINE void batch_update(const qs_batch *b, int n, int form, int two, int nc,
-                            const qs_row *rows, dReal *lambda, dReal *fc)
+                            const qs_row *rows, dReal *lambda, dReal *fc, int fu)
 {
     dReal *f0[QS_LANES], *f1[QS_LANES], *l[QS_LANES];
     for (int i = 0; i < QS_LANES; i++) {
@@ -495,9 +501,11 @@ QS_INLINE void batch_update(const qs_batch *b, int n, int form, int two, int nc,
     const dReal *rhs = A + QS_LANES * n * (n + 1) / 2, *cfm = rhs + QS_LANES * n;
     for (int a = 0; a < n; a++) {
         L[a] = qb_gather(l, a);
-        const qs_v4 r = v4_sub(v4_load(rhs + QS_LANES * a), v4_mul(v4_load(cfm + QS_LANES * a), L[a]));
+        const qs_v4 ca = v4_load(cfm + QS_LANES * a);   // r = rhs - cfm L
+        const qs_v4 r = v4_madd(v4_neg(ca), L[a], v4_load(rhs + QS_LANES * a), fu);
         const dReal *Ja = J + QS_LANES * je * a;
-        res[a] = v4_sub(r, form == SOA_BALL ? ball_dot(Ja, x, two, a) : general_dot(Ja, x, two));
+        res[a] = v4_sub(r, form == SOA_BALL ? ball_dot(Ja, x, two, a, fu)
+                                            : general_dot(Ja, x, two, fu));
     }
     // delta = Ainv res, column products summed in row order; lambda +=
     // delta; fc += M^-1 J^T delta, row by row.
@@ -505,28 +513,28 @@ QS_INLINE void batch_update(const qs_batch *b, int n, int form, int two, int nc,
     for (int a = 0; a < n; a++) {
         d[a] = v4_mul(v4_load(A + QS_LANES * SOA_TRI(0, a)), res[0]);
         for (int c = 1; c < n; c++)
-            d[a] = v4_add(d[a], v4_mul(v4_load(A + QS_LANES * SOA_TRI(c, a)), res[c]));
+            d[a] = v4_madd(v4_load(A + QS_LANES * SOA_TRI(c, a)), res[c], d[a], fu);
         L[a] = v4_add(L[a], d[a]);
     }
     if (form == SOA_BALL) {
         // Linear numbers: row e's alone, M^-1 J^T im (first body) and -im.
         const qs_v4 im0 = v4_load(im);
-        for (int e = 0; e < 3; e++) x[e] = v4_add(x[e], v4_mul(d[e], im0));
+        for (int e = 0; e < 3; e++) x[e] = v4_madd(d[e], im0, x[e], fu);
         if (two) {
-            const qs_v4 im1 = v4_load(im + QS_LANES);
-            for (int e = 0; e < 3; e++) x[6 + e] = v4_sub(x[6 + e], v4_mul(d[e], im1));
+            const qs_v4 im1 = v4_neg(v4_load(im + QS_LANES));   // M^-1 J^T's -im
+            for (int e = 0; e < 3; e++) x[6 + e] = v4_madd(d[e], im1, x[6 + e], fu);
         }
         for (int a = 0; a < n; a++)
             for (int e = 0; e < me; e++) {
                 const int k = e < 3 ? 3 + e : 6 + e;   // angular numbers
-                x[k] = v4_add(x[k], v4_mul(d[a], v4_load(M + QS_LANES * (a * me + e))));
+                x[k] = v4_madd(d[a], v4_load(M + QS_LANES * (a * me + e)), x[k], fu);
             }
     } else {
         for (int a = 0; a < n; a++)
             for (int e = 0; e < me; e++)
-                x[e] = v4_add(x[e], v4_mul(d[a], v4_load(M + QS_LANES * (a * me + e))));
+                x[e] = v4_madd(d[a], v4_load(M + QS_LANES * (a * me + e)), x[e], fu);
     }
-    if (nc > 0) batch_coupled(b, n, two, nc, cfm + QS_LANES * n, lambda, x, L);
+    if (nc > 0) batch_coupled(b, n, two, nc, cfm + QS_LANES * n, lambda, x, L, fu);
     for (int a = 0; a < n; a++) qb_scatter(L[a], l, a);
     qb_scatter6(x, f0);
     if (two) qb_scatter6(x + 6, f1);
@@ -537,40 +545,65 @@ QS_INLINE void batch_update(const qs_batch *b, int n, int form, int two, int nc,
 
 // nc: the batch's coupled rows a lane, a constant for the common cases.
 QS_INLINE void batch_update_c(const qs_batch *b, int n, int form, int two, const qs_row *rows,
-                              dReal *lambda, dReal *fc)
+                              dReal *lambda, dReal *fc, int fu)
 {
     switch (b->ncoupled) {
-    case 0: batch_update(b, n, form, two, 0, rows, lambda, fc); break;
-    case 1: batch_update(b, n, form, two, 1, rows, lambda, fc); break;
-    case 2: batch_update(b, n, form, two, 2, rows, lambda, fc); break;
-    case -1: batch_update(b, n, form, two, -1, rows, lambda, fc); break;
-    default: batch_update(b, n, form, two, b->ncoupled, rows, lambda, fc); break;
+    case 0: batch_update(b, n, form, two, 0, rows, lambda, fc, fu); break;
+    case 1: batch_update(b, n, form, two, 1, rows, lambda, fc, fu); break;
+    case 2: batch_update(b, n, form, two, 2, rows, lambda, fc, fu); break;
+    case -1: batch_update(b, n, form, two, -1, rows, lambda, fc, fu); break;
+    default: batch_update(b, n, form, two, b->ncoupled, rows, lambda, fc, fu); break;
     }
 }
 
 QS_INLINE void batch_update_f(const qs_batch *b, int n, int form, const qs_row *rows,
-                              dReal *lambda, dReal *fc)
+                              dReal *lambda, dReal *fc, int fu)
 {
-    if (b->two) batch_update_c(b, n, form, 1, rows, lambda, fc);
-    else batch_update_c(b, n, form, 0, rows, lambda, fc);
+    if (b->two) batch_update_c(b, n, form, 1, rows, lambda, fc, fu);
+    else batch_update_c(b, n, form, 0, rows, lambda, fc, fu);
 }
 
 // The ball form has three rows or more.
 QS_INLINE void batch_update_n(const qs_batch *b, int n, const qs_row *rows, dReal *lambda,
-                              dReal *fc)
+                              dReal *fc, int fu)
 {
-    if (n >= 3 && b->form == SOA_BALL) batch_update_f(b, n, SOA_BALL, rows, lambda, fc);
-    else batch_update_f(b, n, SOA_GENERAL, rows, lambda, fc);
+    if (n >= 3 && b->form == SOA_BALL) batch_update_f(b, n, SOA_BALL, rows, lambda, fc, fu);
+    else batch_update_f(b, n, SOA_GENERAL, rows, lambda, fc, fu);
 }
 
-QS_BATCH_CLONES void dxQuickBatchUpdate(const qs_batch *b, const qs_row *rows, dReal *lambda,
-                                        dReal *fc)
+QS_INLINE void batch_update_with(const qs_batch *b, const qs_row *rows, dReal *lambda,
+                                 dReal *fc, int fu)
 {
     switch (b->n) {   // constant sizes let the compiler unroll
-    case 2: batch_update_n(b, 2, rows, lambda, fc); break;
-    case 3: batch_update_n(b, 3, rows, lambda, fc); break;
-    case 4: batch_update_n(b, 4, rows, lambda, fc); break;
-    case 5: batch_update_n(b, 5, rows, lambda, fc); break;
-    default: batch_update_n(b, QS_MAX_BLOCK, rows, lambda, fc); break;
+    case 2: batch_update_n(b, 2, rows, lambda, fc, fu); break;
+    case 3: batch_update_n(b, 3, rows, lambda, fc, fu); break;
+    case 4: batch_update_n(b, 4, rows, lambda, fc, fu); break;
+    case 5: batch_update_n(b, 5, rows, lambda, fc, fu); break;
+    default: batch_update_n(b, QS_MAX_BLOCK, rows, lambda, fc, fu); break;
     }
+}
+
+QS_BATCH_CLONES static void batch_update_plain(const qs_batch *b, const qs_row *rows,
+                                               dReal *lambda, dReal *fc)
+{
+    batch_update_with(b, rows, lambda, fc, 0);
+}
+
+#if QS_FUSE
+QS_FUSED_VERSION static void batch_update_fused(const qs_batch *b, const qs_row *rows,
+                                                dReal *lambda, dReal *fc)
+{
+    batch_update_with(b, rows, lambda, fc, 1);
+}
+#endif
+
+void dxQuickBatchUpdate(const qs_batch *b, const qs_row *rows, dReal *lambda, dReal *fc)
+{
+#if QS_FUSE
+    if (dxQuickFused) {
+        batch_update_fused(b, rows, lambda, fc);
+        return;
+    }
+#endif
+    batch_update_plain(b, rows, lambda, fc);
 }

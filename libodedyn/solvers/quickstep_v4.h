@@ -7,7 +7,8 @@
 // (quickstep_block_batch.c). GNU vector extensions: one AVX operation for
 // doubles in the AVX2 clones, two SSE2 ones in the baseline; elsewhere four
 // scalar operations. Every operation is lane by lane, so the results are the
-// same bits whichever code runs.
+// same bits whichever code runs (but for the fused multiply-adds of v4_madd,
+// quickstep.h).
 
 #ifndef QUICKSTEP_V4_H
 #define QUICKSTEP_V4_H
@@ -17,6 +18,9 @@
 
 #include <stdint.h>
 #include <string.h>
+#if QS_FUSE
+#include <immintrin.h>
+#endif
 
 #if defined(__GNUC__)
 typedef dReal qs_v4 __attribute__((vector_size(4 * sizeof(dReal))));
@@ -51,11 +55,11 @@ QS_INLINE qs_v4 v4_clamp(qs_v4 l, qs_v4 lo, qs_v4 hi)
     m = l < lo;
     return (qs_v4)(((qs_m4)lo & m) | ((qs_m4)l & ~m));
 }
-// [a0 + a2, a1 + a3] + b
-QS_INLINE qs_v2 v4_fold(qs_v4 a, qs_v2 b)
+// [a0 + a2, a1 + a3] (halves taken as vectors: a four made by fused lanes
+// stays one vfmadd)
+QS_INLINE qs_v2 v4_fold(qs_v4 a)
 {
-    const qs_v2 lo = { a[0], a[1] }, hi = { a[2], a[3] };
-    return (lo + hi) + b;
+    return __builtin_shufflevector(a, a, 0, 1) + __builtin_shufflevector(a, a, 2, 3);
 }
 #else
 typedef struct qs_v4 {
@@ -96,12 +100,37 @@ static inline qs_v4 v4_clamp(qs_v4 l, qs_v4 lo, qs_v4 hi)
     }
     return l;
 }
-static inline qs_v2 v4_fold(qs_v4 a, qs_v2 b)
+static inline qs_v2 v4_fold(qs_v4 a)
 {
-    qs_v2 v = { { (a.e[0] + a.e[2]) + b.e[0], (a.e[1] + a.e[3]) + b.e[1] } };
+    qs_v2 v = { { a.e[0] + a.e[2], a.e[1] + a.e[3] } };
     return v;
 }
 #endif
+
+#if QS_FUSE
+// a * b + c lane by lane, rounded once: one vfmadd (the intrinsic: built
+// lane by lane, a four whose addend is a product was taken apart into
+// single lanes). Not always inlined: inlined into the fused versions, a
+// call (never made) in the others.
+QS_FUSED_VERSION static inline qs_v4 v4_fused(qs_v4 a, qs_v4 b, qs_v4 c)
+{
+#if defined(dSINGLE)
+    return (qs_v4)_mm_fmadd_ps((__m128)a, (__m128)b, (__m128)c);
+#else
+    return (qs_v4)_mm256_fmadd_pd((__m256d)a, (__m256d)b, (__m256d)c);
+#endif
+}
+#endif
+
+// a * b + c lane by lane, rounded once if fu (quickstep.h: qs_madd).
+QS_INLINE qs_v4 v4_madd(qs_v4 a, qs_v4 b, qs_v4 c, int fu)
+{
+#if QS_FUSE
+    if (fu) return v4_fused(a, b, c);
+#endif
+    (void)fu;
+    return v4_add(v4_mul(a, b), c);
+}
 
 QS_INLINE qs_v2 v2_load(const dReal *p)
 {
