@@ -101,8 +101,9 @@ static inline qs_v2 qs_splat(dReal a)
 }
 #endif
 
-// Fused multiply-adds. Where QS_FUSE is 1 (GCC, x86-64 with GNU ifunc's
-// conditions, not built with -Dfused_multiply_add=false: DX_NO_FMA), the
+// Fused multiply-adds. Where QS_FUSE is 1 (GCC on x86-64, ELF and glibc, as
+// for dx_clones.h's versions; not built with -Dfused_multiply_add=false:
+// DX_NO_FMA), the
 // sweeps (quickstep_sweep.c, quickstep_block_batch.c) have a second version
 // for processors with AVX2 and FMA (QS_FUSED_VERSION), run while
 // dxQuickFused is 1. It passes fu = 1 to qs_madd1, qs_madd and v4_madd

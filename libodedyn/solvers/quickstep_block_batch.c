@@ -17,9 +17,9 @@
 // qs_madd), so the results are the same bits as there: fc's numbers e and
 // e + 2 are summed first, then e + 4, a second body's sum is added to the
 // first's, then lane 0's sum to lane 1's; delta is Ainv's column products
-// summed in row order. The blocks' coupled rows
-// (they touch only their block's bodies and lambdas) follow side by side
-// when every lane has as many, else each lane's on their own.
+// summed in row order. The blocks' coupled rows (they touch only their
+// block's bodies and lambdas) follow side by side when every lane has as
+// many, else each lane's on their own.
 
 #include "quickstep.h"
 #include "quickstep_v4.h"

@@ -55,8 +55,7 @@ QS_INLINE qs_v4 v4_clamp(qs_v4 l, qs_v4 lo, qs_v4 hi)
     m = l < lo;
     return (qs_v4)(((qs_m4)lo & m) | ((qs_m4)l & ~m));
 }
-// [a0 + a2, a1 + a3] (halves taken as vectors: a four made by fused lanes
-// stays one vfmadd)
+// [a0 + a2, a1 + a3] (the halves taken as vectors)
 QS_INLINE qs_v2 v4_fold(qs_v4 a)
 {
     return __builtin_shufflevector(a, a, 0, 1) + __builtin_shufflevector(a, a, 2, 3);
