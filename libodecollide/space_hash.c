@@ -36,8 +36,13 @@
 #include "space_hash_cells.h"
 #include "space_pair.h"
 
+#include "../libodedyn/core/dx_clones.h"
+
 #include <float.h>
 #include <math.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 #include <ode/memory.h>
 #include <stdint.h>
 #include <string.h>
@@ -47,6 +52,14 @@
 
 #define ALL_AXES 7u
 #define PER_GEOM DX_HASH_CELLS_PER_GEOM
+
+// The same-level walk (same_level_pairs) in two versions, AVX2 and the
+// baseline (dx_clones.h; clang builds the baseline alone, as for box-box).
+#if !defined(__clang__) && defined(DX_AVX2_CLONES)
+#define SAME_LEVEL_CLONES DX_AVX2_CLONES
+#else
+#define SAME_LEVEL_CLONES
+#endif
 
 // Bit k set where cell c is the lowest of the range lo on axis k.
 static unsigned lowest_bits(const int64_t c[3], const int64_t lo[3])
@@ -92,6 +105,14 @@ typedef struct hash_place {
     int64_t lo[3], hi[3];
 } hash_place;
 
+// A geom's box as its maxima and negated minima, q = (max x, y, z, -min x,
+// y, z), the last two numbers 0: boxes a and b overlap exactly when p <= q
+// in every number, p = (min, -max) of a (space_hash.c: boxes_meet), x <= y
+// being -y <= -x for every pair of numbers, NaN and signed zeros included.
+typedef struct hash_box {
+    dReal q[8];
+} hash_box;
+
 typedef struct dxHashSpace {
     dxSpace s;
     int minlevel, maxlevel;
@@ -114,6 +135,12 @@ typedef struct dxHashSpace {
     int big_cap, n_big;
     hash_level *levels;           // in increasing level
     int levels_cap, n_levels;
+    int n_entries;                // entries in the cells (as of the last update)
+    int boxed;                    // 1 while box holds the boxes of the last update
+    hash_box *box;                // the placed geoms' boxes by slot (for hash_collide)
+    int box_cap;
+    int *meets;                   // a geom's partners whose boxes overlap its (the same;
+    int meets_cap, meets_top;     // a nested collision's after those of the one it is in)
 } dxHashSpace;
 
 // p with room for `need` items of `size` bytes; the capacity doubles.
@@ -410,7 +437,8 @@ static void hash_update(dxHashSpace *hs)
         moved += changed;   // (p is kept only if it moves)
         relevelled += new_level;
     }
-    hs->stale = hs->levels_changed = hs->afresh = 0;
+    hs->stale = hs->levels_changed = hs->afresh = hs->boxed = 0;
+    hs->n_entries = n_entries;
     if (!moved && !relevelled) return;
     const int afresh = hs->afresh = 3 * moved > n_placed;
     if (afresh) {
@@ -439,10 +467,14 @@ static int hash_ready(dxHashSpace *hs)
 }
 
 // dxSpaceTestPair, inline (most pairs of neighbouring cells have their
-// boxes apart).
-static inline void test_pair(dxGeom *a, dxGeom *b, void *data, dNearCallback *cb)
+// boxes apart), counted in *tests (space_pair.h: the caller adds its count
+// to dx_aabb_tests at its end).
+static inline __attribute__((always_inline)) void test_pair(dxGeom *a, dxGeom *b, void *data,
+                                                           dNearCallback *cb,
+                                                           unsigned long *tests)
 {
-    dxSpaceTestPairInline(a, b, data, cb);
+    ++*tests;
+    dxSpaceTestPairUncounted(a, b, data, cb);
 }
 
 // g against the geoms of `level` recorded in cell c (g's lowest-cell bits
@@ -450,11 +482,12 @@ static inline void test_pair(dxGeom *a, dxGeom *b, void *data, dNearCallback *cb
 static inline __attribute__((always_inline)) void query_cell(const dxHashSpace *hs, dxGeom *g,
                                                             int level, const int64_t c[3],
                                                             unsigned lowest, void *data,
-                                                            dNearCallback *cb)
+                                                            dNearCallback *cb,
+                                                            unsigned long *tests)
 {
     const dxHashEntry *en = hs->cells.entries;
     for (int e = dxHashCellsFind(&hs->cells, level, c); e >= 0; e = en[e].next)
-        if ((en[e].lowest | lowest) == ALL_AXES) test_pair(g, en[e].g, data, cb);
+        if ((en[e].lowest | lowest) == ALL_AXES) test_pair(g, en[e].g, data, cb, tests);
 }
 
 // g against the placed geoms of levels[first ..]: through the cells of each
@@ -467,12 +500,13 @@ static inline __attribute__((always_inline)) void query_cell(const dxHashSpace *
 static void query_levels(const dxHashSpace *hs, dxGeom *g, int first, void *data,
                          dNearCallback *cb)
 {
+    unsigned long tests = 0;
     for (int li = first; li < hs->n_levels; li++) {
         const hash_level *lv = &hs->levels[li];
         int64_t lo[3], hi[3];
         const int inside = lv->count > 1 && cell_range(g->aabb, lv->scale, lo, hi);
         if (inside && lo[0] == hi[0] && lo[1] == hi[1] && lo[2] == hi[2]) {   // the common case
-            query_cell(hs, g, lv->level, lo, ALL_AXES, data, cb);
+            query_cell(hs, g, lv->level, lo, ALL_AXES, data, cb, &tests);
             continue;
         }
         if (inside && cell_count(lo, hi) <= lv->count) {
@@ -480,13 +514,15 @@ static void query_levels(const dxHashSpace *hs, dxGeom *g, int first, void *data
                 for (int64_t j = lo[1]; j <= hi[1]; j++)
                     for (int64_t k = lo[2]; k <= hi[2]; k++) {
                         const int64_t c[3] = { i, j, k };
-                        query_cell(hs, g, lv->level, c, lowest_bits(c, lo), data, cb);
+                        query_cell(hs, g, lv->level, c, lowest_bits(c, lo), data, cb,
+                                   &tests);
                     }
         } else {
             for (int n = lv->start; n < lv->start + lv->count; n++)
-                test_pair(g, hs->nodes[n].g, data, cb);
+                test_pair(g, hs->nodes[n].g, data, cb, &tests);
         }
     }
+    dx_aabb_tests += tests;
 }
 
 static int enabled(const dxGeom *g) { return (g->flags & DX_GEOM_ENABLED) != 0; }
@@ -497,6 +533,112 @@ static void brute_collide(const dxSpace *s, void *data, dNearCallback *cb)
         for (int j = i + 1; j < s->count; j++) dxSpaceTestPair(s->geoms[i], s->geoms[j], data, cb);
 }
 
+// The box test of hash_collide's walk without branches: 1 if p <= b->q in
+// every number (hash_box: a's box and b's overlap, closed, as
+// dxAABBsOverlap), two or four numbers at a time where SSE2 is.
+#if defined(__SSE2__) && !defined(dSINGLE)
+typedef __m128d box_p[3];
+static inline __attribute__((always_inline)) void box_p_of(box_p p, const dReal *aabb)
+{
+    p[0] = _mm_set_pd(aabb[2], aabb[0]);
+    p[1] = _mm_set_pd(-aabb[1], aabb[4]);
+    p[2] = _mm_set_pd(-aabb[5], -aabb[3]);
+}
+static inline __attribute__((always_inline)) int boxes_meet(const box_p p, const hash_box *b)
+{
+    const __m128d m = _mm_and_pd(_mm_and_pd(_mm_cmple_pd(p[0], _mm_loadu_pd(b->q)),
+                                            _mm_cmple_pd(p[1], _mm_loadu_pd(b->q + 2))),
+                                 _mm_cmple_pd(p[2], _mm_loadu_pd(b->q + 4)));
+    return _mm_movemask_pd(m) == 3;
+}
+#elif defined(__SSE2__)
+typedef __m128 box_p[2];
+static inline __attribute__((always_inline)) void box_p_of(box_p p, const dReal *aabb)
+{
+    p[0] = _mm_set_ps(-aabb[1], aabb[4], aabb[2], aabb[0]);
+    p[1] = _mm_set_ps(0, 0, -aabb[5], -aabb[3]);
+}
+static inline __attribute__((always_inline)) int boxes_meet(const box_p p, const hash_box *b)
+{
+    const __m128 m = _mm_and_ps(_mm_cmple_ps(p[0], _mm_loadu_ps(b->q)),
+                                _mm_cmple_ps(p[1], _mm_loadu_ps(b->q + 4)));
+    return _mm_movemask_ps(m) == 15;
+}
+#else
+typedef dReal box_p[6];
+static inline void box_p_of(box_p p, const dReal *aabb)
+{
+    const dReal x[6] = { aabb[0], aabb[2], aabb[4], -aabb[1], -aabb[3], -aabb[5] };
+    memcpy(p, x, sizeof x);
+}
+static inline int boxes_meet(const box_p p, const hash_box *b)
+{
+    return (p[0] <= b->q[0]) & (p[1] <= b->q[1]) & (p[2] <= b->q[2]) & (p[3] <= b->q[3]) &
+           (p[4] <= b->q[4]) & (p[5] <= b->q[5]);
+}
+#endif
+
+// The placed geoms' boxes into box, by slot, as hash_collide's walk tests
+// them (hash_box): a compact array instead of the geoms' own boxes
+// scattered in memory.
+static void copy_boxes(dxHashSpace *hs)
+{
+    const dxSpace *s = &hs->s;
+    hs->box = grow(hs->box, &hs->box_cap, hs->n_slots, sizeof *hs->box);
+    for (int i = 0; i < s->count; i++) {
+        const int si = hs->slot_of[i];
+        const hash_slot *sl = &hs->slots[si];
+        if (sl->state != SLOT_PLACED) continue;
+        const dReal *b = sl->g->aabb;
+        hs->box[si] = (hash_box){ { b[1], b[3], b[5], -b[0], -b[2], -b[4], 0, 0 } };
+    }
+    hs->boxed = 1;
+}
+
+// The pairs of geoms of one level that share a cell: each geom's entries in
+// space order, against the entries after it in the cell's list (earlier
+// geoms). A geom's partners whose boxes overlap its are listed without a
+// branch on the box test (most pairs in a cell are apart, unpredictably),
+// then called back in that order. The number of box tests made.
+SAME_LEVEL_CLONES static unsigned long same_level_pairs(dxHashSpace *hs, void *data,
+                                                        dNearCallback *cb)
+{
+    const dxSpace *s = &hs->s;
+    const dxHashEntry *en = hs->cells.entries;
+    const hash_box *box = hs->box;
+    // The partners' list, after those of a collision this one is nested in
+    // (a geom has fewer partners than the cells have entries).
+    const int base = hs->meets_top;
+    hs->meets = grow(hs->meets, &hs->meets_cap, base + hs->n_entries, sizeof *hs->meets);
+    hs->meets_top = base + hs->n_entries;
+    unsigned long tests = 0;
+    for (int i = 0; i < s->count; i++) {
+        const int si = hs->slot_of[i];
+        const hash_slot *sl = &hs->slots[si];
+        dxGeom *a = sl->g;
+        if (!enabled(a)) continue;
+        int *meets = hs->meets + base, n = 0;
+        box_p p;
+        box_p_of(p, a->aabb);
+        for (int e = si * PER_GEOM; e < si * PER_GEOM + sl->n; e++) {
+            const unsigned lowest = en[e].lowest;
+            for (int f = en[e].next; f >= 0; f = en[f].next) {
+                if ((en[f].lowest | lowest) != ALL_AXES) continue;   // not the pair's cell
+                const unsigned b = (unsigned)f / PER_GEOM;              // its geom's slot
+                tests++;
+                meets[n] = (int)b;
+                n += boxes_meet(p, &box[b]);
+            }
+        }
+        for (int k = 0; k < n; k++) {   // (a nested collision may move hs->meets)
+            dxGeom *b = hs->slots[hs->meets[base + k]].g;
+            if (dxGeomsMayTouchOverlapping(a, b)) cb(data, a, b);
+        }
+    }
+    hs->meets_top = base;
+    return tests;
+}
+
 static void hash_collide(dxSpace *s, void *data, dNearCallback *cb)
 {
     dxHashSpace *hs = (dxHashSpace *)s;
@@ -504,25 +646,19 @@ static void hash_collide(dxSpace *s, void *data, dNearCallback *cb)
         brute_collide(s, data, cb);
         return;
     }
+    // (A collision nested in a callback of this one finds them current: the
+    // cells and boxes are not updated while they are walked.)
+    if (!hs->boxed) copy_boxes(hs);
     hs->walking++;
+    unsigned long tests = 0;
     // Big geoms against every geom.
     for (int i = 0; i < hs->n_big; i++) {
         dxGeom *a = hs->big[i];
         if (!enabled(a)) continue;
-        for (int j = i + 1; j < hs->n_big; j++) test_pair(a, hs->big[j], data, cb);
-        for (int j = 0; j < hs->n_nodes; j++) test_pair(a, hs->nodes[j].g, data, cb);
+        for (int j = i + 1; j < hs->n_big; j++) test_pair(a, hs->big[j], data, cb, &tests);
+        for (int j = 0; j < hs->n_nodes; j++) test_pair(a, hs->nodes[j].g, data, cb, &tests);
     }
-    // Geoms of one level that share a cell: each geom's entries in space
-    // order, against the entries after it in the cell's list (earlier geoms).
-    const dxHashEntry *en = hs->cells.entries;
-    for (int i = 0; i < s->count; i++) {
-        const int si = hs->slot_of[i];
-        const hash_slot *sl = &hs->slots[si];
-        if (!enabled(sl->g)) continue;
-        for (int e = si * PER_GEOM; e < si * PER_GEOM + sl->n; e++)
-            for (int f = en[e].next; f >= 0; f = en[f].next)
-                if ((en[f].lowest | en[e].lowest) == ALL_AXES) test_pair(sl->g, en[f].g, data, cb);
-    }
+    dx_aabb_tests += tests + same_level_pairs(hs, data, cb);
     // Each geom against the coarser levels.
     for (int li = 0; li < hs->n_levels; li++) {
         const hash_level *lv = &hs->levels[li];
@@ -541,7 +677,9 @@ static void hash_collide_geom(dxSpace *s, dxGeom *g, void *data, dNearCallback *
         return;
     }
     hs->walking++;
-    for (int i = 0; i < hs->n_big; i++) test_pair(g, hs->big[i], data, cb);
+    unsigned long tests = 0;
+    for (int i = 0; i < hs->n_big; i++) test_pair(g, hs->big[i], data, cb, &tests);
+    dx_aabb_tests += tests;
     query_levels(hs, g, 0, data, cb);
     hs->walking--;
 }
@@ -590,6 +728,8 @@ static void hash_destroy(dxSpace *s)
     dFree(hs->placed, (size_t)hs->placed_cap * sizeof *hs->placed);
     dFree(hs->big, (size_t)hs->big_cap * sizeof *hs->big);
     dFree(hs->levels, (size_t)hs->levels_cap * sizeof *hs->levels);
+    dFree(hs->box, (size_t)hs->box_cap * sizeof *hs->box);
+    dFree(hs->meets, (size_t)hs->meets_cap * sizeof *hs->meets);
 }
 
 static const dxSpaceOps hash_ops = { hash_added, hash_removed, hash_collide, hash_collide_geom,

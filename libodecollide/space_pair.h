@@ -28,12 +28,21 @@ static inline int dxGeomsMayTouchOverlapping(dxGeom *a, dxGeom *b)
     return (a->ops->cls < dFirstUserClass && b->ops->cls < dFirstUserClass) || dxUserAABBTest(a, b);
 }
 
+// dxSpaceTestPair inline, not counted: the callback called when the pair
+// may touch. A loop over many pairs counts them in a local and adds that to
+// dx_aabb_tests once (a global incremented per pair is a store that the
+// next pair's increment waits on).
+static inline void dxSpaceTestPairUncounted(dxGeom *a, dxGeom *b, void *data, dNearCallback *cb)
+{
+    if (dxAABBsOverlap(a->aabb, b->aabb) && dxGeomsMayTouchOverlapping(a, b)) cb(data, a, b);
+}
+
 // dxSpaceTestPair inline: one AABB test counted in dx_aabb_tests, the
 // callback called when the pair may touch.
 static inline void dxSpaceTestPairInline(dxGeom *a, dxGeom *b, void *data, dNearCallback *cb)
 {
     dx_aabb_tests++;
-    if (dxAABBsOverlap(a->aabb, b->aabb) && dxGeomsMayTouchOverlapping(a, b)) cb(data, a, b);
+    dxSpaceTestPairUncounted(a, b, data, cb);
 }
 
 #endif

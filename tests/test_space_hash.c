@@ -290,6 +290,77 @@ static int test_pair_order_depends_only_on_the_geoms(void)
     return 0;
 }
 
+// ---- collisions nested in callbacks --------------------------------------------
+
+// The pairs of one collision and of the collisions nested in its callbacks.
+typedef struct nesting {
+    dSpaceID s;
+    pairs outer;        // the outer collision's callbacks, in order
+    pairs inner[4];     // the first callbacks' nested dSpaceCollide of s
+    int n_inner;
+} nesting;
+
+// Records the pair; the first four callbacks collide the whole space again,
+// each into its own list.
+static void nesting_callback(void *data, dGeomID a, dGeomID b)
+{
+    nesting *m = data;
+    record(&m->outer, a, b);
+    if (m->n_inner < 4) dSpaceCollide(m->s, &m->inner[m->n_inner++], record);
+}
+
+// 1 if the two lists hold the same pairs in the same order.
+static int same_sequence(const pairs *x, const pairs *y)
+{
+    return x->n == y->n && (x->n == 0 || memcmp(x->p, y->p, sizeof *x->p * (size_t)x->n) == 0);
+}
+
+static int test_collisions_nested_in_callbacks_see_the_same_pairs(void)
+{
+    // A collision of the space nested in a callback of its own collision
+    // (which lists a geom's partners before calling back) or of a
+    // dSpaceCollide2 against it (made right after the geoms moved) reports
+    // what a collision alone does, in the same order, and leaves the outer
+    // one's sequence intact. Geoms crowded so that each has many partners.
+    rng_state = 0x452821E638D01377u;
+    dSpaceID s = dHashSpaceCreate(0);
+    for (int i = 0; i < 200; i++) {
+        dGeomID g = dCreateSphere(s, (dReal)rnd(0.2, 0.6));
+        number(g, next_number++);
+        dGeomSetPosition(g, (dReal)rnd(-3, 3), (dReal)rnd(-3, 3), (dReal)rnd(-3, 3));
+    }
+    dGeomID probe = dCreateSphere(0, 2);
+    number(probe, next_number++);
+    for (int round = 0; round < 3; round++) {
+        for (int i = 0; i < dSpaceGetNumGeoms(s); i += 3) {   // moved: the cells are updated
+            dGeomID g = dSpaceGetGeom(s, i);
+            const dReal *p = dGeomGetPosition(g);
+            dGeomSetPosition(g, p[0] + (dReal)rnd(-0.3, 0.3), p[1], p[2]);
+        }
+        nesting m = { s, { 0 }, { { 0 } }, 0 };
+        if (round == 1) dSpaceCollide2(probe, (dGeomID)s, &m, nesting_callback);
+        else dSpaceCollide(s, &m, nesting_callback);
+        pairs alone = { 0 };
+        if (round == 1) dSpaceCollide2(probe, (dGeomID)s, &alone, record);
+        else dSpaceCollide(s, &alone, record);
+        CHECK(alone.n > 4 && same_sequence(&m.outer, &alone));
+        pairs whole = { 0 };
+        dSpaceCollide(s, &whole, record);
+        CHECK(m.n_inner == 4);
+        for (int k = 0; k < m.n_inner; k++) {
+            CHECK(same_sequence(&m.inner[k], &whole));
+            pairs_free(&m.inner[k]);
+        }
+        if (check_collide(s)) return 1;
+        pairs_free(&m.outer);
+        pairs_free(&alone);
+        pairs_free(&whole);
+    }
+    dGeomDestroy(probe);
+    dSpaceDestroy(s);
+    return 0;
+}
+
 // ---- no allocation once warm ----------------------------------------------------
 
 static int test_geoms_changing_cells_allocate_nothing_once_warm(void)
@@ -497,6 +568,7 @@ static int test_a_level_of_one_geom_meets_the_geoms_its_box_touches(void)
 const test_case test_cases[] = {
     TEST_CASE(test_random_edits_find_the_brute_force_pairs_every_step),
     TEST_CASE(test_pair_order_depends_only_on_the_geoms),
+    TEST_CASE(test_collisions_nested_in_callbacks_see_the_same_pairs),
     TEST_CASE(test_geoms_changing_cells_allocate_nothing_once_warm),
     TEST_CASE(test_levels_changed_by_the_callback_take_effect_after_it),
     TEST_CASE(test_geom_shrinking_after_minlevel_lowered_orders_as_fresh),
