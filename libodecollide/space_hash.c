@@ -534,15 +534,17 @@ static void brute_collide(const dxSpace *s, void *data, dNearCallback *cb)
 }
 
 // The box test of hash_collide's walk without branches: 1 if p <= b->q in
-// every number (hash_box: a's box and b's overlap, closed, as
-// dxAABBsOverlap), two or four numbers at a time where SSE2 is.
+// every number, p = (min, -max) made by box_p_of from a's q (hash_box: a's
+// box and b's overlap, closed, as dxAABBsOverlap), two or four numbers at a
+// time where SSE2 is.
 #if defined(__SSE2__) && !defined(dSINGLE)
 typedef __m128d box_p[3];
-static inline __attribute__((always_inline)) void box_p_of(box_p p, const dReal *aabb)
+static inline __attribute__((always_inline)) void box_p_of(box_p p, const hash_box *a)
 {
-    p[0] = _mm_set_pd(aabb[2], aabb[0]);
-    p[1] = _mm_set_pd(-aabb[1], aabb[4]);
-    p[2] = _mm_set_pd(-aabb[5], -aabb[3]);
+    const dReal *q = a->q;
+    p[0] = _mm_set_pd(-q[4], -q[3]);
+    p[1] = _mm_set_pd(-q[0], -q[5]);
+    p[2] = _mm_set_pd(-q[2], -q[1]);
 }
 static inline __attribute__((always_inline)) int boxes_meet(const box_p p, const hash_box *b)
 {
@@ -553,10 +555,11 @@ static inline __attribute__((always_inline)) int boxes_meet(const box_p p, const
 }
 #elif defined(__SSE2__)
 typedef __m128 box_p[2];
-static inline __attribute__((always_inline)) void box_p_of(box_p p, const dReal *aabb)
+static inline __attribute__((always_inline)) void box_p_of(box_p p, const hash_box *a)
 {
-    p[0] = _mm_set_ps(-aabb[1], aabb[4], aabb[2], aabb[0]);
-    p[1] = _mm_set_ps(0, 0, -aabb[5], -aabb[3]);
+    const dReal *q = a->q;
+    p[0] = _mm_set_ps(-q[0], -q[5], -q[4], -q[3]);
+    p[1] = _mm_set_ps(0, 0, -q[2], -q[1]);
 }
 static inline __attribute__((always_inline)) int boxes_meet(const box_p p, const hash_box *b)
 {
@@ -566,10 +569,9 @@ static inline __attribute__((always_inline)) int boxes_meet(const box_p p, const
 }
 #else
 typedef dReal box_p[6];
-static inline void box_p_of(box_p p, const dReal *aabb)
+static inline void box_p_of(box_p p, const hash_box *a)
 {
-    const dReal x[6] = { aabb[0], aabb[2], aabb[4], -aabb[1], -aabb[3], -aabb[5] };
-    memcpy(p, x, sizeof x);
+    for (int k = 0; k < 6; k++) p[k] = -a->q[(k + 3) % 6];
 }
 static inline int boxes_meet(const box_p p, const hash_box *b)
 {
@@ -616,10 +618,10 @@ SAME_LEVEL_CLONES static unsigned long same_level_pairs(dxHashSpace *hs, void *d
         const int si = hs->slot_of[i];
         const hash_slot *sl = &hs->slots[si];
         dxGeom *a = sl->g;
-        if (!enabled(a)) continue;
+        if (sl->state != SLOT_PLACED || !enabled(a)) continue;   // (only placed geoms have cells)
         int *meets = hs->meets + base, n = 0;
         box_p p;
-        box_p_of(p, a->aabb);
+        box_p_of(p, &box[si]);
         for (int e = si * PER_GEOM; e < si * PER_GEOM + sl->n; e++) {
             const unsigned lowest = en[e].lowest;
             for (int f = en[e].next; f >= 0; f = en[f].next) {
