@@ -54,8 +54,8 @@
 #define PER_GEOM DX_HASH_CELLS_PER_GEOM
 
 // The same-level walk (same_level_pairs) in two versions, AVX2 and the
-// baseline (dx_clones.h; clang builds the baseline alone, as for box-box).
-#if !defined(__clang__) && defined(DX_AVX2_CLONES)
+// baseline (dx_clones.h).
+#ifdef DX_AVX2_CLONES
 #define SAME_LEVEL_CLONES DX_AVX2_CLONES
 #else
 #define SAME_LEVEL_CLONES
@@ -113,6 +113,12 @@ typedef struct hash_box {
     dReal q[8];
 } hash_box;
 
+// The hash_box of an AABB (minx maxx miny maxy minz maxz).
+static inline hash_box box_of(const dReal *aabb)
+{
+    return (hash_box){ { aabb[1], aabb[3], aabb[5], -aabb[0], -aabb[2], -aabb[4], 0, 0 } };
+}
+
 typedef struct dxHashSpace {
     dxSpace s;
     int minlevel, maxlevel;
@@ -136,8 +142,8 @@ typedef struct dxHashSpace {
     hash_level *levels;           // in increasing level
     int levels_cap, n_levels;
     int n_entries;                // entries in the cells (as of the last update)
-    int boxed;                    // 1 while box holds the boxes of the last update
-    hash_box *box;                // the placed geoms' boxes by slot (for hash_collide)
+    hash_box *box;                // the geoms' boxes by slot, as of the last update
+                                  // (for same_level_pairs)
     int box_cap;
     int *meets;                   // a geom's partners whose boxes overlap its (the same;
     int meets_cap, meets_top;     // a nested collision's after those of the one it is in)
@@ -412,10 +418,12 @@ static void hash_update(dxHashSpace *hs)
 {
     const dxSpace *s = &hs->s;
     hs->next = grow(hs->next, &hs->next_cap, s->count, sizeof *hs->next);
+    hs->box = grow(hs->box, &hs->box_cap, hs->n_slots, sizeof *hs->box);
     int n_placed = 0, n_entries = 0, moved = 0, relevelled = hs->members_changed;
     const int check_kept = !hs->levels_changed && !hs->afresh;
     for (int i = 0; i < s->count; i++) {
         hash_slot *sl = &hs->slots[hs->slot_of[i]];
+        hs->box[hs->slot_of[i]] = box_of(sl->g->aabb);
         if (check_kept && sl->state == SLOT_PLACED && keeps_place(sl, sl->g->aabb)) {
             n_placed++;
             n_entries += sl->n;
@@ -437,7 +445,7 @@ static void hash_update(dxHashSpace *hs)
         moved += changed;   // (p is kept only if it moves)
         relevelled += new_level;
     }
-    hs->stale = hs->levels_changed = hs->afresh = hs->boxed = 0;
+    hs->stale = hs->levels_changed = hs->afresh = 0;
     hs->n_entries = n_entries;
     if (!moved && !relevelled) return;
     const int afresh = hs->afresh = 3 * moved > n_placed;
@@ -580,23 +588,6 @@ static inline int boxes_meet(const box_p p, const hash_box *b)
 }
 #endif
 
-// The placed geoms' boxes into box, by slot, as hash_collide's walk tests
-// them (hash_box): a compact array instead of the geoms' own boxes
-// scattered in memory.
-static void copy_boxes(dxHashSpace *hs)
-{
-    const dxSpace *s = &hs->s;
-    hs->box = grow(hs->box, &hs->box_cap, hs->n_slots, sizeof *hs->box);
-    for (int i = 0; i < s->count; i++) {
-        const int si = hs->slot_of[i];
-        const hash_slot *sl = &hs->slots[si];
-        if (sl->state != SLOT_PLACED) continue;
-        const dReal *b = sl->g->aabb;
-        hs->box[si] = (hash_box){ { b[1], b[3], b[5], -b[0], -b[2], -b[4], 0, 0 } };
-    }
-    hs->boxed = 1;
-}
-
 // The pairs of geoms of one level that share a cell: each geom's entries in
 // space order, against the entries after it in the cell's list (earlier
 // geoms). A geom's partners whose boxes overlap its are listed without a
@@ -648,9 +639,6 @@ static void hash_collide(dxSpace *s, void *data, dNearCallback *cb)
         brute_collide(s, data, cb);
         return;
     }
-    // (A collision nested in a callback of this one finds them current: the
-    // cells and boxes are not updated while they are walked.)
-    if (!hs->boxed) copy_boxes(hs);
     hs->walking++;
     unsigned long tests = 0;
     // Big geoms against every geom.
