@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
 // test_arena.c -- the per-world scratch arena: alignment, marks, growth by
-// chaining, and the promise that a steady workload allocates nothing after
-// the first reset.
+// chaining, the promise that a steady workload allocates nothing after
+// the first reset, and the rebuilt block on huge pages.
 
 #include "test.h"
 #include "arena.h"
 
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 
 static int test_allocations_are_aligned_and_distinct(void)
@@ -75,10 +76,101 @@ static int test_steady_workload_allocates_nothing_after_first_reset(void)
     return 0;
 }
 
+// A policy's record of its blocks: how many are out, their bytes, and the
+// largest request.
+typedef struct block_record {
+    long out, bytes;
+    size_t largest;
+} block_record;
+
+static void *recording_alloc(void *context, size_t bytes)
+{
+    block_record *r = context;
+    r->out++;
+    r->bytes += (long)bytes;
+    if (bytes > r->largest) r->largest = bytes;
+    return malloc(bytes);
+}
+
+static void recording_release(void *context, void *p, size_t bytes)
+{
+    block_record *r = context;
+    r->out--;
+    r->bytes -= (long)bytes;
+    free(p);
+}
+
+// A step of 1.5 MB in pieces, then the reset that rebuilds one block.
+static char *grow_and_rebuild(dxArena *a)
+{
+    for (int k = 0; k < 30; k++) memset(dxArenaAlloc(a, 50000), k, 50000);
+    dxArenaReset(a);
+    return dxArenaAlloc(a, 1);
+}
+
+static int test_rebuilt_block_starts_at_a_huge_page(void)
+{
+    block_record r = { 0, 0, 0 };
+    const dxArenaPolicy huge = { recording_alloc, recording_release, &r, 1.2f, 64 * 1024, 1 };
+    dxArena a;
+    dxArenaInitPolicy(&a, &huge);
+    char *p = grow_and_rebuild(&a);
+#if defined(__linux__)
+    CHECK((uintptr_t)p % ((uintptr_t)2 << 20) == 0);
+    // The rebuilt block: 1.8 MB rounded up to a huge page, and one more
+    // for the alignment (the chained ones stop at 1 MB).
+    CHECK(r.largest >= ((size_t)4 << 20));
+#endif
+    CHECK(r.out == 1);
+    // Every byte of the peak (and the reserve) is there, from the first on.
+    const size_t peak = 30 * 50048;
+    memset(p, 0x5a, peak * 6 / 5);
+    dxArenaReset(&a);
+    CHECK(dxArenaAlloc(&a, 1) == p);   // a steady step keeps the block
+    dxArenaFree(&a);
+    CHECK(r.out == 0 && r.bytes == 0);
+    return 0;
+}
+
+static int test_without_huge_pages_blocks_are_as_asked(void)
+{
+    block_record r = { 0, 0, 0 };
+    const dxArenaPolicy plain = { recording_alloc, recording_release, &r, 1.2f, 64 * 1024, 0 };
+    dxArena a;
+    dxArenaInitPolicy(&a, &plain);
+    grow_and_rebuild(&a);
+    // The chained blocks double up to 1 MB; the rebuilt one is 1.2 times
+    // the 1.5 MB peak, without a huge page's room more.
+    CHECK(r.largest < ((size_t)5 << 19));
+    CHECK(r.out == 1);
+    dxArenaFree(&a);
+    CHECK(r.out == 0 && r.bytes == 0);
+    return 0;
+}
+
+static int test_small_rebuilt_block_stays_off_huge_pages(void)
+{
+    block_record r = { 0, 0, 0 };
+    const dxArenaPolicy huge = { recording_alloc, recording_release, &r, 1.2f, 64 * 1024, 1 };
+    dxArena a;
+    dxArenaInitPolicy(&a, &huge);
+    for (int step = 0; step < 2; step++) {
+        for (int k = 0; k < 10; k++) dxArenaAlloc(&a, 50000);   // 0.5 MB
+        dxArenaReset(&a);
+    }
+    CHECK(r.largest < DX_ARENA_HUGE_MIN);
+    dxArenaFree(&a);
+    CHECK(r.out == 0 && r.bytes == 0);
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_allocations_are_aligned_and_distinct),
     TEST_CASE(test_restore_returns_to_mark),
     TEST_CASE(test_growth_keeps_earlier_pointers_valid),
     TEST_CASE(test_steady_workload_allocates_nothing_after_first_reset),
+    TEST_CASE(test_rebuilt_block_starts_at_a_huge_page),
+    TEST_CASE(test_without_huge_pages_blocks_are_as_asked),
+    TEST_CASE(test_small_rebuilt_block_stays_off_huge_pages),
     TEST_END
 };

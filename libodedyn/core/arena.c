@@ -2,7 +2,10 @@
 //
 // arena.c -- the per-world scratch arena (see arena.h).
 
+#define _DEFAULT_SOURCE   // madvise's MADV_HUGEPAGE (huge_page.h)
+
 #include "arena.h"
+#include "huge_page.h"
 
 #include <ode/memory.h>
 
@@ -29,7 +32,7 @@ static void default_release(void *context, void *p, size_t bytes)
 }
 
 static const dxArenaPolicy default_policy = { default_alloc, default_release, NULL, 1.2f,
-                                              64 * 1024 };
+                                              64 * 1024, 0 };
 
 static size_t round_up(size_t n, size_t a) { return (n + a - 1) / a * a; }
 
@@ -42,15 +45,22 @@ static size_t reserve_size(const dxArenaPolicy *p, size_t bytes)
     return round_up(size ? size : 1, ARENA_ALIGN);
 }
 
-static dxArenaBlock *block_create(const dxArenaPolicy *p, size_t size, dxArenaBlock *prev)
+// A block of size usable bytes after prev in the chain; on huge pages if
+// huge and the policy and the size allow (arena.h).
+static dxArenaBlock *block_create(const dxArenaPolicy *p, size_t size, dxArenaBlock *prev,
+                                  int huge)
 {
-    size_t alloc_size = sizeof(dxArenaBlock) + ARENA_ALIGN + size;
+    huge = huge && DX_HUGE_PAGES && p->huge_pages && size >= DX_ARENA_HUGE_MIN;
+    if (huge) size = round_up(size, DX_HUGE_PAGE);
+    const size_t align = huge ? DX_HUGE_PAGE : ARENA_ALIGN;
+    size_t alloc_size = sizeof(dxArenaBlock) + align + size;
     dxArenaBlock *b = p->alloc(p->context, alloc_size);
     b->prev = prev;
     b->size = size;
     b->used = 0;
     b->alloc_size = alloc_size;
-    b->data = (char *)round_up((size_t)(b + 1), ARENA_ALIGN);
+    b->data = (char *)round_up((size_t)(b + 1), align);
+    if (huge) dxAdviseHugePages(b->data, size);
     return b;
 }
 
@@ -84,7 +94,8 @@ void dxArenaReset(dxArena *arena)
     dxArenaBlock *b = arena->block;
     if (b ? b->prev || b->size < arena->peak : arena->peak > 0) {   // make one block that fits
         chain_free(arena->policy, b);
-        arena->block = block_create(arena->policy, reserve_size(arena->policy, arena->peak), NULL);
+        arena->block =
+            block_create(arena->policy, reserve_size(arena->policy, arena->peak), NULL, 1);
     } else if (b) {
         b->used = 0;
     }
@@ -104,7 +115,7 @@ void *dxArenaAlloc(dxArena *arena, size_t bytes)
         size_t size = reserve_size(arena->policy, b ? 0 : arena->peak);
         if (size < bytes) size = bytes;
         if (b && size < b->size * 2) size = b->size * 2;
-        b = block_create(arena->policy, size, b);
+        b = block_create(arena->policy, size, b, 0);
         arena->block = b;
     }
     void *p = b->data + b->used;

@@ -16,14 +16,27 @@ typedef struct dxArenaBlock dxArenaBlock;
 // Where an arena's blocks come from and how big they are made: blocks from
 // alloc(context, bytes) (never NULL) and back to release(context, p, bytes);
 // a rebuilt block has reserve_factor times the peak, and no block has fewer
-// than reserve_minimum bytes. NULL: dAlloc/dFree, 1.2 and 64 KiB.
+// than reserve_minimum bytes. huge_pages: a rebuilt block of
+// DX_ARENA_HUGE_MIN bytes or more is asked for one huge page larger, and its
+// usable bytes start at a huge page and are advised onto huge pages
+// (huge_page.h), rounded up to whole ones: QuickStep reads its rows in a
+// shuffled order all over the step's arena, and with 4 KB pages most of
+// those reads miss the first-level TLB (a rebuilt block only: the blocks
+// chained while a step outgrows the arena are short-lived, and huge pages
+// would only add to the memory they hold at once). NULL: dAlloc/dFree, 1.2,
+// 64 KiB and no huge pages.
 typedef struct dxArenaPolicy {
     void *(*alloc)(void *context, size_t bytes);
     void (*release)(void *context, void *p, size_t bytes);
     void *context;
     float reserve_factor;
     size_t reserve_minimum;
+    int huge_pages;
 } dxArenaPolicy;
+
+// The least rebuilt block put on huge pages (so that at least half of each
+// huge page it takes is asked for).
+#define DX_ARENA_HUGE_MIN ((size_t)1 << 20)
 
 typedef struct dxArena {
     dxArenaBlock *block;   // current block (the head of the chain)

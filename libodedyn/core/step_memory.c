@@ -57,6 +57,7 @@ static dxStepMemory *memory_of(struct dxWorld *w)
         m->policy.alloc = manager_alloc;
         m->policy.release = manager_release;
         m->policy.context = m;
+        m->policy.huge_pages = 1;   // the default manager's blocks only (dAlloc's)
         set_default_policy(m);
         pthread_mutex_init(&m->lock, NULL);
         dxArenaInitPolicy(&m->main, &m->policy);
@@ -154,6 +155,9 @@ int dWorldSetStepMemoryManager(dWorldID w, const dWorldStepMemoryFunctionsInfo *
     dxStepMemory *m = memory_of(w);
     memory_cleanup(m);   // with the functions that allocated it
     m->manager = memfuncs ? *memfuncs : default_manager;
+    // A user's manager gets blocks of the sizes the arena needs, nothing
+    // more (a huge page's alignment costs up to one more huge page).
+    m->policy.huge_pages = memfuncs == NULL;
     return 1;
 }
 
