@@ -123,6 +123,13 @@ void dxSpaceTestPair(dxGeom *a, dxGeom *b, void *data, dNearCallback *cb);
 // Number of dxSpaceTestPair calls so far: the broad phase's work, which tests
 // count (instead of timing) to check how a space scales.
 extern unsigned long dx_aabb_tests;
+// The hash space passes over a coarser level of at most this many geoms
+// when a box test of each finds none meeting a geom's box, without finding
+// the geom's cells there (space_hash.c: query_levels). At least 1 (a level
+// of one geom is always tested directly); 1 for the cells whenever a level
+// has more (for tests that compare the two: the same callbacks in the same
+// order).
+extern int dxHashFewGeoms;
 // Initialise a space's common part (spaces are created by their types).
 dxSpace *dxSpaceCreate(size_t size, int cls, const dxSpaceOps *sops, dSpaceID parent);
 // Bring every AABB in the space (recursively) up to date.

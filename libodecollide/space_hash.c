@@ -498,21 +498,57 @@ static inline __attribute__((always_inline)) void query_cell(const dxHashSpace *
         if ((en[e].lowest | lowest) == ALL_AXES) test_pair(g, en[e].g, data, cb, tests);
 }
 
+int dxHashFewGeoms = 8;   // (geom_internal.h)
+
+// 1 if the box of a geom of level lv overlaps g's: box tests alone (no
+// callback), counted in *tests, up to the first that overlaps.
+static inline __attribute__((always_inline)) int level_meets(const dxHashSpace *hs,
+                                                            const dxGeom *g,
+                                                            const hash_level *lv,
+                                                            unsigned long *tests)
+{
+    const hash_node *n = hs->nodes + lv->start, *end = n + lv->count;
+    for (; n < end; n++) {
+        ++*tests;
+        if (dxAABBsOverlap(g->aabb, n->g->aabb)) return 1;
+    }
+    return 0;
+}
+
 // g against the placed geoms of levels[first ..]: through the cells of each
 // level that g's AABB touches, or one by one when those cells outnumber the
 // level's geoms (a big g against small geoms). One cell never outnumbers
-// them (a level lists at least one geom). A level of one geom (a terrain
-// above everything else) is tested one by one too, without its cells: the
-// cells would test the pair once if the boxes overlap (in the cell holding q)
-// and maybe not at all if not, so the callbacks are the same.
+// them (a level lists at least one geom).
+//
+// Levels of at most dxHashFewGeoms geoms (at least 1) are tested without
+// their cells first. A level of one geom (a terrain above everything else)
+// is tested one by one: the cells would test the pair once if the boxes
+// overlap (in the cell holding q) and maybe not at all if not, so the
+// callbacks are the same. A level of a few more (the walls of a container)
+// is tested box by box and passed over when no box overlaps g's (most geoms
+// touch no wall), which costs less than finding g's cells there and looking
+// them up. The callbacks are the same: whatever cells g's box touches, and
+// whether or not they still describe the boxes (a callback of this
+// collision may have moved geoms), a cell lists only geoms of its level,
+// all among the level's nodes, and test_pair neither calls back nor asks a
+// user class's box test when the two boxes, as they are, do not overlap; so
+// that level would have made no callback, and nothing else happens between
+// the box tests. Otherwise the level is walked as before.
 static void query_levels(const dxHashSpace *hs, dxGeom *g, int first, void *data,
                          dNearCallback *cb)
 {
     unsigned long tests = 0;
     for (int li = first; li < hs->n_levels; li++) {
         const hash_level *lv = &hs->levels[li];
+        if (lv->count <= dxHashFewGeoms) {
+            if (lv->count == 1) {
+                test_pair(g, hs->nodes[lv->start].g, data, cb, &tests);
+                continue;
+            }
+            if (!level_meets(hs, g, lv, &tests)) continue;
+        }
         int64_t lo[3], hi[3];
-        const int inside = lv->count > 1 && cell_range(g->aabb, lv->scale, lo, hi);
+        const int inside = cell_range(g->aabb, lv->scale, lo, hi);
         if (inside && lo[0] == hi[0] && lo[1] == hi[1] && lo[2] == hi[2]) {   // the common case
             query_cell(hs, g, lv->level, lo, ALL_AXES, data, cb, &tests);
             continue;

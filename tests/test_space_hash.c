@@ -9,10 +9,14 @@
 // boxes (a space built afresh with the same geoms in the same order calls
 // back in the same order), which is what replays and snapshots rely on; and
 // geoms changing cells every step allocate nothing once the space is warm;
-// geoms drifting a little (keeping some of their cells) order as afresh.
+// geoms drifting a little (keeping some of their cells) order as afresh; a
+// coarse level of a few geoms passed over after box tests calls back as its
+// cells would (dxHashFewGeoms at 1 for the cells always).
 
 #include "space_pairs.h"
 #include "test.h"
+
+#include "geom_internal.h"
 
 #include <stdint.h>
 #include <stdlib.h>
@@ -565,6 +569,192 @@ static int test_a_level_of_one_geom_meets_the_geoms_its_box_touches(void)
     return 0;
 }
 
+// ---- a few geoms on a coarse level -------------------------------------------------
+
+// What the callbacks of the walls scene share: the pairs in order, the
+// coarse geoms (walls and posts), and in the moving mode the space, for a
+// nested collision and for moving geoms from the callback.
+typedef struct walls_call {
+    pairs *out;
+    dSpaceID s;
+    dGeomID *coarse;
+    int n_coarse;
+    int moving;      // the callbacks move geoms and collide the space again
+    int calls;       // callbacks of this dSpaceCollide or dSpaceCollide2
+    int moved;       // this collision's callbacks moved the geoms
+} walls_call;
+
+// Numbers below this are the coarse geoms'.
+#define SMALL_NUMBERS 1000
+
+// Records the pair. In the moving mode the first callback of a collision
+// collides the space again (into the same list), and the first from the
+// seventh on between a small geom a and a coarse one b moves every coarse
+// geom but b onto a, and a a little, reading their boxes (the cells then no
+// longer describe them).
+static void walls_callback(void *data, dGeomID a, dGeomID b)
+{
+    walls_call *wc = data;
+    pairs_add(wc->out, idx(a), idx(b));
+    if (!wc->moving) return;
+    if (wc->calls++ == 0) {
+        walls_call inner = { wc->out, wc->s, wc->coarse, wc->n_coarse, 0, 0, 0 };
+        dSpaceCollide(wc->s, &inner, walls_callback);
+    }
+    if (wc->calls < 7 || wc->moved || idx(a) < SMALL_NUMBERS || idx(b) >= SMALL_NUMBERS) return;
+    wc->moved = 1;
+    const dReal *p = dGeomGetPosition(a);
+    const dReal at[3] = { p[0], p[1], p[2] };
+    dReal box[6];
+    for (int i = 0; i < wc->n_coarse; i++) {
+        if (wc->coarse[i] == b) continue;
+        dGeomSetPosition(wc->coarse[i], at[0], at[1], at[2]);
+        dGeomGetAABB(wc->coarse[i], box);
+    }
+    if (!dGeomGetBody(a)) {
+        dGeomSetPosition(a, at[0] + REAL(0.25), at[1], at[2]);
+        dGeomGetAABB(a, box);
+    }
+}
+
+// A small sphere at a random place in +-16, numbered from SMALL_NUMBERS.
+static dGeomID small_sphere(dSpaceID s, int *next)
+{
+    dGeomID g = dCreateSphere(s, (dReal)rnd(0.05, 0.45));
+    dGeomSetPosition(g, (dReal)rnd(-16, 16), (dReal)rnd(-16, 16), (dReal)rnd(-16, 16));
+    number(g, (*next)++);
+    return g;
+}
+
+// A random small geom of s (a sphere numbered from SMALL_NUMBERS).
+static dGeomID pick_small(dSpaceID s)
+{
+    for (;;) {
+        dGeomID g = dSpaceGetGeom(s, (int)rnd(0, dSpaceGetNumGeoms(s)));
+        if (idx(g) >= SMALL_NUMBERS) return g;
+    }
+}
+
+// One collision of the walls scene: dSpaceCollide or dSpaceCollide2 of o1
+// and o2, its callbacks after a (0, step) mark.
+static void walls_collide(walls_call *wc, dGeomID o1, dGeomID o2, int step)
+{
+    pairs_add(wc->out, 0, step);
+    wc->calls = wc->moved = 0;
+    if (o1 == o2) dSpaceCollide((dSpaceID)o1, wc, walls_callback);
+    else dSpaceCollide2(o1, o2, wc, walls_callback);
+}
+
+// The walls scene with dxHashFewGeoms = few: n_walls boxes 17 to 30 long
+// (level 5, across the borders of its cells at 0 and +-32) and K + 3 -
+// n_walls posts 4.1 to 7.9 wide (level 3), among 300 spheres of radius 0.05
+// to 0.45 (every seventh disabled) that move every step, some across the
+// coarse cells' borders. Every step one wall moves, a sphere is destroyed
+// and another made, one is disabled or enabled, and every third step a wall
+// and a post leave the space and come back (last in space order). The
+// callbacks of every collision in order into out: of the space, of a probe
+// against it, of a small simple space against it, of a wall against it.
+static void walls_run(int few, int n_walls, int moving, pairs *out)
+{
+    const int K = dxHashFewGeoms;
+    dxHashFewGeoms = few;
+    rng_state = 0x082EFA98EC4E6C89u + (uint64_t)n_walls;
+    dSpaceID s = dHashSpaceCreate(0), group = dSimpleSpaceCreate(0);
+    dGeomID coarse[64];
+    const int n_coarse = K + 3;
+    for (int i = 0; i < n_coarse; i++) {
+        const int wall = i < n_walls;
+        const double side = wall ? rnd(0.5, 4) : rnd(4.1, 7.9);
+        const double len = wall ? rnd(17, 30) : side;
+        coarse[i] = i % 3 == 0 ? dCreateBox(s, (dReal)len, (dReal)side, (dReal)side)
+                  : i % 3 == 1 ? dCreateBox(s, (dReal)side, (dReal)len, (dReal)side)
+                               : dCreateBox(s, (dReal)side, (dReal)side, (dReal)len);
+        dGeomSetPosition(coarse[i], (dReal)rnd(-20, 20), (dReal)rnd(-20, 20), (dReal)rnd(-20, 20));
+        number(coarse[i], i + 1);
+    }
+    int next = SMALL_NUMBERS;
+    for (int i = 0; i < 300; i++) {
+        dGeomID g = small_sphere(s, &next);
+        if (i % 7 == 0) dGeomDisable(g);
+    }
+    for (int i = 0; i < 5; i++) small_sphere(group, &next);
+    dGeomID probe = dCreateSphere(0, REAL(0.3));
+    number(probe, next++);
+    walls_call wc = { out, s, coarse, n_coarse, moving, 0, 0 };
+    for (int step = 1; step <= 25; step++) {
+        for (int i = 0; i < dSpaceGetNumGeoms(s); i++) {
+            dGeomID g = dSpaceGetGeom(s, i);
+            if (idx(g) < SMALL_NUMBERS) continue;
+            const dReal *p = dGeomGetPosition(g);
+            dGeomSetPosition(g, p[0] + (dReal)rnd(-0.5, 0.5), p[1] + (dReal)rnd(-0.5, 0.5),
+                             p[2] + (dReal)rnd(-0.5, 0.5));
+        }
+        dGeomID w = coarse[step % n_walls];
+        const dReal *p = dGeomGetPosition(w);
+        dGeomSetPosition(w, p[0] + (dReal)rnd(-1, 1), p[1] + (dReal)rnd(-1, 1), p[2]);
+        dGeomDestroy(pick_small(s));
+        small_sphere(s, &next);
+        dGeomID t = pick_small(s);
+        if (dGeomIsEnabled(t)) dGeomDisable(t);
+        else dGeomEnable(t);
+        if (step % 3 == 0) {
+            dGeomID post = coarse[n_walls + step % (n_coarse - n_walls)];
+            dSpaceRemove(s, w);
+            dSpaceAdd(s, w);
+            dSpaceRemove(s, post);
+            dSpaceAdd(s, post);
+        }
+        if (step % 4 == 0) {
+            if (dGeomIsEnabled(coarse[0])) dGeomDisable(coarse[0]);
+            else dGeomEnable(coarse[0]);
+        }
+        walls_collide(&wc, (dGeomID)s, (dGeomID)s, step);
+        dGeomSetPosition(probe, (dReal)rnd(-20, 20), (dReal)rnd(-20, 20), (dReal)rnd(-20, 20));
+        walls_collide(&wc, probe, (dGeomID)s, step);
+        walls_collide(&wc, (dGeomID)group, (dGeomID)s, step);
+        walls_collide(&wc, w, (dGeomID)s, step);
+    }
+    dGeomDestroy(probe);
+    dSpaceDestroy(group);
+    dSpaceDestroy(s);
+    dxHashFewGeoms = K;
+}
+
+static int test_levels_of_few_geoms_call_back_as_through_the_cells(void)
+{
+    // The walls scene with levels of 1 .. K + 2 geoms, K = dxHashFewGeoms:
+    // with a level of at most K passed over when none of its boxes meets a
+    // geom's (the default) and through the cells always (1), the same
+    // callbacks in the same order, through dSpaceCollide and dSpaceCollide2,
+    // with callbacks that only record and with callbacks that collide the
+    // space again and move geoms mid-walk.
+    const int K = dxHashFewGeoms;
+    CHECK(K >= 2 && K + 3 <= 64);
+    for (int moving = 0; moving <= 1; moving++) {
+        for (int n_walls = 1; n_walls <= K + 2; n_walls++) {
+            pairs cells = { 0 }, few = { 0 };
+            const unsigned long t0 = dx_aabb_tests;
+            walls_run(1, n_walls, moving, &cells);
+            const unsigned long t1 = dx_aabb_tests;
+            walls_run(K, n_walls, moving, &few);
+            const unsigned long t2 = dx_aabb_tests;
+            CHECK(same_sequence(&cells, &few));
+            // Not vacuous: many pairs of a small geom with a coarse one (as
+            // query_levels reports them), and a level of 2 .. K geoms tested
+            // box by box (another count of box tests).
+            int coarse_pairs = 0;
+            for (int i = 0; i < cells.n; i++)
+                coarse_pairs += cells.p[i][0] >= SMALL_NUMBERS && cells.p[i][1] > 0 &&
+                                cells.p[i][1] < SMALL_NUMBERS;
+            CHECK(coarse_pairs > 50);
+            if (n_walls >= 2 && n_walls <= K + 1) CHECK(t1 - t0 != t2 - t1);
+            pairs_free(&cells);
+            pairs_free(&few);
+        }
+    }
+    return 0;
+}
+
 const test_case test_cases[] = {
     TEST_CASE(test_random_edits_find_the_brute_force_pairs_every_step),
     TEST_CASE(test_pair_order_depends_only_on_the_geoms),
@@ -575,5 +765,6 @@ const test_case test_cases[] = {
     TEST_CASE(test_box_reaching_a_third_cell_goes_a_level_up),
     TEST_CASE(test_geoms_drifting_across_cells_keep_the_fresh_order),
     TEST_CASE(test_a_level_of_one_geom_meets_the_geoms_its_box_touches),
+    TEST_CASE(test_levels_of_few_geoms_call_back_as_through_the_cells),
     TEST_END
 };
