@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
 // huge_page.h -- transparent huge pages (Linux, set to `madvise`) for the
-// large blocks of both libraries (huge_block.c here, libodecollide's
-// big_block.c): whether the system takes such advice (DX_HUGE_PAGES), the
-// size of a huge page, and the advice itself. A source file that includes
-// it defines _DEFAULT_SOURCE before any header (madvise's MADV_HUGEPAGE).
+// large blocks of both libraries (the step arena here, arena.c; the mesh
+// trees' big_block.c in libodecollide): whether the system takes such
+// advice (DX_HUGE_PAGES), the size of a huge page, and the advice itself. A
+// source file that includes it defines _DEFAULT_SOURCE before any header
+// (madvise's MADV_HUGEPAGE).
 
 #ifndef DX_HUGE_PAGE_H
 #define DX_HUGE_PAGE_H
