@@ -100,6 +100,15 @@ static void recording_release(void *context, void *p, size_t bytes)
     free(p);
 }
 
+// An empty arena a whose blocks r records, through policy (filled here; it
+// must outlive a), with huge pages or not.
+static void recording_arena(dxArena *a, dxArenaPolicy *policy, block_record *r, int huge)
+{
+    *r = (block_record){ 0, 0, 0 };
+    *policy = (dxArenaPolicy){ recording_alloc, recording_release, r, 1.2f, 64 * 1024, huge };
+    dxArenaInitPolicy(a, policy);
+}
+
 // A step of 1.5 MB in pieces, then the reset that rebuilds one block.
 static char *grow_and_rebuild(dxArena *a)
 {
@@ -110,10 +119,10 @@ static char *grow_and_rebuild(dxArena *a)
 
 static int test_rebuilt_block_starts_at_a_huge_page(void)
 {
-    block_record r = { 0, 0, 0 };
-    const dxArenaPolicy huge = { recording_alloc, recording_release, &r, 1.2f, 64 * 1024, 1 };
+    block_record r;
+    dxArenaPolicy policy;
     dxArena a;
-    dxArenaInitPolicy(&a, &huge);
+    recording_arena(&a, &policy, &r, 1);
     char *p = grow_and_rebuild(&a);
 #if defined(__linux__)
     CHECK((uintptr_t)p % ((uintptr_t)2 << 20) == 0);
@@ -134,10 +143,10 @@ static int test_rebuilt_block_starts_at_a_huge_page(void)
 
 static int test_without_huge_pages_blocks_are_as_asked(void)
 {
-    block_record r = { 0, 0, 0 };
-    const dxArenaPolicy plain = { recording_alloc, recording_release, &r, 1.2f, 64 * 1024, 0 };
+    block_record r;
+    dxArenaPolicy policy;
     dxArena a;
-    dxArenaInitPolicy(&a, &plain);
+    recording_arena(&a, &policy, &r, 0);
     grow_and_rebuild(&a);
     // The chained blocks double up to 1 MB; the rebuilt one is 1.2 times
     // the 1.5 MB peak, without a huge page's room more.
@@ -150,10 +159,10 @@ static int test_without_huge_pages_blocks_are_as_asked(void)
 
 static int test_small_rebuilt_block_stays_off_huge_pages(void)
 {
-    block_record r = { 0, 0, 0 };
-    const dxArenaPolicy huge = { recording_alloc, recording_release, &r, 1.2f, 64 * 1024, 1 };
+    block_record r;
+    dxArenaPolicy policy;
     dxArena a;
-    dxArenaInitPolicy(&a, &huge);
+    recording_arena(&a, &policy, &r, 1);
     for (int step = 0; step < 2; step++) {
         for (int k = 0; k < 10; k++) dxArenaAlloc(&a, 50000);   // 0.5 MB
         dxArenaReset(&a);
