@@ -37,6 +37,12 @@ typedef struct qs_scratch qs_scratch;
 
 #define QS_MAX_BLOCK 6
 #define QS_PAD(n) (((n) + 1) & ~1)   // n rounded up to pairs
+// The block updates (quickstep_sweep.c, quickstep_block_batch.c) are
+// inlined once per block size, so that their loops have constant bounds.
+// Built with QS_ANY_SIZE (meson does so under the sanitizers, whose checks
+// make that code several times larger and its build many minutes longer),
+// one update takes every size, read at run time: the same operations in the
+// same order.
 
 #if defined(__GNUC__)
 #define QS_INLINE static inline __attribute__((always_inline))

@@ -571,39 +571,75 @@ QS_INLINE void batch_update_n(const qs_batch *b, int n, const qs_row *rows, dRea
     else batch_update_f(b, n, SOA_GENERAL, rows, lambda, fc, fu);
 }
 
-QS_INLINE void batch_update_with(const qs_batch *b, const qs_row *rows, dReal *lambda,
-                                 dReal *fc, int fu)
-{
-    switch (b->n) {   // constant sizes let the compiler unroll
-    case 2: batch_update_n(b, 2, rows, lambda, fc, fu); break;
-    case 3: batch_update_n(b, 3, rows, lambda, fc, fu); break;
-    case 4: batch_update_n(b, 4, rows, lambda, fc, fu); break;
-    case 5: batch_update_n(b, 5, rows, lambda, fc, fu); break;
-    default: batch_update_n(b, QS_MAX_BLOCK, rows, lambda, fc, fu); break;
-    }
-}
-
-QS_BATCH_CLONES static void batch_update_plain(const qs_batch *b, const qs_row *rows,
-                                               dReal *lambda, dReal *fc)
-{
-    batch_update_with(b, rows, lambda, fc, 0);
-}
-
+// One function per block size and version, each with its size's update
+// inlined: GCC's time on a function grows faster than the function, and one
+// function with every size inlined took minutes to build. With QS_ANY_SIZE
+// (quickstep.h) one function takes every size, read at run time.
 #if QS_FUSE
-QS_FUSED_VERSION static void batch_update_fused(const qs_batch *b, const qs_row *rows,
-                                                dReal *lambda, dReal *fc)
+#define BATCH_FUSED(NAME, N)                                                                       \
+    QS_FUSED_VERSION static void batch_fused_##NAME(const qs_batch *b, const qs_row *rows,       \
+                                                    dReal *lambda, dReal *fc)                    \
+    {                                                                                            \
+        batch_update_n(b, N, rows, lambda, fc, 1);                                               \
+    }
+#else
+#define BATCH_FUSED(NAME, N)
+#endif
+#define BATCH_FUNCTIONS(NAME, N)                                                                   \
+    QS_BATCH_CLONES static void batch_plain_##NAME(const qs_batch *b, const qs_row *rows,        \
+                                                   dReal *lambda, dReal *fc)                     \
+    {                                                                                            \
+        batch_update_n(b, N, rows, lambda, fc, 0);                                               \
+    }                                                                                            \
+    BATCH_FUSED(NAME, N)
+
+typedef void batch_fn(const qs_batch *b, const qs_row *rows, dReal *lambda, dReal *fc);
+
+#ifdef QS_ANY_SIZE
+BATCH_FUNCTIONS(any, b->n)
+
+// The update of b, in the fused version where it runs.
+static batch_fn *batch_update_for(const qs_batch *b)
 {
-    batch_update_with(b, rows, lambda, fc, 1);
+    (void)b;
+#if QS_FUSE
+    if (dxQuickFused) return batch_fused_any;
+#endif
+    return batch_plain_any;
+}
+#else
+BATCH_FUNCTIONS(2, 2)
+BATCH_FUNCTIONS(3, 3)
+BATCH_FUNCTIONS(4, 4)
+BATCH_FUNCTIONS(5, 5)
+_Static_assert(QS_MAX_BLOCK == 6, "a batch function for each block size");
+BATCH_FUNCTIONS(6, 6)
+
+// The update of batches of b's size, in the fused version where it runs.
+static batch_fn *batch_update_for(const qs_batch *b)
+{
+#if QS_FUSE
+    if (dxQuickFused) {
+        switch (b->n) {
+        case 2: return batch_fused_2;
+        case 3: return batch_fused_3;
+        case 4: return batch_fused_4;
+        case 5: return batch_fused_5;
+        default: return batch_fused_6;
+        }
+    }
+#endif
+    switch (b->n) {
+    case 2: return batch_plain_2;
+    case 3: return batch_plain_3;
+    case 4: return batch_plain_4;
+    case 5: return batch_plain_5;
+    default: return batch_plain_6;
+    }
 }
 #endif
 
 void dxQuickBatchUpdate(const qs_batch *b, const qs_row *rows, dReal *lambda, dReal *fc)
 {
-#if QS_FUSE
-    if (dxQuickFused) {
-        batch_update_fused(b, rows, lambda, fc);
-        return;
-    }
-#endif
-    batch_update_plain(b, rows, lambda, fc);
+    batch_update_for(b)(b, rows, lambda, fc);
 }

@@ -283,6 +283,9 @@ QS_INLINE void update_any_block(const qs_block *blk, const qs_row *rows, dReal *
                                 dReal *fc, int fu)
 {
     const qs_row *coupled = rows + blk->coupled;
+#ifdef QS_ANY_SIZE
+    update_block_n(blk, coupled, blk->n, lambda, fc, fu);
+#else
     switch (blk->n) {   // constant sizes let the compiler unroll
     case 2: update_block_n(blk, coupled, 2, lambda, fc, fu); break;
     case 3: update_block_n(blk, coupled, 3, lambda, fc, fu); break;
@@ -290,6 +293,7 @@ QS_INLINE void update_any_block(const qs_block *blk, const qs_row *rows, dReal *
     case 5: update_block_n(blk, coupled, 5, lambda, fc, fu); break;
     default: update_block_n(blk, coupled, QS_MAX_BLOCK, lambda, fc, fu); break;
     }
+#endif
 }
 
 // The coupled rows of one block of n rows (np as for the block), its
@@ -316,6 +320,9 @@ QS_INLINE void coupled_rows_with(const qs_block *blk, const qs_row *rows, dReal 
                                  dReal *fc, int fu)
 {
     const qs_row *coupled = rows + blk->coupled;
+#ifdef QS_ANY_SIZE
+    coupled_rows_n(blk, coupled, blk->n, lambda, fc, fu);
+#else
     switch (blk->n) {
     case 2: coupled_rows_n(blk, coupled, 2, lambda, fc, fu); break;
     case 3: coupled_rows_n(blk, coupled, 3, lambda, fc, fu); break;
@@ -323,6 +330,7 @@ QS_INLINE void coupled_rows_with(const qs_block *blk, const qs_row *rows, dReal 
     case 5: coupled_rows_n(blk, coupled, 5, lambda, fc, fu); break;
     default: coupled_rows_n(blk, coupled, QS_MAX_BLOCK, lambda, fc, fu); break;
     }
+#endif
 }
 
 QS_SWEEP_CLONES static void coupled_rows_plain(const qs_block *blk, const qs_row *rows,
