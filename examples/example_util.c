@@ -70,16 +70,28 @@ void exu_collide(exu_contacts *c, dSpaceID space)
     dSpaceCollide(space, c, near_callback);
 }
 
+// A triangle mesh as one list of its triangles' world points, drawn in one
+// call (a call per triangle costs the renderer a state change each).
 static void draw_trimesh(dGeomID g)
 {
+    static dReal *v;   // 9 numbers a triangle, kept for the next mesh
+    static int capacity;
     const int n = dGeomTriMeshGetTriangleCount(g);
-    for (int i = 0; i < n; i++) {
-        dVector3 v[3];
-        dGeomTriMeshGetTriangle(g, i, &v[0], &v[1], &v[2]);
-        static const dReal origin[3] = { 0, 0, 0 };
-        static const dReal identity[12] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0 };
-        dsDrawTriangle(origin, identity, v[0], v[1], v[2], 1);   // v are world points
+    if (n > capacity) {
+        dReal *grown = realloc(v, (size_t)n * 9 * sizeof *v);
+        if (!grown) return;
+        v = grown;
+        capacity = n;
     }
+    for (int i = 0; i < n; i++) {
+        dVector3 p[3];
+        dGeomTriMeshGetTriangle(g, i, &p[0], &p[1], &p[2]);
+        for (int k = 0; k < 3; k++)
+            for (int e = 0; e < 3; e++) v[9 * i + 3 * k + e] = p[k][e];
+    }
+    static const dReal origin[3] = { 0, 0, 0 };
+    static const dReal identity[12] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0 };
+    dsDrawTriangles(origin, identity, v, n, 1);   // v are world points
 }
 
 void exu_draw_geom(dGeomID g)

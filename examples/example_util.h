@@ -18,6 +18,7 @@
 #define dsDrawCapsule dsDrawCapsuleD
 #define dsDrawLine dsDrawLineD
 #define dsDrawTriangle dsDrawTriangleD
+#define dsDrawTriangles dsDrawTrianglesD
 #define dsDrawConvex dsDrawConvexD
 #endif
 
