@@ -221,6 +221,9 @@ QS_INLINE void soa_fill_n(dReal *soa, const qs_block *const blk[QS_LANES], const
 QS_INLINE void soa_copy(const qs_batch *b, const qs_row *rows, const dReal *inv_mass, int nc)
 {
     dReal *soa = (dReal *)b->soa;
+#ifdef QS_ANY_SIZE
+    soa_fill(soa, b->blk, rows, inv_mass, b->n, b->form, b->blk[0]->two != 0, nc);
+#else
     switch (b->n) {   // constant sizes let the compiler unroll
     case 2: soa_fill_n(soa, b->blk, rows, inv_mass, 2, b->form, nc); break;
     case 3: soa_fill_n(soa, b->blk, rows, inv_mass, 3, b->form, nc); break;
@@ -228,6 +231,7 @@ QS_INLINE void soa_copy(const qs_batch *b, const qs_row *rows, const dReal *inv_
     case 5: soa_fill_n(soa, b->blk, rows, inv_mass, 5, b->form, nc); break;
     default: soa_fill_n(soa, b->blk, rows, inv_mass, QS_MAX_BLOCK, b->form, nc); break;
     }
+#endif
 }
 
 // Can block blk's coupled rows go side by side with other lanes': none reads
@@ -563,12 +567,19 @@ QS_INLINE void batch_update_f(const qs_batch *b, int n, int form, const qs_row *
     else batch_update_c(b, n, form, 0, rows, lambda, fc, fu);
 }
 
-// The ball form has three rows or more.
+// The ball form has three rows or more. With QS_ANY_SIZE the form, the
+// bodies and the coupled rows are read at run time too.
 QS_INLINE void batch_update_n(const qs_batch *b, int n, const qs_row *rows, dReal *lambda,
                               dReal *fc, int fu)
 {
-    if (n >= 3 && b->form == SOA_BALL) batch_update_f(b, n, SOA_BALL, rows, lambda, fc, fu);
+    const int ball = n >= 3 && b->form == SOA_BALL;
+#ifdef QS_ANY_SIZE
+    batch_update(b, n, ball ? SOA_BALL : SOA_GENERAL, b->two != 0, b->ncoupled, rows, lambda, fc,
+                 fu);
+#else
+    if (ball) batch_update_f(b, n, SOA_BALL, rows, lambda, fc, fu);
     else batch_update_f(b, n, SOA_GENERAL, rows, lambda, fc, fu);
+#endif
 }
 
 // One function per block size and version, each with its size's update
