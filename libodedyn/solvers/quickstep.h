@@ -37,8 +37,9 @@ typedef struct qs_scratch qs_scratch;
 
 #define QS_MAX_BLOCK 6
 #define QS_PAD(n) (((n) + 1) & ~1)   // n rounded up to pairs
-// The block updates (quickstep_sweep.c, quickstep_block_batch.c) are
-// inlined once per block size, so that their loops have constant bounds.
+// The block updates (quickstep_sweep.c, quickstep_block_batch.c) and the
+// blocks' factorizations and couplings (quickstep_build.c) are inlined once
+// per block size, so that their loops have constant bounds.
 // Built with QS_ANY_SIZE (meson does so under the sanitizers, whose checks
 // make that code several times larger and its build many minutes longer),
 // one update takes every size, read at run time: the same operations in the

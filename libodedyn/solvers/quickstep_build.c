@@ -277,6 +277,9 @@ QS_INLINE int factor_n(const qs_v2 *J, const qs_v2 *iMJ, const dReal *cfm, int n
 QS_INLINE int factor(const qs_v2 *J, const qs_v2 *iMJ, const dReal *cfm, int n, dReal sor_w,
                   double *L, dReal *Ainv)
 {
+#ifdef QS_ANY_SIZE
+    return factor_n(J, iMJ, cfm, n, sor_w, L, Ainv);
+#else
     switch (n) {   // constant sizes let the compiler unroll
     case 2: return factor_n(J, iMJ, cfm, 2, sor_w, L, Ainv);
     case 3: return factor_n(J, iMJ, cfm, 3, sor_w, L, Ainv);
@@ -284,6 +287,7 @@ QS_INLINE int factor(const qs_v2 *J, const qs_v2 *iMJ, const dReal *cfm, int n, 
     case 5: return factor_n(J, iMJ, cfm, 5, sor_w, L, Ainv);
     default: return factor_n(J, iMJ, cfm, QS_MAX_BLOCK, sor_w, L, Ainv);
     }
+#endif
 }
 
 // Rows idx[0..n) of a joint as a block: its J, M^-1 J^T, rhs and cfm in a
@@ -388,6 +392,9 @@ QS_INLINE int factor_pair_n(const qs_block *a, const qs_block *b, int n, dReal s
 QS_INLINE int factor_pair(const qs_block *a, const qs_block *b, int n, dReal sor_w, double *La,
                           double *Lb)
 {
+#ifdef QS_ANY_SIZE
+    return factor_pair_n(a, b, n, sor_w, La, Lb);
+#else
     switch (n) {   // constant sizes let the compiler unroll
     case 2: return factor_pair_n(a, b, 2, sor_w, La, Lb);
     case 3: return factor_pair_n(a, b, 3, sor_w, La, Lb);
@@ -395,6 +402,7 @@ QS_INLINE int factor_pair(const qs_block *a, const qs_block *b, int n, dReal sor
     case 5: return factor_pair_n(a, b, 5, sor_w, La, Lb);
     default: return factor_pair_n(a, b, QS_MAX_BLOCK, sor_w, La, Lb);
     }
+#endif
 }
 #else
 QS_INLINE int factor_pair(const qs_block *a, const qs_block *b, int n, dReal sor_w, double *La,
@@ -639,6 +647,9 @@ QS_INLINE const dReal *couple_n(qs_jblock *jb, int n, qs_v2 *iMJ, double *diag)
 
 static const dReal *couple_to_block(qs_jblock *jb, qs_v2 *iMJ, double *diag)
 {
+#ifdef QS_ANY_SIZE
+    return couple_n(jb, jb->n, iMJ, diag);
+#else
     switch (jb->n) {   // constant sizes let the compiler unroll
     case 2: return couple_n(jb, 2, iMJ, diag);
     case 3: return couple_n(jb, 3, iMJ, diag);
@@ -646,6 +657,7 @@ static const dReal *couple_to_block(qs_jblock *jb, qs_v2 *iMJ, double *diag)
     case 5: return couple_n(jb, 5, iMJ, diag);
     default: return couple_n(jb, QS_MAX_BLOCK, iMJ, diag);
     }
+#endif
 }
 
 // A row's diagonal J M^-1 J^T + cfm/h (Jp, Mp: its J and M^-1 J^T); in
@@ -859,6 +871,9 @@ QS_INLINE void couple_pair_n(qs_jblock *ja, qs_coupled *ra, qs_jblock *jb, qs_co
 QS_INLINE void couple_pair(qs_jblock *ja, qs_coupled *ra, qs_jblock *jb, qs_coupled *rb,
                            dReal sor_w)
 {
+#ifdef QS_ANY_SIZE
+    couple_pair_n(ja, ra, jb, rb, ja->n, sor_w);
+#else
     switch (ja->n) {   // constant sizes let the compiler unroll
     case 2: couple_pair_n(ja, ra, jb, rb, 2, sor_w); break;
     case 3: couple_pair_n(ja, ra, jb, rb, 3, sor_w); break;
@@ -866,6 +881,7 @@ QS_INLINE void couple_pair(qs_jblock *ja, qs_coupled *ra, qs_jblock *jb, qs_coup
     case 5: couple_pair_n(ja, ra, jb, rb, 5, sor_w); break;
     default: couple_pair_n(ja, ra, jb, rb, QS_MAX_BLOCK, sor_w); break;
     }
+#endif
 }
 #else
 QS_INLINE void couple_pair(qs_jblock *ja, qs_coupled *ra, qs_jblock *jb, qs_coupled *rb,
