@@ -33,7 +33,8 @@ shift $((OPTIND - 1))
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(collide space build world)
 
-# -g1: line tables alone, for the reports (full debug information doubled the build)
+# -g1: line tables alone, enough for the reports and cheaper to build than full
+# debug information
 flags="-fsanitize=fuzzer-no-link -fno-sanitize-recover=all -g1"
 if [ ! -f "$build/build.ninja" ]; then
     CC=clang CXX=clang++ meson setup "$build" "$root" -Dfuzz=true -Dexamples=false -Ddebug=false \
